@@ -1,6 +1,7 @@
 #pragma once
 // The solid MultiDir works on: an indexed triangle mesh in millimetres, plus where each face came from.
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross()
 #include <array>
 #include <cstdint>
 #include <vector>
