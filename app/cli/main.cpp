@@ -1,2 +1,105 @@
-#include <cstdio>
-int main() { std::puts("multidir: commands are being built"); return 0; }
+// multidir: the command line. Dispatches subcommands and turns every failure into an exit code.
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli_args.h"
+#include "info_command.h"
+
+namespace {
+
+using namespace multidir::cli;
+
+const char* const kUsage =
+    "Usage: multidir COMMAND [ARGUMENTS]\n"
+    "\n"
+    "Multi-directional 3D printing: analyse a model and plan its printing directions.\n"
+    "\n"
+    "Commands:\n"
+    "  info MODEL   statistics, load checks and overhang area of a model\n"
+    "  help [COMMAND]  show this help, or a command's help\n"
+    "\n"
+    "Options:\n"
+    "  -h, --help   show this help\n"
+    "  --version    show the version\n"
+    "\n"
+    "Exit codes: 0 ok, 1 bad input file, 2 usage error, 3 internal error.\n";
+
+// Commands of later versions: named here so users get a precise answer instead of "unknown command".
+bool isPlannedCommand(const std::string& command) {
+  return command == "decompose" || command == "report" || command == "export" || command == "simulate";
+}
+
+int notAvailable(const std::string& command) {
+  std::cerr << "multidir: '" << command << "' is not available in this version. Run 'multidir --help' for the "
+            << "commands it has.\n";
+  return kExitUsage;
+}
+
+int help(const std::vector<std::string>& args) {
+  if (args.empty()) {
+    std::cout << kUsage;
+    return kExitOk;
+  }
+  if (args.size() > 1) throw UsageError("multidir help: one command at a time");
+  if (args[0] == "info") {
+    std::cout << kInfoHelp;
+    return kExitOk;
+  }
+  if (isPlannedCommand(args[0])) return notAvailable(args[0]);
+  throw UsageError("multidir help: unknown command '" + args[0] + "'. Run 'multidir --help' for the list.");
+}
+
+int run(const std::vector<std::string>& args) {
+  if (args.empty()) {
+    std::cerr << kUsage;
+    return kExitUsage;
+  }
+  const std::string& command = args[0];
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command == "-h" || command == "--help") return help({});
+  if (command == "--version") {
+    std::cout << "multidir " << MULTIDIR_VERSION << "\n";
+    return kExitOk;
+  }
+  if (command == "help") return help(rest);
+  if (command == "info") return runInfo(rest, std::cout, std::cerr);
+  if (isPlannedCommand(command)) return notAvailable(command);
+  if (!command.empty() && command[0] == '-')
+    throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");
+  throw UsageError("multidir: unknown command '" + command + "'. Run 'multidir --help' for the list.");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+#ifdef MULTIDIR_TESTING_DISABLE_CATCH_ALL
+  try {
+    return run(args);
+  } catch (const UsageError& e) {
+    std::cerr << e.what() << "\n";
+    return kExitUsage;
+  } catch (const FileError& e) {
+    std::cerr << e.what() << "\n";
+    return kExitBadInput;
+  }
+#else
+  try {
+    return run(args);
+  } catch (const UsageError& e) {
+    std::cerr << e.what() << "\n";
+    return kExitUsage;
+  } catch (const FileError& e) {
+    std::cerr << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "multidir: internal error (" << e.what() << "); please report it with the command line\n";
+    return kExitInternal;
+  } catch (...) {
+    std::cerr << "multidir: internal error; please report it with the command line that caused it\n";
+    return kExitInternal;
+  }
+#endif
+}

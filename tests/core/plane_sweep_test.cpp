@@ -108,3 +108,49 @@ TEST(PlaneSweep, EmptyGridGivesEmptyProfile) {
   const SweepProfile profile = sweepPlanes(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), Vec3::UnitZ(), OffsetGrid{0, 1, 0}, {}, 0.7);
   EXPECT_TRUE(profile.volumeAboveMm3.empty());
 }
+
+#include "multidir/core/geometry/clipping.h"
+#include "multidir/core/mesh/mesh_io.h"
+#include "support/test_models.h"
+
+TEST(PlaneSweep, EqualsClipThenMeasureOnRandomPlanesOfRealModels) {
+  const double sinAlpha = std::sin(degToRad(45.0));
+  std::mt19937 random(2020);
+  std::normal_distribution<double> gauss;
+  int planesChecked = 0;
+  for (const char* name : {"kitten.off", "bunny.off", "fertility.off", "3holes.off"}) {
+    const auto loaded = loadMesh(multidir::test::sharedModelPath(name));
+    ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+    const TriangleMesh& mesh = loaded->mesh;
+    const auto overhang = analyzeOverhang(mesh, Vec3::UnitY());
+    ASSERT_TRUE(overhang.ok());
+    const double totalVolume = signedVolume(mesh), totalArea = surfaceArea(mesh);
+    for (int trial = 0; trial < 8; ++trial) {
+      const Vec3 n = Vec3(gauss(random), gauss(random), gauss(random)).normalized();
+      double low = INFINITY, high = -INFINITY;
+      for (const Vec3& v : mesh.vertices) {
+        low = std::min(low, n.dot(v));
+        high = std::max(high, n.dot(v));
+      }
+      const OffsetGrid grid{low + 0.37, 1.3, static_cast<int>((high - low) / 1.3)};
+      const SweepProfile profile = sweepPlanes(mesh, n, grid, overhang->risky, sinAlpha);
+      for (int j = trial % 5; j < grid.count; j += 9) {
+        const Plane plane{n, grid.offsetAt(j)};
+        const auto clipped = clipByPlane(mesh, plane, 7);
+        ASSERT_TRUE(clipped.ok()) << clipped.error().describe();
+        const TriangleMesh& above = clipped->above;
+        double riskyAlongNormal = 0, flagged = 0;
+        for (std::size_t f = 0; f < above.triangles.size(); ++f) {
+          if (above.origins[f].isCap()) continue;
+          if (above.faceNormal(f).dot(n) + sinAlpha < 0) riskyAlongNormal += above.faceArea(f);
+          if (overhang->risky[above.origins[f].index]) flagged += above.faceArea(f);
+        }
+        EXPECT_NEAR(profile.volumeAboveMm3[j], signedVolume(above), 1e-6 * totalVolume) << name;
+        EXPECT_NEAR(profile.riskyAreaAlongNormalMm2[j], riskyAlongNormal, 1e-6 * totalArea) << name;
+        EXPECT_NEAR(profile.riskyAreaFlaggedMm2[j], flagged, 1e-6 * totalArea) << name;
+        ++planesChecked;
+      }
+    }
+  }
+  EXPECT_GT(planesChecked, 200);
+}

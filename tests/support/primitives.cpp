@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 namespace multidir::test {
@@ -69,6 +70,58 @@ TriangleMesh makeIcosphere(const Vec3& center, double radius, int levels) {
   mesh.triangles = std::move(faces);
   mesh.resetOrigins();
   return mesh;
+}
+
+}  // namespace multidir::test
+
+#include "multidir/core/geometry/polygon_triangulation.h"
+#include "multidir/core/mesh/mesh_measure.h"
+
+namespace multidir::test {
+
+TriangleMesh makeExtrudedProfile(const std::vector<Vec3>& profileXZ, double depth) {
+  const auto n = static_cast<std::int32_t>(profileXZ.size());
+  std::vector<core::Vec2> points;
+  core::PolygonWithHoles polygon;
+  for (std::int32_t i = 0; i < n; ++i) {
+    points.emplace_back(profileXZ[i].x(), profileXZ[i].z());
+    polygon.outer.push_back(i);
+  }
+  auto cap = core::triangulatePolygon(points, polygon);
+  if (!cap.ok()) throw std::runtime_error("profile triangulation failed: " + cap.error().describe());
+  TriangleMesh mesh;
+  for (const Vec3& p : profileXZ) mesh.vertices.emplace_back(p.x(), 0.0, p.z());
+  for (const Vec3& p : profileXZ) mesh.vertices.emplace_back(p.x(), depth, p.z());
+  for (Triangle t : *cap) {
+    // Front cap counter-clockwise in x-z (normal -y) whatever winding the triangulator chose.
+    const core::Vec2 e1 = points[t[1]] - points[t[0]], e2 = points[t[2]] - points[t[0]];
+    if (e1.x() * e2.y() - e1.y() * e2.x() < 0) std::swap(t[1], t[2]);
+    mesh.triangles.push_back({t[0], t[1], t[2]});
+    mesh.triangles.push_back({t[0] + n, t[2] + n, t[1] + n});
+  }
+  for (std::int32_t i = 0; i < n; ++i) {
+    const std::int32_t j = (i + 1) % n;
+    mesh.triangles.push_back({i, i + n, j + n});
+    mesh.triangles.push_back({i, j + n, j});
+  }
+  // The winding above depends on the profile's handedness in x-z seen from -y: fix it by the volume.
+  if (core::signedVolume(mesh) < 0)
+    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+  mesh.resetOrigins();
+  return mesh;
+}
+
+TriangleMesh makeTBar(double stemWidth, double stemHeight, double barWidth, double barHeight, double depth) {
+  const double s = stemWidth / 2, b = barWidth / 2, top = stemHeight + barHeight;
+  return makeExtrudedProfile({Vec3(-s, 0, 0), Vec3(s, 0, 0), Vec3(s, 0, stemHeight), Vec3(b, 0, stemHeight),
+                              Vec3(b, 0, top), Vec3(-b, 0, top), Vec3(-b, 0, stemHeight), Vec3(-s, 0, stemHeight)},
+                             depth);
+}
+
+TriangleMesh makeHook(double depth) {
+  return makeExtrudedProfile({Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(10, 0, 50), Vec3(50, 0, 50), Vec3(50, 0, 20),
+                              Vec3(60, 0, 20), Vec3(60, 0, 60), Vec3(0, 0, 60)},
+                             depth);
 }
 
 }  // namespace multidir::test

@@ -21,6 +21,7 @@ struct MeshStatistics {
   bool closed = false;        // every edge has two faces, consistently oriented, manifold vertices
 };
 
+// Counts and measures of a mesh. genus is the sum over shells of (2 - chi)/2 when the mesh is closed, else 0.
 MeshStatistics computeStatistics(const TriangleMesh& mesh);
 
 // One kind of defect found on load, with how many and the first few indices (faces or vertices).
@@ -30,6 +31,8 @@ struct MeshDefect {
   std::vector<std::int64_t> firstIndices;  // at most a handful
   std::string description;          // a sentence for a person
   bool repaired = false;            // true when load repaired it (then `repairs` says how)
+  // false for facts that are reported but need no repair ("several-shells", "unused-vertices").
+  bool needsRepair = true;
 };
 
 struct MeshReport {
@@ -53,9 +56,41 @@ struct LoadedMesh {
 // Loads a mesh file, checks it and repairs what is safe to repair. Errors name the defect, how many,
 // the first few indices and the file: FileNotFound, UnsupportedFormat, MalformedFile, TooLarge, EmptyMesh,
 // NonFiniteVertex, NotManifold, OpenBoundary, InconsistentOrientation.
+// Files are checked for structure before they are read (lying counts, truncation, indices out of range),
+// so bad input costs at most one pass over the file and memory in proportion to what it really holds.
+// STL is read by MultiDir's own reader (ASCII or binary, told apart by size, not by the word "solid");
+// OFF, OBJ and PLY are read through OpenMesh, whose float reader keeps about 7 significant digits.
+// Thread-safety: OpenMesh's warning streams are switched off during a read; do not load from two threads.
 Result<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& options = {});
 
-// Saves a mesh; the format follows the extension (.stl binary, .obj, .off, .ply). Errors: UnsupportedFormat, WriteFailed.
-Status saveMesh(const TriangleMesh& mesh, const std::string& path);
+// A polygon soup as a file holds it: vertices and triangles (polygons already fanned into triangles),
+// before any check. Indices may be out of range, faces degenerate, vertices duplicated.
+struct RawSoup {
+  std::vector<Vec3> vertices;       // mm
+  std::vector<Triangle> triangles;  // indices into vertices, as read
+  std::size_t droppedByReader = 0;  // polygons the reader dropped itself (a repeated corner): degenerate
+};
+
+// The checks and repairs loadMesh runs after reading, for a soup built in memory. `sourceName` is put in
+// front of messages ("kitten.off"). Repairs, in this order: weld vertices closer than weldToleranceMm, drop
+// degenerate faces (area below degenerateAreaMm2) and duplicate faces, orient each shell consistently, flip
+// shells that face inward (a shell nested inside an odd number of others is a cavity and must face inward).
+// With options.repair == false each of these is an error instead: duplicate vertices OpenBoundary (the
+// faces do not connect), degenerate or duplicate faces NotManifold, orientation and inside-out shells
+// InconsistentOrientation. Several shells and unused vertices are reported but are no defect. Errors as
+// loadMesh, plus MalformedFile for an index out of range and InvalidParameter for negative tolerances.
+// Cost: about linear in the size of the soup; with 2 to 64 shells, nesting adds shells x faces work.
+Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& options = {},
+                                  const std::string& sourceName = "mesh");
+
+struct SaveOptions {
+  bool asciiStl = false;  // .stl only: write ASCII instead of binary
+};
+
+// Saves a mesh; the format follows the extension (.stl binary unless options.asciiStl, .obj, .off, .ply,
+// all text but binary STL). Text formats keep every double exactly (17 significant digits); binary STL is
+// float by definition. The file is written beside the target and renamed into place, so a failed save
+// leaves no half-written file. Errors: UnsupportedFormat, WriteFailed, InvalidParameter (index out of range).
+Status saveMesh(const TriangleMesh& mesh, const std::string& path, const SaveOptions& options = {});
 
 }  // namespace multidir::core

@@ -1,0 +1,63 @@
+#include "cli_args.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace multidir::cli {
+
+std::string ParsedArgs::value(const std::string& option, const std::string& fallback) const {
+  auto it = values.find(option);
+  return it == values.end() ? fallback : it->second;
+}
+
+ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valueOptions,
+                     const std::set<std::string>& flagOptions, const std::string& command) {
+  const std::string help = "Run 'multidir help " + command + "' for its options.";
+  ParsedArgs parsed;
+  bool onlyPositionals = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (onlyPositionals || arg.size() < 2 || arg[0] != '-' || (arg[1] != '-' && arg != "-h")) {
+      parsed.positionals.push_back(arg);
+      continue;
+    }
+    if (arg == "--") {
+      onlyPositionals = true;
+      continue;
+    }
+    std::string name = arg == "-h" ? "--help" : arg;
+    std::string value;
+    bool inlineValue = false;
+    if (const auto eq = name.find('='); eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+      inlineValue = true;
+    }
+    if (flagOptions.count(name) > 0) {
+      if (inlineValue) throw UsageError("multidir " + command + ": " + name + " takes no value. " + help);
+      parsed.flags.insert(name);
+    } else if (valueOptions.count(name) > 0) {
+      if (!inlineValue) {
+        if (i + 1 >= args.size()) throw UsageError("multidir " + command + ": " + name + " needs a value. " + help);
+        value = args[++i];
+      }
+      if (!parsed.values.emplace(name, value).second)
+        throw UsageError("multidir " + command + ": " + name + " is given twice. " + help);
+    } else {
+      throw UsageError("multidir " + command + ": unknown option '" + name + "'. " + help);
+    }
+  }
+  return parsed;
+}
+
+double parseNumber(const std::string& text, const std::string& option) {
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value))
+    throw UsageError(option + " expects a number, got '" + text + "'");
+  return value;
+}
+
+}  // namespace multidir::cli

@@ -1,0 +1,48 @@
+#pragma once
+// Command-line parsing shared by the subcommands: options with values, flags and positionals, with
+// mistakes reported as UsageError (exit code 2).
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace multidir::cli {
+
+// Exit codes of every subcommand.
+constexpr int kExitOk = 0;
+constexpr int kExitBadInput = 1;  // the model or another file could not be read, checked or written
+constexpr int kExitUsage = 2;     // wrong command, option, value or missing argument
+constexpr int kExitInternal = 3;  // a bug in MultiDir
+
+// A mistake on the command line; the message says what was wrong and how to ask for help.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A file the command had to read or write failed (exit code 1).
+class FileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ParsedArgs {
+  std::vector<std::string> positionals;
+  std::map<std::string, std::string> values;  // "--up" -> "y"
+  std::set<std::string> flags;                // "--help"
+
+  bool has(const std::string& option) const { return values.count(option) > 0 || flags.count(option) > 0; }
+  std::string value(const std::string& option, const std::string& fallback) const;
+};
+
+// Parses `args` (without the program and command names). `valueOptions` take one value ("--up y" or
+// "--up=y"), `flagOptions` none. Throws UsageError for an unknown option, a missing value or a repeated
+// option; `command` names the command in messages.
+ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valueOptions,
+                     const std::set<std::string>& flagOptions, const std::string& command);
+
+// The whole text must be a finite number, else UsageError naming the option.
+double parseNumber(const std::string& text, const std::string& option);
+
+}  // namespace multidir::cli

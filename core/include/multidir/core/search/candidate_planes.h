@@ -1,0 +1,34 @@
+#pragma once
+// Candidate clipping planes (the paper's Section III-B): normals sampled uniformly on the Gaussian sphere and
+// kept where the machine can print along them, and offsets every stepMm across the solid along each normal,
+// minus those that would cut the platform region (Criterion III).
+#include <vector>
+
+#include "multidir/core/common/result.h"
+#include "multidir/core/search/machine.h"
+#include "multidir/core/search/plane_sweep.h"
+
+namespace multidir::core {
+
+// `count` nearly uniform unit vectors on the sphere (a Fibonacci lattice), deterministic.
+std::vector<Vec3> fibonacciSphere(int count);
+
+struct CandidateOptions {
+  int normalSamples = 250;     // on the whole sphere, before the machine's limits (5-DOF); >= 1
+  double offsetStepMm = 1.0;   // > 0
+  double platformClearanceMm = 0.0;  // planes must pass at least this far above P
+};
+
+Status validate(const CandidateOptions& options);
+
+// The printing directions the search may use: 3-DOF: up; 4-DOF: up turned about r by every realizable angle
+// (0 excluded: that is the platform's own direction); 5-DOF: the lattice points within the tilt limit and
+// outside forbidden cones, up excluded.
+std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOptions& options);
+
+// Offsets along one normal for a solid: every stepMm from just above the lowest allowed offset to below the
+// solid's top, where the lowest allowed offset keeps the platform region P wholly below (Criterion III).
+OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
+                            const Vec3& up, const CandidateOptions& options);
+
+}  // namespace multidir::core

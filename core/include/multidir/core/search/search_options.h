@@ -1,0 +1,48 @@
+#pragma once
+// Parameters of the decomposition search (the paper's Section IV), with their defaults.
+#include <functional>
+#include <string>
+
+#include "multidir/core/common/result.h"
+#include "multidir/core/common/units.h"
+#include "multidir/core/search/candidate_planes.h"
+
+namespace multidir::core {
+
+enum class SearchScheme {
+  Greedy,             // paper Eq. 7: the plane with the largest J_L, again and again
+  ConstrainedGreedy,  // paper Eq. 8: largest J_L among planes leaving the part above risk-free, else Eq. 7
+  Beam,               // paper Algorithm 1: beam-guided search with progressive relaxation
+};
+
+const char* schemeName(SearchScheme scheme);  // "greedy", "cgreedy", "beam"
+Result<SearchScheme> parseScheme(const std::string& text);
+
+struct SearchOptions {
+  SearchScheme scheme = SearchScheme::Beam;
+  int beamWidth = 10;                       // b, >= 1
+  double alphaMaxDegrees = kDefaultAlphaMaxDegrees;
+  CandidateOptions candidates;
+  double minVolumeDivisor = 10.0;           // w: every region above a plane keeps at least V(M)/w
+  double initialDeltaMm2 = 0.1;             // progressive relaxation starts at R < delta ...
+  double deltaGrowth = 5.0;                 // ... and multiplies delta by this until the beams are full
+  double diversityCosine = 0.95;            // two children of one parent are too close when |n.n'| > this
+  double diversityOffsetMm = 2.0;           // ... and their offsets differ by less than this
+  double platformToleranceMm = kDefaultPlatformToleranceMm;
+  int threads = 0;                          // 0: all hardware threads
+};
+
+Status validate(const SearchOptions& options);
+
+// What the search reports while it runs (on the thread that runs it).
+struct SearchProgress {
+  int level = 0;                 // clipping planes in the plans being extended
+  int beamsAlive = 0;
+  double bestJgMm2 = 0.0;        // best complete plan so far
+  long long candidatesScored = 0;
+  int axisIndex = -1;            // 4-DOF axis search: which axis (else -1)
+  int axisCount = 0;
+};
+using SearchProgressSink = std::function<void(const SearchProgress&)>;
+
+}  // namespace multidir::core

@@ -1,0 +1,209 @@
+#include "cross_section_cap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "multidir/core/geometry/polygon_triangulation.h"
+
+namespace multidir::core::detail {
+namespace {
+
+struct Loop {
+  std::vector<std::int32_t> vertices;  // local indices
+  double area = 0.0;                   // signed, counter-clockwise positive
+  Vec2 min;
+  Vec2 max;
+};
+
+// An orthonormal basis (u, v) of the plane with u x v = normal, so counter-clockwise in (u, v) is
+// counter-clockwise seen from +normal.
+void planeBasis(const Vec3& normal, Vec3& u, Vec3& v) {
+  const Vec3 helper = std::abs(normal.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
+  u = helper.cross(normal).normalized();
+  v = normal.cross(u);
+}
+
+// The angle (0, 2 pi] swept clockwise from `back` to `out`. Following the smallest one traces the boundary of
+// one face of the planar arrangement, so loops that touch at a vertex are separated the way the region is.
+double clockwiseAngle(const Vec2& back, const Vec2& out) {
+  const double ccw = std::atan2(back.x() * out.y() - back.y() * out.x(), back.dot(out));
+  const double cw = -ccw;
+  if (cw <= 0.0) return cw + 2.0 * 3.14159265358979323846;
+  return cw;
+}
+
+bool pointInLoop(const Vec2& q, const Loop& loop, const std::vector<Vec2>& points) {
+  bool inside = false;
+  const std::size_t n = loop.vertices.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2& a = points[loop.vertices[i]];
+    const Vec2& b = points[loop.vertices[j]];
+    if ((a.y() > q.y()) != (b.y() > q.y())) {
+      const double x = a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      if (q.x() < x) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+bool boxContains(const Loop& outer, const Loop& inner) {
+  return outer.min.x() <= inner.min.x() && outer.min.y() <= inner.min.y() && outer.max.x() >= inner.max.x() &&
+         outer.max.y() >= inner.max.y();
+}
+
+// A point of `hole` to test against `outer`: one of its vertices that `outer` does not share (loops touch
+// only at shared vertices), else the middle of its first edge.
+Vec2 testPoint(const Loop& hole, const Loop& outer, const std::vector<Vec2>& points, std::vector<std::int32_t>& stamp,
+               std::int32_t stampValue) {
+  for (std::int32_t v : outer.vertices) stamp[v] = stampValue;
+  for (std::int32_t v : hole.vertices)
+    if (stamp[v] != stampValue) return points[v];
+  return 0.5 * (points[hole.vertices[0]] + points[hole.vertices[1]]);
+}
+
+Result<std::vector<Loop>> chainLoops(const std::vector<CapEdge>& edges, const std::vector<std::int32_t>& localOf,
+                                     const std::vector<Vec2>& points) {
+  const auto vertexCount = static_cast<std::int32_t>(points.size());
+  const auto edgeCount = static_cast<std::int32_t>(edges.size());
+  // Outgoing edges of each local vertex, by counting sort.
+  std::vector<std::int32_t> first(vertexCount + 1, 0);
+  for (const CapEdge& e : edges) ++first[localOf[e[0]] + 1];
+  for (std::int32_t i = 0; i < vertexCount; ++i) first[i + 1] += first[i];
+  std::vector<std::int32_t> outgoing(edgeCount);
+  {
+    std::vector<std::int32_t> cursor(first.begin(), first.end() - 1);
+    for (std::int32_t e = 0; e < edgeCount; ++e) outgoing[cursor[localOf[edges[e][0]]]++] = e;
+  }
+
+  std::vector<char> used(edgeCount, 0);
+  std::vector<Loop> loops;
+  std::vector<std::int32_t> candidates;
+  for (std::int32_t start = 0; start < edgeCount; ++start) {
+    if (used[start]) continue;
+    Loop loop;
+    for (std::int32_t e = start, steps = 0;; ++steps) {
+      if (steps > edgeCount)
+        return Error{ErrorCode::Internal, "the cross-section's edges do not close into loops", "clipping cap"};
+      used[e] = 1;
+      const std::int32_t from = localOf[edges[e][0]];
+      const std::int32_t to = localOf[edges[e][1]];
+      loop.vertices.push_back(from);
+      candidates.clear();
+      for (std::int32_t k = first[to]; k < first[to + 1]; ++k)
+        if (!used[outgoing[k]] || outgoing[k] == start) candidates.push_back(outgoing[k]);
+      if (candidates.empty())
+        return Error{ErrorCode::Internal,
+                     "the cross-section has an open chain of " + std::to_string(loop.vertices.size()) +
+                         " edges; the solid was probably not closed",
+                     "clipping cap"};
+      std::int32_t next = candidates.front();
+      if (candidates.size() > 1) {
+        const Vec2 back = points[from] - points[to];
+        double bestAngle = std::numeric_limits<double>::infinity();
+        for (std::int32_t c : candidates) {
+          const double angle = clockwiseAngle(back, points[localOf[edges[c][1]]] - points[to]);
+          if (angle < bestAngle) {
+            bestAngle = angle;
+            next = c;
+          }
+        }
+      }
+      if (next == start) break;
+      e = next;
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace
+
+Result<std::vector<Triangle>> triangulateCap(const std::vector<CapEdge>& edges, const std::vector<CapEdge>& meshEdges,
+                                             const std::vector<Vec3>& positions, const Plane& plane) {
+  std::vector<Triangle> triangles;
+  if (edges.empty()) return triangles;
+
+  // Local numbering of the cap's vertices.
+  std::vector<std::int32_t> globalOf;
+  globalOf.reserve(edges.size());
+  for (const CapEdge& e : edges) globalOf.push_back(e[0]);
+  std::sort(globalOf.begin(), globalOf.end());
+  globalOf.erase(std::unique(globalOf.begin(), globalOf.end()), globalOf.end());
+  std::vector<std::int32_t> localOf(positions.size(), -1);
+  for (std::size_t i = 0; i < globalOf.size(); ++i) localOf[globalOf[i]] = static_cast<std::int32_t>(i);
+  for (const CapEdge& e : edges)
+    if (localOf[e[1]] < 0)
+      return Error{ErrorCode::Internal, "a cross-section edge ends at a vertex no edge leaves", "clipping cap"};
+
+  Vec3 u, v;
+  planeBasis(plane.normal, u, v);
+  const Vec3 origin = positions[globalOf.front()];
+  std::vector<Vec2> points(globalOf.size());
+  for (std::size_t i = 0; i < globalOf.size(); ++i) {
+    const Vec3 d = positions[globalOf[i]] - origin;
+    points[i] = Vec2(d.dot(u), d.dot(v));
+  }
+
+  Result<std::vector<Loop>> chained = chainLoops(edges, localOf, points);
+  if (!chained) return chained.error();
+  std::vector<Loop>& loops = chained.value();
+  for (Loop& loop : loops) {
+    loop.min = loop.max = points[loop.vertices.front()];
+    const std::size_t n = loop.vertices.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2& a = points[loop.vertices[i]];
+      const Vec2& b = points[loop.vertices[(i + 1) % n]];
+      loop.area += 0.5 * (a.x() * b.y() - a.y() * b.x());
+      loop.min = loop.min.cwiseMin(a);
+      loop.max = loop.max.cwiseMax(a);
+    }
+  }
+
+  // Holes go to the smallest outer loop around them: with islands inside holes, the outer loops around a hole
+  // are nested and the smallest is the one it belongs to.
+  std::vector<std::size_t> outers;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (loops[i].area >= 0.0) outers.push_back(i);
+  std::vector<PolygonWithHoles> regions(loops.size());
+  std::vector<char> isRegion(loops.size(), 0);
+  for (std::size_t i : outers) {
+    regions[i].outer = loops[i].vertices;
+    isRegion[i] = 1;
+  }
+  std::vector<std::int32_t> stamp(points.size(), -1);
+  std::int32_t stampValue = 0;
+  for (std::size_t h = 0; h < loops.size(); ++h) {
+    if (loops[h].area >= 0.0) continue;
+    std::size_t parent = loops.size();
+    for (std::size_t o : outers) {
+      if (!boxContains(loops[o], loops[h])) continue;
+      if (parent != loops.size() && loops[o].area >= loops[parent].area) continue;
+      if (pointInLoop(testPoint(loops[h], loops[o], points, stamp, stampValue++), loops[o], points)) parent = o;
+    }
+    if (parent == loops.size()) {
+      // A hole outside every outer loop can only come from rounding on a sliver; closing it on its own keeps
+      // the mesh closed.
+      regions[h].outer = loops[h].vertices;
+      isRegion[h] = 1;
+    } else {
+      regions[parent].holes.push_back(loops[h].vertices);
+    }
+  }
+
+  std::vector<std::array<std::int32_t, 2>> avoid;
+  for (const CapEdge& e : meshEdges)
+    if (localOf[e[0]] >= 0 && localOf[e[1]] >= 0) avoid.push_back({localOf[e[0]], localOf[e[1]]});
+
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    if (!isRegion[r]) continue;
+    Result<std::vector<Triangle>> part = triangulatePolygon(points, regions[r], avoid);
+    if (!part)
+      return Error{ErrorCode::Internal, "cap triangulation failed: " + part.error().describe(), "clipping cap"};
+    for (const Triangle& t : part.value()) triangles.push_back({globalOf[t[0]], globalOf[t[1]], globalOf[t[2]]});
+  }
+  return triangles;
+}
+
+}  // namespace multidir::core::detail

@@ -1,0 +1,492 @@
+// Checks and safe repairs of a polygon soup (see checkAndRepair in mesh_io.h). The order matters: welding
+// first (an STL has three copies of each corner), then faces that welding made degenerate or duplicate,
+// then topology (which only means something once corners are shared), then orientation and inside-out.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <queue>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "mesh_formats.h"
+#include "mesh_shells.h"
+#include "multidir/core/mesh/mesh_io.h"
+
+namespace multidir::core {
+namespace {
+
+using detail::joinIndices;
+using detail::withThousands;
+
+constexpr std::size_t kFirstFew = 5;
+// Beyond this many shells the nesting test (shells x faces winding numbers) would cost too much; every
+// shell is then taken as an outer one.
+constexpr std::int32_t kMaxShellsForNesting = 64;
+
+std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+std::string edgeName(std::uint64_t key) {
+  return std::to_string(key >> 32) + "-" + std::to_string(key & 0xffffffffu);
+}
+
+struct TripleHash {
+  std::size_t operator()(const std::array<std::int32_t, 3>& t) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int32_t v : t) h = (h ^ static_cast<std::uint32_t>(v)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+// Collects the defects and repairs of one check and turns an unrepairable one into an Error.
+class Checker {
+ public:
+  Checker(const LoadOptions& options, std::string source) : m_options(options), m_source(std::move(source)) {}
+
+  void info(const std::string& kind, std::size_t count, std::vector<std::int64_t> first, const std::string& text) {
+    MeshDefect d{kind, count, std::move(first), text, false, false};
+    m_report.defects.push_back(std::move(d));
+  }
+  // A defect loading can repair: recorded as repaired, or with repair off an error of code `code`.
+  std::optional<Error> repairable(const std::string& kind, std::size_t count, std::vector<std::int64_t> first,
+                                  const std::string& text, const std::string& repairSentence, ErrorCode code) {
+    if (!m_options.repair)
+      return Error{code, text + ". Loading with repairs switched on would fix this: " + repairSentence + ".", m_source};
+    MeshDefect d{kind, count, std::move(first), text, true, true};
+    m_report.defects.push_back(std::move(d));
+    m_report.repairs.push_back(repairSentence);
+    return std::nullopt;
+  }
+  Error fatal(ErrorCode code, const std::string& text) const { return Error{code, text, m_source}; }
+  MeshReport& report() { return m_report; }
+
+ private:
+  const LoadOptions& m_options;
+  std::string m_source;
+  MeshReport m_report;
+};
+
+std::string firstList(const std::string& what, const std::vector<std::int64_t>& first, std::size_t count) {
+  if (first.empty()) return "";
+  return " (first: " + what + " " + joinIndices(first) + (count > first.size() ? ", ..." : "") + ")";
+}
+
+// Welds vertices closer than `tolerance` (Euclidean) to the first such vertex in index order, through a
+// grid of cells of that size. Returns the new index of every vertex (-1 for vertices no face uses).
+std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const std::vector<char>& used,
+                                       double tolerance, std::vector<Vec3>& welded, std::size_t& merged,
+                                       std::vector<std::int64_t>& firstMerged) {
+  std::vector<std::int32_t> map(points.size(), -1);
+  struct CellHash {
+    std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
+      std::uint64_t h = 1469598103934665603ull;
+      for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+      return static_cast<std::size_t>(h);
+    }
+  };
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::int32_t>, CellHash> cells;
+  cells.reserve(points.size());
+  // With a zero tolerance, or coordinates too large for integer cells, only identical points merge.
+  double maxAbs = 0.0;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (used[v]) maxAbs = std::max(maxAbs, points[v].cwiseAbs().maxCoeff());
+  const bool exactOnly = !(tolerance > 0.0) || maxAbs / tolerance > 1e15;
+  auto cellOf = [&](const Vec3& p) -> std::array<std::int64_t, 3> {
+    if (exactOnly) {
+      std::array<std::int64_t, 3> bits{};
+      for (int i = 0; i < 3; ++i) {
+        const double c = p[i] == 0.0 ? 0.0 : p[i];  // -0 and +0 are one point
+        std::memcpy(&bits[static_cast<std::size_t>(i)], &c, sizeof(double));
+      }
+      return bits;
+    }
+    return {static_cast<std::int64_t>(std::floor(p.x() / tolerance)),
+            static_cast<std::int64_t>(std::floor(p.y() / tolerance)),
+            static_cast<std::int64_t>(std::floor(p.z() / tolerance))};
+  };
+  const double toleranceSquared = tolerance * tolerance;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    if (!used[v]) continue;
+    const Vec3& p = points[v];
+    const auto cell = cellOf(p);
+    std::int32_t found = -1;
+    const int reach = exactOnly ? 0 : 1;
+    for (int dx = -reach; dx <= reach && found < 0; ++dx)
+      for (int dy = -reach; dy <= reach && found < 0; ++dy)
+        for (int dz = -reach; dz <= reach && found < 0; ++dz) {
+          auto it = cells.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
+          if (it == cells.end()) continue;
+          for (std::int32_t w : it->second)
+            if ((welded[static_cast<std::size_t>(w)] - p).squaredNorm() <= toleranceSquared) {
+              found = w;
+              break;
+            }
+        }
+    if (found >= 0) {
+      map[v] = found;
+      if (merged++ < kFirstFew) firstMerged.push_back(static_cast<std::int64_t>(v));
+    } else {
+      map[v] = static_cast<std::int32_t>(welded.size());
+      cells[cell].push_back(map[v]);
+      welded.push_back(p);
+    }
+  }
+  return map;
+}
+
+// Vertices whose faces form more than one fan (the first few), for the message; edgeCensus gives the count.
+std::vector<std::int64_t> firstNonManifoldVertices(const TriangleMesh& mesh) {
+  std::vector<std::vector<std::int32_t>> facesOfVertex(mesh.vertices.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (std::int32_t v : mesh.triangles[f]) facesOfVertex[static_cast<std::size_t>(v)].push_back(static_cast<std::int32_t>(f));
+  std::vector<std::int64_t> out;
+  for (std::size_t v = 0; v < facesOfVertex.size() && out.size() < kFirstFew; ++v) {
+    const auto& faces = facesOfVertex[v];
+    if (faces.size() < 2) continue;
+    // Walk the fan from the first face through faces sharing an edge at v.
+    std::vector<char> reached(faces.size(), 0);
+    std::vector<std::size_t> stack{0};
+    reached[0] = 1;
+    std::size_t count = 1;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      for (std::size_t j = 0; j < faces.size(); ++j) {
+        if (reached[j]) continue;
+        int shared = 0;
+        for (std::int32_t a : mesh.triangles[static_cast<std::size_t>(faces[i])])
+          for (std::int32_t b : mesh.triangles[static_cast<std::size_t>(faces[j])])
+            if (a == b) ++shared;
+        if (shared >= 2) {
+          reached[j] = 1;
+          ++count;
+          stack.push_back(j);
+        }
+      }
+    }
+    if (count != faces.size()) out.push_back(static_cast<std::int64_t>(v));
+  }
+  return out;
+}
+
+struct EdgeUse {
+  int count = 0;
+  std::array<std::int32_t, 2> face{-1, -1};
+  std::array<bool, 2> forward{false, false};  // the face traverses the edge from lower to higher index
+};
+
+std::unordered_map<std::uint64_t, EdgeUse> edgeUses(const TriangleMesh& mesh) {
+  std::unordered_map<std::uint64_t, EdgeUse> uses;
+  uses.reserve(mesh.triangles.size() * 2);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = mesh.triangles[f][static_cast<std::size_t>(k)];
+      const std::int32_t b = mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)];
+      EdgeUse& use = uses[edgeKey(a, b)];
+      if (use.count < 2) {
+        use.face[static_cast<std::size_t>(use.count)] = static_cast<std::int32_t>(f);
+        use.forward[static_cast<std::size_t>(use.count)] = a < b;
+      }
+      ++use.count;
+    }
+  return uses;
+}
+
+// Edges of faces, in face order, whose use count satisfies `pick`: the first few, for messages.
+template <typename Pick>
+std::vector<std::string> firstEdges(const TriangleMesh& mesh, const std::unordered_map<std::uint64_t, EdgeUse>& uses,
+                                    Pick pick) {
+  std::vector<std::string> out;
+  std::unordered_set<std::uint64_t> seen;
+  for (std::size_t f = 0; f < mesh.triangles.size() && out.size() < kFirstFew; ++f)
+    for (int k = 0; k < 3 && out.size() < kFirstFew; ++k) {
+      const std::uint64_t key = edgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
+                                        mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)]);
+      if (pick(uses.at(key).count) && seen.insert(key).second) out.push_back(edgeName(key));
+    }
+  return out;
+}
+
+std::string edgeList(const std::vector<std::string>& edges, std::size_t count) {
+  std::string s;
+  for (std::size_t i = 0; i < edges.size(); ++i) s += (i ? ", " : "") + edges[i];
+  return " (first: edges " + s + (count > edges.size() ? ", ..." : "") + ")";
+}
+
+void flip(Triangle& t) { std::swap(t[1], t[2]); }
+
+}  // namespace
+
+Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& options, const std::string& sourceName) {
+  if (!(options.weldToleranceMm >= 0.0 && std::isfinite(options.weldToleranceMm)))
+    return Error{ErrorCode::InvalidParameter, "the weld tolerance must be a finite length >= 0 mm", "weld tolerance"};
+  if (!(options.degenerateAreaMm2 >= 0.0 && std::isfinite(options.degenerateAreaMm2)))
+    return Error{ErrorCode::InvalidParameter, "the degenerate-face area must be a finite area >= 0 mm^2",
+                 "degenerate area"};
+  Checker check(options, sourceName);
+
+  // Empty, too large, indices out of range, coordinates that are not numbers.
+  if (soup.triangles.empty())
+    return check.fatal(ErrorCode::EmptyMesh,
+                       soup.droppedByReader > 0
+                           ? "every one of its " + withThousands(soup.droppedByReader) +
+                                 " faces is degenerate (fewer than three distinct corners): there is no surface"
+                           : "the mesh has no faces: there is no surface to print");
+  if (soup.triangles.size() > options.maxTriangles)
+    return check.fatal(ErrorCode::TooLarge, withThousands(soup.triangles.size()) + " triangles, more than the limit of " +
+                                                withThousands(options.maxTriangles) + "; simplify the model first");
+  const std::size_t vertexCount = soup.vertices.size();
+  std::vector<char> used(vertexCount, 0);
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for (std::int32_t v : soup.triangles[f]) {
+      if (v < 0 || static_cast<std::size_t>(v) >= vertexCount)
+        return check.fatal(ErrorCode::MalformedFile, "face " + std::to_string(f) + " refers to vertex " +
+                                                         std::to_string(v) + ", but there are " +
+                                                         withThousands(vertexCount) + " vertices");
+      used[static_cast<std::size_t>(v)] = 1;
+    }
+  {
+    std::size_t bad = 0;
+    std::vector<std::int64_t> first;
+    for (std::size_t v = 0; v < vertexCount; ++v)
+      if (used[v] && !soup.vertices[v].allFinite() && bad++ < kFirstFew) first.push_back(static_cast<std::int64_t>(v));
+    if (bad > 0)
+      return check.fatal(ErrorCode::NonFiniteVertex,
+                         withThousands(bad) + " vertices have coordinates that are not finite numbers (NaN or "
+                                              "infinite)" + firstList("vertices", first, bad) +
+                             ". Fix or remove them in a mesh editor and export the model again.");
+  }
+
+  // Weld duplicate vertices.
+  TriangleMesh mesh;
+  std::size_t merged = 0;
+  std::vector<std::int64_t> firstMerged;
+  const std::vector<std::int32_t> newIndex =
+      weldVertices(soup.vertices, used, options.weldToleranceMm, mesh.vertices, merged, firstMerged);
+  const auto unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+  if (unused > 0)
+    check.info("unused-vertices", unused, {},
+               withThousands(unused) + " vertices are used by no face; they were left out");
+  if (merged > 0)
+    if (auto e = check.repairable(
+            "duplicate-vertices", merged, firstMerged,
+            withThousands(merged) + " vertices repeat another within " + std::to_string(options.weldToleranceMm) +
+                " mm" + firstList("vertices", firstMerged, merged),
+            "merged " + withThousands(merged) + " duplicate vertices", ErrorCode::OpenBoundary))
+      return *e;
+
+  // Degenerate faces: repeated corners after welding, or an area below the threshold.
+  std::size_t degenerate = soup.droppedByReader;
+  std::vector<std::int64_t> firstDegenerate;
+  std::vector<std::int64_t> sourceFace;  // soup face index of each kept face
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    Triangle t;
+    for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = newIndex[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)])];
+    const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
+    const double area = 0.5 * (mesh.vertices[static_cast<std::size_t>(t[1])] - a)
+                                  .cross(mesh.vertices[static_cast<std::size_t>(t[2])] - a)
+                                  .norm();
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !(area >= options.degenerateAreaMm2) ||
+        (area == 0.0 && options.degenerateAreaMm2 == 0.0)) {
+      ++degenerate;
+      if (firstDegenerate.size() < kFirstFew) firstDegenerate.push_back(static_cast<std::int64_t>(f));
+      continue;
+    }
+    mesh.triangles.push_back(t);
+    sourceFace.push_back(static_cast<std::int64_t>(f));
+  }
+  if (degenerate > 0)
+    if (auto e = check.repairable(
+            "degenerate-faces", degenerate, firstDegenerate,
+            withThousands(degenerate) + " faces are degenerate (repeated corners or an area below " +
+                std::to_string(options.degenerateAreaMm2) + " mm^2)" + firstList("faces", firstDegenerate, degenerate),
+            "dropped " + withThousands(degenerate) + " degenerate faces", ErrorCode::NotManifold))
+      return *e;
+  if (mesh.triangles.empty())
+    return check.fatal(ErrorCode::EmptyMesh, "every face is degenerate: there is no surface to print");
+
+  // Duplicate faces: the same three corners, in any order.
+  {
+    std::unordered_set<std::array<std::int32_t, 3>, TripleHash> seen;
+    seen.reserve(mesh.triangles.size());
+    std::size_t duplicates = 0;
+    std::vector<std::int64_t> first;
+    std::vector<Triangle> kept;
+    std::vector<std::int64_t> keptSource;
+    kept.reserve(mesh.triangles.size());
+    keptSource.reserve(mesh.triangles.size());
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      std::array<std::int32_t, 3> sorted = mesh.triangles[f];
+      std::sort(sorted.begin(), sorted.end());
+      if (!seen.insert(sorted).second) {
+        if (duplicates++ < kFirstFew) first.push_back(sourceFace[f]);
+        continue;
+      }
+      kept.push_back(mesh.triangles[f]);
+      keptSource.push_back(sourceFace[f]);
+    }
+    if (duplicates > 0)
+      if (auto e = check.repairable("duplicate-faces", duplicates, first,
+                                    withThousands(duplicates) + " faces repeat another face's corners" +
+                                        firstList("faces", first, duplicates),
+                                    "dropped " + withThousands(duplicates) + " duplicate faces", ErrorCode::NotManifold))
+        return *e;
+    mesh.triangles = std::move(kept);
+    sourceFace = std::move(keptSource);
+  }
+
+  // Topology: every edge on exactly two faces, every vertex one fan. Not repairable automatically.
+  const EdgeCensus census = edgeCensus(mesh);
+  const auto uses = edgeUses(mesh);
+  std::vector<std::string> problems;
+  ErrorCode firstCode = ErrorCode::NotManifold;
+  if (census.nonManifold > 0)
+    problems.push_back("not a 2-manifold: " + withThousands(census.nonManifold) +
+                       " edges are shared by more than two faces" +
+                       edgeList(firstEdges(mesh, uses, [](int c) { return c > 2; }), census.nonManifold) +
+                       ". Separate the touching parts in a mesh editor (e.g. MeshLab's 'Repair non Manifold Edges')");
+  if (census.nonManifoldVertices > 0)
+    problems.push_back("not a 2-manifold: " + withThousands(census.nonManifoldVertices) +
+                       " vertices join surface parts that share no edge" +
+                       firstList("vertices", firstNonManifoldVertices(mesh), census.nonManifoldVertices) +
+                       ". Move the parts apart or merge them in a mesh editor (e.g. MeshLab's 'Split Vertices')");
+  if (census.boundary > 0) {
+    if (problems.empty()) firstCode = ErrorCode::OpenBoundary;
+    problems.push_back("not a solid: " + withThousands(census.boundary) + " open boundary edges" +
+                       edgeList(firstEdges(mesh, uses, [](int c) { return c == 1; }), census.boundary) +
+                       ". Close the holes in a mesh editor (e.g. MeshLab's 'Close Holes') and load it again");
+  }
+  if (!problems.empty()) {
+    std::string text;
+    for (std::size_t i = 0; i < problems.size(); ++i) text += (i ? "; also " : "") + problems[i];
+    return check.fatal(firstCode, text + ".");
+  }
+
+  // Orientation: walk each shell across its edges so that neighbours traverse their shared edge in
+  // opposite directions; flip the smaller part of each shell.
+  const std::size_t faceCount = mesh.triangles.size();
+  std::vector<std::array<std::int32_t, 3>> neighbour(faceCount);
+  std::vector<std::array<bool, 3>> sameDirection(faceCount);
+  for (std::size_t f = 0; f < faceCount; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const EdgeUse& use = uses.at(edgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
+                                           mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)]));
+      const std::size_t self = use.face[0] == static_cast<std::int32_t>(f) ? 0 : 1;
+      neighbour[f][static_cast<std::size_t>(k)] = use.face[1 - self];
+      sameDirection[f][static_cast<std::size_t>(k)] = use.forward[0] == use.forward[1];
+    }
+  const FaceComponents components = faceComponents(mesh);
+  std::vector<char> flipped(faceCount, 0), visited(faceCount, 0);
+  std::size_t flips = 0;
+  std::vector<std::int64_t> firstFlipped;
+  for (std::size_t seed = 0; seed < faceCount; ++seed) {
+    if (visited[seed]) continue;
+    std::vector<std::int32_t> shell{static_cast<std::int32_t>(seed)};
+    visited[seed] = 1;
+    for (std::size_t i = 0; i < shell.size(); ++i) {
+      const auto f = static_cast<std::size_t>(shell[i]);
+      for (int k = 0; k < 3; ++k) {
+        const auto g = static_cast<std::size_t>(neighbour[f][static_cast<std::size_t>(k)]);
+        const char want = static_cast<char>(flipped[f] ^ (sameDirection[f][static_cast<std::size_t>(k)] ? 1 : 0));
+        if (!visited[g]) {
+          visited[g] = 1;
+          flipped[g] = want;
+          shell.push_back(static_cast<std::int32_t>(g));
+        } else if (flipped[g] != want) {
+          return check.fatal(ErrorCode::InconsistentOrientation,
+                             "the shell containing face " + std::to_string(sourceFace[seed]) +
+                                 " cannot be oriented (it is one-sided, like a Moebius strip). Rebuild that part in a "
+                                 "mesh editor.");
+        }
+      }
+    }
+    const auto shellFlips = static_cast<std::size_t>(
+        std::count_if(shell.begin(), shell.end(), [&](std::int32_t f) { return flipped[static_cast<std::size_t>(f)] != 0; }));
+    const bool invert = 2 * shellFlips > shell.size();
+    for (std::int32_t f : shell) {
+      auto& flag = flipped[static_cast<std::size_t>(f)];
+      if (invert) flag = static_cast<char>(!flag);
+    }
+  }
+  for (std::size_t f = 0; f < faceCount; ++f)
+    if (flipped[f]) {
+      flip(mesh.triangles[f]);
+      if (flips++ < kFirstFew) firstFlipped.push_back(sourceFace[f]);
+    }
+  if (flips > 0)
+    if (auto e = check.repairable("inconsistent-orientation", flips, firstFlipped,
+                                  withThousands(flips) + " faces are oriented against their neighbours" +
+                                      firstList("faces", firstFlipped, flips),
+                                  "turned " + withThousands(flips) + " faces to agree with their neighbours",
+                                  ErrorCode::InconsistentOrientation))
+      return *e;
+
+  // Inside-out shells: an outer shell must enclose positive volume, a cavity (inside an odd number of
+  // other shells) negative.
+  {
+    const auto shellFaces = detail::facesOfComponents(components);
+    std::vector<TriangleMesh> shells;
+    shells.reserve(shellFaces.size());
+    for (const auto& faces : shellFaces) shells.push_back(detail::extractFaces(mesh, faces));
+    std::size_t inverted = 0;
+    std::vector<std::int64_t> first;
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+      int depth = 0;
+      if (components.count <= kMaxShellsForNesting)
+        for (std::size_t other = 0; other < shells.size(); ++other)
+          if (other != s && std::abs(detail::windingNumber(shells[other], shells[s].vertices.front())) > 0.5) ++depth;
+      const double volume = signedVolume(shells[s]);
+      const bool wantPositive = depth % 2 == 0;
+      if (volume != 0.0 && (volume > 0.0) != wantPositive) {
+        for (std::int32_t f : shellFaces[s]) flip(mesh.triangles[static_cast<std::size_t>(f)]);
+        if (inverted++ < kFirstFew) first.push_back(static_cast<std::int64_t>(s));
+      }
+    }
+    if (inverted > 0)
+      if (auto e = check.repairable("inverted-shells", inverted, first,
+                                    withThousands(inverted) + " of " + withThousands(shells.size()) +
+                                        " shells face inward (inside out)" + firstList("shells", first, inverted),
+                                    "turned " + withThousands(inverted) + " inside-out shells the right way out",
+                                    ErrorCode::InconsistentOrientation))
+        return *e;
+    if (shells.size() > 1)
+      check.info("several-shells", shells.size(), {},
+                 "the model is made of " + withThousands(shells.size()) +
+                     " separate shells (parts or cavities); each is kept");
+  }
+
+  // Vertices that only dropped faces used are left out (keeping the order of the rest), so every vertex
+  // of the result belongs to a face.
+  {
+    std::vector<std::int32_t> compact(mesh.vertices.size(), -1);
+    for (const Triangle& t : mesh.triangles)
+      for (std::int32_t v : t) compact[static_cast<std::size_t>(v)] = 0;
+    std::vector<Vec3> kept;
+    kept.reserve(mesh.vertices.size());
+    for (std::size_t v = 0; v < compact.size(); ++v)
+      if (compact[v] == 0) {
+        compact[v] = static_cast<std::int32_t>(kept.size());
+        kept.push_back(mesh.vertices[v]);
+      }
+    if (kept.size() != mesh.vertices.size()) {
+      for (Triangle& t : mesh.triangles)
+        for (std::int32_t& v : t) v = compact[static_cast<std::size_t>(v)];
+      mesh.vertices = std::move(kept);
+    }
+  }
+
+  LoadedMesh out;
+  out.mesh = std::move(mesh);
+  out.mesh.resetOrigins();
+  out.report = std::move(check.report());
+  out.report.statistics = computeStatistics(out.mesh);
+  return out;
+}
+
+}  // namespace multidir::core

@@ -1,0 +1,257 @@
+#include "multidir/core/search/decompose.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <cmath>
+
+#include "detail/parallel.h"
+#include "multidir/core/mesh/mesh_measure.h"
+#include "search/search_engine.h"
+
+namespace multidir::core {
+namespace {
+
+using detail::ScoredCandidate;
+using detail::SearchEngine;
+using detail::SearchNode;
+using NodePtr = std::shared_ptr<const SearchNode>;
+
+// Keeps the best plan seen: least J_G, then fewer regions (Criterion IV), then first found.
+class BestPlan {
+ public:
+  void offer(const NodePtr& node) {
+    constexpr double kTie = 1e-9;
+    if (!m_node || node->jg() < m_node->jg() - kTie ||
+        (std::abs(node->jg() - m_node->jg()) <= kTie && node->level < m_node->level))
+      m_node = node;
+  }
+  const NodePtr& node() const { return m_node; }
+
+ private:
+  NodePtr m_node;
+};
+
+// Progressive relaxation as one ordering: a candidate with R(M+) below delta_0 * growth^i enters in round i,
+// and inside a round by J_G. Walking this order and filling beams is the paper's loop of widening delta.
+int relaxationRound(double risky, const SearchOptions& o) {
+  int round = 0;
+  for (double delta = o.initialDeltaMm2; risky >= delta && round < 200; delta *= o.deltaGrowth) ++round;
+  return round;
+}
+
+bool tooClose(const ScoredCandidate& a, const ScoredCandidate& b, const std::vector<Vec3>& normals,
+              const SearchOptions& o) {
+  return a.beam == b.beam && std::abs(normals[a.normal].dot(normals[b.normal])) > o.diversityCosine &&
+         std::abs(a.offsetMm - b.offsetMm) < o.diversityOffsetMm;
+}
+
+void report(const SearchProgressSink& sink, int level, int alive, const BestPlan& best, const SearchEngine& engine) {
+  if (!sink) return;
+  SearchProgress p;
+  p.level = level;
+  p.beamsAlive = alive;
+  p.bestJgMm2 = best.node()->jg();
+  p.candidatesScored = engine.candidatesScored();
+  sink(p);
+}
+
+// Algorithm 1 of the paper.
+bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best, const SearchProgressSink& sink,
+                   int& levels) {
+  std::vector<NodePtr> beams = {engine.root()};
+  best.offer(engine.root());
+  if (engine.isTerminal(*engine.root())) return false;
+  const int maxLevels = static_cast<int>(std::ceil(o.minVolumeDivisor)) + 1;
+  for (int level = 0; !beams.empty() && level < maxLevels; ++level) {
+    levels = level + 1;
+    std::vector<ScoredCandidate> pool;
+    for (int b = 0; b < static_cast<int>(beams.size()); ++b) {
+      bool cancelled = false;
+      std::vector<ScoredCandidate> scored = engine.score(*beams[b], b, cancelled);
+      if (cancelled) return true;
+      pool.insert(pool.end(), scored.begin(), scored.end());
+    }
+    std::vector<int> round(pool.size());
+    for (std::size_t i = 0; i < pool.size(); ++i) round[i] = relaxationRound(pool[i].riskyAboveMm2, o);
+    std::vector<std::size_t> order(pool.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if (round[a] != round[b]) return round[a] < round[b];
+      if (pool[a].jgMm2 != pool[b].jgMm2) return pool[a].jgMm2 < pool[b].jgMm2;
+      return a < b;  // pool order is (beam, normal, offset): fixed
+    });
+
+    std::vector<NodePtr> next;
+    std::vector<ScoredCandidate> chosen;
+    for (std::size_t index : order) {
+      if (static_cast<int>(next.size()) >= o.beamWidth) break;
+      if (engine.job().isCancelled()) return true;
+      const ScoredCandidate& c = pool[index];
+      bool close = false;
+      for (const ScoredCandidate& other : chosen) close = close || tooClose(c, other, engine.normals(), o);
+      if (close) continue;
+      auto child = engine.extend(beams[c.beam], c);
+      if (!child) continue;
+      chosen.push_back(c);
+      best.offer(*child);
+      next.push_back(*child);
+    }
+    beams.clear();
+    for (const NodePtr& node : next)
+      if (!engine.isTerminal(*node)) beams.push_back(node);
+    report(sink, level + 1, static_cast<int>(beams.size()), best, engine);
+  }
+  return false;
+}
+
+// Paper Eq. 7 (unconstrained) and Eq. 8 (constrained): one beam, the cut with the largest J_L.
+bool runGreedy(SearchEngine& engine, bool constrained, BestPlan& best, const SearchProgressSink& sink, int& levels) {
+  NodePtr node = engine.root();
+  best.offer(node);
+  constexpr double kRiskFree = 1e-6;  // mm^2: what counts as R = 0 after floating-point sums
+  while (!engine.isTerminal(*node)) {
+    bool cancelled = false;
+    std::vector<ScoredCandidate> pool = engine.score(*node, 0, cancelled);
+    if (cancelled) return true;
+    levels = node->level + 1;
+    const bool anyRiskFree = constrained && std::any_of(pool.begin(), pool.end(), [&](const ScoredCandidate& c) {
+                               return c.riskyAboveMm2 < kRiskFree && c.localGainMm2() > 0;
+                             });
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < pool.size(); ++i)
+      if (pool[i].localGainMm2() > 0 && (!anyRiskFree || pool[i].riskyAboveMm2 < kRiskFree)) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return pool[a].localGainMm2() > pool[b].localGainMm2();
+    });
+    std::optional<NodePtr> child;
+    for (std::size_t index : order) {
+      if (engine.job().isCancelled()) return true;
+      child = engine.extend(node, pool[index]);
+      if (child) break;
+    }
+    if (!child) break;
+    node = *child;
+    best.offer(node);
+    report(sink, node->level, 1, best, engine);
+  }
+  return false;
+}
+
+Status checkInputs(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options) {
+  if (Status s = validate(options); !s) return s;
+  if (Status s = validate(machine); !s) return s;
+  if (model.empty()) return Error{ErrorCode::EmptyMesh, "the model has no faces: load a closed mesh first", "model"};
+  if (!(signedVolume(model) > 0))
+    return Error{ErrorCode::InvalidParameter, "the model has no positive volume: load it with loadMesh, which orients it",
+                 "model"};
+  return Done{};
+}
+
+// The search itself, for validated inputs; reports levels but leaves the job's overall progress alone.
+Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                               JobContext& job, const SearchProgressSink& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  SearchEngine engine(model, machine, options, job);
+  BestPlan best;
+  int levels = 0;
+  bool cancelled = false;
+  switch (options.scheme) {
+    case SearchScheme::Beam: {
+      // Both greedy chains seed the result, so the beam-guided plan is never worse than either greedy
+      // scheme (the paper observes this; progressive relaxation alone does not guarantee it).
+      int greedyLevels = 0;
+      cancelled = runGreedy(engine, false, best, {}, greedyLevels) || runGreedy(engine, true, best, {}, greedyLevels) ||
+                  runBeamSearch(engine, options, best, progress, levels);
+      break;
+    }
+    case SearchScheme::Greedy: cancelled = runGreedy(engine, false, best, progress, levels); break;
+    case SearchScheme::ConstrainedGreedy: cancelled = runGreedy(engine, true, best, progress, levels); break;
+  }
+  Decomposition plan = engine.planOf(*best.node());
+  plan.cancelled = cancelled;
+  plan.rotationAxis = machine.rotationAxis;
+  plan.statistics.candidatesScored = engine.candidatesScored();
+  plan.statistics.candidatesPerLevel = std::max(0, engine.firstLevelCandidates());
+  plan.statistics.normals = static_cast<int>(engine.normals().size());
+  plan.statistics.levels = levels;
+  plan.statistics.clipsPerformed = engine.clipsPerformed();
+  plan.statistics.threads = engine.threads();
+  plan.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return plan;
+}
+
+}  // namespace
+
+Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                                JobContext& job, const SearchProgressSink& progress) {
+  if (Status s = checkInputs(model, machine, options); !s) return s.error();
+  Decomposition plan = runDecomposition(model, machine, options, job, progress);
+  job.setProgress(1.0, "search done");
+  return plan;
+}
+
+Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const MachineSpec& machine,
+                                              const SearchOptions& options, int axisCount, JobContext& job,
+                                              const SearchProgressSink& progress) {
+  if (machine.kind != MachineKind::RotaryPlatform)
+    return Error{ErrorCode::InvalidParameter, "the axis search needs a 4-DOF machine (--machine 4dof)", "axis search"};
+  if (axisCount < 1 || axisCount > 3600)
+    return Error{ErrorCode::InvalidParameter, "the number of axes must be between 1 and 3600", "axis search"};
+  if (Status s = checkInputs(model, machine, options); !s) return s.error();
+  const auto start = std::chrono::steady_clock::now();
+
+  const int threads = detail::resolveThreadCount(options.threads);
+  SearchOptions perAxis = options;
+  perAxis.threads = 1;  // parallel across axes instead
+  std::vector<std::optional<Decomposition>> results(axisCount);
+  const Vec3 first = machine.rotationAxis;
+  const Vec3 second = machine.up.cross(first);
+  std::atomic<int> finished{0};
+  std::mutex progressMutex;
+  detail::parallelFor(axisCount, threads, [&](int a) {
+    if (job.isCancelled()) return;
+    const double angle = kPi * a / axisCount;
+    MachineSpec spec = machine;
+    spec.rotationAxis = (std::cos(angle) * first + std::sin(angle) * second).normalized();
+    results[a] = runDecomposition(model, spec, perAxis, job, {});
+    const int done = ++finished;
+    job.setProgress(static_cast<double>(done) / axisCount, "axis search");
+    if (progress) {
+      std::lock_guard<std::mutex> lock(progressMutex);
+      SearchProgress p;
+      p.axisIndex = a;
+      p.axisCount = axisCount;
+      p.bestJgMm2 = results[a]->jgAfterMm2;
+      p.candidatesScored = results[a]->statistics.candidatesScored;
+      progress(p);
+    }
+  });
+
+  std::optional<Decomposition> best;
+  SearchStatistics total;
+  for (auto& r : results) {
+    if (!r) continue;
+    total.candidatesScored += r->statistics.candidatesScored;
+    total.clipsPerformed += r->statistics.clipsPerformed;
+    total.levels = std::max(total.levels, r->statistics.levels);
+    total.candidatesPerLevel = std::max(total.candidatesPerLevel, r->statistics.candidatesPerLevel);
+    total.normals = r->statistics.normals;
+    constexpr double kTie = 1e-9;
+    if (!best || r->jgAfterMm2 < best->jgAfterMm2 - kTie ||
+        (std::abs(r->jgAfterMm2 - best->jgAfterMm2) <= kTie && r->regions.size() < best->regions.size()))
+      best = std::move(r);
+  }
+  if (!best) {
+    if (job.isCancelled()) return Error{ErrorCode::Cancelled, "the axis search was cancelled before any axis finished", "axis search"};
+    return Error{ErrorCode::Internal, "no axis gave a plan", "axis search"};
+  }
+  best->cancelled = job.isCancelled();
+  total.threads = threads;
+  total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  best->statistics = total;
+  return std::move(*best);
+}
+
+}  // namespace multidir::core

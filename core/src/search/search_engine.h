@@ -1,0 +1,63 @@
+#pragma once
+// What every search scheme shares: the candidate normals, the platform, scoring a beam's candidates with the
+// plane sweep, and extending a beam by one clip (where Criterion II is checked).
+#include <optional>
+#include <vector>
+
+#include "multidir/core/common/job_context.h"
+#include "multidir/core/search/decomposition.h"
+#include "multidir/core/search/search_options.h"
+#include "search/search_node.h"
+
+namespace multidir::core::detail {
+
+class SearchEngine {
+ public:
+  SearchEngine(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options, JobContext& job);
+
+  std::shared_ptr<const SearchNode> root() const { return m_root; }
+
+  // Every admissible candidate of a node (Criterion III by construction, minimal volume above), in a
+  // fixed order (normal, then offset). Sets `cancelled` and returns early when the job is cancelled.
+  std::vector<ScoredCandidate> score(const SearchNode& node, int beamIndex, bool& cancelled);
+
+  // Clips the node by the candidate. Empty when the part below would not stand on the platform
+  // (Criterion II) or the clip failed.
+  std::optional<std::shared_ptr<const SearchNode>> extend(const std::shared_ptr<const SearchNode>& node,
+                                                          const ScoredCandidate& candidate);
+
+  // Criterion II: whether every connected solid of `solid` touches the platform.
+  bool standsOnPlatform(const TriangleMesh& solid) const;
+
+  // Whether a node needs no further cut: too small to cut again, or self-supported along up.
+  bool isTerminal(const SearchNode& node) const;
+
+  // The plan of a node: regions in printing order, risky areas recomputed from the region meshes.
+  Decomposition planOf(const SearchNode& node) const;
+
+  const std::vector<Vec3>& normals() const { return m_normals; }
+  int threads() const { return m_threads; }
+  long long candidatesScored() const { return m_candidatesScored; }
+  int clipsPerformed() const { return m_clips; }
+  int firstLevelCandidates() const { return m_firstLevelCandidates; }
+  JobContext& job() { return m_job; }
+
+ private:
+  std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining) const;
+
+  const MachineSpec& m_machine;
+  const SearchOptions& m_options;
+  JobContext& m_job;
+  std::vector<Vec3> m_normals;
+  PlatformRegion m_platform;
+  double m_sinAlpha = 0.0;
+  double m_modelVolume = 0.0;
+  double m_minRegionVolume = 0.0;
+  int m_threads = 1;
+  std::shared_ptr<const SearchNode> m_root;
+  long long m_candidatesScored = 0;
+  int m_clips = 0;
+  int m_firstLevelCandidates = -1;
+};
+
+}  // namespace multidir::core::detail

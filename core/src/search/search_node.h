@@ -1,0 +1,44 @@
+#pragma once
+// The state of one beam: what is left of the model after a list of cuts, and how the list was made.
+// Nodes are immutable once built and shared by their children through `parent`, so a list of planes costs
+// one link per level (the paper's backward link).
+#include <memory>
+#include <vector>
+
+#include "multidir/core/geometry/plane.h"
+#include "multidir/core/mesh/triangle_mesh.h"
+
+namespace multidir::core::detail {
+
+struct SearchNode {
+  std::shared_ptr<const TriangleMesh> remaining;  // the part still to be cut (printed along up at the end)
+  std::vector<char> riskyUp;                      // per face of `remaining`: risky along up
+  double riskyUpAreaMm2 = 0.0;
+  double volumeMm3 = 0.0;
+
+  std::shared_ptr<const SearchNode> parent;       // null at the root (the uncut model)
+  Plane plane;                                    // the cut that made this node from its parent
+  int normalIndex = -1;
+  std::shared_ptr<const TriangleMesh> region;     // the part above that cut, printed along plane.normal
+  double regionRiskyMm2 = 0.0;
+  double prefixJgMm2 = 0.0;                       // risky area of every region cut off so far
+  int level = 0;                                  // number of cuts
+
+  // J_G of the plan that stops here: the regions cut off plus the remaining part printed along up.
+  double jg() const { return prefixJgMm2 + riskyUpAreaMm2; }
+};
+
+// One candidate plane scored on one beam without clipping.
+struct ScoredCandidate {
+  int beam = 0;
+  int normal = 0;
+  int offsetIndex = 0;
+  double offsetMm = 0.0;
+  double riskyAboveMm2 = 0.0;    // R(M+, plane): risky along the plane's normal
+  double riskyUpAboveMm2 = 0.0;  // risky along up among the faces above: what the cut saves
+  double volumeAboveMm3 = 0.0;
+  double jgMm2 = 0.0;            // J_G of the plan that makes this cut and stops
+  double localGainMm2() const { return riskyUpAboveMm2 - riskyAboveMm2; }  // J_L
+};
+
+}  // namespace multidir::core::detail

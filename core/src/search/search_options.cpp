@@ -1,0 +1,40 @@
+#include "multidir/core/search/search_options.h"
+
+#include <cmath>
+
+namespace multidir::core {
+
+const char* schemeName(SearchScheme scheme) {
+  switch (scheme) {
+    case SearchScheme::Greedy: return "greedy";
+    case SearchScheme::ConstrainedGreedy: return "cgreedy";
+    case SearchScheme::Beam: return "beam";
+  }
+  return "?";
+}
+
+Result<SearchScheme> parseScheme(const std::string& text) {
+  if (text == "greedy") return SearchScheme::Greedy;
+  if (text == "cgreedy") return SearchScheme::ConstrainedGreedy;
+  if (text == "beam") return SearchScheme::Beam;
+  return Error{ErrorCode::InvalidParameter, "'" + text + "' is not a scheme: use beam, greedy or cgreedy", "scheme"};
+}
+
+Status validate(const SearchOptions& o) {
+  auto bad = [](const std::string& where, const std::string& rule) {
+    return Status(Error{ErrorCode::InvalidParameter, where + " " + rule, where});
+  };
+  if (o.beamWidth < 1 || o.beamWidth > 1000) return bad("beam width", "must be between 1 and 1000");
+  if (!(o.alphaMaxDegrees >= 0 && o.alphaMaxDegrees < 90)) return bad("alpha", "must be at least 0 and below 90 degrees");
+  if (!(o.minVolumeDivisor >= 1 && o.minVolumeDivisor <= 1000))
+    return bad("w", "(the minimal region volume is V/w) must be between 1 and 1000");
+  if (!(o.initialDeltaMm2 > 0 && std::isfinite(o.initialDeltaMm2))) return bad("delta", "must be a positive area in mm^2");
+  if (!(o.deltaGrowth > 1 && o.deltaGrowth < 1000)) return bad("delta growth", "must be above 1 and below 1000");
+  if (!(o.diversityCosine >= 0 && o.diversityCosine <= 1)) return bad("diversity cosine", "must be between 0 and 1");
+  if (!(o.diversityOffsetMm >= 0 && o.diversityOffsetMm < 1e4)) return bad("diversity offset", "must be between 0 and 10000 mm");
+  if (!(o.platformToleranceMm >= 0 && o.platformToleranceMm < 10)) return bad("platform tolerance", "must be between 0 and 10 mm");
+  if (o.threads < 0 || o.threads > 256) return bad("threads", "must be between 0 (all) and 256");
+  return validate(o.candidates);
+}
+
+}  // namespace multidir::core

@@ -1,0 +1,217 @@
+// STL, ASCII and binary, read and written by MultiDir itself. OpenMesh's STL reader welds vertices and
+// drops degenerate facets silently, which would hide defects the checks must report.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <ostream>
+#include <vector>
+
+#include "mesh_formats.h"
+
+namespace multidir::core::detail {
+namespace {
+
+constexpr std::uintmax_t kHeaderBytes = 84;  // 80 bytes of text, then the uint32 triangle count
+constexpr std::uintmax_t kFacetBytes = 50;   // normal, three corners (12 floats), uint16 attribute
+
+std::uint32_t readLittle32(const unsigned char* b) {
+  return static_cast<std::uint32_t>(b[0]) | (static_cast<std::uint32_t>(b[1]) << 8) |
+         (static_cast<std::uint32_t>(b[2]) << 16) | (static_cast<std::uint32_t>(b[3]) << 24);
+}
+
+float readLittleFloat(const unsigned char* b) {
+  const std::uint32_t bits = readLittle32(b);
+  float f;
+  std::memcpy(&f, &bits, 4);
+  return f;
+}
+
+void writeLittle32(std::ostream& out, std::uint32_t v) {
+  const unsigned char b[4] = {static_cast<unsigned char>(v), static_cast<unsigned char>(v >> 8),
+                              static_cast<unsigned char>(v >> 16), static_cast<unsigned char>(v >> 24)};
+  out.write(reinterpret_cast<const char*>(b), 4);
+}
+
+void writeLittleFloat(std::ostream& out, double value) {
+  const auto f = static_cast<float>(value);
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, 4);
+  writeLittle32(out, bits);
+}
+
+Error tooMany(const std::string& name, std::uintmax_t count, const LoadOptions& options) {
+  return Error{ErrorCode::TooLarge,
+               "the file holds " + withThousands(count) + " triangles, more than the limit of " +
+                   withThousands(options.maxTriangles) + "; simplify the model first (e.g. MeshLab's "
+                   "'Quadric Edge Collapse Decimation')",
+               name};
+}
+
+Result<RawSoup> readBinary(std::istream& in, std::uintmax_t count, const std::string& name) {
+  RawSoup soup;
+  soup.vertices.reserve(count * 3);
+  soup.triangles.reserve(count);
+  std::array<unsigned char, kFacetBytes> facet{};
+  for (std::uintmax_t f = 0; f < count; ++f) {
+    if (!in.read(reinterpret_cast<char*>(facet.data()), kFacetBytes))
+      return malformed(name, "the file ends inside triangle " + std::to_string(f) + ": it is truncated");
+    const auto first = static_cast<std::int32_t>(soup.vertices.size());
+    for (int corner = 0; corner < 3; ++corner) {
+      const unsigned char* p = facet.data() + 12 + 12 * corner;  // after the normal, which is recomputed
+      soup.vertices.emplace_back(readLittleFloat(p), readLittleFloat(p + 4), readLittleFloat(p + 8));
+    }
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  return soup;
+}
+
+Result<RawSoup> readAscii(std::istream& in, const std::string& name, const LoadOptions& options) {
+  enum class State { Outside, InSolid, InFacet, InLoop, AfterLoop };
+  State state = State::Outside;
+  LineReader reader(in);
+  std::string line;
+  std::vector<std::string> tokens;
+  RawSoup soup;
+  std::vector<std::int32_t> loop;
+  auto lineError = [&](const std::string& what) {
+    return malformed(name, "line " + std::to_string(reader.lineNumber()) + ": " + what +
+                               ". The file is not valid ASCII STL; export it again from the program that made it.");
+  };
+  while (reader.next(line)) {
+    if (reader.binary())
+      return malformed(name, "the file starts with 'solid' but holds binary bytes (line " +
+                                 std::to_string(reader.lineNumber()) +
+                                 ") and its size does not match a binary STL: it is damaged or truncated");
+    if (reader.tooLong()) return lineError("the line is too long");
+    if (splitTokens(line, tokens) == 0) continue;
+    const std::string& key = tokens[0];
+    switch (state) {
+      case State::Outside:
+        if (key != "solid") return lineError("expected 'solid'");
+        state = State::InSolid;
+        break;
+      case State::InSolid:
+        if (key == "endsolid") {
+          state = State::Outside;
+        } else if (key == "facet") {
+          state = State::InFacet;
+        } else {
+          return lineError("expected 'facet' or 'endsolid', found '" + key.substr(0, 20) + "'");
+        }
+        break;
+      case State::InFacet:
+        if (tokens.size() != 2 || key != "outer" || tokens[1] != "loop") return lineError("expected 'outer loop'");
+        loop.clear();
+        state = State::InLoop;
+        break;
+      case State::InLoop:
+        if (key == "vertex") {
+          Vec3 p;
+          if (tokens.size() != 4 || !parseDouble(tokens[1], p.x()) || !parseDouble(tokens[2], p.y()) ||
+              !parseDouble(tokens[3], p.z()))
+            return lineError("a vertex needs three numbers x y z");
+          if (soup.vertices.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+            return tooMany(name, soup.triangles.size(), options);
+          loop.push_back(static_cast<std::int32_t>(soup.vertices.size()));
+          soup.vertices.push_back(p);
+        } else if (key == "endloop") {
+          if (loop.size() < 3) return lineError("a facet needs at least three vertices");
+          for (std::size_t k = 1; k + 1 < loop.size(); ++k) soup.triangles.push_back({loop[0], loop[k], loop[k + 1]});
+          if (soup.triangles.size() > options.maxTriangles) return tooMany(name, soup.triangles.size(), options);
+          state = State::AfterLoop;
+        } else {
+          return lineError("expected 'vertex' or 'endloop'");
+        }
+        break;
+      case State::AfterLoop:
+        if (key != "endfacet") return lineError("expected 'endfacet'");
+        state = State::InSolid;
+        break;
+    }
+  }
+  if (state != State::Outside)
+    return malformed(name, "the file ends inside a " + std::string(state == State::InSolid ? "solid" : "facet") +
+                               " (no 'endsolid'): it is truncated");
+  return soup;
+}
+
+bool startsWithSolid(const unsigned char* bytes, std::size_t size) {
+  std::size_t i = 0;
+  while (i < size && (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\r' || bytes[i] == '\n')) ++i;
+  return size - i >= 5 && std::memcmp(bytes + i, "solid", 5) == 0;
+}
+
+}  // namespace
+
+Result<RawSoup> readStl(std::istream& in, std::uintmax_t fileSize, const std::string& name,
+                        const LoadOptions& options) {
+  if (fileSize == 0) return malformed(name, "the file is empty");
+  std::array<unsigned char, kHeaderBytes> header{};
+  const std::size_t headerRead = static_cast<std::size_t>(std::min<std::uintmax_t>(fileSize, kHeaderBytes));
+  if (!in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(headerRead)))
+    return Error{ErrorCode::FileNotFound, "the file could not be read", name};
+  const bool solid = startsWithSolid(header.data(), headerRead);
+
+  // A binary STL may start with "solid" too (many exporters write it into the 80-byte header), so the
+  // size decides: a binary file is exactly 84 + 50 * count bytes long.
+  if (fileSize >= kHeaderBytes) {
+    const std::uintmax_t count = readLittle32(header.data() + 80);
+    if (kHeaderBytes + kFacetBytes * count == fileSize) {
+      if (count > options.maxTriangles ||
+          count * 3 > static_cast<std::uintmax_t>(std::numeric_limits<std::int32_t>::max()))
+        return tooMany(name, count, options);
+      return readBinary(in, count, name);
+    }
+    if (!solid)
+      return malformed(name, "the binary STL header announces " + withThousands(count) + " triangles, which take " +
+                                 withThousands(kHeaderBytes + kFacetBytes * count) + " bytes, but the file has " +
+                                 withThousands(fileSize) + " bytes: it is truncated or not an STL file");
+  } else if (!solid) {
+    return malformed(name, "the file is " + std::to_string(fileSize) +
+                               " bytes long, too short for a binary STL (84 bytes at least), and does not start "
+                               "with 'solid': it is not an STL file");
+  }
+  in.clear();
+  in.seekg(0);
+  return readAscii(in, name, options);
+}
+
+Status writeStl(const TriangleMesh& mesh, std::ostream& out, bool ascii) {
+  if (ascii) {
+    out.precision(17);
+    out << "solid multidir\n";
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      const Vec3 n = mesh.areaNormal(f).normalized();
+      out << "  facet normal " << (n.allFinite() ? n.x() : 0.0) << ' ' << (n.allFinite() ? n.y() : 0.0) << ' '
+          << (n.allFinite() ? n.z() : 0.0) << "\n    outer loop\n";
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& p = mesh.corner(f, k);
+        out << "      vertex " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+      }
+      out << "    endloop\n  endfacet\n";
+    }
+    out << "endsolid multidir\n";
+    return Done{};
+  }
+  if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max())
+    return Error{ErrorCode::WriteFailed, "binary STL holds at most 4,294,967,295 triangles", "stl"};
+  // The 80-byte header must not start with "solid", or some readers take the file for ASCII.
+  char text[80] = {};
+  std::strncpy(text, "binary STL written by MultiDir, millimetres", sizeof(text) - 1);
+  out.write(text, 80);
+  writeLittle32(out, static_cast<std::uint32_t>(mesh.triangles.size()));
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    Vec3 n = mesh.areaNormal(f).normalized();
+    if (!n.allFinite()) n = Vec3::Zero();
+    for (int i = 0; i < 3; ++i) writeLittleFloat(out, n[i]);
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) writeLittleFloat(out, mesh.corner(f, k)[i]);
+    const char attribute[2] = {0, 0};
+    out.write(attribute, 2);
+  }
+  return Done{};
+}
+
+}  // namespace multidir::core::detail

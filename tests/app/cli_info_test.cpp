@@ -1,0 +1,109 @@
+// Runs the built `multidir` command line and checks its output, JSON and exit codes.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/test_models.h"
+
+namespace {
+
+struct CliRun {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+CliRun runCli(const std::string& arguments, const std::string& dir) {
+  const std::string outPath = dir + "/stdout.txt", errPath = dir + "/stderr.txt";
+  const std::string command =
+      std::string("'") + MULTIDIR_CLI_PATH + "' " + arguments + " > '" + outPath + "' 2> '" + errPath + "'";
+  const int status = std::system(command.c_str());
+  CliRun run;
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = readAll(outPath);
+  run.err = readAll(errPath);
+  return run;
+}
+
+}  // namespace
+
+TEST(CliInfo, KittenAlongYReportsStatisticsChecksAndRiskyArea) {
+  const std::string dir = multidir::test::scratchDirectory("CliInfo.Kitten");
+  const std::string json = dir + "/kitten.json";
+  const CliRun run = runCli("info '" + multidir::test::sharedModelPath("kitten.off") + "' --up y --json '" + json + "'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("triangles    10000"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("genus        1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("closed       yes"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("no defects found"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("risky area"), std::string::npos) << run.out;
+
+  const nlohmann::json doc = nlohmann::json::parse(readAll(json));
+  EXPECT_EQ(doc["statistics"]["triangles"], 10000);
+  EXPECT_EQ(doc["statistics"]["genus"], 1);
+  EXPECT_EQ(doc["statistics"]["closed"], true);
+  EXPECT_TRUE(doc["checks"]["defects"].empty());
+  EXPECT_EQ(doc["overhang"]["up"], nlohmann::json::array({0.0, 1.0, 0.0}));
+  EXPECT_GT(doc["overhang"]["riskyAreaMm2"].get<double>(), 0.0);
+  EXPECT_LT(doc["overhang"]["riskyAreaMm2"].get<double>(), doc["statistics"]["areaMm2"].get<double>());
+}
+
+TEST(CliInfo, DefectiveModelExitsWithOneAndNamesTheDefect) {
+  const std::string dir = multidir::test::scratchDirectory("CliInfo.Defective");
+  const CliRun run = runCli("info '" + multidir::test::sharedModelPath("defective/halftunnel-open.off") + "'", dir);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("halftunnel-open.off: not a solid: 96 open boundary edges"), std::string::npos) << run.err;
+}
+
+TEST(CliInfo, MissingModelExitsWithOne) {
+  const std::string dir = multidir::test::scratchDirectory("CliInfo.Missing");
+  EXPECT_EQ(runCli("info /nonexistent/ghost.stl", dir).exitCode, 1);
+}
+
+TEST(CliInfo, UsageErrorsExitWithTwoAndSayWhatIsWrong) {
+  const std::string dir = multidir::test::scratchDirectory("CliInfo.Usage");
+  const std::string kitten = "'" + multidir::test::sharedModelPath("kitten.off") + "'";
+  const CliRun unknownOption = runCli("info " + kitten + " --colour red", dir);
+  EXPECT_EQ(unknownOption.exitCode, 2);
+  EXPECT_NE(unknownOption.err.find("unknown option '--colour'"), std::string::npos) << unknownOption.err;
+  const CliRun badNumber = runCli("info " + kitten + " --alpha steep", dir);
+  EXPECT_EQ(badNumber.exitCode, 2);
+  EXPECT_NE(badNumber.err.find("--alpha expects a number, got 'steep'"), std::string::npos) << badNumber.err;
+  EXPECT_EQ(runCli("info " + kitten + " --alpha 95", dir).exitCode, 2);
+  EXPECT_EQ(runCli("info " + kitten + " --up sideways", dir).exitCode, 2);
+  EXPECT_EQ(runCli("info " + kitten + " --up", dir).exitCode, 2);
+  EXPECT_EQ(runCli("info", dir).exitCode, 2);
+  EXPECT_EQ(runCli("frobnicate", dir).exitCode, 2);
+  EXPECT_EQ(runCli("", dir).exitCode, 2);
+}
+
+TEST(CliInfo, LaterCommandsAreNotAvailableYet) {
+  const std::string dir = multidir::test::scratchDirectory("CliInfo.Later");
+  for (const std::string command : {"decompose", "report", "export", "simulate"}) {
+    const CliRun run = runCli(command + " model.stl", dir);
+    EXPECT_EQ(run.exitCode, 2) << command;
+    EXPECT_NE(run.err.find("not available in this version"), std::string::npos) << run.err;
+  }
+}
+
+TEST(CliInfo, HelpListsInfoButNotLaterCommands) {
+  const std::string dir = multidir::test::scratchDirectory("CliInfo.Help");
+  const CliRun run = runCli("--help", dir);
+  EXPECT_EQ(run.exitCode, 0);
+  EXPECT_NE(run.out.find("info MODEL"), std::string::npos);
+  EXPECT_EQ(run.out.find("decompose"), std::string::npos);
+  const CliRun info = runCli("help info", dir);
+  EXPECT_EQ(info.exitCode, 0);
+  EXPECT_NE(info.out.find("--alpha DEGREES"), std::string::npos);
+}

@@ -1,0 +1,188 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "multidir/core/analysis/overhang.h"
+#include "multidir/core/geometry/clipping.h"
+#include "multidir/core/geometry/connectivity.h"
+#include "multidir/core/mesh/mesh_io.h"
+#include "multidir/core/mesh/mesh_measure.h"
+#include "multidir/core/samples/samples.h"
+#include "multidir/core/search/decompose.h"
+#include "support/primitives.h"
+#include "support/test_models.h"
+
+using namespace multidir::core;
+using multidir::test::makeBox;
+using multidir::test::makeHook;
+using multidir::test::makeTBar;
+
+namespace {
+
+SearchOptions optionsFor(SearchScheme scheme) {
+  SearchOptions options;
+  options.scheme = scheme;
+  return options;
+}
+
+Decomposition run(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options) {
+  JobContext job;
+  auto result = decompose(model, machine, options, job);
+  if (!result.ok()) throw std::runtime_error(result.error().describe());
+  return std::move(result).value();
+}
+
+TriangleMesh loadShared(const std::string& name) {
+  auto loaded = loadMesh(multidir::test::sharedModelPath(name));
+  if (!loaded.ok()) throw std::runtime_error(loaded.error().describe());
+  return loaded->mesh;
+}
+
+MachineSpec machineWithUp(const Vec3& up, MachineKind kind = MachineKind::TiltRotate) {
+  MachineSpec machine;
+  machine.kind = kind;
+  machine.up = up;
+  if (kind == MachineKind::RotaryPlatform) machine.rotationAxis = platformFrameX(up);
+  return machine;
+}
+
+double recomputedJg(const Decomposition& plan, const SearchOptions& options) {
+  double total = 0;
+  OverhangOptions overhang;
+  overhang.alphaMaxDegrees = options.alphaMaxDegrees;
+  for (const Region& region : plan.regions) total += analyzeOverhang(region.mesh, region.printingDirection, overhang)->riskyAreaMm2;
+  return total;
+}
+
+}  // namespace
+
+TEST(Decompose, BoxNeedsNoPlane) {
+  const Decomposition plan = run(makeBox(Vec3(0, 0, 0), Vec3(30, 30, 30)), MachineSpec{}, SearchOptions{});
+  EXPECT_TRUE(plan.clippingPlanes.empty());
+  ASSERT_EQ(plan.regions.size(), 1u);
+  EXPECT_DOUBLE_EQ(plan.jgAfterMm2, 0.0);
+}
+
+TEST(Decompose, TBarIsCutSoItsWingsPrintSideways) {
+  const TriangleMesh tbar = makeTBar(10, 30, 80, 10, 10);
+  const Decomposition plan = run(tbar, MachineSpec{}, SearchOptions{});
+  EXPECT_NEAR(plan.jgBeforeMm2, 700.0, 1e-6);  // two wings of 35 x 10 mm look straight down
+  EXPECT_GE(plan.clippingPlanes.size(), 2u);
+  EXPECT_LT(plan.jgAfterMm2, 0.05 * plan.jgBeforeMm2);
+}
+
+TEST(Decompose, EveryRemainingPartStandsOnThePlatform) {
+  // The hook's drop would float if the arm were cut off above it: Criterion II must refuse such cuts.
+  const MachineSpec machine;
+  for (SearchScheme scheme : {SearchScheme::Greedy, SearchScheme::ConstrainedGreedy, SearchScheme::Beam}) {
+    const Decomposition plan = run(makeHook(10), machine, optionsFor(scheme));
+    ASSERT_FALSE(plan.regions.empty());
+    const auto solids = connectedSolidsOnPlatform(plan.regions.front().mesh, Plane{machine.up, 0.0}, 1e-3);
+    ASSERT_TRUE(solids.ok());
+    for (const PlacedSolid& solid : *solids) EXPECT_TRUE(solid.touchesPlatform) << schemeName(scheme);
+    EXPECT_LT(plan.jgAfterMm2, plan.jgBeforeMm2) << schemeName(scheme);
+  }
+}
+
+TEST(Decompose, NoClippingPlaneCutsThePlatformRegion) {
+  const TriangleMesh tbar = makeTBar(10, 30, 80, 10, 10);
+  const MachineSpec machine;
+  const Decomposition plan = run(tbar, machine, SearchOptions{});
+  const PlatformRegion platform = platformRegionFor(tbar, machine);
+  for (const Plane& plane : plan.clippingPlanes) {
+    const Vec3 inPlane = plane.normal - plane.normal.dot(machine.up) * machine.up;
+    EXPECT_GT(plane.offset, plane.normal.dot(platform.center) + platform.radiusMm * inPlane.norm());
+  }
+}
+
+TEST(Decompose, ReportedJgEqualsTheRiskyAreaOfTheRegionMeshes) {
+  const SearchOptions options;
+  for (const char* name : {"kitten.off", "bunny.off"}) {
+    const Decomposition plan = run(loadShared(name), machineWithUp(Vec3::UnitY()), options);
+    EXPECT_NEAR(recomputedJg(plan, options), plan.jgAfterMm2, 1e-6 * plan.jgBeforeMm2 + 1e-9) << name;
+    double volume = 0;
+    for (const Region& region : plan.regions) volume += region.volumeMm3;
+    EXPECT_NEAR(volume, signedVolume(loadShared(name)), 1e-9 * volume) << name;
+  }
+}
+
+TEST(Decompose, BeamSearchIsNeverWorseThanEitherGreedyScheme) {
+  std::vector<std::pair<TriangleMesh, Vec3>> models = {{makeTBar(10, 30, 80, 10, 10), Vec3::UnitZ()},
+                                                      {makeHook(10), Vec3::UnitZ()}};
+  for (const samples::SampleInfo& sample : samples::catalogue()) models.push_back({*samples::makeSample(sample.id), Vec3::UnitZ()});
+  for (const char* name : {"kitten.off", "3holes.off"}) models.push_back({loadShared(name), Vec3::UnitY()});
+  for (const auto& [model, up] : models) {
+    const MachineSpec machine = machineWithUp(up);
+    const double beam = run(model, machine, optionsFor(SearchScheme::Beam)).jgAfterMm2;
+    EXPECT_LE(beam, run(model, machine, optionsFor(SearchScheme::Greedy)).jgAfterMm2 + 1e-9);
+    EXPECT_LE(beam, run(model, machine, optionsFor(SearchScheme::ConstrainedGreedy)).jgAfterMm2 + 1e-9);
+  }
+}
+
+TEST(Decompose, OneAndTwoThreadsGiveTheSamePlan) {
+  const TriangleMesh kitten = loadShared("kitten.off");
+  SearchOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const Decomposition a = run(kitten, machineWithUp(Vec3::UnitY()), one);
+  const Decomposition b = run(kitten, machineWithUp(Vec3::UnitY()), two);
+  ASSERT_EQ(a.clippingPlanes.size(), b.clippingPlanes.size());
+  for (std::size_t i = 0; i < a.clippingPlanes.size(); ++i) {
+    EXPECT_EQ(a.clippingPlanes[i].normal, b.clippingPlanes[i].normal);
+    EXPECT_EQ(a.clippingPlanes[i].offset, b.clippingPlanes[i].offset);
+  }
+  EXPECT_EQ(a.jgAfterMm2, b.jgAfterMm2);
+}
+
+TEST(Decompose, RotaryPlatformPlansUseOnlyRealizableDirections) {
+  const MachineSpec machine = machineWithUp(Vec3::UnitY(), MachineKind::RotaryPlatform);
+  JobContext job;
+  auto result = decomposeWithAxisSearch(loadShared("kitten.off"), machine, SearchOptions{}, 6, job);
+  ASSERT_TRUE(result.ok()) << result.error().describe();
+  MachineSpec used = machine;
+  used.rotationAxis = result->rotationAxis;
+  EXPECT_NEAR(used.rotationAxis.dot(machine.up), 0.0, 1e-12);
+  for (const Region& region : result->regions) {
+    EXPECT_TRUE(isRealizable(used, region.printingDirection));
+    EXPECT_NEAR(region.printingDirection.dot(used.rotationAxis), 0.0, 1e-9);
+  }
+  EXPECT_LT(result->jgAfterMm2, result->jgBeforeMm2);
+}
+
+TEST(Decompose, CancelReturnsTheBestPlanFoundSoFar) {
+  JobContext job;
+  int reports = 0;
+  auto result = decompose(loadShared("kitten.off"), machineWithUp(Vec3::UnitY()), SearchOptions{}, job,
+                          [&](const SearchProgress&) {
+                            ++reports;
+                            job.cancel();
+                          });
+  ASSERT_TRUE(result.ok());
+  EXPECT_TRUE(result->cancelled);
+  EXPECT_EQ(reports, 1);
+  EXPECT_LE(result->statistics.levels, 2);
+  EXPECT_LE(result->jgAfterMm2, result->jgBeforeMm2);
+}
+
+TEST(Decompose, CancelledBeforeStartReturnsTheUncutModel) {
+  JobContext job;
+  job.cancel();
+  auto result = decompose(makeTBar(10, 30, 80, 10, 10), MachineSpec{}, SearchOptions{}, job);
+  ASSERT_TRUE(result.ok());
+  EXPECT_TRUE(result->cancelled);
+  EXPECT_EQ(result->regions.size(), 1u);
+}
+
+TEST(Decompose, AbsurdParametersAreRefusedByName) {
+  JobContext job;
+  SearchOptions options;
+  options.beamWidth = 0;
+  auto result = decompose(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), MachineSpec{}, options, job);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().where, "beam width");
+  options = SearchOptions{};
+  options.candidates.offsetStepMm = -1;
+  result = decompose(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), MachineSpec{}, options, job);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().where, "offset step");
+}

@@ -1,0 +1,122 @@
+#include <gtest/gtest.h>
+
+#include "multidir/core/common/units.h"
+#include "multidir/core/search/candidate_planes.h"
+#include "multidir/core/search/machine.h"
+#include "support/primitives.h"
+
+using namespace multidir::core;
+
+namespace {
+
+MachineSpec rotary() {
+  MachineSpec spec;
+  spec.kind = MachineKind::RotaryPlatform;
+  spec.rotationAxis = Vec3::UnitX();
+  spec.angleStepDegrees = 1.0;
+  return spec;
+}
+
+}  // namespace
+
+TEST(Machine, DefaultSpecsOfEveryKindAreValid) {
+  for (MachineKind kind : {MachineKind::ThreeAxis, MachineKind::RotaryPlatform, MachineKind::TiltRotate}) {
+    MachineSpec spec;
+    spec.kind = kind;
+    EXPECT_TRUE(validate(spec).ok()) << machineKindName(kind);
+  }
+}
+
+TEST(Machine, RotaryAxisOutOfThePlatformPlaneIsRefused) {
+  MachineSpec spec = rotary();
+  spec.rotationAxis = Vec3(0, 1, 1).normalized();
+  const Status status = validate(spec);
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().where, "rotation axis");
+}
+
+TEST(Machine, RotaryRealizesOnlyWholeStepsWithinTheRange) {
+  const MachineSpec spec = rotary();
+  EXPECT_TRUE(isRealizable(spec, rotaryDirection(spec, 30.0)));
+  EXPECT_TRUE(isRealizable(spec, rotaryDirection(spec, -60.0)));
+  EXPECT_FALSE(isRealizable(spec, rotaryDirection(spec, 30.5)));
+  EXPECT_FALSE(isRealizable(spec, rotaryDirection(spec, 61.0)));
+  EXPECT_FALSE(isRealizable(spec, Vec3(1, 0, 1).normalized()));  // not perpendicular to the axis
+}
+
+TEST(Machine, RotaryAngleOfADirectionIsTheAngleThatProducedIt) {
+  const MachineSpec spec = rotary();
+  for (double angle : {-45.0, -1.0, 0.0, 17.0, 60.0})
+    EXPECT_NEAR(machineAnglesFor(spec, rotaryDirection(spec, angle)).rotaryDegrees, angle, 1e-9);
+}
+
+TEST(Machine, TiltLimitAndForbiddenConesBoundFiveAxisDirections) {
+  MachineSpec spec;
+  spec.maxTiltDegrees = 60.0;
+  spec.forbiddenCones.push_back({Vec3(1, 0, 1).normalized(), 10.0});
+  EXPECT_TRUE(isRealizable(spec, Vec3(0, 1, 1).normalized()));
+  EXPECT_FALSE(isRealizable(spec, Vec3(1, 0, 1).normalized()));  // inside the cone
+  EXPECT_FALSE(isRealizable(spec, Vec3(0, 1, 0.2).normalized()));  // tilted 79 degrees
+  const MachineAngles angles = machineAnglesFor(spec, Vec3(0, 1, 1).normalized());
+  EXPECT_NEAR(angles.tiltDegrees, 45.0, 1e-9);
+  EXPECT_NEAR(angles.azimuthDegrees, 90.0, 1e-9);
+}
+
+TEST(Machine, UnknownKindNameIsRefusedWithTheChoices) {
+  const auto kind = parseMachineKind("6dof");
+  ASSERT_FALSE(kind.ok());
+  EXPECT_NE(kind.error().message.find("5dof"), std::string::npos);
+}
+
+TEST(Machine, DefaultPlatformRegionCoversTheFootprintPlusMargin) {
+  const TriangleMesh box = multidir::test::makeBox(Vec3(0, 0, 0), Vec3(20, 20, 10));
+  const PlatformRegion region = platformRegionFor(box, MachineSpec{});
+  EXPECT_TRUE(region.center.isApprox(Vec3(10, 10, 0)));
+  EXPECT_NEAR(region.radiusMm, std::sqrt(200.0) + 5.0, 1e-9);
+  EXPECT_DOUBLE_EQ(region.heightMm, 0.0);
+}
+
+TEST(CandidatePlanes, FibonacciSphereIsUnitAndBalanced) {
+  const auto points = fibonacciSphere(250);
+  ASSERT_EQ(points.size(), 250u);
+  Vec3 sum = Vec3::Zero();
+  for (const Vec3& p : points) {
+    EXPECT_NEAR(p.norm(), 1.0, 1e-12);
+    sum += p;
+  }
+  EXPECT_LT(sum.norm(), 1.0);
+}
+
+TEST(CandidatePlanes, FiveAxisNormalsStayWithinTheTiltLimit) {
+  MachineSpec spec;
+  spec.maxTiltDegrees = 90.0;
+  const auto normals = candidateNormals(spec, CandidateOptions{});
+  EXPECT_GT(normals.size(), 110u);
+  EXPECT_LT(normals.size(), 140u);
+  for (const Vec3& n : normals) EXPECT_GE(n.dot(spec.up), -1e-12);
+}
+
+TEST(CandidatePlanes, RotaryNormalsArePerpendicularToTheAxisAndRealizable) {
+  const MachineSpec spec = rotary();
+  const auto normals = candidateNormals(spec, CandidateOptions{});
+  EXPECT_EQ(normals.size(), 120u);  // -60..60 in 1 degree steps, 0 left out
+  for (const Vec3& n : normals) {
+    EXPECT_NEAR(n.dot(spec.rotationAxis), 0.0, 1e-12);
+    EXPECT_TRUE(isRealizable(spec, n));
+  }
+}
+
+TEST(CandidatePlanes, NoOffsetCutsThePlatformRegion) {
+  const TriangleMesh box = multidir::test::makeBox(Vec3(0, 0, 0), Vec3(40, 40, 40));
+  MachineSpec spec;
+  const PlatformRegion platform = platformRegionFor(box, spec);
+  CandidateOptions options;
+  for (const Vec3& n : candidateNormals(spec, options)) {
+    const OffsetGrid grid = candidateOffsets(box, n, platform, spec.up, options);
+    if (grid.count == 0) continue;
+    // The highest point of P's rim along n must lie below the first plane.
+    const Vec3 inPlane = n - n.dot(spec.up) * spec.up;
+    const double platformTop = n.dot(platform.center) + platform.radiusMm * inPlane.norm();
+    EXPECT_GT(grid.firstMm, platformTop);
+  }
+}
