@@ -1,5 +1,7 @@
 #include "multidir/core/analysis/overhang.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -12,10 +14,22 @@ Status validate(const OverhangOptions& options) {
                  "the maximal self-supporting angle must be at least 0 and below 90 degrees (got " +
                      std::to_string(options.alphaMaxDegrees) + "); 45 suits most FDM printers",
                  "alpha"};
-  if (!(options.platformToleranceMm >= 0.0 && std::isfinite(options.platformToleranceMm)))
-    return Error{ErrorCode::InvalidParameter, "the platform tolerance must be a finite length >= 0 mm",
-                 "platform tolerance"};
+  if (!(options.supportedBandMm >= 0.0 && options.supportedBandMm <= 100.0))
+    return Error{ErrorCode::InvalidParameter,
+                 "the supported band above the platform must be between 0 and 100 mm (got " +
+                     std::to_string(options.supportedBandMm) + ")",
+                 "supported band"};
   return Done{};
+}
+
+double triangleAreaAbove(std::array<double, 3> heights, double area, double level) {
+  std::sort(heights.begin(), heights.end());
+  const double ha = heights[0], hb = heights[1], hc = heights[2];
+  if (level <= ha) return area;
+  if (level >= hc) return 0.0;
+  // The area below a level grows quadratically from the lowest corner and shrinks quadratically to the top.
+  if (level < hb) return area - area * (level - ha) * (level - ha) / ((hb - ha) * (hc - ha));
+  return area * (hc - level) * (hc - level) / ((hc - ha) * (hc - hb));
 }
 
 Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& printingDirection,
@@ -30,6 +44,7 @@ Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& p
 
   OverhangAnalysis out;
   out.risky.assign(mesh.triangles.size(), 0);
+  out.riskyFaceAreaMm2.assign(mesh.triangles.size(), 0.0);
   double lowest = std::numeric_limits<double>::infinity();
   for (const Triangle& t : mesh.triangles)
     for (std::int32_t v : t) lowest = std::min(lowest, d.dot(mesh.vertices[v]));
@@ -40,13 +55,13 @@ Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& p
     const double doubleArea = areaNormal.norm();
     if (doubleArea <= 0.0) continue;
     if (areaNormal.dot(d) / doubleArea + sinAlpha >= 0.0) continue;
-    bool onPlatform = true;
-    for (int k = 0; k < 3 && onPlatform; ++k)
-      onPlatform = d.dot(mesh.corner(f, k)) - lowest <= options.platformToleranceMm;
-    if (onPlatform) continue;
+    const double counted = triangleAreaAbove({d.dot(mesh.corner(f, 0)), d.dot(mesh.corner(f, 1)), d.dot(mesh.corner(f, 2))},
+                                             0.5 * doubleArea, lowest + options.supportedBandMm);
+    if (counted <= 0.0) continue;
     out.risky[f] = 1;
+    out.riskyFaceAreaMm2[f] = counted;
     ++out.riskyFaces;
-    out.riskyAreaMm2 += 0.5 * doubleArea;
+    out.riskyAreaMm2 += counted;
   }
   return out;
 }

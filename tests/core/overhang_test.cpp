@@ -47,9 +47,25 @@ TEST(Overhang, InvertedPyramidSlantedFacesAreRiskyWhenSteeperThanAlpha) {
   const TriangleMesh pyramid = makeInvertedPyramid(side, height);
   const double slantHeight = std::hypot(side / 2, height);
   const double slantedArea = 4 * 0.5 * side * slantHeight;
-  const auto result = analyzeOverhang(pyramid, Vec3::UnitZ());
+  OverhangOptions noBand;
+  noBand.supportedBandMm = 0.0;
+  const auto result = analyzeOverhang(pyramid, Vec3::UnitZ(), noBand);
   ASSERT_TRUE(result.ok());
   EXPECT_NEAR(result->riskyAreaMm2, slantedArea, 1e-9 * slantedArea);
+}
+
+TEST(Overhang, ThePlatformSupportsTheBandAboveIt) {
+  // Below height b, each slanted face is a copy of itself scaled by b/height around the apex: only
+  // 1 - (b/height)^2 of the slanted area remains to count.
+  const double side = 20.0, height = 5.0, band = 1.0;
+  const double slantedArea = 4 * 0.5 * side * std::hypot(side / 2, height);
+  OverhangOptions options;
+  options.supportedBandMm = band;
+  const auto result = analyzeOverhang(makeInvertedPyramid(side, height), Vec3::UnitZ(), options);
+  ASSERT_TRUE(result.ok());
+  const double expected = slantedArea * (1 - (band / height) * (band / height));
+  EXPECT_NEAR(result->riskyAreaMm2, expected, 1e-9 * expected);
+  EXPECT_EQ(result->riskyFaces, 4u);
 }
 
 TEST(Overhang, InvertedPyramidSlantedFacesAreSafeWhenGentlerThanAlpha) {
@@ -70,7 +86,9 @@ TEST(Overhang, SphereRiskyAreaMatchesTheClosedFormForSeveralAngles) {
     options.alphaMaxDegrees = alphaDeg;
     const auto result = analyzeOverhang(sphere, Vec3::UnitZ(), options);
     ASSERT_TRUE(result.ok());
-    const double expected = 2 * kPi * radius * radius * (1 - std::sin(degToRad(alphaDeg)));
+    // Zones of a sphere have area 2 pi r times their height: the risky cap reaches r (1 - sin alpha) up from
+    // the bottom, of which the lowest band is supported by the platform.
+    const double expected = 2 * kPi * radius * (radius * (1 - std::sin(degToRad(alphaDeg))) - options.supportedBandMm);
     EXPECT_NEAR(result->riskyAreaMm2, expected, 0.01 * expected) << "alpha " << alphaDeg;
   }
 }
@@ -81,6 +99,14 @@ TEST(Overhang, DirectionNeedNotBeUnitLength) {
   const auto scaled = analyzeOverhang(pyramid, Vec3(0, 0, 7.5));
   ASSERT_TRUE(unit.ok() && scaled.ok());
   EXPECT_DOUBLE_EQ(unit->riskyAreaMm2, scaled->riskyAreaMm2);
+}
+
+TEST(Overhang, NegativeBandIsRefused) {
+  OverhangOptions options;
+  options.supportedBandMm = -1.0;
+  const auto result = analyzeOverhang(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), Vec3::UnitZ(), options);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().where, "supported band");
 }
 
 TEST(Overhang, AbsurdAlphaIsRefusedWithItsName) {

@@ -19,48 +19,60 @@ struct AboveMeasures {
   double volume = 0, riskyAlongNormal = 0, riskyFlagged = 0;
 };
 
+// Area and centroid of the part of face f above n.x = t.
+std::pair<double, Vec3> faceAbove(const TriangleMesh& mesh, std::size_t f, const Vec3& n, double t) {
+  std::vector<Vec3> polygon;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& a = mesh.corner(f, k);
+    const Vec3& b = mesh.corner(f, (k + 1) % 3);
+    const double da = n.dot(a) - t, db = n.dot(b) - t;
+    if (da > 0) polygon.push_back(a);
+    if ((da > 0) != (db > 0)) polygon.push_back(a + (b - a) * (da / (da - db)));
+  }
+  double area = 0;
+  Vec3 weighted = Vec3::Zero();
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+    const double part = (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]).norm() / 2;
+    area += part;
+    weighted += part * (polygon[0] + polygon[i] + polygon[i + 1]) / 3;
+  }
+  return {area, area > 0 ? Vec3(weighted / area) : Vec3::Zero()};
+}
+
+std::vector<double> riskyShares(const TriangleMesh& mesh, const OverhangAnalysis& overhang) {
+  std::vector<double> share(mesh.triangles.size(), 0.0);
+  for (std::size_t f = 0; f < share.size(); ++f) share[f] = overhang.riskyFaceAreaMm2[f] / mesh.faceArea(f);
+  return share;
+}
+
 AboveMeasures measureAboveByClippingFaces(const TriangleMesh& mesh, const Vec3& n, double t,
-                                          const std::vector<char>& flags, double sinAlpha) {
+                                          const std::vector<double>& share, double sinAlpha, double band) {
   AboveMeasures out;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    std::vector<Vec3> polygon;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& a = mesh.corner(f, k);
-      const Vec3& b = mesh.corner(f, (k + 1) % 3);
-      const double da = n.dot(a) - t, db = n.dot(b) - t;
-      if (da > 0) polygon.push_back(a);
-      if ((da > 0) != (db > 0)) polygon.push_back(a + (b - a) * (da / (da - db)));
-    }
-    if (polygon.size() < 3) continue;
-    Vec3 areaVector = Vec3::Zero(), weighted = Vec3::Zero();
-    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-      const Vec3 part = (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]) / 2;
-      areaVector += part;
-      weighted += part.norm() * (polygon[0] + polygon[i] + polygon[i + 1]) / 3;
-    }
-    const double area = areaVector.norm();
+    const auto [area, centroid] = faceAbove(mesh, f, n, t);
     if (area == 0) continue;
-    const Vec3 centroid = weighted / area;
     const Vec3 faceNormal = mesh.faceNormal(f);
     out.volume += n.dot(faceNormal) * area * (n.dot(centroid) - t);
-    if (n.dot(faceNormal) + sinAlpha < 0) out.riskyAlongNormal += area;
-    if (flags[f]) out.riskyFlagged += area;
+    if (n.dot(faceNormal) + sinAlpha < 0) out.riskyAlongNormal += faceAbove(mesh, f, n, t + band).first;
+    out.riskyFlagged += share[f] * area;
   }
   return out;
 }
 
-void expectSweepMatchesReference(const TriangleMesh& mesh, const Vec3& n, double step, double tolerance) {
+void expectSweepMatchesReference(const TriangleMesh& mesh, const Vec3& n, double step, double tolerance,
+                                 double band = kDefaultSupportedBandMm) {
   const BoundingBox box = boundingBox(mesh);
   const double radius = box.size().norm();
   OffsetGrid grid{n.dot(box.center()) - radius / 2, step, static_cast<int>(radius / step) + 1};
   const double sinAlpha = std::sin(degToRad(45.0));
   const auto overhang = analyzeOverhang(mesh, Vec3::UnitZ());
   ASSERT_TRUE(overhang.ok());
-  const SweepProfile profile = sweepPlanes(mesh, n, grid, overhang->risky, sinAlpha);
+  const std::vector<double> share = riskyShares(mesh, *overhang);
+  const SweepProfile profile = sweepPlanes(mesh, n, grid, share, sinAlpha, band);
   const double totalVolume = signedVolume(mesh);
   const double totalArea = surfaceArea(mesh);
   for (int j = 0; j < grid.count; ++j) {
-    const AboveMeasures ref = measureAboveByClippingFaces(mesh, n, grid.offsetAt(j), overhang->risky, sinAlpha);
+    const AboveMeasures ref = measureAboveByClippingFaces(mesh, n, grid.offsetAt(j), share, sinAlpha, band);
     EXPECT_NEAR(profile.volumeAboveMm3[j], ref.volume, tolerance * totalVolume) << "offset " << j;
     EXPECT_NEAR(profile.riskyAreaAlongNormalMm2[j], ref.riskyAlongNormal, tolerance * totalArea) << "offset " << j;
     EXPECT_NEAR(profile.riskyAreaFlaggedMm2[j], ref.riskyFlagged, tolerance * totalArea) << "offset " << j;
@@ -74,7 +86,7 @@ TEST(PlaneSweep, VolumeAboveASphereCapMatchesTheClosedForm) {
   const TriangleMesh sphere = makeIcosphere(Vec3::Zero(), r, 6);
   const double meshVolume = signedVolume(sphere);
   OffsetGrid grid{-r, 0.5, 81};
-  const SweepProfile profile = sweepPlanes(sphere, Vec3::UnitZ(), grid, {}, std::sin(degToRad(45.0)));
+  const SweepProfile profile = sweepPlanes(sphere, Vec3::UnitZ(), grid, {}, std::sin(degToRad(45.0)), 1.0);
   for (int j = 0; j < grid.count; ++j) {
     const double capHeight = r - grid.offsetAt(j);
     const double exactCap = kPi * capHeight * capHeight * (3 * r - capHeight) / 3;
@@ -104,8 +116,12 @@ TEST(PlaneSweep, AxisAlignedNormalOnFacesParallelToThePlanesStaysExact) {
   expectSweepMatchesReference(makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 12)), Vec3::UnitZ(), 1.0, 1e-9);
 }
 
+TEST(PlaneSweep, WithoutASupportedBandEveryRiskyPartAboveThePlaneCounts) {
+  expectSweepMatchesReference(makeIcosphere(Vec3(0, 0, 20), 20.0, 3), Vec3(0, 1, 1).normalized(), 1.0, 1e-9, 0.0);
+}
+
 TEST(PlaneSweep, EmptyGridGivesEmptyProfile) {
-  const SweepProfile profile = sweepPlanes(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), Vec3::UnitZ(), OffsetGrid{0, 1, 0}, {}, 0.7);
+  const SweepProfile profile = sweepPlanes(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), Vec3::UnitZ(), OffsetGrid{0, 1, 0}, {}, 0.7, 1.0);
   EXPECT_TRUE(profile.volumeAboveMm3.empty());
 }
 
@@ -124,6 +140,7 @@ TEST(PlaneSweep, EqualsClipThenMeasureOnRandomPlanesOfRealModels) {
     const TriangleMesh& mesh = loaded->mesh;
     const auto overhang = analyzeOverhang(mesh, Vec3::UnitY());
     ASSERT_TRUE(overhang.ok());
+    const std::vector<double> share = riskyShares(mesh, *overhang);
     const double totalVolume = signedVolume(mesh), totalArea = surfaceArea(mesh);
     for (int trial = 0; trial < 8; ++trial) {
       const Vec3 n = Vec3(gauss(random), gauss(random), gauss(random)).normalized();
@@ -133,18 +150,17 @@ TEST(PlaneSweep, EqualsClipThenMeasureOnRandomPlanesOfRealModels) {
         high = std::max(high, n.dot(v));
       }
       const OffsetGrid grid{low + 0.37, 1.3, static_cast<int>((high - low) / 1.3)};
-      const SweepProfile profile = sweepPlanes(mesh, n, grid, overhang->risky, sinAlpha);
+      const SweepProfile profile = sweepPlanes(mesh, n, grid, share, sinAlpha, kDefaultSupportedBandMm);
       for (int j = trial % 5; j < grid.count; j += 9) {
         const Plane plane{n, grid.offsetAt(j)};
         const auto clipped = clipByPlane(mesh, plane, 7);
         ASSERT_TRUE(clipped.ok()) << clipped.error().describe();
         const TriangleMesh& above = clipped->above;
-        double riskyAlongNormal = 0, flagged = 0;
-        for (std::size_t f = 0; f < above.triangles.size(); ++f) {
-          if (above.origins[f].isCap()) continue;
-          if (above.faceNormal(f).dot(n) + sinAlpha < 0) riskyAlongNormal += above.faceArea(f);
-          if (overhang->risky[above.origins[f].index]) flagged += above.faceArea(f);
-        }
+        // The part above, printed along n on the plane, measured as a region: its base supports the band.
+        const double riskyAlongNormal = analyzeOverhang(above, n)->riskyAreaMm2;
+        double flagged = 0;
+        for (std::size_t f = 0; f < above.triangles.size(); ++f)
+          if (!above.origins[f].isCap()) flagged += share[above.origins[f].index] * above.faceArea(f);
         EXPECT_NEAR(profile.volumeAboveMm3[j], signedVolume(above), 1e-6 * totalVolume) << name;
         EXPECT_NEAR(profile.riskyAreaAlongNormalMm2[j], riskyAlongNormal, 1e-6 * totalArea) << name;
         EXPECT_NEAR(profile.riskyAreaFlaggedMm2[j], flagged, 1e-6 * totalArea) << name;

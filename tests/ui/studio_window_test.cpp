@@ -12,6 +12,7 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/samples/samples.h"
 #include "support/test_models.h"
+#include "ui/error_text.h"
 #include "ui/main_window.h"
 #include "ui/picture_census.h"
 #include "ui/studio_startup.h"
@@ -104,6 +105,11 @@ TEST(StudioWindow, DefectiveFileKeepsTheCurrentModelAndReportsTheError) {
   ASSERT_NE(box, nullptr);
   EXPECT_TRUE(box->isVisible());
   EXPECT_FALSE(box->isModal());
+  // A translated headline for the kind of defect, core's detail below it, and what is still open.
+  EXPECT_EQ(box->text(), errorHeadline(core::ErrorCode::OpenBoundary));
+  EXPECT_TRUE(box->informativeText().contains(QStringLiteral("halftunnel-open.off")))
+      << box->informativeText().toStdString();
+  EXPECT_TRUE(box->informativeText().contains(before)) << box->informativeText().toStdString();
   box->close();
 }
 

@@ -10,8 +10,11 @@ namespace multidir::core {
 using detail::GridPolynomialSum;
 
 SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, const OffsetGrid& grid,
-                         const std::vector<char>& riskyFlags, double sinAlphaMax) {
-  GridPolynomialSum volume(grid), riskyAlongNormal(grid), riskyFlagged(grid);
+                         const std::vector<double>& riskyShare, double sinAlphaMax, double supportedBandMm) {
+  // R(M+, plane at t) counts what lies above t + band: the same sums on a grid shifted by the band.
+  OffsetGrid shifted = grid;
+  shifted.firstMm += supportedBandMm;
+  GridPolynomialSum volume(grid), riskyAlongNormal(shifted), riskyFlagged(grid);
   constexpr double kInf = INFINITY;
 
   for (std::size_t f = 0; f < solid.triangles.size(); ++f) {
@@ -21,7 +24,7 @@ SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, cons
     const double area = 0.5 * doubleArea;
     const double cosine = unitNormal.dot(areaNormal) / doubleArea;  // n . n_f
     const bool alongNormal = cosine + sinAlphaMax < 0.0;
-    const bool flagged = f < riskyFlags.size() && riskyFlags[f];
+    const double share = f < riskyShare.size() ? riskyShare[f] : 0.0;
 
     std::array<double, 3> h = {unitNormal.dot(solid.corner(f, 0)), unitNormal.dot(solid.corner(f, 1)),
                                unitNormal.dot(solid.corner(f, 2))};
@@ -30,14 +33,14 @@ SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, cons
     const double lower = hb - ha, span = hc - ha, upper = hc - hb;
     const double mean = (ha + hb + hc) / 3.0;
 
-    // Area of the face above the plane at offset t.
-    auto addArea = [&](GridPolynomialSum& sum) {
-      sum.addPiece(-kInf, ha, ha, {area, 0, 0, 0});
-      if (lower > 0) sum.addPiece(ha, hb, ha, {area, 0, -area / (lower * span), 0});
-      if (upper > 0) sum.addPiece(hb, hc, hc, {0, 0, area / (span * upper), 0});
+    // `part` of the face's area above the plane at offset t.
+    auto addArea = [&](GridPolynomialSum& sum, double part) {
+      sum.addPiece(-kInf, ha, ha, {part, 0, 0, 0});
+      if (lower > 0) sum.addPiece(ha, hb, ha, {part, 0, -part / (lower * span), 0});
+      if (upper > 0) sum.addPiece(hb, hc, hc, {0, 0, part / (span * upper), 0});
     };
-    if (alongNormal) addArea(riskyAlongNormal);
-    if (flagged) addArea(riskyFlagged);
+    if (alongNormal) addArea(riskyAlongNormal, area);
+    if (share > 0) addArea(riskyFlagged, share * area);
 
     // cosine * integral over the face's part above t of (h - t) dA: its share of the volume above.
     const double w = cosine * area;

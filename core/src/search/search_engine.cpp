@@ -25,14 +25,13 @@ SearchEngine::SearchEngine(const TriangleMesh& model, const MachineSpec& machine
 
 std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const TriangleMesh> remaining) const {
   auto node = std::make_shared<SearchNode>();
-  OverhangOptions overhang;
-  overhang.alphaMaxDegrees = m_options.alphaMaxDegrees;
-  overhang.platformToleranceMm = m_options.platformToleranceMm;
   // The remaining part always stands on the original platform (Criterion II), so its platform height is
   // the model's; analyzeOverhang finds the same lowest point.
-  const auto analysis = analyzeOverhang(*remaining, m_machine.up, overhang);
+  const auto analysis = analyzeOverhang(*remaining, m_machine.up, overhangOptions());
   if (analysis.ok()) {
-    node->riskyUp = analysis->risky;
+    node->riskyUpShare.resize(remaining->triangles.size(), 0.0);
+    for (std::size_t f = 0; f < remaining->triangles.size(); ++f)
+      if (analysis->risky[f]) node->riskyUpShare[f] = analysis->riskyFaceAreaMm2[f] / remaining->faceArea(f);
     node->riskyUpAreaMm2 = analysis->riskyAreaMm2;
   }
   node->volumeMm3 = signedVolume(*remaining);
@@ -52,7 +51,8 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
     const OffsetGrid grid = candidateOffsets(*node.remaining, n, m_platform, m_machine.up, m_options.candidates);
     if (grid.count == 0) return;
     offered[i] = grid.count;
-    const SweepProfile profile = sweepPlanes(*node.remaining, n, grid, node.riskyUp, m_sinAlpha);
+    const SweepProfile profile =
+        sweepPlanes(*node.remaining, n, grid, node.riskyUpShare, m_sinAlpha, m_options.supportedBandMm);
     for (int j = 0; j < grid.count; ++j) {
       const double above = profile.volumeAboveMm3[j];
       if (above < m_minRegionVolume || node.volumeMm3 - above < volumeSlack) continue;
@@ -101,6 +101,13 @@ std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std:
   return std::shared_ptr<const SearchNode>(std::move(child));
 }
 
+OverhangOptions SearchEngine::overhangOptions() const {
+  OverhangOptions overhang;
+  overhang.alphaMaxDegrees = m_options.alphaMaxDegrees;
+  overhang.supportedBandMm = m_options.supportedBandMm;
+  return overhang;
+}
+
 bool SearchEngine::standsOnPlatform(const TriangleMesh& solid) const {
   // Criterion II: every connected solid must reach down to the platform plane.
   const FaceComponents components = faceComponents(solid);
@@ -123,9 +130,7 @@ Decomposition SearchEngine::planOf(const SearchNode& node) const {
   for (const SearchNode* n = &node; n && n->parent; n = n->parent.get()) chain.push_back(n);
 
   Decomposition plan;
-  OverhangOptions overhang;
-  overhang.alphaMaxDegrees = m_options.alphaMaxDegrees;
-  overhang.platformToleranceMm = m_options.platformToleranceMm;
+  const OverhangOptions overhang = overhangOptions();
 
   auto addRegion = [&](const TriangleMesh& mesh, const Vec3& direction, std::optional<Plane> base, int index) {
     Region region;

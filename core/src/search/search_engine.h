@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "multidir/core/analysis/overhang.h"
 #include "multidir/core/common/job_context.h"
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/search/search_options.h"
@@ -43,6 +44,7 @@ class SearchEngine {
   JobContext& job() { return m_job; }
 
  private:
+  OverhangOptions overhangOptions() const;
   std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining) const;
 
   const MachineSpec& m_machine;

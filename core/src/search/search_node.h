@@ -12,7 +12,7 @@ namespace multidir::core::detail {
 
 struct SearchNode {
   std::shared_ptr<const TriangleMesh> remaining;  // the part still to be cut (printed along up at the end)
-  std::vector<char> riskyUp;                      // per face of `remaining`: risky along up
+  std::vector<double> riskyUpShare;                // per face of `remaining`: share of its area risky along up
   double riskyUpAreaMm2 = 0.0;
   double volumeMm3 = 0.0;
 

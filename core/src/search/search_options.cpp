@@ -32,6 +32,7 @@ Status validate(const SearchOptions& o) {
   if (!(o.deltaGrowth > 1 && o.deltaGrowth < 1000)) return bad("delta growth", "must be above 1 and below 1000");
   if (!(o.diversityCosine >= 0 && o.diversityCosine <= 1)) return bad("diversity cosine", "must be between 0 and 1");
   if (!(o.diversityOffsetMm >= 0 && o.diversityOffsetMm < 1e4)) return bad("diversity offset", "must be between 0 and 10000 mm");
+  if (!(o.supportedBandMm >= 0 && o.supportedBandMm <= 100)) return bad("supported band", "must be between 0 and 100 mm");
   if (!(o.platformToleranceMm >= 0 && o.platformToleranceMm < 10)) return bad("platform tolerance", "must be between 0 and 10 mm");
   if (o.threads < 0 || o.threads > 256) return bad("threads", "must be between 0 (all) and 256");
   return validate(o.candidates);

@@ -23,16 +23,19 @@ struct OffsetGrid {
 // What lies above each plane of the grid.
 struct SweepProfile {
   std::vector<double> volumeAboveMm3;
-  // Area above the plane of faces that would be risky if the part above were printed along the normal.
+  // R(M+, plane): area of faces that would be risky if the part above were printed along the normal, counted
+  // above the supported band over the plane (the plane is that part's base).
   std::vector<double> riskyAreaAlongNormalMm2;
-  // Area above the plane of faces flagged risky for the solid's current printing direction.
+  // Area above the plane of the risky parts of faces for the solid's current printing direction.
   std::vector<double> riskyAreaFlaggedMm2;
 };
 
 // Sweeps the planes of `grid` along `unitNormal` through `solid` (closed, outward normals).
-// `riskyFlags` holds one flag per face (risky for the current printing direction, e.g. from
-// analyzeOverhang); `sinAlphaMax` = sin(alpha_max) decides which faces are risky along the normal.
+// `riskyShare` holds, per face, the share of its area that is risky for the solid's current printing
+// direction (OverhangAnalysis::riskyFaceAreaMm2 over the face's area; empty: none). A face's share is taken
+// to be spread evenly over it. `sinAlphaMax` = sin(alpha_max) decides which faces are risky along the normal;
+// `supportedBandMm` is the height above a base that the base supports (OverhangOptions::supportedBandMm).
 SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, const OffsetGrid& grid,
-                         const std::vector<char>& riskyFlags, double sinAlphaMax);
+                         const std::vector<double>& riskyShare, double sinAlphaMax, double supportedBandMm);
 
 }  // namespace multidir::core

@@ -28,7 +28,8 @@ struct SearchOptions {
   double deltaGrowth = 5.0;                 // ... and multiplies delta by this until the beams are full
   double diversityCosine = 0.95;            // two children of one parent are too close when |n.n'| > this
   double diversityOffsetMm = 2.0;           // ... and their offsets differ by less than this
-  double platformToleranceMm = kDefaultPlatformToleranceMm;
+  double supportedBandMm = kDefaultSupportedBandMm;  // height above the platform or a base that it supports
+  double platformToleranceMm = kDefaultPlatformToleranceMm;  // how close a solid must reach to touch the platform
   int threads = 0;                          // 0: all hardware threads
 };
 

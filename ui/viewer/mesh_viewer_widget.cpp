@@ -1,0 +1,456 @@
+#include "ui/viewer/mesh_viewer_widget.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
+
+#include <vtkActor.h>
+#include <vtkAxesActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkCylinderSource.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkNew.h>
+#include <vtkOpenGLState.h>
+#include <vtkOrientationMarkerWidget.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTransform.h>
+
+#include "multidir/core/common/units.h"
+#include "ui/viewer/mesh_to_polydata.h"
+#include "ui/viewer/platform_geometry.h"
+
+namespace multidir::ui {
+namespace {
+
+// Light grey-blue model on a dark, nearly neutral gradient; the platform is a neutral grey. The model's
+// hue differs from both, so a picture can be told apart by colour (the viewer tests do).
+constexpr double kModelRgb[3] = {0.66, 0.75, 0.92};
+constexpr double kPlatformRgb[3] = {0.60, 0.60, 0.61};
+constexpr double kGridRgb[3] = {0.38, 0.38, 0.40};
+constexpr double kBackgroundTopRgb[3] = {0.12, 0.12, 0.14};
+constexpr double kBackgroundBottomRgb[3] = {0.40, 0.40, 0.42};
+
+// The platform's thickness and its gap below the model, as fractions of its radius: the gap keeps the
+// faces the model stands on from fighting with the platform's top in the depth buffer.
+constexpr double kPlatformThickness = 0.015;
+constexpr double kPlatformGap = 0.006;
+
+QColor toQColor(const double rgb[3]) { return QColor::fromRgbF(float(rgb[0]), float(rgb[1]), float(rgb[2])); }
+
+core::Vec3 unitOrZ(const core::Vec3& v) {
+  const double length = v.norm();
+  if (!std::isfinite(length) || length == 0.0) return core::Vec3::UnitZ();
+  return v / length;
+}
+
+// The side the camera looks from by default: -Y for Z-up models (the usual "front" of a part on a
+// printer bed), +Z for everything else (the front of a Y-up scanned model).
+core::Vec3 frontSide(const core::Vec3& up) {
+  const core::Vec3 reference = std::abs(up.z()) > 0.9 ? core::Vec3(0.0, -1.0, 0.0) : core::Vec3::UnitZ();
+  return (reference - reference.dot(up) * up).normalized();
+}
+
+// A transform taking VTK's Y-axis sources (cylinder, and the grid built in the XZ plane) to the platform:
+// +Y becomes the disc's normal, the origin goes `below` mm under the disc's centre.
+vtkSmartPointer<vtkTransform> platformFrame(const PlatformDisc& disc, double below) {
+  const core::Vec3 origin = disc.center - below * disc.normal;
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  transform->Translate(origin.x(), origin.y(), origin.z());
+  const core::Vec3 axis = core::Vec3::UnitY().cross(disc.normal);
+  const double angle = std::atan2(axis.norm(), core::Vec3::UnitY().dot(disc.normal));
+  if (axis.norm() > 1e-12) {
+    transform->RotateWXYZ(core::radToDeg(angle), axis.x(), axis.y(), axis.z());
+  } else if (angle > 1.0) {  // the normal is -Y
+    transform->RotateX(180.0);
+  }
+  return transform;
+}
+
+// The thin cylinder of the platform, its top a small gap below the model's lowest point.
+vtkSmartPointer<vtkTransform> platformPlacement(const PlatformDisc& disc) {
+  const double thickness = kPlatformThickness * disc.radiusMm;
+  auto transform = platformFrame(disc, kPlatformGap * disc.radiusMm + 0.5 * thickness);
+  transform->Scale(disc.radiusMm, thickness, disc.radiusMm);
+  return transform;
+}
+
+// 1, 2 or 5 times a power of ten, near `rough`: grid spacings a person reads as round millimetres.
+double roundStep(double rough) {
+  const double decade = std::pow(10.0, std::floor(std::log10(rough)));
+  for (const double factor : {1.0, 2.0, 5.0}) {
+    if (factor * decade >= rough) return factor * decade;
+  }
+  return 10.0 * decade;
+}
+
+// Grid lines across the platform's top (in its XZ plane, clipped to the disc), about ten each way, so the
+// model's size can be judged at a glance.
+vtkSmartPointer<vtkPolyData> platformGrid(double radius) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  const double step = roundStep(radius / 5.0);
+  const int count = static_cast<int>(std::floor(radius / step));
+  for (int i = -count; i <= count; ++i) {
+    const double across = i * step;
+    const double half = std::sqrt(std::max(0.0, radius * radius - across * across));
+    if (half <= 0.0) continue;
+    const vtkIdType a = points->InsertNextPoint(across, 0.0, -half);
+    const vtkIdType b = points->InsertNextPoint(across, 0.0, half);
+    const vtkIdType c = points->InsertNextPoint(-half, 0.0, across);
+    const vtkIdType d = points->InsertNextPoint(half, 0.0, across);
+    const vtkIdType first[2] = {a, b};
+    const vtkIdType second[2] = {c, d};
+    lines->InsertNextCell(2, first);
+    lines->InsertNextCell(2, second);
+  }
+  auto grid = vtkSmartPointer<vtkPolyData>::New();
+  grid->SetPoints(points);
+  grid->SetLines(lines);
+  return grid;
+}
+
+}  // namespace
+
+struct MeshViewerWidget::Impl {
+  vtkNew<vtkGenericOpenGLRenderWindow> window;
+  vtkNew<vtkGenericRenderWindowInteractor> interactor;
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  vtkNew<vtkRenderer> renderer;
+
+  vtkNew<vtkPolyDataMapper> modelMapper;
+  vtkNew<vtkActor> modelActor;
+  vtkNew<vtkCylinderSource> platformSource;
+  vtkNew<vtkPolyDataMapper> platformMapper;
+  vtkNew<vtkActor> platformActor;
+  vtkNew<vtkPolyDataMapper> gridMapper;
+  vtkNew<vtkActor> gridActor;
+
+  vtkNew<vtkAxesActor> axes;
+  vtkNew<vtkOrientationMarkerWidget> axesMarker;  // declared last: it must go before the interactor
+
+  core::Vec3 up = core::Vec3::UnitZ();
+  bool hasMesh = false;
+  bool fitPending = true;
+  bool glReady = false;
+  std::size_t frames = 0;
+  QMetaObject::Connection contextConnection;
+
+  Impl() {
+    renderer->GradientBackgroundOn();
+    renderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
+    renderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
+    window->AddRenderer(renderer);
+    // Qt owns the context; VTK draws into its own framebuffer and blits to the one Qt has bound.
+    window->SetOwnContext(false);
+    window->SetFrameBlitModeToBlitToCurrent();
+    window->SetMultiSamples(4);  // smooth silhouettes; resolved when VTK blits into Qt's framebuffer
+
+    interactor->SetRenderWindow(window);
+    interactor->SetInteractorStyle(style);
+    // Renders happen only in paintGL; the widget asks Qt for a repaint after each forwarded event.
+    interactor->EnableRenderOff();
+
+    modelActor->SetMapper(modelMapper);
+    vtkProperty* model = modelActor->GetProperty();
+    model->SetColor(kModelRgb[0], kModelRgb[1], kModelRgb[2]);
+    model->SetInterpolationToFlat();
+    model->EdgeVisibilityOff();
+    model->SetAmbient(0.12);
+    model->SetDiffuse(0.88);
+    model->SetSpecular(0.0);
+
+    platformSource->SetResolution(128);
+    platformSource->SetRadius(1.0);
+    platformSource->SetHeight(1.0);
+    platformSource->CappingOn();
+    platformMapper->SetInputConnection(platformSource->GetOutputPort());
+    platformActor->SetMapper(platformMapper);
+    vtkProperty* platform = platformActor->GetProperty();
+    platform->SetColor(kPlatformRgb[0], kPlatformRgb[1], kPlatformRgb[2]);
+    // Mostly ambient: seen at a grazing angle under the headlight it would otherwise look like a shadow.
+    platform->SetAmbient(0.6);
+    platform->SetDiffuse(0.4);
+    gridActor->SetMapper(gridMapper);
+    gridActor->GetProperty()->SetColor(kGridRgb[0], kGridRgb[1], kGridRgb[2]);
+    gridActor->GetProperty()->LightingOff();
+    gridActor->PickableOff();
+
+    modelActor->VisibilityOff();
+    platformActor->VisibilityOff();
+    gridActor->VisibilityOff();
+    renderer->AddActor(modelActor);
+    renderer->AddActor(platformActor);
+    renderer->AddActor(gridActor);
+
+    axesMarker->SetOrientationMarker(axes);
+    axesMarker->SetViewport(0.0, 0.0, 0.18, 0.18);
+    axesMarker->SetZoom(1.7);  // the axes actor's bounds are symmetric about its origin: fill the corner
+  }
+
+  void applyFit() {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    if (!hasMesh) {
+      renderer->ResetCamera();
+      return;
+    }
+    const core::Vec3 front = frontSide(up);
+    const core::Vec3 right = (-front).cross(up);
+    const core::Vec3 direction = (front + 0.55 * right + 0.45 * up).normalized();
+    double bounds[6];
+    modelActor->GetBounds(bounds);
+    const core::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+                            0.5 * (bounds[4] + bounds[5]));
+    const core::Vec3 eye = centre + direction;
+    camera->SetFocalPoint(centre.x(), centre.y(), centre.z());
+    camera->SetPosition(eye.x(), eye.y(), eye.z());
+    camera->SetViewUp(up.x(), up.y(), up.z());
+    renderer->ResetCamera();  // keeps the direction, frames every visible actor (model and platform)
+    camera->Zoom(1.25);
+    renderer->ResetCameraClippingRange();
+  }
+};
+
+MeshViewerWidget::MeshViewerWidget(QWidget* parent) : QOpenGLWidget(parent), m_impl(std::make_unique<Impl>()) {
+  setFocusPolicy(Qt::StrongFocus);
+  setMinimumSize(200, 150);
+}
+
+MeshViewerWidget::~MeshViewerWidget() {
+  if (m_impl->contextConnection) disconnect(m_impl->contextConnection);
+  if (m_impl->glReady && context()) {
+    makeCurrent();
+    releaseGraphics();
+    doneCurrent();
+  }
+  if (m_impl->axesMarker->GetEnabled()) m_impl->axesMarker->SetEnabled(0);
+}
+
+QSize MeshViewerWidget::sizeHint() const { return {900, 700}; }
+
+void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3& up) {
+  Impl& m = *m_impl;
+  m.up = unitOrZ(up);
+  m.modelMapper->SetInputData(toPolyData(mesh));
+  m.modelActor->SetVisibility(!mesh.empty());
+  const PlatformDisc disc = platformUnder(mesh, m.up);
+  m.platformActor->SetUserTransform(platformPlacement(disc));
+  m.platformActor->SetVisibility(!mesh.empty());
+  // Halfway between the platform's top and the model, so neither hides the lines.
+  m.gridMapper->SetInputData(platformGrid(disc.radiusMm));
+  m.gridActor->SetUserTransform(platformFrame(disc, 0.5 * kPlatformGap * disc.radiusMm));
+  m.gridActor->SetVisibility(!mesh.empty());
+  m.hasMesh = !mesh.empty();
+  fitView();
+}
+
+void MeshViewerWidget::clear() {
+  Impl& m = *m_impl;
+  m.modelMapper->SetInputData(vtkSmartPointer<vtkPolyData>::New());
+  m.modelActor->VisibilityOff();
+  m.platformActor->VisibilityOff();
+  m.gridActor->VisibilityOff();
+  m.hasMesh = false;
+  update();
+}
+
+void MeshViewerWidget::fitView() {
+  // The camera's framing depends on the viewport's aspect ratio, known for sure only when painting.
+  m_impl->fitPending = true;
+  update();
+}
+
+bool MeshViewerWidget::hasMesh() const { return m_impl->hasMesh; }
+std::size_t MeshViewerWidget::framesRendered() const { return m_impl->frames; }
+
+QColor MeshViewerWidget::modelColor() { return toQColor(kModelRgb); }
+QColor MeshViewerWidget::platformColor() { return toQColor(kPlatformRgb); }
+QColor MeshViewerWidget::backgroundTopColor() { return toQColor(kBackgroundTopRgb); }
+QColor MeshViewerWidget::backgroundBottomColor() { return toQColor(kBackgroundBottomRgb); }
+
+void MeshViewerWidget::initializeGL() {
+  Impl& m = *m_impl;
+  // A new context (first show, or the widget moved to another top-level window): VTK's GPU resources
+  // belong to the old one and are released before it goes.
+  if (m.contextConnection) disconnect(m.contextConnection);
+  m.contextConnection = connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
+    makeCurrent();
+    releaseGraphics();
+    doneCurrent();
+  });
+  m.window->SetIsCurrent(true);
+  m.window->OpenGLInitContext();
+  m.window->SetIsCurrent(false);
+  if (!m.interactor->GetInitialized()) m.interactor->Initialize();
+  if (!m.axesMarker->GetEnabled()) {
+    m.axesMarker->SetInteractor(m.interactor);
+    m.axesMarker->SetEnabled(1);
+    m.axesMarker->InteractiveOff();
+  }
+  m.glReady = true;
+}
+
+void MeshViewerWidget::resizeGL(int /*width*/, int /*height*/) {
+  // The size VTK renders at is set in paintGL, from the device pixel size at that moment.
+}
+
+void MeshViewerWidget::paintGL() {
+  Impl& m = *m_impl;
+  const qreal ratio = devicePixelRatioF();
+  const int w = std::max(1, static_cast<int>(std::lround(width() * ratio)));
+  const int h = std::max(1, static_cast<int>(std::lround(height() * ratio)));
+  m.window->SetSize(w, h);
+  m.interactor->SetSize(w, h);
+  if (m.fitPending) {
+    m.applyFit();
+    m.fitPending = false;
+  }
+  m.renderer->ResetCameraClippingRange();
+
+  // Qt changed GL state behind VTK's cache since the last frame: re-read it, and restore Qt's after.
+  vtkOpenGLState* state = m.window->GetState();
+  state->Reset();
+  state->Push();
+  m.window->SetIsCurrent(true);
+  m.window->SetReadyForRendering(true);
+  m.window->Render();
+  m.window->SetReadyForRendering(false);
+  m.window->SetIsCurrent(false);
+  state->Pop();
+
+  ++m.frames;
+  emit frameRendered();
+}
+
+void MeshViewerWidget::releaseGraphics() {
+  if (!m_impl->glReady) return;
+  m_impl->window->SetIsCurrent(true);
+  m_impl->window->ReleaseGraphicsResources(m_impl->window);
+  m_impl->window->SetIsCurrent(false);
+  m_impl->glReady = false;
+}
+
+namespace {
+
+// Tells the interactor where a mouse event happened, in VTK's device pixels (origin bottom left).
+void setMouseInformation(vtkGenericRenderWindowInteractor* interactor, const QWidget* widget,
+                         const QPointF& position, Qt::KeyboardModifiers modifiers, int repeat) {
+  const qreal ratio = widget->devicePixelRatioF();
+  interactor->SetEventInformationFlipY(static_cast<int>(std::lround(position.x() * ratio)),
+                                       static_cast<int>(std::lround(position.y() * ratio)),
+                                       modifiers.testFlag(Qt::ControlModifier) ? 1 : 0,
+                                       modifiers.testFlag(Qt::ShiftModifier) ? 1 : 0, 0, repeat);
+  interactor->SetAltKey(modifiers.testFlag(Qt::AltModifier) ? 1 : 0);
+}
+
+unsigned long pressEventFor(Qt::MouseButton button) {
+  switch (button) {
+    case Qt::LeftButton: return vtkCommand::LeftButtonPressEvent;
+    case Qt::MiddleButton: return vtkCommand::MiddleButtonPressEvent;
+    case Qt::RightButton: return vtkCommand::RightButtonPressEvent;
+    default: return vtkCommand::NoEvent;
+  }
+}
+
+unsigned long releaseEventFor(Qt::MouseButton button) {
+  switch (button) {
+    case Qt::LeftButton: return vtkCommand::LeftButtonReleaseEvent;
+    case Qt::MiddleButton: return vtkCommand::MiddleButtonReleaseEvent;
+    case Qt::RightButton: return vtkCommand::RightButtonReleaseEvent;
+    default: return vtkCommand::NoEvent;
+  }
+}
+
+}  // namespace
+
+void MeshViewerWidget::mousePressEvent(QMouseEvent* event) {
+  const unsigned long id = pressEventFor(event->button());
+  if (id == vtkCommand::NoEvent) return QOpenGLWidget::mousePressEvent(event);
+  setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
+  m_impl->interactor->InvokeEvent(id);
+  event->accept();
+  update();
+}
+
+void MeshViewerWidget::mouseDoubleClickEvent(QMouseEvent* event) {
+  const unsigned long id = pressEventFor(event->button());
+  if (id == vtkCommand::NoEvent) return QOpenGLWidget::mouseDoubleClickEvent(event);
+  setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 1);
+  m_impl->interactor->InvokeEvent(id);
+  event->accept();
+  update();
+}
+
+void MeshViewerWidget::mouseReleaseEvent(QMouseEvent* event) {
+  const unsigned long id = releaseEventFor(event->button());
+  if (id == vtkCommand::NoEvent) return QOpenGLWidget::mouseReleaseEvent(event);
+  setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
+  m_impl->interactor->InvokeEvent(id);
+  event->accept();
+  update();
+}
+
+void MeshViewerWidget::mouseMoveEvent(QMouseEvent* event) {
+  setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
+  m_impl->interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
+  event->accept();
+  update();
+}
+
+void MeshViewerWidget::wheelEvent(QWheelEvent* event) {
+  const int delta = event->angleDelta().y();
+  if (delta == 0) return QOpenGLWidget::wheelEvent(event);
+  setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
+  m_impl->interactor->InvokeEvent(delta > 0 ? vtkCommand::MouseWheelForwardEvent
+                                            : vtkCommand::MouseWheelBackwardEvent);
+  event->accept();
+  update();
+}
+
+void MeshViewerWidget::keyPressEvent(QKeyEvent* event) {
+  // R and Home fit the view. VTK's own 'e'/'q' (quit), '3' (stereo) and 'p'/'f' (pick, fly) make no sense
+  // here, so only the keys the trackball style uses for views go through: 'w'/'s' wireframe and surface.
+  switch (event->key()) {
+    case Qt::Key_R:
+    case Qt::Key_Home:
+      fitView();
+      event->accept();
+      return;
+    case Qt::Key_W:
+    case Qt::Key_S: {
+      const QByteArray text = event->text().toLower().toLatin1();
+      const char code = text.isEmpty() ? '\0' : text.front();
+      m_impl->interactor->SetKeyEventInformation(event->modifiers().testFlag(Qt::ControlModifier) ? 1 : 0,
+                                                 event->modifiers().testFlag(Qt::ShiftModifier) ? 1 : 0, code,
+                                                 event->isAutoRepeat() ? 1 : 0, text.constData());
+      m_impl->interactor->InvokeEvent(vtkCommand::KeyPressEvent);
+      m_impl->interactor->InvokeEvent(vtkCommand::CharEvent);
+      event->accept();
+      update();
+      return;
+    }
+    default:
+      QOpenGLWidget::keyPressEvent(event);
+  }
+}
+
+void MeshViewerWidget::keyReleaseEvent(QKeyEvent* event) {
+  if (event->key() == Qt::Key_W || event->key() == Qt::Key_S) {
+    m_impl->interactor->InvokeEvent(vtkCommand::KeyReleaseEvent);
+    event->accept();
+    return;
+  }
+  QOpenGLWidget::keyReleaseEvent(event);
+}
+
+}  // namespace multidir::ui
