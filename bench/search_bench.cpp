@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
     else if (flag == "--scheme") options.scheme = parseScheme(value).value();
     else if (flag == "--beam-width") options.beamWidth = std::atoi(value.c_str());
     else if (flag == "--w") options.minVolumeDivisor = std::atof(value.c_str());
+    else if (flag == "--diversity-offset") options.diversityOffsetMm = std::atof(value.c_str());
+    else if (flag == "--diversity-cosine") options.diversityCosine = std::atof(value.c_str());
     else if (flag == "--normals") options.candidates.normalSamples = std::atoi(value.c_str());
     else if (flag == "--verbose") verbose = value == "1";
     else {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "multidir/core/common/units.h"
 #include "multidir/core/search/candidate_planes.h"
 #include "multidir/core/search/machine.h"
@@ -98,11 +100,27 @@ TEST(CandidatePlanes, FiveAxisNormalsStayWithinTheTiltLimit) {
 
 TEST(CandidatePlanes, RotaryNormalsArePerpendicularToTheAxisAndRealizable) {
   const MachineSpec spec = rotary();
-  const auto normals = candidateNormals(spec, CandidateOptions{});
+  CandidateOptions options;
+  options.rotarySpacingDegrees = 1.0;
+  const auto normals = candidateNormals(spec, options);
   EXPECT_EQ(normals.size(), 120u);  // -60..60 in 1 degree steps, 0 left out
   for (const Vec3& n : normals) {
     EXPECT_NEAR(n.dot(spec.rotationAxis), 0.0, 1e-12);
     EXPECT_TRUE(isRealizable(spec, n));
+  }
+}
+
+TEST(CandidatePlanes, RotarySpacingKeepsWholeMultiplesOfTheStep) {
+  MachineSpec spec = rotary();
+  spec.angleStepDegrees = 1.8;  // a 200-step motor
+  CandidateOptions options;
+  options.rotarySpacingDegrees = 5.0;  // rounds to 3 steps: 5.4 degrees
+  const auto normals = candidateNormals(spec, options);
+  ASSERT_FALSE(normals.empty());
+  for (const Vec3& n : normals) {
+    EXPECT_TRUE(isRealizable(spec, n));
+    const double steps = (machineAnglesFor(spec, n).rotaryDegrees - spec.minAngleDegrees) / 5.4;
+    EXPECT_NEAR(steps, std::round(steps), 1e-9);
   }
 }
 

@@ -25,6 +25,9 @@ Status validate(const CandidateOptions& options) {
     return Error{ErrorCode::InvalidParameter, "the number of normals must be between 1 and 100000", "normals"};
   if (!(options.offsetStepMm >= 0.01 && options.offsetStepMm <= 1000))
     return Error{ErrorCode::InvalidParameter, "the offset step must be between 0.01 and 1000 mm", "offset step"};
+  if (!(options.rotarySpacingDegrees > 0 && options.rotarySpacingDegrees <= 90))
+    return Error{ErrorCode::InvalidParameter, "the 4-DOF normal spacing must be above 0 and at most 90 degrees",
+                 "rotary spacing"};
   if (!(options.platformClearanceMm >= 0 && options.platformClearanceMm < 1000))
     return Error{ErrorCode::InvalidParameter, "the platform clearance must be between 0 and 1000 mm", "clearance"};
   return Done{};
@@ -37,11 +40,15 @@ std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOp
       normals.push_back(machine.up);
       break;
     case MachineKind::RotaryPlatform: {
+      // Every stride-th step of the stepper, so neighbouring candidates are about rotarySpacingDegrees apart.
+      const int stride =
+          std::max(1, static_cast<int>(std::round(options.rotarySpacingDegrees / machine.angleStepDegrees)));
       const int steps = static_cast<int>(std::floor(
           (machine.maxAngleDegrees - machine.minAngleDegrees) / machine.angleStepDegrees + 1e-9));
       for (int i = 0; i <= steps; ++i) {
         const double angle = machine.minAngleDegrees + i * machine.angleStepDegrees;
         if (std::abs(angle) < 1e-9) continue;
+        if (i % stride != 0) continue;
         normals.push_back(rotaryDirection(machine, angle));
       }
       break;
@@ -63,12 +70,12 @@ std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOp
 OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
                             const Vec3& up, const CandidateOptions& options) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (const Triangle& t : solid.triangles)
-    for (std::int32_t v : t) {
-      const double h = normal.dot(solid.vertices[v]);
-      low = std::min(low, h);
-      high = std::max(high, h);
-    }
+  // Every vertex of a solid from loadMesh or clipByPlane belongs to a face.
+  for (const Vec3& v : solid.vertices) {
+    const double h = normal.dot(v);
+    low = std::min(low, h);
+    high = std::max(high, h);
+  }
   OffsetGrid grid{0.0, options.offsetStepMm, 0};
   if (!(low < high)) return grid;
   // Highest point of the disc P along the normal: its centre plus the radius times the in-plane part of n.

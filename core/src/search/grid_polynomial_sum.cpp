@@ -15,22 +15,12 @@ double evaluate(const GridPolynomialSum::Coefficients& c, double x) { return ((c
 
 GridPolynomialSum::GridPolynomialSum(const OffsetGrid& grid)
     : m_grid(grid),
+      m_inverseStep(1.0 / grid.stepMm),
       m_center(0.5 * (grid.count - 1)),
       m_delta(static_cast<std::size_t>(std::max(grid.count, 0)) + 1, Coefficients{0, 0, 0, 0}),
       m_direct(static_cast<std::size_t>(std::max(grid.count, 0)), 0.0) {}
 
-int GridPolynomialSum::firstIndexAtOrAbove(double t) const {
-  if (t == -INFINITY) return 0;
-  if (t == INFINITY) return m_grid.count;
-  const double position = std::ceil((t - m_grid.firstMm) / m_grid.stepMm);
-  if (position <= 0) return 0;
-  if (position >= m_grid.count) return m_grid.count;
-  return static_cast<int>(position);
-}
-
-void GridPolynomialSum::addPiece(double lo, double hi, double ref, const Coefficients& c) {
-  const int j0 = firstIndexAtOrAbove(lo);
-  const int j1 = firstIndexAtOrAbove(hi);
+void GridPolynomialSum::addPiece(int j0, int j1, double ref, const Coefficients& c) {
   if (j1 <= j0) return;
   if (j1 - j0 <= kDirectEvaluationLimit) {
     for (int j = j0; j < j1; ++j) m_direct[j] += evaluate(c, m_grid.offsetAt(j) - ref);

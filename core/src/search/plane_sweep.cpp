@@ -9,44 +9,63 @@ namespace multidir::core {
 
 using detail::GridPolynomialSum;
 
-SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, const OffsetGrid& grid,
-                         const std::vector<double>& riskyShare, double sinAlphaMax, double supportedBandMm) {
-  // R(M+, plane at t) counts what lies above t + band: the same sums on a grid shifted by the band.
-  OffsetGrid shifted = grid;
-  shifted.firstMm += supportedBandMm;
-  GridPolynomialSum volume(grid), riskyAlongNormal(shifted), riskyFlagged(grid);
-  constexpr double kInf = INFINITY;
-
+PlaneSweeper::PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax,
+                           double supportedBandMm)
+    : m_solid(solid),
+      m_area(solid.triangles.size(), 0.0),
+      m_unitNormal(solid.triangles.size(), Vec3::Zero()),
+      m_riskyArea(solid.triangles.size(), 0.0),
+      m_sinAlpha(sinAlphaMax),
+      m_band(supportedBandMm) {
   for (std::size_t f = 0; f < solid.triangles.size(); ++f) {
     const Vec3 areaNormal = solid.areaNormal(f);
     const double doubleArea = areaNormal.norm();
-    if (doubleArea <= 0.0) continue;
-    const double area = 0.5 * doubleArea;
-    const double cosine = unitNormal.dot(areaNormal) / doubleArea;  // n . n_f
-    const bool alongNormal = cosine + sinAlphaMax < 0.0;
-    const double share = f < riskyShare.size() ? riskyShare[f] : 0.0;
+    if (!(doubleArea > 0.0)) continue;
+    m_area[f] = 0.5 * doubleArea;
+    m_unitNormal[f] = areaNormal / doubleArea;
+    if (f < riskyShare.size()) m_riskyArea[f] = riskyShare[f] * m_area[f];
+  }
+}
 
-    std::array<double, 3> h = {unitNormal.dot(solid.corner(f, 0)), unitNormal.dot(solid.corner(f, 1)),
-                               unitNormal.dot(solid.corner(f, 2))};
-    std::sort(h.begin(), h.end());
-    const double ha = h[0], hb = h[1], hc = h[2];
+SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid) const {
+  // R(M+, plane at t) counts what lies above t + band: the same sums on a grid shifted by the band.
+  OffsetGrid shifted = grid;
+  shifted.firstMm += m_band;
+  GridPolynomialSum volume(grid), riskyAlongNormal(shifted), riskyFlagged(grid);
+
+  std::vector<double> height(m_solid.vertices.size());
+  for (std::size_t v = 0; v < height.size(); ++v) height[v] = unitNormal.dot(m_solid.vertices[v]);
+
+  for (std::size_t f = 0; f < m_solid.triangles.size(); ++f) {
+    const double area = m_area[f];
+    if (area == 0.0) continue;
+    const Triangle& t = m_solid.triangles[f];
+    double ha = height[t[0]], hb = height[t[1]], hc = height[t[2]];
+    if (ha > hb) std::swap(ha, hb);
+    if (hb > hc) std::swap(hb, hc);
+    if (ha > hb) std::swap(ha, hb);
     const double lower = hb - ha, span = hc - ha, upper = hc - hb;
-    const double mean = (ha + hb + hc) / 3.0;
+    const double cosine = unitNormal.dot(m_unitNormal[f]);  // n . n_f
 
-    // `part` of the face's area above the plane at offset t.
-    auto addArea = [&](GridPolynomialSum& sum, double part) {
-      sum.addPiece(-kInf, ha, ha, {part, 0, 0, 0});
-      if (lower > 0) sum.addPiece(ha, hb, ha, {part, 0, -part / (lower * span), 0});
-      if (upper > 0) sum.addPiece(hb, hc, hc, {0, 0, part / (span * upper), 0});
+    // Area `part` of the face above the plane at offset t, summed into `sum` whose grid indices of the
+    // corner heights are ja, jb, jc.
+    auto addArea = [&](GridPolynomialSum& sum, double part, int ja, int jb, int jc) {
+      sum.addConstantBelow(ja, part);
+      if (lower > 0) sum.addPiece(ja, jb, ha, {part, 0, -part / (lower * span), 0});
+      if (upper > 0) sum.addPiece(jb, jc, hc, {0, 0, part / (span * upper), 0});
     };
-    if (alongNormal) addArea(riskyAlongNormal, area);
-    if (share > 0) addArea(riskyFlagged, share * area);
+    const int ja = volume.indexAtOrAbove(ha), jb = volume.indexAtOrAbove(hb), jc = volume.indexAtOrAbove(hc);
+    if (cosine + m_sinAlpha < 0.0)
+      addArea(riskyAlongNormal, area, riskyAlongNormal.indexAtOrAbove(ha), riskyAlongNormal.indexAtOrAbove(hb),
+              riskyAlongNormal.indexAtOrAbove(hc));
+    if (m_riskyArea[f] > 0.0) addArea(riskyFlagged, m_riskyArea[f], ja, jb, jc);
 
     // cosine * integral over the face's part above t of (h - t) dA: its share of the volume above.
     const double w = cosine * area;
-    volume.addPiece(-kInf, ha, ha, {w * (mean - ha), -w, 0, 0});
-    if (lower > 0) volume.addPiece(ha, hb, ha, {w * (mean - ha), -w, 0, w / (3.0 * lower * span)});
-    if (upper > 0) volume.addPiece(hb, hc, hc, {0, 0, 0, -w / (3.0 * span * upper)});
+    const double mean = (ha + hb + hc) / 3.0;
+    volume.addPiece(0, ja, ha, {w * (mean - ha), -w, 0, 0});
+    if (lower > 0) volume.addPiece(ja, jb, ha, {w * (mean - ha), -w, 0, w / (3.0 * lower * span)});
+    if (upper > 0) volume.addPiece(jb, jc, hc, {0, 0, 0, -w / (3.0 * span * upper)});
   }
 
   SweepProfile profile;
@@ -54,6 +73,11 @@ SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, cons
   profile.riskyAreaAlongNormalMm2 = riskyAlongNormal.values();
   profile.riskyAreaFlaggedMm2 = riskyFlagged.values();
   return profile;
+}
+
+SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, const OffsetGrid& grid,
+                         const std::vector<double>& riskyShare, double sinAlphaMax, double supportedBandMm) {
+  return PlaneSweeper(solid, riskyShare, sinAlphaMax, supportedBandMm).sweep(unitNormal, grid);
 }
 
 }  // namespace multidir::core

@@ -44,6 +44,7 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
   std::vector<std::vector<ScoredCandidate>> perNormal(normalCount);
   std::vector<long long> offered(normalCount, 0);
   const double volumeSlack = 1e-9 * m_modelVolume;
+  const PlaneSweeper sweeper(*node.remaining, node.riskyUpShare, m_sinAlpha, m_options.supportedBandMm);
 
   parallelFor(normalCount, m_threads, [&](int i) {
     if (m_job.isCancelled()) return;
@@ -51,8 +52,7 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
     const OffsetGrid grid = candidateOffsets(*node.remaining, n, m_platform, m_machine.up, m_options.candidates);
     if (grid.count == 0) return;
     offered[i] = grid.count;
-    const SweepProfile profile =
-        sweepPlanes(*node.remaining, n, grid, node.riskyUpShare, m_sinAlpha, m_options.supportedBandMm);
+    const SweepProfile profile = sweeper.sweep(n, grid);
     for (int j = 0; j < grid.count; ++j) {
       const double above = profile.volumeAboveMm3[j];
       if (above < m_minRegionVolume || node.volumeMm3 - above < volumeSlack) continue;

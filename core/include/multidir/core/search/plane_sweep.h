@@ -38,4 +38,21 @@ struct SweepProfile {
 SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, const OffsetGrid& grid,
                          const std::vector<double>& riskyShare, double sinAlphaMax, double supportedBandMm);
 
+// The same, for many normals through one solid: the per-face data is prepared once. sweep() is const and
+// may run on several threads at once. The solid must outlive the sweeper.
+class PlaneSweeper {
+ public:
+  PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax,
+               double supportedBandMm);
+  SweepProfile sweep(const Vec3& unitNormal, const OffsetGrid& grid) const;
+
+ private:
+  const TriangleMesh& m_solid;
+  std::vector<double> m_area;
+  std::vector<Vec3> m_unitNormal;
+  std::vector<double> m_riskyArea;  // share * area
+  double m_sinAlpha;
+  double m_band;
+};
+
 }  // namespace multidir::core
