@@ -75,7 +75,11 @@ int main(int argc, char** argv) {
     }
     JobContext job;
     const auto plan = axes > 0 ? decomposeWithAxisSearch(loaded->mesh, machine, options, axes, job)
-                               : decompose(loaded->mesh, machine, options, job);
+                               : decompose(loaded->mesh, machine, options, job, [&](const SearchProgress& p) {
+                                   if (verbose)
+                                     std::printf("    level %d: %d beams alive, best J_G %.2f, %lld scored\n", p.level,
+                                                 p.beamsAlive, p.bestJgMm2, p.candidatesScored);
+                                 });
     if (!plan.ok()) {
       std::fprintf(stderr, "%s: %s\n", name.c_str(), plan.error().describe().c_str());
       return 1;

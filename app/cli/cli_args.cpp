@@ -18,7 +18,8 @@ ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::s
   bool onlyPositionals = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
-    if (onlyPositionals || arg.size() < 2 || arg[0] != '-' || (arg[1] != '-' && arg != "-h")) {
+    const bool shortOption = arg == "-h" || valueOptions.count(arg) > 0 || flagOptions.count(arg) > 0;
+    if (onlyPositionals || arg.size() < 2 || arg[0] != '-' || (arg[1] != '-' && !shortOption)) {
       parsed.positionals.push_back(arg);
       continue;
     }

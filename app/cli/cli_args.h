@@ -37,7 +37,7 @@ struct ParsedArgs {
 };
 
 // Parses `args` (without the program and command names). `valueOptions` take one value ("--up y" or
-// "--up=y"), `flagOptions` none. Throws UsageError for an unknown option, a missing value or a repeated
+// "--up=y"; a short option such as "-o" only as "-o DIR"), `flagOptions` none. Throws UsageError for an unknown option, a missing value or a repeated
 // option; `command` names the command in messages.
 ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valueOptions,
                      const std::set<std::string>& flagOptions, const std::string& command);

@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "cli_args.h"
+#include "decompose_command.h"
 #include "info_command.h"
+#include "simulate_command.h"
 
 namespace {
 
@@ -17,18 +19,20 @@ const char* const kUsage =
     "Multi-directional 3D printing: analyse a model and plan its printing directions.\n"
     "\n"
     "Commands:\n"
-    "  info MODEL   statistics, load checks and overhang area of a model\n"
-    "  help [COMMAND]  show this help, or a command's help\n"
+    "  info MODEL                  statistics, load checks and overhang area of a model\n"
+    "  decompose MODEL -o OUTDIR   cut a model into regions with printing directions; write the plan\n"
+    "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
+    "  help [COMMAND]              show this help, or a command's help\n"
     "\n"
     "Options:\n"
-    "  -h, --help   show this help\n"
-    "  --version    show the version\n"
+    "  -h, --help                  show this help\n"
+    "  --version                   show the version\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input file, 2 usage error, 3 internal error.\n";
 
 // Commands of later versions: named here so users get a precise answer instead of "unknown command".
 bool isPlannedCommand(const std::string& command) {
-  return command == "decompose" || command == "report" || command == "export" || command == "simulate";
+  return command == "report" || command == "export";
 }
 
 int notAvailable(const std::string& command) {
@@ -45,6 +49,14 @@ int help(const std::vector<std::string>& args) {
   if (args.size() > 1) throw UsageError("multidir help: one command at a time");
   if (args[0] == "info") {
     std::cout << kInfoHelp;
+    return kExitOk;
+  }
+  if (args[0] == "decompose") {
+    std::cout << kDecomposeHelp;
+    return kExitOk;
+  }
+  if (args[0] == "simulate") {
+    std::cout << kSimulateHelp;
     return kExitOk;
   }
   if (isPlannedCommand(args[0])) return notAvailable(args[0]);
@@ -65,6 +77,8 @@ int run(const std::vector<std::string>& args) {
   }
   if (command == "help") return help(rest);
   if (command == "info") return runInfo(rest, std::cout, std::cerr);
+  if (command == "decompose") return runDecompose(rest, std::cout, std::cerr);
+  if (command == "simulate") return runSimulate(rest, std::cout, std::cerr);
   if (isPlannedCommand(command)) return notAvailable(command);
   if (!command.empty() && command[0] == '-')
     throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");

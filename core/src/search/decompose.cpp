@@ -57,6 +57,13 @@ void report(const SearchProgressSink& sink, int level, int alive, const BestPlan
   sink(p);
 }
 
+// Two beams hold the same remaining part (up to rounding): same volume, same risky area, same face count.
+bool sameState(const SearchNode& a, const SearchNode& b) {
+  return a.remaining->faceCount() == b.remaining->faceCount() &&
+         std::abs(a.volumeMm3 - b.volumeMm3) <= 1e-9 * std::max(a.volumeMm3, b.volumeMm3) &&
+         std::abs(a.jg() - b.jg()) <= 1e-9 * std::max(1.0, a.jg());
+}
+
 // Algorithm 1 of the paper.
 bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best, const SearchProgressSink& sink,
                    int& levels) {
@@ -94,6 +101,10 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
       if (close) continue;
       auto child = engine.extend(beams[c.beam], c);
       if (!child) continue;
+      // The same cuts in another order leave the same part: keep one of them.
+      bool duplicate = false;
+      for (const NodePtr& other : next) duplicate = duplicate || sameState(**child, *other);
+      if (duplicate) continue;
       chosen.push_back(c);
       best.offer(*child);
       next.push_back(*child);

@@ -1,0 +1,310 @@
+#include "decompose_command.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "cli_args.h"
+#include "multidir/core/analysis/overhang.h"
+#include "multidir/core/mesh/mesh_io.h"
+#include "multidir/core/plan/checksum.h"
+#include "multidir/core/plan/plan_file.h"
+#include "multidir/core/search/decompose.h"
+#include "number_text.h"
+#include "search_runner.h"
+
+namespace multidir::cli {
+
+const char* const kDecomposeHelp =
+    "Usage: multidir decompose MODEL -o OUTDIR [options]\n"
+    "\n"
+    "Cuts MODEL (.stl, .obj, .off, .ply; millimetres) into regions that a multi-directional printer can print\n"
+    "with as little support as possible, prints a table of the regions, and writes the plan to OUTDIR:\n"
+    "plan.json and one STL per region (docs/plan-format.md).\n"
+    "\n"
+    "Options:\n"
+    "  -o OUTDIR            folder for the plan (created if missing; required)\n"
+    "  --up DIRECTION       the model's up: x, y, z, -x, -y, -z or a,b,c (default: z, or the profile's)\n"
+    "  --machine KIND       3dof, 4dof or 5dof (default: 5dof, or the profile's)\n"
+    "  --axis X,Y,Z         4dof: the platform's rotation axis, perpendicular to up (default: x, or y if up is x)\n"
+    "  --axis-search N      4dof: also try N rotation axes over 180 degrees and keep the best plan\n"
+    "  --profile FILE       machine profile (JSON); --machine, --up and --axis override its fields\n"
+    "  --scheme NAME        beam, greedy or cgreedy (default: beam)\n"
+    "  --beam-width B       beams kept per level, 1 to 1000 (default: 10)\n"
+    "  --alpha DEGREES      maximal self-supporting angle, at least 0 and below 90 (default: 45)\n"
+    "  --normals N          candidate normals sampled on the sphere, 1 to 100000 (default: 250)\n"
+    "  --offset-step MM     spacing of candidate planes along a normal, 0.01 to 1000 (default: 1)\n"
+    "  --w W                every region keeps at least 1/W of the model's volume, 1 to 1000 (default: 10)\n"
+    "  --threads N          worker threads, 0 = all (default: 0)\n"
+    "  --summary FILE       also write the key numbers as JSON to FILE\n"
+    "  -h, --help           show this help\n"
+    "\n"
+    "On a terminal a status line shows the search's progress. Ctrl-C stops the search and saves the best plan\n"
+    "found until then (plan.json then says \"cancelled\": true); a second Ctrl-C quits without saving.\n"
+    "\n"
+    "Exit codes: 0 ok, 1 the model or profile cannot be read or the plan cannot be written, 2 usage error.\n";
+
+namespace {
+
+namespace core = multidir::core;
+
+const std::string kCommand = "multidir decompose";
+
+int parseInteger(const std::string& text, const std::string& option) {
+  const double value = parseNumber(text, option);
+  if (value != std::floor(value) || std::abs(value) > 1e9)
+    throw UsageError(kCommand + ": " + option + " expects a whole number, got '" + text + "'");
+  return static_cast<int>(value);
+}
+
+// The command-line option behind a field validate(MachineSpec) names; the other fields come from --profile.
+std::string optionFor(const std::string& where) {
+  if (where == "rotation axis") return "--axis";
+  if (where == "up") return "--up";
+  return where;
+}
+
+struct Settings {
+  std::string model;
+  std::string outDir;
+  std::string summaryPath;
+  core::Vec3 up = core::Vec3::UnitZ();
+  core::MachineSpec machine;
+  core::SearchOptions options;
+  int axisSearch = 0;
+};
+
+core::MachineSpec machineFrom(const ParsedArgs& parsed) {
+  core::MachineSpec machine;
+  if (parsed.has("--profile")) {
+    const std::string path = parsed.value("--profile", "");
+    const core::Result<core::MachineSpec> profile = core::loadMachineProfile(path);
+    if (!profile) throw FileError(kCommand + ": --profile: " + profile.error().describe());
+    machine = *profile;
+  } else {
+    machine.rotationAxis = core::platformFrameX(machine.up);
+  }
+  if (parsed.has("--machine")) {
+    const core::Result<core::MachineKind> kind = core::parseMachineKind(parsed.value("--machine", ""));
+    if (!kind) throw UsageError(kCommand + ": --machine: " + kind.error().message);
+    machine.kind = *kind;
+  }
+  if (parsed.has("--up")) {
+    const core::Result<core::Vec3> up = core::parseDirection(parsed.value("--up", ""));
+    if (!up) throw UsageError(kCommand + ": --up: " + up.error().message);
+    machine.up = *up;
+    // The axis must lie in the new platform plane; keep the profile's when it does.
+    if (std::abs(machine.rotationAxis.dot(machine.up)) > 1e-6) machine.rotationAxis = core::platformFrameX(machine.up);
+  }
+  if (parsed.has("--axis")) {
+    if (machine.kind != core::MachineKind::RotaryPlatform)
+      throw UsageError(kCommand + ": --axis is the rotation axis of a 4dof machine; add --machine 4dof");
+    const core::Result<core::Vec3> axis = core::parseDirection(parsed.value("--axis", ""));
+    if (!axis) throw UsageError(kCommand + ": --axis: " + axis.error().message);
+    machine.rotationAxis = *axis;
+  }
+  if (const core::Status valid = core::validate(machine); !valid) {
+    const std::string where = optionFor(valid.error().where);
+    if (parsed.has("--profile") && !parsed.has(where))
+      throw FileError(kCommand + ": --profile " + parsed.value("--profile", "") + ": " + valid.error().message);
+    throw UsageError(kCommand + ": " + where + ": " + valid.error().message);
+  }
+  return machine;
+}
+
+core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
+  core::SearchOptions options;
+  // Each option is checked as it is applied, so the message names the option at fault.
+  auto apply = [&](const std::string& option, const std::function<void(const std::string&)>& set) {
+    if (!parsed.has(option)) return;
+    set(parsed.value(option, ""));
+    if (const core::Status valid = core::validate(options); !valid)
+      throw UsageError(kCommand + ": " + option + ": " + valid.error().message);
+  };
+  apply("--scheme", [&](const std::string& text) {
+    const core::Result<core::SearchScheme> scheme = core::parseScheme(text);
+    if (!scheme) throw UsageError(kCommand + ": --scheme: " + scheme.error().message);
+    options.scheme = *scheme;
+  });
+  apply("--beam-width", [&](const std::string& t) { options.beamWidth = parseInteger(t, "--beam-width"); });
+  apply("--alpha", [&](const std::string& t) { options.alphaMaxDegrees = parseNumber(t, "--alpha"); });
+  apply("--normals", [&](const std::string& t) { options.candidates.normalSamples = parseInteger(t, "--normals"); });
+  apply("--offset-step",
+        [&](const std::string& t) { options.candidates.offsetStepMm = parseNumber(t, "--offset-step"); });
+  apply("--w", [&](const std::string& t) { options.minVolumeDivisor = parseNumber(t, "--w"); });
+  apply("--threads", [&](const std::string& t) { options.threads = parseInteger(t, "--threads"); });
+  return options;
+}
+
+Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
+  const ParsedArgs parsed =
+      parseArgs(args,
+                {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
+                 "--offset-step", "--w", "--threads", "--profile", "-o", "--summary"},
+                {"--help"}, "decompose");
+  helpOnly = parsed.has("--help");
+  Settings s;
+  if (helpOnly) return s;
+  if (parsed.positionals.empty())
+    throw UsageError(kCommand + ": which model? Usage: multidir decompose MODEL -o OUTDIR");
+  if (parsed.positionals.size() > 1)
+    throw UsageError(kCommand + ": one model at a time (got '" + parsed.positionals[0] + "' and '" +
+                     parsed.positionals[1] + "')");
+  s.model = parsed.positionals[0];
+  if (!parsed.has("-o")) throw UsageError(kCommand + ": -o OUTDIR is missing: name the folder to write the plan to");
+  s.outDir = parsed.value("-o", "");
+  if (s.outDir.empty()) throw UsageError(kCommand + ": -o needs a folder name");
+  if (parsed.has("--summary")) {
+    s.summaryPath = parsed.value("--summary", "");
+    if (s.summaryPath.empty()) throw UsageError(kCommand + ": --summary needs a file name");
+  }
+  s.machine = machineFrom(parsed);
+  s.up = s.machine.up;
+  s.options = searchOptionsFrom(parsed);
+  if (parsed.has("--axis-search")) {
+    if (s.machine.kind != core::MachineKind::RotaryPlatform)
+      throw UsageError(kCommand + ": --axis-search turns the rotation axis of a 4dof machine; add --machine 4dof");
+    s.axisSearch = parseInteger(parsed.value("--axis-search", ""), "--axis-search");
+    if (s.axisSearch < 1 || s.axisSearch > 3600)
+      throw UsageError(kCommand + ": --axis-search: the number of axes must be between 1 and 3600");
+  }
+  return s;
+}
+
+std::string vectorText(const core::Vec3& v) {
+  return formatNumber("%6.3f", v.x()) + ", " + formatNumber("%6.3f", v.y()) + ", " + formatNumber("%6.3f", v.z());
+}
+
+std::string anglesText(const core::MachineSpec& machine, const core::MachineAngles& a) {
+  switch (machine.kind) {
+    case core::MachineKind::ThreeAxis:
+      return "-";
+    case core::MachineKind::RotaryPlatform:
+      return "rotary " + formatNumber("%6.1f", a.rotaryDegrees);
+    case core::MachineKind::TiltRotate:
+      return "tilt " + formatNumber("%5.1f", a.tiltDegrees) + "  azimuth " + formatNumber("%6.1f", a.azimuthDegrees);
+  }
+  return "";
+}
+
+void printTable(std::ostream& out, const Settings& s, const core::Decomposition& plan) {
+  out << "Regions in printing order (" << plan.regions.size() << " regions, " << plan.clippingPlanes.size()
+      << " clipping planes; " << core::machineKindName(s.machine.kind) << ", " << core::schemeName(s.options.scheme)
+      << ")\n";
+  char header[160];
+  std::snprintf(header, sizeof header, "  %3s  %-24s  %-28s  %14s  %12s\n", "#", "direction (x, y, z)",
+                "machine angles (degrees)", "volume mm^3", "risky mm^2");
+  out << header;
+  for (std::size_t i = 0; i < plan.regions.size(); ++i) {
+    const core::Region& r = plan.regions[i];
+    char row[200];
+    std::snprintf(row, sizeof row, "  %3zu  %-24s  %-28s  %14.2f  %12.2f\n", i + 1,
+                  vectorText(r.printingDirection).c_str(), anglesText(s.machine, r.angles).c_str(), r.volumeMm3,
+                  r.riskyAreaMm2);
+    out << row;
+  }
+  const double reduction = plan.jgBeforeMm2 > 0 ? 100.0 * (1.0 - plan.jgAfterMm2 / plan.jgBeforeMm2) : 0.0;
+  out << "J_G before   " << formatNumber("%.2f", plan.jgBeforeMm2) << " mm^2 (risky area printed along up)\n"
+      << "J_G after    " << formatNumber("%.2f", plan.jgAfterMm2) << " mm^2 (" << formatNumber("%.1f", reduction)
+      << " % less)\n";
+  if (s.machine.kind == core::MachineKind::RotaryPlatform)
+    out << "Rotation axis " << vectorText(plan.rotationAxis) << "\n";
+  const core::SearchStatistics& st = plan.statistics;
+  out << "Search       " << formatNumber("%.2f", st.seconds) << " s, " << st.threads << " threads, "
+      << withThousands(st.candidatesScored) << " candidates scored, " << st.levels << " levels\n";
+}
+
+void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_t triangles) {
+  const core::SearchStatistics& st = plan.statistics;
+  const nlohmann::json summary = {{"model", s.model},
+                                  {"machine", core::machineKindName(s.machine.kind)},
+                                  {"scheme", core::schemeName(s.options.scheme)},
+                                  {"beam_width", s.options.beamWidth},
+                                  {"axis_search", s.axisSearch},
+                                  {"cancelled", plan.cancelled},
+                                  {"triangles", triangles},
+                                  {"normals", st.normals},
+                                  {"candidates", st.candidatesScored},
+                                  {"levels", st.levels},
+                                  {"clips", st.clipsPerformed},
+                                  {"regions", plan.regions.size()},
+                                  {"planes", plan.clippingPlanes.size()},
+                                  {"jg_before", plan.jgBeforeMm2},
+                                  {"jg_after", plan.jgAfterMm2},
+                                  {"seconds", st.seconds},
+                                  {"threads", st.threads},
+                                  {"plan", s.outDir}};
+  std::ofstream file(s.summaryPath);
+  file << summary.dump(2) << '\n';
+  file.flush();
+  if (!file) throw FileError(kCommand + ": cannot write the summary file " + s.summaryPath);
+}
+
+}  // namespace
+
+int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  bool helpOnly = false;
+  // Every option is checked before the model is read, so a typo costs no loading time.
+  const Settings s = settingsFrom(args, helpOnly);
+  if (helpOnly) {
+    out << kDecomposeHelp;
+    return kExitOk;
+  }
+
+  const core::Result<core::LoadedMesh> loaded = core::loadMesh(s.model);
+  if (!loaded) {
+    err << kCommand << ": " << loaded.error().describe() << "\n";
+    return kExitBadInput;
+  }
+  const core::Result<std::string> checksum = core::fileChecksum(s.model);
+  if (!checksum) {
+    err << kCommand << ": " << checksum.error().describe() << "\n";
+    return kExitBadInput;
+  }
+
+  const core::TriangleMesh& model = loaded->mesh;
+  const std::string startLine = kCommand + ": searching " + s.model + " (" +
+                                withThousands(static_cast<long long>(model.faceCount())) + " triangles, " +
+                                core::machineKindName(s.machine.kind) + ", " + core::schemeName(s.options.scheme) +
+                                "); Ctrl-C stops and keeps the best plan so far";
+  const SearchCall search = [&](core::JobContext& job, const core::SearchProgressSink& progress) {
+    if (s.axisSearch > 0)
+      return core::decomposeWithAxisSearch(model, s.machine, s.options, s.axisSearch, job, progress);
+    return core::decompose(model, s.machine, s.options, job, progress);
+  };
+  const SearchOutcome outcome = runInterruptibleSearch(search, startLine, isatty(STDERR_FILENO) != 0, err);
+  if (!outcome.result) {
+    const core::Error& e = outcome.result.error();
+    err << kCommand << ": " << e.describe() << "\n";
+    if (e.code == core::ErrorCode::Cancelled) {
+      err << kCommand << ": nothing was saved\n";
+      return kExitBadInput;
+    }
+    return e.code == core::ErrorCode::Internal ? kExitInternal : kExitBadInput;
+  }
+  const core::Decomposition& plan = *outcome.result;
+
+  printTable(out, s, plan);
+  core::PlanMetadata metadata;
+  metadata.modelPath = s.model;
+  metadata.modelChecksum = *checksum;
+  metadata.up = s.up;
+  metadata.machine = s.machine;
+  metadata.options = s.options;
+  metadata.axisSearchCount = s.axisSearch;
+  metadata.multidirVersion = MULTIDIR_VERSION;
+  if (const core::Status saved = core::savePlan(plan, metadata, s.outDir); !saved)
+    throw FileError(kCommand + ": cannot write the plan: " + saved.error().describe());
+  out << "Plan saved   " << s.outDir << "/plan.json and " << plan.regions.size() << " region STL files\n";
+  if (plan.cancelled)
+    out << "Note: the search was cancelled; this is the best plan found until then, not the result of a full "
+           "search\n";
+  if (!s.summaryPath.empty()) writeSummary(s, plan, model.faceCount());
+  return kExitOk;
+}
+
+}  // namespace multidir::cli

@@ -1,0 +1,17 @@
+#pragma once
+// `multidir decompose MODEL -o OUTDIR [options]`: the decomposition search, its table of regions, and the
+// plan folder (plan.json + region STLs, see docs/plan-format.md).
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace multidir::cli {
+
+extern const char* const kDecomposeHelp;
+
+// Runs the command on the arguments after "decompose". Returns an exit code (see cli_args.h); throws
+// UsageError for command-line mistakes and FileError for files that cannot be read or written.
+// `err` gets the progress line when it is a terminal (isatty(stderr)).
+int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+}  // namespace multidir::cli

@@ -1,0 +1,136 @@
+#include "simulate_command.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include "cli_args.h"
+#include "multidir/hardware/device_simulator.h"
+
+namespace multidir::cli {
+
+const char* const kSimulateHelp =
+    "Usage: multidir simulate [--rotary] [--robot] [--listen ADDRESS] [--port PORT] [--unit ID]\n"
+    "\n"
+    "Runs a Modbus TCP simulator of MultiDir's devices until Ctrl-C: the rotary platform controller and the\n"
+    "Universal Robots arm's registers 128-255 with the behaviour of multidir_platform.script (register maps:\n"
+    "docs/hardware.md). Point MultiDir's device settings at it to try a print run without hardware.\n"
+    "\n"
+    "Options:\n"
+    "  --rotary          simulate the rotary platform controller (default: both devices)\n"
+    "  --robot           simulate the robot arm (default: both devices)\n"
+    "  --listen ADDRESS  IPv4 address to listen on (default: 127.0.0.1, this machine only)\n"
+    "  --port PORT       TCP port, 0 for a free one (default: 1502; 502 needs root)\n"
+    "  --unit ID         unit id of the rotary controller, 0..255 (default: 1); the robot answers all others\n"
+    "  -h, --help        show this help\n"
+    "\n"
+    "Exit codes: 0 stopped by Ctrl-C, 1 cannot listen on the address and port, 2 usage error.\n";
+
+namespace {
+
+std::atomic<bool> g_stopRequested{false};
+
+extern "C" void onStopSignal(int) { g_stopRequested = true; }
+
+int wholeNumber(const std::string& text, const std::string& option, int low, int high) {
+  const double value = parseNumber(text, option);
+  if (value != std::floor(value) || value < low || value > high)
+    throw UsageError("multidir simulate: " + option + " must be a whole number from " + std::to_string(low) +
+                     " to " + std::to_string(high) + ", not '" + text + "'. Run 'multidir help simulate'.");
+  return static_cast<int>(value);
+}
+
+bool isLoopback(const std::string& address) { return address.rfind("127.", 0) == 0; }
+
+std::string rotaryLine(const hardware::SimulatedRotaryState& s) {
+  char text[160];
+  std::snprintf(text, sizeof text, "rotary: %s%s%s, angle %.2f deg, target %.2f deg, fault %d",
+                s.enabled ? "enabled" : "disabled", s.homed ? ", homed" : (s.homing ? ", homing" : ", not homed"),
+                s.moving ? ", moving" : "", s.angleDegrees, s.targetAngleDegrees, s.faultCode);
+  return text;
+}
+
+std::string robotLine(const hardware::SimulatedRobotState& s) {
+  static const char* const kStates[] = {"not running", "idle", "moving", "reached", "stopped", "halted", "fault"};
+  const char* state = s.programState >= 0 && s.programState <= 6 ? kStates[s.programState] : "?";
+  char text[160];
+  std::snprintf(text, sizeof text, "robot: %s, tilt %.2f deg, azimuth %.2f deg, fault %d, command %u", state,
+                s.tiltDegrees, s.azimuthDegrees, s.faultCode, static_cast<unsigned>(s.acknowledgedSequence));
+  return text;
+}
+
+}  // namespace
+
+int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const ParsedArgs parsed =
+      parseArgs(args, {"--listen", "--port", "--unit"}, {"--rotary", "--robot", "--help"}, "simulate");
+  if (parsed.has("--help")) {
+    out << kSimulateHelp;
+    return kExitOk;
+  }
+  if (!parsed.positionals.empty())
+    throw UsageError("multidir simulate: unexpected argument '" + parsed.positionals[0] +
+                     "'. Run 'multidir help simulate'.");
+  hardware::SimulatorOptions options;
+  const bool rotary = parsed.has("--rotary");
+  const bool robot = parsed.has("--robot");
+  options.rotary = rotary || !robot;
+  options.robot = robot || !rotary;
+  options.listenAddress = parsed.value("--listen", "127.0.0.1");
+  options.port = wholeNumber(parsed.value("--port", "1502"), "--port", 0, 65535);
+  options.rotaryUnitId = wholeNumber(parsed.value("--unit", "1"), "--unit", 0, 255);
+
+  // Handlers first, so that a Ctrl-C right after start-up still stops the simulator cleanly.
+  g_stopRequested = false;
+  auto previousInt = std::signal(SIGINT, onStopSignal);
+  auto previousTerm = std::signal(SIGTERM, onStopSignal);
+  hardware::DeviceSimulator simulator(options);
+  const core::Status started = simulator.start();
+  if (!started.ok()) {
+    std::signal(SIGINT, previousInt);
+    std::signal(SIGTERM, previousTerm);
+    if (started.error().code == core::ErrorCode::InvalidParameter)
+      throw UsageError("multidir simulate: " + started.error().describe() + ". Run 'multidir help simulate'.");
+    err << "multidir simulate: " << started.error().describe() << "\n";
+    return kExitBadInput;
+  }
+  if (!isLoopback(options.listenAddress))
+    err << "multidir simulate: warning: listening on " << options.listenAddress
+        << ", reachable from other machines on that network\n";
+  out << "Simulator listening on " << simulator.address() << ":";
+  if (options.rotary) out << " rotary platform controller (unit " << options.rotaryUnitId << ")";
+  if (options.rotary && options.robot) out << ",";
+  if (options.robot) out << " robot arm registers 128-255 (" << (options.rotary ? "other units" : "any unit") << ")";
+  out << ". Ctrl-C stops it.\n" << std::flush;
+
+  int connections = 0;
+  std::string lastRotary;
+  std::string lastRobot;
+  while (!g_stopRequested) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    const int nowConnected = simulator.connectionCount();
+    if (nowConnected != connections) {
+      connections = nowConnected;
+      out << "clients connected: " << connections << "\n";
+    }
+    if (options.rotary) {
+      const std::string line = rotaryLine(simulator.rotaryState());
+      if (line != lastRotary) out << (lastRotary = line) << "\n";
+    }
+    if (options.robot) {
+      const std::string line = robotLine(simulator.robotState());
+      if (line != lastRobot) out << (lastRobot = line) << "\n";
+    }
+    out << std::flush;
+  }
+  std::signal(SIGINT, previousInt);
+  std::signal(SIGTERM, previousTerm);
+  simulator.stop();
+  out << "Simulator stopped.\n";
+  return kExitOk;
+}
+
+}  // namespace multidir::cli

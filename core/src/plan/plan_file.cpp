@@ -1,0 +1,154 @@
+// savePlan and loadPlan: the plan folder (plan.json + region STLs). The JSON side is in plan_json.cpp.
+#include "multidir/core/plan/plan_file.h"
+
+#include <filesystem>
+#include <new>
+
+#include "multidir/core/mesh/mesh_io.h"
+#include "plan/json_field.h"
+#include "plan/json_file.h"
+#include "plan/plan_json.h"
+#include "plan/stl_image.h"
+
+namespace multidir::core {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kPlanFileName = "plan.json";
+
+// Binary STL repeats every corner as float: only identical corners are one vertex, and no face is dropped
+// for being small, so the faces come back one for one, in order, and the origins in plan.json fit them.
+LoadOptions regionLoadOptions() {
+  LoadOptions options;
+  options.weldToleranceMm = 0.0;
+  options.degenerateAreaMm2 = 0.0;
+  return options;
+}
+
+Error invalid(const std::string& what) { return Error{ErrorCode::InvalidParameter, what, "plan"}; }
+
+// The plan as the files will hold it: region meshes replaced by their STL images, each checked to load back
+// face for face.
+Result<Decomposition> planOnDisk(const Decomposition& plan) {
+  if (plan.regions.empty()) return invalid("the decomposition has no regions: there is nothing to save");
+  Decomposition onDisk = plan;
+  for (std::size_t i = 0; i < plan.regions.size(); ++i) {
+    const TriangleMesh& mesh = plan.regions[i].mesh;
+    const std::string region = "region " + std::to_string(i);
+    if (mesh.empty()) return invalid(region + " has no faces");
+    if (mesh.origins.size() != mesh.triangles.size())
+      return invalid(region + " has " + std::to_string(mesh.triangles.size()) + " faces but " +
+                     std::to_string(mesh.origins.size()) + " face origins");
+    detail::StlImage image = detail::stlImage(mesh);
+    const std::string name = detail::regionFileName(i);
+    const Result<LoadedMesh> reloaded =
+        checkAndRepair(RawSoup{image.mesh.vertices, image.mesh.triangles, 0}, regionLoadOptions(), name);
+    if (!reloaded || reloaded->mesh.triangles.size() != image.mesh.triangles.size())
+      return Error{ErrorCode::WriteFailed,
+                   "float precision (binary STL) cannot keep this region's shape" +
+                       (reloaded ? std::string() : ": " + reloaded.error().message) +
+                       "; a slightly different offset step moves the planes away from the vertices they graze",
+                   name};
+    onDisk.regions[i].mesh = std::move(image.mesh);
+  }
+  return onDisk;
+}
+
+// plan.json's text, read back through loadPlan's checks: what loadPlan would refuse is refused now, before
+// any file is touched.
+Result<std::string> checkedPlanText(const Decomposition& onDisk, const PlanMetadata& metadata) {
+  std::string text = detail::planToJson(onDisk, metadata).dump(2) + "\n";
+  try {
+    detail::planFromJson(nlohmann::json::parse(text), kPlanFileName);
+  } catch (const detail::JsonFieldError& e) {
+    return invalid("it would not load back: " + e.error().describe());
+  }
+  return text;
+}
+
+Status makeFolder(const fs::path& folder) {
+  const std::string name = folder.string();
+  std::error_code ec;
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+    return Error{ErrorCode::WriteFailed, "a file of this name exists, so the plan folder cannot be created there",
+                 name};
+  fs::create_directories(folder, ec);
+  if (ec) return Error{ErrorCode::WriteFailed, "cannot create the plan folder: " + ec.message(), name};
+  return Done{};
+}
+
+Result<LoadedPlan> readPlan(const std::string& directoryOrPlanJson) {
+  fs::path jsonPath(directoryOrPlanJson);
+  std::error_code ec;
+  if (fs::is_directory(jsonPath, ec)) jsonPath /= kPlanFileName;
+  const fs::path folder = jsonPath.parent_path();
+  const std::string jsonName = jsonPath.filename().empty() ? directoryOrPlanJson : jsonPath.filename().string();
+
+  Result<nlohmann::json> document = detail::readJsonFile(jsonPath.string(), jsonName);
+  if (!document) return document.error();
+  detail::PlanDocument doc = detail::planFromJson(*document, jsonName);
+
+  LoadedPlan plan = std::move(doc.plan);
+  plan.directory = folder.string();
+  for (std::size_t i = 0; i < plan.decomposition.regions.size(); ++i) {
+    const std::string& file = doc.regionFiles[i];
+    const std::string field = "regions[" + std::to_string(i) + "]";
+    const fs::path regionPath = folder / file;
+    if (!fs::exists(regionPath, ec))
+      return Error{ErrorCode::FileNotFound,
+                   "the region file is missing (" + jsonName + " lists it as " + field + ".file in " +
+                       (folder.empty() ? std::string(".") : folder.string()) + ")",
+                   file};
+    Result<LoadedMesh> loaded = loadMesh(regionPath.string(), regionLoadOptions());
+    if (!loaded) return loaded.error();
+    TriangleMesh& mesh = loaded->mesh;
+    if (mesh.triangles.size() != doc.regionTriangles[i])
+      return Error{ErrorCode::MalformedFile,
+                   "has " + std::to_string(mesh.triangles.size()) + " triangles, but " + jsonName + " says " +
+                       std::to_string(doc.regionTriangles[i]) + " (" + field +
+                       ".triangles): the file does not belong to this plan",
+                   file};
+    mesh.origins = std::move(doc.regionOrigins[i]);
+    plan.decomposition.regions[i].mesh = std::move(mesh);
+  }
+  return plan;
+}
+
+}  // namespace
+
+Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const std::string& directory) {
+  try {
+    const Result<Decomposition> onDisk = planOnDisk(plan);
+    if (!onDisk) return onDisk.error();
+    const Result<std::string> text = checkedPlanText(*onDisk, metadata);
+    if (!text) return text.error();
+    const fs::path folder(directory);
+    if (Status made = makeFolder(folder); !made) return made;
+    for (std::size_t i = 0; i < onDisk->regions.size(); ++i)
+      if (Status saved = saveMesh(onDisk->regions[i].mesh, (folder / detail::regionFileName(i)).string()); !saved)
+        return saved;
+    return detail::writeFileAtomically((folder / kPlanFileName).string(), *text, kPlanFileName);
+  } catch (const std::bad_alloc&) {
+    return Error{ErrorCode::WriteFailed, "there is not enough memory to write the plan", directory};
+  } catch (const std::exception& e) {
+    return Error{ErrorCode::WriteFailed, std::string("writing the plan failed: ") + e.what(), directory};
+  }
+}
+
+Result<LoadedPlan> loadPlan(const std::string& directoryOrPlanJson) {
+  try {
+    return readPlan(directoryOrPlanJson);
+  } catch (const detail::JsonFieldError& e) {
+    return e.error();
+  } catch (const std::bad_alloc&) {
+    return Error{ErrorCode::TooLarge, "there is not enough memory to load this plan", directoryOrPlanJson};
+  } catch (const std::exception& e) {
+    return Error{
+        ErrorCode::Internal,
+        std::string("unexpected failure while loading the plan (") + e.what() + "); please report it with this plan",
+        directoryOrPlanJson};
+  }
+}
+
+}  // namespace multidir::core

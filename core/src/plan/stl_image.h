@@ -1,0 +1,20 @@
+#pragma once
+// What a mesh becomes in a binary STL: corners rounded to float, corners that became equal merged, and the
+// faces that this collapsed dropped. Clipping leaves vertices a few nanometres apart (a plane passing near a
+// corner); float cannot keep them apart, so loading the STL would drop those slivers and the face origins
+// stored beside the file would no longer line up. The plan saves this image instead, so what is saved is
+// exactly what loads back.
+#include "multidir/core/common/result.h"
+#include "multidir/core/mesh/triangle_mesh.h"
+
+namespace multidir::core::detail {
+
+struct StlImage {
+  TriangleMesh mesh;  // float-exact vertices, origins of the faces kept
+  std::size_t droppedFaces = 0;
+};
+
+// Precondition: mesh.origins.size() == mesh.triangles.size().
+StlImage stlImage(const TriangleMesh& mesh);
+
+}  // namespace multidir::core::detail

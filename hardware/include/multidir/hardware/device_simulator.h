@@ -1,0 +1,96 @@
+#pragma once
+// A Modbus TCP server that behaves like MultiDir's devices, for tests, demos and `multidir simulate`:
+// the rotary platform controller at one unit id and the robot arm's registers 128-255 (with the URScript
+// program's behaviour) at every other unit id. Motion runs at finite speed, homing takes time, both
+// heartbeat watchdogs work, and faults can be injected.
+//
+// Listens on 127.0.0.1 unless told otherwise; port 0 picks a free port (see port()). Runs on its own thread;
+// every method may be called from any thread.
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "multidir/core/common/result.h"
+
+namespace multidir::hardware {
+
+struct SimulatorOptions {
+  bool rotary = true;  // serve the rotary platform controller
+  bool robot = true;   // serve the robot arm registers
+  std::string listenAddress = "127.0.0.1";  // an IPv4 address; anything but loopback only when asked for
+  int port = 0;                             // 0: a free port chosen by the system
+  int rotaryUnitId = 1;                     // requests to this unit id go to the rotary controller
+
+  double rotaryInitialAngleDegrees = 7.5;   // where the platform stands at power-on (not homed)
+  double rotaryHomingSpeedDegreesPerSecond = 90.0;
+  double rotaryMinAngleDegrees = -180.0;    // the controller's own limits (beyond them: rejected command)
+  double rotaryMaxAngleDegrees = 180.0;
+  double robotMaxSpeedDegreesPerSecond = 90.0;  // at speed 100 %
+  double robotMaxTiltDegrees = 90.0;           // the program's own limit (beyond it: fault 1)
+};
+
+enum class SimulatedDevice { Rotary, Robot };
+
+// A copy of the simulated rotary controller's state.
+struct SimulatedRotaryState {
+  double angleDegrees = 0.0;
+  double targetAngleDegrees = 0.0;
+  bool enabled = false;
+  bool homed = false;
+  bool homing = false;
+  bool moving = false;
+  int faultCode = 0;  // as in the FAULT_CODE register
+};
+
+struct SimulatedRobotState {
+  double tiltDegrees = 0.0;
+  double azimuthDegrees = 0.0;
+  int programState = 1;  // as in the STATE register (the simulated program runs from the start)
+  int faultCode = 0;
+  std::uint16_t acknowledgedSequence = 0;
+};
+
+class DeviceSimulator {
+ public:
+  explicit DeviceSimulator(SimulatorOptions options = {});
+  ~DeviceSimulator();  // stops
+  DeviceSimulator(const DeviceSimulator&) = delete;
+  DeviceSimulator& operator=(const DeviceSimulator&) = delete;
+
+  // Binds, listens and starts the thread. InvalidParameter for bad options; Internal when the address
+  // cannot be bound (in use, not on this machine).
+  core::Status start();
+  void stop();  // closes every connection and joins the thread; idempotent
+  [[nodiscard]] bool running() const;
+  [[nodiscard]] int port() const;  // the port listened on (the chosen one when options.port was 0)
+  [[nodiscard]] std::string address() const;  // "127.0.0.1:40123"
+
+  // Fault injection. Each stays in force until changed.
+  // Closes every client connection now, and refuses new ones for `refuseFor`.
+  void dropConnections(std::chrono::milliseconds refuseFor = std::chrono::milliseconds(0));
+  // Holds every reply this long (0: answer at once). Requests keep their order.
+  void setReplyDelay(std::chrono::milliseconds delay);
+  // Answers every request to `device` with this Modbus exception code (1..11; 0: answer normally).
+  void setExceptionReply(SimulatedDevice device, int exceptionCode);
+  // The rotary motor stops turning although the controller believes it moves.
+  void setMotorStuck(bool stuck);
+  // The device stops answering heartbeats: the rotary controller freezes its HEARTBEAT_ECHO, the robot
+  // program freezes its heartbeat (as if the controller's loop or the URScript program hung).
+  void setHeartbeatAnswering(SimulatedDevice device, bool answering);
+
+  // Observation.
+  [[nodiscard]] SimulatedRotaryState rotaryState() const;
+  [[nodiscard]] SimulatedRobotState robotState() const;
+  // Requests received by a device, and those among them that write anything but the heartbeat registers
+  // (target, speed, command, sequence...): a refused command must leave the second at 0.
+  [[nodiscard]] std::uint64_t requestCount(SimulatedDevice device) const;
+  [[nodiscard]] std::uint64_t commandWriteCount(SimulatedDevice device) const;
+  [[nodiscard]] int connectionCount() const;  // clients connected now
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace multidir::hardware

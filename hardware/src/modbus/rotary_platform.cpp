@@ -1,0 +1,370 @@
+#include "multidir/hardware/rotary_platform.h"
+
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <utility>
+
+#include "modbus/link_worker.h"
+#include "modbus/register_maps.h"
+#include "multidir/hardware/motion_limits.h"
+
+namespace multidir::hardware {
+
+namespace rr = regs::rotary;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr double kProgressDegrees = 0.05;  // less than this in stallTimeout is no progress
+
+std::string degrees(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2f", value);
+  return text;
+}
+
+RotaryFault faultFromCode(int code) {
+  switch (code) {
+    case rr::kFaultNone: return RotaryFault::None;
+    case rr::kFaultStall: return RotaryFault::Stall;
+    case rr::kFaultHeartbeat: return RotaryFault::HeartbeatLost;
+    case rr::kFaultLimitSwitch: return RotaryFault::LimitSwitch;
+    case rr::kFaultRejected: return RotaryFault::RejectedCommand;
+    case rr::kFaultEStop: return RotaryFault::EmergencyStop;
+    default: return RotaryFault::Unknown;
+  }
+}
+
+std::future<core::Status> readyFuture(core::Status status) {
+  std::promise<core::Status> promise;
+  promise.set_value(std::move(status));
+  return promise.get_future();
+}
+
+}  // namespace
+
+const char* rotaryFaultName(RotaryFault fault) {
+  switch (fault) {
+    case RotaryFault::None: return "none";
+    case RotaryFault::Stall: return "stall";
+    case RotaryFault::HeartbeatLost: return "heartbeat lost";
+    case RotaryFault::LimitSwitch: return "limit switch";
+    case RotaryFault::RejectedCommand: return "rejected command";
+    case RotaryFault::EmergencyStop: return "emergency stop";
+    case RotaryFault::Unknown: return "unknown";
+  }
+  return "?";
+}
+
+class RotaryPlatform::Impl {
+ public:
+  explicit Impl(RotaryPlatformOptions options)
+      : m_options(std::move(options)),
+        m_label("rotary platform at " + describe(m_options.connection)),
+        m_worker(m_options.connection, m_label, hooks()) {}
+
+  ~Impl() { m_worker.stop(); }
+
+  core::Status connect() {
+    if (auto valid = validate(m_options.connection); !valid.ok()) return valid;
+    if (auto valid = core::validate(m_options.machine); !valid.ok()) return valid;
+    if (m_options.machine.kind != core::MachineKind::RotaryPlatform)
+      return refuse("the machine profile is not a rotary platform (4dof): load the platform's profile");
+    if (!(m_options.speedDegreesPerSecond > 0 && m_options.speedDegreesPerSecond <= 655))
+      return core::Error{core::ErrorCode::InvalidParameter, "speed must be above 0 and at most 655 degrees/s", "speed"};
+    if (m_options.controllerHeartbeatTimeout.count() < 0 || m_options.controllerHeartbeatTimeout.count() > 65535)
+      return core::Error{core::ErrorCode::InvalidParameter, "heartbeat timeout must be between 0 and 65535 ms",
+                         "heartbeat timeout"};
+    return m_worker.start();
+  }
+
+  void disconnect() { m_worker.stop(); }
+
+  std::future<core::Status> enable() {
+    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    return command(rr::kCmdEnable, "enable", false);
+  }
+  std::future<core::Status> disable() {
+    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    return command(rr::kCmdDisable, "disable", false);
+  }
+  std::future<core::Status> clearFault() {
+    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_hostStall = false;
+    }
+    return command(rr::kCmdClearFault, "clear fault", false);
+  }
+
+  std::future<core::Status> home() {
+    const RotaryStatus now = status();
+    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    if (now.fault != RotaryFault::None)
+      return readyFuture(refuse(std::string("cannot home while in fault (") + rotaryFaultName(now.fault) +
+                                "): clear the fault first"));
+    if (!now.enabled) return readyFuture(refuse("cannot home: the drive is not enabled; enable it first"));
+    return m_worker.submit(
+        [this](ModbusPort& port) {
+          auto result = port.writeRegisters(rr::kCommand, {rr::kCmdHome}, "the home command (register 3)");
+          if (result.ok()) expectMotion(0.0);
+          return result;
+        },
+        false, "home");
+  }
+
+  std::future<core::Status> moveTo(double angleDegrees) {
+    if (auto ok = checkRotaryTarget(m_options.machine, angleDegrees); !ok.ok()) {
+      core::Error error = ok.error();
+      error.message = m_label + " refused the move: " + error.message;
+      return readyFuture(error);
+    }
+    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    const RotaryStatus now = status();
+    if (now.fault != RotaryFault::None)
+      return readyFuture(refuse(std::string("cannot move while in fault (") + rotaryFaultName(now.fault) +
+                                "): clear the fault, enable and home again"));
+    if (!now.homed || now.homing)
+      return readyFuture(refuse("cannot move: the platform is not homed; home it first so angles mean something"));
+    if (!now.enabled) return readyFuture(refuse("cannot move: the drive is not enabled; enable it first"));
+    if (!now.controllerAlive)
+      return readyFuture(refuse("cannot move: the controller does not echo the heartbeat, so it could not stop "
+                                "on its own if MultiDir went silent; power-cycle it"));
+    std::vector<std::uint16_t> values(4);
+    regs::putInt32(regs::degreesToCounts(angleDegrees), values.data());
+    values[2] = regs::degreesPerSecondToRegister(m_options.speedDegreesPerSecond);
+    values[3] = rr::kCmdMove;
+    return m_worker.submit(
+        [this, values, angleDegrees](ModbusPort& port) {
+          auto result = port.writeRegisters(rr::kTargetAngle, values, "the move to " + degrees(angleDegrees) +
+                                                                          " degrees (registers 0-3)");
+          if (result.ok()) expectMotion(angleDegrees);
+          return result;
+        },
+        false, "move to " + degrees(angleDegrees) + " degrees");
+  }
+
+  std::future<core::Status> stop() { return urgent(rr::kCmdStop, "stop"); }
+  std::future<core::Status> emergencyStop() { return urgent(rr::kCmdEStop, "emergency stop"); }
+
+  RotaryStatus status() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_status;
+  }
+
+  bool reached(double angleDegrees) const {
+    const RotaryStatus now = status();
+    const double tolerance = m_options.positionToleranceDegrees;
+    return now.link == LinkState::Connected && now.fault == RotaryFault::None && !now.moving && !now.homing &&
+           now.atTarget && std::abs(now.targetAngleDegrees - angleDegrees) <= tolerance &&
+           std::abs(now.angleDegrees - angleDegrees) <= tolerance;
+  }
+
+  void setStatusCallback(StatusCallback callback) {
+    std::lock_guard<std::mutex> lock(m_callbackMutex);
+    m_callback = std::move(callback);
+  }
+
+  const std::string& name() const { return m_label; }
+  const RotaryPlatformOptions& options() const { return m_options; }
+
+ private:
+  LinkHooks hooks() {
+    LinkHooks h;
+    h.onConnected = [this](ModbusPort& port) { return onConnected(port); };
+    h.poll = [this](ModbusPort& port) { return poll(port); };
+    h.heartbeat = [this](ModbusPort& port) {
+      ++m_heartbeat;
+      auto result = port.writeRegisters(rr::kHeartbeat, {m_heartbeat}, "the heartbeat (register 4)");
+      if (!result.ok()) noteError(result.error().message);
+      return result;
+    };
+    h.linkChanged = [this](LinkState state, const std::string& problem) {
+      {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_status.link = state;
+        if (!problem.empty()) m_status.lastError = problem;
+        if (state != LinkState::Connected) m_status.controllerAlive = false;
+      }
+      publish();
+    };
+    return h;
+  }
+
+  core::Error refuse(const std::string& message) const {
+    return core::Error{core::ErrorCode::InvalidParameter, m_label + ": " + message, m_label};
+  }
+
+  core::Status requireLink() const {
+    const LinkState link = status().link;
+    if (link == LinkState::Connected) return core::Done{};
+    return refuse(std::string("not connected (") + linkStateName(link) +
+                  "): nothing was sent; connect first or wait for the link to come back");
+  }
+
+  std::future<core::Status> command(std::uint16_t code, const std::string& what, bool isUrgent) {
+    return m_worker.submit(
+        [code, what](ModbusPort& port) {
+          return port.writeRegisters(rr::kCommand, {code}, "the " + what + " command (register 3)");
+        },
+        isUrgent, what);
+  }
+
+  std::future<core::Status> urgent(std::uint16_t code, const std::string& what) {
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_motionExpected = false;
+    }
+    return command(code, what, true);
+  }
+
+  // Worker thread.
+  void expectMotion(double targetDegrees) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_motionExpected = true;
+    m_expectedTarget = targetDegrees;
+    m_progressAngle = m_status.angleDegrees;
+    m_progressTime = Clock::now();
+  }
+
+  void noteError(const std::string& message) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_status.lastError = message;
+  }
+
+  core::Status onConnected(ModbusPort& port) {
+    const auto timeout = static_cast<std::uint16_t>(m_options.controllerHeartbeatTimeout.count());
+    ++m_heartbeat;
+    auto result = port.writeRegisters(rr::kHeartbeat, {m_heartbeat, timeout},
+                                      "the heartbeat and its timeout (registers 4-5)");
+    if (!result.ok()) return result;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_status.polls = 0;
+    m_echoChanged = Clock::now();
+    m_haveEcho = false;
+    return core::Done{};
+  }
+
+  core::Status poll(ModbusPort& port) {
+    std::uint16_t r[rr::kStatusBlockCount] = {};
+    auto result = port.readRegisters(rr::kStatusBlockFirst, rr::kStatusBlockCount, r, "the status (registers 0-12)");
+    if (!result.ok()) {
+      noteError(result.error().message);
+      publish();
+      return result;
+    }
+    bool stall = false;
+    double stallAngle = 0.0;
+    double stallTarget = 0.0;
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      const Clock::time_point now = Clock::now();
+      RotaryStatus& s = m_status;
+      const std::uint16_t bits = r[rr::kStatus];
+      s.targetAngleDegrees = regs::countsToDegrees(regs::getInt32(&r[rr::kTargetAngle]));
+      s.angleDegrees = regs::countsToDegrees(regs::getInt32(&r[rr::kActualAngle]));
+      s.enabled = (bits & rr::kEnabled) != 0;
+      s.homed = (bits & rr::kHomed) != 0;
+      s.moving = (bits & rr::kMoving) != 0;
+      s.homing = (bits & rr::kHoming) != 0;
+      s.atTarget = (bits & rr::kAtTarget) != 0;
+      s.faultCode = r[rr::kFaultCode];
+      s.fault = faultFromCode(s.faultCode);
+      if ((bits & rr::kFault) != 0 && s.fault == RotaryFault::None) s.fault = RotaryFault::Unknown;
+      if (m_hostStall && s.fault == RotaryFault::None) s.fault = RotaryFault::Stall;
+      s.stallDetectedByHost = m_hostStall;
+
+      const std::uint16_t echo = r[rr::kHeartbeatEcho];
+      if (!m_haveEcho || echo != m_lastEcho) {
+        m_haveEcho = true;
+        m_lastEcho = echo;
+        if (echo != 0) m_echoChanged = now;
+      }
+      const auto aliveWindow = 3 * m_options.connection.heartbeatInterval + 2 * m_options.connection.pollInterval;
+      const bool alive = now - m_echoChanged <= aliveWindow;
+      if (s.controllerAlive && !alive)
+        s.lastError = m_label + " answers Modbus but its control loop stopped echoing the heartbeat (register 12 "
+                      "unchanged for " + std::to_string(aliveWindow.count()) +
+                      " ms): it may not stop on its own; power-cycle the controller";
+      s.controllerAlive = alive;
+      ++s.polls;
+
+      // Stall: a move or homing under way whose angle does not change.
+      if ((m_motionExpected || s.homing) && s.fault == RotaryFault::None) {
+        if (!s.homing && !s.moving && s.atTarget) {
+          m_motionExpected = false;
+        } else if (std::abs(s.angleDegrees - m_progressAngle) > kProgressDegrees) {
+          m_progressAngle = s.angleDegrees;
+          m_progressTime = now;
+        } else if (now - m_progressTime > m_options.stallTimeout) {
+          stall = true;
+          stallAngle = s.angleDegrees;
+          stallTarget = s.homing ? 0.0 : m_expectedTarget;
+          m_hostStall = true;
+          m_motionExpected = false;
+          s.fault = RotaryFault::Stall;
+          s.stallDetectedByHost = true;
+          s.lastError = m_label + " did not move for " + std::to_string(m_options.stallTimeout.count()) +
+                        " ms while turning to " + degrees(stallTarget) + " degrees (stuck at " + degrees(stallAngle) +
+                        "): the motor may be stalled or the platform blocked. MultiDir stopped it; remove the "
+                        "obstruction, clear the fault and home again";
+        }
+      } else if (!m_motionExpected) {
+        m_progressAngle = s.angleDegrees;
+        m_progressTime = now;
+      }
+    }
+    if (stall) {
+      auto stopped = port.writeRegisters(rr::kCommand, {rr::kCmdStop}, "the stop command after a stall (register 3)");
+      if (!stopped.ok()) noteError(stopped.error().message);
+    }
+    publish();
+    return core::Done{};
+  }
+
+  void publish() {
+    const RotaryStatus snapshot = status();
+    std::lock_guard<std::mutex> lock(m_callbackMutex);
+    if (m_callback) m_callback(snapshot);
+  }
+
+  RotaryPlatformOptions m_options;
+  std::string m_label;
+
+  mutable std::mutex m_mutex;  // guards the fields below up to m_hostStall
+  RotaryStatus m_status;
+  bool m_motionExpected = false;
+  double m_expectedTarget = 0.0;
+  double m_progressAngle = 0.0;
+  Clock::time_point m_progressTime{};
+  bool m_hostStall = false;
+  Clock::time_point m_echoChanged{};
+  std::uint16_t m_lastEcho = 0;
+  bool m_haveEcho = false;
+
+  std::mutex m_callbackMutex;
+  StatusCallback m_callback;
+
+  std::uint16_t m_heartbeat = 0;  // worker thread only
+  LinkWorker m_worker;            // last: its thread uses everything above
+};
+
+RotaryPlatform::RotaryPlatform(RotaryPlatformOptions options) : m_impl(std::make_unique<Impl>(std::move(options))) {}
+RotaryPlatform::~RotaryPlatform() = default;
+core::Status RotaryPlatform::connect() { return m_impl->connect(); }
+void RotaryPlatform::disconnect() { m_impl->disconnect(); }
+std::future<core::Status> RotaryPlatform::enable() { return m_impl->enable(); }
+std::future<core::Status> RotaryPlatform::disable() { return m_impl->disable(); }
+std::future<core::Status> RotaryPlatform::home() { return m_impl->home(); }
+std::future<core::Status> RotaryPlatform::moveTo(double angleDegrees) { return m_impl->moveTo(angleDegrees); }
+std::future<core::Status> RotaryPlatform::stop() { return m_impl->stop(); }
+std::future<core::Status> RotaryPlatform::emergencyStop() { return m_impl->emergencyStop(); }
+std::future<core::Status> RotaryPlatform::clearFault() { return m_impl->clearFault(); }
+RotaryStatus RotaryPlatform::status() const { return m_impl->status(); }
+bool RotaryPlatform::reached(double angleDegrees) const { return m_impl->reached(angleDegrees); }
+void RotaryPlatform::setStatusCallback(StatusCallback callback) { m_impl->setStatusCallback(std::move(callback)); }
+std::string RotaryPlatform::name() const { return m_impl->name(); }
+const RotaryPlatformOptions& RotaryPlatform::options() const { return m_impl->options(); }
+
+}  // namespace multidir::hardware

@@ -1,0 +1,81 @@
+#pragma once
+// The behaviour behind the simulator's registers: a rotary platform controller and the URScript program
+// on the robot arm, each working on its block of holding registers (as libmodbus's mapping holds them).
+// Time comes in as arguments, so the models are deterministic; the server thread calls them under its lock.
+#include <chrono>
+#include <cstdint>
+
+#include "multidir/hardware/device_simulator.h"
+
+namespace multidir::hardware::sim {
+
+using Clock = std::chrono::steady_clock;
+
+class RotaryController {
+ public:
+  // `regs` points at registers 0..regs::rotary::kMapSize-1.
+  RotaryController(const SimulatorOptions& options, std::uint16_t* regs, Clock::time_point now);
+
+  // After a client wrote registers: takes a command from the COMMAND register (and clears it).
+  void afterWrite(Clock::time_point now);
+  // Advances motion and the watchdog by the time since the last step, then refreshes the status registers.
+  void step(Clock::time_point now);
+
+  void setStuck(bool stuck) { m_stuck = stuck; }
+  void setEchoing(bool echoing) { m_echoing = echoing; }
+  [[nodiscard]] SimulatedRotaryState state() const;
+
+ private:
+  void command(std::uint16_t code, Clock::time_point now);
+  void reject() { m_fault = 4; m_moving = false; m_homing = false; }
+  void publish();
+
+  SimulatorOptions m_options;
+  std::uint16_t* m_regs;
+  double m_angle;
+  double m_target = 0.0;
+  bool m_enabled = false;
+  bool m_homed = false;
+  bool m_homing = false;
+  bool m_moving = false;
+  std::uint16_t m_fault = 0;
+  bool m_stuck = false;
+  bool m_echoing = true;
+  std::uint16_t m_lastHeartbeat = 0;
+  Clock::time_point m_lastLife;
+  Clock::time_point m_lastStep;
+};
+
+class RobotProgram {
+ public:
+  // `regs` points at register 128 (regs[0] is register 128).
+  RobotProgram(const SimulatorOptions& options, std::uint16_t* regs, Clock::time_point now);
+
+  // One cycle of the program: take a new command, move, watch the host's heartbeat, write the status.
+  void step(Clock::time_point now);
+
+  void setAnswering(bool answering) { m_answering = answering; }
+  [[nodiscard]] SimulatedRobotState state() const;
+
+ private:
+  std::uint16_t& reg(int address) { return m_regs[address - 128]; }
+  void command(std::uint16_t code);
+  void publish();
+
+  SimulatorOptions m_options;
+  std::uint16_t* m_regs;
+  double m_tilt = 0.0;
+  double m_azimuth = 0.0;
+  double m_targetTilt = 0.0;
+  double m_targetAzimuth = 0.0;
+  std::uint16_t m_state = 1;
+  std::uint16_t m_fault = 0;
+  std::uint16_t m_ack = 0;
+  std::uint16_t m_heartbeat = 0;
+  bool m_answering = true;
+  std::uint16_t m_lastHostHeartbeat = 0;
+  Clock::time_point m_lastLife;
+  Clock::time_point m_lastStep;
+};
+
+}  // namespace multidir::hardware::sim

@@ -1,0 +1,112 @@
+#include "multidir/hardware/device_simulator.h"
+
+#include <gtest/gtest.h>
+
+#include "hardware_test_support.h"
+#include "multidir/hardware/print_run.h"
+#include "multidir/hardware/rotary_platform.h"
+
+namespace multidir::hardware {
+namespace {
+
+using namespace test;
+
+TEST(DeviceSimulator, PortZeroListensOnAFreeLoopbackPortAndReportsIt) {
+  DeviceSimulator sim;
+  ASSERT_TRUE(sim.start().ok());
+  EXPECT_GT(sim.port(), 0);
+  EXPECT_EQ(sim.address(), "127.0.0.1:" + std::to_string(sim.port()));
+  EXPECT_TRUE(sim.running());
+  sim.stop();
+  EXPECT_FALSE(sim.running());
+  sim.stop();  // idempotent
+}
+
+TEST(DeviceSimulator, PortInUseIsReportedWithWhatToDo) {
+  DeviceSimulator first;
+  ASSERT_TRUE(first.start().ok());
+  SimulatorOptions options;
+  options.port = first.port();
+  DeviceSimulator second(options);
+  const core::Status status = second.start();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("cannot listen on 127.0.0.1:" + std::to_string(first.port())),
+            std::string::npos)
+      << status.error().message;
+}
+
+TEST(DeviceSimulator, AddressThatIsNotIPv4IsRefused) {
+  SimulatorOptions options;
+  options.listenAddress = "localhost:1502";
+  DeviceSimulator sim(options);
+  const core::Status status = sim.start();
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().code, core::ErrorCode::InvalidParameter);
+}
+
+TEST(DeviceSimulator, RotaryOnlySimulatorAnswersOtherUnitsWithAGatewayException) {
+  SimulatorOptions options;
+  options.robot = false;
+  DeviceSimulator sim(options);
+  ASSERT_TRUE(sim.start().ok());
+  RotaryPlatformOptions platformOptions;
+  platformOptions.connection = fastSettings(sim.port(), 7);
+  platformOptions.machine.kind = core::MachineKind::RotaryPlatform;
+  RotaryPlatform platform(platformOptions);
+  const core::Status status = platform.connect();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("Modbus exception 11"), std::string::npos) << status.error().message;
+  EXPECT_NE(status.error().message.find("check the unit id"), std::string::npos) << status.error().message;
+}
+
+// The sequencer over the real driver and the simulator, in real time.
+TEST(DeviceSimulator, PrintRunDrivesTheSimulatedPlatformThroughTwoRegions) {
+  DeviceSimulator sim;
+  ASSERT_TRUE(sim.start().ok());
+  RotaryPlatformOptions options;
+  options.connection = fastSettings(sim.port(), 1);
+  options.machine.kind = core::MachineKind::RotaryPlatform;
+  options.speedDegreesPerSecond = 120.0;
+  RotaryPlatform platform(options);
+  ASSERT_TRUE(platform.connect().ok());
+  ASSERT_TRUE(outcome(platform.enable()).ok());
+  ASSERT_TRUE(eventually([&] { return platform.status().enabled; }));
+  ASSERT_TRUE(outcome(platform.home()).ok());
+  ASSERT_TRUE(eventually([&] { return platform.status().homed; }));
+
+  auto positioner = makePositioner(platform);
+  PrintRunOptions runOptions;
+  runOptions.settleTime = 30ms;
+  PrintRun run(*positioner,
+               {{PlatformOrientation::rotary(-20.0), "region_1.gcode"}, {PlatformOrientation::rotary(40.0), "region_2.gcode"}},
+               runOptions);
+  std::vector<double> anglesWhenPrinting;
+  run.setPrintRequestCallback([&](std::size_t, const PrintStep&) {
+    anglesWhenPrinting.push_back(sim.rotaryState().angleDegrees);
+  });
+  ASSERT_TRUE(run.start().ok());
+  for (std::size_t region = 0; region < 2; ++region) {
+    ASSERT_TRUE(eventually([&] {
+      run.tick();
+      return run.state() == PrintRunState::Printing;
+    })) << printRunStateName(run.state()) << " " << run.lastProblem();
+    ASSERT_TRUE(run.regionDone(region).ok());
+  }
+  EXPECT_EQ(run.state(), PrintRunState::Completed);
+  ASSERT_EQ(anglesWhenPrinting.size(), 2u);
+  EXPECT_NEAR(anglesWhenPrinting[0], -20.0, 1e-9);
+  EXPECT_NEAR(anglesWhenPrinting[1], 40.0, 1e-9);
+}
+
+TEST(DeviceSimulator, PositionerForTheRotaryPlatformRefusesTiltTargets) {
+  RotaryPlatformOptions options;
+  options.machine.kind = core::MachineKind::RotaryPlatform;
+  RotaryPlatform platform(options);
+  auto positioner = makePositioner(platform);
+  const core::Status status = positioner->startMove(PlatformOrientation::tiltAzimuth(10.0, 0.0));
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("4dof"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace multidir::hardware

@@ -1,0 +1,257 @@
+#include "multidir/hardware/print_run.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <vector>
+
+namespace multidir::hardware {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A positioner the test moves by hand.
+class FakePositioner : public Positioner {
+ public:
+  core::Status startMove(const PlatformOrientation& target) override {
+    moves.push_back(target);
+    if (refuseNext) {
+      refuseNext = false;
+      return core::Error{core::ErrorCode::InvalidParameter, "not homed", "fake"};
+    }
+    state.reached = false;
+    state.moving = true;
+    return core::Done{};
+  }
+  core::Status stopMotion() override {
+    ++stops;
+    state.moving = false;
+    return core::Done{};
+  }
+  PositionerSnapshot snapshot() const override { return state; }
+  std::string name() const override { return "fake platform"; }
+
+  void arrive() {
+    state.moving = false;
+    state.reached = true;
+  }
+
+  std::vector<PlatformOrientation> moves;
+  int stops = 0;
+  bool refuseNext = false;
+  PositionerSnapshot state{true, false, false, false, ""};
+};
+
+class PrintRunTest : public ::testing::Test {
+ protected:
+  PrintRunOptions options() {
+    PrintRunOptions o;
+    o.settleTime = 500ms;
+    o.moveTimeout = 10s;
+    o.steadyNow = [this] { return now; };
+    o.wallNow = [this] { return wall; };
+    return o;
+  }
+  std::vector<PrintStep> threeSteps() const {
+    return {{PlatformOrientation::rotary(0.0), "region_1.stl"},
+            {PlatformOrientation::rotary(30.0), "region_2.stl"},
+            {PlatformOrientation::rotary(-45.0), "region_3.stl"}};
+  }
+  void advance(std::chrono::milliseconds by, PrintRun& run) {
+    now += by;
+    wall += by;
+    run.tick();
+  }
+  // Moves through reaching and settling into Printing.
+  void settle(PrintRun& run) {
+    device.arrive();
+    advance(10ms, run);
+    advance(500ms, run);
+  }
+
+  FakePositioner device;
+  std::chrono::steady_clock::time_point now{std::chrono::hours(1)};
+  std::chrono::system_clock::time_point wall{std::chrono::hours(24 * 365 * 50)};
+};
+
+TEST_F(PrintRunTest, RunsEachStepMoveSettlePrintInOrderAndCompletes) {
+  PrintRun run(device, threeSteps(), options());
+  std::vector<std::size_t> printed;
+  run.setPrintRequestCallback([&](std::size_t step, const PrintStep&) { printed.push_back(step); });
+  ASSERT_TRUE(run.start().ok());
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(run.state(), PrintRunState::Moving);
+    EXPECT_EQ(device.moves.size(), i + 1);
+    settle(run);
+    ASSERT_EQ(run.state(), PrintRunState::Printing);
+    ASSERT_TRUE(run.regionDone(i).ok());
+  }
+  EXPECT_EQ(run.state(), PrintRunState::Completed);
+  EXPECT_EQ(printed, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_DOUBLE_EQ(device.moves[1].rotaryDegrees, 30.0);
+  EXPECT_DOUBLE_EQ(device.moves[2].rotaryDegrees, -45.0);
+}
+
+TEST_F(PrintRunTest, PrintingWaitsUntilTheTargetWasHeldForTheSettleTime) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  device.arrive();
+  advance(10ms, run);
+  EXPECT_EQ(run.state(), PrintRunState::Settling);
+  advance(499ms, run);
+  EXPECT_EQ(run.state(), PrintRunState::Settling);
+  device.state.reached = false;  // a vibration takes it off target
+  advance(1ms, run);
+  EXPECT_EQ(run.state(), PrintRunState::Moving);
+  device.arrive();
+  advance(1ms, run);
+  advance(499ms, run);
+  EXPECT_EQ(run.state(), PrintRunState::Settling);  // the settle time starts again
+  advance(1ms, run);
+  EXPECT_EQ(run.state(), PrintRunState::Printing);
+}
+
+TEST_F(PrintRunTest, NoMoveIsCommandedWhileARegionPrints) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  settle(run);
+  ASSERT_EQ(run.state(), PrintRunState::Printing);
+  device.state.reached = false;  // whatever the device says, the sequencer waits for "region done"
+  device.state.faulted = true;
+  for (int i = 0; i < 20; ++i) advance(1s, run);
+  EXPECT_EQ(run.state(), PrintRunState::Printing);
+  EXPECT_EQ(device.moves.size(), 1u);
+  EXPECT_EQ(device.stops, 0);
+}
+
+TEST_F(PrintRunTest, PauseWhileMovingStopsAndResumeCommandsTheSameStepAgain) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.pause().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+  EXPECT_EQ(device.stops, 1);
+  advance(1s, run);
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+  ASSERT_TRUE(run.resume().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Moving);
+  ASSERT_EQ(device.moves.size(), 2u);
+  EXPECT_DOUBLE_EQ(device.moves[1].rotaryDegrees, 0.0);
+  EXPECT_EQ(run.currentStep(), 0u);
+}
+
+TEST_F(PrintRunTest, PauseWhilePrintingTakesEffectWhenTheRegionIsDone) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  settle(run);
+  ASSERT_TRUE(run.pause().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Printing);
+  EXPECT_TRUE(run.pausePending());
+  EXPECT_EQ(device.stops, 0);
+  ASSERT_TRUE(run.regionDone(0).ok());
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+  EXPECT_EQ(run.currentStep(), 1u);
+  EXPECT_EQ(device.moves.size(), 1u);  // step 2 not started
+  ASSERT_TRUE(run.resume().ok());
+  ASSERT_EQ(device.moves.size(), 2u);
+  EXPECT_DOUBLE_EQ(device.moves[1].rotaryDegrees, 30.0);
+}
+
+TEST_F(PrintRunTest, AbortWhileMovingStopsAndIsFinal) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.abort().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Aborted);
+  EXPECT_EQ(device.stops, 1);
+  EXPECT_FALSE(run.resume().ok());
+  EXPECT_FALSE(run.start().ok());
+  EXPECT_FALSE(run.abort().ok());
+}
+
+TEST_F(PrintRunTest, AbortWhilePrintingCommandsNoMotionAndTellsToStopThePrinter) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  settle(run);
+  ASSERT_TRUE(run.abort().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Aborted);
+  EXPECT_EQ(device.stops, 0);
+  EXPECT_NE(run.log().back().message.find("stop the printer"), std::string::npos);
+}
+
+TEST_F(PrintRunTest, DeviceFaultWhileMovingFaultsTheRunAndResumeRetriesTheStep) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  device.state.faulted = true;
+  device.state.problem = "stall at 12.00 degrees";
+  advance(10ms, run);
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
+  EXPECT_EQ(device.stops, 1);
+  EXPECT_NE(run.lastProblem().find("stall"), std::string::npos);
+  device.state.faulted = false;
+  ASSERT_TRUE(run.resume().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Moving);
+  EXPECT_EQ(device.moves.size(), 2u);
+}
+
+TEST_F(PrintRunTest, RefusedMoveFaultsTheRunWithTheDevicesReason) {
+  device.refuseNext = true;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
+  EXPECT_NE(run.lastProblem().find("not homed"), std::string::npos);
+}
+
+TEST_F(PrintRunTest, MoveThatNeverArrivesTimesOut) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  advance(9s, run);
+  EXPECT_EQ(run.state(), PrintRunState::Moving);
+  advance(2s, run);
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
+}
+
+TEST_F(PrintRunTest, LinkLossWhileMovingFaultsTheRun) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  device.state.linkUp = false;
+  advance(10ms, run);
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
+  EXPECT_NE(run.lastProblem().find("link to fake platform is down"), std::string::npos);
+}
+
+TEST_F(PrintRunTest, RegionDoneIsAcceptedOnlyForTheRegionThatPrints) {
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  EXPECT_FALSE(run.regionDone(0).ok());  // still moving
+  settle(run);
+  EXPECT_FALSE(run.regionDone(1).ok());
+  EXPECT_EQ(run.state(), PrintRunState::Printing);
+  EXPECT_TRUE(run.regionDone(0).ok());
+}
+
+TEST_F(PrintRunTest, EmptyRunCannotStart) {
+  PrintRun run(device, {}, options());
+  EXPECT_FALSE(run.start().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Idle);
+}
+
+TEST_F(PrintRunTest, EveryTransitionIsLoggedWithTheClocksTime) {
+  PrintRun run(device, threeSteps(), options());
+  std::vector<PrintRunLogEntry> seen;
+  run.setLogCallback([&](const PrintRunLogEntry& entry) { seen.push_back(entry); });
+  const auto wallAtStart = wall;
+  ASSERT_TRUE(run.start().ok());
+  settle(run);
+  ASSERT_EQ(seen.size(), 3u);  // moving, settling, printing
+  EXPECT_EQ(seen[0].state, PrintRunState::Moving);
+  EXPECT_EQ(seen[0].wallTime, wallAtStart);
+  EXPECT_EQ(seen[0].elapsed, 0ms);
+  EXPECT_EQ(seen[1].state, PrintRunState::Settling);
+  EXPECT_EQ(seen[1].elapsed, 10ms);
+  EXPECT_EQ(seen[2].state, PrintRunState::Printing);
+  EXPECT_EQ(seen[2].elapsed, 510ms);
+  EXPECT_NE(seen[2].message.find("step 1/3 (region_1.stl, rotary 0.00 deg)"), std::string::npos) << seen[2].message;
+  EXPECT_EQ(run.log().size(), seen.size());
+}
+
+}  // namespace
+}  // namespace multidir::hardware

@@ -1,0 +1,135 @@
+#include "multidir/hardware/robot_arm.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "hardware_test_support.h"
+
+namespace multidir::hardware {
+namespace {
+
+using namespace test;
+
+class RobotArmTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(sim.start().ok());
+    options.connection = fastSettings(sim.port(), 255);
+    options.machine.kind = core::MachineKind::TiltRotate;
+    options.machine.maxTiltDegrees = 60.0;
+    core::ForbiddenCone cone;
+    cone.axis = core::Vec3(0.0, -1.0, 0.0);  // azimuth -90 at tilt 90
+    cone.halfAngleDegrees = 40.0;
+    options.machine.forbiddenCones.push_back(cone);
+    options.speedPercent = 100;  // 360 degrees/s in this simulator
+    options.programHeartbeatTimeout = 200ms;
+  }
+
+  std::unique_ptr<RobotArm> connected() {
+    auto arm = std::make_unique<RobotArm>(options);
+    const core::Status status = arm->connect();
+    EXPECT_TRUE(status.ok()) << messageOf(status);
+    EXPECT_TRUE(eventually([&] { return arm->status().programAlive; }));
+    return arm;
+  }
+
+  static SimulatorOptions fastRobot() {
+    SimulatorOptions o;
+    o.robotMaxSpeedDegreesPerSecond = 360.0;
+    return o;
+  }
+
+  DeviceSimulator sim{fastRobot()};
+  RobotArmOptions options;
+};
+
+TEST_F(RobotArmTest, MovesToATiltAndAzimuthAndReportsReached) {
+  auto arm = connected();
+  EXPECT_EQ(arm->status().state, RobotProgramState::Idle);
+  ASSERT_TRUE(outcome(arm->moveTo(30.0, 120.0)).ok());
+  ASSERT_TRUE(eventually([&] { return arm->reached(30.0, 120.0); }));
+  const SimulatedRobotState state = sim.robotState();
+  EXPECT_NEAR(state.tiltDegrees, 30.0, 1e-9);
+  EXPECT_NEAR(state.azimuthDegrees, 120.0, 1e-9);
+  EXPECT_EQ(arm->status().acknowledgedSequence, arm->status().sentSequence);
+}
+
+TEST_F(RobotArmTest, NegativeAzimuthTravelsAsSignedTwosComplement) {
+  auto arm = connected();
+  ASSERT_TRUE(outcome(arm->moveTo(20.0, -135.5)).ok());
+  ASSERT_TRUE(eventually([&] { return arm->reached(20.0, -135.5); }));
+  EXPECT_NEAR(sim.robotState().azimuthDegrees, -135.5, 1e-9);
+  EXPECT_NEAR(arm->status().azimuthDegrees, -135.5, 1e-9);
+}
+
+TEST_F(RobotArmTest, TiltBeyondTheProfileIsRefusedBeforeAnythingIsSent) {
+  auto arm = connected();
+  auto future = arm->moveTo(75.0, 0.0);
+  ASSERT_TRUE(readyAtOnce(future));
+  const core::Status status = future.get();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("exceeds the machine's maximal tilt of 60.00"), std::string::npos)
+      << status.error().message;
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Robot), 0u);
+}
+
+TEST_F(RobotArmTest, OrientationInsideAForbiddenConeIsRefusedBeforeAnythingIsSent) {
+  auto arm = connected();
+  const core::Status status = outcome(arm->moveTo(60.0, -90.0));
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("inside forbidden cone 1"), std::string::npos) << status.error().message;
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Robot), 0u);
+}
+
+TEST_F(RobotArmTest, HungProgramIsReportedAndMovesAreRefused) {
+  auto arm = connected();
+  sim.setHeartbeatAnswering(SimulatedDevice::Robot, false);
+  ASSERT_TRUE(eventually([&] { return !arm->status().programAlive; }));
+  EXPECT_NE(arm->status().lastError.find("URScript program stopped"), std::string::npos) << arm->status().lastError;
+  const core::Status status = outcome(arm->moveTo(10.0, 0.0));
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("press Play"), std::string::npos) << status.error().message;
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Robot), 0u);
+}
+
+TEST_F(RobotArmTest, SilentHostMakesTheProgramStop) {
+  options.speedPercent = 5;  // 18 degrees/s
+  options.programHeartbeatTimeout = 150ms;
+  auto arm = connected();
+  ASSERT_TRUE(outcome(arm->moveTo(45.0, 0.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));
+  arm->disconnect();
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 6; }));
+  EXPECT_EQ(sim.robotState().faultCode, 2);
+  EXPECT_LT(sim.robotState().tiltDegrees, 10.0);
+}
+
+TEST_F(RobotArmTest, EmergencyStopHaltsUntilTheFaultIsCleared) {
+  options.speedPercent = 10;
+  auto arm = connected();
+  ASSERT_TRUE(outcome(arm->moveTo(45.0, 10.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));
+  ASSERT_TRUE(outcome(arm->emergencyStop()).ok());
+  ASSERT_TRUE(eventually([&] { return arm->status().state == RobotProgramState::Halted; }));
+  const double tilt = sim.robotState().tiltDegrees;
+  EXPECT_LT(tilt, 45.0);
+  const core::Status refused = outcome(arm->moveTo(10.0, 10.0));
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("halted"), std::string::npos) << refused.error().message;
+  ASSERT_TRUE(outcome(arm->clearFault()).ok());
+  ASSERT_TRUE(eventually([&] { return arm->status().state == RobotProgramState::Idle; }));
+  EXPECT_TRUE(outcome(arm->moveTo(10.0, 10.0)).ok());
+}
+
+TEST_F(RobotArmTest, ExceptionReplyFromTheRobotIsReported) {
+  auto arm = connected();
+  sim.setExceptionReply(SimulatedDevice::Robot, 2);
+  const core::Status status = outcome(arm->moveTo(10.0, 0.0));
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("Modbus exception 2"), std::string::npos) << status.error().message;
+  EXPECT_NE(status.error().message.find("register map does not match docs/hardware.md"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace multidir::hardware

@@ -1,0 +1,247 @@
+#include "multidir/hardware/rotary_platform.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "hardware_test_support.h"
+
+namespace multidir::hardware {
+namespace {
+
+using namespace test;
+
+class RotaryPlatformTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(sim.start().ok());
+    options.connection = fastSettings(sim.port(), 1);
+    options.machine.kind = core::MachineKind::RotaryPlatform;
+    options.machine.minAngleDegrees = -60.0;
+    options.machine.maxAngleDegrees = 60.0;
+    options.machine.angleStepDegrees = 1.0;
+    options.speedDegreesPerSecond = 90.0;
+    options.stallTimeout = 250ms;
+  }
+
+  std::unique_ptr<RotaryPlatform> connected() {
+    auto platform = std::make_unique<RotaryPlatform>(options);
+    const core::Status status = platform->connect();
+    EXPECT_TRUE(status.ok()) << messageOf(status);
+    return platform;
+  }
+
+  std::unique_ptr<RotaryPlatform> homed() {
+    auto platform = connected();
+    EXPECT_TRUE(outcome(platform->enable()).ok());
+    EXPECT_TRUE(eventually([&] { return platform->status().enabled; }));
+    EXPECT_TRUE(outcome(platform->home()).ok());
+    EXPECT_TRUE(eventually([&] { return platform->status().homed && !platform->status().homing; }));
+    return platform;
+  }
+
+  DeviceSimulator sim;
+  RotaryPlatformOptions options;
+};
+
+TEST_F(RotaryPlatformTest, ConnectReadsTheControllerState) {
+  auto platform = connected();
+  const RotaryStatus status = platform->status();
+  EXPECT_EQ(status.link, LinkState::Connected);
+  EXPECT_NEAR(status.angleDegrees, 7.5, 1e-9);  // the simulator's power-on angle
+  EXPECT_FALSE(status.homed);
+  EXPECT_TRUE(status.controllerAlive);
+  EXPECT_EQ(status.fault, RotaryFault::None);
+}
+
+TEST_F(RotaryPlatformTest, HomesThenTurnsToARealizableAngle) {
+  auto platform = homed();
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 0.0, 1e-9);
+  ASSERT_TRUE(outcome(platform->moveTo(-30.0)).ok());
+  ASSERT_TRUE(eventually([&] { return platform->reached(-30.0); }));
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, -30.0, 1e-9);
+  EXPECT_NEAR(platform->status().angleDegrees, -30.0, 0.01);
+}
+
+TEST_F(RotaryPlatformTest, StatusCallbackReportsEveryPoll) {
+  auto platform = connected();
+  std::atomic<int> calls{0};
+  platform->setStatusCallback([&](const RotaryStatus& status) {
+    if (status.link == LinkState::Connected) ++calls;
+  });
+  EXPECT_TRUE(eventually([&] { return calls.load() >= 3; }));
+  platform->setStatusCallback({});
+}
+
+TEST_F(RotaryPlatformTest, AngleOutsideTheProfileIsRefusedBeforeAnythingIsSent) {
+  auto platform = connected();
+  auto future = platform->moveTo(75.0);
+  ASSERT_TRUE(readyAtOnce(future));
+  const core::Status status = future.get();
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_NE(status.error().message.find("outside the platform's range [-60.00, 60.00]"), std::string::npos)
+      << status.error().message;
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), 0u);
+}
+
+TEST_F(RotaryPlatformTest, AngleBetweenStepperStepsIsRefusedWithTheNearestOnes) {
+  auto platform = connected();
+  const core::Status status = outcome(platform->moveTo(30.4));
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("nearest realizable angles are 30.00 and 31.00"), std::string::npos)
+      << status.error().message;
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), 0u);
+}
+
+TEST_F(RotaryPlatformTest, MoveBeforeHomingIsRefusedBeforeAnythingIsSent) {
+  auto platform = connected();
+  auto future = platform->moveTo(30.0);
+  ASSERT_TRUE(readyAtOnce(future));
+  const core::Status status = future.get();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("not homed"), std::string::npos) << status.error().message;
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), 0u);
+  EXPECT_FALSE(sim.rotaryState().moving);
+}
+
+TEST_F(RotaryPlatformTest, CommandsWithoutALinkAreRefused) {
+  RotaryPlatform platform(options);  // never connected
+  const core::Status status = outcome(platform.enable());
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("not connected"), std::string::npos) << status.error().message;
+  EXPECT_EQ(sim.requestCount(SimulatedDevice::Rotary), 0u);
+}
+
+TEST_F(RotaryPlatformTest, ConnectingToNothingSaysWhatToCheckAndKeepsRetrying) {
+  DeviceSimulator closed;
+  ASSERT_TRUE(closed.start().ok());
+  const int port = closed.port();
+  closed.stop();
+  options.connection.tcp.port = port;
+  RotaryPlatform platform(options);
+  const core::Status status = platform.connect();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("cannot connect to rotary platform at 127.0.0.1:" + std::to_string(port)),
+            std::string::npos)
+      << status.error().message;
+  EXPECT_EQ(platform.status().link, LinkState::Reconnecting);
+}
+
+TEST_F(RotaryPlatformTest, DelayedRepliesAreReportedAsTimeoutsAndTheLinkRecovers) {
+  auto platform = connected();
+  sim.setReplyDelay(400ms);  // longer than the 150 ms response timeout
+  ASSERT_TRUE(eventually([&] { return platform->status().link == LinkState::Reconnecting; }));
+  EXPECT_NE(platform->status().lastError.find("did not answer within 150 ms"), std::string::npos)
+      << platform->status().lastError;
+  EXPECT_NE(platform->status().lastError.find("Modbus id is 1"), std::string::npos);
+  sim.setReplyDelay(0ms);
+  ASSERT_TRUE(eventually([&] { return platform->status().link == LinkState::Connected; }));
+  const auto polls = platform->status().polls;
+  EXPECT_TRUE(eventually([&] { return platform->status().polls > polls + 2; }));
+}
+
+TEST_F(RotaryPlatformTest, DroppedConnectionDuringAMoveIsReportedAndTheMoveCompletesAfterReconnecting) {
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->moveTo(45.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  sim.dropConnections(100ms);
+  ASSERT_TRUE(eventually([&] { return platform->status().link == LinkState::Reconnecting; }));
+  EXPECT_NE(platform->status().lastError.find("rotary platform at 127.0.0.1"), std::string::npos)
+      << platform->status().lastError;
+  ASSERT_TRUE(eventually([&] { return platform->status().link == LinkState::Connected; }));
+  EXPECT_TRUE(eventually([&] { return platform->reached(45.0); }));
+}
+
+TEST_F(RotaryPlatformTest, ExceptionReplyIsReportedWithItsCodeAndKeepsTheLink) {
+  auto platform = connected();
+  sim.setExceptionReply(SimulatedDevice::Rotary, 4);  // server device failure
+  const core::Status status = outcome(platform->enable());
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("Modbus exception 4"), std::string::npos) << status.error().message;
+  EXPECT_NE(status.error().message.find("fault LED"), std::string::npos) << status.error().message;
+  EXPECT_EQ(platform->status().link, LinkState::Connected);
+  sim.setExceptionReply(SimulatedDevice::Rotary, 0);
+  EXPECT_TRUE(outcome(platform->enable()).ok());
+  EXPECT_TRUE(eventually([&] { return platform->status().enabled; }));
+}
+
+TEST_F(RotaryPlatformTest, StuckMotorIsDetectedAsAStallAndStopped) {
+  auto platform = homed();
+  sim.setMotorStuck(true);
+  ASSERT_TRUE(outcome(platform->moveTo(30.0)).ok());
+  ASSERT_TRUE(eventually([&] { return platform->status().fault == RotaryFault::Stall; }));
+  const RotaryStatus status = platform->status();
+  EXPECT_TRUE(status.stallDetectedByHost);
+  EXPECT_NE(status.lastError.find("did not move for 250 ms while turning to 30.00 degrees"), std::string::npos)
+      << status.lastError;
+  EXPECT_TRUE(eventually([&] { return !sim.rotaryState().moving; }));  // MultiDir sent stop
+  const core::Status refused = outcome(platform->moveTo(10.0));
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("in fault (stall)"), std::string::npos) << refused.error().message;
+}
+
+TEST_F(RotaryPlatformTest, EmergencyStopJumpsTheQueueCancelsQueuedMovesAndHaltsTheMotor) {
+  options.speedDegreesPerSecond = 20.0;
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->moveTo(60.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  sim.setReplyDelay(60ms);  // keeps the worker busy so that the next moves wait in the queue
+  auto first = platform->moveTo(10.0);
+  auto second = platform->moveTo(20.0);
+  auto third = platform->moveTo(-20.0);
+  auto estop = platform->emergencyStop();
+  const core::Status stopped = outcome(std::move(estop));
+  EXPECT_TRUE(stopped.ok()) << messageOf(stopped);
+  sim.setReplyDelay(0ms);
+  const core::Status cancelled = outcome(std::move(third));
+  ASSERT_FALSE(cancelled.ok());
+  EXPECT_EQ(cancelled.error().code, core::ErrorCode::Cancelled);
+  EXPECT_NE(cancelled.error().message.find("cancelled by emergency stop"), std::string::npos);
+  outcome(std::move(first));
+  outcome(std::move(second));
+  const SimulatedRotaryState state = sim.rotaryState();
+  EXPECT_FALSE(state.moving);
+  EXPECT_EQ(state.faultCode, 5);
+  EXPECT_LT(state.angleDegrees, 59.0);
+  EXPECT_TRUE(eventually([&] { return platform->status().fault == RotaryFault::EmergencyStop; }));
+  EXPECT_FALSE(outcome(platform->moveTo(0.0)).ok());
+}
+
+TEST_F(RotaryPlatformTest, SilentHostMakesTheControllerStopOnItsOwn) {
+  options.speedDegreesPerSecond = 10.0;
+  options.controllerHeartbeatTimeout = 150ms;
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->moveTo(60.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  platform->disconnect();  // no stop command: only the missing heartbeat can stop it
+  ASSERT_TRUE(eventually([&] { return !sim.rotaryState().moving; }));
+  const SimulatedRotaryState state = sim.rotaryState();
+  EXPECT_EQ(state.faultCode, 2);  // heartbeat lost
+  EXPECT_LT(state.angleDegrees, 30.0);
+}
+
+TEST_F(RotaryPlatformTest, ControllerThatStopsEchoingTheHeartbeatIsReportedAndMovesAreRefused) {
+  auto platform = homed();
+  sim.setHeartbeatAnswering(SimulatedDevice::Rotary, false);
+  ASSERT_TRUE(eventually([&] { return !platform->status().controllerAlive; }));
+  EXPECT_NE(platform->status().lastError.find("stopped echoing the heartbeat"), std::string::npos)
+      << platform->status().lastError;
+  const auto writes = sim.commandWriteCount(SimulatedDevice::Rotary);
+  const core::Status status = outcome(platform->moveTo(10.0));
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), writes);
+}
+
+TEST_F(RotaryPlatformTest, BadOptionsAreRefusedWithoutStartingAnything) {
+  options.machine.kind = core::MachineKind::TiltRotate;
+  RotaryPlatform platform(options);
+  const core::Status status = platform.connect();
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_EQ(sim.requestCount(SimulatedDevice::Rotary), 0u);
+}
+
+}  // namespace
+}  // namespace multidir::hardware
