@@ -3,40 +3,47 @@
 #include <QCoreApplication>
 
 namespace multidir::ui {
+namespace {
+
+// The translation context of the texts here (lupdate reads it from the macro).
+struct ErrorText {
+  Q_DECLARE_TR_FUNCTIONS(multidir::ui::ErrorText)
+};
+
+}  // namespace
 
 QString errorHeadline(core::ErrorCode code) {
-  const char* context = "multidir::ui::ErrorText";
   switch (code) {
     case core::ErrorCode::FileNotFound:
-      return QCoreApplication::translate(context, "The file does not exist or cannot be read.");
+      return ErrorText::tr("The file does not exist or cannot be read.");
     case core::ErrorCode::UnsupportedFormat:
-      return QCoreApplication::translate(context, "This file type is not supported: use STL, OBJ, OFF or PLY.");
+      return ErrorText::tr("This file type is not supported: use STL, OBJ, OFF or PLY.");
     case core::ErrorCode::MalformedFile:
-      return QCoreApplication::translate(context, "The file is damaged or does not follow its format.");
+      return ErrorText::tr("The file is damaged or does not follow its format.");
     case core::ErrorCode::TooLarge:
-      return QCoreApplication::translate(context, "The model is larger than MultiDir accepts.");
+      return ErrorText::tr("The model is larger than MultiDir accepts.");
     case core::ErrorCode::WriteFailed:
-      return QCoreApplication::translate(context, "The file could not be written.");
+      return ErrorText::tr("The file could not be written.");
     case core::ErrorCode::EmptyMesh:
-      return QCoreApplication::translate(context, "The file contains no triangles.");
+      return ErrorText::tr("The file contains no triangles.");
     case core::ErrorCode::NonFiniteVertex:
-      return QCoreApplication::translate(context, "Some vertex coordinates are not numbers.");
+      return ErrorText::tr("Some vertex coordinates are not numbers.");
     case core::ErrorCode::NotManifold:
-      return QCoreApplication::translate(
-          context, "The surface is not a clean solid: some edges or vertices are shared by too many faces.");
+      return ErrorText::tr(
+          "The surface is not a clean solid: some edges or vertices are shared by too many faces.");
     case core::ErrorCode::OpenBoundary:
-      return QCoreApplication::translate(
-          context, "The surface has holes, so it does not enclose a solid. Close them in a mesh repair tool.");
+      return ErrorText::tr(
+          "The surface has holes, so it does not enclose a solid. Close them in a mesh repair tool.");
     case core::ErrorCode::InconsistentOrientation:
-      return QCoreApplication::translate(context, "The faces of the surface point in inconsistent directions.");
+      return ErrorText::tr("The faces of the surface point in inconsistent directions.");
     case core::ErrorCode::InvalidParameter:
-      return QCoreApplication::translate(context, "A setting is out of its allowed range.");
+      return ErrorText::tr("A setting is out of its allowed range.");
     case core::ErrorCode::Cancelled:
-      return QCoreApplication::translate(context, "Cancelled.");
+      return ErrorText::tr("Cancelled.");
     case core::ErrorCode::Internal:
       break;
   }
-  return QCoreApplication::translate(context, "An internal error occurred: please report it with the model.");
+  return ErrorText::tr("An internal error occurred: please report it with the model.");
 }
 
 }  // namespace multidir::ui

@@ -3,6 +3,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
@@ -12,13 +14,24 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QVector3D>
 #include <cmath>
 
 #include "multidir/core/analysis/overhang.h"
+#include "multidir/core/mesh/mesh_measure.h"
+#include "multidir/core/plan/checksum.h"
+#include "multidir/core/plan/plan_file.h"
 #include "multidir/core/samples/samples.h"
+#include "ui/device/hardware_panel.h"
+#include "ui/error_text.h"
 #include "ui/jobs/model_loader.h"
+#include "ui/panels/machine_panel.h"
+#include "ui/panels/overhang_panel.h"
+#include "ui/panels/plan_panel.h"
+#include "ui/panels/search_panel.h"
+#include "ui/studio_startup.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
@@ -32,6 +45,20 @@ core::Vec3 toVec3(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
 
 QString formatNumber(double value, int decimals) { return QLocale().toString(value, 'f', decimals); }
 
+std::string localPath(const QString& path) { return QFile::encodeName(path).toStdString(); }
+
+// One mesh holding every region of a plan: what a plan opened without its model is shown over.
+core::TriangleMesh mergedRegions(const core::Decomposition& plan) {
+  core::TriangleMesh merged;
+  for (const core::Region& region : plan.regions) {
+    const auto base = static_cast<std::int32_t>(merged.vertices.size());
+    merged.vertices.insert(merged.vertices.end(), region.mesh.vertices.begin(), region.mesh.vertices.end());
+    for (const core::Triangle& t : region.mesh.triangles) merged.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  merged.resetOrigins();
+  return merged;
+}
+
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
@@ -42,12 +69,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(m_loader, &ModelLoader::loaded, this, &MainWindow::showModel);
   connect(m_loader, &ModelLoader::failed, this, &MainWindow::reportLoadError);
   connect(m_loader, &ModelLoader::busyChanged, this, &MainWindow::setBusy);
+  m_search = new SearchJob(this);
 
+  buildDocks();
   buildMenus();
   buildUpBox();
   buildStatusBar();
   updateModelStatus();
-  resize(1280, 860);
+  onMachineChanged();
+  resize(1480, 900);
 }
 
 MainWindow::~MainWindow() {
@@ -69,12 +99,88 @@ void MainWindow::buildMenus() {
   }
 
   file->addSeparator();
+  QAction* openPlanAction = file->addAction(tr("Open &plan..."), this, &MainWindow::chooseOpenPlan);
+  openPlanAction->setObjectName(QStringLiteral("openPlan"));
+  openPlanAction->setStatusTip(tr("Show a plan saved earlier (a folder with plan.json)"));
+  m_exportPlanAction = file->addAction(tr("&Export plan..."), this, &MainWindow::chooseExportPlan);
+  m_exportPlanAction->setObjectName(QStringLiteral("exportPlan"));
+  m_exportPlanAction->setStatusTip(tr("Save the plan shown: plan.json and one STL per region"));
+  m_exportPlanAction->setEnabled(false);
+  file->addSeparator();
+  QAction* loadMachine = file->addAction(tr("&Load machine profile..."), this, &MainWindow::chooseLoadMachine);
+  loadMachine->setObjectName(QStringLiteral("loadMachine"));
+  QAction* saveMachine = file->addAction(tr("&Save machine profile..."), this, &MainWindow::chooseSaveMachine);
+  saveMachine->setObjectName(QStringLiteral("saveMachine"));
+  file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
 
-  QMenu* view = menuBar()->addMenu(tr("&View"));
-  QAction* fit = view->addAction(tr("&Fit to View"), m_viewer, &MeshViewerWidget::fitView);
+  m_viewMenu = menuBar()->addMenu(tr("&View"));
+  QAction* fit = m_viewMenu->addAction(tr("&Fit to View"), m_viewer, &MeshViewerWidget::fitView);
   fit->setShortcut(QKeySequence(Qt::Key_F));
+  QAction* modelView = m_viewMenu->addAction(tr("Show the &model (hide the plan)"), this, &MainWindow::clearPlan);
+  modelView->setObjectName(QStringLiteral("showModel"));
+  m_viewMenu->addSeparator();
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) m_viewMenu->addAction(dock->toggleViewAction());
+
+  QMenu* search = menuBar()->addMenu(tr("&Search"));
+  QAction* run = search->addAction(tr("&Run"), this, [this] { runSearch(); });
+  run->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  QAction* cancel = search->addAction(tr("&Cancel"), this, &MainWindow::cancelSearch);
+  cancel->setShortcut(QKeySequence(Qt::Key_Escape));
+}
+
+void MainWindow::buildDocks() {
+  auto addDock = [this](QWidget* panel, const QString& title, const QString& name) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setWidget(panel);
+    dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    return dock;
+  };
+  m_overhangPanel = new OverhangPanel(this);
+  m_machinePanel = new MachinePanel(this);
+  m_searchPanel = new SearchPanel(this);
+  m_planPanel = new PlanPanel(this);
+  QDockWidget* overhangs = addDock(m_overhangPanel, tr("Overhangs"), QStringLiteral("overhangDock"));
+  QDockWidget* machine = addDock(m_machinePanel, tr("Machine"), QStringLiteral("machineDock"));
+  m_searchDock = addDock(m_searchPanel, tr("Search"), QStringLiteral("searchDock"));
+  m_planDock = addDock(m_planPanel, tr("Plan"), QStringLiteral("planDock"));
+  splitDockWidget(overhangs, machine, Qt::Vertical);
+  tabifyDockWidget(machine, m_searchDock);
+  tabifyDockWidget(m_searchDock, m_planDock);
+  m_searchDock->raise();
+  resizeDocks({overhangs}, {430}, Qt::Horizontal);
+
+  connect(m_overhangPanel, &OverhangPanel::alphaMaxChanged, this, [this] { updateOverhangs(); });
+  connect(m_machinePanel, &MachinePanel::machineChanged, this, &MainWindow::onMachineChanged);
+  connect(m_searchPanel, &SearchPanel::runClicked, this, [this] { runSearch(); });
+  connect(m_searchPanel, &SearchPanel::cancelClicked, this, &MainWindow::cancelSearch);
+  connect(m_search, &SearchJob::progressed, m_searchPanel, &SearchPanel::showProgress);
+  connect(m_search, &SearchJob::fractionChanged, m_searchPanel, &SearchPanel::showFraction);
+  connect(m_search, &SearchJob::finished, this, &MainWindow::onSearchFinished);
+  connect(m_search, &SearchJob::failed, this, &MainWindow::onSearchFailed);
+  connect(m_search, &SearchJob::runningChanged, this, [this] { updateRunnable(); });
+
+  connect(m_planPanel, &PlanPanel::directionsVisibleChanged, m_viewer, &MeshViewerWidget::setPrintingDirectionsVisible);
+  connect(m_planPanel, &PlanPanel::clippingPlanesVisibleChanged, m_viewer, &MeshViewerWidget::setClippingPlanesVisible);
+  connect(m_planPanel, &PlanPanel::explodeDistanceChanged, m_viewer, &MeshViewerWidget::setExplodeDistance);
+  connect(m_planPanel, &PlanPanel::shownRegionsChanged, m_viewer, &MeshViewerWidget::setShownRegions);
+  connect(m_planPanel, &PlanPanel::turnWithMachineChanged, m_viewer, &MeshViewerWidget::setTurnWithMachine);
+
+  // Hardware: the Machine panel's profile gives the device's limits; the plan shown is the one to run.
+  auto* hardwarePanel = new HardwarePanel(this);
+  tabifyDockWidget(m_planDock, addDock(hardwarePanel, tr("Hardware"), QStringLiteral("hardwareDock")));
+  auto sendProfile = [this, hardwarePanel] {
+    if (m_upBox) hardwarePanel->setMachineProfile(m_machinePanel->machineSpec(upDirection()));
+  };
+  QTimer::singleShot(0, hardwarePanel, sendProfile);  // once the Up box exists
+  connect(m_machinePanel, &MachinePanel::machineChanged, hardwarePanel, sendProfile);
+  connect(hardwarePanel, &HardwarePanel::connectRequested, hardwarePanel, sendProfile);  // the latest up too
+  connect(this, &MainWindow::planShown, hardwarePanel, [this, hardwarePanel] {
+    if (m_plan && m_plan->plan) hardwarePanel->setPlan(*m_plan->plan);
+  });
 }
 
 void MainWindow::buildUpBox() {
@@ -168,7 +274,10 @@ void MainWindow::showModel(const LoadedModel& model) {
   // Setting the up box redraws through onUpChanged only when it changes; draw once here either way.
   const QSignalBlocker blocker(m_upBox);
   if (model.naturalUp) setUpDirection(*model.naturalUp);
+  if (m_pendingPlan && m_pendingPlan->machine.up.allFinite()) setUpDirection(m_pendingPlan->machine.up);
+  clearPlan();
   m_viewer->setMesh(*model.mesh, upDirection());
+  m_planPanel->setModelSize(modelSizeMm());
   setWindowTitle(tr("%1 - MultiDir Studio").arg(model.name));
   statusBar()->clearMessage();
   statusBar()->setToolTip(QString());
@@ -176,7 +285,14 @@ void MainWindow::showModel(const LoadedModel& model) {
     statusBar()->showMessage(tr("Repaired on load: %1").arg(model.repairs.join(QStringLiteral("; "))));
   }
   updateModelStatus();
+  updateOverhangs();
+  onMachineChanged();
   emit modelShown(model.name);
+  if (m_pendingPlan) {
+    const SearchRun pending = *m_pendingPlan;
+    m_pendingPlan.reset();
+    showPlan(pending);
+  }
 }
 
 void MainWindow::reportLoadError(const QString& source, const QString& headline, const QString& detail) {
@@ -197,9 +313,12 @@ void MainWindow::reportLoadError(const QString& source, const QString& headline,
 }
 
 void MainWindow::onUpChanged() {
+  onMachineChanged();
   if (!m_model) return;
+  clearPlan();
   m_viewer->setMesh(*m_model->mesh, upDirection());
   updateModelStatus();
+  updateOverhangs();
 }
 
 void MainWindow::updateModelStatus() {
@@ -216,16 +335,255 @@ void MainWindow::updateModelStatus() {
   m_trianglesLabel->setText(
       tr("Triangles: %1").arg(QLocale().toString(static_cast<qulonglong>(model.mesh->faceCount()))));
   m_volumeLabel->setText(tr("Volume: %1 mm³").arg(formatNumber(model.statistics.volumeMm3, 1)));
-  const core::Result<core::OverhangAnalysis> overhang = core::analyzeOverhang(*model.mesh, upDirection());
-  if (overhang) {
-    m_riskyLabel->setText(tr("Risky area (%1 up): %2 mm²")
-                              .arg(m_upBox->currentText(), formatNumber(overhang->riskyAreaMm2, 1)));
-    m_riskyLabel->setToolTip(tr("Area of the faces that overhang by more than %1° for this up direction")
-                                 .arg(formatNumber(core::kDefaultAlphaMaxDegrees, 0)));
-  } else {
-    m_riskyLabel->setText(tr("Risky area unavailable"));
-    m_riskyLabel->setToolTip(QString::fromStdString(overhang.error().describe()));
+}
+
+void MainWindow::updateOverhangs() {
+  if (!m_model) {
+    m_riskyLabel->clear();
+    m_overhangPanel->showUnavailable(tr("No model"));
+    return;
   }
+  core::OverhangOptions options;
+  options.alphaMaxDegrees = m_overhangPanel->alphaMaxDegrees();
+  const core::Result<core::OverhangAnalysis> overhang = core::analyzeOverhang(*m_model->mesh, upDirection(), options);
+  if (!overhang) {
+    const QString reason = QString::fromStdString(overhang.error().describe());
+    m_riskyLabel->setText(tr("Risky area unavailable"));
+    m_riskyLabel->setToolTip(reason);
+    m_overhangPanel->showUnavailable(reason);
+    m_viewer->setRiskyFaces(std::vector<char>(m_model->mesh->faceCount(), 0));
+    return;
+  }
+  m_viewer->setRiskyFaces(overhang->risky);
+  m_overhangPanel->showResult(overhang->riskyAreaMm2, overhang->riskyFaces, m_model->mesh->faceCount());
+  m_riskyLabel->setText(tr("Risky area (%1 up): %2 mm²")
+                            .arg(m_upBox->currentText(), formatNumber(overhang->riskyAreaMm2, 1)));
+  m_riskyLabel->setToolTip(tr("Area of the faces that overhang by more than %1° for this up direction")
+                               .arg(options.alphaMaxDegrees));
+}
+
+void MainWindow::onMachineChanged() {
+  const bool valid = m_machinePanel->validateFor(upDirection());
+  const bool rotary = m_machinePanel->kind() == core::MachineKind::RotaryPlatform;
+  m_viewer->setRotationAxis(rotary ? m_machinePanel->rotationAxis() : std::nullopt);
+  m_searchPanel->setRotaryMachine(rotary);
+  (void)valid;
+  updateRunnable();
+}
+
+void MainWindow::updateRunnable() {
+  if (!m_model) {
+    m_searchPanel->setRunnable(false, tr("Open a model first."));
+  } else if (!m_machinePanel->errorText().isEmpty()) {
+    m_searchPanel->setRunnable(false, tr("Fix the machine first: %1").arg(m_machinePanel->errorText()));
+  } else {
+    m_searchPanel->setRunnable(true, QString());
+  }
+}
+
+double MainWindow::modelSizeMm() const {
+  if (!m_model) return 0.0;
+  const auto box = core::boundingBox(*m_model->mesh);
+  return (box.max - box.min).norm();
+}
+
+bool MainWindow::isSearching() const { return m_search->isRunning(); }
+
+bool MainWindow::runSearch() {
+  QString problem;
+  if (m_search->isRunning()) problem = tr("A search is already running.");
+  else if (!m_model) problem = tr("Open a model first.");
+  else if (!m_machinePanel->validateFor(upDirection())) problem = m_machinePanel->errorText();
+  const core::SearchOptions options = m_searchPanel->searchOptions();
+  if (problem.isEmpty()) {
+    const core::Status valid = core::validate(options);
+    if (!valid) problem = tr("%1 (%2)").arg(errorHeadline(valid.error().code),
+                                             QString::fromStdString(valid.error().describe()));
+  }
+  if (!problem.isEmpty()) {
+    statusBar()->showMessage(tr("Cannot search: %1").arg(problem));
+    m_searchPanel->searchFailed(tr("Cannot search."), problem);
+    emit searchFailed(problem);
+    return false;
+  }
+  const core::MachineSpec machine = m_machinePanel->machineSpec(upDirection());
+  m_searchModel = m_model->mesh;
+  m_searchUp = upDirection();
+  core::OverhangOptions overhang;
+  overhang.alphaMaxDegrees = options.alphaMaxDegrees;
+  overhang.supportedBandMm = options.supportedBandMm;
+  const core::Result<core::OverhangAnalysis> before = core::analyzeOverhang(*m_model->mesh, m_searchUp, overhang);
+  if (!m_search->start(m_model->mesh, machine, options, m_searchPanel->axisSearchCount())) return false;
+  m_searchPanel->searchStarted(before ? before->riskyAreaMm2 : 0.0);
+  m_searchDock->raise();
+  statusBar()->showMessage(tr("Searching %1...").arg(m_model->name));
+  return true;
+}
+
+void MainWindow::cancelSearch() {
+  if (!m_search->isRunning()) return;
+  m_search->cancel();
+  m_searchPanel->cancelRequested();
+  statusBar()->showMessage(tr("Cancelling the search..."));
+}
+
+void MainWindow::onSearchFinished(const SearchRun& run) {
+  const bool current = m_model && m_model->mesh == m_searchModel && (upDirection() - m_searchUp).norm() < 1e-9;
+  m_searchModel.reset();
+  m_searchPanel->searchFinished(*run.plan);
+  if (!current) {
+    statusBar()->showMessage(tr("The search result was dropped: the model or its up direction changed."));
+    return;
+  }
+  statusBar()->showMessage(run.plan->cancelled ? tr("Search cancelled: showing the best plan found so far.")
+                                               : tr("Search finished."));
+  showPlan(run);
+  emit searchFinished(run);
+}
+
+void MainWindow::onSearchFailed(const QString& headline, const QString& detail) {
+  m_searchModel.reset();
+  m_searchPanel->searchFailed(headline, detail);
+  statusBar()->showMessage(tr("Search failed: %1").arg(headline));
+  statusBar()->setToolTip(detail);
+  emit searchFailed(detail.isEmpty() ? headline : headline + QLatin1Char(' ') + detail);
+}
+
+void MainWindow::showPlan(const SearchRun& run) {
+  m_plan = run;
+  m_viewer->setPlan(run.plan);
+  m_planPanel->setPlan(*run.plan, run.machine.kind);
+  m_viewer->setPrintingDirectionsVisible(true);
+  m_planDock->raise();
+  m_exportPlanAction->setEnabled(true);
+  emit planShown();
+}
+
+void MainWindow::clearPlan() {
+  m_plan.reset();
+  m_viewer->clearPlan();
+  m_planPanel->clearPlan();
+  if (m_exportPlanAction) m_exportPlanAction->setEnabled(false);
+}
+
+bool MainWindow::exportPlan(const QString& directory, QString* error) {
+  auto fail = [error](const QString& message) {
+    if (error) *error = message;
+    return false;
+  };
+  if (!m_plan || !m_plan->plan) return fail(tr("There is no plan to export: run a search first."));
+  core::PlanMetadata metadata;
+  metadata.up = m_plan->machine.up;
+  metadata.machine = m_plan->machine;
+  metadata.options = m_plan->options;
+  metadata.axisSearchCount = m_plan->axisSearchCount;
+  metadata.multidirVersion = studioVersion().toStdString();
+  if (m_model && !m_model->sourcePath.isEmpty()) {
+    metadata.modelPath = localPath(m_model->sourcePath);
+    const core::Result<std::string> checksum = core::fileChecksum(metadata.modelPath);
+    if (checksum) metadata.modelChecksum = checksum.value();
+  }
+  const core::Status saved = core::savePlan(*m_plan->plan, metadata, localPath(directory));
+  if (!saved) {
+    return fail(tr("Could not export the plan to %1: %2 (%3)")
+                    .arg(directory, errorHeadline(saved.error().code), QString::fromStdString(saved.error().describe())));
+  }
+  statusBar()->showMessage(tr("Plan exported to %1.").arg(directory));
+  return true;
+}
+
+bool MainWindow::openPlan(const QString& directory, QString* error) {
+  const core::Result<core::LoadedPlan> loaded = core::loadPlan(localPath(directory));
+  if (!loaded) {
+    const QString message = tr("Could not open the plan %1: %2 (%3)")
+                                .arg(directory, errorHeadline(loaded.error().code),
+                                     QString::fromStdString(loaded.error().describe()));
+    statusBar()->showMessage(message);
+    if (error) *error = message;
+    return false;
+  }
+  SearchRun run;
+  run.machine = loaded->metadata.machine;
+  run.options = loaded->metadata.options;
+  run.axisSearchCount = loaded->metadata.axisSearchCount;
+  run.plan = std::make_shared<const core::Decomposition>(loaded->decomposition);
+  m_machinePanel->setMachineSpec(run.machine);
+  m_searchPanel->setSearchOptions(run.options);
+  m_searchPanel->setAxisSearchCount(run.axisSearchCount);
+
+  const QString modelPath = QString::fromStdString(loaded->metadata.modelPath);
+  if (!modelPath.isEmpty() && QFileInfo::exists(modelPath)) {
+    // Shown once the model has loaded (showModel).
+    m_pendingPlan = run;
+    openFile(modelPath);
+    return true;
+  }
+  // The model is not at hand: show the plan over its own regions.
+  LoadedModel model;
+  model.name = QDir(QString::fromStdString(loaded->directory)).dirName();
+  auto merged = std::make_shared<const core::TriangleMesh>(mergedRegions(*run.plan));
+  model.statistics = core::computeStatistics(*merged);
+  model.naturalUp = run.machine.up;
+  model.mesh = merged;
+  m_pendingPlan = run;
+  showModel(model);
+  return true;
+}
+
+bool MainWindow::saveMachineProfile(const QString& path, QString* error) {
+  if (!m_machinePanel->validateFor(upDirection())) {
+    if (error) *error = m_machinePanel->errorText();
+    return false;
+  }
+  const core::Status saved = core::saveMachineProfile(m_machinePanel->machineSpec(upDirection()), localPath(path));
+  if (!saved) {
+    if (error) *error = QString::fromStdString(saved.error().describe());
+    return false;
+  }
+  statusBar()->showMessage(tr("Machine profile saved to %1.").arg(path));
+  return true;
+}
+
+bool MainWindow::loadMachineProfile(const QString& path, QString* error) {
+  const core::Result<core::MachineSpec> loaded = core::loadMachineProfile(localPath(path));
+  if (!loaded) {
+    if (error) *error = QString::fromStdString(loaded.error().describe());
+    return false;
+  }
+  setUpDirection(loaded->up);
+  m_machinePanel->setMachineSpec(loaded.value());
+  statusBar()->showMessage(tr("Machine profile %1 loaded.").arg(QFileInfo(path).fileName()));
+  return true;
+}
+
+void MainWindow::chooseExportPlan() {
+  const QString directory = QFileDialog::getExistingDirectory(this, tr("Export Plan to Folder"), m_lastDirectory);
+  if (directory.isEmpty()) return;
+  QString error;
+  if (!exportPlan(directory, &error)) QMessageBox::warning(this, tr("Export Plan"), error);
+}
+
+void MainWindow::chooseOpenPlan() {
+  const QString directory = QFileDialog::getExistingDirectory(this, tr("Open Plan Folder"), m_lastDirectory);
+  if (directory.isEmpty()) return;
+  QString error;
+  if (!openPlan(directory, &error)) QMessageBox::warning(this, tr("Open Plan"), error);
+}
+
+void MainWindow::chooseSaveMachine() {
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save Machine Profile"), m_lastDirectory,
+                                                    tr("Machine profiles (*.json)"));
+  if (path.isEmpty()) return;
+  QString error;
+  if (!saveMachineProfile(path, &error)) QMessageBox::warning(this, tr("Save Machine Profile"), error);
+}
+
+void MainWindow::chooseLoadMachine() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load Machine Profile"), m_lastDirectory,
+                                                    tr("Machine profiles (*.json);;All files (*)"));
+  if (path.isEmpty()) return;
+  QString error;
+  if (!loadMachineProfile(path, &error)) QMessageBox::warning(this, tr("Load Machine Profile"), error);
 }
 
 void MainWindow::setBusy(bool busy) {

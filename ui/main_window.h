@@ -1,26 +1,37 @@
 #pragma once
-// MultiDir Studio's main window: a 3D view of one model, the File menu (open, samples, quit), the up
-// direction it is printed along, and a status bar with the model's size, volume and risky overhang area.
+// MultiDir Studio's main window: a 3D view of one model, the File menu (models, samples, plans, machine
+// profiles), the up direction it is printed along, docks for overhangs, the machine, the search and the
+// plan, and a status bar with the model's size, volume and risky overhang area.
 //
-// Loading runs off the GUI thread (ModelLoader); the window stays responsive and shows a busy indicator.
-// A failed load keeps the current model and reports the error in the status bar, in a non-modal message
-// box and through loadFailed().
+// Loading and searching run off the GUI thread (ModelLoader, SearchJob); the window stays responsive and
+// shows a busy indicator. A failed load keeps the current model and reports the error in the status bar,
+// in a non-modal message box and through loadFailed().
+//
+// Steps and what invalidates them: a new model or up direction clears the plan (and cancels a running
+// search, whose result is then dropped); alpha_max recolours the overhangs only; machine and search
+// settings apply to the next search, the plan shown keeps the settings it was made with.
 #include <QMainWindow>
 #include <QString>
 #include <cstddef>
 #include <optional>
 
+#include "ui/jobs/search_job.h"
 #include "ui/loaded_model.h"
 
 class QComboBox;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QProgressBar;
 
 namespace multidir::ui {
 
+class MachinePanel;
 class MeshViewerWidget;
 class ModelLoader;
+class OverhangPanel;
+class PlanPanel;
+class SearchPanel;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -46,8 +57,36 @@ class MainWindow : public QMainWindow {
   // The model shown (nullopt before the first successful load).
   [[nodiscard]] const std::optional<LoadedModel>& model() const { return m_model; }
   [[nodiscard]] MeshViewerWidget* viewer() const { return m_viewer; }
+  [[nodiscard]] OverhangPanel* overhangPanel() const { return m_overhangPanel; }
+  [[nodiscard]] MachinePanel* machinePanel() const { return m_machinePanel; }
+  [[nodiscard]] SearchPanel* searchPanel() const { return m_searchPanel; }
+  [[nodiscard]] PlanPanel* planPanel() const { return m_planPanel; }
+
+  // Starts a search of the model with the Machine and Search panels' settings; false (with the reason in
+  // the status bar) when there is no model, the machine is invalid or a search is running.
+  bool runSearch();
+  // Asks the running search to stop; it finishes with the best plan found so far.
+  void cancelSearch();
+  [[nodiscard]] bool isSearching() const;
+  // The plan shown, with what it was computed with (nullopt: none).
+  [[nodiscard]] const std::optional<SearchRun>& plan() const { return m_plan; }
+
+  // Writes the plan shown into `directory` (core::savePlan). On failure returns false with a message.
+  bool exportPlan(const QString& directory, QString* error = nullptr);
+  // Reads a plan folder (core::loadPlan) and shows it: over its model when that file is still there
+  // (loaded first), else over the regions themselves.
+  bool openPlan(const QString& directory, QString* error = nullptr);
+  // Machine profiles (core::saveMachineProfile / loadMachineProfile) for the Machine panel.
+  bool saveMachineProfile(const QString& path, QString* error = nullptr);
+  bool loadMachineProfile(const QString& path, QString* error = nullptr);
 
  signals:
+  // A search ended and its plan is shown (run.plan->cancelled tells a cancelled one).
+  void searchFinished(const multidir::ui::SearchRun& run);
+  // A search could not run or failed; `message` is what the Search panel says.
+  void searchFailed(const QString& message);
+  // A plan (searched or opened) is now shown.
+  void planShown();
   // A model was loaded and is now shown.
   void modelShown(const QString& name);
   // Loading failed; the previous model (if any) is still shown. `message` is what the status bar says:
@@ -59,6 +98,19 @@ class MainWindow : public QMainWindow {
   void buildMenus();
   void buildUpBox();
   void buildStatusBar();
+  void buildDocks();
+  void updateOverhangs();
+  void onMachineChanged();
+  void updateRunnable();
+  void showPlan(const SearchRun& run);
+  void clearPlan();
+  void onSearchFinished(const SearchRun& run);
+  void onSearchFailed(const QString& headline, const QString& detail);
+  void chooseExportPlan();
+  void chooseOpenPlan();
+  void chooseSaveMachine();
+  void chooseLoadMachine();
+  [[nodiscard]] double modelSizeMm() const;
   void chooseFile();
   void showModel(const LoadedModel& model);
   void reportLoadError(const QString& source, const QString& headline, const QString& detail);
@@ -78,6 +130,22 @@ class MainWindow : public QMainWindow {
   QString m_lastDirectory;
   QString m_pendingName;
   std::optional<LoadedModel> m_model;
+
+  SearchJob* m_search = nullptr;
+  OverhangPanel* m_overhangPanel = nullptr;
+  MachinePanel* m_machinePanel = nullptr;
+  SearchPanel* m_searchPanel = nullptr;
+  PlanPanel* m_planPanel = nullptr;
+  QDockWidget* m_planDock = nullptr;
+  QDockWidget* m_searchDock = nullptr;
+  QMenu* m_viewMenu = nullptr;
+  QAction* m_exportPlanAction = nullptr;
+  std::optional<SearchRun> m_plan;
+  // What the running search was started for: its result is dropped when the model or up changed since.
+  std::shared_ptr<const core::TriangleMesh> m_searchModel;
+  core::Vec3 m_searchUp = core::Vec3::UnitZ();
+  // A plan opened from a folder, waiting for its model to load.
+  std::optional<SearchRun> m_pendingPlan;
 };
 
 }  // namespace multidir::ui

@@ -23,6 +23,9 @@ struct StudioOptions {
   QString modelPath;              // empty: open the first sample
   std::optional<core::Vec3> up;   // --up; unset: +Z
   QString screenshotPath;         // --screenshot; non-empty: save the window there and quit
+  QString language;               // --lang: "de", "zh_CN" or "en"; empty: the saved setting or the system's
+  bool runSearch = false;         // --search: run a search with the panel's settings once the model is shown
+  double alphaMaxDegrees = -1.0;  // --alpha: the Overhangs panel's alpha_max (degrees); < 0: leave it
 };
 
 // What the command line asks for: options to run with, or a text to print and an exit code.
@@ -33,11 +36,25 @@ struct StudioCommandLine {
   QString text;          // what to print (to stdout when exitCode == 0, else to stderr)
 };
 
-// Reads `arguments` (arguments[0] is the program): [model] [--up DIR] [--screenshot FILE.png].
-// DIR is what core::parseDirection accepts: x, -y, +z or a,b,c.
+// Reads `arguments` (arguments[0] is the program): [model] [--up DIR] [--screenshot FILE.png]
+// [--lang de|zh_CN|en] [--search] [--alpha DEGREES]. DIR is what core::parseDirection accepts: x, -y, +z or
+// a,b,c.
 StudioCommandLine parseStudioCommandLine(const QStringList& arguments);
 
-// Sets the up direction and starts loading the model (or the first sample) in `window`.
+// The languages the studio is translated into, besides English: "de", "zh_CN".
+QStringList studioLanguages();
+
+// Which language to show: `requested` when it is one of "en" and studioLanguages(), else the QSettings value
+// "language" when it is, else the system locale's ("de_AT" -> "de", "zh_CN"/"zh" -> "zh_CN"), else "en".
+QString chooseLanguage(const QString& requested);
+
+// Installs the translations (embedded .qm files) for `language` into the application, replacing ones
+// installed earlier; "en" installs none. Returns false when `language` has no translation. Call before
+// creating windows: texts are translated when widgets are built.
+bool installTranslations(const QString& language);
+
+// Sets the up direction and starts loading the model (or the first sample) in `window`; with runSearch,
+// the search starts once the model is shown.
 void startStudio(MainWindow& window, const StudioOptions& options);
 
 // Waits until `window` has finished loading (at most `timeoutMs`), lets it render, and saves a picture

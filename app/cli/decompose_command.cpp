@@ -14,6 +14,7 @@
 #include "multidir/core/plan/checksum.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
+#include "multidir/core/supports/projected_supports.h"
 #include "number_text.h"
 #include "search_runner.h"
 
@@ -24,7 +25,8 @@ const char* const kDecomposeHelp =
     "\n"
     "Cuts MODEL (.stl, .obj, .off, .ply; millimetres) into regions that a multi-directional printer can print\n"
     "with as little support as possible, prints a table of the regions, and writes the plan to OUTDIR:\n"
-    "plan.json and one STL per region (docs/plan-format.md).\n"
+    "plan.json and one STL per region (docs/plan-format.md). When risky faces remain (J_G > 0) it also grows\n"
+    "projected tree supports for them and saves one support STL per region that needs any.\n"
     "\n"
     "Options:\n"
     "  -o OUTDIR            folder for the plan (created if missing; required)\n"
@@ -41,6 +43,8 @@ const char* const kDecomposeHelp =
     "  --w W                every region keeps at least 1/W of the model's volume, 1 to 1000 (default: 10)\n"
     "  --threads N          worker threads, 0 = all (default: 0)\n"
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
+    "  --no-supports        do not generate supports\n"
+    "  --support-spacing MM overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"
     "  -h, --help           show this help\n"
     "\n"
     "On a terminal a status line shows the search's progress. Ctrl-C stops the search and saves the best plan\n"
@@ -76,6 +80,8 @@ struct Settings {
   core::MachineSpec machine;
   core::SearchOptions options;
   int axisSearch = 0;
+  bool supports = true;
+  core::SupportOptions supportOptions;
 };
 
 core::MachineSpec machineFrom(const ParsedArgs& parsed) {
@@ -144,8 +150,8 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   const ParsedArgs parsed =
       parseArgs(args,
                 {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
-                 "--offset-step", "--w", "--threads", "--profile", "-o", "--summary"},
-                {"--help"}, "decompose");
+                 "--offset-step", "--w", "--threads", "--profile", "-o", "--summary", "--support-spacing"},
+                {"--help", "--no-supports"}, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
@@ -161,6 +167,14 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   if (parsed.has("--summary")) {
     s.summaryPath = parsed.value("--summary", "");
     if (s.summaryPath.empty()) throw UsageError(kCommand + ": --summary needs a file name");
+  }
+  s.supports = !parsed.has("--no-supports");
+  if (parsed.has("--support-spacing")) {
+    if (!s.supports) throw UsageError(kCommand + ": --support-spacing and --no-supports contradict each other");
+    s.supportOptions.samplingSpacingMm = parseNumber(parsed.value("--support-spacing", ""), "--support-spacing");
+    s.supportOptions.contactRadiusMm = std::min(s.supportOptions.contactRadiusMm, s.supportOptions.samplingSpacingMm / 4);
+    if (const core::Status valid = core::validate(s.supportOptions); !valid)
+      throw UsageError(kCommand + ": --support-spacing: " + valid.error().message);
   }
   s.machine = machineFrom(parsed);
   s.up = s.machine.up;
@@ -218,7 +232,14 @@ void printTable(std::ostream& out, const Settings& s, const core::Decomposition&
       << withThousands(st.candidatesScored) << " candidates scored, " << st.levels << " levels\n";
 }
 
-void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_t triangles) {
+void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_t triangles,
+                  const std::vector<core::SupportSet>& supports) {
+  double supportVolume = 0.0;
+  std::size_t struts = 0;
+  for (const core::SupportSet& set : supports) {
+    supportVolume += set.volumeMm3;
+    struts += set.struts.size();
+  }
   const core::SearchStatistics& st = plan.statistics;
   const nlohmann::json summary = {{"model", s.model},
                                   {"machine", core::machineKindName(s.machine.kind)},
@@ -237,6 +258,8 @@ void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_
                                   {"jg_after", plan.jgAfterMm2},
                                   {"seconds", st.seconds},
                                   {"threads", st.threads},
+                                  {"support_volume", supportVolume},
+                                  {"support_struts", struts},
                                   {"plan", s.outDir}};
   std::ofstream file(s.summaryPath);
   file << summary.dump(2) << '\n';
@@ -289,6 +312,22 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
   const core::Decomposition& plan = *outcome.result;
 
   printTable(out, s, plan);
+  std::vector<core::SupportSet> supports;
+  if (s.supports && plan.jgAfterMm2 > 0) {
+    core::JobContext job;
+    const core::Result<core::ProjectedSupports> grown =
+        core::generateSupports(model, plan, s.machine, s.supportOptions, job);
+    if (!grown) {
+      err << kCommand << ": supports: " << grown.error().describe() << "\n";
+      return grown.error().code == core::ErrorCode::Internal ? kExitInternal : kExitBadInput;
+    }
+    supports = grown->regions;
+    int regionsWithSupports = 0;
+    for (const core::SupportSet& set : supports) regionsWithSupports += set.empty() ? 0 : 1;
+    out << "Supports     " << formatNumber("%.2f", grown->volumeMm3) << " mm^3, " << grown->struts.size()
+        << " struts in " << regionsWithSupports << " regions, " << grown->contacts << " contacts ("
+        << formatNumber("%.2f", grown->contactAreaMm2) << " mm^2)\n";
+  }
   core::PlanMetadata metadata;
   metadata.modelPath = s.model;
   metadata.modelChecksum = *checksum;
@@ -297,13 +336,17 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
   metadata.options = s.options;
   metadata.axisSearchCount = s.axisSearch;
   metadata.multidirVersion = MULTIDIR_VERSION;
-  if (const core::Status saved = core::savePlan(plan, metadata, s.outDir); !saved)
+  if (const core::Status saved = core::savePlan(plan, metadata, supports, s.outDir); !saved)
     throw FileError(kCommand + ": cannot write the plan: " + saved.error().describe());
-  out << "Plan saved   " << s.outDir << "/plan.json and " << plan.regions.size() << " region STL files\n";
+  int supportFiles = 0;
+  for (const core::SupportSet& set : supports) supportFiles += set.empty() ? 0 : 1;
+  out << "Plan saved   " << s.outDir << "/plan.json and " << plan.regions.size() << " region STL files";
+  if (supportFiles > 0) out << " and " << supportFiles << " support STL files";
+  out << "\n";
   if (plan.cancelled)
     out << "Note: the search was cancelled; this is the best plan found until then, not the result of a full "
            "search\n";
-  if (!s.summaryPath.empty()) writeSummary(s, plan, model.faceCount());
+  if (!s.summaryPath.empty()) writeSummary(s, plan, model.faceCount(), supports);
   return kExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include "cli_args.h"
 #include "decompose_command.h"
 #include "info_command.h"
+#include "report_command.h"
 #include "simulate_command.h"
 
 namespace {
@@ -21,6 +22,7 @@ const char* const kUsage =
     "Commands:\n"
     "  info MODEL                  statistics, load checks and overhang area of a model\n"
     "  decompose MODEL -o OUTDIR   cut a model into regions with printing directions; write the plan\n"
+    "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
     "  help [COMMAND]              show this help, or a command's help\n"
     "\n"
@@ -32,7 +34,7 @@ const char* const kUsage =
 
 // Commands of later versions: named here so users get a precise answer instead of "unknown command".
 bool isPlannedCommand(const std::string& command) {
-  return command == "report" || command == "export";
+  return command == "export";
 }
 
 int notAvailable(const std::string& command) {
@@ -53,6 +55,10 @@ int help(const std::vector<std::string>& args) {
   }
   if (args[0] == "decompose") {
     std::cout << kDecomposeHelp;
+    return kExitOk;
+  }
+  if (args[0] == "report") {
+    std::cout << kReportHelp;
     return kExitOk;
   }
   if (args[0] == "simulate") {
@@ -79,6 +85,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "info") return runInfo(rest, std::cout, std::cerr);
   if (command == "decompose") return runDecompose(rest, std::cout, std::cerr);
   if (command == "simulate") return runSimulate(rest, std::cout, std::cerr);
+  if (command == "report") return runReport(rest, std::cout, std::cerr);
   if (isPlannedCommand(command)) return notAvailable(command);
   if (!command.empty() && command[0] == '-')
     throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");

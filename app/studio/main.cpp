@@ -18,6 +18,8 @@ int run(int argc, char** argv) {
   QApplication app(argc, argv);
   // Parsed after QApplication, which takes its own options (-platform, -style, ...) out first.
   const multidir::ui::StudioCommandLine commandLine = multidir::ui::parseStudioCommandLine(QApplication::arguments());
+  // Before any window exists: widgets translate their texts when they are built.
+  multidir::ui::installTranslations(multidir::ui::chooseLanguage(commandLine.options.language));
   if (commandLine.exitNow) {
     QTextStream(commandLine.exitCode == 0 ? stdout : stderr) << commandLine.text << '\n';
     return commandLine.exitCode;

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <unordered_map>
 
 #include "cross_section_cap.h"
+#include "detail/mesh_indices.h"
+#include "detail/union_find.h"
 #include "multidir/core/mesh/mesh_measure.h"
 
 namespace multidir::core {
@@ -94,19 +95,7 @@ Status checkClosedOriented(const TriangleMesh& mesh) {
 Status checkSolid(const TriangleMesh& mesh, bool checkClosed) {
   if (mesh.triangles.empty() || mesh.vertices.empty())
     return Error{ErrorCode::EmptyMesh, "there is nothing to clip: the solid has no faces", "solid"};
-  if (mesh.origins.size() != mesh.triangles.size())
-    return Error{ErrorCode::InvalidParameter,
-                 "the solid has " + std::to_string(mesh.origins.size()) + " face origins for " +
-                     std::to_string(mesh.triangles.size()) + " faces; call resetOrigins() after building a mesh",
-                 "solid.origins"};
-  const auto vertexCount = static_cast<std::int64_t>(mesh.vertices.size());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (std::int32_t v : mesh.triangles[f])
-      if (v < 0 || v >= vertexCount)
-        return Error{
-            ErrorCode::InvalidParameter,
-            "vertex index " + std::to_string(v) + " is outside the " + std::to_string(vertexCount) + " vertices",
-            "face " + std::to_string(f)};
+  if (Status indices = detail::checkFaceIndices(mesh, "solid"); !indices.ok()) return indices;
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
     if (!mesh.vertices[v].allFinite())
       return Error{ErrorCode::NonFiniteVertex, "a vertex coordinate is NaN or infinite", "vertex " + std::to_string(v)};
@@ -253,16 +242,6 @@ class PlaneSplitter {
   SideFaces m_above;
 };
 
-struct UnionFind {
-  std::vector<std::int32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::int32_t find(std::int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::int32_t a, std::int32_t b) { parent[find(a)] = find(b); }
-};
-
 // Where a side touches itself at a single point of the plane (two lumps meeting at a vertex), the faces
 // around that vertex form several fans; each fan after the first gets its own copy of the vertex.
 void separatePinchedVertices(TriangleMesh& mesh, const std::vector<std::int32_t>& candidates) {
@@ -284,7 +263,7 @@ void separatePinchedVertices(TriangleMesh& mesh, const std::vector<std::int32_t>
       for (std::int32_t w : mesh.triangles[faces[j]])
         if (w != v) neighbours.emplace_back(w, static_cast<std::int32_t>(j));
     std::sort(neighbours.begin(), neighbours.end());
-    UnionFind fans(faces.size());
+    detail::UnionFind fans(faces.size());
     for (std::size_t k = 1; k < neighbours.size(); ++k)
       if (neighbours[k].first == neighbours[k - 1].first) fans.unite(neighbours[k].second, neighbours[k - 1].second);
     const std::int32_t firstFan = fans.find(0);

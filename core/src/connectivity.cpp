@@ -6,27 +6,11 @@
 #include <numeric>
 #include <string>
 
+#include "detail/mesh_indices.h"
 #include "multidir/core/mesh/mesh_measure.h"
 
 namespace multidir::core {
 namespace {
-
-Status checkIndices(const TriangleMesh& mesh) {
-  if (mesh.origins.size() != mesh.triangles.size())
-    return Error{ErrorCode::InvalidParameter,
-                 "the mesh has " + std::to_string(mesh.origins.size()) + " face origins for " +
-                     std::to_string(mesh.triangles.size()) + " faces; call resetOrigins() after building a mesh",
-                 "mesh.origins"};
-  const auto vertexCount = static_cast<std::int64_t>(mesh.vertices.size());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (std::int32_t v : mesh.triangles[f])
-      if (v < 0 || v >= vertexCount)
-        return Error{
-            ErrorCode::InvalidParameter,
-            "vertex index " + std::to_string(v) + " is outside the " + std::to_string(vertexCount) + " vertices",
-            "face " + std::to_string(f)};
-  return Done{};
-}
 
 struct Shell {
   double volume = 0.0;
@@ -66,7 +50,7 @@ bool insideShell(const Vec3& q, const Shell& shell, const TriangleMesh& mesh) {
 }  // namespace
 
 Result<std::vector<TriangleMesh>> connectedSolids(const TriangleMesh& mesh) {
-  if (Status s = checkIndices(mesh); !s) return s.error();
+  if (Status s = detail::checkFaceIndices(mesh, "mesh"); !s) return s.error();
   std::vector<TriangleMesh> solids;
   if (mesh.triangles.empty()) return solids;
 

@@ -71,5 +71,7 @@ std::string joinIndices(const std::vector<std::int64_t>& indices);
 std::string withThousands(std::size_t n);
 
 Error malformed(const std::string& name, const std::string& message);
+// TooLarge once the faces read so far fan into more than options.maxTriangles triangles.
+Status checkTriangleCount(std::size_t triangles, const LoadOptions& options, const std::string& name);
 
 }  // namespace multidir::core::detail

@@ -1,31 +1,20 @@
 #include "multidir/core/mesh/mesh_measure.h"
 
 #include <algorithm>
-#include <numeric>
 #include <unordered_map>
+
+#include "detail/union_find.h"
 
 namespace multidir::core {
 namespace {
+
+using detail::UnionFind;
 
 std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
   const auto lo = static_cast<std::uint32_t>(std::min(a, b));
   const auto hi = static_cast<std::uint32_t>(std::max(a, b));
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
-
-struct UnionFind {
-  std::vector<std::int32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::int32_t find(std::int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::int32_t a, std::int32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 }  // namespace
 

@@ -80,4 +80,12 @@ Error malformed(const std::string& name, const std::string& message) {
   return Error{ErrorCode::MalformedFile, message, name};
 }
 
+Status checkTriangleCount(std::size_t triangles, const LoadOptions& options, const std::string& name) {
+  if (triangles <= options.maxTriangles) return Done{};
+  return Error{ErrorCode::TooLarge,
+               "the faces make more than " + withThousands(options.maxTriangles) +
+                   " triangles; simplify the model first",
+               name};
+}
+
 }  // namespace multidir::core::detail

@@ -52,11 +52,7 @@ Result<FileShape> checkObjStructure(std::istream& in, const std::string& name, c
       }
       ++shape.polygons;
       shape.triangles += tokens.size() - 3;
-      if (shape.triangles > options.maxTriangles)
-        return Error{ErrorCode::TooLarge,
-                     "the faces make more than " + withThousands(options.maxTriangles) +
-                         " triangles; simplify the model first",
-                     name};
+      if (Status count = checkTriangleCount(shape.triangles, options, name); !count.ok()) return count.error();
     }
   }
   return shape;

@@ -142,11 +142,7 @@ Result<FileShape> checkOffStructure(std::istream& in, std::uintmax_t fileSize, c
     }
     if (corners >= 3) faceText << '\n';
     if (corners >= 3) shape.triangles += static_cast<std::size_t>(corners - 2);
-    if (shape.triangles > options.maxTriangles)
-      return Error{ErrorCode::TooLarge,
-                   "the faces make more than " + withThousands(options.maxTriangles) +
-                       " triangles; simplify the model first",
-                   name};
+    if (Status total = checkTriangleCount(shape.triangles, options, name); !total.ok()) return total.error();
   }
   canonical << "OFF\n" << nv << ' ' << (nf - shape.shortPolygons) << " 0\n" << vertexText.str() << faceText.str();
   return shape;

@@ -264,11 +264,7 @@ Result<FileShape> checkPlyStructure(std::istream& in, std::uintmax_t fileSize, c
         if (isIndexList) {
           if (count < 3) ++shape.shortPolygons;
           else shape.triangles += static_cast<std::size_t>(count - 2);
-          if (shape.triangles > options.maxTriangles)
-            return Error{ErrorCode::TooLarge,
-                         "the faces make more than " + withThousands(options.maxTriangles) +
-                             " triangles; simplify the model first",
-                         name};
+          if (Status total = checkTriangleCount(shape.triangles, options, name); !total.ok()) return total.error();
         }
       }
     }

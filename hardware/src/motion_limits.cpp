@@ -2,19 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
+#include "degrees_text.h"
 #include "multidir/core/common/units.h"
 
 namespace multidir::hardware {
 namespace {
-
-std::string degrees(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f", value);
-  return text;
-}
 
 core::Error refused(const std::string& where, const std::string& message) {
   return core::Error{core::ErrorCode::InvalidParameter, message, where};
@@ -29,20 +23,20 @@ core::Status checkRotaryTarget(const core::MachineSpec& machine, double angleDeg
   if (!std::isfinite(angleDegrees)) return refused("target angle", "the target angle is not a number");
   if (angleDegrees < machine.minAngleDegrees - toleranceDegrees ||
       angleDegrees > machine.maxAngleDegrees + toleranceDegrees)
-    return refused("target angle", "the target angle " + degrees(angleDegrees) +
+    return refused("target angle", "the target angle " + degreesText(angleDegrees) +
                                        " degrees is outside the platform's range [" +
-                                       degrees(machine.minAngleDegrees) + ", " + degrees(machine.maxAngleDegrees) +
-                                       "] degrees of the machine profile");
+                                       degreesText(machine.minAngleDegrees) + ", " +
+                                       degreesText(machine.maxAngleDegrees) + "] degrees of the machine profile");
   const double steps = (angleDegrees - machine.minAngleDegrees) / machine.angleStepDegrees;
   const double off = std::abs(steps - std::round(steps)) * machine.angleStepDegrees;
   if (off > toleranceDegrees) {
     const double below = machine.minAngleDegrees + std::floor(steps) * machine.angleStepDegrees;
     const double above = below + machine.angleStepDegrees;
-    return refused("target angle", "the target angle " + degrees(angleDegrees) +
+    return refused("target angle", "the target angle " + degreesText(angleDegrees) +
                                        " degrees is not a whole number of stepper steps (" +
-                                       degrees(machine.angleStepDegrees) + " degrees from " +
-                                       degrees(machine.minAngleDegrees) + "): the nearest realizable angles are " +
-                                       degrees(below) + " and " + degrees(above) + " degrees");
+                                       degreesText(machine.angleStepDegrees) + " degrees from " +
+                                       degreesText(machine.minAngleDegrees) + "): the nearest realizable angles are " +
+                                       degreesText(below) + " and " + degreesText(above) + " degrees");
   }
   return core::Done{};
 }
@@ -62,21 +56,21 @@ core::Status checkTiltTarget(const core::MachineSpec& machine, double tiltDegree
   if (!std::isfinite(tiltDegrees) || !std::isfinite(azimuthDegrees))
     return refused("target orientation", "the tilt or azimuth is not a number");
   if (tiltDegrees < 0.0)
-    return refused("tilt", "the tilt " + degrees(tiltDegrees) +
+    return refused("tilt", "the tilt " + degreesText(tiltDegrees) +
                                " degrees is negative: give a tilt of 0 or more and turn the azimuth instead");
   if (tiltDegrees > machine.maxTiltDegrees)
-    return refused("tilt", "the tilt " + degrees(tiltDegrees) + " degrees exceeds the machine's maximal tilt of " +
-                               degrees(machine.maxTiltDegrees) + " degrees");
+    return refused("tilt", "the tilt " + degreesText(tiltDegrees) + " degrees exceeds the machine's maximal tilt of " +
+                               degreesText(machine.maxTiltDegrees) + " degrees");
   const core::Vec3 direction = tiltAzimuthDirection(machine, tiltDegrees, azimuthDegrees);
   for (std::size_t i = 0; i < machine.forbiddenCones.size(); ++i) {
     const core::ForbiddenCone& cone = machine.forbiddenCones[i];
     const double angle = core::radToDeg(std::acos(std::clamp(direction.dot(cone.axis), -1.0, 1.0)));
     if (angle < cone.halfAngleDegrees)
-      return refused("target orientation", "tilt " + degrees(tiltDegrees) + ", azimuth " + degrees(azimuthDegrees) +
-                                               " degrees lies inside forbidden cone " + std::to_string(i + 1) +
-                                               " of the machine profile (" + degrees(angle) +
-                                               " degrees from its axis, half-angle " +
-                                               degrees(cone.halfAngleDegrees) + "): the arm would collide there");
+      return refused("target orientation", "tilt " + degreesText(tiltDegrees) + ", azimuth " +
+                                               degreesText(azimuthDegrees) + " degrees lies inside forbidden cone " +
+                                               std::to_string(i + 1) + " of the machine profile (" +
+                                               degreesText(angle) + " degrees from its axis, half-angle " +
+                                               degreesText(cone.halfAngleDegrees) + "): the arm would collide there");
   }
   return core::Done{};
 }

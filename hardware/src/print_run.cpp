@@ -1,18 +1,10 @@
 #include "multidir/hardware/print_run.h"
 
-#include <cstdio>
 #include <utility>
 
+#include "degrees_text.h"
+
 namespace multidir::hardware {
-namespace {
-
-std::string degrees(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f", value);
-  return text;
-}
-
-}  // namespace
 
 PlatformOrientation PlatformOrientation::rotary(double angleDegrees) {
   PlatformOrientation o;
@@ -30,8 +22,8 @@ PlatformOrientation PlatformOrientation::tiltAzimuth(double tiltDegrees, double 
 }
 
 std::string PlatformOrientation::describe() const {
-  if (kind == Kind::Rotary) return "rotary " + degrees(rotaryDegrees) + " deg";
-  return "tilt " + degrees(tiltDegrees) + " deg, azimuth " + degrees(azimuthDegrees) + " deg";
+  if (kind == Kind::Rotary) return "rotary " + degreesText(rotaryDegrees) + " deg";
+  return "tilt " + degreesText(tiltDegrees) + " deg, azimuth " + degreesText(azimuthDegrees) + " deg";
 }
 
 const char* printRunStateName(PrintRunState state) {

@@ -10,41 +10,20 @@
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <thread>
 
 #include "multidir/core/plan/checksum.h"
 #include "multidir/core/plan/plan_file.h"
+#include "support/cli_runner.h"
 #include "support/test_models.h"
 
 extern char** environ;
 
 namespace {
 
-struct CliRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-CliRun runCli(const std::string& arguments, const std::string& dir) {
-  const std::string outPath = dir + "/stdout.txt", errPath = dir + "/stderr.txt";
-  const std::string command =
-      std::string("'") + MULTIDIR_CLI_PATH + "' " + arguments + " > '" + outPath + "' 2> '" + errPath + "'";
-  const int status = std::system(command.c_str());
-  CliRun run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = readAll(outPath);
-  run.err = readAll(errPath);
-  return run;
-}
+using multidir::test::CliRun;
+using multidir::test::readAll;
+using multidir::test::runCli;
 
 std::string kitten() { return "'" + multidir::test::sharedModelPath("kitten.off") + "'"; }
 

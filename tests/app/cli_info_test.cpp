@@ -1,40 +1,16 @@
 // Runs the built `multidir` command line and checks its output, JSON and exit codes.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "support/cli_runner.h"
 #include "support/test_models.h"
 
 namespace {
 
-struct CliRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-CliRun runCli(const std::string& arguments, const std::string& dir) {
-  const std::string outPath = dir + "/stdout.txt", errPath = dir + "/stderr.txt";
-  const std::string command =
-      std::string("'") + MULTIDIR_CLI_PATH + "' " + arguments + " > '" + outPath + "' 2> '" + errPath + "'";
-  const int status = std::system(command.c_str());
-  CliRun run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = readAll(outPath);
-  run.err = readAll(errPath);
-  return run;
-}
+using multidir::test::CliRun;
+using multidir::test::readAll;
+using multidir::test::runCli;
 
 }  // namespace
 
@@ -90,7 +66,7 @@ TEST(CliInfo, UsageErrorsExitWithTwoAndSayWhatIsWrong) {
 
 TEST(CliInfo, LaterCommandsAreNotAvailableYet) {
   const std::string dir = multidir::test::scratchDirectory("CliInfo.Later");
-  for (const std::string command : {"report", "export"}) {
+  for (const std::string command : {"export"}) {
     const CliRun run = runCli(command + " model.stl", dir);
     EXPECT_EQ(run.exitCode, 2) << command;
     EXPECT_NE(run.err.find("not available in this version"), std::string::npos) << run.err;
@@ -103,7 +79,6 @@ TEST(CliInfo, HelpListsInfoAndDecomposeButNotLaterCommands) {
   EXPECT_EQ(run.exitCode, 0);
   EXPECT_NE(run.out.find("info MODEL"), std::string::npos);
   EXPECT_NE(run.out.find("decompose MODEL"), std::string::npos);
-  EXPECT_EQ(run.out.find("\n  report"), std::string::npos);
   EXPECT_EQ(run.out.find("\n  export"), std::string::npos);
   const CliRun info = runCli("help info", dir);
   EXPECT_EQ(info.exitCode, 0);

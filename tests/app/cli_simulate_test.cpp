@@ -1,44 +1,19 @@
 // Runs `multidir simulate` and checks its help, its usage errors and that Ctrl-C (SIGINT) stops it cleanly.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
+#include <string>
 
+#include "support/cli_runner.h"
 #include "support/test_models.h"
 
 namespace {
 
-struct CliRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// `prefix` goes before the program (e.g. "timeout ...").
-CliRun runCli(const std::string& prefix, const std::string& arguments, const std::string& dir) {
-  const std::string outPath = dir + "/stdout.txt", errPath = dir + "/stderr.txt";
-  const std::string command = prefix + " '" + MULTIDIR_CLI_PATH + "' " + arguments + " > '" + outPath + "' 2> '" +
-                              errPath + "'";
-  const int status = std::system(command.c_str());
-  CliRun run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = readAll(outPath);
-  run.err = readAll(errPath);
-  return run;
-}
+using multidir::test::CliRun;
+using multidir::test::runCli;
 
 TEST(CliSimulate, HelpNamesTheDevicesAndOptions) {
   const std::string dir = multidir::test::scratchDirectory("CliSimulate.Help");
-  const CliRun run = runCli("", "help simulate", dir);
+  const CliRun run = runCli("help simulate", dir);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.out.find("--listen ADDRESS"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("registers 128-255"), std::string::npos) << run.out;
@@ -46,14 +21,14 @@ TEST(CliSimulate, HelpNamesTheDevicesAndOptions) {
 
 TEST(CliSimulate, PortOutOfRangeIsAUsageError) {
   const std::string dir = multidir::test::scratchDirectory("CliSimulate.BadPort");
-  const CliRun run = runCli("", "simulate --port 70000", dir);
+  const CliRun run = runCli("simulate --port 70000", dir);
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.err.find("--port must be a whole number from 0 to 65535"), std::string::npos) << run.err;
 }
 
 TEST(CliSimulate, ListensOnLoopbackAndStopsCleanlyOnSigint) {
   const std::string dir = multidir::test::scratchDirectory("CliSimulate.Sigint");
-  const CliRun run = runCli("timeout --preserve-status -s INT 1", "simulate --port 0", dir);
+  const CliRun run = runCli("simulate --port 0", dir, "timeout --preserve-status -s INT 1");
   EXPECT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.out.find("Simulator listening on 127.0.0.1:"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("rotary: disabled, not homed, angle 7.50 deg"), std::string::npos) << run.out;

@@ -6,7 +6,9 @@
 #include <QRect>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "ui/region_palette.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::test {
@@ -69,6 +71,41 @@ inline PictureCensus census(const QImage& picture) { return census(picture, pict
 inline QRect centreOf(const QImage& picture) {
   const int w = std::max(1, picture.width() / 10), h = std::max(1, picture.height() / 10);
   return {picture.width() / 2 - w / 2, picture.height() / 2 - h / 2, w, h};
+}
+
+}  // namespace multidir::test
+
+namespace multidir::test {
+
+// How many of the first `regionCount` palette colours cover at least `minFraction` of `picture`. A pixel
+// shows region i when it points the same way as the region's colour in RGB space (flat shading under
+// white light only scales a colour).
+inline int regionColoursSeen(const QImage& picture, int regionCount, double minFraction) {
+  const QImage image = picture.convertToFormat(QImage::Format_RGB32);
+  std::vector<long long> counts(static_cast<std::size_t>(std::max(0, regionCount)), 0);
+  for (int y = 0; y < image.height(); ++y) {
+    const auto* line = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+    for (int x = 0; x < image.width(); ++x) {
+      const double r = qRed(line[x]), g = qGreen(line[x]), b = qBlue(line[x]);
+      const double length = std::sqrt(r * r + g * g + b * b);
+      if (length < 60.0 || isBackground(line[x], y, image.height())) continue;
+      for (int i = 0; i < regionCount; ++i) {
+        const QColor c = ui::regionColor(i);
+        const double cr = c.red(), cg = c.green(), cb = c.blue();
+        const double cosine = (r * cr + g * cg + b * cb) / (length * std::sqrt(cr * cr + cg * cg + cb * cb));
+        if (cosine > 0.997) {
+          ++counts[static_cast<std::size_t>(i)];
+          break;
+        }
+      }
+    }
+  }
+  const double total = static_cast<double>(image.width()) * image.height();
+  int seen = 0;
+  for (const long long count : counts) {
+    if (count / total >= minFraction) ++seen;
+  }
+  return seen;
 }
 
 }  // namespace multidir::test

@@ -8,9 +8,11 @@
 #include <cmath>
 
 #include <vtkActor.h>
+#include <vtkArrowSource.h>
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkCylinderSource.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -25,9 +27,11 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkTransform.h>
+#include <vtkUnsignedCharArray.h>
 
 #include "multidir/core/common/units.h"
 #include "ui/viewer/mesh_to_polydata.h"
+#include "ui/viewer/plan_scene.h"
 #include "ui/viewer/platform_geometry.h"
 
 namespace multidir::ui {
@@ -37,6 +41,9 @@ namespace {
 // hue differs from both, so a picture can be told apart by colour (the viewer tests do).
 constexpr double kModelRgb[3] = {0.66, 0.75, 0.92};
 constexpr double kPlatformRgb[3] = {0.60, 0.60, 0.61};
+// Overhanging faces: an orange-red that stands out against the grey-blue model and the grey platform.
+constexpr unsigned char kRiskyRgb[3] = {236, 84, 40};
+constexpr double kAxisRgb[3] = {1.0, 0.80, 0.10};
 constexpr double kGridRgb[3] = {0.38, 0.38, 0.40};
 constexpr double kBackgroundTopRgb[3] = {0.12, 0.12, 0.14};
 constexpr double kBackgroundBottomRgb[3] = {0.40, 0.40, 0.42};
@@ -127,6 +134,7 @@ struct MeshViewerWidget::Impl {
   vtkNew<vtkGenericRenderWindowInteractor> interactor;
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderer> overlay;  // layer 1: the plan's arrows, over the parts, with the same camera
 
   vtkNew<vtkPolyDataMapper> modelMapper;
   vtkNew<vtkActor> modelActor;
@@ -135,6 +143,20 @@ struct MeshViewerWidget::Impl {
   vtkNew<vtkActor> platformActor;
   vtkNew<vtkPolyDataMapper> gridMapper;
   vtkNew<vtkActor> gridActor;
+  vtkNew<vtkArrowSource> axisSource;
+  vtkNew<vtkPolyDataMapper> axisMapper;
+  vtkNew<vtkActor> axisActor;
+
+  // The model's per-face colours (cell data of modelData): recolouring rewrites only this array.
+  vtkSmartPointer<vtkPolyData> modelData;
+  vtkSmartPointer<vtkUnsignedCharArray> faceColors;
+  std::size_t riskyShown = 0;
+  PlatformDisc platform;
+  double modelSizeMm = 0.0;
+  std::optional<core::Vec3> rotationAxis;
+  std::unique_ptr<PlanScene> plan;
+  bool turnWithMachine = false;
+  core::Vec3 viewUp = core::Vec3::UnitZ();
 
   vtkNew<vtkAxesActor> axes;
   vtkNew<vtkOrientationMarkerWidget> axesMarker;  // declared last: it must go before the interactor
@@ -147,10 +169,16 @@ struct MeshViewerWidget::Impl {
   QMetaObject::Connection contextConnection;
 
   Impl() {
+    plan = std::make_unique<PlanScene>(renderer, overlay);
     renderer->GradientBackgroundOn();
     renderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
     renderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
+    window->SetNumberOfLayers(2);
     window->AddRenderer(renderer);
+    overlay->SetLayer(1);
+    overlay->InteractiveOff();
+    overlay->SetActiveCamera(renderer->GetActiveCamera());
+    window->AddRenderer(overlay);
     // Qt owns the context; VTK draws into its own framebuffer and blits to the one Qt has bound.
     window->SetOwnContext(false);
     window->SetFrameBlitModeToBlitToCurrent();
@@ -169,6 +197,9 @@ struct MeshViewerWidget::Impl {
     model->SetAmbient(0.12);
     model->SetDiffuse(0.88);
     model->SetSpecular(0.0);
+    modelMapper->SetScalarModeToUseCellData();
+    modelMapper->SetColorModeToDirectScalars();
+    modelMapper->ScalarVisibilityOn();
 
     platformSource->SetResolution(128);
     platformSource->SetRadius(1.0);
@@ -186,16 +217,70 @@ struct MeshViewerWidget::Impl {
     gridActor->GetProperty()->LightingOff();
     gridActor->PickableOff();
 
+    // A double-headed look comes from the shaft running through the platform's centre: the arrow spans
+    // the platform from one rim to the other along the axis.
+    axisSource->SetTipResolution(24);
+    axisSource->SetShaftResolution(16);
+    axisSource->SetShaftRadius(0.012);
+    axisSource->SetTipRadius(0.035);
+    axisSource->SetTipLength(0.08);
+    axisMapper->SetInputConnection(axisSource->GetOutputPort());
+    axisActor->SetMapper(axisMapper);
+    axisActor->GetProperty()->SetColor(kAxisRgb[0], kAxisRgb[1], kAxisRgb[2]);
+    axisActor->GetProperty()->SetAmbient(0.5);
+    axisActor->GetProperty()->SetDiffuse(0.5);
+    axisActor->PickableOff();
+
     modelActor->VisibilityOff();
     platformActor->VisibilityOff();
     gridActor->VisibilityOff();
+    axisActor->VisibilityOff();
     renderer->AddActor(modelActor);
     renderer->AddActor(platformActor);
     renderer->AddActor(gridActor);
+    renderer->AddActor(axisActor);
 
     axesMarker->SetOrientationMarker(axes);
     axesMarker->SetViewport(0.0, 0.0, 0.18, 0.18);
     axesMarker->SetZoom(1.7);  // the axes actor's bounds are symmetric about its origin: fill the corner
+  }
+
+  // The model colour for every face; setRiskyFaces then paints the risky ones.
+  void resetFaceColors() {
+    const unsigned char base[3] = {static_cast<unsigned char>(std::lround(255 * kModelRgb[0])),
+                                   static_cast<unsigned char>(std::lround(255 * kModelRgb[1])),
+                                   static_cast<unsigned char>(std::lround(255 * kModelRgb[2]))};
+    for (vtkIdType i = 0; i < faceColors->GetNumberOfTuples(); ++i) faceColors->SetTypedTuple(i, base);
+    faceColors->Modified();
+    riskyShown = 0;
+  }
+
+  void placeRotationAxis() {
+    if (!rotationAxis || !hasMesh || plan->hasPlan()) {
+      axisActor->VisibilityOff();
+      return;
+    }
+    // In the platform plane (the part of the axis along up is dropped), just above the grid.
+    core::Vec3 axis = *rotationAxis - rotationAxis->dot(platform.normal) * platform.normal;
+    if (!(axis.norm() > 1e-9)) {
+      axisActor->VisibilityOff();
+      return;
+    }
+    axis.normalize();
+    const double length = 2.0 * platform.radiusMm;
+    const core::Vec3 start = platform.center - platform.radiusMm * axis - 0.2 * kPlatformGap * platform.radiusMm * platform.normal;
+    auto transform = vtkSmartPointer<vtkTransform>::New();
+    transform->Translate(start.x(), start.y(), start.z());
+    const core::Vec3 turn = core::Vec3::UnitX().cross(axis);
+    const double angle = std::atan2(turn.norm(), core::Vec3::UnitX().dot(axis));
+    if (turn.norm() > 1e-12) {
+      transform->RotateWXYZ(core::radToDeg(angle), turn.x(), turn.y(), turn.z());
+    } else if (angle > 1.0) {
+      transform->RotateZ(180.0);
+    }
+    transform->Scale(length, length, length);
+    axisActor->SetUserTransform(transform);
+    axisActor->VisibilityOn();
   }
 
   void applyFit() {
@@ -204,17 +289,25 @@ struct MeshViewerWidget::Impl {
       renderer->ResetCamera();
       return;
     }
-    const core::Vec3 front = frontSide(up);
-    const core::Vec3 right = (-front).cross(up);
-    const core::Vec3 direction = (front + 0.55 * right + 0.45 * up).normalized();
+    viewUp = up;
+    if (turnWithMachine && plan->hasPlan()) {
+      viewUp = unitOrZ(plan->plan()->regions[static_cast<std::size_t>(plan->shownRegions() - 1)].printingDirection);
+    }
+    const core::Vec3 front = frontSide(viewUp);
+    const core::Vec3 right = (-front).cross(viewUp);
+    const core::Vec3 direction = (front + 0.55 * right + 0.45 * viewUp).normalized();
     double bounds[6];
-    modelActor->GetBounds(bounds);
+    if (plan->hasPlan()) {
+      renderer->ComputeVisiblePropBounds(bounds);
+    } else {
+      modelActor->GetBounds(bounds);
+    }
     const core::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
                             0.5 * (bounds[4] + bounds[5]));
     const core::Vec3 eye = centre + direction;
     camera->SetFocalPoint(centre.x(), centre.y(), centre.z());
     camera->SetPosition(eye.x(), eye.y(), eye.z());
-    camera->SetViewUp(up.x(), up.y(), up.z());
+    camera->SetViewUp(viewUp.x(), viewUp.y(), viewUp.z());
     renderer->ResetCamera();  // keeps the direction, frames every visible actor (model and platform)
     camera->Zoom(1.25);
     renderer->ResetCameraClippingRange();
@@ -241,9 +334,21 @@ QSize MeshViewerWidget::sizeHint() const { return {900, 700}; }
 void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3& up) {
   Impl& m = *m_impl;
   m.up = unitOrZ(up);
-  m.modelMapper->SetInputData(toPolyData(mesh));
+  m.plan->clear();
+  m.modelData = toPolyData(mesh);
+  m.faceColors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  m.faceColors->SetName("faceColors");
+  m.faceColors->SetNumberOfComponents(3);
+  m.faceColors->SetNumberOfTuples(m.modelData->GetNumberOfCells());
+  m.resetFaceColors();
+  m.modelData->GetCellData()->SetScalars(m.faceColors);
+  m.modelMapper->SetInputData(m.modelData);
   m.modelActor->SetVisibility(!mesh.empty());
   const PlatformDisc disc = platformUnder(mesh, m.up);
+  m.platform = disc;
+  double bounds[6];
+  m.modelData->GetBounds(bounds);
+  m.modelSizeMm = mesh.empty() ? 0.0 : std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
   m.platformActor->SetUserTransform(platformPlacement(disc));
   m.platformActor->SetVisibility(!mesh.empty());
   // Halfway between the platform's top and the model, so neither hides the lines.
@@ -251,13 +356,19 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
   m.gridActor->SetUserTransform(platformFrame(disc, 0.5 * kPlatformGap * disc.radiusMm));
   m.gridActor->SetVisibility(!mesh.empty());
   m.hasMesh = !mesh.empty();
+  m.placeRotationAxis();
   fitView();
 }
 
 void MeshViewerWidget::clear() {
   Impl& m = *m_impl;
-  m.modelMapper->SetInputData(vtkSmartPointer<vtkPolyData>::New());
+  m.plan->clear();
+  m.modelData = vtkSmartPointer<vtkPolyData>::New();
+  m.faceColors = nullptr;
+  m.riskyShown = 0;
+  m.modelMapper->SetInputData(m.modelData);
   m.modelActor->VisibilityOff();
+  m.axisActor->VisibilityOff();
   m.platformActor->VisibilityOff();
   m.gridActor->VisibilityOff();
   m.hasMesh = false;
@@ -270,11 +381,95 @@ void MeshViewerWidget::fitView() {
   update();
 }
 
+bool MeshViewerWidget::setRiskyFaces(const std::vector<char>& risky) {
+  Impl& m = *m_impl;
+  if (!m.faceColors || static_cast<vtkIdType>(risky.size()) != m.faceColors->GetNumberOfTuples()) return false;
+  m.resetFaceColors();
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < risky.size(); ++i) {
+    if (!risky[i]) continue;
+    m.faceColors->SetTypedTuple(static_cast<vtkIdType>(i), kRiskyRgb);
+    ++count;
+  }
+  m.faceColors->Modified();
+  m.riskyShown = count;
+  update();
+  return true;
+}
+
+std::size_t MeshViewerWidget::riskyFacesShown() const { return m_impl->riskyShown; }
+
+void MeshViewerWidget::setRotationAxis(const std::optional<core::Vec3>& axis) {
+  m_impl->rotationAxis = axis;
+  m_impl->placeRotationAxis();
+  update();
+}
+
+bool MeshViewerWidget::rotationAxisShown() const { return m_impl->axisActor->GetVisibility() != 0; }
+
+void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan) {
+  Impl& m = *m_impl;
+  if (!plan || plan->regions.empty() || !m.hasMesh) {
+    clearPlan();
+    return;
+  }
+  m.plan->setPlan(std::move(plan), m.platform.center, m.modelSizeMm);
+  m.modelActor->VisibilityOff();
+  m.axisActor->VisibilityOff();
+  fitView();
+}
+
+void MeshViewerWidget::clearPlan() {
+  Impl& m = *m_impl;
+  if (!m.plan->hasPlan()) return;
+  m.plan->clear();
+  m.modelActor->SetVisibility(m.hasMesh);
+  m.placeRotationAxis();
+  fitView();
+}
+
+bool MeshViewerWidget::hasPlan() const { return m_impl->plan->hasPlan(); }
+
+void MeshViewerWidget::setPrintingDirectionsVisible(bool visible) {
+  m_impl->plan->setDirectionsVisible(visible);
+  update();
+}
+
+void MeshViewerWidget::setClippingPlanesVisible(bool visible) {
+  m_impl->plan->setPlanesVisible(visible);
+  update();
+}
+
+void MeshViewerWidget::setExplodeDistance(double distanceMm) {
+  m_impl->plan->setExplodeDistance(distanceMm);
+  update();
+}
+
+void MeshViewerWidget::setShownRegions(int count) {
+  m_impl->plan->setShownRegions(count);
+  if (m_impl->turnWithMachine) {
+    fitView();
+  } else {
+    update();
+  }
+}
+
+int MeshViewerWidget::shownRegions() const { return m_impl->plan->shownRegions(); }
+
+void MeshViewerWidget::setTurnWithMachine(bool turn) {
+  if (m_impl->turnWithMachine == turn) return;
+  m_impl->turnWithMachine = turn;
+  fitView();
+}
+
+core::Vec3 MeshViewerWidget::viewUp() const { return m_impl->viewUp; }
+
 bool MeshViewerWidget::hasMesh() const { return m_impl->hasMesh; }
 std::size_t MeshViewerWidget::framesRendered() const { return m_impl->frames; }
 
 QColor MeshViewerWidget::modelColor() { return toQColor(kModelRgb); }
 QColor MeshViewerWidget::platformColor() { return toQColor(kPlatformRgb); }
+QColor MeshViewerWidget::riskyColor() { return QColor(kRiskyRgb[0], kRiskyRgb[1], kRiskyRgb[2]); }
 QColor MeshViewerWidget::backgroundTopColor() { return toQColor(kBackgroundTopRgb); }
 QColor MeshViewerWidget::backgroundBottomColor() { return toQColor(kBackgroundBottomRgb); }
 
@@ -315,7 +510,22 @@ void MeshViewerWidget::paintGL() {
     m.applyFit();
     m.fitPending = false;
   }
-  m.renderer->ResetCameraClippingRange();
+  // One camera for both layers: its clipping range must hold the parts and the arrows over them.
+  double bounds[6];
+  double overlayBounds[6];
+  m.renderer->ComputeVisiblePropBounds(bounds);
+  m.overlay->ComputeVisiblePropBounds(overlayBounds);
+  if (overlayBounds[0] <= overlayBounds[1]) {
+    for (int i = 0; i < 6; i += 2) {
+      bounds[i] = std::min(bounds[i], overlayBounds[i]);
+      bounds[i + 1] = std::max(bounds[i + 1], overlayBounds[i + 1]);
+    }
+  }
+  if (bounds[0] <= bounds[1]) {
+    m.renderer->ResetCameraClippingRange(bounds);
+  } else {
+    m.renderer->ResetCameraClippingRange();
+  }
 
   // Qt changed GL state behind VTK's cache since the last frame: re-read it, and restore Qt's after.
   vtkOpenGLState* state = m.window->GetState();

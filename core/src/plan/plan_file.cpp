@@ -9,6 +9,7 @@
 #include "plan/json_file.h"
 #include "plan/plan_json.h"
 #include "plan/stl_image.h"
+#include "plan/supports_json.h"
 
 namespace multidir::core {
 namespace {
@@ -57,8 +58,9 @@ Result<Decomposition> planOnDisk(const Decomposition& plan) {
 
 // plan.json's text, read back through loadPlan's checks: what loadPlan would refuse is refused now, before
 // any file is touched.
-Result<std::string> checkedPlanText(const Decomposition& onDisk, const PlanMetadata& metadata) {
-  std::string text = detail::planToJson(onDisk, metadata).dump(2) + "\n";
+Result<std::string> checkedPlanText(const Decomposition& onDisk, const PlanMetadata& metadata,
+                                    const std::vector<SupportSet>& supports) {
+  std::string text = detail::planToJson(onDisk, metadata, supports).dump(2) + "\n";
   try {
     detail::planFromJson(nlohmann::json::parse(text), kPlanFileName);
   } catch (const detail::JsonFieldError& e) {
@@ -75,6 +77,25 @@ Status makeFolder(const fs::path& folder) {
                  name};
   fs::create_directories(folder, ec);
   if (ec) return Error{ErrorCode::WriteFailed, "cannot create the plan folder: " + ec.message(), name};
+  return Done{};
+}
+
+// A binary STL of n triangles has 84 + 50 n bytes; the supports' own mesh comes from plan.json, so the file
+// is only checked to belong to it.
+Status checkSupportFile(const fs::path& folder, const std::string& file, std::size_t triangles,
+                        const std::string& jsonName, std::size_t region) {
+  if (file.empty()) return Done{};
+  const std::string field = "regions[" + std::to_string(region) + "].supports";
+  std::error_code ec;
+  const auto size = fs::file_size(folder / file, ec);
+  if (ec)
+    return Error{ErrorCode::FileNotFound, "the support file is missing (" + jsonName + " lists it as " + field + ".file)",
+                 file};
+  if (size != 84 + 50 * static_cast<std::uintmax_t>(triangles))
+    return Error{ErrorCode::MalformedFile,
+                 "is not a binary STL of " + std::to_string(triangles) + " triangles as " + jsonName + " says (" +
+                     field + ".triangles): the file does not belong to this plan",
+                 file};
   return Done{};
 }
 
@@ -111,6 +132,8 @@ Result<LoadedPlan> readPlan(const std::string& directoryOrPlanJson) {
                    file};
     mesh.origins = std::move(doc.regionOrigins[i]);
     plan.decomposition.regions[i].mesh = std::move(mesh);
+    if (Status s = checkSupportFile(folder, doc.supportFiles[i], doc.supportTriangles[i], jsonName, i); !s)
+      return s.error();
   }
   return plan;
 }
@@ -118,16 +141,32 @@ Result<LoadedPlan> readPlan(const std::string& directoryOrPlanJson) {
 }  // namespace
 
 Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const std::string& directory) {
+  return savePlan(plan, metadata, {}, directory);
+}
+
+Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const std::vector<SupportSet>& supports,
+                const std::string& directory) {
+  if (!supports.empty() && supports.size() != plan.regions.size())
+    return invalid("there are " + std::to_string(supports.size()) + " support sets for " +
+                   std::to_string(plan.regions.size()) + " regions: give one per region or none");
+  for (std::size_t i = 0; i < supports.size(); ++i)
+    if (supports[i].regionIndex != static_cast<int>(i))
+      return invalid("support set " + std::to_string(i) + " says it belongs to region " +
+                     std::to_string(supports[i].regionIndex));
   try {
     const Result<Decomposition> onDisk = planOnDisk(plan);
     if (!onDisk) return onDisk.error();
-    const Result<std::string> text = checkedPlanText(*onDisk, metadata);
+    const Result<std::string> text = checkedPlanText(*onDisk, metadata, supports);
     if (!text) return text.error();
     const fs::path folder(directory);
     if (Status made = makeFolder(folder); !made) return made;
     for (std::size_t i = 0; i < onDisk->regions.size(); ++i)
       if (Status saved = saveMesh(onDisk->regions[i].mesh, (folder / detail::regionFileName(i)).string()); !saved)
         return saved;
+    for (std::size_t i = 0; i < supports.size(); ++i)
+      if (!supports[i].empty())
+        if (Status saved = saveMesh(supports[i].mesh, (folder / detail::supportFileName(i)).string()); !saved)
+          return saved;
     return detail::writeFileAtomically((folder / kPlanFileName).string(), *text, kPlanFileName);
   } catch (const std::bad_alloc&) {
     return Error{ErrorCode::WriteFailed, "there is not enough memory to write the plan", directory};

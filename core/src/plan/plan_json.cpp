@@ -8,6 +8,7 @@
 #include "plan/face_origin_runs.h"
 #include "plan/json_field.h"
 #include "plan/settings_json.h"
+#include "plan/supports_json.h"
 
 namespace multidir::core::detail {
 namespace {
@@ -69,6 +70,12 @@ ordered_json regionToJson(const Region& region, std::size_t index) {
           {"volumeMm3", region.volumeMm3},
           {"riskyAreaMm2", region.riskyAreaMm2},
           {"faceOrigins", encodeFaceOrigins(region.mesh.origins)}};
+}
+
+ordered_json regionToJsonWithSupports(const Region& region, std::size_t index, const SupportSet* supports) {
+  ordered_json out = regionToJson(region, index);
+  if (supports && !supports->empty()) out["supports"] = supportsToJson(*supports, index);
+  return out;
 }
 
 // A file name inside the plan's folder: no folders, no "..", no hidden files, ends in .stl.
@@ -134,6 +141,17 @@ void readRegion(const JsonField& field, std::size_t index, std::size_t planeCoun
   if (!(region.volumeMm3 > 0)) volume.fail("must be a positive volume in mm^3");
   region.riskyAreaMm2 = field["riskyAreaMm2"].numberAtLeast(0.0);
 
+  SupportSet supports;
+  supports.regionIndex = static_cast<int>(index);
+  std::string supportFile;
+  std::size_t supportTriangles = 0;
+  if (const auto supportsField = field.optional("supports")) {
+    SupportsDocument read = supportsFromJson(*supportsField, index);
+    supports = std::move(read.supports);
+    supportFile = std::move(read.file);
+    supportTriangles = read.triangles;
+  }
+
   const JsonField originsField = field["faceOrigins"];
   Result<std::vector<FaceOrigin>> origins = decodeFaceOrigins(originsField.string(), triangles);
   if (!origins) originsField.failInside(origins.error().message);
@@ -148,6 +166,9 @@ void readRegion(const JsonField& field, std::size_t index, std::size_t planeCoun
   doc.regionFiles.push_back(name);
   doc.regionTriangles.push_back(triangles);
   doc.regionOrigins.push_back(std::move(origins).value());
+  doc.supportFiles.push_back(std::move(supportFile));
+  doc.supportTriangles.push_back(supportTriangles);
+  doc.plan.supports.push_back(std::move(supports));
   doc.plan.decomposition.regions.push_back(std::move(region));
 }
 
@@ -159,11 +180,13 @@ std::string regionFileName(std::size_t index) {
   return name;
 }
 
-ordered_json planToJson(const Decomposition& plan, const PlanMetadata& metadata) {
+ordered_json planToJson(const Decomposition& plan, const PlanMetadata& metadata,
+                        const std::vector<SupportSet>& supports) {
   ordered_json planes = ordered_json::array();
   for (const Plane& plane : plan.clippingPlanes) planes.push_back(planeToJson(plane));
   ordered_json regions = ordered_json::array();
-  for (std::size_t i = 0; i < plan.regions.size(); ++i) regions.push_back(regionToJson(plan.regions[i], i));
+  for (std::size_t i = 0; i < plan.regions.size(); ++i)
+    regions.push_back(regionToJsonWithSupports(plan.regions[i], i, i < supports.size() ? &supports[i] : nullptr));
   ordered_json search = searchOptionsToJson(metadata.options);
   search["axisSearchCount"] = metadata.axisSearchCount;
   return {{"schema", kPlanSchema},

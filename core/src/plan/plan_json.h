@@ -15,12 +15,16 @@ struct PlanDocument {
   std::vector<std::string> regionFiles;  // plain file names in the plan's folder
   std::vector<std::size_t> regionTriangles;
   std::vector<std::vector<FaceOrigin>> regionOrigins;
+  std::vector<std::string> supportFiles;  // per region; empty where the region has no supports
+  std::vector<std::size_t> supportTriangles;
 };
 
 // "region-01.stl" for the region at printing position 0.
 std::string regionFileName(std::size_t index);
 
-nlohmann::ordered_json planToJson(const Decomposition& plan, const PlanMetadata& metadata);
+// `supports`: none, or one per region (a region whose set is empty gets no `supports` field).
+nlohmann::ordered_json planToJson(const Decomposition& plan, const PlanMetadata& metadata,
+                                  const std::vector<SupportSet>& supports = {});
 
 // Checks every field (throws JsonFieldError naming `fileName` and the field on the first violation).
 PlanDocument planFromJson(const nlohmann::json& document, const std::string& fileName);

@@ -1,10 +1,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "multidir/core/samples/coarsen.h"
-#include "multidir/core/samples/implicit_surface.h"
 #include "multidir/core/samples/sample_shapes.h"
 #include "multidir/core/samples/sdf.h"
+#include "samples/polygonize_coarsen.h"
 
 namespace multidir::core::samples {
 namespace {
@@ -16,10 +15,7 @@ constexpr double kHandleCentreX = kOuterRadius + 6.0;
 constexpr double kHandleCentreZ = 42.0;
 constexpr double kHandleRadius = 20.0;
 constexpr double kHandleThickness = 4.5;  // tube radius
-// Polygonized on a fine grid (so thin parts keep their shape), then coarsened to edges of about
-// kMinEdgeMm..kMaxEdgeMm: marching tetrahedra alone would give several times more triangles.
-constexpr double kMinEdgeMm = 1.2;
-constexpr double kMaxEdgeMm = 3.0;
+// The fine grid's cell (see polygonizeStandingSample).
 constexpr double kCellSizeMm = 1.25;
 
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
@@ -50,16 +46,10 @@ double mugDistance(const Vec3& p) { return smoothUnion(cupDistance(p), handleDis
 }  // namespace
 
 Result<TriangleMesh> makeMug() {
-  const double margin = 2.0 * kCellSizeMm;
-  BoundingBox box;
-  box.min = Vec3(-kOuterRadius - margin, -kOuterRadius - margin, -1.5 * kCellSizeMm);
-  box.max = Vec3(kHandleCentreX + kHandleRadius + kHandleThickness + margin, kOuterRadius + margin, kHeight + margin);
-  Result<TriangleMesh> fine = polygonize(mugDistance, box, kCellSizeMm);
-  if (!fine) return fine.error();
-  CoarsenOptions coarsen;
-  coarsen.minEdgeMm = kMinEdgeMm;
-  coarsen.maxEdgeMm = kMaxEdgeMm;
-  return collapseShortEdges(*fine, coarsen);
+  BoundingBox extent;
+  extent.min = Vec3(-kOuterRadius, -kOuterRadius, 0.0);
+  extent.max = Vec3(kHandleCentreX + kHandleRadius + kHandleThickness, kOuterRadius, kHeight);
+  return polygonizeStandingSample(mugDistance, extent, kCellSizeMm);
 }
 
 }  // namespace multidir::core::samples

@@ -1,9 +1,8 @@
 #include <cmath>
 
-#include "multidir/core/samples/coarsen.h"
-#include "multidir/core/samples/implicit_surface.h"
 #include "multidir/core/samples/sample_shapes.h"
 #include "multidir/core/samples/sdf.h"
+#include "samples/polygonize_coarsen.h"
 
 namespace multidir::core::samples {
 namespace {
@@ -18,10 +17,7 @@ constexpr double kHeadRadius = 19.0;
 constexpr double kHeadCentreZ = 128.0;
 constexpr double kArmRadius = 4.5;
 constexpr double kNoseRadius = 3.0;
-// Polygonized on a fine grid (so thin parts keep their shape), then coarsened to edges of about
-// kMinEdgeMm..kMaxEdgeMm: marching tetrahedra alone would give several times more triangles.
-constexpr double kMinEdgeMm = 1.2;
-constexpr double kMaxEdgeMm = 3.0;
+// The fine grid's cell (see polygonizeStandingSample).
 constexpr double kCellSizeMm = 1.6;
 
 double snowmanDistance(const Vec3& p) {
@@ -39,17 +35,10 @@ double snowmanDistance(const Vec3& p) {
 }  // namespace
 
 Result<TriangleMesh> makeSnowman() {
-  // The grid's z levels sit half a cell off z = 0, so the floor's crossings land exactly on z = 0.
-  const double margin = 2.0 * kCellSizeMm;
-  BoundingBox box;
-  box.min = Vec3(-60.0 - kArmRadius - margin, -kBodyRadius - margin, -1.5 * kCellSizeMm);
-  box.max = Vec3(60.0 + kArmRadius + margin, kBodyRadius + margin, kHeadCentreZ + kHeadRadius + margin);
-  Result<TriangleMesh> fine = polygonize(snowmanDistance, box, kCellSizeMm);
-  if (!fine) return fine.error();
-  CoarsenOptions coarsen;
-  coarsen.minEdgeMm = kMinEdgeMm;
-  coarsen.maxEdgeMm = kMaxEdgeMm;
-  return collapseShortEdges(*fine, coarsen);
+  BoundingBox extent;
+  extent.min = Vec3(-60.0 - kArmRadius, -kBodyRadius, 0.0);
+  extent.max = Vec3(60.0 + kArmRadius, kBodyRadius, kHeadCentreZ + kHeadRadius);
+  return polygonizeStandingSample(snowmanDistance, extent, kCellSizeMm);
 }
 
 }  // namespace multidir::core::samples

@@ -1,11 +1,11 @@
 #include "multidir/hardware/robot_arm.h"
 
 #include <cmath>
-#include <cstdio>
-#include <mutex>
 #include <utility>
+#include <vector>
 
-#include "modbus/link_worker.h"
+#include "degrees_text.h"
+#include "modbus/driver_link.h"
 #include "modbus/register_maps.h"
 #include "multidir/hardware/motion_limits.h"
 
@@ -15,18 +15,6 @@ namespace rb = regs::robot;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-std::string degrees(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f", value);
-  return text;
-}
-
-std::future<core::Status> readyFuture(core::Status status) {
-  std::promise<core::Status> promise;
-  promise.set_value(std::move(status));
-  return promise.get_future();
-}
 
 RobotProgramState stateFromRegister(std::uint16_t value) {
   switch (value) {
@@ -69,67 +57,58 @@ class RobotArm::Impl {
  public:
   explicit Impl(RobotArmOptions options)
       : m_options(std::move(options)),
-        m_label("robot arm at " + describe(m_options.connection)),
-        m_worker(m_options.connection, m_label, hooks()) {}
-
-  ~Impl() { m_worker.stop(); }
+        m_link(m_options.connection, "robot arm at " + describe(m_options.connection), rb::kHostHeartbeat,
+               &RobotStatus::programAlive, [this](ModbusPort& port) { return onConnected(port); },
+               [this](ModbusPort& port) { return poll(port); }) {}
 
   core::Status connect() {
     if (m_options.connection.transport != Transport::Tcp)
       return core::Error{core::ErrorCode::InvalidParameter,
                          "the robot arm is reached over Modbus TCP only (its controller's server on port 502)",
                          "transport"};
-    if (auto valid = validate(m_options.connection); !valid.ok()) return valid;
-    if (auto valid = core::validate(m_options.machine); !valid.ok()) return valid;
+    if (auto valid = validateLinkAndProfile(m_options.connection, m_options.machine); !valid.ok()) return valid;
     if (m_options.machine.kind != core::MachineKind::TiltRotate)
       return core::Error{core::ErrorCode::InvalidParameter,
                          "the machine profile is not a tilting arm (5dof): load the robot's profile", "machine"};
     if (m_options.speedPercent < 1 || m_options.speedPercent > 100)
       return core::Error{core::ErrorCode::InvalidParameter, "speed must be between 1 and 100 %", "speed"};
-    if (m_options.programHeartbeatTimeout.count() < 0 || m_options.programHeartbeatTimeout.count() > 65535)
-      return core::Error{core::ErrorCode::InvalidParameter, "heartbeat timeout must be between 0 and 65535 ms",
-                         "heartbeat timeout"};
-    return m_worker.start();
+    if (auto valid = validateHeartbeatTimeout(m_options.programHeartbeatTimeout); !valid.ok()) return valid;
+    return m_link.start();
   }
 
-  void disconnect() { m_worker.stop(); }
+  void disconnect() { m_link.stop(); }
 
   std::future<core::Status> moveTo(double tiltDegrees, double azimuthDegrees) {
-    if (auto ok = checkTiltTarget(m_options.machine, tiltDegrees, azimuthDegrees); !ok.ok()) {
-      core::Error error = ok.error();
-      error.message = m_label + " refused the move: " + error.message;
-      return readyFuture(error);
-    }
+    if (auto ok = checkTiltTarget(m_options.machine, tiltDegrees, azimuthDegrees); !ok.ok())
+      return readyFuture(m_link.refuseMove(ok.error()));
     const double azimuth = normalizedAzimuth(azimuthDegrees);
-    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
     const RobotStatus now = status();
     if (!now.programAlive || now.state == RobotProgramState::NotRunning)
-      return readyFuture(refuse("cannot move: the URScript program multidir_platform.script is not running (its "
-                                "heartbeat, register 146, does not change); load it on the teach pendant and press "
-                                "Play"));
+      return readyFuture(m_link.refuse("cannot move: the URScript program multidir_platform.script is not running "
+                                       "(its heartbeat, register 146, does not change); load it on the teach "
+                                       "pendant and press Play"));
     if (now.state == RobotProgramState::Halted || now.state == RobotProgramState::Fault)
-      return readyFuture(refuse(std::string("cannot move: the program is ") + robotProgramStateName(now.state) +
-                                " (fault code " + std::to_string(now.faultCode) + "); clear the fault first"));
+      return readyFuture(m_link.refuse(std::string("cannot move: the program is ") +
+                                       robotProgramStateName(now.state) + " (fault code " +
+                                       std::to_string(now.faultCode) + "); clear the fault first"));
     const std::uint16_t speed = static_cast<std::uint16_t>(m_options.speedPercent);
     const std::uint16_t tilt = regs::degreesToInt16Register(tiltDegrees);
     const std::uint16_t az = regs::degreesToInt16Register(azimuth);
-    return m_worker.submit(
+    return m_link.submit(
         [this, tilt, az, speed, tiltDegrees, azimuth](ModbusPort& port) {
           return sendCommand(port, rb::kCmdMove, {tilt, az, speed},
-                             "the move to tilt " + degrees(tiltDegrees) + ", azimuth " + degrees(azimuth) +
+                             "the move to tilt " + degreesText(tiltDegrees) + ", azimuth " + degreesText(azimuth) +
                                  " degrees (registers 128-132)");
         },
-        false, "move to tilt " + degrees(tiltDegrees) + ", azimuth " + degrees(azimuth) + " degrees");
+        false, "move to tilt " + degreesText(tiltDegrees) + ", azimuth " + degreesText(azimuth) + " degrees");
   }
 
   std::future<core::Status> stop() { return simple(rb::kCmdStop, "stop", true); }
   std::future<core::Status> emergencyStop() { return simple(rb::kCmdHalt, "emergency stop", true); }
   std::future<core::Status> clearFault() { return simple(rb::kCmdReset, "reset", false); }
 
-  RobotStatus status() const {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_status;
-  }
+  RobotStatus status() const { return m_link.status(); }
 
   bool reached(double tiltDegrees, double azimuthDegrees) const {
     const RobotStatus s = status();
@@ -146,51 +125,15 @@ class RobotArm::Impl {
            azimuthOk;
   }
 
-  void setStatusCallback(StatusCallback callback) {
-    std::lock_guard<std::mutex> lock(m_callbackMutex);
-    m_callback = std::move(callback);
-  }
+  void setStatusCallback(StatusCallback callback) { m_link.setStatusCallback(std::move(callback)); }
 
-  const std::string& name() const { return m_label; }
+  const std::string& name() const { return m_link.name(); }
   const RobotArmOptions& options() const { return m_options; }
 
  private:
-  LinkHooks hooks() {
-    LinkHooks h;
-    h.onConnected = [this](ModbusPort& port) { return onConnected(port); };
-    h.poll = [this](ModbusPort& port) { return poll(port); };
-    h.heartbeat = [this](ModbusPort& port) {
-      ++m_heartbeat;
-      auto result = port.writeRegisters(rb::kHostHeartbeat, {m_heartbeat}, "the heartbeat (register 133)");
-      if (!result.ok()) noteError(result.error().message);
-      return result;
-    };
-    h.linkChanged = [this](LinkState state, const std::string& problem) {
-      {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        m_status.link = state;
-        if (!problem.empty()) m_status.lastError = problem;
-        if (state != LinkState::Connected) m_status.programAlive = false;
-      }
-      publish();
-    };
-    return h;
-  }
-
-  core::Error refuse(const std::string& message) const {
-    return core::Error{core::ErrorCode::InvalidParameter, m_label + ": " + message, m_label};
-  }
-
-  core::Status requireLink() const {
-    const LinkState link = status().link;
-    if (link == LinkState::Connected) return core::Done{};
-    return refuse(std::string("not connected (") + linkStateName(link) +
-                  "): nothing was sent; connect first or wait for the link to come back");
-  }
-
   std::future<core::Status> simple(std::uint16_t code, const std::string& what, bool isUrgent) {
-    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
-    return m_worker.submit(
+    if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
+    return m_link.submit(
         [this, code, what](ModbusPort& port) {
           return sendCommand(port, code, {}, "the " + what + " command (registers 131-132)");
         },
@@ -213,55 +156,43 @@ class RobotArm::Impl {
     values.push_back(sequence);
     auto result = port.writeRegisters(first, values, what);
     if (!result.ok()) {
-      noteError(result.error().message);
+      m_link.noteError(result.error().message);
       return result;
     }
     m_sequence = sequence;
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_status.sentSequence = sequence;
-    m_sentAt = Clock::now();
-    m_ackOverdueReported = false;
+    m_link.update([&](RobotStatus& s) {
+      s.sentSequence = sequence;
+      m_sentAt = Clock::now();
+      m_ackOverdueReported = false;
+    });
     return core::Done{};
   }
 
-  void noteError(const std::string& message) {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_status.lastError = message;
-  }
-
   core::Status onConnected(ModbusPort& port) {
-    ++m_heartbeat;
-    const auto timeout = static_cast<std::uint16_t>(m_options.programHeartbeatTimeout.count());
-    auto result = port.writeRegisters(rb::kHostHeartbeat, {m_heartbeat, timeout},
-                                      "the heartbeat and its timeout (registers 133-134)");
+    auto result = m_link.writeHeartbeatAndTimeout(port, m_options.programHeartbeatTimeout);
     if (!result.ok()) return result;
     // Continue the sequence the robot holds, so the next command is new to the program.
     std::uint16_t seq = 0;
     result = port.readRegisters(rb::kSequence, 1, &seq, "the command sequence (register 132)");
     if (!result.ok()) return result;
     m_sequence = seq;
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_status.sentSequence = seq;
-    m_status.polls = 0;
-    m_programChanged = Clock::now();
-    m_haveProgramHeartbeat = false;
+    m_link.update([&](RobotStatus& s) {
+      s.sentSequence = seq;
+      s.polls = 0;
+      m_programChanged = Clock::now();
+      m_haveProgramHeartbeat = false;
+    });
     return core::Done{};
   }
 
   core::Status poll(ModbusPort& port) {
     std::uint16_t r[rb::kStatusBlockCount] = {};
-    auto result = port.readRegisters(rb::kStatusBlockFirst, rb::kStatusBlockCount, r,
-                                     "the status (registers 128-149)");
-    if (!result.ok()) {
-      noteError(result.error().message);
-      publish();
-      return result;
-    }
+    auto result = m_link.readStatusBlock(port, rb::kStatusBlockFirst, rb::kStatusBlockCount, r,
+                                         "the status (registers 128-149)");
+    if (!result.ok()) return result;
     auto at = [&r](int address) { return r[address - rb::kStatusBlockFirst]; };
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
+    m_link.update([&](RobotStatus& s) {
       const Clock::time_point now = Clock::now();
-      RobotStatus& s = m_status;
       s.state = stateFromRegister(at(rb::kState));
       s.acknowledgedSequence = at(rb::kAckSequence);
       s.faultCode = at(rb::kFaultCode);
@@ -278,46 +209,34 @@ class RobotArm::Impl {
       const auto window = m_options.programHeartbeatTimeout + 2 * m_options.connection.pollInterval;
       const bool alive = s.state != RobotProgramState::NotRunning && now - m_programChanged <= window;
       if (s.programAlive && !alive)
-        s.lastError = m_label + ": the URScript program stopped (its heartbeat, register 146, unchanged for " +
+        s.lastError = name() + ": the URScript program stopped (its heartbeat, register 146, unchanged for " +
                       std::to_string(window.count()) + " ms): check the teach pendant for a protective stop or a "
                       "program error, then start multidir_platform.script again";
       s.programAlive = alive;
       if (s.sentSequence != s.acknowledgedSequence && !m_ackOverdueReported &&
           now - m_sentAt > m_options.acknowledgeTimeout) {
         m_ackOverdueReported = true;
-        s.lastError = m_label + ": the program did not acknowledge command " + std::to_string(s.sentSequence) +
+        s.lastError = name() + ": the program did not acknowledge command " + std::to_string(s.sentSequence) +
                       " within " + std::to_string(m_options.acknowledgeTimeout.count()) +
                       " ms: check that multidir_platform.script is running and not paused";
       }
       ++s.polls;
-    }
-    publish();
+    });
+    m_link.publish();
     return core::Done{};
   }
 
-  void publish() {
-    const RobotStatus snapshot = status();
-    std::lock_guard<std::mutex> lock(m_callbackMutex);
-    if (m_callback) m_callback(snapshot);
-  }
-
   RobotArmOptions m_options;
-  std::string m_label;
 
-  mutable std::mutex m_mutex;
-  RobotStatus m_status;
+  // Guarded by m_link's status mutex: touched only inside m_link.update().
   Clock::time_point m_programChanged{};
   std::uint16_t m_lastProgramHeartbeat = 0;
   bool m_haveProgramHeartbeat = false;
   Clock::time_point m_sentAt{};
   bool m_ackOverdueReported = false;
 
-  std::mutex m_callbackMutex;
-  StatusCallback m_callback;
-
-  std::uint16_t m_heartbeat = 0;  // worker thread only
-  std::uint16_t m_sequence = 0;   // worker thread only
-  LinkWorker m_worker;            // last: its thread uses everything above
+  std::uint16_t m_sequence = 0;  // worker thread only
+  DriverLink<RobotStatus> m_link;  // last: its worker thread uses everything above
 };
 
 RobotArm::RobotArm(RobotArmOptions options) : m_impl(std::make_unique<Impl>(std::move(options))) {}

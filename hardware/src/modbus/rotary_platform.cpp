@@ -1,11 +1,11 @@
 #include "multidir/hardware/rotary_platform.h"
 
 #include <cmath>
-#include <cstdio>
-#include <mutex>
 #include <utility>
+#include <vector>
 
-#include "modbus/link_worker.h"
+#include "degrees_text.h"
+#include "modbus/driver_link.h"
 #include "modbus/register_maps.h"
 #include "multidir/hardware/motion_limits.h"
 
@@ -18,12 +18,6 @@ namespace {
 
 constexpr double kProgressDegrees = 0.05;  // less than this in stallTimeout is no progress
 
-std::string degrees(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.2f", value);
-  return text;
-}
-
 RotaryFault faultFromCode(int code) {
   switch (code) {
     case rr::kFaultNone: return RotaryFault::None;
@@ -34,12 +28,6 @@ RotaryFault faultFromCode(int code) {
     case rr::kFaultEStop: return RotaryFault::EmergencyStop;
     default: return RotaryFault::Unknown;
   }
-}
-
-std::future<core::Status> readyFuture(core::Status status) {
-  std::promise<core::Status> promise;
-  promise.set_value(std::move(status));
-  return promise.get_future();
 }
 
 }  // namespace
@@ -61,51 +49,44 @@ class RotaryPlatform::Impl {
  public:
   explicit Impl(RotaryPlatformOptions options)
       : m_options(std::move(options)),
-        m_label("rotary platform at " + describe(m_options.connection)),
-        m_worker(m_options.connection, m_label, hooks()) {}
-
-  ~Impl() { m_worker.stop(); }
+        m_link(m_options.connection, "rotary platform at " + describe(m_options.connection), rr::kHeartbeat,
+               &RotaryStatus::controllerAlive, [this](ModbusPort& port) { return onConnected(port); },
+               [this](ModbusPort& port) { return poll(port); }) {}
 
   core::Status connect() {
-    if (auto valid = validate(m_options.connection); !valid.ok()) return valid;
-    if (auto valid = core::validate(m_options.machine); !valid.ok()) return valid;
+    if (auto valid = validateLinkAndProfile(m_options.connection, m_options.machine); !valid.ok()) return valid;
     if (m_options.machine.kind != core::MachineKind::RotaryPlatform)
-      return refuse("the machine profile is not a rotary platform (4dof): load the platform's profile");
+      return m_link.refuse("the machine profile is not a rotary platform (4dof): load the platform's profile");
     if (!(m_options.speedDegreesPerSecond > 0 && m_options.speedDegreesPerSecond <= 655))
       return core::Error{core::ErrorCode::InvalidParameter, "speed must be above 0 and at most 655 degrees/s", "speed"};
-    if (m_options.controllerHeartbeatTimeout.count() < 0 || m_options.controllerHeartbeatTimeout.count() > 65535)
-      return core::Error{core::ErrorCode::InvalidParameter, "heartbeat timeout must be between 0 and 65535 ms",
-                         "heartbeat timeout"};
-    return m_worker.start();
+    if (auto valid = validateHeartbeatTimeout(m_options.controllerHeartbeatTimeout); !valid.ok()) return valid;
+    return m_link.start();
   }
 
-  void disconnect() { m_worker.stop(); }
+  void disconnect() { m_link.stop(); }
 
   std::future<core::Status> enable() {
-    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
     return command(rr::kCmdEnable, "enable", false);
   }
   std::future<core::Status> disable() {
-    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
     return command(rr::kCmdDisable, "disable", false);
   }
   std::future<core::Status> clearFault() {
-    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      m_hostStall = false;
-    }
+    if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
+    m_link.update([this](RotaryStatus&) { m_hostStall = false; });
     return command(rr::kCmdClearFault, "clear fault", false);
   }
 
   std::future<core::Status> home() {
     const RotaryStatus now = status();
-    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
     if (now.fault != RotaryFault::None)
-      return readyFuture(refuse(std::string("cannot home while in fault (") + rotaryFaultName(now.fault) +
-                                "): clear the fault first"));
-    if (!now.enabled) return readyFuture(refuse("cannot home: the drive is not enabled; enable it first"));
-    return m_worker.submit(
+      return readyFuture(m_link.refuse(std::string("cannot home while in fault (") + rotaryFaultName(now.fault) +
+                                       "): clear the fault first"));
+    if (!now.enabled) return readyFuture(m_link.refuse("cannot home: the drive is not enabled; enable it first"));
+    return m_link.submit(
         [this](ModbusPort& port) {
           auto result = port.writeRegisters(rr::kCommand, {rr::kCmdHome}, "the home command (register 3)");
           if (result.ok()) expectMotion(0.0);
@@ -115,43 +96,38 @@ class RotaryPlatform::Impl {
   }
 
   std::future<core::Status> moveTo(double angleDegrees) {
-    if (auto ok = checkRotaryTarget(m_options.machine, angleDegrees); !ok.ok()) {
-      core::Error error = ok.error();
-      error.message = m_label + " refused the move: " + error.message;
-      return readyFuture(error);
-    }
-    if (auto ok = requireLink(); !ok.ok()) return readyFuture(ok);
+    if (auto ok = checkRotaryTarget(m_options.machine, angleDegrees); !ok.ok())
+      return readyFuture(m_link.refuseMove(ok.error()));
+    if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
     const RotaryStatus now = status();
     if (now.fault != RotaryFault::None)
-      return readyFuture(refuse(std::string("cannot move while in fault (") + rotaryFaultName(now.fault) +
-                                "): clear the fault, enable and home again"));
+      return readyFuture(m_link.refuse(std::string("cannot move while in fault (") + rotaryFaultName(now.fault) +
+                                       "): clear the fault, enable and home again"));
     if (!now.homed || now.homing)
-      return readyFuture(refuse("cannot move: the platform is not homed; home it first so angles mean something"));
-    if (!now.enabled) return readyFuture(refuse("cannot move: the drive is not enabled; enable it first"));
+      return readyFuture(
+          m_link.refuse("cannot move: the platform is not homed; home it first so angles mean something"));
+    if (!now.enabled) return readyFuture(m_link.refuse("cannot move: the drive is not enabled; enable it first"));
     if (!now.controllerAlive)
-      return readyFuture(refuse("cannot move: the controller does not echo the heartbeat, so it could not stop "
-                                "on its own if MultiDir went silent; power-cycle it"));
+      return readyFuture(m_link.refuse("cannot move: the controller does not echo the heartbeat, so it could not "
+                                       "stop on its own if MultiDir went silent; power-cycle it"));
     std::vector<std::uint16_t> values(4);
     regs::putInt32(regs::degreesToCounts(angleDegrees), values.data());
     values[2] = regs::degreesPerSecondToRegister(m_options.speedDegreesPerSecond);
     values[3] = rr::kCmdMove;
-    return m_worker.submit(
+    return m_link.submit(
         [this, values, angleDegrees](ModbusPort& port) {
-          auto result = port.writeRegisters(rr::kTargetAngle, values, "the move to " + degrees(angleDegrees) +
+          auto result = port.writeRegisters(rr::kTargetAngle, values, "the move to " + degreesText(angleDegrees) +
                                                                           " degrees (registers 0-3)");
           if (result.ok()) expectMotion(angleDegrees);
           return result;
         },
-        false, "move to " + degrees(angleDegrees) + " degrees");
+        false, "move to " + degreesText(angleDegrees) + " degrees");
   }
 
   std::future<core::Status> stop() { return urgent(rr::kCmdStop, "stop"); }
   std::future<core::Status> emergencyStop() { return urgent(rr::kCmdEStop, "emergency stop"); }
 
-  RotaryStatus status() const {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_status;
-  }
+  RotaryStatus status() const { return m_link.status(); }
 
   bool reached(double angleDegrees) const {
     const RotaryStatus now = status();
@@ -161,50 +137,14 @@ class RotaryPlatform::Impl {
            std::abs(now.angleDegrees - angleDegrees) <= tolerance;
   }
 
-  void setStatusCallback(StatusCallback callback) {
-    std::lock_guard<std::mutex> lock(m_callbackMutex);
-    m_callback = std::move(callback);
-  }
+  void setStatusCallback(StatusCallback callback) { m_link.setStatusCallback(std::move(callback)); }
 
-  const std::string& name() const { return m_label; }
+  const std::string& name() const { return m_link.name(); }
   const RotaryPlatformOptions& options() const { return m_options; }
 
  private:
-  LinkHooks hooks() {
-    LinkHooks h;
-    h.onConnected = [this](ModbusPort& port) { return onConnected(port); };
-    h.poll = [this](ModbusPort& port) { return poll(port); };
-    h.heartbeat = [this](ModbusPort& port) {
-      ++m_heartbeat;
-      auto result = port.writeRegisters(rr::kHeartbeat, {m_heartbeat}, "the heartbeat (register 4)");
-      if (!result.ok()) noteError(result.error().message);
-      return result;
-    };
-    h.linkChanged = [this](LinkState state, const std::string& problem) {
-      {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        m_status.link = state;
-        if (!problem.empty()) m_status.lastError = problem;
-        if (state != LinkState::Connected) m_status.controllerAlive = false;
-      }
-      publish();
-    };
-    return h;
-  }
-
-  core::Error refuse(const std::string& message) const {
-    return core::Error{core::ErrorCode::InvalidParameter, m_label + ": " + message, m_label};
-  }
-
-  core::Status requireLink() const {
-    const LinkState link = status().link;
-    if (link == LinkState::Connected) return core::Done{};
-    return refuse(std::string("not connected (") + linkStateName(link) +
-                  "): nothing was sent; connect first or wait for the link to come back");
-  }
-
   std::future<core::Status> command(std::uint16_t code, const std::string& what, bool isUrgent) {
-    return m_worker.submit(
+    return m_link.submit(
         [code, what](ModbusPort& port) {
           return port.writeRegisters(rr::kCommand, {code}, "the " + what + " command (register 3)");
         },
@@ -212,55 +152,41 @@ class RotaryPlatform::Impl {
   }
 
   std::future<core::Status> urgent(std::uint16_t code, const std::string& what) {
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      m_motionExpected = false;
-    }
+    m_link.update([this](RotaryStatus&) { m_motionExpected = false; });
     return command(code, what, true);
   }
 
   // Worker thread.
   void expectMotion(double targetDegrees) {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_motionExpected = true;
-    m_expectedTarget = targetDegrees;
-    m_progressAngle = m_status.angleDegrees;
-    m_progressTime = Clock::now();
-  }
-
-  void noteError(const std::string& message) {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_status.lastError = message;
+    m_link.update([&](RotaryStatus& s) {
+      m_motionExpected = true;
+      m_expectedTarget = targetDegrees;
+      m_progressAngle = s.angleDegrees;
+      m_progressTime = Clock::now();
+    });
   }
 
   core::Status onConnected(ModbusPort& port) {
-    const auto timeout = static_cast<std::uint16_t>(m_options.controllerHeartbeatTimeout.count());
-    ++m_heartbeat;
-    auto result = port.writeRegisters(rr::kHeartbeat, {m_heartbeat, timeout},
-                                      "the heartbeat and its timeout (registers 4-5)");
+    auto result = m_link.writeHeartbeatAndTimeout(port, m_options.controllerHeartbeatTimeout);
     if (!result.ok()) return result;
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_status.polls = 0;
-    m_echoChanged = Clock::now();
-    m_haveEcho = false;
+    m_link.update([this](RotaryStatus& s) {
+      s.polls = 0;
+      m_echoChanged = Clock::now();
+      m_haveEcho = false;
+    });
     return core::Done{};
   }
 
   core::Status poll(ModbusPort& port) {
     std::uint16_t r[rr::kStatusBlockCount] = {};
-    auto result = port.readRegisters(rr::kStatusBlockFirst, rr::kStatusBlockCount, r, "the status (registers 0-12)");
-    if (!result.ok()) {
-      noteError(result.error().message);
-      publish();
-      return result;
-    }
+    auto result =
+        m_link.readStatusBlock(port, rr::kStatusBlockFirst, rr::kStatusBlockCount, r, "the status (registers 0-12)");
+    if (!result.ok()) return result;
     bool stall = false;
     double stallAngle = 0.0;
     double stallTarget = 0.0;
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
+    m_link.update([&](RotaryStatus& s) {
       const Clock::time_point now = Clock::now();
-      RotaryStatus& s = m_status;
       const std::uint16_t bits = r[rr::kStatus];
       s.targetAngleDegrees = regs::countsToDegrees(regs::getInt32(&r[rr::kTargetAngle]));
       s.angleDegrees = regs::countsToDegrees(regs::getInt32(&r[rr::kActualAngle]));
@@ -284,7 +210,7 @@ class RotaryPlatform::Impl {
       const auto aliveWindow = 3 * m_options.connection.heartbeatInterval + 2 * m_options.connection.pollInterval;
       const bool alive = now - m_echoChanged <= aliveWindow;
       if (s.controllerAlive && !alive)
-        s.lastError = m_label + " answers Modbus but its control loop stopped echoing the heartbeat (register 12 "
+        s.lastError = name() + " answers Modbus but its control loop stopped echoing the heartbeat (register 12 "
                       "unchanged for " + std::to_string(aliveWindow.count()) +
                       " ms): it may not stop on its own; power-cycle the controller";
       s.controllerAlive = alive;
@@ -305,8 +231,9 @@ class RotaryPlatform::Impl {
           m_motionExpected = false;
           s.fault = RotaryFault::Stall;
           s.stallDetectedByHost = true;
-          s.lastError = m_label + " did not move for " + std::to_string(m_options.stallTimeout.count()) +
-                        " ms while turning to " + degrees(stallTarget) + " degrees (stuck at " + degrees(stallAngle) +
+          s.lastError = name() + " did not move for " + std::to_string(m_options.stallTimeout.count()) +
+                        " ms while turning to " + degreesText(stallTarget) + " degrees (stuck at " +
+                        degreesText(stallAngle) +
                         "): the motor may be stalled or the platform blocked. MultiDir stopped it; remove the "
                         "obstruction, clear the fault and home again";
         }
@@ -314,26 +241,18 @@ class RotaryPlatform::Impl {
         m_progressAngle = s.angleDegrees;
         m_progressTime = now;
       }
-    }
+    });
     if (stall) {
       auto stopped = port.writeRegisters(rr::kCommand, {rr::kCmdStop}, "the stop command after a stall (register 3)");
-      if (!stopped.ok()) noteError(stopped.error().message);
+      if (!stopped.ok()) m_link.noteError(stopped.error().message);
     }
-    publish();
+    m_link.publish();
     return core::Done{};
   }
 
-  void publish() {
-    const RotaryStatus snapshot = status();
-    std::lock_guard<std::mutex> lock(m_callbackMutex);
-    if (m_callback) m_callback(snapshot);
-  }
-
   RotaryPlatformOptions m_options;
-  std::string m_label;
 
-  mutable std::mutex m_mutex;  // guards the fields below up to m_hostStall
-  RotaryStatus m_status;
+  // Guarded by m_link's status mutex: touched only inside m_link.update().
   bool m_motionExpected = false;
   double m_expectedTarget = 0.0;
   double m_progressAngle = 0.0;
@@ -343,11 +262,7 @@ class RotaryPlatform::Impl {
   std::uint16_t m_lastEcho = 0;
   bool m_haveEcho = false;
 
-  std::mutex m_callbackMutex;
-  StatusCallback m_callback;
-
-  std::uint16_t m_heartbeat = 0;  // worker thread only
-  LinkWorker m_worker;            // last: its thread uses everything above
+  DriverLink<RotaryStatus> m_link;  // last: its worker thread uses everything above
 };
 
 RotaryPlatform::RotaryPlatform(RotaryPlatformOptions options) : m_impl(std::make_unique<Impl>(std::move(options))) {}

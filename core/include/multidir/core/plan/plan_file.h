@@ -6,12 +6,14 @@
 // Folder layout written by savePlan:
 //   plan.json        schema "multidir-plan", version kPlanFormatVersion: metadata, planes, regions
 //   region-01.stl    the first region in printing order (binary STL, mm), region-02.stl, ...
+//   region-01-supports.stl   optional: the supports printed with region 1 (binary STL, mm), ...
 #include <string>
 
 #include "multidir/core/common/result.h"
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/search/machine.h"
 #include "multidir/core/search/search_options.h"
+#include "multidir/core/supports/support_set.h"
 
 namespace multidir::core {
 
@@ -33,6 +35,9 @@ struct LoadedPlan {
   PlanMetadata metadata;
   Decomposition decomposition;  // region meshes from the STLs (float precision), origins restored
   std::string directory;        // the plan's folder
+  // One per region in printing order (empty sets where a region has none); meshes rebuilt from the skeletons
+  // in plan.json at double precision.
+  std::vector<SupportSet> supports;
   int formatVersion = kPlanFormatVersion;
 };
 
@@ -47,6 +52,13 @@ struct LoadedPlan {
 // WriteFailed (the folder cannot be created or a file written; the message says which and why).
 Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const std::string& directory);
 
+// The same with supports: `supports` is empty (no supports) or holds one set per region in printing order.
+// A region with a non-empty set gets a `supports` field in plan.json (its skeleton and totals) and
+// region-NN-supports.stl (its solids), written before plan.json. Errors: as above; InvalidParameter when the
+// number of sets differs from the number of regions or a set's regionIndex is not its position.
+Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const std::vector<SupportSet>& supports,
+                const std::string& directory);
+
 // Reads a plan written by savePlan: give its folder or its plan.json. Every field is checked (schema and
 // version, types, ranges, unit vectors, counts, the region files and their triangle counts) and the first
 // violation is returned, naming the file and the field: "plan.json: regions[2].printingDirection is not a
@@ -54,7 +66,8 @@ Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const s
 // Errors: FileNotFound (plan.json or a region file missing), MalformedFile (invalid JSON or field),
 // InvalidParameter (a machine or search setting out of range), TooLarge, plus the region STLs' load errors
 // with the file named. Region meshes come back at float precision (binary STL); volumes and risky areas are
-// the stored values, not recomputed.
+// the stored values, not recomputed. Support STLs must exist and hold as many triangles as plan.json says;
+// the support meshes themselves are rebuilt from the skeletons stored in plan.json.
 Result<LoadedPlan> loadPlan(const std::string& directoryOrPlanJson);
 
 // A machine as a JSON file (schema "multidir-machine", version kMachineProfileVersion; docs/plan-format.md).

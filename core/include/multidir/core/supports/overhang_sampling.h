@@ -1,0 +1,34 @@
+#pragma once
+// Where supports must touch a region (the paper's Section V): uniform samples of its risky faces (face
+// overhangs), plus edges and vertices that hang lower than everything around them (edge and point overhangs).
+#include <vector>
+
+#include "multidir/core/supports/support_options.h"
+#include "multidir/core/mesh/triangle_mesh.h"
+
+namespace multidir::core {
+
+enum class OverhangKind { Face, Edge, Point };
+
+struct OverhangSample {
+  Vec3 position;            // on the mesh surface, mm
+  OverhangKind kind = OverhangKind::Face;
+  std::int32_t face = -1;   // a face of the mesh at the sample
+};
+
+// Samples of `mesh` printed along `printingDirection` (unit):
+//  - face overhangs: the part of each risky face above the supported band (as analyzeOverhang counts it),
+//    sampled on a square grid of spacing R perpendicular to the direction (grid lines through the origin,
+//    so neighbouring faces share one grid); a connected risky patch that no grid point hits gets one sample
+//    at the centroid of its largest face;
+//  - edge overhangs: an edge whose two faces both face down (but neither is risky), whose other corners
+//    both lie higher, and which itself rises less steeply than the faces may (|e.d| < cos alpha), sampled
+//    every R along it; edges of caps (cut faces, FaceOrigin::Cap) are left out;
+//  - point overhangs: a vertex lower along the direction than all its neighbours, unless a sample lies
+//    within R/2 already.
+// Everything within the supported band above the mesh's lowest level is left out.
+// Cost: O(F + samples). Errors: InvalidParameter (options, direction).
+Result<std::vector<OverhangSample>> sampleOverhangs(const TriangleMesh& mesh, const Vec3& printingDirection,
+                                                    const SupportOptions& options = {});
+
+}  // namespace multidir::core

@@ -1,0 +1,227 @@
+// The Hardware panel against the device simulator on 127.0.0.1 (ephemeral port): buttons pressed as an
+// operator would, outcomes read from the panel's labels and the simulator's own state.
+#include "ui/device/hardware_panel.h"
+
+#include <gtest/gtest.h>
+
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+#include <chrono>
+#include <memory>
+
+#include "multidir/hardware/device_simulator.h"
+#include "ui/device/connection_form.h"
+#include "ui/device/device_link.h"
+#include "ui/device/print_run_driver.h"
+
+namespace multidir::ui {
+namespace {
+
+using namespace std::chrono_literals;
+
+constexpr int kWaitMs = 5000;  // generous: the simulator answers within milliseconds
+
+hardware::ConnectionSettings fastSettings(int port) {
+  hardware::ConnectionSettings settings;
+  settings.tcp.host = "127.0.0.1";
+  settings.tcp.port = port;
+  settings.slaveId = 1;
+  settings.responseTimeout = 150ms;
+  settings.byteTimeout = 50ms;
+  settings.pollInterval = 10ms;
+  settings.heartbeatInterval = 30ms;
+  settings.reconnectInitialDelay = 20ms;
+  settings.reconnectMaxDelay = 200ms;
+  return settings;
+}
+
+QString degreesText(double value) { return QLocale().toString(value, 'f', 2) + QStringLiteral("°"); }
+
+class HardwarePanelTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(sim.start().ok());
+    core::MachineSpec profile;
+    profile.kind = core::MachineKind::RotaryPlatform;
+    profile.minAngleDegrees = -60.0;
+    profile.maxAngleDegrees = 60.0;
+    profile.angleStepDegrees = 1.0;
+    panel.setMachineProfile(profile);
+    panel.connectionForm()->setKind(DeviceKind::RotaryPlatform);
+    panel.connectionForm()->setSettings(fastSettings(sim.port()));
+    panel.connectionForm()->setRotarySpeedDegreesPerSecond(60.0);
+    hardware::PrintRunOptions runOptions;
+    runOptions.settleTime = 50ms;
+    panel.setPrintRunOptions(runOptions);
+    panel.resize(480, 1000);
+    panel.show();
+  }
+
+  QPushButton* buttonNamed(const char* name) {
+    auto* found = panel.findChild<QPushButton*>(QString::fromLatin1(name));
+    EXPECT_NE(found, nullptr) << name;
+    return found;
+  }
+  // Presses a button as the operator would: only an enabled button does anything.
+  void press(const char* name) {
+    QPushButton* target = buttonNamed(name);
+    ASSERT_NE(target, nullptr);
+    ASSERT_TRUE(target->isEnabled()) << name << " is disabled; message: " << panel.messageText().toStdString();
+    QTest::mouseClick(target, Qt::LeftButton);
+  }
+  QString label(const char* name) {
+    auto* found = panel.findChild<QLabel*>(QString::fromLatin1(name));
+    return found ? found->text() : QStringLiteral("<no label %1>").arg(QString::fromLatin1(name));
+  }
+  const DeviceSnapshot& snapshot() { return panel.deviceLink()->snapshot(); }
+
+  void connectPanel() {
+    press("connectButton");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().state == DeviceState::Connected; }, kWaitMs))
+        << panel.messageText().toStdString();
+    EXPECT_EQ(label("stateValue"), QStringLiteral("Connected"));
+  }
+  void enableAndHome() {
+    press("enableButton");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().enabled; }, kWaitMs)) << panel.messageText().toStdString();
+    press("homeButton");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().homed && !snapshot().homing; }, kWaitMs))
+        << panel.messageText().toStdString();
+    EXPECT_EQ(label("homedValue"), QStringLiteral("yes"));
+  }
+  void goTo(double angleDegrees) {
+    panel.findChild<QDoubleSpinBox*>(QStringLiteral("targetAngle"))->setValue(angleDegrees);
+    press("goToButton");
+  }
+
+  hardware::DeviceSimulator sim;
+  HardwarePanel panel;
+};
+
+TEST_F(HardwarePanelTest, HomeThenGoToShowsTheAngleReached) {
+  connectPanel();
+  enableAndHome();
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 0.0, 1e-9);
+
+  goTo(30.0);
+  ASSERT_TRUE(QTest::qWaitFor(
+      [&] { return snapshot().atTarget && !snapshot().moving && label("positionValue").startsWith(degreesText(30.0)); },
+      kWaitMs))
+      << label("positionValue").toStdString();
+  EXPECT_EQ(label("movingValue"), QStringLiteral("no"));
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 30.0, 1e-9);
+  EXPECT_FALSE(panel.messageIsError()) << panel.messageText().toStdString();
+  EXPECT_TRUE(QTest::qWaitFor([&] { return label("heartbeatValue").endsWith(QStringLiteral("s ago")); }, kWaitMs))
+      << label("heartbeatValue").toStdString();
+}
+
+TEST_F(HardwarePanelTest, AngleOutsideTheProfileIsRefusedAndNothingIsSent) {
+  connectPanel();
+  enableAndHome();
+  const std::uint64_t writesBefore = sim.commandWriteCount(hardware::SimulatedDevice::Rotary);
+
+  goTo(75.0);
+  // The refusal is shown before the click returns: nothing had to travel to the device.
+  EXPECT_TRUE(panel.messageIsError());
+  EXPECT_TRUE(panel.messageText().contains(QStringLiteral("refused"))) << panel.messageText().toStdString();
+  EXPECT_TRUE(panel.messageText().contains(QStringLiteral("outside"))) << panel.messageText().toStdString();
+
+  // Let the link run a few more polls: a command sent late would show up as a write by then.
+  const std::uint64_t polls = snapshot().polls;
+  ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().polls >= polls + 5; }, kWaitMs));
+  EXPECT_EQ(sim.commandWriteCount(hardware::SimulatedDevice::Rotary), writesBefore);
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 0.0, 1e-9);
+}
+
+TEST_F(HardwarePanelTest, EmergencyStopWhileMovingStopsTheMotion) {
+  panel.connectionForm()->setRotarySpeedDegreesPerSecond(20.0);  // slow enough to be caught mid-way
+  connectPanel();
+  enableAndHome();
+
+  goTo(60.0);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return sim.rotaryState().moving && snapshot().moving; }, kWaitMs));
+  EXPECT_TRUE(buttonNamed("estopButton")->isEnabled());
+  press("estopButton");
+
+  ASSERT_TRUE(QTest::qWaitFor([&] { return !sim.rotaryState().moving; }, kWaitMs));
+  const double stoppedAt = sim.rotaryState().angleDegrees;
+  EXPECT_LT(stoppedAt, 60.0);
+  EXPECT_EQ(sim.rotaryState().faultCode, 5);  // e-stop
+  ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().state == DeviceState::Fault; }, kWaitMs));
+  EXPECT_EQ(label("stateValue"), QStringLiteral("Fault"));
+  EXPECT_TRUE(label("faultValue").contains(QStringLiteral("emergency stop"))) << label("faultValue").toStdString();
+  EXPECT_FALSE(buttonNamed("goToButton")->isEnabled());
+  EXPECT_TRUE(buttonNamed("estopButton")->isEnabled());
+  // Still where it stopped a few polls later.
+  const std::uint64_t polls = snapshot().polls;
+  ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().polls >= polls + 5; }, kWaitMs));
+  EXPECT_DOUBLE_EQ(sim.rotaryState().angleDegrees, stoppedAt);
+}
+
+TEST_F(HardwarePanelTest, TwoRegionPlanRunsToTheEndWithRegionDonePressed) {
+  core::Decomposition plan;
+  plan.regions.resize(2);
+  plan.regions[0].angles.rotaryDegrees = 0.0;
+  plan.regions[1].angles.rotaryDegrees = 10.0;
+  panel.setPlan(plan);
+  EXPECT_EQ(panel.planRegionCount(), 2);
+  QSignalSpy regions(&panel, &HardwarePanel::currentRegionChanged);
+
+  connectPanel();
+  enableAndHome();
+  press("startRunButton");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.promptText().contains(QStringLiteral("region-01.stl")); }, kWaitMs))
+      << panel.messageText().toStdString();
+  EXPECT_TRUE(panel.promptText().startsWith(QStringLiteral("Print region 1 "))) << panel.promptText().toStdString();
+  press("regionDoneButton");
+
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.promptText().contains(QStringLiteral("region-02.stl")); }, kWaitMs))
+      << panel.messageText().toStdString();
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 10.0, 1e-9);
+  press("regionDoneButton");
+
+  EXPECT_EQ(panel.printRunDriver()->state(), hardware::PrintRunState::Completed);
+  EXPECT_TRUE(label("runStepText").contains(QStringLiteral("finished"))) << label("runStepText").toStdString();
+  EXPECT_TRUE(panel.promptText().isEmpty());
+  EXPECT_FALSE(buttonNamed("regionDoneButton")->isEnabled());
+  ASSERT_GE(regions.count(), 3);
+  EXPECT_EQ(regions.at(0).at(0).toInt(), 0);
+  EXPECT_EQ(regions.at(regions.count() - 2).at(0).toInt(), 1);
+  EXPECT_EQ(regions.last().at(0).toInt(), -1);
+}
+
+TEST_F(HardwarePanelTest, RobotArmTiltsThePlatformToTheOrientationAsked) {
+  panel.connectionForm()->setKind(DeviceKind::RobotArm);
+  hardware::ConnectionSettings settings = fastSettings(sim.port());
+  settings.slaveId = 255;
+  panel.connectionForm()->setSettings(settings);
+  panel.connectionForm()->setRobotSpeedPercent(100);
+  connectPanel();
+  EXPECT_FALSE(buttonNamed("enableButton")->isVisible());  // the robot program enables the arm itself
+
+  panel.findChild<QDoubleSpinBox*>(QStringLiteral("targetTilt"))->setValue(30.0);
+  panel.findChild<QDoubleSpinBox*>(QStringLiteral("targetAzimuth"))->setValue(45.0);
+  press("goToButton");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().atTarget && label("positionValue").contains(degreesText(30.0)); },
+                              kWaitMs))
+      << label("positionValue").toStdString() << " / " << panel.messageText().toStdString();
+  EXPECT_EQ(label("positionValue"), QStringLiteral("tilt %1, azimuth %2").arg(degreesText(30.0), degreesText(45.0)));
+  EXPECT_NEAR(sim.robotState().tiltDegrees, 30.0, 1e-9);
+  EXPECT_NEAR(sim.robotState().azimuthDegrees, 45.0, 1e-9);
+}
+
+TEST_F(HardwarePanelTest, CommandsWithoutAConnectionAreRefusedInThePanel) {
+  EXPECT_FALSE(buttonNamed("goToButton")->isEnabled());
+  EXPECT_FALSE(buttonNamed("estopButton")->isEnabled());
+  panel.deviceLink()->home();
+  EXPECT_TRUE(panel.messageIsError());
+  EXPECT_TRUE(panel.messageText().contains(QStringLiteral("not connected"))) << panel.messageText().toStdString();
+  EXPECT_EQ(sim.commandWriteCount(hardware::SimulatedDevice::Rotary), 0u);
+}
+
+}  // namespace
+}  // namespace multidir::ui

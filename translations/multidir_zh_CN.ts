@@ -1,0 +1,1071 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>multidir::ui::ErrorText</name>
+    <message>
+        <location filename="../ui/error_text.cpp" line="18"/>
+        <source>The file does not exist or cannot be read.</source>
+        <translation>文件不存在或无法读取。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="20"/>
+        <source>This file type is not supported: use STL, OBJ, OFF or PLY.</source>
+        <translation>不支持此文件类型：请使用 STL、OBJ、OFF 或 PLY。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="22"/>
+        <source>The file is damaged or does not follow its format.</source>
+        <translation>文件已损坏或不符合其格式。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="24"/>
+        <source>The model is larger than MultiDir accepts.</source>
+        <translation>模型超出了 MultiDir 可接受的大小。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="26"/>
+        <source>The file could not be written.</source>
+        <translation>无法写入文件。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="28"/>
+        <source>The file contains no triangles.</source>
+        <translation>文件不包含任何三角形。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="30"/>
+        <source>Some vertex coordinates are not numbers.</source>
+        <translation>部分顶点坐标不是数值。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="32"/>
+        <source>The surface is not a clean solid: some edges or vertices are shared by too many faces.</source>
+        <translation>表面不是干净的实体：某些边或顶点被过多的面共用。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="35"/>
+        <source>The surface has holes, so it does not enclose a solid. Close them in a mesh repair tool.</source>
+        <translation>表面有孔洞，因此不能围成实体。请用网格修复工具将其封闭。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="38"/>
+        <source>The faces of the surface point in inconsistent directions.</source>
+        <translation>表面的面朝向不一致。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="40"/>
+        <source>A setting is out of its allowed range.</source>
+        <translation>某项设置超出了允许范围。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="42"/>
+        <source>Cancelled.</source>
+        <translation>已取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="46"/>
+        <source>An internal error occurred: please report it with the model.</source>
+        <translation>发生内部错误：请连同模型一起报告。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::JgChart</name>
+    <message>
+        <location filename="../ui/panels/jg_chart.cpp" line="27"/>
+        <source>Level</source>
+        <translation>层级</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/jg_chart.cpp" line="32"/>
+        <source>Best J_G (mm²)</source>
+        <translation>最佳 J_G (mm²)</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::MachinePanel</name>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="26"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="42"/>
+        <source>3-DOF: fixed printing direction</source>
+        <translation>3 自由度：固定打印方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="43"/>
+        <source>4-DOF: rotary platform</source>
+        <translation>4 自由度：旋转平台</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
+        <source>5-DOF: tilting robot arm</source>
+        <translation>5 自由度：倾斜机械臂</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="47"/>
+        <source>Rotary platform (4-DOF)</source>
+        <translation>旋转平台（4 自由度）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="50"/>
+        <source>The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform plane (perpendicular to up)</source>
+        <translation>平台绕其旋转的轴，格式为 x,y,z 或 x、-y、+z；它必须位于平台平面内（垂直于向上方向）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="55"/>
+        <source>The stepper&apos;s resolution: only multiples of this angle can be reached</source>
+        <translation>步进电机的分辨率：只能到达该角度的整数倍</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
+        <source>Rotation axis:</source>
+        <translation>旋转轴：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="58"/>
+        <source>Minimal angle:</source>
+        <translation>最小角度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="59"/>
+        <source>Maximal angle:</source>
+        <translation>最大角度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="60"/>
+        <source>Angle step:</source>
+        <translation>角度步长：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
+        <source>Tilting arm (5-DOF)</source>
+        <translation>倾斜机械臂（5 自由度）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="64"/>
+        <source>How far the arm can tilt the platform away from up</source>
+        <translation>机械臂能将平台从向上方向倾斜的最大角度</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
+        <source>Tilt limit:</source>
+        <translation>倾斜极限：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
+        <source> mm</source>
+        <translation> 毫米</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="73"/>
+        <source>model footprint</source>
+        <translation>模型底面</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="75"/>
+        <source>Radius of the platform disc that no clipping plane may cut; 0 uses the model&apos;s footprint plus a margin</source>
+        <translation>任何切割平面都不得穿过的平台圆盘半径；0 表示使用模型底面加上边距</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="85"/>
+        <source>Machine:</source>
+        <translation>机器：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="86"/>
+        <source>Platform radius:</source>
+        <translation>平台半径：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="151"/>
+        <source>The rotation axis &quot;%1&quot; cannot be read: type three numbers x,y,z or an axis such as x or -y.</source>
+        <translation>无法识别旋转轴“%1”：请输入三个数 x,y,z，或 x、-y 这样的坐标轴。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="156"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::MainWindow</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="63"/>
+        <source>MultiDir Studio</source>
+        <translation>MultiDir Studio</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="86"/>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="87"/>
+        <source>&amp;Open...</source>
+        <translation>打开(&amp;O)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="89"/>
+        <source>Open a mesh file (STL, OBJ, OFF or PLY)</source>
+        <translation>打开网格文件（STL、OBJ、OFF 或 PLY）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="91"/>
+        <source>&amp;Samples</source>
+        <translation>示例(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="100"/>
+        <source>Open &amp;plan...</source>
+        <translation>打开方案(&amp;P)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="102"/>
+        <source>Show a plan saved earlier (a folder with plan.json)</source>
+        <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="103"/>
+        <source>&amp;Export plan...</source>
+        <translation>导出方案(&amp;E)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="105"/>
+        <source>Save the plan shown: plan.json and one STL per region</source>
+        <translation>保存当前方案：plan.json 以及每个区域一个 STL 文件</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="108"/>
+        <source>&amp;Load machine profile...</source>
+        <translation>加载机器配置(&amp;L)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="110"/>
+        <source>&amp;Save machine profile...</source>
+        <translation>保存机器配置(&amp;S)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="113"/>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="116"/>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="117"/>
+        <source>&amp;Fit to View</source>
+        <translation>适应视图(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="119"/>
+        <source>Show the &amp;model (hide the plan)</source>
+        <translation>显示模型(&amp;M)（隐藏方案）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="124"/>
+        <source>&amp;Search</source>
+        <translation>搜索(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="125"/>
+        <source>&amp;Run</source>
+        <translation>运行(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="127"/>
+        <source>&amp;Cancel</source>
+        <translation>取消(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="144"/>
+        <source>Overhangs</source>
+        <translation>悬垂</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="145"/>
+        <source>Machine</source>
+        <translation>机器</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="146"/>
+        <source>Search</source>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="147"/>
+        <source>Plan</source>
+        <translation>方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="172"/>
+        <source>Printing direction</source>
+        <translation>打印方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="175"/>
+        <source>Up:</source>
+        <translation>向上：</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="180"/>
+        <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
+        <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="185"/>
+        <source>+X</source>
+        <translation>+X</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="185"/>
+        <source>-X</source>
+        <translation>-X</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="186"/>
+        <source>+Y</source>
+        <translation>+Y</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="186"/>
+        <source>-Y</source>
+        <translation>-Y</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="187"/>
+        <source>+Z</source>
+        <translation>+Z</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="187"/>
+        <source>-Z</source>
+        <translation>-Z</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="228"/>
+        <source>Open Model</source>
+        <translation>打开模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="229"/>
+        <source>Meshes (*.stl *.obj *.off *.ply);;All files (*)</source>
+        <translation>网格 (*.stl *.obj *.off *.ply);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="245"/>
+        <source>Custom (%1, %2, %3)</source>
+        <translation>自定义（%1, %2, %3）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="266"/>
+        <source>%1 - MultiDir Studio</source>
+        <translation>%1 - MultiDir Studio</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="270"/>
+        <source>Repaired on load: %1</source>
+        <translation>加载时已修复：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="284"/>
+        <source>Could not open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="288"/>
+        <source>Could not open %1</source>
+        <translation>无法打开 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="292"/>
+        <source>%1 is still open.</source>
+        <translation>%1 仍处于打开状态。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="311"/>
+        <location filename="../ui/main_window.cpp" line="328"/>
+        <source>No model</source>
+        <translation>无模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="321"/>
+        <source>Triangles: %1</source>
+        <translation>三角形：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="322"/>
+        <source>Volume: %1 mm³</source>
+        <translation>体积：%1 mm³</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="336"/>
+        <source>Risky area unavailable</source>
+        <translation>风险面积不可用</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="344"/>
+        <source>Risky area (%1 up): %2 mm²</source>
+        <translation>风险面积（%1 向上）：%2 mm²</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="346"/>
+        <source>Area of the faces that overhang by more than %1° for this up direction</source>
+        <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="361"/>
+        <location filename="../ui/main_window.cpp" line="380"/>
+        <source>Open a model first.</source>
+        <translation>请先打开一个模型。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="363"/>
+        <source>Fix the machine first: %1</source>
+        <translation>请先修正机器设置：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="379"/>
+        <source>A search is already running.</source>
+        <translation>已有搜索正在运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="385"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="389"/>
+        <source>Cannot search: %1</source>
+        <translation>无法搜索：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="390"/>
+        <source>Cannot search.</source>
+        <translation>无法搜索。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="404"/>
+        <source>Searching %1...</source>
+        <translation>正在搜索 %1...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="412"/>
+        <source>Cancelling the search...</source>
+        <translation>正在取消搜索...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="420"/>
+        <source>The search result was dropped: the model or its up direction changed.</source>
+        <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="423"/>
+        <source>Search cancelled: showing the best plan found so far.</source>
+        <translation>搜索已取消：显示目前找到的最佳方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="424"/>
+        <source>Search finished.</source>
+        <translation>搜索完成。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="432"/>
+        <source>Search failed: %1</source>
+        <translation>搜索失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="459"/>
+        <source>There is no plan to export: run a search first.</source>
+        <translation>没有可导出的方案：请先运行搜索。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="473"/>
+        <source>Could not export the plan to %1: %2 (%3)</source>
+        <translation>无法将方案导出到 %1：%2（%3）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="476"/>
+        <source>Plan exported to %1.</source>
+        <translation>方案已导出到 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="483"/>
+        <source>Could not open the plan %1: %2 (%3)</source>
+        <translation>无法打开方案 %1：%2（%3）</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="528"/>
+        <source>Machine profile saved to %1.</source>
+        <translation>机器配置已保存到 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="540"/>
+        <source>Machine profile %1 loaded.</source>
+        <translation>已加载机器配置 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="545"/>
+        <source>Export Plan to Folder</source>
+        <translation>将方案导出到文件夹</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="548"/>
+        <source>Export Plan</source>
+        <translation>导出方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="552"/>
+        <source>Open Plan Folder</source>
+        <translation>打开方案文件夹</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="555"/>
+        <source>Open Plan</source>
+        <translation>打开方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="563"/>
+        <source>Save Machine Profile</source>
+        <translation>保存机器配置</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="560"/>
+        <source>Machine profiles (*.json)</source>
+        <translation>机器配置 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="567"/>
+        <location filename="../ui/main_window.cpp" line="571"/>
+        <source>Load Machine Profile</source>
+        <translation>加载机器配置</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="568"/>
+        <source>Machine profiles (*.json);;All files (*)</source>
+        <translation>机器配置 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="575"/>
+        <source>Loading %1...</source>
+        <translation>正在加载 %1...</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::ModelLoader</name>
+    <message>
+        <location filename="../ui/jobs/model_loader.cpp" line="50"/>
+        <source>Not enough memory to load this model.</source>
+        <translation>内存不足，无法加载此模型。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/model_loader.cpp" line="53"/>
+        <location filename="../ui/jobs/model_loader.cpp" line="57"/>
+        <source>Unexpected error while loading.</source>
+        <translation>加载时发生意外错误。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::OverhangPanel</name>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="25"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="29"/>
+        <source>Maximal self-supporting angle: faces that lean over by more than this from the printing direction need support</source>
+        <translation>最大自支撑角度：相对打印方向倾斜超过此角度的面需要支撑</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="58"/>
+        <source>Risky faces (need support when printed along the up direction)</source>
+        <translation>风险面（沿向上方向打印时需要支撑）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="61"/>
+        <source>Max. overhang angle α:</source>
+        <translation>最大悬垂角 α：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="62"/>
+        <source>Risky area:</source>
+        <translation>风险面积：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="63"/>
+        <source>Risky faces:</source>
+        <translation>风险面：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="68"/>
+        <source>No model</source>
+        <translation>无模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="76"/>
+        <source>%1 mm²</source>
+        <translation>%1 mm²</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="78"/>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/overhang_panel.cpp" line="83"/>
+        <source>unavailable</source>
+        <translation>不可用</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PlanPanel</name>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="45"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="156"/>
+        <source>No plan yet: run a search or open a plan.</source>
+        <translation>尚无方案：请运行搜索或打开方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <source>Region</source>
+        <translation>区域</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <source>Volume (mm³)</source>
+        <translation>体积 (mm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <source>Risky (mm²)</source>
+        <translation>风险 (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <source>Direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <source>Machine angles</source>
+        <translation>机器角度</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="60"/>
+        <source>Printing directions</source>
+        <translation>打印方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="63"/>
+        <source>Clipping planes</source>
+        <translation>切割平面</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="65"/>
+        <source>Turn the view as the machine turns the part</source>
+        <translation>随机器转动零件而旋转视图</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="70"/>
+        <source>Moves the regions apart along their printing directions</source>
+        <translation>沿各自打印方向将区域分开</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="77"/>
+        <source>Previous region</source>
+        <translation>上一个区域</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="80"/>
+        <source>Next region</source>
+        <translation>下一个区域</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="89"/>
+        <source>Show:</source>
+        <translation>显示：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="91"/>
+        <source>Exploded view:</source>
+        <translation>爆炸视图：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="92"/>
+        <source>Printed up to:</source>
+        <translation>打印到：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="126"/>
+        <source>none (fixed)</source>
+        <translation>无（固定）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="128"/>
+        <source>rotary %1°</source>
+        <translation>旋转 %1°</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="131"/>
+        <source>tilt %1°, azimuth %2°</source>
+        <translation>倾斜 %1°，方位角 %2°</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/plan_panel.cpp" line="137"/>
+        <source>%n region(s); J_G %1 mm² before, %2 mm² after.</source>
+        <translation>
+            <numerusform>%n 个区域；J_G 之前 %1 mm²，之后 %2 mm²。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="186"/>
+        <source>of %1</source>
+        <translation>共 %1</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SearchJob</name>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="91"/>
+        <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
+        <translation>内存不足，无法进行此搜索：请减小束宽或法向数量。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="94"/>
+        <location filename="../ui/jobs/search_job.cpp" line="98"/>
+        <source>Unexpected error during the search.</source>
+        <translation>搜索过程中发生意外错误。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SearchPanel</name>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="36"/>
+        <source>Beam search (Algorithm 1)</source>
+        <translation>束搜索（算法 1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="37"/>
+        <source>Constrained greedy</source>
+        <translation>受约束贪心</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="38"/>
+        <source>Greedy</source>
+        <translation>贪心</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="43"/>
+        <source>How many partial plans each level keeps (b)</source>
+        <translation>每一层保留的部分方案数量 (b)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="49"/>
+        <source>w: every region cut off keeps at least the model&apos;s volume divided by w</source>
+        <translation>w：每个切下的区域至少保留模型体积除以 w</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="54"/>
+        <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
+        <translation>在整个球面上采样的候选法向（5 自由度）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="59"/>
+        <source> mm</source>
+        <translation> 毫米</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="61"/>
+        <source>Distance between candidate planes along each normal</source>
+        <translation>沿每个法向的候选平面间距</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="66"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="68"/>
+        <source>Maximal self-supporting angle the search plans for</source>
+        <translation>搜索所依据的最大自支撑角度</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="73"/>
+        <source>machine&apos;s axis only</source>
+        <translation>仅机器自身的轴</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="74"/>
+        <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
+        <translation>4 自由度：另外尝试这么多分布在 180° 内的旋转轴，并保留最佳的</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="77"/>
+        <source>Scheme:</source>
+        <translation>方案类型：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="78"/>
+        <source>Beam width:</source>
+        <translation>束宽：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="79"/>
+        <source>Volume divisor w:</source>
+        <translation>体积除数 w：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="80"/>
+        <source>Normals:</source>
+        <translation>法向数：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="81"/>
+        <source>Offset step:</source>
+        <translation>偏移步长：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <source>Max. overhang angle α:</source>
+        <translation>最大悬垂角 α：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="83"/>
+        <source>Axes to try:</source>
+        <translation>尝试的轴数：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="86"/>
+        <source>&amp;Run search</source>
+        <translation>运行搜索(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="89"/>
+        <source>&amp;Cancel</source>
+        <translation>取消(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="104"/>
+        <source>Progress</source>
+        <translation>进度</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="112"/>
+        <source>Level:</source>
+        <translation>层级：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="113"/>
+        <source>Beams alive:</source>
+        <translation>存活束：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="114"/>
+        <source>Best J_G:</source>
+        <translation>最佳 J_G：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="115"/>
+        <source>Candidates scored:</source>
+        <translation>已评估候选：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="136"/>
+        <source>Open a model first.</source>
+        <translation>请先打开一个模型。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="174"/>
+        <source>Search for clipping planes that make the model printable with less support</source>
+        <translation>搜索能让模型以更少支撑打印的切割平面</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="192"/>
+        <source>Starting...</source>
+        <translation>正在启动...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="195"/>
+        <location filename="../ui/panels/search_panel.cpp" line="214"/>
+        <location filename="../ui/panels/search_panel.cpp" line="228"/>
+        <source>%1 mm²</source>
+        <translation>%1 mm²</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="211"/>
+        <source>%1 (axis %2 of %3)</source>
+        <translation>%1（第 %2 / %3 个轴）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="221"/>
+        <source>Cancelling: keeping the best plan so far...</source>
+        <translation>正在取消：保留目前的最佳方案...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="227"/>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="227"/>
+        <source>Done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="233"/>
+        <source>Cancelled: showing the best plan found so far.</source>
+        <translation>已取消：显示目前找到的最佳方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="237"/>
+        <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
+        <translation>没有改进：没有切割平面能减少风险面积（J_G 仍为 %1 mm²）。请尝试更多法向、更小的偏移步长、更大的 w 或其他机器。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/search_panel.cpp" line="242"/>
+        <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
+        <translation>
+            <numerusform>并非无支撑：仍有 %1 mm² 需要支撑（原为 %2 mm²），共 %n 个区域。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/search_panel.cpp" line="246"/>
+        <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
+        <translation>
+            <numerusform>分为 %n 个区域后无需支撑（J_G 原为 %1 mm²）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="254"/>
+        <source>Failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="255"/>
+        <source>%1
+%2</source>
+        <translation>%1
+%2</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::StudioStartup</name>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="62"/>
+        <source>MultiDir Studio: plans multi-directional 3D prints.</source>
+        <translation>MultiDir Studio：规划多方向 3D 打印。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="66"/>
+        <source>Printing (up) direction of the model: x, -y, +z or a,b,c. Default: +z.</source>
+        <translation>模型的打印（向上）方向：x、-y、+z 或 a,b,c。默认：+z。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="67"/>
+        <source>direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <source>Render the window to this PNG file and quit.</source>
+        <translation>将窗口渲染到此 PNG 文件后退出。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="70"/>
+        <source>Language of the user interface: de, zh_CN or en.</source>
+        <translation>界面语言：de、zh_CN 或 en。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="71"/>
+        <source>language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="73"/>
+        <source>Run a search with the default settings once the model is shown.</source>
+        <translation>模型显示后立即以默认设置运行搜索。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="74"/>
+        <source>Maximal overhang angle in degrees (0-89).</source>
+        <translation>最大悬垂角，单位为度（0-89）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="75"/>
+        <source>degrees</source>
+        <translation>度</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="82"/>
+        <source>Mesh file to open (.stl .obj .off .ply). Default: the first sample.</source>
+        <translation>要打开的网格文件（.stl .obj .off .ply）。默认：第一个示例。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="83"/>
+        <source>[model]</source>
+        <translation>[模型]</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="88"/>
+        <source>Try --help for usage.</source>
+        <translation>使用 --help 查看用法。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="103"/>
+        <source>Give at most one model; got %1.</source>
+        <translation>最多只能指定一个模型；收到 %1 个。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="107"/>
+        <source>--up: %1</source>
+        <translation>--up：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="113"/>
+        <source>--lang: &apos;%1&apos; is not available; use de, zh_CN or en.</source>
+        <translation>--lang：“%1”不可用；请使用 de、zh_CN 或 en。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="120"/>
+        <source>--alpha must be a number from 0 to 89.</source>
+        <translation>--alpha 必须是 0 到 89 之间的数。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="125"/>
+        <source>--screenshot needs a file name.</source>
+        <translation>--screenshot 需要一个文件名。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="196"/>
+        <source>The model did not finish loading within %1 s.</source>
+        <translation>模型未在 %1 秒内加载完成。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="202"/>
+        <source>The search did not finish within %1 s.</source>
+        <translation>搜索未在 %1 秒内完成。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="212"/>
+        <source>Could not write the screenshot to %1.</source>
+        <translation>无法将截图写入 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="216"/>
+        <source>No model is shown; the screenshot %1 shows the empty window.</source>
+        <translation>未显示任何模型；截图 %1 显示的是空窗口。</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,147 @@
+#pragma once
+// The Hardware panel: connect to the rotary platform or the robot arm, watch its live status, move it by
+// hand (enable, home, jog, go to, stop, E-STOP), and run a plan region by region with the operator.
+//
+// Threads: GUI thread only. The device's status reaches the panel as queued signals from DeviceLink (the
+// panel reads only the last snapshot); the print run is ticked by PrintRunDriver's timer. Errors (refusals,
+// timeouts, faults) are shown in the panel in plain words, never in a modal dialog.
+//
+// Limits: commands are checked by the driver against the machine profile given with setMachineProfile()
+// when it fits the device (a rotary platform profile for the platform, a tilt-rotate one for the arm),
+// otherwise against a default profile of the device's kind; the choice is made at Connect.
+#include <QString>
+#include <QTimer>
+#include <QWidget>
+#include <optional>
+#include <vector>
+
+#include "multidir/core/search/decomposition.h"
+#include "multidir/hardware/print_run.h"
+#include "ui/device/device_snapshot.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+class QPlainTextEdit;
+class QPushButton;
+
+namespace multidir::ui {
+
+class ConnectionForm;
+class DeviceLink;
+class PrintRunDriver;
+
+class HardwarePanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit HardwarePanel(QWidget* parent = nullptr);
+  ~HardwarePanel() override;
+  HardwarePanel(const HardwarePanel&) = delete;
+  HardwarePanel& operator=(const HardwarePanel&) = delete;
+
+  [[nodiscard]] DeviceLink* deviceLink() const { return m_link; }
+  [[nodiscard]] PrintRunDriver* printRunDriver() const { return m_run; }
+  [[nodiscard]] ConnectionForm* connectionForm() const { return m_form; }
+  // The latest outcome or problem shown under the controls.
+  [[nodiscard]] QString messageText() const;
+  [[nodiscard]] bool messageIsError() const { return m_messageIsError; }
+  // The operator prompt of the print run ("Print region 1 (file region-01.stl), then press Region done.").
+  [[nodiscard]] QString promptText() const;
+  // The limits the next Connect uses (see the header comment).
+  [[nodiscard]] core::MachineSpec machineForNextConnection() const;
+  [[nodiscard]] int planRegionCount() const { return static_cast<int>(m_planAngles.size()); }
+  // Options of the next print run (settle time, move timeout, clocks).
+  void setPrintRunOptions(const hardware::PrintRunOptions& options) { m_runOptions = options; }
+
+ public slots:
+  void setMachineProfile(const core::MachineSpec& profile);
+  // The plan to run (its regions' machine angles); replaces the previous one for the next run.
+  void setPlan(const core::Decomposition& plan);
+  void clearPlan();
+  // The Connect and Disconnect buttons.
+  void connectDevice();
+  void disconnectDevice();
+
+ signals:
+  // The region (index from 0) the run is at, for the viewer to highlight; -1 when no run is under way.
+  void currentRegionChanged(int region);
+  // Connect was pressed; emitted before the machine profile is read, so a direct connection can still
+  // send the latest one with setMachineProfile().
+  void connectRequested();
+
+ private:
+  QGroupBox* buildConnectionGroup();
+  QGroupBox* buildStatusGroup();
+  QGroupBox* buildControlsGroup();
+  QGroupBox* buildRunGroup();
+  void onSnapshot(const DeviceSnapshot& snapshot);
+  void onCommandFinished(const QString& command, bool ok, const QString& problem);
+  void onConnectFinished(bool connected, const QString& problem);
+  void onRunStateChanged(hardware::PrintRunState state);
+  void onPrintRequested(int region, const QString& regionFile);
+  void jog(double direction);
+  void goTo();
+  void startRun();
+  void runEvent(const QString& event, const core::Status& status);
+  void setMessage(const QString& text, bool error);
+  void updateLimits();
+  void updateKindWidgets();
+  void updateControls();
+  void updateClockTexts();
+  void updateRunTexts();
+
+  DeviceLink* m_link = nullptr;
+  PrintRunDriver* m_run = nullptr;
+  ConnectionForm* m_form = nullptr;
+  QLabel* m_limits = nullptr;
+  QPushButton* m_connect = nullptr;
+  QPushButton* m_disconnect = nullptr;
+
+  QLabel* m_state = nullptr;
+  QLabel* m_position = nullptr;
+  QLabel* m_moving = nullptr;
+  QLabel* m_homed = nullptr;
+  QLabel* m_fault = nullptr;
+  QLabel* m_heartbeat = nullptr;
+  QLabel* m_linkProblem = nullptr;
+
+  QPushButton* m_enable = nullptr;
+  QPushButton* m_home = nullptr;
+  QPushButton* m_clearFault = nullptr;
+  QDoubleSpinBox* m_jogStep = nullptr;
+  QComboBox* m_jogAxis = nullptr;
+  QPushButton* m_jogMinus = nullptr;
+  QPushButton* m_jogPlus = nullptr;
+  QDoubleSpinBox* m_targetAngle = nullptr;
+  QDoubleSpinBox* m_targetTilt = nullptr;
+  QDoubleSpinBox* m_targetAzimuth = nullptr;
+  QLabel* m_targetAngleLabel = nullptr;
+  QLabel* m_targetTiltLabel = nullptr;
+  QLabel* m_targetAzimuthLabel = nullptr;
+  QPushButton* m_goTo = nullptr;
+  QPushButton* m_stop = nullptr;
+  QPushButton* m_estop = nullptr;
+  QLabel* m_message = nullptr;
+  bool m_messageIsError = false;
+
+  QLabel* m_planSummary = nullptr;
+  QPushButton* m_startRun = nullptr;
+  QLabel* m_runStep = nullptr;
+  QLabel* m_runElapsed = nullptr;
+  QLabel* m_prompt = nullptr;
+  QPushButton* m_regionDone = nullptr;
+  QPushButton* m_pause = nullptr;
+  QPushButton* m_resume = nullptr;
+  QPushButton* m_abort = nullptr;
+  QPlainTextEdit* m_runLog = nullptr;
+
+  QTimer m_clockTimer;  // refreshes the heartbeat age and the run's elapsed time from the last snapshot
+  std::optional<core::MachineSpec> m_profile;
+  bool m_linkUsesProfile = false;  // the open link's limits are the profile's (not defaults)
+  std::vector<core::MachineAngles> m_planAngles;
+  hardware::PrintRunOptions m_runOptions;
+};
+
+}  // namespace multidir::ui

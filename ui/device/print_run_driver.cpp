@@ -1,0 +1,135 @@
+#include "ui/device/print_run_driver.h"
+
+#include <utility>
+
+namespace multidir::ui {
+namespace {
+
+bool isFinal(hardware::PrintRunState state) {
+  return state == hardware::PrintRunState::Completed || state == hardware::PrintRunState::Aborted;
+}
+
+core::Error noRun() {
+  return core::Error{core::ErrorCode::InvalidParameter, "no print run has been started", "print run"};
+}
+
+}  // namespace
+
+PrintRunDriver::PrintRunDriver(QObject* parent) : QObject(parent) {
+  m_timer.setInterval(50);
+  connect(&m_timer, &QTimer::timeout, this, &PrintRunDriver::tick);
+}
+
+PrintRunDriver::~PrintRunDriver() {
+  // Leave no platform turning towards a region nobody will print.
+  if (isActive()) (void)m_run->abort();
+}
+
+core::Status PrintRunDriver::start(std::shared_ptr<hardware::Positioner> positioner,
+                                   std::vector<hardware::PrintStep> steps, hardware::PrintRunOptions options) {
+  if (isActive())
+    return core::Error{core::ErrorCode::InvalidParameter, "a print run is under way: abort it first", "print run"};
+  if (!positioner) return core::Error{core::ErrorCode::InvalidParameter, "no device is connected", "print run"};
+  if (steps.empty()) return core::Error{core::ErrorCode::InvalidParameter, "the plan has no regions", "print run"};
+  auto run = std::make_unique<hardware::PrintRun>(*positioner, std::move(steps), std::move(options));
+  run->setLogCallback([this](const hardware::PrintRunLogEntry& entry) {
+    const long long seconds = entry.elapsed.count() / 1000;
+    emit logged(QStringLiteral("%1:%2 %3")
+                    .arg(seconds / 60, 2, 10, QLatin1Char('0'))
+                    .arg(seconds % 60, 2, 10, QLatin1Char('0'))
+                    .arg(QString::fromStdString(entry.message)));
+  });
+  run->setPrintRequestCallback([this](std::size_t step, const hardware::PrintStep& printStep) {
+    emit printRequested(static_cast<int>(step), QString::fromStdString(printStep.regionFile));
+  });
+  // The old run (if any) ended; it still refers to its positioner, so it goes first.
+  m_run.reset();
+  m_positioner = std::move(positioner);
+  m_run = std::move(run);
+  m_lastState = hardware::PrintRunState::Idle;
+  m_frozenElapsed = std::chrono::milliseconds(0);
+  m_clock.start();
+  const core::Status started = m_run->start();
+  afterEvent();
+  return started;
+}
+
+core::Status PrintRunDriver::regionDone() {
+  if (!m_run) return noRun();
+  const core::Status status = m_run->regionDone(m_run->currentStep());
+  afterEvent();
+  return status;
+}
+
+core::Status PrintRunDriver::pause() {
+  if (!m_run) return noRun();
+  const core::Status status = m_run->pause();
+  afterEvent();
+  return status;
+}
+
+core::Status PrintRunDriver::resume() {
+  if (!m_run) return noRun();
+  const core::Status status = m_run->resume();
+  afterEvent();
+  return status;
+}
+
+core::Status PrintRunDriver::abort() {
+  if (!m_run) return noRun();
+  const core::Status status = m_run->abort();
+  afterEvent();
+  return status;
+}
+
+bool PrintRunDriver::isActive() const { return m_run && !isFinal(m_run->state()); }
+
+hardware::PrintRunState PrintRunDriver::state() const { return m_run ? m_run->state() : hardware::PrintRunState::Idle; }
+
+std::size_t PrintRunDriver::currentStep() const { return m_run ? m_run->currentStep() : 0; }
+
+std::size_t PrintRunDriver::stepCount() const { return m_run ? m_run->steps().size() : 0; }
+
+const hardware::PrintStep* PrintRunDriver::currentPrintStep() const {
+  if (!m_run || m_run->currentStep() >= m_run->steps().size()) return nullptr;
+  return &m_run->steps()[m_run->currentStep()];
+}
+
+std::chrono::milliseconds PrintRunDriver::elapsed() const {
+  if (!m_run) return std::chrono::milliseconds(0);
+  if (!isActive()) return m_frozenElapsed;
+  return std::chrono::milliseconds(m_clock.elapsed());
+}
+
+QString PrintRunDriver::lastProblem() const { return m_run ? QString::fromStdString(m_run->lastProblem()) : QString(); }
+
+void PrintRunDriver::setTickInterval(std::chrono::milliseconds interval) {
+  m_timer.setInterval(static_cast<int>(interval.count()));
+}
+
+void PrintRunDriver::tick() {
+  if (!m_run) return;
+  m_run->tick();
+  afterEvent();
+}
+
+void PrintRunDriver::afterEvent() {
+  const hardware::PrintRunState state = m_run->state();
+  const bool active = !isFinal(state);
+  if (active && !m_timer.isActive()) m_timer.start();
+  if (!active) {
+    m_timer.stop();
+    if (!isFinal(m_lastState)) m_frozenElapsed = std::chrono::milliseconds(m_clock.elapsed());
+  }
+  const int region = active ? static_cast<int>(m_run->currentStep()) : -1;
+  if (state != m_lastState) {
+    m_lastState = state;
+    emit stateChanged(state);
+  }
+  if (region != m_lastRegion) {
+    m_lastRegion = region;
+    emit currentRegionChanged(region);
+  }
+}
+
+}  // namespace multidir::ui

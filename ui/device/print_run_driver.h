@@ -1,0 +1,80 @@
+#pragma once
+// Drives the print-run sequencer (hardware::PrintRun) from the GUI thread: a timer calls tick() while a run
+// is under way, operator events go straight to the sequencer, and its callbacks become signals. The
+// positioner is held (shared) for the run's lifetime, so the device's driver outlives the run even when the
+// panel disconnects mid-run (the run then sees the link down and faults).
+//
+// Thread: GUI thread only, like PrintRun itself.
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "multidir/core/common/result.h"
+#include "multidir/hardware/print_run.h"
+
+namespace multidir::ui {
+
+class PrintRunDriver : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit PrintRunDriver(QObject* parent = nullptr);
+  ~PrintRunDriver() override;
+  PrintRunDriver(const PrintRunDriver&) = delete;
+  PrintRunDriver& operator=(const PrintRunDriver&) = delete;
+
+  // Starts a new run of `steps` on `positioner` (a finished run is replaced). InvalidParameter when a run is
+  // still under way, there is no positioner or no step; the sequencer's own refusal otherwise.
+  core::Status start(std::shared_ptr<hardware::Positioner> positioner, std::vector<hardware::PrintStep> steps,
+                     hardware::PrintRunOptions options = {});
+  // Operator events, forwarded to the sequencer (see the transition table in hardware/print_run.h).
+  core::Status regionDone();  // for the current step
+  core::Status pause();
+  core::Status resume();
+  core::Status abort();
+
+  [[nodiscard]] bool hasRun() const { return m_run != nullptr; }
+  // Under way: started and neither Completed nor Aborted.
+  [[nodiscard]] bool isActive() const;
+  [[nodiscard]] hardware::PrintRunState state() const;
+  [[nodiscard]] std::size_t currentStep() const;
+  [[nodiscard]] std::size_t stepCount() const;
+  // A pause was asked for while printing: the run stops before the next move.
+  [[nodiscard]] bool pausePending() const { return m_run && m_run->pausePending(); }
+  [[nodiscard]] const hardware::PrintStep* currentPrintStep() const;
+  // Since start(), frozen once the run ended.
+  [[nodiscard]] std::chrono::milliseconds elapsed() const;
+  [[nodiscard]] QString lastProblem() const;
+  // How often tick() runs (50 ms by default).
+  void setTickInterval(std::chrono::milliseconds interval);
+
+ signals:
+  void stateChanged(hardware::PrintRunState state);
+  // The region (index from 0) the platform is oriented for or moving to; -1 when no run is under way.
+  void currentRegionChanged(int region);
+  // Region `region` may be printed now (from its file); the operator presses Region done afterwards.
+  void printRequested(int region, const QString& regionFile);
+  // One line per sequencer transition, "00:12 step 2/3 (region-02.stl): ... reached".
+  void logged(const QString& line);
+
+ private:
+  void tick();
+  void afterEvent();
+
+  std::shared_ptr<hardware::Positioner> m_positioner;
+  std::unique_ptr<hardware::PrintRun> m_run;
+  QTimer m_timer;
+  QElapsedTimer m_clock;
+  std::chrono::milliseconds m_frozenElapsed{0};
+  hardware::PrintRunState m_lastState = hardware::PrintRunState::Idle;
+  int m_lastRegion = -1;
+};
+
+}  // namespace multidir::ui
+
+Q_DECLARE_METATYPE(multidir::hardware::PrintRunState)

@@ -1,0 +1,41 @@
+#pragma once
+// The Overhangs panel: the maximal self-supporting angle alpha_max (slider and spin box, 0-89 degrees,
+// default 45) and what it means for the model at the current up direction: the risky area in mm^2 and the
+// number of risky faces.
+#include <QWidget>
+#include <cstddef>
+
+class QLabel;
+class QSlider;
+class QSpinBox;
+
+namespace multidir::ui {
+
+class OverhangPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit OverhangPanel(QWidget* parent = nullptr);
+
+  [[nodiscard]] int alphaMaxDegrees() const;
+  // Moves the slider and spin box (emits alphaMaxChanged when the value changes).
+  void setAlphaMaxDegrees(int degrees);
+
+  // What the analysis found; `riskyFaces` of `faces` faces.
+  void showResult(double riskyAreaMm2, std::size_t riskyFaces, std::size_t faces);
+  // No model, or the analysis failed (`reason`, shown as it is).
+  void showUnavailable(const QString& reason);
+  // The risky area exactly as the panel shows it, e.g. "1,234.5 mm²".
+  [[nodiscard]] QString riskyAreaText() const;
+
+ signals:
+  void alphaMaxChanged(int degrees);
+
+ private:
+  QSlider* m_slider = nullptr;
+  QSpinBox* m_spin = nullptr;
+  QLabel* m_area = nullptr;
+  QLabel* m_faces = nullptr;
+};
+
+}  // namespace multidir::ui

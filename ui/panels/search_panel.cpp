@@ -1,0 +1,275 @@
+#include "ui/panels/search_panel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "ui/panels/jg_chart.h"
+
+namespace multidir::ui {
+namespace {
+
+QString area(double mm2) { return QLocale().toString(mm2, 'f', 1); }
+
+// J_G below this counts as zero: a plan is support-free when what is left is numerical dust.
+constexpr double kSupportFreeMm2 = 1e-6;
+
+}  // namespace
+
+SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
+  setObjectName(QStringLiteral("searchPanel"));
+  const core::SearchOptions defaults;
+  m_hidden = defaults;
+
+  m_scheme = new QComboBox(this);
+  m_scheme->setObjectName(QStringLiteral("scheme"));
+  m_scheme->addItem(tr("Beam search (Algorithm 1)"), static_cast<int>(core::SearchScheme::Beam));
+  m_scheme->addItem(tr("Constrained greedy"), static_cast<int>(core::SearchScheme::ConstrainedGreedy));
+  m_scheme->addItem(tr("Greedy"), static_cast<int>(core::SearchScheme::Greedy));
+  m_beamWidth = new QSpinBox(this);
+  m_beamWidth->setObjectName(QStringLiteral("beamWidth"));
+  m_beamWidth->setRange(1, 200);
+  m_beamWidth->setValue(defaults.beamWidth);
+  m_beamWidth->setToolTip(tr("How many partial plans each level keeps (b)"));
+  m_minVolumeDivisor = new QDoubleSpinBox(this);
+  m_minVolumeDivisor->setObjectName(QStringLiteral("minVolumeDivisor"));
+  m_minVolumeDivisor->setRange(1.0, 1000.0);
+  m_minVolumeDivisor->setDecimals(1);
+  m_minVolumeDivisor->setValue(defaults.minVolumeDivisor);
+  m_minVolumeDivisor->setToolTip(tr("w: every region cut off keeps at least the model's volume divided by w"));
+  m_normals = new QSpinBox(this);
+  m_normals->setObjectName(QStringLiteral("normals"));
+  m_normals->setRange(1, 5000);
+  m_normals->setValue(defaults.candidates.normalSamples);
+  m_normals->setToolTip(tr("Candidate normals sampled on the whole sphere (5-DOF)"));
+  m_offsetStep = new QDoubleSpinBox(this);
+  m_offsetStep->setObjectName(QStringLiteral("offsetStep"));
+  m_offsetStep->setRange(0.05, 100.0);
+  m_offsetStep->setDecimals(2);
+  m_offsetStep->setSuffix(tr(" mm"));
+  m_offsetStep->setValue(defaults.candidates.offsetStepMm);
+  m_offsetStep->setToolTip(tr("Distance between candidate planes along each normal"));
+  m_alpha = new QDoubleSpinBox(this);
+  m_alpha->setObjectName(QStringLiteral("searchAlpha"));
+  m_alpha->setRange(0.0, 89.0);
+  m_alpha->setDecimals(1);
+  m_alpha->setSuffix(tr("°"));
+  m_alpha->setValue(defaults.alphaMaxDegrees);
+  m_alpha->setToolTip(tr("Maximal self-supporting angle the search plans for"));
+  m_axisCount = new QSpinBox(this);
+  m_axisCount->setObjectName(QStringLiteral("axisCount"));
+  m_axisCount->setRange(0, 180);
+  m_axisCount->setValue(0);
+  m_axisCount->setSpecialValueText(tr("machine's axis only"));
+  m_axisCount->setToolTip(tr("4-DOF: also try this many rotation axes spread over 180° and keep the best"));
+
+  auto* form = new QFormLayout;
+  form->addRow(tr("Scheme:"), m_scheme);
+  form->addRow(tr("Beam width:"), m_beamWidth);
+  form->addRow(tr("Volume divisor w:"), m_minVolumeDivisor);
+  form->addRow(tr("Normals:"), m_normals);
+  form->addRow(tr("Offset step:"), m_offsetStep);
+  form->addRow(tr("Max. overhang angle α:"), m_alpha);
+  m_axisCountLabel = new QLabel(tr("Axes to try:"), this);
+  form->addRow(m_axisCountLabel, m_axisCount);
+
+  m_run = new QPushButton(tr("&Run search"), this);
+  m_run->setObjectName(QStringLiteral("runSearch"));
+  m_run->setDefault(true);
+  m_cancel = new QPushButton(tr("&Cancel"), this);
+  m_cancel->setObjectName(QStringLiteral("cancelSearch"));
+  m_cancel->setEnabled(false);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(m_run, 1);
+  buttons->addWidget(m_cancel);
+  connect(m_run, &QPushButton::clicked, this, &SearchPanel::runClicked);
+  connect(m_cancel, &QPushButton::clicked, this, &SearchPanel::cancelClicked);
+
+  m_progress = new QProgressBar(this);
+  m_progress->setObjectName(QStringLiteral("searchProgress"));
+  m_progress->setRange(0, 1000);
+  m_progress->setValue(0);
+  m_progress->setFormat(QStringLiteral("%p%"));
+
+  auto* readout = new QGroupBox(tr("Progress"), this);
+  auto* grid = new QGridLayout(readout);
+  m_level = new QLabel(QStringLiteral("-"), readout);
+  m_beams = new QLabel(QStringLiteral("-"), readout);
+  m_bestJg = new QLabel(QStringLiteral("-"), readout);
+  m_candidates = new QLabel(QStringLiteral("-"), readout);
+  m_bestJg->setObjectName(QStringLiteral("bestJg"));
+  int row = 0;
+  for (const auto& [label, value] : {std::pair<QString, QLabel*>{tr("Level:"), m_level},
+                                     {tr("Beams alive:"), m_beams},
+                                     {tr("Best J_G:"), m_bestJg},
+                                     {tr("Candidates scored:"), m_candidates}}) {
+    grid->addWidget(new QLabel(label, readout), row, 0);
+    grid->addWidget(value, row, 1);
+    value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    ++row;
+  }
+  m_chart = new JgChart(readout);
+  grid->addWidget(m_chart, row, 0, 1, 2);
+
+  m_notice = new QLabel(this);
+  m_notice->setObjectName(QStringLiteral("searchNotice"));
+  m_notice->setWordWrap(true);
+  m_notice->hide();
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(form);
+  layout->addLayout(buttons);
+  layout->addWidget(m_progress);
+  layout->addWidget(m_notice);
+  layout->addWidget(readout, 1);
+  setRotaryMachine(false);
+  setRunnable(false, tr("Open a model first."));
+}
+
+core::SearchOptions SearchPanel::searchOptions() const {
+  core::SearchOptions options = m_hidden;
+  options.scheme = static_cast<core::SearchScheme>(m_scheme->currentData().toInt());
+  options.beamWidth = m_beamWidth->value();
+  options.minVolumeDivisor = m_minVolumeDivisor->value();
+  options.candidates.normalSamples = m_normals->value();
+  options.candidates.offsetStepMm = m_offsetStep->value();
+  options.alphaMaxDegrees = m_alpha->value();
+  return options;
+}
+
+void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
+  m_hidden = options;
+  for (int i = 0; i < m_scheme->count(); ++i) {
+    if (m_scheme->itemData(i).toInt() == static_cast<int>(options.scheme)) m_scheme->setCurrentIndex(i);
+  }
+  m_beamWidth->setValue(options.beamWidth);
+  m_minVolumeDivisor->setValue(options.minVolumeDivisor);
+  m_normals->setValue(options.candidates.normalSamples);
+  m_offsetStep->setValue(options.candidates.offsetStepMm);
+  m_alpha->setValue(options.alphaMaxDegrees);
+}
+
+int SearchPanel::axisSearchCount() const { return m_axisCount->isEnabled() ? m_axisCount->value() : 0; }
+
+void SearchPanel::setAxisSearchCount(int count) { m_axisCount->setValue(count); }
+
+void SearchPanel::setRotaryMachine(bool rotary) {
+  m_axisCount->setEnabled(rotary);
+  m_axisCountLabel->setEnabled(rotary);
+}
+
+void SearchPanel::setRunnable(bool runnable, const QString& reason) {
+  m_runnable = runnable;
+  m_run->setEnabled(runnable && !m_running);
+  m_run->setToolTip(runnable ? tr("Search for clipping planes that make the model printable with less support")
+                             : reason);
+}
+
+void SearchPanel::setRunning(bool running) {
+  m_running = running;
+  m_run->setEnabled(m_runnable && !running);
+  m_cancel->setEnabled(running);
+  for (QWidget* w : std::initializer_list<QWidget*>{m_scheme, m_beamWidth, m_minVolumeDivisor, m_normals,
+                                                    m_offsetStep, m_alpha}) {
+    w->setEnabled(!running);
+  }
+}
+
+void SearchPanel::searchStarted(double jgBeforeMm2) {
+  m_jgBefore = jgBeforeMm2;
+  setRunning(true);
+  m_progress->setValue(0);
+  m_progress->setFormat(tr("Starting..."));
+  m_level->setText(QStringLiteral("-"));
+  m_beams->setText(QStringLiteral("-"));
+  m_bestJg->setText(tr("%1 mm²").arg(area(jgBeforeMm2)));
+  m_candidates->setText(QStringLiteral("0"));
+  m_chart->clear();
+  m_chart->setBest(0, jgBeforeMm2);
+  m_notice->hide();
+  m_notice->clear();
+}
+
+void SearchPanel::showFraction(double fraction, const QString& phase) {
+  m_progress->setValue(static_cast<int>(std::lround(1000.0 * fraction)));
+  m_progress->setFormat(phase.isEmpty() ? QStringLiteral("%p%") : phase + QStringLiteral(" %p%"));
+}
+
+void SearchPanel::showProgress(const core::SearchProgress& progress) {
+  m_level->setText(QString::number(progress.level));
+  if (progress.axisCount > 0) {
+    m_level->setText(tr("%1 (axis %2 of %3)").arg(progress.level).arg(progress.axisIndex + 1).arg(progress.axisCount));
+  }
+  m_beams->setText(QString::number(progress.beamsAlive));
+  m_bestJg->setText(tr("%1 mm²").arg(area(progress.bestJgMm2)));
+  m_candidates->setText(QLocale().toString(progress.candidatesScored));
+  m_chart->setBest(progress.level, progress.bestJgMm2);
+}
+
+void SearchPanel::cancelRequested() {
+  m_cancel->setEnabled(false);
+  m_progress->setFormat(tr("Cancelling: keeping the best plan so far..."));
+}
+
+void SearchPanel::searchFinished(const core::Decomposition& plan) {
+  setRunning(false);
+  m_progress->setValue(m_progress->maximum());
+  m_progress->setFormat(plan.cancelled ? tr("Cancelled") : tr("Done"));
+  m_bestJg->setText(tr("%1 mm²").arg(area(plan.jgAfterMm2)));
+  const int regions = static_cast<int>(plan.regions.size());
+  QStringList lines;
+  bool warning = false;
+  if (plan.cancelled) {
+    lines << tr("Cancelled: showing the best plan found so far.");
+    warning = true;
+  }
+  if (plan.jgAfterMm2 >= plan.jgBeforeMm2 - kSupportFreeMm2 && plan.jgBeforeMm2 > kSupportFreeMm2) {
+    lines << tr("Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more "
+                "normals, a smaller offset step, a larger w or another machine.")
+                 .arg(area(plan.jgAfterMm2));
+    warning = true;
+  } else if (plan.jgAfterMm2 > kSupportFreeMm2) {
+    lines << tr("Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).", nullptr, regions)
+                 .arg(area(plan.jgAfterMm2), area(plan.jgBeforeMm2));
+    warning = true;
+  } else {
+    lines << tr("Support-free in %n region(s) (J_G was %1 mm²).", nullptr, regions).arg(area(plan.jgBeforeMm2));
+  }
+  showNotice(lines.join(QLatin1Char('\n')), warning);
+}
+
+void SearchPanel::searchFailed(const QString& headline, const QString& detail) {
+  setRunning(false);
+  m_progress->setValue(0);
+  m_progress->setFormat(tr("Failed"));
+  showNotice(detail.isEmpty() ? headline : tr("%1\n%2").arg(headline, detail), true);
+}
+
+void SearchPanel::showNotice(const QString& text, bool warning) {
+  m_notice->setText(text);
+  m_notice->setStyleSheet(warning ? QStringLiteral("QLabel { background: #fff1d6; color: #6b4200; border: 1px solid "
+                                                   "#e0a040; padding: 4px; }")
+                                  : QStringLiteral("QLabel { background: #ddf5dd; color: #1d5a1d; border: 1px solid "
+                                                   "#60b060; padding: 4px; }"));
+  m_notice->show();
+}
+
+QString SearchPanel::noticeText() const { return m_notice->text(); }
+
+QString SearchPanel::readoutText() const {
+  return QStringList{m_level->text(), m_beams->text(), m_bestJg->text(), m_candidates->text()}.join(QLatin1Char('|'));
+}
+
+int SearchPanel::chartPointCount() const { return m_chart->pointCount(); }
+
+}  // namespace multidir::ui

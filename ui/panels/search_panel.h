@@ -1,0 +1,85 @@
+#pragma once
+// The Search panel: the search's parameters (scheme, beam width, w, normals, offset step, alpha_max, and for
+// 4-DOF machines how many rotation axes to try), Run and Cancel, a progress bar, a live read-out (level,
+// beams alive, best J_G, candidates scored), a chart of the best J_G per level, and what the result means
+// (support-free or not, improved or not, cancelled).
+//
+// The panel only shows and collects; MainWindow runs the search (SearchJob) and feeds the panel.
+#include <QWidget>
+
+#include "multidir/core/search/decomposition.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace multidir::ui {
+
+class JgChart;
+
+class SearchPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit SearchPanel(QWidget* parent = nullptr);
+
+  [[nodiscard]] core::SearchOptions searchOptions() const;
+  void setSearchOptions(const core::SearchOptions& options);
+  // 4-DOF rotation axes to try (0: only the machine's own axis).
+  [[nodiscard]] int axisSearchCount() const;
+  void setAxisSearchCount(int count);
+  // The axis-search count is offered for 4-DOF machines only.
+  void setRotaryMachine(bool rotary);
+  // Run is offered only when a model is shown and the machine is valid; `reason` says why not.
+  void setRunnable(bool runnable, const QString& reason);
+
+  // A search started: clears the read-out and the chart, swaps Run for Cancel.
+  void searchStarted(double jgBeforeMm2);
+  void showFraction(double fraction, const QString& phase);
+  void showProgress(const core::SearchProgress& progress);
+  void cancelRequested();
+  // The search ended with `plan` (complete or cancelled), or failed.
+  void searchFinished(const core::Decomposition& plan);
+  void searchFailed(const QString& headline, const QString& detail);
+
+  // What the notice line says (for tests and the status bar).
+  [[nodiscard]] QString noticeText() const;
+  [[nodiscard]] QString readoutText() const;
+  // Points on the best-J_G chart.
+  [[nodiscard]] int chartPointCount() const;
+
+ signals:
+  void runClicked();
+  void cancelClicked();
+
+ private:
+  void setRunning(bool running);
+  void showNotice(const QString& text, bool warning);
+
+  QComboBox* m_scheme = nullptr;
+  QSpinBox* m_beamWidth = nullptr;
+  QDoubleSpinBox* m_minVolumeDivisor = nullptr;
+  QSpinBox* m_normals = nullptr;
+  QDoubleSpinBox* m_offsetStep = nullptr;
+  QDoubleSpinBox* m_alpha = nullptr;
+  QSpinBox* m_axisCount = nullptr;
+  QLabel* m_axisCountLabel = nullptr;
+  QPushButton* m_run = nullptr;
+  QPushButton* m_cancel = nullptr;
+  QProgressBar* m_progress = nullptr;
+  QLabel* m_level = nullptr;
+  QLabel* m_beams = nullptr;
+  QLabel* m_bestJg = nullptr;
+  QLabel* m_candidates = nullptr;
+  QLabel* m_notice = nullptr;
+  JgChart* m_chart = nullptr;
+  core::SearchOptions m_hidden;  // options the panel does not edit keep their values
+  double m_jgBefore = 0.0;
+  bool m_runnable = false;
+  bool m_running = false;
+};
+
+}  // namespace multidir::ui

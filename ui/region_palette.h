@@ -1,0 +1,14 @@
+#pragma once
+// Colours of a plan's regions, shared by the 3D view, the legend and the tests: 16 hues far enough apart
+// to tell neighbouring regions apart, none of them close to the model's grey-blue or the overhang colour.
+#include <QColor>
+
+namespace multidir::ui {
+
+// Number of distinct colours; region i gets colour i modulo this.
+constexpr int kRegionColorCount = 16;
+
+// The colour of region `index` (0 = printed first). A negative index counts as 0.
+[[nodiscard]] QColor regionColor(int index);
+
+}  // namespace multidir::ui
