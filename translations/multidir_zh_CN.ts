@@ -2,6 +2,299 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>multidir::ui::ConnectionForm</name>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="36"/>
+        <source>Rotary platform (4-DOF)</source>
+        <translation>旋转平台（4 自由度）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="37"/>
+        <source>Robot arm (5-DOF)</source>
+        <translation>机械臂（5 自由度）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="41"/>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="42"/>
+        <source>Modbus RTU (serial)</source>
+        <translation>Modbus RTU（串口）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="51"/>
+        <source>Host:</source>
+        <translation>主机：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="52"/>
+        <source>Port:</source>
+        <translation>端口：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="53"/>
+        <source>Unit id:</source>
+        <translation>单元 ID：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="68"/>
+        <source>None</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="69"/>
+        <source>Even</source>
+        <translation>偶校验</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="70"/>
+        <source>Odd</source>
+        <translation>奇校验</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="74"/>
+        <source>Serial port:</source>
+        <translation>串口：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="75"/>
+        <source>Baud:</source>
+        <translation>波特率：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="76"/>
+        <source>Parity:</source>
+        <translation>校验位：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="77"/>
+        <source>Data bits:</source>
+        <translation>数据位：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="78"/>
+        <source>Stop bits:</source>
+        <translation>停止位：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="79"/>
+        <source>Slave id:</source>
+        <translation>从站 ID：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="86"/>
+        <location filename="../ui/device/connection_form.cpp" line="89"/>
+        <source> ms</source>
+        <translation> 毫秒</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="87"/>
+        <source>How long to wait for the first byte of a reply, and for a TCP connection.</source>
+        <translation>等待应答的第一个字节以及等待 TCP 连接的时长。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="90"/>
+        <source>How long to wait between two bytes of one reply.</source>
+        <translation>同一应答中两个字节之间的最长等待时间。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="99"/>
+        <source> °/s</source>
+        <translation> °/秒</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="100"/>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="101"/>
+        <source>Of the robot program&apos;s maximal rotation speed.</source>
+        <translation>占机器人程序最大旋转速度的百分比。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="102"/>
+        <location filename="../ui/device/connection_form.cpp" line="103"/>
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="107"/>
+        <source>Device:</source>
+        <translation>设备：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="108"/>
+        <source>Transport:</source>
+        <translation>传输方式：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="111"/>
+        <source>Response timeout:</source>
+        <translation>应答超时：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/connection_form.cpp" line="112"/>
+        <source>Byte timeout:</source>
+        <translation>字节超时：</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::DeviceLink</name>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="29"/>
+        <source>stall: the platform made no progress, so MultiDir stopped it</source>
+        <translation>堵转：平台没有前进，MultiDir 已将其停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="30"/>
+        <source>stall: the controller lost its position (following error)</source>
+        <translation>堵转：控制器丢失了位置（跟随误差）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="33"/>
+        <source>heartbeat lost: the controller stopped because MultiDir went silent</source>
+        <translation>心跳丢失：MultiDir 不再发送信号，控制器已停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="36"/>
+        <source>a limit switch was hit</source>
+        <translation>触发了限位开关</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="39"/>
+        <source>the controller rejected a command (not homed, or beyond its own limits)</source>
+        <translation>控制器拒绝了一条命令（未回零，或超出其自身限制）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="42"/>
+        <source>emergency stop: the power stage is off</source>
+        <translation>急停：功率级已关闭</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="45"/>
+        <source>unknown fault code %1</source>
+        <translation>未知故障代码 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="48"/>
+        <source>; press Clear fault, then Enable and Home</source>
+        <translation>；请按“清除故障”，然后按“使能”和“回零”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="54"/>
+        <source>the robot program is not running: start it on the teach pendant</source>
+        <translation>机器人程序未运行：请在示教器上启动它</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="56"/>
+        <source>halted by an emergency stop: press Clear fault before moving again</source>
+        <translation>已被急停停止：再次移动前请按“清除故障”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="60"/>
+        <source>the target was beyond the robot program&apos;s limits; press Clear fault</source>
+        <translation>目标超出了机器人程序的限制；请按“清除故障”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="62"/>
+        <source>the robot stopped because MultiDir&apos;s heartbeat was lost; press Clear fault</source>
+        <translation>由于 MultiDir 的心跳丢失，机器人已停止；请按“清除故障”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="64"/>
+        <source>the robot program got an unknown command; press Clear fault</source>
+        <translation>机器人程序收到了未知命令；请按“清除故障”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="66"/>
+        <source>robot program fault code %1; press Clear fault</source>
+        <translation>机器人程序故障代码 %1；请按“清除故障”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="210"/>
+        <source>Cannot connect with these settings: %1</source>
+        <translation>无法用这些设置连接：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="213"/>
+        <source>Could not connect yet; MultiDir keeps trying. %1</source>
+        <translation>尚未连接上；MultiDir 会继续尝试。%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="241"/>
+        <source>Enable</source>
+        <translation>使能</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="244"/>
+        <source>%1 does not apply to the robot arm: its program enables the arm; start it on the teach pendant.</source>
+        <translation>%1 不适用于机械臂：机械臂由其程序使能；请在示教器上启动该程序。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="254"/>
+        <source>Home</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="261"/>
+        <source>Go to %1</source>
+        <translation>前往 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="264"/>
+        <source>%1 refused: the robot arm takes a tilt and an azimuth.</source>
+        <translation>%1 被拒绝：机械臂需要倾斜角和方位角。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="271"/>
+        <source>Go to tilt %1, azimuth %2</source>
+        <translation>前往倾斜 %1，方位角 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="274"/>
+        <source>%1 refused: the rotary platform takes one angle.</source>
+        <translation>%1 被拒绝：旋转平台只需要一个角度。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="281"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="287"/>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="293"/>
+        <source>Clear fault</source>
+        <translation>清除故障</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="308"/>
+        <source>%1 refused: not connected; connect to the device first.</source>
+        <translation>%1 被拒绝：未连接；请先连接设备。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="320"/>
+        <source>%1 refused, nothing was sent: %2</source>
+        <translation>%1 被拒绝，未发送任何内容：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="322"/>
+        <source>%1 cancelled by Stop, E-STOP or Disconnect: %2</source>
+        <translation>%1 已被停止、急停或断开取消：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_link.cpp" line="324"/>
+        <source>%1 failed at the device or on the link: %2</source>
+        <translation>%1 在设备端或链路上失败：%2</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::ErrorText</name>
     <message>
         <location filename="../ui/error_text.cpp" line="18"/>
@@ -64,9 +357,489 @@
         <translation>已取消。</translation>
     </message>
     <message>
+        <location filename="../ui/error_text.cpp" line="44"/>
+        <source>The device does not answer: check its power, cable or network.</source>
+        <translation>设备没有应答：请检查其电源、线缆或网络。</translation>
+    </message>
+    <message>
         <location filename="../ui/error_text.cpp" line="46"/>
+        <source>The device reported an error.</source>
+        <translation>设备报告了一个错误。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="50"/>
         <source>An internal error occurred: please report it with the model.</source>
         <translation>发生内部错误：请连同模型一起报告。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::HardwarePanel</name>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="57"/>
+        <source>Disconnected</source>
+        <translation>已断开</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="59"/>
+        <source>Reconnecting…</source>
+        <translation>正在重新连接…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="60"/>
+        <source>Connecting…</source>
+        <translation>正在连接…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="62"/>
+        <source>Connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="64"/>
+        <source>Fault</source>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
+        <source>idle</source>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
+        <source>turning the platform</source>
+        <translation>正在转动平台</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
+        <source>settling</source>
+        <translation>正在稳定</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
+        <source>printing</source>
+        <translation>正在打印</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
+        <source>paused</source>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
+        <source>finished</source>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <source>aborted</source>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <source>stopped by a device problem</source>
+        <translation>因设备问题而停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="93"/>
+        <source>angle %1</source>
+        <translation>角度 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="373"/>
+        <source>tilt %1, azimuth %2</source>
+        <translation>倾斜 %1，方位角 %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="163"/>
+        <source>Connection</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="166"/>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="167"/>
+        <source>Disconnect</source>
+        <translation>断开</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="168"/>
+        <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
+        <translation>关闭链路而不向设备发送命令；设备的心跳看门狗会使其停止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="182"/>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="191"/>
+        <source>State:</source>
+        <translation>状态：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="192"/>
+        <source>Position:</source>
+        <translation>位置：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="193"/>
+        <source>Moving:</source>
+        <translation>运动中：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="194"/>
+        <source>Homed:</source>
+        <translation>已回零：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="195"/>
+        <source>Fault:</source>
+        <translation>故障：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="196"/>
+        <source>Heartbeat:</source>
+        <translation>心跳：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="197"/>
+        <source>Last problem:</source>
+        <translation>最近的问题：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="202"/>
+        <source>Controls</source>
+        <translation>控制</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="203"/>
+        <source>Enable</source>
+        <translation>使能</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="203"/>
+        <source>Switches the platform&apos;s drive on.</source>
+        <translation>接通平台的驱动。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="204"/>
+        <source>Home</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="205"/>
+        <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
+        <translation>旋转平台：寻找原点开关（0°）。机械臂：将平台调平（倾斜 0°）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="206"/>
+        <source>Clear fault</source>
+        <translation>清除故障</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="207"/>
+        <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
+        <translation>在故障或急停后复位设备；之后请重新使能并回零。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="211"/>
+        <source>Tilt</source>
+        <translation>倾斜</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="212"/>
+        <source>Azimuth</source>
+        <translation>方位角</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="213"/>
+        <source>Jog −</source>
+        <translation>点动 −</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
+        <source>Jog +</source>
+        <translation>点动 +</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="218"/>
+        <source>Angle:</source>
+        <translation>角度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
+        <source>Tilt:</source>
+        <translation>倾斜：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="220"/>
+        <source>Azimuth:</source>
+        <translation>方位角：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="221"/>
+        <source>Go to</source>
+        <translation>前往</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <source>Decelerates and stops; cancels queued commands.</source>
+        <translation>减速并停止；取消排队中的命令。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="224"/>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="225"/>
+        <source>Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards.</source>
+        <translation>急停：立即切断运动。之后请清除故障、重新使能并回零。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="235"/>
+        <source>Jog step:</source>
+        <translation>点动步长：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <source>Print run</source>
+        <translation>打印运行</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="456"/>
+        <source>Start run</source>
+        <translation>开始运行</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
+        <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
+        <translation>按打印顺序将平台转到每个区域的方向，并提示打印每个区域。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="303"/>
+        <source>Region done</source>
+        <translation>区域完成</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="275"/>
+        <source>Press when the region asked for has been printed.</source>
+        <translation>所要求的区域打印完成后按此按钮。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="276"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="304"/>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="305"/>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
+        <source>Continues a paused run, or retries the current step after a device problem.</source>
+        <translation>继续已暂停的运行，或在设备出现问题后重试当前步骤。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="292"/>
+        <source>Step:</source>
+        <translation>步骤：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="293"/>
+        <source>Elapsed:</source>
+        <translation>已用时间：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="345"/>
+        <source>Cannot connect with these settings: %1</source>
+        <translation>无法用这些设置连接：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="349"/>
+        <source>Connecting to %1…</source>
+        <translation>正在连接 %1…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="357"/>
+        <source>Disconnected.</source>
+        <translation>已断开。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="369"/>
+        <source>%1 (target %2)</source>
+        <translation>%1（目标 %2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
+        <source>homing</source>
+        <translation>正在回零</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="374"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="374"/>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="375"/>
+        <source>not needed (robot arm)</source>
+        <translation>不需要（机械臂）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="377"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="386"/>
+        <source>%1: sent to the device.</source>
+        <translation>%1：已发送到设备。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="393"/>
+        <source>Connected to %1.</source>
+        <translation>已连接到 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
+        <source>The print run stopped: %1. Fix the device (Clear fault, Enable, Home), then press Resume to retry this step, or Abort.</source>
+        <translation>打印运行已停止：%1。请修复设备（清除故障、使能、回零），然后按“继续”重试此步骤，或按“中止”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="407"/>
+        <source>The print run is finished: every region was printed.</source>
+        <translation>打印运行已完成：所有区域均已打印。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="409"/>
+        <source>The print run was aborted.</source>
+        <translation>打印运行已中止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="416"/>
+        <source>Print region %1 (file %2), then press Region done.</source>
+        <translation>请打印区域 %1（文件 %2），然后按“区域完成”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="443"/>
+        <source>Start run refused: not connected; connect to the device first.</source>
+        <translation>开始运行被拒绝：未连接；请先连接设备。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="450"/>
+        <source>Start run refused: %1</source>
+        <translation>开始运行被拒绝：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <source>%1 refused: %2</source>
+        <translation>%1 被拒绝：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="478"/>
+        <source>Limits: %1 to %2 in steps of %3</source>
+        <translation>限制：%1 至 %2，步长 %3</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/device/hardware_panel.cpp" line="480"/>
+        <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
+        <translation>
+            <numerusform>限制：倾斜最多 %1，%n 个禁止锥</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="483"/>
+        <source> (machine profile)</source>
+        <translation>（机器配置）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="485"/>
+        <source> (defaults: the machine profile is for a %1 machine)</source>
+        <translation>（默认值：该机器配置适用于 %1 机器）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="488"/>
+        <source> (defaults: no machine profile)</source>
+        <translation>（默认值：无机器配置）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="489"/>
+        <source>; a changed profile applies at the next Connect</source>
+        <translation>；更改后的配置在下次连接时生效</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="544"/>
+        <source>not seen yet</source>
+        <translation>尚未收到</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="547"/>
+        <source>%1 s ago</source>
+        <translation>%1 秒前</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <source>No plan: run a search or open a plan first.</source>
+        <translation>无方案：请先运行搜索或打开方案。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <source>Plan with %n region(s).</source>
+        <translation>
+            <numerusform>方案包含 %n 个区域。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
+        <source>all %n region(s) printed: finished</source>
+        <translation>
+            <numerusform>全部 %n 个区域已打印：完成</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="565"/>
+        <source>%1 of %2: %3</source>
+        <translation>%1 / %2：%3</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="567"/>
+        <source> (%1, %2)</source>
+        <translation>（%1，%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="568"/>
+        <source>; pausing after this region</source>
+        <translation>；此区域完成后暂停</translation>
     </message>
 </context>
 <context>
@@ -193,366 +966,371 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="63"/>
+        <location filename="../ui/main_window.cpp" line="65"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="86"/>
+        <location filename="../ui/main_window.cpp" line="88"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="87"/>
+        <location filename="../ui/main_window.cpp" line="89"/>
         <source>&amp;Open...</source>
         <translation>打开(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="89"/>
+        <location filename="../ui/main_window.cpp" line="91"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY)</source>
         <translation>打开网格文件（STL、OBJ、OFF 或 PLY）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="91"/>
+        <location filename="../ui/main_window.cpp" line="93"/>
         <source>&amp;Samples</source>
         <translation>示例(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="100"/>
+        <location filename="../ui/main_window.cpp" line="102"/>
         <source>Open &amp;plan...</source>
         <translation>打开方案(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="102"/>
+        <location filename="../ui/main_window.cpp" line="104"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="103"/>
+        <location filename="../ui/main_window.cpp" line="105"/>
         <source>&amp;Export plan...</source>
         <translation>导出方案(&amp;E)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="105"/>
+        <location filename="../ui/main_window.cpp" line="107"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>保存当前方案：plan.json 以及每个区域一个 STL 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="108"/>
+        <location filename="../ui/main_window.cpp" line="110"/>
         <source>&amp;Load machine profile...</source>
         <translation>加载机器配置(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="110"/>
+        <location filename="../ui/main_window.cpp" line="112"/>
         <source>&amp;Save machine profile...</source>
         <translation>保存机器配置(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="113"/>
+        <location filename="../ui/main_window.cpp" line="115"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="116"/>
+        <location filename="../ui/main_window.cpp" line="118"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="117"/>
+        <location filename="../ui/main_window.cpp" line="119"/>
         <source>&amp;Fit to View</source>
         <translation>适应视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="119"/>
+        <location filename="../ui/main_window.cpp" line="121"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>显示模型(&amp;M)（隐藏方案）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="124"/>
+        <location filename="../ui/main_window.cpp" line="126"/>
         <source>&amp;Search</source>
         <translation>搜索(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
+        <location filename="../ui/main_window.cpp" line="127"/>
         <source>&amp;Run</source>
         <translation>运行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="127"/>
+        <location filename="../ui/main_window.cpp" line="129"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="144"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
         <source>Overhangs</source>
         <translation>悬垂</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="145"/>
+        <location filename="../ui/main_window.cpp" line="147"/>
         <source>Machine</source>
         <translation>机器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="146"/>
+        <location filename="../ui/main_window.cpp" line="148"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="147"/>
+        <location filename="../ui/main_window.cpp" line="149"/>
         <source>Plan</source>
         <translation>方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="172"/>
+        <location filename="../ui/main_window.cpp" line="174"/>
+        <source>Hardware</source>
+        <translation>硬件</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="187"/>
         <source>Printing direction</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="175"/>
+        <location filename="../ui/main_window.cpp" line="190"/>
         <source>Up:</source>
         <translation>向上：</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="180"/>
+        <location filename="../ui/main_window.cpp" line="195"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="185"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="185"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="186"/>
+        <location filename="../ui/main_window.cpp" line="201"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="186"/>
+        <location filename="../ui/main_window.cpp" line="201"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="187"/>
+        <location filename="../ui/main_window.cpp" line="202"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="187"/>
+        <location filename="../ui/main_window.cpp" line="202"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="228"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
         <source>Open Model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="229"/>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>Meshes (*.stl *.obj *.off *.ply);;All files (*)</source>
         <translation>网格 (*.stl *.obj *.off *.ply);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="245"/>
+        <location filename="../ui/main_window.cpp" line="260"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>自定义（%1, %2, %3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="266"/>
+        <location filename="../ui/main_window.cpp" line="281"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="270"/>
+        <location filename="../ui/main_window.cpp" line="285"/>
         <source>Repaired on load: %1</source>
         <translation>加载时已修复：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="284"/>
+        <location filename="../ui/main_window.cpp" line="299"/>
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="288"/>
+        <location filename="../ui/main_window.cpp" line="303"/>
         <source>Could not open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="292"/>
+        <location filename="../ui/main_window.cpp" line="307"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="311"/>
-        <location filename="../ui/main_window.cpp" line="328"/>
+        <location filename="../ui/main_window.cpp" line="326"/>
+        <location filename="../ui/main_window.cpp" line="343"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="321"/>
+        <location filename="../ui/main_window.cpp" line="336"/>
         <source>Triangles: %1</source>
         <translation>三角形：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="322"/>
+        <location filename="../ui/main_window.cpp" line="337"/>
         <source>Volume: %1 mm³</source>
         <translation>体积：%1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="336"/>
+        <location filename="../ui/main_window.cpp" line="351"/>
         <source>Risky area unavailable</source>
         <translation>风险面积不可用</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="344"/>
+        <location filename="../ui/main_window.cpp" line="359"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>风险面积（%1 向上）：%2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="346"/>
+        <location filename="../ui/main_window.cpp" line="361"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="361"/>
-        <location filename="../ui/main_window.cpp" line="380"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
+        <location filename="../ui/main_window.cpp" line="395"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="363"/>
+        <location filename="../ui/main_window.cpp" line="378"/>
         <source>Fix the machine first: %1</source>
         <translation>请先修正机器设置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="379"/>
+        <location filename="../ui/main_window.cpp" line="394"/>
         <source>A search is already running.</source>
         <translation>已有搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="385"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="389"/>
+        <location filename="../ui/main_window.cpp" line="404"/>
         <source>Cannot search: %1</source>
         <translation>无法搜索：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="390"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>Cannot search.</source>
         <translation>无法搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="404"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>Searching %1...</source>
         <translation>正在搜索 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>Cancelling the search...</source>
         <translation>正在取消搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="423"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>搜索已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>Search finished.</source>
         <translation>搜索完成。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>Search failed: %1</source>
         <translation>搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>没有可导出的方案：请先运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>无法将方案导出到 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>Plan exported to %1.</source>
         <translation>方案已导出到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>无法打开方案 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="543"/>
         <source>Machine profile saved to %1.</source>
         <translation>机器配置已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="540"/>
+        <location filename="../ui/main_window.cpp" line="555"/>
         <source>Machine profile %1 loaded.</source>
         <translation>已加载机器配置 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="545"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>Export Plan to Folder</source>
         <translation>将方案导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="548"/>
+        <location filename="../ui/main_window.cpp" line="563"/>
         <source>Export Plan</source>
         <translation>导出方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="552"/>
+        <location filename="../ui/main_window.cpp" line="567"/>
         <source>Open Plan Folder</source>
         <translation>打开方案文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="555"/>
+        <location filename="../ui/main_window.cpp" line="570"/>
         <source>Open Plan</source>
         <translation>打开方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="574"/>
+        <location filename="../ui/main_window.cpp" line="578"/>
         <source>Save Machine Profile</source>
         <translation>保存机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="575"/>
         <source>Machine profiles (*.json)</source>
         <translation>机器配置 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="567"/>
-        <location filename="../ui/main_window.cpp" line="571"/>
+        <location filename="../ui/main_window.cpp" line="582"/>
+        <location filename="../ui/main_window.cpp" line="586"/>
         <source>Load Machine Profile</source>
         <translation>加载机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="568"/>
+        <location filename="../ui/main_window.cpp" line="583"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>机器配置 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="575"/>
+        <location filename="../ui/main_window.cpp" line="590"/>
         <source>Loading %1...</source>
         <translation>正在加载 %1...</translation>
     </message>

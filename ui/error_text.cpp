@@ -40,6 +40,10 @@ QString errorHeadline(core::ErrorCode code) {
       return ErrorText::tr("A setting is out of its allowed range.");
     case core::ErrorCode::Cancelled:
       return ErrorText::tr("Cancelled.");
+    case core::ErrorCode::DeviceUnreachable:
+      return ErrorText::tr("The device does not answer: check its power, cable or network.");
+    case core::ErrorCode::DeviceFault:
+      return ErrorText::tr("The device reported an error.");
     case core::ErrorCode::Internal:
       break;
   }

@@ -18,6 +18,7 @@
 #include <QToolBar>
 #include <QVector3D>
 #include <cmath>
+#include <limits>
 
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_measure.h"
@@ -180,6 +181,11 @@ void MainWindow::buildDocks() {
   connect(hardwarePanel, &HardwarePanel::connectRequested, hardwarePanel, sendProfile);  // the latest up too
   connect(this, &MainWindow::planShown, hardwarePanel, [this, hardwarePanel] {
     if (m_plan && m_plan->plan) hardwarePanel->setPlan(*m_plan->plan);
+  });
+  // During a run the view shows what is on the platform: the regions printed so far and the one being
+  // printed; all of them again when the run ends. Through the Plan panel, so its stepper agrees (and clamps).
+  connect(hardwarePanel, &HardwarePanel::currentRegionChanged, m_planPanel, [this](int region) {
+    m_planPanel->setShownRegions(region >= 0 ? region + 1 : std::numeric_limits<int>::max());
   });
 }
 

@@ -16,6 +16,8 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::InconsistentOrientation: return "InconsistentOrientation";
     case ErrorCode::InvalidParameter: return "InvalidParameter";
     case ErrorCode::Cancelled: return "Cancelled";
+    case ErrorCode::DeviceUnreachable: return "DeviceUnreachable";
+    case ErrorCode::DeviceFault: return "DeviceFault";
     case ErrorCode::Internal: return "Internal";
   }
   return "Unknown";

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QDockWidget>
+#include <QLabel>
 #include <QMenuBar>
 #include <QPushButton>
 
@@ -47,6 +49,28 @@ TEST_F(StudioLanguage, SimplifiedChineseMenusAndButtons) {
   EXPECT_TRUE(titles.contains(QStringLiteral("文件(&F)"))) << titles.join(QLatin1Char(',')).toStdString();
   EXPECT_TRUE(titles.contains(QStringLiteral("视图(&V)")));
   EXPECT_EQ(window.findChild<QPushButton*>(QStringLiteral("runSearch"))->text(), QStringLiteral("运行搜索(&R)"));
+}
+
+// The Hardware panel is translated too: its dock, its buttons, and the state shown before any connection.
+TEST_F(StudioLanguage, GermanHardwarePanel) {
+  startWith(QStringLiteral("de"));
+  MainWindow window;
+  QWidget* panel = window.findChild<QWidget*>(QStringLiteral("hardwarePanel"));
+  ASSERT_NE(panel, nullptr);
+  EXPECT_EQ(panel->findChild<QPushButton*>(QStringLiteral("connectButton"))->text(), QStringLiteral("Verbinden"));
+  EXPECT_EQ(panel->findChild<QPushButton*>(QStringLiteral("estopButton"))->text(), QStringLiteral("NOT-HALT"));
+  EXPECT_EQ(panel->findChild<QPushButton*>(QStringLiteral("startRunButton"))->text(), QStringLiteral("Lauf starten"));
+  EXPECT_EQ(panel->findChild<QLabel*>(QStringLiteral("stateValue"))->text(), QStringLiteral("Getrennt"));
+}
+
+TEST_F(StudioLanguage, SimplifiedChineseHardwareDockAndButtons) {
+  startWith(QStringLiteral("zh_CN"));
+  MainWindow window;
+  const auto* dock = window.findChild<QDockWidget*>(QStringLiteral("hardwareDock"));
+  ASSERT_NE(dock, nullptr);
+  EXPECT_EQ(dock->windowTitle(), QStringLiteral("硬件"));
+  EXPECT_EQ(dock->findChild<QPushButton*>(QStringLiteral("connectButton"))->text(), QStringLiteral("连接"));
+  EXPECT_EQ(dock->findChild<QPushButton*>(QStringLiteral("estopButton"))->text(), QStringLiteral("急停"));
 }
 
 TEST_F(StudioLanguage, EnglishInstallsNoTranslation) {

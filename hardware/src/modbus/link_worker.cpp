@@ -91,7 +91,7 @@ void LinkWorker::linkBroken(const std::string& problem) {
   m_nextAttempt = Clock::now() + m_backoff;
   if (m_hooks.linkChanged) m_hooks.linkChanged(LinkState::Reconnecting, problem);
   // Commands are never replayed after a reconnect: the situation they were meant for may have changed.
-  failQueued(core::Error{core::ErrorCode::Internal, problem, m_label});
+  failQueued(core::Error{core::ErrorCode::DeviceUnreachable, problem, m_label});
 }
 
 bool LinkWorker::tryConnect() {
@@ -130,7 +130,7 @@ void LinkWorker::run() {
     }
     if (!m_port.isOpen()) {
       if (Clock::now() < m_nextAttempt) {
-        failQueued(core::Error{core::ErrorCode::Internal,
+        failQueued(core::Error{core::ErrorCode::DeviceUnreachable,
                                m_label + " is reconnecting: wait until the link is back", m_label});
         waitUntil(m_nextAttempt);
         continue;

@@ -78,7 +78,7 @@ core::Status ModbusPort::open() {
               "program holds its only connection"
             : "check that the USB/RS-485 adapter is plugged in, the device name, and that you may open it (group "
               "dialout)";
-    return core::Error{core::ErrorCode::Internal,
+    return core::Error{core::ErrorCode::DeviceUnreachable,
                        "cannot connect to " + m_label + ": " + modbus_strerror(errnum) + ": " + advice, m_label};
   }
   m_open = true;
@@ -123,13 +123,15 @@ core::Status ModbusPort::failure(int errnum, const std::string& action) {
     message = "the connection to " + m_label + " was lost while " + action + " (" + modbus_strerror(errnum) +
               "): MultiDir reconnects on its own; if this repeats, check the cable or network";
   }
-  return core::Error{core::ErrorCode::Internal, message, m_label};
+  const core::ErrorCode code =
+      m_lastFailure == PortFailure::Exception ? core::ErrorCode::DeviceFault : core::ErrorCode::DeviceUnreachable;
+  return core::Error{code, message, m_label};
 }
 
 core::Status ModbusPort::readRegisters(int address, int count, std::uint16_t* dest, const std::string& what) {
   if (!m_open) {
     m_lastFailure = PortFailure::ConnectionLost;
-    return core::Error{core::ErrorCode::Internal, m_label + " is not connected", m_label};
+    return core::Error{core::ErrorCode::DeviceUnreachable, m_label + " is not connected", m_label};
   }
   const int rc = modbus_read_registers(m_context, address, count, dest);
   if (rc == count) {
@@ -143,7 +145,7 @@ core::Status ModbusPort::readRegisters(int address, int count, std::uint16_t* de
 core::Status ModbusPort::writeRegisters(int address, const std::vector<std::uint16_t>& values, const std::string& what) {
   if (!m_open) {
     m_lastFailure = PortFailure::ConnectionLost;
-    return core::Error{core::ErrorCode::Internal, m_label + " is not connected", m_label};
+    return core::Error{core::ErrorCode::DeviceUnreachable, m_label + " is not connected", m_label};
   }
   const int count = static_cast<int>(values.size());
   const int rc = count == 1 ? modbus_write_register(m_context, address, values[0])

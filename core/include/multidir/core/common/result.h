@@ -20,6 +20,8 @@ enum class ErrorCode {
   InconsistentOrientation, // neighbouring faces disagree on orientation and it could not be repaired
   InvalidParameter,  // a parameter is out of its documented range
   Cancelled,         // the caller cancelled the job
+  DeviceUnreachable, // a printer device did not answer, or its link is down or reconnecting
+  DeviceFault,       // a printer device answered with an error (a Modbus exception) or reports a fault
   Internal,          // a bug in MultiDir: please report it with the input that caused it
 };
 
