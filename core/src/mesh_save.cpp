@@ -2,8 +2,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 
+#include "detail/atomic_file.h"
 #include "mesh_formats.h"
 #include "multidir/core/mesh/mesh_io.h"
 
@@ -50,46 +50,14 @@ Status saveMesh(const TriangleMesh& mesh, const std::string& path, const SaveOpt
                      name};
 
   // Written beside the target and renamed into place: a failed save leaves any old file as it was.
-  const fs::path temporary = target.string() + ".partial";
-  try {
-    {
-      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-      if (!out) return Error{ErrorCode::WriteFailed, "cannot create the file (does the folder exist and is it writable?)", name};
-      out.precision(17);
-      if (ext == ".stl") {
-        if (Status s = detail::writeStl(mesh, out, options.asciiStl); !s) {
-          out.close();
-          std::error_code ignored;
-          fs::remove(temporary, ignored);
-          return Error{s.error().code, s.error().message, name};
-        }
-      } else if (ext == ".off") {
-        writeOff(mesh, out);
-      } else if (ext == ".obj") {
-        writeObj(mesh, out);
-      } else {
-        writePly(mesh, out);
-      }
-      out.flush();
-      if (!out) {
-        out.close();
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        return Error{ErrorCode::WriteFailed, "writing failed (is the disk full?)", name};
-      }
-    }
-    std::error_code ec;
-    fs::rename(temporary, target, ec);
-    if (ec) {
-      fs::remove(temporary, ec);
-      return Error{ErrorCode::WriteFailed, "cannot replace the file: " + ec.message(), name};
-    }
-  } catch (const std::exception& e) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    return Error{ErrorCode::WriteFailed, std::string("writing failed: ") + e.what(), name};
-  }
-  return Done{};
+  return detail::writeFileAtomically(path, name, [&](std::ostream& out) -> Status {
+    out.precision(17);
+    if (ext == ".stl") return detail::writeStl(mesh, out, options.asciiStl);
+    if (ext == ".off") writeOff(mesh, out);
+    else if (ext == ".obj") writeObj(mesh, out);
+    else writePly(mesh, out);
+    return Done{};
+  });
 }
 
 }  // namespace multidir::core

@@ -1,5 +1,7 @@
 #include "plan/json_file.h"
 
+#include "detail/atomic_file.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,29 +37,11 @@ Result<nlohmann::json> readJsonFile(const std::string& path, const std::string& 
   }
 }
 
-Status writeFileAtomically(const std::string& path, const std::string& text, const std::string& name) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out)
-      return Error{ErrorCode::WriteFailed, "cannot create the file (does the folder exist and is it writable?)", name};
+Status writeTextFile(const std::string& path, const std::string& text, const std::string& name) {
+  return writeFileAtomically(path, name, [&](std::ostream& out) -> Status {
     out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      return Error{ErrorCode::WriteFailed, "writing failed (is the disk full?)", name};
-    }
-  }
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    return Error{ErrorCode::WriteFailed, "cannot replace the file: " + ec.message(), name};
-  }
-  return Done{};
+    return Done{};
+  });
 }
 
 }  // namespace multidir::core::detail

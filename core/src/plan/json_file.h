@@ -13,6 +13,6 @@ constexpr std::uintmax_t kMaxJsonFileBytes = 1u << 30;
 Result<nlohmann::json> readJsonFile(const std::string& path, const std::string& name);
 
 // Writes `text` beside `path` and renames it into place, so readers never see half a file. Errors: WriteFailed.
-Status writeFileAtomically(const std::string& path, const std::string& text, const std::string& name);
+Status writeTextFile(const std::string& path, const std::string& text, const std::string& name);
 
 }  // namespace multidir::core::detail

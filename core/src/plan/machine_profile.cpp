@@ -20,7 +20,7 @@ Status saveMachineProfile(const MachineSpec& machine, const std::string& path) {
   try {
     nlohmann::ordered_json document = {{"schema", kProfileSchema}, {"version", kMachineProfileVersion}};
     document.update(detail::machineToJson(machine));
-    return detail::writeFileAtomically(path, document.dump(2) + "\n", name);
+    return detail::writeTextFile(path, document.dump(2) + "\n", name);
   } catch (const std::exception& e) {
     return Error{ErrorCode::WriteFailed, std::string("writing the profile failed: ") + e.what(), name};
   }

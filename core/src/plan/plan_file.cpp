@@ -167,7 +167,7 @@ Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const s
       if (!supports[i].empty())
         if (Status saved = saveMesh(supports[i].mesh, (folder / detail::supportFileName(i)).string()); !saved)
           return saved;
-    return detail::writeFileAtomically((folder / kPlanFileName).string(), *text, kPlanFileName);
+    return detail::writeTextFile((folder / kPlanFileName).string(), *text, kPlanFileName);
   } catch (const std::bad_alloc&) {
     return Error{ErrorCode::WriteFailed, "there is not enough memory to write the plan", directory};
   } catch (const std::exception& e) {
