@@ -96,7 +96,6 @@ int run(const std::vector<std::string>& args) {
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
-#ifdef MULTIDIR_TESTING_DISABLE_CATCH_ALL
   try {
     return run(args);
   } catch (const UsageError& e) {
@@ -106,16 +105,9 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return kExitBadInput;
   }
-#else
-  try {
-    return run(args);
-  } catch (const UsageError& e) {
-    std::cerr << e.what() << "\n";
-    return kExitUsage;
-  } catch (const FileError& e) {
-    std::cerr << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::exception& e) {
+#ifndef MULTIDIR_TESTING_DISABLE_CATCH_ALL
+  // Tests build with the catch-all off, so that an unexpected exception reaches them as it is.
+  catch (const std::exception& e) {
     std::cerr << "multidir: internal error (" << e.what() << "); please report it with the command line\n";
     return kExitInternal;
   } catch (...) {

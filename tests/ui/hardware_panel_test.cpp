@@ -13,6 +13,7 @@
 #include <chrono>
 #include <memory>
 
+#include "hardware/hardware_test_support.h"
 #include "multidir/hardware/device_simulator.h"
 #include "ui/device/connection_form.h"
 #include "ui/device/device_link.h"
@@ -25,19 +26,8 @@ using namespace std::chrono_literals;
 
 constexpr int kWaitMs = 5000;  // generous: the simulator answers within milliseconds
 
-hardware::ConnectionSettings fastSettings(int port) {
-  hardware::ConnectionSettings settings;
-  settings.tcp.host = "127.0.0.1";
-  settings.tcp.port = port;
-  settings.slaveId = 1;
-  settings.responseTimeout = 150ms;
-  settings.byteTimeout = 50ms;
-  settings.pollInterval = 10ms;
-  settings.heartbeatInterval = 30ms;
-  settings.reconnectInitialDelay = 20ms;
-  settings.reconnectMaxDelay = 200ms;
-  return settings;
-}
+// The hardware tests' short timeouts and intervals, with the rotary platform's unit id.
+hardware::ConnectionSettings fastSettings(int port) { return hardware::test::fastSettings(port, 1); }
 
 QString degreesText(double value) { return QLocale().toString(value, 'f', 2) + QStringLiteral("°"); }
 
