@@ -59,7 +59,6 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
       ScoredCandidate c;
       c.beam = beamIndex;
       c.normal = i;
-      c.offsetIndex = j;
       c.offsetMm = grid.offsetAt(j);
       c.riskyAboveMm2 = std::max(0.0, profile.riskyAreaAlongNormalMm2[j]);
       c.riskyUpAboveMm2 = std::max(0.0, profile.riskyAreaFlaggedMm2[j]);
@@ -93,9 +92,7 @@ std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std:
   auto child = makeNode(std::make_shared<const TriangleMesh>(std::move(clipped->below)));
   child->parent = node;
   child->plane = plane;
-  child->normalIndex = candidate.normal;
   child->region = std::make_shared<const TriangleMesh>(std::move(clipped->above));
-  child->regionRiskyMm2 = candidate.riskyAboveMm2;
   child->prefixJgMm2 = node->prefixJgMm2 + candidate.riskyAboveMm2;
   child->level = node->level + 1;
   return std::shared_ptr<const SearchNode>(std::move(child));

@@ -18,9 +18,7 @@ struct SearchNode {
 
   std::shared_ptr<const SearchNode> parent;       // null at the root (the uncut model)
   Plane plane;                                    // the cut that made this node from its parent
-  int normalIndex = -1;
   std::shared_ptr<const TriangleMesh> region;     // the part above that cut, printed along plane.normal
-  double regionRiskyMm2 = 0.0;
   double prefixJgMm2 = 0.0;                       // risky area of every region cut off so far
   int level = 0;                                  // number of cuts
 
@@ -32,7 +30,6 @@ struct SearchNode {
 struct ScoredCandidate {
   int beam = 0;
   int normal = 0;
-  int offsetIndex = 0;
   double offsetMm = 0.0;
   double riskyAboveMm2 = 0.0;    // R(M+, plane): risky along the plane's normal
   double riskyUpAboveMm2 = 0.0;  // risky along up among the faces above: what the cut saves
