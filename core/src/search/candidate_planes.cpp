@@ -67,6 +67,20 @@ std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOp
   return normals;
 }
 
+namespace {
+
+// Highest point of the disc P along `normal`: its centre plus the radius times the in-plane part of n.
+double platformTopAlong(const Vec3& normal, const PlatformRegion& platform, const Vec3& up) {
+  const Vec3 inPlane = normal - normal.dot(up) * up;
+  return normal.dot(platform.center) + platform.radiusMm * inPlane.norm();
+}
+
+}  // namespace
+
+bool planeClearsPlatform(const Plane& plane, const PlatformRegion& platform, const Vec3& up, double clearanceMm) {
+  return plane.offset > platformTopAlong(plane.normal, platform, up) + clearanceMm;
+}
+
 OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
                             const Vec3& up, const CandidateOptions& options) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
@@ -78,10 +92,7 @@ OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const
   }
   OffsetGrid grid{0.0, options.offsetStepMm, 0};
   if (!(low < high)) return grid;
-  // Highest point of the disc P along the normal: its centre plus the radius times the in-plane part of n.
-  const Vec3 inPlane = normal - normal.dot(up) * up;
-  const double platformTop = normal.dot(platform.center) + platform.radiusMm * inPlane.norm();
-  const double start = std::max(low, platformTop + options.platformClearanceMm);
+  const double start = std::max(low, platformTopAlong(normal, platform, up) + options.platformClearanceMm);
   // Offsets on a lattice anchored at 0 so that the same plane is the same candidate at every level.
   const double first = (std::floor(start / options.offsetStepMm) + 1.0) * options.offsetStepMm;
   if (first >= high) return grid;

@@ -1,4 +1,5 @@
 #include "multidir/core/search/decompose.h"
+#include "multidir/core/search/plan_from_planes.h"
 
 #include <algorithm>
 #include <atomic>
@@ -200,6 +201,29 @@ Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& ma
   if (Status s = checkInputs(model, machine, options); !s) return s.error();
   Decomposition plan = runDecomposition(model, machine, options, job, progress);
   job.setProgress(1.0, "search done");
+  return plan;
+}
+
+Result<Decomposition> planFromClippingPlanes(const TriangleMesh& model, const MachineSpec& machine,
+                                             const SearchOptions& options, const std::vector<Plane>& clippingPlanes) {
+  if (Status s = checkInputs(model, machine, options); !s) return s.error();
+  const auto start = std::chrono::steady_clock::now();
+  SearchOptions evaluation = options;
+  evaluation.candidates.normalSamples = 1;  // the engine's own candidates are not used here
+  JobContext job;
+  SearchEngine engine(model, machine, evaluation, job);
+  NodePtr node = engine.root();
+  for (const Plane& plane : clippingPlanes) {
+    auto child = engine.cut(node, plane);
+    if (!child.ok()) return child.error();
+    node = *child;
+  }
+  Decomposition plan = engine.planOf(*node);
+  plan.rotationAxis = machine.rotationAxis;
+  plan.statistics.levels = static_cast<int>(clippingPlanes.size());
+  plan.statistics.clipsPerformed = engine.clipsPerformed();
+  plan.statistics.threads = 1;
+  plan.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return plan;
 }
 

@@ -80,22 +80,55 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
   return all;
 }
 
+std::shared_ptr<SearchNode> SearchEngine::makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
+                                                  ClipResult clipped, double regionRiskyMm2) const {
+  auto child = makeNode(std::make_shared<const TriangleMesh>(std::move(clipped.below)));
+  child->parent = node;
+  child->plane = plane;
+  child->region = std::make_shared<const TriangleMesh>(std::move(clipped.above));
+  child->prefixJgMm2 = node->prefixJgMm2 + regionRiskyMm2;
+  child->level = node->level + 1;
+  return child;
+}
+
 std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std::shared_ptr<const SearchNode>& node,
                                                                       const ScoredCandidate& candidate) {
   const Plane plane{m_normals[candidate.normal], candidate.offsetMm};
   ++m_clips;
   auto clipped = clipByPlane(*node->remaining, plane, node->level);
   if (!clipped.ok() || clipped->below.empty() || clipped->above.empty()) return std::nullopt;
-
   if (!standsOnPlatform(clipped->below)) return std::nullopt;
+  // The sweep's risky area of the part above equals the clipped region's (tested to 1e-6), and keeps J_G
+  // exactly what the candidate was ranked by.
+  return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), candidate.riskyAboveMm2));
+}
 
-  auto child = makeNode(std::make_shared<const TriangleMesh>(std::move(clipped->below)));
-  child->parent = node;
-  child->plane = plane;
-  child->region = std::make_shared<const TriangleMesh>(std::move(clipped->above));
-  child->prefixJgMm2 = node->prefixJgMm2 + candidate.riskyAboveMm2;
-  child->level = node->level + 1;
-  return std::shared_ptr<const SearchNode>(std::move(child));
+Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_ptr<const SearchNode>& node,
+                                                          const Plane& plane) {
+  const std::string where = "plane " + std::to_string(node->level + 1);
+  if (!isRealizable(m_machine, plane.normal, degToRad(0.01)))
+    return Error{ErrorCode::InvalidParameter,
+                 "the machine cannot print along this plane's normal: tilt it back within the machine's limits", where};
+  if (!planeClearsPlatform(plane, m_platform, m_machine.up))
+    return Error{ErrorCode::InvalidParameter,
+                 "the plane cuts the platform region (Criterion III): move it up or tilt it less", where};
+  ++m_clips;
+  auto clipped = clipByPlane(*node->remaining, plane, node->level);
+  if (!clipped.ok()) return Error{clipped.error().code, clipped.error().message, where};
+  if (clipped->above.empty())
+    return Error{ErrorCode::InvalidParameter, "the plane passes above what is left of the model: it cuts nothing off",
+                 where};
+  if (clipped->below.empty())
+    return Error{ErrorCode::InvalidParameter, "the plane leaves nothing below it to stand on the platform", where};
+  if (!standsOnPlatform(clipped->below))
+    return Error{ErrorCode::InvalidParameter,
+                 "after this cut a piece below the plane no longer stands on the platform (Criterion II): move or "
+                 "tilt the plane so the part below stays in one piece on the platform",
+                 where};
+  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions());
+  if (!risky.ok()) return Error{risky.error().code, risky.error().message, where};
+  const double regionRisky = risky->riskyAreaMm2;
+  return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), regionRisky));
 }
 
 OverhangOptions SearchEngine::overhangOptions() const {

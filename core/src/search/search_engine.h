@@ -6,6 +6,7 @@
 
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/common/job_context.h"
+#include "multidir/core/geometry/clipping.h"
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/search/search_options.h"
 #include "search/search_node.h"
@@ -27,6 +28,10 @@ class SearchEngine {
   std::optional<std::shared_ptr<const SearchNode>> extend(const std::shared_ptr<const SearchNode>& node,
                                                           const ScoredCandidate& candidate);
 
+  // Clips the node by a given plane (plan editing): every criterion is checked and a refusal says which.
+  // The region's risky area is measured on its mesh. Errors name the plane as "plane K" (K = level + 1).
+  Result<std::shared_ptr<const SearchNode>> cut(const std::shared_ptr<const SearchNode>& node, const Plane& plane);
+
   // Criterion II: whether every connected solid of `solid` touches the platform.
   bool standsOnPlatform(const TriangleMesh& solid) const;
 
@@ -46,6 +51,8 @@ class SearchEngine {
  private:
   OverhangOptions overhangOptions() const;
   std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining) const;
+  std::shared_ptr<SearchNode> makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
+                                        ClipResult clipped, double regionRiskyMm2) const;
 
   const MachineSpec& m_machine;
   const SearchOptions& m_options;

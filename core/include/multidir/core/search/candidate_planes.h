@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "multidir/core/common/result.h"
+#include "multidir/core/geometry/plane.h"
 #include "multidir/core/search/machine.h"
 #include "multidir/core/search/plane_sweep.h"
 
@@ -29,6 +30,9 @@ Status validate(const CandidateOptions& options);
 // that are multiples of the spacing (0 excluded: that is the platform's own direction); 5-DOF: the lattice points within the tilt limit and
 // outside forbidden cones, up excluded.
 std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOptions& options);
+
+// Criterion III: whether the platform region P lies wholly below `plane` (at least clearanceMm below).
+bool planeClearsPlatform(const Plane& plane, const PlatformRegion& platform, const Vec3& up, double clearanceMm = 0.0);
 
 // Offsets along one normal for a solid: every stepMm from just above the lowest allowed offset to below the
 // solid's top, where the lowest allowed offset keeps the platform region P wholly below (Criterion III).
