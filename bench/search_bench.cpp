@@ -2,7 +2,7 @@
 // triangles, candidates, wall seconds, peak memory, regions, J_G before and after.
 //
 //   multidir_search_bench [--models kitten,bunny,...] [--machine 5dof|4dof] [--axes N] [--threads N]
-//                         [--scheme beam|greedy|cgreedy] [--beam-width B]
+//                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--refine ROUNDS]
 // Up is +Y for every shared model. Peak memory is the process's maximum resident set so far.
 #include <sys/resource.h>
 
@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
     else if (flag == "--diversity-offset") options.diversityOffsetMm = std::atof(value.c_str());
     else if (flag == "--diversity-cosine") options.diversityCosine = std::atof(value.c_str());
     else if (flag == "--normals") options.candidates.normalSamples = std::atoi(value.c_str());
+    else if (flag == "--refine") options.refinementRounds = std::atoi(value.c_str());
     else if (flag == "--verbose") verbose = value == "1";
     else {
       std::fprintf(stderr, "unknown option %s\n", flag.c_str());
@@ -61,9 +62,10 @@ int main(int argc, char** argv) {
   }
   if (machine.kind == MachineKind::RotaryPlatform) machine.rotationAxis = Vec3::UnitX();
 
-  std::printf("machine %s, scheme %s, beam width %d, alpha %.0f, normals %d, offset step %.1f mm, w %.0f%s\n",
+  std::printf("machine %s, scheme %s, beam width %d, alpha %.0f, normals %d, refinement rounds %d, offset step %.1f mm, "
+              "w %.0f%s\n",
               machineKindName(machine.kind), schemeName(options.scheme), options.beamWidth, options.alphaMaxDegrees,
-              options.candidates.normalSamples, options.candidates.offsetStepMm, options.minVolumeDivisor,
+              options.candidates.normalSamples, options.refinementRounds, options.candidates.offsetStepMm, options.minVolumeDivisor,
               axes ? (", axis search over " + std::to_string(axes) + " axes").c_str() : "");
   std::printf("%-12s %9s %11s %9s %9s %7s %12s %12s %8s\n", "model", "triangles", "candidates", "seconds", "peak MiB",
               "regions", "J_G before", "J_G after", "after %");

@@ -39,6 +39,8 @@ const char* const kDecomposeHelp =
     "  --beam-width B       beams kept per level, 1 to 1000 (default: 10)\n"
     "  --alpha DEGREES      maximal self-supporting angle, at least 0 and below 90 (default: 45)\n"
     "  --normals N          candidate normals sampled on the sphere, 1 to 100000 (default: 250)\n"
+    "  --refine N           beam: refine the best planes between the sampled normals in N rounds, 0 = off\n"
+    "                       (default: 3)\n"
     "  --offset-step MM     spacing of candidate planes along a normal, 0.01 to 1000 (default: 1)\n"
     "  --w W                every region keeps at least 1/W of the model's volume, 1 to 1000 (default: 10)\n"
     "  --threads N          worker threads, 0 = all (default: 0)\n"
@@ -139,6 +141,7 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
   apply("--beam-width", [&](const std::string& t) { options.beamWidth = parseInteger(t, "--beam-width"); });
   apply("--alpha", [&](const std::string& t) { options.alphaMaxDegrees = parseNumber(t, "--alpha"); });
   apply("--normals", [&](const std::string& t) { options.candidates.normalSamples = parseInteger(t, "--normals"); });
+  apply("--refine", [&](const std::string& t) { options.refinementRounds = parseInteger(t, "--refine"); });
   apply("--offset-step",
         [&](const std::string& t) { options.candidates.offsetStepMm = parseNumber(t, "--offset-step"); });
   apply("--w", [&](const std::string& t) { options.minVolumeDivisor = parseNumber(t, "--w"); });
@@ -150,7 +153,7 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   const ParsedArgs parsed =
       parseArgs(args,
                 {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
-                 "--offset-step", "--w", "--threads", "--profile", "-o", "--summary", "--support-spacing"},
+                 "--refine", "--offset-step", "--w", "--threads", "--profile", "-o", "--summary", "--support-spacing"},
                 {"--help", "--no-supports"}, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "multidir/core/common/units.h"
@@ -137,4 +138,39 @@ TEST(CandidatePlanes, NoOffsetCutsThePlatformRegion) {
     const double platformTop = n.dot(platform.center) + platform.radiusMm * inPlane.norm();
     EXPECT_GT(grid.firstMm, platformTop);
   }
+}
+
+TEST(CandidatePlanes, FiveAxisNeighboursLieOnTheConeAroundTheNormal) {
+  const MachineSpec spec;  // 5-DOF, tilt up to 90 degrees
+  const Vec3 normal = Vec3(1, 0, 1).normalized();
+  const double radius = degToRad(5.0);
+  const auto neighbours = neighbourNormals(spec, normal, radius);
+  EXPECT_EQ(neighbours.size(), 6u);
+  for (const Vec3& n : neighbours) {
+    EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(std::acos(std::clamp(n.dot(normal), -1.0, 1.0)), radius, 1e-9);
+    EXPECT_TRUE(isRealizable(spec, n));
+  }
+}
+
+TEST(CandidatePlanes, FiveAxisNeighboursBeyondTheTiltLimitAreLeftOut) {
+  MachineSpec spec;
+  spec.maxTiltDegrees = 60.0;
+  const Vec3 atLimit = rotaryDirection(rotary(), 60.0);  // 60 degrees from +Z
+  const auto neighbours = neighbourNormals(spec, atLimit, degToRad(5.0));
+  EXPECT_FALSE(neighbours.empty());
+  EXPECT_LT(neighbours.size(), 6u);
+  for (const Vec3& n : neighbours) EXPECT_TRUE(isRealizable(spec, n));
+}
+
+TEST(CandidatePlanes, RotaryNeighboursAreWholeStepsOnEitherSide) {
+  const MachineSpec spec = rotary();  // 1-degree steps, -60..60
+  const auto neighbours = neighbourNormals(spec, rotaryDirection(spec, 30.0), degToRad(2.0));
+  ASSERT_EQ(neighbours.size(), 2u);
+  EXPECT_NEAR(machineAnglesFor(spec, neighbours[0]).rotaryDegrees, 28.0, 1e-9);
+  EXPECT_NEAR(machineAnglesFor(spec, neighbours[1]).rotaryDegrees, 32.0, 1e-9);
+  // Below one step there is nothing between the realizable angles.
+  EXPECT_TRUE(neighbourNormals(spec, rotaryDirection(spec, 30.0), degToRad(0.4)).empty());
+  // Nothing beyond the range.
+  EXPECT_EQ(neighbourNormals(spec, rotaryDirection(spec, 60.0), degToRad(1.0)).size(), 1u);
 }

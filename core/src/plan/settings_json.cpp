@@ -43,6 +43,7 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"deltaGrowth", o.deltaGrowth},
           {"diversityCosine", o.diversityCosine},
           {"diversityOffsetMm", o.diversityOffsetMm},
+          {"refinementRounds", o.refinementRounds},
           {"platformToleranceMm", o.platformToleranceMm},
           {"threads", o.threads}};
 }
@@ -91,6 +92,9 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   o.deltaGrowth = field["deltaGrowth"].number();
   o.diversityCosine = field["diversityCosine"].number();
   o.diversityOffsetMm = field["diversityOffsetMm"].number();
+  // Plans written before refinement existed were searched without it.
+  const auto refinement = field.optional("refinementRounds");
+  o.refinementRounds = refinement ? smallInteger(*refinement) : 0;
   o.platformToleranceMm = field["platformToleranceMm"].number();
   o.threads = smallInteger(field["threads"]);
   if (Status valid = validate(o); !valid) field.failInside(valid.error().message, ErrorCode::InvalidParameter);

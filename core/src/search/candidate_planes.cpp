@@ -67,6 +67,56 @@ std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOp
   return normals;
 }
 
+double normalSpacingRadians(const MachineSpec& machine, const CandidateOptions& options) {
+  switch (machine.kind) {
+    case MachineKind::ThreeAxis: return 0.0;
+    case MachineKind::RotaryPlatform: {
+      const int stride =
+          std::max(1, static_cast<int>(std::round(options.rotarySpacingDegrees / machine.angleStepDegrees)));
+      return degToRad(stride * machine.angleStepDegrees);
+    }
+    case MachineKind::TiltRotate: return std::sqrt(4.0 * kPi / options.normalSamples);
+  }
+  return 0.0;
+}
+
+std::vector<Vec3> neighbourNormals(const MachineSpec& machine, const Vec3& normal, double radiusRadians,
+                                   double turnRadians) {
+  std::vector<Vec3> neighbours;
+  switch (machine.kind) {
+    case MachineKind::ThreeAxis: break;
+    case MachineKind::RotaryPlatform: {
+      const double step = machine.angleStepDegrees;
+      const int steps = static_cast<int>(std::round(radToDeg(radiusRadians) / step));
+      if (steps < 1) break;
+      const double angle = machineAnglesFor(machine, normal).rotaryDegrees;
+      const double base = std::round(angle / step) * step;
+      for (int sign : {-1, 1}) {
+        const double a = base + sign * steps * step;
+        if (a < machine.minAngleDegrees - 1e-9 || a > machine.maxAngleDegrees + 1e-9 || std::abs(a) < 1e-9) continue;
+        neighbours.push_back(rotaryDirection(machine, a));
+      }
+      break;
+    }
+    case MachineKind::TiltRotate: {
+      const Vec3 n = normal.normalized();
+      const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+      const Vec3 u = n.cross(helper).normalized();
+      const Vec3 v = n.cross(u);
+      for (int k = 0; k < 6; ++k) {
+        const double theta = turnRadians + k * kPi / 3.0;
+        const Vec3 d =
+            (std::cos(radiusRadians) * n + std::sin(radiusRadians) * (std::cos(theta) * u + std::sin(theta) * v))
+                .normalized();
+        if (d.dot(machine.up) > 1.0 - 1e-12) continue;  // up itself is the platform's own direction
+        if (isRealizable(machine, d)) neighbours.push_back(d);
+      }
+      break;
+    }
+  }
+  return neighbours;
+}
+
 namespace {
 
 // Highest point of the disc P along `normal`: its centre plus the radius times the in-plane part of n.

@@ -65,6 +65,73 @@ bool sameState(const SearchNode& a, const SearchNode& b) {
          std::abs(a.jg() - b.jg()) <= 1e-9 * std::max(1.0, a.jg());
 }
 
+// Key of a candidate in Algorithm 1: its relaxation round, then J_G.
+struct CandidateKey {
+  int round = 0;
+  double jg = 0.0;
+  bool operator<(const CandidateKey& other) const { return round != other.round ? round < other.round : jg < other.jg; }
+};
+
+CandidateKey keyOf(const ScoredCandidate& c, const SearchOptions& o) { return {relaxationRound(c.riskyAboveMm2, o), c.jgMm2}; }
+
+// The pool in the order Algorithm 1 takes it: relaxation round, then J_G, then pool position.
+std::vector<std::size_t> beamOrder(const std::vector<ScoredCandidate>& pool, const SearchOptions& o) {
+  std::vector<CandidateKey> keys(pool.size());
+  for (std::size_t i = 0; i < pool.size(); ++i) keys[i] = keyOf(pool[i], o);
+  std::vector<std::size_t> order(pool.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (keys[a] < keys[b]) return true;
+    if (keys[b] < keys[a]) return false;
+    return a < b;  // pool order is (beam, normal, offset): fixed
+  });
+  return order;
+}
+
+// Refines the best candidates between the lattice normals (a pattern search on the sphere per seed: six
+// normals around the best so far, the radius halved each round) and adds what it scores to the pool. The
+// lattice spacing (~13 degrees for 250 normals) is coarse enough that which side of a feature a lattice
+// normal falls on decides whether a region comes out risk-free; the bunny's plan swung between 3 % and 15 %
+// of J_G with the number of normals before this. Returns true when cancelled.
+bool refineCandidates(SearchEngine& engine, const std::vector<NodePtr>& beams, const SearchOptions& o,
+                      std::vector<ScoredCandidate>& pool) {
+  if (o.refinementRounds == 0) return false;
+  const double spacing = normalSpacingRadians(engine.machine(), o.candidates);
+  if (spacing <= 0) return false;
+  // Seeds: the first beamWidth distinct (beam, normal) pairs in Algorithm 1's order.
+  std::vector<ScoredCandidate> seeds;
+  for (std::size_t index : beamOrder(pool, o)) {
+    if (static_cast<int>(seeds.size()) >= o.beamWidth) break;
+    const ScoredCandidate& c = pool[index];
+    const bool seen = std::any_of(seeds.begin(), seeds.end(),
+                                  [&](const ScoredCandidate& s) { return s.beam == c.beam && s.normal == c.normal; });
+    if (!seen) seeds.push_back(c);
+  }
+  for (const ScoredCandidate& seed : seeds) {
+    Vec3 center = engine.normals()[seed.normal];
+    CandidateKey best = keyOf(seed, o);
+    double radius = spacing / 2;
+    for (int round = 0; round < o.refinementRounds; ++round, radius /= 2) {
+      std::vector<int> indices;
+      for (const Vec3& n : neighbourNormals(engine.machine(), center, radius, round * kPi / 6))
+        indices.push_back(engine.addNormal(n));
+      if (indices.empty()) break;
+      bool cancelled = false;
+      const std::vector<ScoredCandidate> scored = engine.scoreNormals(*beams[seed.beam], seed.beam, indices, cancelled);
+      if (cancelled) return true;
+      for (const ScoredCandidate& c : scored) {
+        if (keyOf(c, o) < best) {
+          best = keyOf(c, o);
+          center = engine.normals()[c.normal];
+        }
+      }
+      // Every plane scored joins the pool: near-best planes of other normals give the beam its choices.
+      pool.insert(pool.end(), scored.begin(), scored.end());
+    }
+  }
+  return false;
+}
+
 // Algorithm 1 of the paper.
 bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best, const SearchProgressSink& sink,
                    int& levels) {
@@ -81,16 +148,8 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
       if (cancelled) return true;
       pool.insert(pool.end(), scored.begin(), scored.end());
     }
-    std::vector<int> round(pool.size());
-    for (std::size_t i = 0; i < pool.size(); ++i) round[i] = relaxationRound(pool[i].riskyAboveMm2, o);
-    std::vector<std::size_t> order(pool.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      if (round[a] != round[b]) return round[a] < round[b];
-      if (pool[a].jgMm2 != pool[b].jgMm2) return pool[a].jgMm2 < pool[b].jgMm2;
-      return a < b;  // pool order is (beam, normal, offset): fixed
-    });
-
+    if (refineCandidates(engine, beams, o, pool)) return true;
+    const std::vector<std::size_t> order = beamOrder(pool, o);
     std::vector<NodePtr> next;
     std::vector<ScoredCandidate> chosen;
     for (std::size_t index : order) {
@@ -186,7 +245,7 @@ Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& mac
   plan.rotationAxis = machine.rotationAxis;
   plan.statistics.candidatesScored = engine.candidatesScored();
   plan.statistics.candidatesPerLevel = std::max(0, engine.firstLevelCandidates());
-  plan.statistics.normals = static_cast<int>(engine.normals().size());
+  plan.statistics.normals = engine.latticeSize();
   plan.statistics.levels = levels;
   plan.statistics.clipsPerformed = engine.clipsPerformed();
   plan.statistics.threads = engine.threads();

@@ -15,6 +15,7 @@ SearchEngine::SearchEngine(const TriangleMesh& model, const MachineSpec& machine
                            JobContext& job)
     : m_machine(machine), m_options(options), m_job(job) {
   m_normals = candidateNormals(machine, options.candidates);
+  m_latticeSize = static_cast<int>(m_normals.size());
   m_platform = platformRegionFor(model, machine, options.platformToleranceMm);
   m_sinAlpha = std::sin(degToRad(options.alphaMaxDegrees));
   m_modelVolume = signedVolume(model);
@@ -40,18 +41,29 @@ std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const Triangl
 }
 
 std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int beamIndex, bool& cancelled) {
-  const int normalCount = static_cast<int>(m_normals.size());
-  std::vector<std::vector<ScoredCandidate>> perNormal(normalCount);
-  std::vector<long long> offered(normalCount, 0);
+  std::vector<int> lattice(m_latticeSize);
+  for (int i = 0; i < m_latticeSize; ++i) lattice[i] = i;
+  const long long before = m_candidatesScored;
+  std::vector<ScoredCandidate> all = scoreNormals(node, beamIndex, lattice, cancelled);
+  if (m_firstLevelCandidates < 0) m_firstLevelCandidates = static_cast<int>(m_candidatesScored - before);
+  return all;
+}
+
+std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, int beamIndex,
+                                                        const std::vector<int>& normalIndices, bool& cancelled) {
+  const int count = static_cast<int>(normalIndices.size());
+  std::vector<std::vector<ScoredCandidate>> perNormal(count);
+  std::vector<long long> offered(count, 0);
   const double volumeSlack = 1e-9 * m_modelVolume;
   const PlaneSweeper sweeper(*node.remaining, node.riskyUpShare, m_sinAlpha, m_options.supportedBandMm);
 
-  parallelFor(normalCount, m_threads, [&](int i) {
+  parallelFor(count, m_threads, [&](int k) {
     if (m_job.isCancelled()) return;
+    const int i = normalIndices[k];
     const Vec3& n = m_normals[i];
     const OffsetGrid grid = candidateOffsets(*node.remaining, n, m_platform, m_machine.up, m_options.candidates);
     if (grid.count == 0) return;
-    offered[i] = grid.count;
+    offered[k] = grid.count;
     const SweepProfile profile = sweeper.sweep(n, grid);
     for (int j = 0; j < grid.count; ++j) {
       const double above = profile.volumeAboveMm3[j];
@@ -64,20 +76,24 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
       c.riskyUpAboveMm2 = std::max(0.0, profile.riskyAreaFlaggedMm2[j]);
       c.volumeAboveMm3 = above;
       c.jgMm2 = node.prefixJgMm2 + c.riskyAboveMm2 + std::max(0.0, node.riskyUpAreaMm2 - c.riskyUpAboveMm2);
-      perNormal[i].push_back(c);
+      perNormal[k].push_back(c);
     }
   });
   cancelled = m_job.isCancelled();
 
   std::vector<ScoredCandidate> all;
-  long long total = 0;
-  for (int i = 0; i < normalCount; ++i) {
-    total += offered[i];
-    all.insert(all.end(), perNormal[i].begin(), perNormal[i].end());
+  for (int k = 0; k < count; ++k) {
+    m_candidatesScored += offered[k];
+    all.insert(all.end(), perNormal[k].begin(), perNormal[k].end());
   }
-  m_candidatesScored += total;
-  if (m_firstLevelCandidates < 0) m_firstLevelCandidates = static_cast<int>(total);
   return all;
+}
+
+int SearchEngine::addNormal(const Vec3& normal) {
+  for (std::size_t i = 0; i < m_normals.size(); ++i)
+    if (m_normals[i].dot(normal) > 1.0 - 1e-12) return static_cast<int>(i);
+  m_normals.push_back(normal);
+  return static_cast<int>(m_normals.size()) - 1;
 }
 
 std::shared_ptr<SearchNode> SearchEngine::makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,

@@ -22,6 +22,13 @@ class SearchEngine {
   // Every admissible candidate of a node (Criterion III by construction, minimal volume above), in a
   // fixed order (normal, then offset). Sets `cancelled` and returns early when the job is cancelled.
   std::vector<ScoredCandidate> score(const SearchNode& node, int beamIndex, bool& cancelled);
+  // The same for some normals only (indices into normals()), in the order given.
+  std::vector<ScoredCandidate> scoreNormals(const SearchNode& node, int beamIndex, const std::vector<int>& normalIndices,
+                                            bool& cancelled);
+  // Adds a normal beyond the lattice (refinement) and returns its index; a normal already there keeps its own.
+  int addNormal(const Vec3& normal);
+  const MachineSpec& machine() const { return m_machine; }
+  const SearchOptions& options() const { return m_options; }
 
   // Clips the node by the candidate. Empty when the part below would not stand on the platform
   // (Criterion II) or the clip failed.
@@ -42,6 +49,7 @@ class SearchEngine {
   Decomposition planOf(const SearchNode& node) const;
 
   const std::vector<Vec3>& normals() const { return m_normals; }
+  int latticeSize() const { return m_latticeSize; }
   int threads() const { return m_threads; }
   long long candidatesScored() const { return m_candidatesScored; }
   int clipsPerformed() const { return m_clips; }
@@ -57,7 +65,8 @@ class SearchEngine {
   const MachineSpec& m_machine;
   const SearchOptions& m_options;
   JobContext& m_job;
-  std::vector<Vec3> m_normals;
+  std::vector<Vec3> m_normals;  // the lattice first, then normals added by refinement
+  int m_latticeSize = 0;
   PlatformRegion m_platform;
   double m_sinAlpha = 0.0;
   double m_modelVolume = 0.0;

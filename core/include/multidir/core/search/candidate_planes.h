@@ -31,6 +31,16 @@ Status validate(const CandidateOptions& options);
 // outside forbidden cones, up excluded.
 std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOptions& options);
 
+// The typical angle between neighbouring normals of candidateNormals (radians): sqrt(4 pi / samples) on the
+// 5-DOF lattice, the step between used stepper angles for 4-DOF, 0 for 3-DOF.
+double normalSpacingRadians(const MachineSpec& machine, const CandidateOptions& options);
+
+// Realizable normals about `radiusRadians` away from `normal`, to refine a promising candidate between the
+// lattice points: 5-DOF six directions on a cone around it (turned by `turnRadians` about it); 4-DOF the
+// stepper angles nearest to +-radius from its angle (none when the radius is below one step); 3-DOF none.
+std::vector<Vec3> neighbourNormals(const MachineSpec& machine, const Vec3& normal, double radiusRadians,
+                                   double turnRadians = 0.0);
+
 // Criterion III: whether the platform region P lies wholly below `plane` (at least clearanceMm below).
 bool planeClearsPlatform(const Plane& plane, const PlatformRegion& platform, const Vec3& up, double clearanceMm = 0.0);
 

@@ -28,6 +28,10 @@ struct SearchOptions {
   double deltaGrowth = 5.0;                 // ... and multiplies delta by this until the beams are full
   double diversityCosine = 0.95;            // two children of one parent are too close when |n.n'| > this
   double diversityOffsetMm = 2.0;           // ... and their offsets differ by less than this
+  // Beam search: the best `beamWidth` candidates of a level are refined between the lattice normals, in this
+  // many rounds of a pattern search (half the lattice spacing, then halved each round); 0: off. The paper's
+  // closing remark: sampled planes miss the real optimum; refining them locally is how to get closer.
+  int refinementRounds = 3;
   double supportedBandMm = kDefaultSupportedBandMm;  // height above the platform or a base that it supports
   double platformToleranceMm = kDefaultPlatformToleranceMm;  // how close a solid must reach to touch the platform
   int threads = 0;                          // 0: all hardware threads
