@@ -6,6 +6,7 @@
 
 #include "cli_args.h"
 #include "decompose_command.h"
+#include "export_command.h"
 #include "info_command.h"
 #include "report_command.h"
 #include "simulate_command.h"
@@ -22,6 +23,7 @@ const char* const kUsage =
     "Commands:\n"
     "  info MODEL                  statistics, load checks and overhang area of a model\n"
     "  decompose MODEL -o OUTDIR   cut a model into regions with printing directions; write the plan\n"
+    "  export PLAN_DIR -o OUTDIR   the print job of a plan: one mesh per step, posed as the machine holds it\n"
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
     "  help [COMMAND]              show this help, or a command's help\n"
@@ -31,17 +33,6 @@ const char* const kUsage =
     "  --version                   show the version\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input file, 2 usage error, 3 internal error.\n";
-
-// Commands of later versions: named here so users get a precise answer instead of "unknown command".
-bool isPlannedCommand(const std::string& command) {
-  return command == "export";
-}
-
-int notAvailable(const std::string& command) {
-  std::cerr << "multidir: '" << command << "' is not available in this version. Run 'multidir --help' for the "
-            << "commands it has.\n";
-  return kExitUsage;
-}
 
 int help(const std::vector<std::string>& args) {
   if (args.empty()) {
@@ -57,6 +48,10 @@ int help(const std::vector<std::string>& args) {
     std::cout << kDecomposeHelp;
     return kExitOk;
   }
+  if (args[0] == "export") {
+    std::cout << kExportHelp;
+    return kExitOk;
+  }
   if (args[0] == "report") {
     std::cout << kReportHelp;
     return kExitOk;
@@ -65,7 +60,6 @@ int help(const std::vector<std::string>& args) {
     std::cout << kSimulateHelp;
     return kExitOk;
   }
-  if (isPlannedCommand(args[0])) return notAvailable(args[0]);
   throw UsageError("multidir help: unknown command '" + args[0] + "'. Run 'multidir --help' for the list.");
 }
 
@@ -86,7 +80,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "decompose") return runDecompose(rest, std::cout, std::cerr);
   if (command == "simulate") return runSimulate(rest, std::cout, std::cerr);
   if (command == "report") return runReport(rest, std::cout, std::cerr);
-  if (isPlannedCommand(command)) return notAvailable(command);
+  if (command == "export") return runExport(rest, std::cout, std::cerr);
   if (!command.empty() && command[0] == '-')
     throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");
   throw UsageError("multidir: unknown command '" + command + "'. Run 'multidir --help' for the list.");

@@ -64,22 +64,15 @@ TEST(CliInfo, UsageErrorsExitWithTwoAndSayWhatIsWrong) {
   EXPECT_EQ(runCli("", dir).exitCode, 2);
 }
 
-TEST(CliInfo, LaterCommandsAreNotAvailableYet) {
-  const std::string dir = multidir::test::scratchDirectory("CliInfo.Later");
-  for (const std::string command : {"export"}) {
-    const CliRun run = runCli(command + " model.stl", dir);
-    EXPECT_EQ(run.exitCode, 2) << command;
-    EXPECT_NE(run.err.find("not available in this version"), std::string::npos) << run.err;
-  }
-}
-
-TEST(CliInfo, HelpListsInfoAndDecomposeButNotLaterCommands) {
+TEST(CliInfo, HelpListsEveryCommand) {
   const std::string dir = multidir::test::scratchDirectory("CliInfo.Help");
   const CliRun run = runCli("--help", dir);
   EXPECT_EQ(run.exitCode, 0);
   EXPECT_NE(run.out.find("info MODEL"), std::string::npos);
   EXPECT_NE(run.out.find("decompose MODEL"), std::string::npos);
-  EXPECT_EQ(run.out.find("\n  export"), std::string::npos);
+  EXPECT_NE(run.out.find("export PLAN_DIR -o OUTDIR"), std::string::npos);
+  EXPECT_NE(run.out.find("report MODEL"), std::string::npos);
+  EXPECT_NE(run.out.find("simulate"), std::string::npos);
   const CliRun info = runCli("help info", dir);
   EXPECT_EQ(info.exitCode, 0);
   EXPECT_NE(info.out.find("--alpha DEGREES"), std::string::npos);
