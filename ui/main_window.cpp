@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include <QAction>
+#include <QCloseEvent>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -26,13 +27,18 @@
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/samples/samples.h"
 #include "ui/device/hardware_panel.h"
+#include "ui/edit/plan_editor.h"
 #include "ui/error_text.h"
 #include "ui/jobs/model_loader.h"
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/overhang_panel.h"
 #include "ui/panels/plan_panel.h"
 #include "ui/panels/search_panel.h"
+#include "ui/project/project_session.h"
+#include "ui/project/window_state.h"
+#include "ui/picture_file.h"
 #include "ui/studio_startup.h"
+#include "ui/viewer/axis_picker.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
@@ -73,12 +79,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   m_search = new SearchJob(this);
 
   buildDocks();
+  m_project = new ProjectSession(*this);
   buildMenus();
   buildUpBox();
   buildStatusBar();
   updateModelStatus();
   onMachineChanged();
   resize(1480, 900);
+  restoreWindowState(*this);
 }
 
 MainWindow::~MainWindow() {
@@ -89,7 +97,8 @@ void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::chooseFile);
   open->setShortcut(QKeySequence::Open);
-  open->setStatusTip(tr("Open a mesh file (STL, OBJ, OFF or PLY)"));
+  open->setStatusTip(tr("Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project"));
+  m_project->addFileActions(file);
 
   QMenu* samples = file->addMenu(tr("&Samples"));
   for (const core::samples::SampleInfo& info : core::samples::catalogue()) {
@@ -107,6 +116,9 @@ void MainWindow::buildMenus() {
   m_exportPlanAction->setObjectName(QStringLiteral("exportPlan"));
   m_exportPlanAction->setStatusTip(tr("Save the plan shown: plan.json and one STL per region"));
   m_exportPlanAction->setEnabled(false);
+  QAction* screenshot = file->addAction(tr("Export Sc&reenshot..."), this, &MainWindow::chooseExportScreenshot);
+  screenshot->setObjectName(QStringLiteral("exportScreenshot"));
+  screenshot->setStatusTip(tr("Save the 3D view as shown to a PNG or JPEG file"));
   file->addSeparator();
   QAction* loadMachine = file->addAction(tr("&Load machine profile..."), this, &MainWindow::chooseLoadMachine);
   loadMachine->setObjectName(QStringLiteral("loadMachine"));
@@ -116,6 +128,7 @@ void MainWindow::buildMenus() {
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
 
+  buildEditMenu();
   m_viewMenu = menuBar()->addMenu(tr("&View"));
   QAction* fit = m_viewMenu->addAction(tr("&Fit to View"), m_viewer, &MeshViewerWidget::fitView);
   fit->setShortcut(QKeySequence(Qt::Key_F));
@@ -127,7 +140,14 @@ void MainWindow::buildMenus() {
   QMenu* search = menuBar()->addMenu(tr("&Search"));
   QAction* run = search->addAction(tr("&Run"), this, [this] { runSearch(); });
   run->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-  QAction* cancel = search->addAction(tr("&Cancel"), this, &MainWindow::cancelSearch);
+  // Esc also ends picking the rotation axis, wherever the focus is.
+  QAction* cancel = search->addAction(tr("&Cancel"), this, [this] {
+    if (m_axisPicker->isActive()) {
+      m_axisPicker->cancel();
+    } else {
+      cancelSearch();
+    }
+  });
   cancel->setShortcut(QKeySequence(Qt::Key_Escape));
 }
 
@@ -169,6 +189,21 @@ void MainWindow::buildDocks() {
   connect(m_planPanel, &PlanPanel::explodeDistanceChanged, m_viewer, &MeshViewerWidget::setExplodeDistance);
   connect(m_planPanel, &PlanPanel::shownRegionsChanged, m_viewer, &MeshViewerWidget::setShownRegions);
   connect(m_planPanel, &PlanPanel::turnWithMachineChanged, m_viewer, &MeshViewerWidget::setTurnWithMachine);
+  connect(m_planPanel, &PlanPanel::supportsVisibleChanged, m_viewer, &MeshViewerWidget::setSupportsVisible);
+
+  // The 4-DOF axis picked on the platform goes into the Machine panel as if typed.
+  m_axisPicker = new AxisPicker(m_viewer, this);
+  connect(m_machinePanel, &MachinePanel::pickAxisToggled, m_axisPicker, [this](bool on) {
+    if (on) {
+      m_axisPicker->start();
+    } else {
+      m_axisPicker->cancel();
+    }
+  });
+  connect(m_axisPicker, &AxisPicker::activeChanged, m_machinePanel, &MachinePanel::setPicking);
+  connect(m_axisPicker, &AxisPicker::axisPicked, this,
+          [this](const core::Vec3& axis) { m_machinePanel->setRotationAxis(axis, upDirection()); });
+  connect(m_axisPicker, &AxisPicker::message, this, [this](const QString& text) { statusBar()->showMessage(text); });
 
   // Hardware: the Machine panel's profile gives the device's limits; the plan shown is the one to run.
   auto* hardwarePanel = new HardwarePanel(this);
@@ -187,6 +222,7 @@ void MainWindow::buildDocks() {
   connect(hardwarePanel, &HardwarePanel::currentRegionChanged, m_planPanel, [this](int region) {
     m_planPanel->setShownRegions(region >= 0 ? region + 1 : std::numeric_limits<int>::max());
   });
+  buildPlanEditing();
 }
 
 void MainWindow::buildUpBox() {
@@ -236,6 +272,10 @@ void MainWindow::buildStatusBar() {
 }
 
 void MainWindow::openFile(const QString& path) {
+  if (ProjectSession::isProjectFile(path)) {
+    m_project->openProject(path);
+    return;
+  }
   m_pendingName = QFileInfo(path).fileName();
   m_loader->loadFile(path);
 }
@@ -246,11 +286,13 @@ void MainWindow::openSample(const QString& id) {
 }
 
 void MainWindow::chooseFile() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open Model"), m_lastDirectory,
-                                                    tr("Meshes (*.stl *.obj *.off *.ply);;All files (*)"));
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open Model or Project"), m_lastDirectory,
+      tr("Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;"
+         "MultiDir projects (*.multidir);;All files (*)"));
   if (path.isEmpty()) return;
   m_lastDirectory = QFileInfo(path).absolutePath();
-  openFile(path);
+  m_project->openFromUser(path);
 }
 
 void MainWindow::setUpDirection(const core::Vec3& up) {
@@ -284,6 +326,7 @@ void MainWindow::showModel(const LoadedModel& model) {
   clearPlan();
   m_viewer->setMesh(*model.mesh, upDirection());
   m_planPanel->setModelSize(modelSizeMm());
+  m_machinePanel->setPickAvailable(true);
   setWindowTitle(tr("%1 - MultiDir Studio").arg(model.name));
   statusBar()->clearMessage();
   statusBar()->setToolTip(QString());
@@ -320,6 +363,7 @@ void MainWindow::reportLoadError(const QString& source, const QString& headline,
 
 void MainWindow::onUpChanged() {
   onMachineChanged();
+  emit upDirectionChanged();
   if (!m_model) return;
   clearPlan();
   m_viewer->setMesh(*m_model->mesh, upDirection());
@@ -372,6 +416,7 @@ void MainWindow::onMachineChanged() {
   const bool valid = m_machinePanel->validateFor(upDirection());
   const bool rotary = m_machinePanel->kind() == core::MachineKind::RotaryPlatform;
   m_viewer->setRotationAxis(rotary ? m_machinePanel->rotationAxis() : std::nullopt);
+  if (!rotary && m_axisPicker) m_axisPicker->cancel();
   m_searchPanel->setRotaryMachine(rotary);
   (void)valid;
   updateRunnable();
@@ -443,6 +488,7 @@ void MainWindow::onSearchFinished(const SearchRun& run) {
   }
   statusBar()->showMessage(run.plan->cancelled ? tr("Search cancelled: showing the best plan found so far.")
                                                : tr("Search finished."));
+  if (!run.supportsNote.isEmpty()) statusBar()->showMessage(run.supportsNote);
   showPlan(run);
   emit searchFinished(run);
 }
@@ -455,21 +501,40 @@ void MainWindow::onSearchFailed(const QString& headline, const QString& detail) 
   emit searchFailed(detail.isEmpty() ? headline : headline + QLatin1Char(' ') + detail);
 }
 
-void MainWindow::showPlan(const SearchRun& run) {
+void MainWindow::showPlan(const SearchRun& run, PlanChange change) {
   m_plan = run;
-  m_viewer->setPlan(run.plan);
-  m_planPanel->setPlan(*run.plan, run.machine.kind);
-  m_viewer->setPrintingDirectionsVisible(true);
-  m_planDock->raise();
+  using Camera = MeshViewerWidget::Camera;
+  m_viewer->setPlan(run.plan, change == PlanChange::Edit ? Camera::Keep : Camera::Fit);
+  m_viewer->setSupports(run.supports);
+  m_planPanel->setPlan(*run.plan, run.machine.kind, run.supports ? *run.supports : std::vector<core::SupportSet>{});
+  if (change == PlanChange::New) {
+    m_viewer->setPrintingDirectionsVisible(true);
+    m_planDock->raise();
+    m_planEditor->setPlan(m_model && m_model->mesh != m_regionsModel ? m_model->mesh : nullptr, run);
+  }
   m_exportPlanAction->setEnabled(true);
   emit planShown();
 }
 
 void MainWindow::clearPlan() {
+  const bool hadPlan = m_plan.has_value();
   m_plan.reset();
   m_viewer->clearPlan();
   m_planPanel->clearPlan();
+  if (m_planEditor) m_planEditor->clear();
   if (m_exportPlanAction) m_exportPlanAction->setEnabled(false);
+  if (hadPlan) emit planCleared();
+}
+
+void MainWindow::showRebuiltPlan(const SearchRun& run) { showPlan(run); }
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!m_project->confirmClose()) {
+    event->ignore();
+    return;
+  }
+  saveWindowState(*this);
+  QMainWindow::closeEvent(event);
 }
 
 bool MainWindow::exportPlan(const QString& directory, QString* error) {
@@ -489,7 +554,9 @@ bool MainWindow::exportPlan(const QString& directory, QString* error) {
     const core::Result<std::string> checksum = core::fileChecksum(metadata.modelPath);
     if (checksum) metadata.modelChecksum = checksum.value();
   }
-  const core::Status saved = core::savePlan(*m_plan->plan, metadata, localPath(directory));
+  const std::vector<core::SupportSet> noSupports;
+  const core::Status saved =
+      core::savePlan(*m_plan->plan, metadata, m_plan->supports ? *m_plan->supports : noSupports, localPath(directory));
   if (!saved) {
     return fail(tr("Could not export the plan to %1: %2 (%3)")
                     .arg(directory, errorHeadline(saved.error().code), QString::fromStdString(saved.error().describe())));
@@ -513,6 +580,7 @@ bool MainWindow::openPlan(const QString& directory, QString* error) {
   run.options = loaded->metadata.options;
   run.axisSearchCount = loaded->metadata.axisSearchCount;
   run.plan = std::make_shared<const core::Decomposition>(loaded->decomposition);
+  if (!loaded->supports.empty()) run.supports = std::make_shared<const std::vector<core::SupportSet>>(loaded->supports);
   m_machinePanel->setMachineSpec(run.machine);
   m_searchPanel->setSearchOptions(run.options);
   m_searchPanel->setAxisSearchCount(run.axisSearchCount);
@@ -531,6 +599,7 @@ bool MainWindow::openPlan(const QString& directory, QString* error) {
   model.statistics = core::computeStatistics(*merged);
   model.naturalUp = run.machine.up;
   model.mesh = merged;
+  m_regionsModel = merged;
   m_pendingPlan = run;
   showModel(model);
   return true;
@@ -567,6 +636,33 @@ void MainWindow::chooseExportPlan() {
   if (directory.isEmpty()) return;
   QString error;
   if (!exportPlan(directory, &error)) QMessageBox::warning(this, tr("Export Plan"), error);
+}
+
+bool MainWindow::exportScreenshot(const QString& path, QString* error) {
+  QString problem;
+  if (!savePicture(m_viewer->grabFramebuffer(), path, &problem)) {
+    statusBar()->showMessage(problem);
+    if (error) *error = problem;
+    return false;
+  }
+  statusBar()->showMessage(tr("Screenshot saved to %1.").arg(path));
+  return true;
+}
+
+void MainWindow::chooseExportScreenshot() {
+  const QString png = tr("PNG images (*.png)");
+  const QString jpeg = tr("JPEG images (*.jpg *.jpeg)");
+  const QString name = m_model ? QFileInfo(m_model->name).completeBaseName() : QStringLiteral("multidir");
+  QString filter = png;
+  QString path = QFileDialog::getSaveFileName(this, tr("Export Screenshot"),
+                                              QDir(m_lastDirectory).filePath(name + QStringLiteral(".png")),
+                                              png + QStringLiteral(";;") + jpeg, &filter);
+  if (path.isEmpty()) return;
+  // A name typed without an extension gets the chosen filter's.
+  if (QFileInfo(path).suffix().isEmpty()) path += filter == jpeg ? QStringLiteral(".jpg") : QStringLiteral(".png");
+  m_lastDirectory = QFileInfo(path).absolutePath();
+  QString error;
+  if (!exportScreenshot(path, &error)) QMessageBox::warning(this, tr("Export Screenshot"), error);
 }
 
 void MainWindow::chooseOpenPlan() {

@@ -18,19 +18,25 @@
 #include "ui/jobs/search_job.h"
 #include "ui/loaded_model.h"
 
+class QCloseEvent;
 class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
 class QProgressBar;
+class QUndoStack;
 
 namespace multidir::ui {
 
+class AxisPicker;
 class MachinePanel;
 class MeshViewerWidget;
 class ModelLoader;
 class OverhangPanel;
+class PlanEditor;
 class PlanPanel;
+class PlaneEditPanel;
+class ProjectSession;
 class SearchPanel;
 
 class MainWindow : public QMainWindow {
@@ -61,6 +67,13 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] MachinePanel* machinePanel() const { return m_machinePanel; }
   [[nodiscard]] SearchPanel* searchPanel() const { return m_searchPanel; }
   [[nodiscard]] PlanPanel* planPanel() const { return m_planPanel; }
+  // The project (ui/project): Open/Save Project, unsaved changes, autosave and recovery, Open Recent, drops.
+  [[nodiscard]] ProjectSession* projectSession() const { return m_project; }
+  // Plan editing (ui/edit): the Edit plan dock, its editor and the undo stack behind Edit > Undo/Redo. A new
+  // plan (searched or opened) or a new model clears the stack.
+  [[nodiscard]] QUndoStack* undoStack() const { return m_undoStack; }
+  [[nodiscard]] PlanEditor* planEditor() const { return m_planEditor; }
+  [[nodiscard]] PlaneEditPanel* planeEditPanel() const { return m_planeEditPanel; }
 
   // Starts a search of the model with the Machine and Search panels' settings; false (with the reason in
   // the status bar) when there is no model, the machine is invalid or a search is running.
@@ -70,9 +83,16 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] bool isSearching() const;
   // The plan shown, with what it was computed with (nullopt: none).
   [[nodiscard]] const std::optional<SearchRun>& plan() const { return m_plan; }
+  // Shows a plan made elsewhere (a project's plan rebuilt from its planes) as a new plan.
+  void showRebuiltPlan(const SearchRun& run);
 
   // Writes the plan shown into `directory` (core::savePlan). On failure returns false with a message.
   bool exportPlan(const QString& directory, QString* error = nullptr);
+  // Saves the 3D view as shown (its framebuffer, at its size) to `path`, PNG or JPEG by the extension
+  // (savePicture). On failure returns false with the message, also shown in the status bar.
+  bool exportScreenshot(const QString& path, QString* error = nullptr);
+  // Picking the 4-DOF rotation axis on the platform (the Machine panel's "Pick on platform").
+  [[nodiscard]] AxisPicker* axisPicker() const { return m_axisPicker; }
   // Reads a plan folder (core::loadPlan) and shows it: over its model when that file is still there
   // (loaded first), else over the regions themselves.
   bool openPlan(const QString& directory, QString* error = nullptr);
@@ -85,7 +105,7 @@ class MainWindow : public QMainWindow {
   void searchFinished(const multidir::ui::SearchRun& run);
   // A search could not run or failed; `message` is what the Search panel says.
   void searchFailed(const QString& message);
-  // A plan (searched or opened) is now shown.
+  // A plan (searched, opened, or edited: plan() has the edited one) is now shown.
   void planShown();
   // A model was loaded and is now shown.
   void modelShown(const QString& name);
@@ -93,6 +113,14 @@ class MainWindow : public QMainWindow {
   // the file and a translated sentence on the problem (core's detail is in the message box).
   void loadFailed(const QString& message);
   void loadingChanged(bool loading);
+  // The user (or setUpDirection) chose another up direction.
+  void upDirectionChanged();
+  // The plan shown was dropped (a new model or up direction, or View > Show the model).
+  void planCleared();
+
+ protected:
+  // Asks about unsaved project changes first (ProjectSession::confirmClose); saves the window's layout.
+  void closeEvent(QCloseEvent* event) override;
 
  private:
   void buildMenus();
@@ -102,11 +130,18 @@ class MainWindow : public QMainWindow {
   void updateOverhangs();
   void onMachineChanged();
   void updateRunnable();
-  void showPlan(const SearchRun& run);
+  // New: a searched or opened plan (fits the view, raises the Plan dock, restarts editing). Edit: the
+  // editor's plan replaces the one shown (the camera and the docks stay as they are).
+  enum class PlanChange { New, Edit };
+  void showPlan(const SearchRun& run, PlanChange change = PlanChange::New);
+  // Defined in ui/edit/main_window_editing.cpp.
+  void buildPlanEditing();
+  void buildEditMenu();
   void clearPlan();
   void onSearchFinished(const SearchRun& run);
   void onSearchFailed(const QString& headline, const QString& detail);
   void chooseExportPlan();
+  void chooseExportScreenshot();
   void chooseOpenPlan();
   void chooseSaveMachine();
   void chooseLoadMachine();
@@ -140,12 +175,19 @@ class MainWindow : public QMainWindow {
   QDockWidget* m_searchDock = nullptr;
   QMenu* m_viewMenu = nullptr;
   QAction* m_exportPlanAction = nullptr;
+  AxisPicker* m_axisPicker = nullptr;
   std::optional<SearchRun> m_plan;
   // What the running search was started for: its result is dropped when the model or up changed since.
   std::shared_ptr<const core::TriangleMesh> m_searchModel;
   core::Vec3 m_searchUp = core::Vec3::UnitZ();
   // A plan opened from a folder, waiting for its model to load.
   std::optional<SearchRun> m_pendingPlan;
+  // A plan opened without its model is shown over this mesh of its regions: such a plan cannot be edited.
+  std::shared_ptr<const core::TriangleMesh> m_regionsModel;
+  QUndoStack* m_undoStack = nullptr;
+  PlanEditor* m_planEditor = nullptr;
+  PlaneEditPanel* m_planeEditPanel = nullptr;
+  ProjectSession* m_project = nullptr;
 };
 
 }  // namespace multidir::ui

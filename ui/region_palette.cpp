@@ -10,7 +10,11 @@ constexpr unsigned kRegionRgb[kRegionColorCount] = {
     0xbcf60c, 0x008080, 0x9a6324, 0xfabebe, 0x800000, 0xaaffc3, 0x808000, 0xb39ddb,
 };
 
+constexpr QRgb kSupportRgb = 0x4010f0;
+
 }  // namespace
+
+QColor supportColor() { return QColor(kSupportRgb); }
 
 QColor regionColor(int index) {
   const int slot = (index < 0 ? 0 : index) % kRegionColorCount;

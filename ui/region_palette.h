@@ -11,4 +11,8 @@ constexpr int kRegionColorCount = 16;
 // The colour of region `index` (0 = printed first). A negative index counts as 0.
 [[nodiscard]] QColor regionColor(int index);
 
+// The colour of support structures: one for every region, a blue-violet whose hue is far from every region
+// colour (and from blends of two of them), the model's grey-blue, the platform and the background.
+[[nodiscard]] QColor supportColor();
+
 }  // namespace multidir::ui

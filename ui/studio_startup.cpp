@@ -18,7 +18,9 @@
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/samples/samples.h"
 #include "ui/main_window.h"
+#include "ui/picture_file.h"
 #include "ui/panels/overhang_panel.h"
+#include "ui/project/project_session.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
@@ -79,7 +81,7 @@ StudioCommandLine parseStudioCommandLine(const QStringList& arguments) {
   parser.addOption(search);
   parser.addOption(alpha);
   parser.addPositionalArgument(QStringLiteral("model"),
-                               StudioStartupText::tr("Mesh file to open (.stl .obj .off .ply). Default: the first sample."),
+                               StudioStartupText::tr("Mesh file (.stl .obj .off .ply) or MultiDir project (.multidir) to open. Default: the first sample."),
                                StudioStartupText::tr("[model]"));
 
   auto fail = [&result](const QString& message) {
@@ -168,6 +170,8 @@ bool installTranslations(const QString& language) {
 }
 
 void startStudio(MainWindow& window, const StudioOptions& options) {
+  // Interactive runs offer what a crashed studio autosaved (a non-modal question; --screenshot never asks).
+  if (options.screenshotPath.isEmpty()) window.projectSession()->offerRecovery();
   if (options.up) window.setUpDirection(*options.up);
   if (options.alphaMaxDegrees >= 0.0) {
     window.overhangPanel()->setAlphaMaxDegrees(static_cast<int>(std::lround(options.alphaMaxDegrees)));
@@ -198,8 +202,10 @@ int saveScreenshotWhenReady(MainWindow& window, const QString& path, QString* er
   }
   // A search started with the model (--search) is waited for too: the picture shows its plan.
   QCoreApplication::processEvents();
-  if (!processEventsUntil([&window] { return !window.isSearching(); }, timeoutMs)) {
-    setError(StudioStartupText::tr("The search did not finish within %1 s.").arg(timeoutMs / 1000));
+  // So is a project's plan being rebuilt from its planes.
+  if (!processEventsUntil([&window] { return !window.isSearching() && !window.projectSession()->isOpening(); },
+                          timeoutMs)) {
+    setError(StudioStartupText::tr("The search or the project's plan did not finish within %1 s.").arg(timeoutMs / 1000));
     return 1;
   }
   // Layout, then at least one rendered frame, before the picture is taken.
@@ -207,9 +213,9 @@ int saveScreenshotWhenReady(MainWindow& window, const QString& path, QString* er
   const std::size_t before = viewer->framesRendered();
   viewer->update();
   processEventsUntil([viewer, before] { return viewer->framesRendered() > before; }, 10000);
-  const QPixmap picture = window.grab();
-  if (picture.isNull() || !picture.save(path)) {
-    setError(StudioStartupText::tr("Could not write the screenshot to %1.").arg(path));
+  QString problem;
+  if (!savePicture(window.grab().toImage(), path, &problem)) {
+    setError(problem);
     return 1;
   }
   if (!window.hasModel()) {

@@ -53,8 +53,9 @@ QString chooseLanguage(const QString& requested);
 // creating windows: texts are translated when widgets are built.
 bool installTranslations(const QString& language);
 
-// Sets the up direction and starts loading the model (or the first sample) in `window`; with runSearch,
-// the search starts once the model is shown.
+// Sets the up direction and starts loading the model (or the first sample; a .multidir opens as a project)
+// in `window`; with runSearch, the search starts once the model is shown. Without --screenshot, an autosave
+// left by a crash is offered for recovery (ProjectSession::offerRecovery).
 void startStudio(MainWindow& window, const StudioOptions& options);
 
 // Waits until `window` has finished loading (at most `timeoutMs`), lets it render, and saves a picture

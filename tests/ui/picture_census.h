@@ -108,4 +108,24 @@ inline int regionColoursSeen(const QImage& picture, int regionCount, double minF
   return seen;
 }
 
+// The fraction of `picture`'s pixels that show `colour` under flat shading: bright enough and pointing the
+// same way in RGB space (within `minCosine`).
+inline double colourFraction(const QImage& picture, const QColor& colour, double minCosine = 0.997) {
+  const QImage image = picture.convertToFormat(QImage::Format_RGB32);
+  const double cr = colour.red(), cg = colour.green(), cb = colour.blue();
+  const double colourLength = std::sqrt(cr * cr + cg * cg + cb * cb);
+  if (image.isNull() || colourLength == 0.0) return 0.0;
+  long long count = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    const auto* line = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+    for (int x = 0; x < image.width(); ++x) {
+      const double r = qRed(line[x]), g = qGreen(line[x]), b = qBlue(line[x]);
+      const double length = std::sqrt(r * r + g * g + b * b);
+      if (length < 60.0) continue;
+      if ((r * cr + g * cg + b * cb) / (length * colourLength) > minCosine) ++count;
+    }
+  }
+  return static_cast<double>(count) / (static_cast<double>(image.width()) * image.height());
+}
+
 }  // namespace multidir::test

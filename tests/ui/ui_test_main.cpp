@@ -4,14 +4,27 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QSettings>
+#include <QStandardPaths>
 
 #include "ui/studio_startup.h"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
+  // Settings, autosaves and recent files go to a test folder (~/.qttest), never the user's own.
+  QStandardPaths::setTestModeEnabled(true);
   multidir::ui::setDefaultSurfaceFormat();
   QApplication app(argc, argv);
-  QApplication::setApplicationName(QStringLiteral("MultiDir Studio tests"));
+  // One settings file and data folder per process: ctest runs tests side by side, and tests of settings, recent
+  // files and autosaves must not see each other's. Both are removed when the tests end.
+  QApplication::setApplicationName(QStringLiteral("MultiDir Studio tests %1").arg(QCoreApplication::applicationPid()));
   QApplication::setOrganizationName(QStringLiteral("MultiDir"));
-  return RUN_ALL_TESTS();
+  // Tests close windows without running the application's event loop; closing one must not end the others.
+  QApplication::setQuitOnLastWindowClosed(false);
+  const int result = RUN_ALL_TESTS();
+  QFile::remove(QSettings().fileName());
+  QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+  return result;
 }

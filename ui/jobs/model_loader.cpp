@@ -9,6 +9,7 @@
 #include <new>
 #include <optional>
 
+#include "multidir/core/plan/checksum.h"
 #include "multidir/core/samples/samples.h"
 #include "ui/error_text.h"
 
@@ -84,6 +85,9 @@ void ModelLoader::loadFile(const QString& path) {
     LoadedModel model;
     model.name = QFileInfo(path).fileName();
     model.sourcePath = path;
+    // Read again for the checksum: a project remembers which bytes its plan was made on.
+    const core::Result<std::string> checksum = core::fileChecksum(QFile::encodeName(path).toStdString());
+    if (checksum) model.checksum = QString::fromStdString(checksum.value());
     model.statistics = result->report.statistics;
     for (const std::string& repair : result->report.repairs) model.repairs << QString::fromStdString(repair);
     model.mesh = std::make_shared<const core::TriangleMesh>(std::move(result.value().mesh));
@@ -101,6 +105,7 @@ void ModelLoader::loadSample(const QString& id) {
     }
     LoadedModel model;
     model.name = id;
+    model.sampleId = id;
     for (const core::samples::SampleInfo& info : core::samples::catalogue()) {
       if (info.id == key) model.name = QString::fromStdString(info.title);
     }

@@ -7,9 +7,49 @@
 #include <optional>
 
 #include "multidir/core/search/decompose.h"
+#include "multidir/core/supports/projected_supports.h"
 #include "ui/error_text.h"
 
 namespace multidir::ui {
+namespace {
+
+struct GrownSupports {
+  std::shared_ptr<const std::vector<core::SupportSet>> sets;
+  QString note;  // why there are none although they were needed
+};
+
+// Supports for a complete plan that still has risky area; nothing for a cancelled or support-free one.
+// Never throws: the plan is good whatever happens here.
+GrownSupports growSupports(const core::TriangleMesh& model, const core::Decomposition& plan,
+                           core::MachineSpec machine, core::JobContext& job, const std::string& phase) {
+  GrownSupports grown;
+  if (plan.cancelled || !(plan.jgAfterMm2 > 0.0)) return grown;
+  // An axis search may have chosen another axis than the machine's: the plan's regions stand on that one.
+  if (machine.kind == core::MachineKind::RotaryPlatform) machine.rotationAxis = plan.rotationAxis;
+  job.setProgress(0.0, phase);
+  try {
+    core::Result<core::ProjectedSupports> result =
+        core::generateSupports(model, plan, machine, core::SupportOptions{}, job);
+    if (result) {
+      grown.sets = std::make_shared<const std::vector<core::SupportSet>>(std::move(result->regions));
+      job.setProgress(1.0, phase);
+    } else if (result.error().code == core::ErrorCode::Cancelled) {
+      grown.note = SearchJob::tr("The search was cancelled while growing supports: the plan is shown without them.");
+    } else {
+      grown.note = SearchJob::tr("The supports could not be grown: %1 (%2)")
+                       .arg(errorHeadline(result.error().code), QString::fromStdString(result.error().describe()));
+    }
+  } catch (const std::bad_alloc&) {
+    grown.note = SearchJob::tr("Not enough memory to grow the supports: the plan is shown without them.");
+  } catch (const std::exception& e) {
+    grown.note = SearchJob::tr("Unexpected error while growing the supports: %1").arg(QString::fromLocal8Bit(e.what()));
+  } catch (...) {
+    grown.note = SearchJob::tr("Unexpected error while growing the supports.");
+  }
+  return grown;
+}
+
+}  // namespace
 
 // State the worker writes and the GUI thread reads. Reports are coalesced: the worker stores the latest one
 // and posts a delivery only when none is pending, so a fast search cannot flood the event queue.
@@ -23,6 +63,7 @@ struct SearchJob::Shared {
 
   // Outcome, read after the thread finished.
   std::optional<core::Result<core::Decomposition>> result;
+  GrownSupports supports;
   QString headline;
   QString detail;
 };
@@ -36,6 +77,7 @@ SearchJob::SearchJob(QObject* parent) : QObject(parent) {
 SearchJob::~SearchJob() {
   if (m_thread) {
     m_job.cancel();
+    m_supportsJob.cancel();
     m_thread->wait();
     delete m_thread;
   }
@@ -60,12 +102,16 @@ bool SearchJob::start(std::shared_ptr<const core::TriangleMesh> model, const cor
         },
         Qt::QueuedConnection);
   };
-  m_job = core::JobContext([shared, post](double fraction, const std::string& phase) {
+  auto report = [shared, post](double fraction, const std::string& phase) {
     std::lock_guard<std::mutex> lock(shared->mutex);
     shared->fraction = fraction;
     shared->phase = phase;
     shared->fractionChanged = true;
     post();
+  };
+  m_job = core::JobContext([report](double fraction, const std::string& phase) { report(kSearchShare * fraction, phase); });
+  m_supportsJob = core::JobContext([report](double fraction, const std::string& phase) {
+    report(kSearchShare + (1.0 - kSearchShare) * fraction, phase);
   });
   const core::SearchProgressSink sink = [shared, post](const core::SearchProgress& progress) {
     std::lock_guard<std::mutex> lock(shared->mutex);
@@ -78,7 +124,9 @@ bool SearchJob::start(std::shared_ptr<const core::TriangleMesh> model, const cor
   run.options = options;
   run.axisSearchCount = machine.kind == core::MachineKind::RotaryPlatform ? std::max(0, axisSearchCount) : 0;
   core::JobContext job = m_job;  // copies share the cancellation flag
-  m_thread = QThread::create([shared, model, run, job, sink]() mutable {
+  core::JobContext supportsJob = m_supportsJob;
+  const std::string supportsPhase = tr("growing supports").toStdString();
+  m_thread = QThread::create([shared, model, run, job, supportsJob, supportsPhase, sink]() mutable {
     // Nothing may escape a worker thread: whatever goes wrong becomes a message.
     try {
       if (run.axisSearchCount > 0) {
@@ -97,6 +145,9 @@ bool SearchJob::start(std::shared_ptr<const core::TriangleMesh> model, const cor
       shared->result.reset();
       shared->headline = tr("Unexpected error during the search.");
     }
+    if (shared->result && shared->result->ok()) {
+      shared->supports = growSupports(*model, shared->result->value(), run.machine, supportsJob, supportsPhase);
+    }
   });
   connect(m_thread, &QThread::finished, this, [this, shared, run]() mutable {
     if (m_shared != shared) return;
@@ -105,6 +156,8 @@ bool SearchJob::start(std::shared_ptr<const core::TriangleMesh> model, const cor
     deliverProgress();  // the last report, before the result
     if (shared->result && shared->result->ok()) {
       run.plan = std::make_shared<const core::Decomposition>(std::move(shared->result->value()));
+      run.supports = std::move(shared->supports.sets);
+      run.supportsNote = shared->supports.note;
       emit runningChanged(false);
       emit finished(run);
       return;
@@ -124,7 +177,9 @@ bool SearchJob::start(std::shared_ptr<const core::TriangleMesh> model, const cor
 }
 
 void SearchJob::cancel() {
-  if (m_thread) m_job.cancel();
+  if (!m_thread) return;
+  m_job.cancel();
+  m_supportsJob.cancel();
 }
 
 void SearchJob::deliverProgress() {

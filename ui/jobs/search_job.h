@@ -7,6 +7,11 @@
 // Cancel() asks core to stop (JobContext::cancel); core then returns the best plan found so far, which
 // arrives through finished() with `cancelled` set in the decomposition.
 //
+// A complete plan with risky area left (J_G > 0) gets supports next, on the same thread: core::generateSupports
+// with default SupportOptions and the machine searched for (its axis the one the plan uses), reported as the
+// phase "growing supports" in the last tenth of the progress. Cancelling then delivers the plan without
+// supports (SearchRun::supportsNote says why).
+//
 // Thread: create and call from the GUI thread; the signals are emitted there too.
 #include <QMetaType>
 #include <QObject>
@@ -16,6 +21,7 @@
 #include "multidir/core/common/job_context.h"
 #include "multidir/core/mesh/triangle_mesh.h"
 #include "multidir/core/search/decomposition.h"
+#include "multidir/core/supports/support_set.h"
 
 class QThread;
 
@@ -27,6 +33,11 @@ struct SearchRun {
   core::SearchOptions options;
   int axisSearchCount = 0;  // 4-DOF axes tried; 0: the machine's own axis only
   std::shared_ptr<const core::Decomposition> plan;  // set in finished(); never null there
+  // One set per region in printing order; null when none were grown (J_G = 0, a cancelled search, or
+  // supportsNote).
+  std::shared_ptr<const std::vector<core::SupportSet>> supports;
+  // Why a plan with J_G > 0 has no supports (translated; empty otherwise).
+  QString supportsNote;
 };
 
 class SearchJob : public QObject {
@@ -49,6 +60,9 @@ class SearchJob : public QObject {
   [[nodiscard]] bool isRunning() const { return m_thread != nullptr; }
   [[nodiscard]] bool isCancelling() const { return m_thread != nullptr && m_job.isCancelled(); }
 
+  // The share of the progress bar the search takes; supports take the rest.
+  static constexpr double kSearchShare = 0.9;
+
  signals:
   // The search's latest report (level, beams alive, best J_G, candidates, axis).
   void progressed(const multidir::core::SearchProgress& progress);
@@ -66,6 +80,7 @@ class SearchJob : public QObject {
 
   QThread* m_thread = nullptr;
   core::JobContext m_job;
+  core::JobContext m_supportsJob;  // its own context: the search's progress has reached 1 when supports start
   std::shared_ptr<Shared> m_shared;
 };
 

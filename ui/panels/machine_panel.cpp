@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QPushButton>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -49,12 +50,18 @@ MachinePanel::MachinePanel(QWidget* parent) : QWidget(parent) {
   m_axis->setObjectName(QStringLiteral("rotationAxis"));
   m_axis->setToolTip(tr("The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform "
                         "plane (perpendicular to up)"));
+  m_pickAxis = new QPushButton(tr("Pick on platform"), m_rotaryGroup);
+  m_pickAxis->setObjectName(QStringLiteral("pickAxisOnPlatform"));
+  m_pickAxis->setCheckable(true);
+  m_pickAxis->setToolTip(tr("Click two points on the platform in the 3D view: the axis runs from the first to the "
+                            "second. Esc or this button again cancels."));
   m_minAngle = angleBox(m_rotaryGroup, -180, 180, defaults.minAngleDegrees, QStringLiteral("minAngle"));
   m_maxAngle = angleBox(m_rotaryGroup, -180, 180, defaults.maxAngleDegrees, QStringLiteral("maxAngle"));
   m_step = angleBox(m_rotaryGroup, 0, 90, defaults.angleStepDegrees, QStringLiteral("angleStep"));
   m_step->setToolTip(tr("The stepper's resolution: only multiples of this angle can be reached"));
   auto* rotary = new QFormLayout(m_rotaryGroup);
   rotary->addRow(tr("Rotation axis:"), m_axis);
+  rotary->addRow(QString(), m_pickAxis);
   rotary->addRow(tr("Minimal angle:"), m_minAngle);
   rotary->addRow(tr("Maximal angle:"), m_maxAngle);
   rotary->addRow(tr("Angle step:"), m_step);
@@ -96,6 +103,7 @@ MachinePanel::MachinePanel(QWidget* parent) : QWidget(parent) {
     emit machineChanged();
   });
   connect(m_axis, &QLineEdit::textChanged, this, &MachinePanel::machineChanged);
+  connect(m_pickAxis, &QPushButton::toggled, this, &MachinePanel::pickAxisToggled);
   for (QDoubleSpinBox* box : {m_minAngle, m_maxAngle, m_step, m_maxTilt, m_radius}) {
     connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, &MachinePanel::machineChanged);
   }
@@ -166,9 +174,45 @@ bool MachinePanel::validateFor(const core::Vec3& up) {
 
 QString MachinePanel::errorText() const { return m_error->text(); }
 
+void MachinePanel::setRotationAxis(const core::Vec3& axis, const core::Vec3& up) {
+  // C-locale numbers (parseDirection reads '.'), without a "-0.0000" for a component that rounds to zero.
+  auto text = [&axis](int decimals) {
+    auto number = [decimals](double x) {
+      const double scale = std::pow(10.0, decimals);
+      const double rounded = std::round(x * scale) / scale;
+      return QString::number(rounded == 0.0 ? 0.0 : rounded, 'f', decimals);
+    };
+    return QStringLiteral("%1,%2,%3").arg(number(axis.x()), number(axis.y()), number(axis.z()));
+  };
+  // Four decimals read well and keep an axis exact for an up along x, y or z; a tilted up needs more for
+  // the rounded axis to stay in the platform plane (validate() allows 1e-6).
+  const core::Vec3 unitUp = up.normalized();
+  int decimals = 4;
+  for (; decimals < 9; ++decimals) {
+    const core::Result<core::Vec3> readBack = core::parseDirection(text(decimals).toStdString());
+    if (readBack && std::abs(readBack->normalized().dot(unitUp)) < 1e-7) break;
+  }
+  m_axis->setText(text(decimals));
+}
+
+void MachinePanel::setPickAvailable(bool available) {
+  m_pickAvailable = available;
+  updateEnabled();
+}
+
+void MachinePanel::setPicking(bool picking) {
+  const QSignalBlocker blocker(m_pickAxis);
+  m_pickAxis->setChecked(picking);
+}
+
+bool MachinePanel::isPicking() const { return m_pickAxis->isChecked(); }
+
 void MachinePanel::updateEnabled() {
   m_rotaryGroup->setVisible(kind() == core::MachineKind::RotaryPlatform);
   m_tiltGroup->setVisible(kind() == core::MachineKind::TiltRotate);
+  const bool pickable = m_pickAvailable && kind() == core::MachineKind::RotaryPlatform;
+  if (!pickable) m_pickAxis->setChecked(false);  // emits pickAxisToggled(false) when it was on
+  m_pickAxis->setEnabled(pickable);
 }
 
 }  // namespace multidir::ui

@@ -2,7 +2,8 @@
 // The Machine panel: which printer the plan is for. 3-DOF (up only), 4-DOF rotary platform (its axis typed
 // as x,y,z, angle range, stepper step) or 5-DOF tilting arm (tilt limit), and the platform radius (0 = the
 // model's footprint). Every edit is checked with core::validate(MachineSpec); the first problem is shown in
-// the panel, in red, until it is fixed.
+// the panel, in red, until it is fixed. The 4-DOF axis can also be picked in the 3D view ("Pick on
+// platform", checkable): the panel only asks for it (pickAxisToggled) and shows the axis picked.
 #include <QWidget>
 #include <optional>
 
@@ -12,6 +13,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
+class QPushButton;
 class QWidget;
 
 namespace multidir::ui {
@@ -35,16 +37,32 @@ class MachinePanel : public QWidget {
   [[nodiscard]] core::MachineKind kind() const;
   // The 4-DOF axis as typed (normalised), when it can be read.
   [[nodiscard]] std::optional<core::Vec3> rotationAxis() const;
+  // Writes `axis` (unit length, perpendicular to `up`) into the axis field as x,y,z with four decimals, or
+  // as many more as it takes for the text to stay perpendicular to `up` within validate()'s tolerance;
+  // machineChanged follows as if typed.
+  void setRotationAxis(const core::Vec3& axis, const core::Vec3& up);
+
+  // Whether picking the axis on the platform makes sense (a model, and so a platform, is shown). The
+  // button is enabled only then and for a 4-DOF machine.
+  void setPickAvailable(bool available);
+  // Shows whether picking is under way (checks the button) without emitting pickAxisToggled.
+  void setPicking(bool picking);
+  [[nodiscard]] bool isPicking() const;
 
  signals:
   // Any field changed.
   void machineChanged();
+  // The "Pick on platform" button was pressed (on: start picking) or released (off: cancel). It also goes
+  // off when picking stops making sense (another machine kind, or no platform).
+  void pickAxisToggled(bool on);
 
  private:
   void updateEnabled();
 
   QComboBox* m_kind = nullptr;
   QLineEdit* m_axis = nullptr;
+  QPushButton* m_pickAxis = nullptr;
+  bool m_pickAvailable = false;
   QDoubleSpinBox* m_minAngle = nullptr;
   QDoubleSpinBox* m_maxAngle = nullptr;
   QDoubleSpinBox* m_step = nullptr;

@@ -12,6 +12,7 @@
 #include <QTableWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "ui/region_palette.h"
@@ -46,10 +47,10 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent) {
   m_summary->setObjectName(QStringLiteral("planSummary"));
   m_summary->setWordWrap(true);
 
-  m_table = new QTableWidget(0, 5, this);
+  m_table = new QTableWidget(0, kSupportVolumeColumn + 1, this);
   m_table->setObjectName(QStringLiteral("regionTable"));
-  m_table->setHorizontalHeaderLabels(
-      {tr("Region"), tr("Volume (mm³)"), tr("Risky (mm²)"), tr("Direction"), tr("Machine angles")});
+  m_table->setHorizontalHeaderLabels({tr("Region"), tr("Volume (mm³)"), tr("Risky (mm²)"), tr("Direction"),
+                                      tr("Machine angles"), tr("Supports (mm³)")});
   m_table->verticalHeader()->hide();
   m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   m_table->horizontalHeader()->setStretchLastSection(true);
@@ -62,6 +63,10 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent) {
   m_directions->setChecked(true);
   m_planes = new QCheckBox(tr("Clipping planes"), this);
   m_planes->setObjectName(QStringLiteral("showPlanes"));
+  m_supports = new QCheckBox(tr("Supports"), this);
+  m_supports->setObjectName(QStringLiteral("showSupports"));
+  m_supports->setChecked(true);
+  m_supports->setToolTip(tr("The tree supports grown for the risky area the plan leaves, in one colour"));
   m_turn = new QCheckBox(tr("Turn the view as the machine turns the part"), this);
   m_turn->setObjectName(QStringLiteral("turnWithMachine"));
   m_explode = new QSlider(Qt::Horizontal, this);
@@ -88,6 +93,7 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent) {
   auto* form = new QFormLayout;
   form->addRow(tr("Show:"), m_directions);
   form->addRow(QString(), m_planes);
+  form->addRow(QString(), m_supports);
   form->addRow(tr("Exploded view:"), m_explode);
   form->addRow(tr("Printed up to:"), stepper);
   form->addRow(QString(), m_turn);
@@ -99,6 +105,7 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent) {
 
   connect(m_directions, &QCheckBox::toggled, this, &PlanPanel::directionsVisibleChanged);
   connect(m_planes, &QCheckBox::toggled, this, &PlanPanel::clippingPlanesVisibleChanged);
+  connect(m_supports, &QCheckBox::toggled, this, &PlanPanel::supportsVisibleChanged);
   connect(m_turn, &QCheckBox::toggled, this, &PlanPanel::turnWithMachineChanged);
   connect(m_explode, &QSlider::valueChanged, this, [this] { emit explodeDistanceChanged(explodeDistanceMm()); });
   connect(m_step, QOverload<int>::of(&QSpinBox::valueChanged), this, [this](int count) {
@@ -110,7 +117,10 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent) {
   clearPlan();
 }
 
-void PlanPanel::setPlan(const core::Decomposition& plan, core::MachineKind kind) {
+void PlanPanel::setPlan(const core::Decomposition& plan, core::MachineKind kind) { setPlan(plan, kind, {}); }
+
+void PlanPanel::setPlan(const core::Decomposition& plan, core::MachineKind kind,
+                        const std::vector<core::SupportSet>& supports) {
   m_regions = static_cast<int>(plan.regions.size());
   m_table->setRowCount(m_regions);
   for (int i = 0; i < m_regions; ++i) {
@@ -133,6 +143,12 @@ void PlanPanel::setPlan(const core::Decomposition& plan, core::MachineKind kind)
         break;
     }
     m_table->setItem(i, 4, cell(angles, false));
+    // A dash when no supports were grown for the plan (none needed, or none computed), so it is not read
+    // as "needs none".
+    const bool known = supports.size() == plan.regions.size();
+    auto* volume = cell(known ? number(supports[static_cast<std::size_t>(i)].volumeMm3, 1) : tr("–"), true);
+    if (!known) volume->setToolTip(tr("No supports were grown for this plan"));
+    m_table->setItem(i, kSupportVolumeColumn, volume);
   }
   m_summary->setText(tr("%n region(s); J_G %1 mm² before, %2 mm² after.", nullptr, m_regions)
                          .arg(number(plan.jgBeforeMm2, 1), number(plan.jgAfterMm2, 1)));
@@ -147,6 +163,9 @@ void PlanPanel::setPlan(const core::Decomposition& plan, core::MachineKind kind)
   }
   for (QWidget* w : std::initializer_list<QWidget*>{m_directions, m_planes, m_turn, m_explode, m_step, m_previous, m_next})
     w->setEnabled(m_regions > 0);
+  const bool hasSupports = supports.size() == plan.regions.size() &&
+                           std::any_of(supports.begin(), supports.end(), [](const core::SupportSet& set) { return !set.empty(); });
+  m_supports->setEnabled(hasSupports);
   updateStepLabel();
 }
 
@@ -160,6 +179,7 @@ void PlanPanel::clearPlan() {
   }
   for (QWidget* w : std::initializer_list<QWidget*>{m_directions, m_planes, m_turn, m_explode, m_step, m_previous, m_next})
     w->setEnabled(false);
+  m_supports->setEnabled(false);
   updateStepLabel();
 }
 
@@ -177,6 +197,8 @@ void PlanPanel::setExplodeFraction(double fraction) {
 }
 
 void PlanPanel::setClippingPlanesShown(bool shown) { m_planes->setChecked(shown); }
+
+void PlanPanel::setSupportsShown(bool shown) { m_supports->setChecked(shown); }
 
 void PlanPanel::setModelSize(double sizeMm) {
   if (std::isfinite(sizeMm) && sizeMm > 0.0) m_modelSizeMm = sizeMm;

@@ -1,13 +1,16 @@
 #pragma once
 // The Plan panel: the regions of the current plan as a table that doubles as the colour legend (index,
-// volume, risky area, printing direction, machine angles), view options (printing directions, clipping
-// planes, exploded view) and the sequence stepper (show regions 1..i, optionally turning the view as the
+// volume, risky area, printing direction, machine angles, support volume), view options (printing
+// directions, clipping planes, supports, exploded view) and the sequence stepper (show regions 1..i, optionally turning the view as the
 // machine turns the part).
 //
 // The panel only shows and collects; MainWindow passes its settings on to the viewer.
 #include <QWidget>
 
+#include <vector>
+
 #include "multidir/core/search/decomposition.h"
+#include "multidir/core/supports/support_set.h"
 
 class QCheckBox;
 class QLabel;
@@ -27,6 +30,9 @@ class PlanPanel : public QWidget {
   // Shows `plan`'s regions; `kind` chooses which machine angles are listed. Resets the stepper to show
   // every region and the exploded view to 0.
   void setPlan(const core::Decomposition& plan, core::MachineKind kind);
+  // The same with the plan's supports (one set per region in printing order, or empty: none grown). The
+  // Supports box is enabled only when some set has struts.
+  void setPlan(const core::Decomposition& plan, core::MachineKind kind, const std::vector<core::SupportSet>& supports);
   void clearPlan();
 
   [[nodiscard]] QTableWidget* regionTable() const { return m_table; }
@@ -36,12 +42,16 @@ class PlanPanel : public QWidget {
   [[nodiscard]] double explodeDistanceMm() const;
   void setExplodeFraction(double fraction);  // 0..1 of the slider
   void setClippingPlanesShown(bool shown);
+  void setSupportsShown(bool shown);
+  // The table's column with each region's support volume.
+  static constexpr int kSupportVolumeColumn = 5;
   // Scales the exploded view's slider: at its end, regions move this far apart (per level).
   void setModelSize(double sizeMm);
 
  signals:
   void directionsVisibleChanged(bool visible);
   void clippingPlanesVisibleChanged(bool visible);
+  void supportsVisibleChanged(bool visible);
   void explodeDistanceChanged(double distanceMm);
   void shownRegionsChanged(int count);
   void turnWithMachineChanged(bool turn);
@@ -52,6 +62,7 @@ class PlanPanel : public QWidget {
   QTableWidget* m_table = nullptr;
   QCheckBox* m_directions = nullptr;
   QCheckBox* m_planes = nullptr;
+  QCheckBox* m_supports = nullptr;
   QCheckBox* m_turn = nullptr;
   QSlider* m_explode = nullptr;
   QSpinBox* m_step = nullptr;

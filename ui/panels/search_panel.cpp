@@ -94,6 +94,11 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   buttons->addWidget(m_cancel);
   connect(m_run, &QPushButton::clicked, this, &SearchPanel::runClicked);
   connect(m_cancel, &QPushButton::clicked, this, &SearchPanel::cancelClicked);
+  connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::settingsChanged);
+  for (QSpinBox* box : {m_beamWidth, m_normals, m_axisCount})
+    connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
+  for (QDoubleSpinBox* box : {m_minVolumeDivisor, m_offsetStep, m_alpha})
+    connect(box, &QDoubleSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
 
   m_progress = new QProgressBar(this);
   m_progress->setObjectName(QStringLiteral("searchProgress"));
@@ -157,6 +162,7 @@ void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
   m_normals->setValue(options.candidates.normalSamples);
   m_offsetStep->setValue(options.candidates.offsetStepMm);
   m_alpha->setValue(options.alphaMaxDegrees);
+  emit settingsChanged();  // also when only options the panel does not show changed
 }
 
 int SearchPanel::axisSearchCount() const { return m_axisCount->isEnabled() ? m_axisCount->value() : 0; }

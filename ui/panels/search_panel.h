@@ -54,6 +54,8 @@ class SearchPanel : public QWidget {
  signals:
   void runClicked();
   void cancelClicked();
+  // A setting was edited (by the user or setSearchOptions / setAxisSearchCount).
+  void settingsChanged();
 
  private:
   void setRunning(bool running);

@@ -26,6 +26,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkSphereSource.h>
 #include <vtkTransform.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -33,6 +34,7 @@
 #include "ui/viewer/mesh_to_polydata.h"
 #include "ui/viewer/plan_scene.h"
 #include "ui/viewer/platform_geometry.h"
+#include "ui/viewer/support_scene.h"
 
 namespace multidir::ui {
 namespace {
@@ -44,6 +46,11 @@ constexpr double kPlatformRgb[3] = {0.60, 0.60, 0.61};
 // Overhanging faces: an orange-red that stands out against the grey-blue model and the grey platform.
 constexpr unsigned char kRiskyRgb[3] = {236, 84, 40};
 constexpr double kAxisRgb[3] = {1.0, 0.80, 0.10};
+constexpr double kPickMarkerRgb[3] = {0.95, 0.25, 0.85};
+// A pick marker's radius as a fraction of the platform's.
+constexpr double kPickMarkerFraction = 0.025;
+// A press and release this close (logical pixels) are a click, which picks; farther apart they are a drag.
+constexpr double kClickSlopPixels = 4.0;
 constexpr double kGridRgb[3] = {0.38, 0.38, 0.40};
 constexpr double kBackgroundTopRgb[3] = {0.12, 0.12, 0.14};
 constexpr double kBackgroundBottomRgb[3] = {0.40, 0.40, 0.42};
@@ -155,6 +162,10 @@ struct MeshViewerWidget::Impl {
   double modelSizeMm = 0.0;
   std::optional<core::Vec3> rotationAxis;
   std::unique_ptr<PlanScene> plan;
+  std::unique_ptr<SupportScene> supports;
+  bool picking = false;
+  std::optional<QPointF> pickPress;  // where a left button went down while picking, until it moved away
+  std::vector<vtkSmartPointer<vtkActor>> pickMarkers;
   bool turnWithMachine = false;
   core::Vec3 viewUp = core::Vec3::UnitZ();
 
@@ -170,6 +181,7 @@ struct MeshViewerWidget::Impl {
 
   Impl() {
     plan = std::make_unique<PlanScene>(renderer, overlay);
+    supports = std::make_unique<SupportScene>(renderer);
     renderer->GradientBackgroundOn();
     renderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
     renderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
@@ -333,8 +345,10 @@ QSize MeshViewerWidget::sizeHint() const { return {900, 700}; }
 
 void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3& up) {
   Impl& m = *m_impl;
+  endPickingOnNewScene();
   m.up = unitOrZ(up);
   m.plan->clear();
+  m.supports->clear();
   m.modelData = toPolyData(mesh);
   m.faceColors = vtkSmartPointer<vtkUnsignedCharArray>::New();
   m.faceColors->SetName("faceColors");
@@ -362,7 +376,9 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
 
 void MeshViewerWidget::clear() {
   Impl& m = *m_impl;
+  endPickingOnNewScene();
   m.plan->clear();
+  m.supports->clear();
   m.modelData = vtkSmartPointer<vtkPolyData>::New();
   m.faceColors = nullptr;
   m.riskyShown = 0;
@@ -407,28 +423,151 @@ void MeshViewerWidget::setRotationAxis(const std::optional<core::Vec3>& axis) {
 
 bool MeshViewerWidget::rotationAxisShown() const { return m_impl->axisActor->GetVisibility() != 0; }
 
-void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan) {
+PlatformDisc MeshViewerWidget::platform() const { return m_impl->platform; }
+
+void MeshViewerWidget::setPlatformPicking(bool on) {
+  Impl& m = *m_impl;
+  m.picking = on;
+  m.pickPress.reset();
+  if (on) {
+    setCursor(Qt::CrossCursor);
+  } else {
+    unsetCursor();
+    setPickMarkers({});
+  }
+}
+
+bool MeshViewerWidget::isPlatformPicking() const { return m_impl->picking; }
+
+void MeshViewerWidget::endPickingOnNewScene() {
+  if (!m_impl->picking) return;
+  setPlatformPicking(false);
+  emit platformPickCancelled();
+}
+
+PlatformHit MeshViewerWidget::platformHitAt(const QPointF& position) const {
+  const Impl& m = *m_impl;
+  if (!m.hasMesh) return {PlatformHitKind::NoPlatform, core::Vec3::Zero()};
+  // The ray from the near to the far clipping plane through the pixel, in VTK's display coordinates
+  // (device pixels, origin bottom left), as setMouseInformation hands clicks to VTK.
+  const qreal ratio = devicePixelRatioF();
+  const double x = position.x() * ratio;
+  const double y = m.window->GetSize()[1] - 1 - position.y() * ratio;
+  double ends[2][4];
+  for (int i = 0; i < 2; ++i) {
+    m.renderer->SetDisplayPoint(x, y, static_cast<double>(i));
+    m.renderer->DisplayToWorld();
+    m.renderer->GetWorldPoint(ends[i]);
+    if (ends[i][3] == 0.0) return {PlatformHitKind::Parallel, core::Vec3::Zero()};
+  }
+  const core::Vec3 nearPoint(ends[0][0] / ends[0][3], ends[0][1] / ends[0][3], ends[0][2] / ends[0][3]);
+  const core::Vec3 farPoint(ends[1][0] / ends[1][3], ends[1][1] / ends[1][3], ends[1][2] / ends[1][3]);
+  return hitPlatform(m.platform, nearPoint, farPoint - nearPoint);
+}
+
+std::optional<core::Vec3> MeshViewerWidget::platformPointAt(const QPoint& position) const {
+  const PlatformHit hit = platformHitAt(QPointF(position));
+  if (hit.kind != PlatformHitKind::Hit) return std::nullopt;
+  return hit.point;
+}
+
+std::optional<QPointF> MeshViewerWidget::widgetPositionOf(const core::Vec3& point) const {
+  const Impl& m = *m_impl;
+  vtkCamera* camera = m.renderer->GetActiveCamera();
+  double eye[3];
+  double forward[3];
+  camera->GetPosition(eye);
+  camera->GetDirectionOfProjection(forward);
+  if ((point - core::Vec3(eye[0], eye[1], eye[2])).dot(core::Vec3(forward[0], forward[1], forward[2])) <= 0.0)
+    return std::nullopt;
+  m.renderer->SetWorldPoint(point.x(), point.y(), point.z(), 1.0);
+  m.renderer->WorldToDisplay();
+  double display[3];
+  m.renderer->GetDisplayPoint(display);
+  const qreal ratio = devicePixelRatioF();
+  return QPointF(display[0] / ratio, (m.window->GetSize()[1] - 1 - display[1]) / ratio);
+}
+
+void MeshViewerWidget::setPickMarkers(const std::vector<core::Vec3>& points) {
+  Impl& m = *m_impl;
+  for (const vtkSmartPointer<vtkActor>& actor : m.pickMarkers) m.overlay->RemoveActor(actor);
+  m.pickMarkers.clear();
+  const double radius = kPickMarkerFraction * (m.platform.radiusMm > 0.0 ? m.platform.radiusMm : 50.0);
+  for (const core::Vec3& point : points) {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetCenter(point.x(), point.y(), point.z());
+    sphere->SetRadius(radius);
+    sphere->SetThetaResolution(24);
+    sphere->SetPhiResolution(16);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(sphere->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(kPickMarkerRgb[0], kPickMarkerRgb[1], kPickMarkerRgb[2]);
+    actor->GetProperty()->SetAmbient(0.4);
+    actor->GetProperty()->SetDiffuse(0.6);
+    actor->PickableOff();
+    // On the overlay layer, so a marker stays visible where the model stands in front of the platform.
+    m.overlay->AddActor(actor);
+    m.pickMarkers.push_back(actor);
+  }
+  update();
+}
+
+std::size_t MeshViewerWidget::pickMarkersShown() const { return m_impl->pickMarkers.size(); }
+
+void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan, Camera camera) {
   Impl& m = *m_impl;
   if (!plan || plan->regions.empty() || !m.hasMesh) {
     clearPlan();
     return;
   }
   m.plan->setPlan(std::move(plan), m.platform.center, m.modelSizeMm);
+  m.supports->clear();
   m.modelActor->VisibilityOff();
   m.axisActor->VisibilityOff();
-  fitView();
+  if (camera == Camera::Keep) {
+    update();
+  } else {
+    fitView();
+  }
 }
 
 void MeshViewerWidget::clearPlan() {
   Impl& m = *m_impl;
   if (!m.plan->hasPlan()) return;
   m.plan->clear();
+  m.supports->clear();
   m.modelActor->SetVisibility(m.hasMesh);
   m.placeRotationAxis();
   fitView();
 }
 
 bool MeshViewerWidget::hasPlan() const { return m_impl->plan->hasPlan(); }
+
+bool MeshViewerWidget::setSupports(std::shared_ptr<const std::vector<core::SupportSet>> supports) {
+  Impl& m = *m_impl;
+  m.supports->clear();
+  update();
+  if (!supports || supports->empty()) return true;
+  if (!m.plan->hasPlan() || supports->size() != m.plan->plan()->regions.size()) return false;
+  m.supports->setSupports(std::move(supports));
+  placeSupports();
+  return true;
+}
+
+void MeshViewerWidget::setSupportsVisible(bool visible) {
+  m_impl->supports->setVisible(visible);
+  update();
+}
+
+int MeshViewerWidget::supportSetsShown() const { return m_impl->supports->shownCount(); }
+
+void MeshViewerWidget::placeSupports() {
+  Impl& m = *m_impl;
+  if (!m.plan->hasPlan() || !m.supports->hasSupports()) return;
+  m.supports->place(explodeOffsets(*m.plan->plan(), m.plan->explodeDistance()), m.plan->shownRegions());
+}
 
 void MeshViewerWidget::setPrintingDirectionsVisible(bool visible) {
   m_impl->plan->setDirectionsVisible(visible);
@@ -440,13 +579,24 @@ void MeshViewerWidget::setClippingPlanesVisible(bool visible) {
   update();
 }
 
+void MeshViewerWidget::setSelectedPlane(int plane) {
+  m_impl->plan->setSelectedPlane(plane);
+  update();
+}
+
+int MeshViewerWidget::selectedPlane() const { return m_impl->plan->selectedPlane(); }
+
+bool MeshViewerWidget::selectedPlaneShown() const { return m_impl->plan->selectedPlaneShown(); }
+
 void MeshViewerWidget::setExplodeDistance(double distanceMm) {
   m_impl->plan->setExplodeDistance(distanceMm);
+  placeSupports();
   update();
 }
 
 void MeshViewerWidget::setShownRegions(int count) {
   m_impl->plan->setShownRegions(count);
+  placeSupports();
   if (m_impl->turnWithMachine) {
     fitView();
   } else {
@@ -584,6 +734,7 @@ unsigned long releaseEventFor(Qt::MouseButton button) {
 }  // namespace
 
 void MeshViewerWidget::mousePressEvent(QMouseEvent* event) {
+  if (m_impl->picking && event->button() == Qt::LeftButton) m_impl->pickPress = event->position();
   const unsigned long id = pressEventFor(event->button());
   if (id == vtkCommand::NoEvent) return QOpenGLWidget::mousePressEvent(event);
   setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
@@ -593,6 +744,8 @@ void MeshViewerWidget::mousePressEvent(QMouseEvent* event) {
 }
 
 void MeshViewerWidget::mouseDoubleClickEvent(QMouseEvent* event) {
+  // Two quick clicks while picking are two picks: the second press arrives as this event.
+  if (m_impl->picking && event->button() == Qt::LeftButton) m_impl->pickPress = event->position();
   const unsigned long id = pressEventFor(event->button());
   if (id == vtkCommand::NoEvent) return QOpenGLWidget::mouseDoubleClickEvent(event);
   setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 1);
@@ -608,9 +761,23 @@ void MeshViewerWidget::mouseReleaseEvent(QMouseEvent* event) {
   m_impl->interactor->InvokeEvent(id);
   event->accept();
   update();
+  // A click without movement picks; the view has not turned, so the point is where the cursor shows it.
+  if (m_impl->picking && event->button() == Qt::LeftButton && m_impl->pickPress) {
+    m_impl->pickPress.reset();
+    const PlatformHit hit = platformHitAt(event->position());
+    if (hit.kind == PlatformHitKind::Hit) {
+      emit platformPointPicked(hit.point);
+    } else {
+      emit platformPickMissed(hit.kind);
+    }
+  }
 }
 
 void MeshViewerWidget::mouseMoveEvent(QMouseEvent* event) {
+  if (m_impl->pickPress) {
+    const QPointF moved = event->position() - *m_impl->pickPress;
+    if (std::abs(moved.x()) + std::abs(moved.y()) > kClickSlopPixels) m_impl->pickPress.reset();  // a drag
+  }
   setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
   m_impl->interactor->InvokeEvent(vtkCommand::MouseMoveEvent);
   event->accept();
@@ -636,6 +803,12 @@ void MeshViewerWidget::keyPressEvent(QKeyEvent* event) {
       fitView();
       event->accept();
       return;
+    case Qt::Key_Escape:
+      if (!m_impl->picking) break;
+      setPlatformPicking(false);
+      event->accept();
+      emit platformPickCancelled();
+      return;
     case Qt::Key_W:
     case Qt::Key_S: {
       const QByteArray text = event->text().toLower().toLatin1();
@@ -650,8 +823,19 @@ void MeshViewerWidget::keyPressEvent(QKeyEvent* event) {
       return;
     }
     default:
-      QOpenGLWidget::keyPressEvent(event);
+      break;
   }
+  QOpenGLWidget::keyPressEvent(event);
+}
+
+bool MeshViewerWidget::event(QEvent* event) {
+  // While picking, Esc ends picking here rather than triggering the window's Esc shortcut.
+  if (event->type() == QEvent::ShortcutOverride && m_impl->picking &&
+      static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
+    event->accept();
+    return true;
+  }
+  return QOpenGLWidget::event(event);
 }
 
 void MeshViewerWidget::keyReleaseEvent(QKeyEvent* event) {

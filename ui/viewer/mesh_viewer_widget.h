@@ -16,6 +16,9 @@
 
 #include "multidir/core/mesh/triangle_mesh.h"
 #include "multidir/core/search/decomposition.h"
+#include "multidir/core/supports/support_set.h"
+#include "ui/viewer/platform_geometry.h"
+#include "ui/viewer/platform_picker.h"
 
 namespace multidir::ui {
 
@@ -47,14 +50,47 @@ class MeshViewerWidget : public QOpenGLWidget {
   void setRotationAxis(const std::optional<core::Vec3>& axis);
   [[nodiscard]] bool rotationAxisShown() const;
 
+  // The platform under the model last set with setMesh (radius 0 before the first).
+  [[nodiscard]] PlatformDisc platform() const;
+  // Platform picking (choosing the 4-DOF axis by clicks): while on, the cursor is a cross and a left click
+  // without movement emits platformPointPicked (on the platform) or platformPickMissed; drags still turn the
+  // view. Esc emits platformPickCancelled and ends it, and so does a new model or clear(). Off clears the
+  // pick markers.
+  void setPlatformPicking(bool on);
+  [[nodiscard]] bool isPlatformPicking() const;
+  // What the ray under `position` (widget coordinates, logical pixels) meets on the platform, as drawn now.
+  [[nodiscard]] PlatformHit platformHitAt(const QPointF& position) const;
+  // The point of the platform under `position`; nullopt when the ray misses the disc or nothing is shown.
+  [[nodiscard]] std::optional<core::Vec3> platformPointAt(const QPoint& position) const;
+  // Where `point` (mm) appears in the widget (logical pixels); nullopt when it is behind the camera.
+  [[nodiscard]] std::optional<QPointF> widgetPositionOf(const core::Vec3& point) const;
+  // Small markers at picked points (empty: none).
+  void setPickMarkers(const std::vector<core::Vec3>& points);
+  [[nodiscard]] std::size_t pickMarkersShown() const;
+
   // Plan view: the plan's regions (in their palette colours, ui/region_palette.h) replace the model; the
-  // platform stays under the model set with setMesh. A null or empty plan clears the plan view.
-  void setPlan(std::shared_ptr<const core::Decomposition> plan);
+  // platform stays under the model set with setMesh. A null or empty plan clears the plan view. Camera::Keep
+  // leaves the camera where it is (an edited plan replacing the one shown) instead of fitting the view.
+  enum class Camera { Fit, Keep };
+  void setPlan(std::shared_ptr<const core::Decomposition> plan, Camera camera = Camera::Fit);
   // Back to the model view.
   void clearPlan();
   [[nodiscard]] bool hasPlan() const;
+  // The plan's supports, one set per region in printing order, drawn in supportColor() (ui/region_palette.h)
+  // and moved and stepped through with their regions. Call after setPlan (which drops earlier supports);
+  // returns false and shows none when there is no plan or the count differs from its regions'.
+  bool setSupports(std::shared_ptr<const std::vector<core::SupportSet>> supports);
+  void setSupportsVisible(bool visible);
+  // Support sets (with struts) drawn now.
+  [[nodiscard]] int supportSetsShown() const;
   void setPrintingDirectionsVisible(bool visible);
   void setClippingPlanesVisible(bool visible);
+  // The clipping plane being edited (-1: none): its disc is highlighted and shown even while the others are
+  // hidden. Kept when the plan is replaced.
+  void setSelectedPlane(int plane);
+  [[nodiscard]] int selectedPlane() const;
+  // The selected plane's disc is drawn now (false when it left no cut to draw).
+  [[nodiscard]] bool selectedPlaneShown() const;
   // Exploded view: regions moved apart along their printing directions by `distanceMm` per level.
   void setExplodeDistance(double distanceMm);
   // Sequence stepper: regions 1..count are shown (clamped to the plan's regions).
@@ -82,11 +118,18 @@ class MeshViewerWidget : public QOpenGLWidget {
  signals:
   // Emitted after each rendered frame.
   void frameRendered();
+  // Platform picking (setPlatformPicking): a click hit the platform at `point` (mm).
+  void platformPointPicked(const multidir::core::Vec3& point);
+  // Platform picking: a click missed the platform.
+  void platformPickMissed(multidir::ui::PlatformHitKind reason);
+  // Platform picking ended by Esc, a new model or clear().
+  void platformPickCancelled();
 
  protected:
   void initializeGL() override;
   void paintGL() override;
   void resizeGL(int width, int height) override;
+  bool event(QEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
   void mouseDoubleClickEvent(QMouseEvent* event) override;
@@ -97,6 +140,8 @@ class MeshViewerWidget : public QOpenGLWidget {
 
  private:
   void releaseGraphics();
+  void endPickingOnNewScene();
+  void placeSupports();
 
   struct Impl;
   std::unique_ptr<Impl> m_impl;

@@ -11,6 +11,7 @@
 #include <vtkRegularPolygonSource.h>
 #include <vtkRenderer.h>
 #include <vtkTransform.h>
+#include <vtkTubeFilter.h>
 
 #include "multidir/core/common/units.h"
 #include "ui/region_palette.h"
@@ -22,6 +23,11 @@ namespace {
 constexpr double kArrowRgb[3] = {0.96, 0.96, 0.96};
 constexpr double kDiscRgb[3] = {0.85, 0.92, 1.0};
 constexpr double kDiscOpacity = 0.35;
+// The plane being edited is outlined by a thick opaque ring in a warm yellow that no region colour is close
+// to. A ring rather than a denser fill: the disc of a steep plane covers most of the part behind it.
+constexpr double kOutlineRgb[3] = {1.0, 0.78, 0.18};
+// The ring is a tube (wide GL lines are not drawn wide everywhere) this fraction of the disc's radius thick.
+constexpr double kOutlineFraction = 0.012;
 // Arrows are this fraction of the model's bounding diagonal long.
 constexpr double kArrowFraction = 0.3;
 
@@ -81,6 +87,31 @@ vtkSmartPointer<vtkActor> discActor(const PlaneDisc& disc) {
   return actor;
 }
 
+vtkSmartPointer<vtkActor> outlineActor(const PlaneDisc& disc) {
+  vtkNew<vtkRegularPolygonSource> source;
+  source->SetNumberOfSides(96);
+  source->GeneratePolygonOff();
+  source->GeneratePolylineOn();
+  source->SetCenter(disc.center.x(), disc.center.y(), disc.center.z());
+  source->SetNormal(disc.normal.x(), disc.normal.y(), disc.normal.z());
+  source->SetRadius(disc.radiusMm);
+  vtkNew<vtkTubeFilter> tube;
+  tube->SetInputConnection(source->GetOutputPort());
+  tube->SetRadius(kOutlineFraction * disc.radiusMm);
+  tube->SetNumberOfSides(10);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(tube->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  vtkProperty* property = actor->GetProperty();
+  property->SetColor(kOutlineRgb[0], kOutlineRgb[1], kOutlineRgb[2]);
+  property->SetAmbient(0.35);
+  property->SetDiffuse(0.65);
+  actor->PickableOff();
+  actor->VisibilityOff();
+  return actor;
+}
+
 }  // namespace
 
 PlanScene::PlanScene(vtkRenderer* renderer, vtkRenderer* overlay) : m_renderer(renderer), m_overlay(overlay) {}
@@ -90,7 +121,7 @@ PlanScene::~PlanScene() { clear(); }
 int PlanScene::regionCount() const { return m_plan ? static_cast<int>(m_plan->regions.size()) : 0; }
 
 void PlanScene::clear() {
-  for (auto* list : {&m_regions, &m_arrows, &m_discs}) {
+  for (auto* list : {&m_regions, &m_arrows, &m_discs, &m_outlines}) {
     for (const vtkSmartPointer<vtkActor>& actor : *list) {
       if (!actor) continue;
       m_renderer->RemoveActor(actor);
@@ -145,11 +176,15 @@ void PlanScene::setPlan(std::shared_ptr<const core::Decomposition> plan, const c
   }
   for (const PlaneDisc& disc : m_planeDiscs) {
     vtkSmartPointer<vtkActor> actor;
+    vtkSmartPointer<vtkActor> outline;
     if (disc.radiusMm > 0.0) {
       actor = discActor(disc);
       m_renderer->AddActor(actor);
+      outline = outlineActor(disc);
+      m_renderer->AddActor(outline);
     }
     m_discs.push_back(actor);
+    m_outlines.push_back(outline);
   }
   m_shown = static_cast<int>(count);
   applyPlacement();
@@ -177,6 +212,17 @@ void PlanScene::setShownRegions(int count) {
   applyVisibility();
 }
 
+void PlanScene::setSelectedPlane(int plane) {
+  m_selectedPlane = plane >= 0 ? plane : -1;
+  applyVisibility();
+}
+
+bool PlanScene::selectedPlaneShown() const {
+  if (m_selectedPlane < 0 || static_cast<std::size_t>(m_selectedPlane) >= m_outlines.size()) return false;
+  const vtkSmartPointer<vtkActor>& outline = m_outlines[static_cast<std::size_t>(m_selectedPlane)];
+  return outline && outline->GetVisibility() != 0;
+}
+
 void PlanScene::applyPlacement() {
   if (!m_plan) return;
   const std::vector<core::Vec3> offsets = explodeOffsets(*m_plan, m_explodeMm);
@@ -193,6 +239,7 @@ void PlanScene::applyPlacement() {
       continue;
     const core::Vec3& offset = offsets[i];
     m_discs[static_cast<std::size_t>(plane)]->SetPosition(offset.x(), offset.y(), offset.z());
+    m_outlines[static_cast<std::size_t>(plane)]->SetPosition(offset.x(), offset.y(), offset.z());
   }
 }
 
@@ -203,14 +250,19 @@ void PlanScene::applyVisibility() {
     m_regions[i]->SetVisibility(shown);
     m_arrows[i]->SetVisibility(shown && m_directionsVisible);
   }
-  for (auto& disc : m_discs) {
-    if (disc) disc->VisibilityOff();
+  for (std::size_t k = 0; k < m_discs.size(); ++k) {
+    if (!m_discs[k]) continue;
+    m_discs[k]->VisibilityOff();
+    m_outlines[k]->VisibilityOff();
   }
   for (std::size_t i = 0; i < m_regions.size(); ++i) {
     const std::int32_t plane = m_plan->regions[i].clippingIndex;
     if (plane < 0 || static_cast<std::size_t>(plane) >= m_discs.size() || !m_discs[static_cast<std::size_t>(plane)])
       continue;
-    m_discs[static_cast<std::size_t>(plane)]->SetVisibility(m_planesVisible && static_cast<int>(i) < m_shown);
+    const bool shown = static_cast<int>(i) < m_shown;
+    const bool selected = plane == m_selectedPlane;
+    m_discs[static_cast<std::size_t>(plane)]->SetVisibility((m_planesVisible || selected) && shown);
+    m_outlines[static_cast<std::size_t>(plane)]->SetVisibility(selected && shown);
   }
 }
 

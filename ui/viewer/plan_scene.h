@@ -44,6 +44,12 @@ class PlanScene {
   void setShownRegions(int count);
   [[nodiscard]] int shownRegions() const { return m_shown; }
   [[nodiscard]] double explodeDistance() const { return m_explodeMm; }
+  // The plane being edited (-1: none): its disc is outlined by a thick ring in a highlight colour and shown
+  // even while the other discs are hidden. Kept when the plan is replaced (an edit rebuilds it).
+  void setSelectedPlane(int plane);
+  [[nodiscard]] int selectedPlane() const { return m_selectedPlane; }
+  // The selected plane's outline is drawn now.
+  [[nodiscard]] bool selectedPlaneShown() const;
 
  private:
   void applyVisibility();
@@ -55,6 +61,7 @@ class PlanScene {
   std::vector<vtkSmartPointer<vtkActor>> m_regions;
   std::vector<vtkSmartPointer<vtkActor>> m_arrows;  // one per region
   std::vector<vtkSmartPointer<vtkActor>> m_discs;   // one per clipping plane (null when it left no cap)
+  std::vector<vtkSmartPointer<vtkActor>> m_outlines;  // the discs' rims, shown for the selected plane
   std::vector<core::Vec3> m_arrowStarts;
   std::vector<PlaneDisc> m_planeDiscs;
   double m_arrowLengthMm = 10.0;
@@ -62,6 +69,7 @@ class PlanScene {
   int m_shown = 0;
   bool m_directionsVisible = true;
   bool m_planesVisible = false;
+  int m_selectedPlane = -1;
 };
 
 }  // namespace multidir::ui

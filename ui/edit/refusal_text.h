@@ -1,0 +1,17 @@
+#pragma once
+// Why core refused an edited plan, as a translated sentence that names the plane and says what to do.
+// core::planFromClippingPlanes reports the plane in `where` ("plane K") and the criterion in its English
+// message; the sentence is chosen from those, and core's own text stays available as the detail.
+#include <QString>
+
+#include "multidir/core/common/result.h"
+
+namespace multidir::ui {
+
+// The plane core names (1-based, as the editor counts them); 0 when it names none.
+[[nodiscard]] int refusedPlaneNumber(const core::Error& error);
+
+// "Plane 2 would cut the platform region: move it up or tilt it less." and the like.
+[[nodiscard]] QString refusalText(const core::Error& error);
+
+}  // namespace multidir::ui
