@@ -2,6 +2,138 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>AddPlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="43"/>
+        <source>Add plane %1</source>
+        <translation>Ebene %1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>DeletePlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="46"/>
+        <source>Delete plane %1</source>
+        <translation>Ebene %1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>MovePlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="34"/>
+        <source>Move plane %1</source>
+        <translation>Ebene %1 verschieben</translation>
+    </message>
+</context>
+<context>
+    <name>PlanEditRefusal</name>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="34"/>
+        <source>The edit was not applied: %1 (%2)</source>
+        <translation>Die Änderung wurde nicht übernommen: %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="39"/>
+        <source>Plane %1 would cut the platform region: move it up or tilt it less.</source>
+        <translation>Ebene %1 würde den Plattformbereich schneiden: verschieben Sie sie nach oben oder neigen Sie sie weniger.</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="41"/>
+        <source>Plane %1 would leave a piece below it that no longer stands on the platform: move or tilt it so that the part below stays in one piece on the platform.</source>
+        <translation>Ebene %1 würde darunter ein Stück zurücklassen, das nicht mehr auf der Plattform steht: verschieben oder neigen Sie sie so, dass der Teil darunter in einem Stück auf der Plattform bleibt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="46"/>
+        <source>The machine cannot print along the normal of plane %1: tilt it back within the machine&apos;s limits.</source>
+        <translation>Die Maschine kann nicht entlang der Normalen von Ebene %1 drucken: neigen Sie sie zurück in die Grenzen der Maschine.</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="50"/>
+        <source>Plane %1 would cut nothing off: move it into the part it cuts.</source>
+        <translation>Ebene %1 würde nichts abtrennen: verschieben Sie sie in das Teil, das sie schneidet.</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="52"/>
+        <source>Plane %1 would leave nothing below it on the platform: move it up.</source>
+        <translation>Unter Ebene %1 bliebe nichts auf der Plattform: verschieben Sie sie nach oben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="53"/>
+        <source>Plane %1 was refused: %2</source>
+        <translation>Ebene %1 wurde abgelehnt: %2</translation>
+    </message>
+</context>
+<context>
+    <name>TiltPlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
+        <source>Tilt plane %1</source>
+        <translation>Ebene %1 neigen</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::Autosave</name>
+    <message>
+        <location filename="../ui/project/autosave.cpp" line="83"/>
+        <source>Cannot create the autosave folder %1.</source>
+        <translation>Der Ordner für automatisches Speichern %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/autosave.cpp" line="91"/>
+        <source>Cannot lock a new autosave file in %1.</source>
+        <translation>In %1 kann keine neue Datei für automatisches Speichern gesperrt werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/autosave.cpp" line="95"/>
+        <source>Autosave failed: %1 (%2)</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::AxisPicker</name>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="17"/>
+        <source>Open a model first: the rotation axis is picked on the platform under it.</source>
+        <translation>Öffnen Sie zuerst ein Modell: die Drehachse wird auf der Plattform darunter gewählt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="26"/>
+        <source>Click the first point on the platform (Esc cancels).</source>
+        <translation>Klicken Sie auf den ersten Punkt auf der Plattform (Esc bricht ab).</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="35"/>
+        <location filename="../ui/viewer/axis_picker.cpp" line="41"/>
+        <source>Picking the rotation axis was cancelled.</source>
+        <translation>Die Wahl der Drehachse wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="49"/>
+        <source>Click the second point on the platform: the axis runs from the first point to it.</source>
+        <translation>Klicken Sie auf den zweiten Punkt auf der Plattform: die Achse verläuft vom ersten Punkt zu diesem.</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="54"/>
+        <source>The second point is less than %1 mm from the first: click farther away.</source>
+        <translation>Der zweite Punkt liegt weniger als %1 mm vom ersten entfernt: klicken Sie weiter entfernt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="61"/>
+        <source>Rotation axis picked: (%1, %2, %3).</source>
+        <translation>Drehachse gewählt: (%1, %2, %3).</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="71"/>
+        <source>The view looks along the platform: turn the view and click again.</source>
+        <translation>Die Ansicht blickt parallel zur Plattform: drehen Sie die Ansicht und klicken Sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="79"/>
+        <source>That click missed the platform: click on the grey disc under the model.</source>
+        <translation>Der Klick hat die Plattform verfehlt: klicken Sie auf die graue Scheibe unter dem Modell.</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::ConnectionForm</name>
     <message>
         <location filename="../ui/device/connection_form.cpp" line="36"/>
@@ -861,107 +993,117 @@
 <context>
     <name>multidir::ui::MachinePanel</name>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="26"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="27"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="42"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="43"/>
         <source>3-DOF: fixed printing direction</source>
         <translation>3-DOF: feste Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="43"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
         <source>4-DOF: rotary platform</source>
         <translation>4-DOF: Drehplattform</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
         <source>5-DOF: tilting robot arm</source>
         <translation>5-DOF: kippender Roboterarm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="47"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="48"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>Drehplattform (4-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="50"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="51"/>
         <source>The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform plane (perpendicular to up)</source>
         <translation>Die Achse, um die sich die Plattform dreht, als x,y,z oder x, -y, +z; sie muss in der Plattformebene liegen (senkrecht zu oben)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="55"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="53"/>
+        <source>Pick on platform</source>
+        <translation>Auf Plattform wählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="56"/>
+        <source>Click two points on the platform in the 3D view: the axis runs from the first to the second. Esc or this button again cancels.</source>
+        <translation>Klicken Sie in der 3D-Ansicht auf zwei Punkte der Plattform: die Achse verläuft vom ersten zum zweiten. Esc oder ein erneuter Klick auf diese Schaltfläche bricht ab.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="61"/>
         <source>The stepper&apos;s resolution: only multiples of this angle can be reached</source>
         <translation>Auflösung des Schrittmotors: nur Vielfache dieses Winkels sind erreichbar</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="63"/>
         <source>Rotation axis:</source>
         <translation>Drehachse:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="58"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="65"/>
         <source>Minimal angle:</source>
         <translation>Kleinster Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="59"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
         <source>Maximal angle:</source>
         <translation>Größter Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="60"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
         <source>Angle step:</source>
         <translation>Winkelschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="69"/>
         <source>Tilting arm (5-DOF)</source>
         <translation>Kipparm (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="64"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="71"/>
         <source>How far the arm can tilt the platform away from up</source>
         <translation>Wie weit der Arm die Plattform aus der Senkrechten kippen kann</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="73"/>
         <source>Tilt limit:</source>
         <translation>Kippgrenze:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="79"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="73"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
         <source>model footprint</source>
         <translation>Modellgrundfläche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="75"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="82"/>
         <source>Radius of the platform disc that no clipping plane may cut; 0 uses the model&apos;s footprint plus a margin</source>
         <translation>Radius der Plattformscheibe, die keine Schnittebene schneiden darf; 0 nimmt die Grundfläche des Modells plus einen Rand</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="85"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="92"/>
         <source>Machine:</source>
         <translation>Maschine:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="86"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
         <source>Platform radius:</source>
         <translation>Plattformradius:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="151"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="159"/>
         <source>The rotation axis &quot;%1&quot; cannot be read: type three numbers x,y,z or an axis such as x or -y.</source>
         <translation>Die Drehachse „%1“ ist nicht lesbar: Geben Sie drei Zahlen x,y,z oder eine Achse wie x oder -y ein.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="156"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="164"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -969,385 +1111,448 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="65"/>
+        <location filename="../ui/main_window.cpp" line="72"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="88"/>
+        <location filename="../ui/main_window.cpp" line="97"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="89"/>
+        <location filename="../ui/main_window.cpp" line="98"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="91"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY)</source>
-        <translation>Eine Netzdatei öffnen (STL, OBJ, OFF oder PLY)</translation>
+        <translation type="vanished">Eine Netzdatei öffnen (STL, OBJ, OFF oder PLY)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="93"/>
+        <location filename="../ui/main_window.cpp" line="103"/>
         <source>&amp;Samples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="102"/>
+        <location filename="../ui/main_window.cpp" line="112"/>
         <source>Open &amp;plan...</source>
         <translation>&amp;Plan öffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="104"/>
+        <location filename="../ui/main_window.cpp" line="114"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>Einen früher gespeicherten Plan anzeigen (ein Ordner mit plan.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="105"/>
+        <location filename="../ui/main_window.cpp" line="115"/>
         <source>&amp;Export plan...</source>
         <translation>Plan &amp;exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="107"/>
+        <location filename="../ui/main_window.cpp" line="117"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>Den angezeigten Plan speichern: plan.json und eine STL-Datei je Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="110"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
         <source>&amp;Load machine profile...</source>
         <translation>Maschinenprofil &amp;laden...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="112"/>
+        <location filename="../ui/main_window.cpp" line="125"/>
         <source>&amp;Save machine profile...</source>
         <translation>Maschinenprofil &amp;speichern...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="115"/>
+        <location filename="../ui/main_window.cpp" line="128"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="118"/>
+        <location filename="../ui/main_window.cpp" line="132"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="119"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
         <source>&amp;Fit to View</source>
         <translation>In Ansicht ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="121"/>
+        <location filename="../ui/main_window.cpp" line="135"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>&amp;Modell zeigen (Plan ausblenden)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="126"/>
+        <location filename="../ui/main_window.cpp" line="140"/>
         <source>&amp;Search</source>
         <translation>&amp;Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="127"/>
+        <location filename="../ui/main_window.cpp" line="141"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="129"/>
+        <location filename="../ui/main_window.cpp" line="144"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="146"/>
+        <location filename="../ui/main_window.cpp" line="167"/>
         <source>Overhangs</source>
         <translation>Überhänge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="147"/>
+        <location filename="../ui/main_window.cpp" line="168"/>
         <source>Machine</source>
         <translation>Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="148"/>
+        <location filename="../ui/main_window.cpp" line="169"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="149"/>
+        <location filename="../ui/main_window.cpp" line="170"/>
         <source>Plan</source>
         <translation>Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="174"/>
+        <location filename="../ui/main_window.cpp" line="210"/>
         <source>Hardware</source>
         <translation>Hardware</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="187"/>
+        <location filename="../ui/main_window.cpp" line="229"/>
         <source>Printing direction</source>
         <translation>Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="190"/>
+        <location filename="../ui/main_window.cpp" line="232"/>
         <source>Up:</source>
         <translation>Oben:</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="195"/>
+        <location filename="../ui/main_window.cpp" line="237"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>Die Richtung, in der das Modell gedruckt wird: die Plattform liegt darunter, Überhänge werden daran gemessen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="242"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="242"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="201"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="201"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="202"/>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="202"/>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
         <source>Open Model</source>
-        <translation>Modell öffnen</translation>
+        <translation type="vanished">Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
         <source>Meshes (*.stl *.obj *.off *.ply);;All files (*)</source>
-        <translation>Netze (*.stl *.obj *.off *.ply);;Alle Dateien (*)</translation>
+        <translation type="vanished">Netze (*.stl *.obj *.off *.ply);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="260"/>
+        <location filename="../ui/main_window.cpp" line="100"/>
+        <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
+        <translation>Eine Netzdatei (STL, OBJ, OFF oder PLY) oder ein MultiDir-Projekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="119"/>
+        <source>Export Sc&amp;reenshot...</source>
+        <translation>Bildschirmfoto expo&amp;rtieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="121"/>
+        <source>Save the 3D view as shown to a PNG or JPEG file</source>
+        <translation>Die 3D-Ansicht wie angezeigt als PNG- oder JPEG-Datei speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="290"/>
+        <source>Open Model or Project</source>
+        <translation>Modell oder Projekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="291"/>
+        <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
+        <translation>Netze und Projekte (*.stl *.obj *.off *.ply *.multidir);;Netze (*.stl *.obj *.off *.ply);;MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="308"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>Benutzerdefiniert (%1, %2, %3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="281"/>
+        <location filename="../ui/main_window.cpp" line="330"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="285"/>
+        <location filename="../ui/main_window.cpp" line="334"/>
         <source>Repaired on load: %1</source>
         <translation>Beim Laden repariert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="299"/>
+        <location filename="../ui/main_window.cpp" line="348"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
+        <location filename="../ui/main_window.cpp" line="352"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="307"/>
+        <location filename="../ui/main_window.cpp" line="356"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="326"/>
-        <location filename="../ui/main_window.cpp" line="343"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
+        <location filename="../ui/main_window.cpp" line="393"/>
         <source>No model</source>
         <translation>Kein Modell</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="336"/>
+        <location filename="../ui/main_window.cpp" line="386"/>
         <source>Triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="337"/>
+        <location filename="../ui/main_window.cpp" line="387"/>
         <source>Volume: %1 mm³</source>
         <translation>Volumen: %1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="351"/>
+        <location filename="../ui/main_window.cpp" line="401"/>
         <source>Risky area unavailable</source>
         <translation>Risikofläche nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="359"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>Risikofläche (%1 oben): %2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="361"/>
+        <location filename="../ui/main_window.cpp" line="411"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>Fläche der Dreiecke, die bei dieser Aufwärtsrichtung um mehr als %1° überhängen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="376"/>
-        <location filename="../ui/main_window.cpp" line="395"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="378"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Fix the machine first: %1</source>
         <translation>Korrigieren Sie zuerst die Maschine: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="394"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>A search is already running.</source>
         <translation>Eine Suche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="404"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>Cannot search: %1</source>
         <translation>Suche nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="405"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Cannot search.</source>
         <translation>Suche nicht möglich.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="419"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>Searching %1...</source>
         <translation>Durchsuche %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Cancelling the search...</source>
         <translation>Suche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>Das Suchergebnis wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>Suche abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>Search finished.</source>
         <translation>Suche beendet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Search failed: %1</source>
         <translation>Suche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="545"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>Es gibt keinen Plan zum Exportieren: starten Sie zuerst eine Suche.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>Der Plan konnte nicht nach %1 exportiert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="564"/>
         <source>Plan exported to %1.</source>
         <translation>Plan nach %1 exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="571"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>Der Plan %1 konnte nicht geöffnet werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="543"/>
+        <location filename="../ui/main_window.cpp" line="618"/>
         <source>Machine profile saved to %1.</source>
         <translation>Maschinenprofil unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="555"/>
+        <location filename="../ui/main_window.cpp" line="630"/>
         <source>Machine profile %1 loaded.</source>
         <translation>Maschinenprofil %1 geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="635"/>
         <source>Export Plan to Folder</source>
         <translation>Plan in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="638"/>
         <source>Export Plan</source>
         <translation>Plan exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="567"/>
+        <location filename="../ui/main_window.cpp" line="648"/>
+        <source>Screenshot saved to %1.</source>
+        <translation>Bildschirmfoto unter %1 gespeichert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="653"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="654"/>
+        <source>JPEG images (*.jpg *.jpeg)</source>
+        <translation>JPEG-Bilder (*.jpg *.jpeg)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="657"/>
+        <location filename="../ui/main_window.cpp" line="665"/>
+        <source>Export Screenshot</source>
+        <translation>Bildschirmfoto exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="669"/>
         <source>Open Plan Folder</source>
         <translation>Planordner öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="570"/>
+        <location filename="../ui/main_window.cpp" line="672"/>
         <source>Open Plan</source>
         <translation>Plan öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="574"/>
-        <location filename="../ui/main_window.cpp" line="578"/>
+        <location filename="../ui/main_window.cpp" line="676"/>
+        <location filename="../ui/main_window.cpp" line="680"/>
         <source>Save Machine Profile</source>
         <translation>Maschinenprofil speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="575"/>
+        <location filename="../ui/main_window.cpp" line="677"/>
         <source>Machine profiles (*.json)</source>
         <translation>Maschinenprofile (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
-        <location filename="../ui/main_window.cpp" line="586"/>
+        <location filename="../ui/main_window.cpp" line="684"/>
+        <location filename="../ui/main_window.cpp" line="688"/>
         <source>Load Machine Profile</source>
         <translation>Maschinenprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="583"/>
+        <location filename="../ui/main_window.cpp" line="685"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>Maschinenprofile (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="590"/>
+        <location filename="../ui/main_window.cpp" line="692"/>
         <source>Loading %1...</source>
         <translation>Lade %1...</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="23"/>
+        <source>Edit plan</source>
+        <translation>Plan bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="54"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="56"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="59"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
     </message>
 </context>
 <context>
     <name>multidir::ui::ModelLoader</name>
     <message>
-        <location filename="../ui/jobs/model_loader.cpp" line="50"/>
+        <location filename="../ui/jobs/model_loader.cpp" line="51"/>
         <source>Not enough memory to load this model.</source>
         <translation>Nicht genug Speicher, um dieses Modell zu laden.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/model_loader.cpp" line="53"/>
-        <location filename="../ui/jobs/model_loader.cpp" line="57"/>
+        <location filename="../ui/jobs/model_loader.cpp" line="54"/>
+        <location filename="../ui/jobs/model_loader.cpp" line="58"/>
         <source>Unexpected error while loading.</source>
         <translation>Unerwarteter Fehler beim Laden.</translation>
     </message>
@@ -1406,10 +1611,51 @@
     </message>
 </context>
 <context>
+    <name>multidir::ui::PictureFile</name>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="32"/>
+        <source>Could not save %1: there is no picture to save.</source>
+        <translation>%1 konnte nicht gespeichert werden: es gibt kein Bild zum Speichern.</translation>
+    </message>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="35"/>
+        <source>Could not save %1: give the file name the extension .png or .jpg.</source>
+        <translation>%1 konnte nicht gespeichert werden: geben Sie dem Dateinamen die Endung .png oder .jpg.</translation>
+    </message>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="42"/>
+        <source>Could not save %1: the file cannot be written there; check that its folder exists and may be written to.</source>
+        <translation>%1 konnte nicht gespeichert werden: die Datei kann dort nicht geschrieben werden; prüfen Sie, ob ihr Ordner existiert und beschreibbar ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="45"/>
+        <source>Could not save %1: %2</source>
+        <translation>%1 konnte nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PlanEvaluationJob</name>
+    <message>
+        <location filename="../ui/edit/plan_evaluation_job.cpp" line="26"/>
+        <source>The supports could not be grown: %1 (%2)</source>
+        <translation>Die Stützen konnten nicht erzeugt werden: %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/plan_evaluation_job.cpp" line="31"/>
+        <source>Not enough memory to grow the supports: the plan is shown without them.</source>
+        <translation>Nicht genug Speicher, um die Stützen zu erzeugen: der Plan wird ohne sie angezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/plan_evaluation_job.cpp" line="33"/>
+        <source>Unexpected error while growing the supports.</source>
+        <translation>Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::PlanPanel</name>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="45"/>
-        <location filename="../ui/panels/plan_panel.cpp" line="156"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="46"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="175"/>
         <source>No plan yet: run a search or open a plan.</source>
         <translation>Noch kein Plan: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
@@ -1434,72 +1680,97 @@
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
         <source>Machine angles</source>
         <translation>Maschinenwinkel</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="60"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <source>Supports (mm³)</source>
+        <translation>Stützen (mm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="61"/>
         <source>Printing directions</source>
         <translation>Druckrichtungen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="63"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="64"/>
         <source>Clipping planes</source>
         <translation>Schnittebenen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="65"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="66"/>
+        <source>Supports</source>
+        <translation>Stützen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="69"/>
+        <source>The tree supports grown for the risky area the plan leaves, in one colour</source>
+        <translation>Die Baumstützen, die für die vom Plan verbleibende Risikofläche erzeugt wurden, in einer Farbe</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="70"/>
         <source>Turn the view as the machine turns the part</source>
         <translation>Ansicht drehen, wie die Maschine das Teil dreht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="70"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="75"/>
         <source>Moves the regions apart along their printing directions</source>
         <translation>Schiebt die Bereiche entlang ihrer Druckrichtungen auseinander</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="77"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="82"/>
         <source>Previous region</source>
         <translation>Vorheriger Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="80"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="85"/>
         <source>Next region</source>
         <translation>Nächster Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="89"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="94"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="91"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="97"/>
         <source>Exploded view:</source>
         <translation>Explosionsansicht:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="92"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="98"/>
         <source>Printed up to:</source>
         <translation>Gedruckt bis:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="126"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="136"/>
         <source>none (fixed)</source>
         <translation>keine (fest)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="128"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="138"/>
         <source>rotary %1°</source>
         <translation>Drehung %1°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="131"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="141"/>
         <source>tilt %1°, azimuth %2°</source>
         <translation>Neigung %1°, Azimut %2°</translation>
     </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="149"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
+        <source>No supports were grown for this plan</source>
+        <translation>Für diesen Plan wurden keine Stützen erzeugt</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/panels/plan_panel.cpp" line="137"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="153"/>
         <source>%n region(s); J_G %1 mm² before, %2 mm² after.</source>
         <translation>
             <numerusform>%n Bereich; J_G vorher %1 mm², nachher %2 mm².</numerusform>
@@ -1507,21 +1778,386 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="186"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="208"/>
         <source>of %1</source>
         <translation>von %1</translation>
     </message>
 </context>
 <context>
+    <name>multidir::ui::PlaneEditPanel</name>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <source>Plane</source>
+        <translation>Ebene</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <source>Normal</source>
+        <translation>Normale</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <source>Offset (mm)</source>
+        <translation>Versatz (mm)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="98"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="100"/>
+        <source>Distance of the plane from the origin along its normal</source>
+        <translation>Abstand der Ebene vom Ursprung entlang ihrer Normalen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="103"/>
+        <source>Moves the plane along its normal across what is left of the model</source>
+        <translation>Verschiebt die Ebene entlang ihrer Normalen über den verbleibenden Teil des Modells</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="106"/>
+        <source>Offset:</source>
+        <translation>Versatz:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="118"/>
+        <source>Tilt:</source>
+        <translation>Neigung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="119"/>
+        <source>Azimuth:</source>
+        <translation>Azimut:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="128"/>
+        <source>Rotary angle:</source>
+        <translation>Drehwinkel:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="131"/>
+        <source>&amp;Add plane</source>
+        <translation>Ebene &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="134"/>
+        <source>Splits the piece above the selected plane in two (or, with no plane selected, cuts what is left on the platform at mid-height)</source>
+        <translation>Teilt das Stück über der gewählten Ebene in zwei (oder schneidet, wenn keine Ebene gewählt ist, den auf der Plattform verbleibenden Teil auf halber Höhe)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="136"/>
+        <source>&amp;Delete plane</source>
+        <translation>Ebene &amp;löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="138"/>
+        <source>Updating the plan...</source>
+        <translation>Plan wird aktualisiert...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="232"/>
+        <source>No plan to edit: run a search or open a plan.</source>
+        <translation>Kein Plan zum Bearbeiten: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="234"/>
+        <source>This plan is shown without its model: open the model it was made from to edit it.</source>
+        <translation>Dieser Plan wird ohne sein Modell angezeigt: öffnen Sie das Modell, aus dem er erstellt wurde, um ihn zu bearbeiten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="236"/>
+        <source>Select a plane to move, tilt or delete it. Every change can be undone (Ctrl+Z).</source>
+        <translation>Wählen Sie eine Ebene, um sie zu verschieben, zu neigen oder zu löschen. Jede Änderung lässt sich rückgängig machen (Strg+Z).</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="249"/>
+        <source>J_G before: %1 mm² (the whole model printed along up)
+J_G after: %2 mm² (%3 mm² before editing)</source>
+        <translation>J_G vorher: %1 mm² (ganzes Modell in Aufwärtsrichtung gedruckt)
+J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::ProjectSession</name>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="86"/>
+        <source>Open &amp;Project...</source>
+        <translation>Pr&amp;ojekt öffnen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="88"/>
+        <source>Open a MultiDir project (.multidir): its model, settings and plan</source>
+        <translation>Ein MultiDir-Projekt (.multidir) öffnen: sein Modell, seine Einstellungen und seinen Plan</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="92"/>
+        <source>&amp;Save Project</source>
+        <translation>Pro&amp;jekt speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="95"/>
+        <source>Save the model reference, the settings and the plan in a project file</source>
+        <translation>Modellverweis, Einstellungen und Plan in einer Projektdatei speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="96"/>
+        <source>Save Project &amp;As...</source>
+        <translation>Projekt speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="107"/>
+        <source>There is no model to save a project for: open a model first.</source>
+        <translation>Es gibt kein Modell, für das ein Projekt gespeichert werden könnte: öffnen Sie zuerst ein Modell.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="116"/>
+        <source>The model shown has no file (it is the regions of a plan opened without its model): open the model itself to save a project.</source>
+        <translation>Das angezeigte Modell hat keine Datei (es besteht aus den Bereichen eines ohne sein Modell geöffneten Plans): öffnen Sie das Modell selbst, um ein Projekt zu speichern.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="135"/>
+        <source>Wait until the project has opened before saving.</source>
+        <translation>Warten Sie mit dem Speichern, bis das Projekt geöffnet ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="138"/>
+        <source>Cannot save the project: %1</source>
+        <translation>Das Projekt kann nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="141"/>
+        <source>Could not save the project %1: %2 (%3)</source>
+        <translation>Das Projekt %1 konnte nicht gespeichert werden: %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="147"/>
+        <source>Project saved to %1.</source>
+        <translation>Projekt unter %1 gespeichert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="159"/>
+        <location filename="../ui/project/project_session.cpp" line="172"/>
+        <location filename="../ui/project/project_session.cpp" line="177"/>
+        <source>Save Project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="172"/>
+        <source>MultiDir projects (*.multidir)</source>
+        <translation>MultiDir-Projekte (*.multidir)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="181"/>
+        <location filename="../ui/project/project_session.cpp" line="519"/>
+        <source>Open Project</source>
+        <translation>Projekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="182"/>
+        <source>MultiDir projects (*.multidir);;All files (*)</source>
+        <translation>MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="203"/>
+        <source>%1 is no longer there; it was taken off the recent files.</source>
+        <translation>%1 ist nicht mehr vorhanden und wurde aus der Liste der zuletzt geöffneten Dateien entfernt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="223"/>
+        <source>Cannot open %1: drop a mesh file (.stl, .obj, .off, .ply) or a MultiDir project (.multidir).</source>
+        <translation>%1 kann nicht geöffnet werden: ziehen Sie eine Netzdatei (.stl, .obj, .off, .ply) oder ein MultiDir-Projekt (.multidir) hierher.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="236"/>
+        <source>There is no autosaved project to recover.</source>
+        <translation>Es gibt kein automatisch gespeichertes Projekt zum Wiederherstellen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="246"/>
+        <source>Recover Unsaved Work</source>
+        <translation>Nicht gespeicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="247"/>
+        <source>MultiDir Studio did not close properly. Recover the project it autosaved on %1?</source>
+        <translation>MultiDir Studio wurde nicht ordnungsgemäß beendet. Das am %1 automatisch gespeicherte Projekt wiederherstellen?</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="252"/>
+        <source>It was an untitled project.</source>
+        <translation>Es war ein unbenanntes Projekt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="253"/>
+        <source>It holds unsaved changes to %1.</source>
+        <translation>Es enthält nicht gespeicherte Änderungen an %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="254"/>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="255"/>
+        <source>&amp;Discard</source>
+        <translation>&amp;Verwerfen</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="256"/>
+        <source>&amp;Later</source>
+        <translation>&amp;Später</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="300"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="301"/>
+        <source>Unsaved Changes</source>
+        <translation>Nicht gespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="302"/>
+        <source>The project %1 has changes that are not saved.</source>
+        <translation>Das Projekt %1 enthält Änderungen, die nicht gespeichert sind.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="305"/>
+        <source>Save them first?</source>
+        <translation>Zuerst speichern?</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="392"/>
+        <location filename="../ui/project/project_session.cpp" line="428"/>
+        <source>Opening %1 was interrupted: another model was opened.</source>
+        <translation>Das Öffnen von %1 wurde unterbrochen: ein anderes Modell wurde geöffnet.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="408"/>
+        <source>Rebuilding the plan of %1...</source>
+        <translation>Plan von %1 wird neu aufgebaut...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="435"/>
+        <source>The model file %1 changed since the project was saved; the plan was recomputed on the changed file.</source>
+        <translation>Die Modelldatei %1 hat sich seit dem Speichern des Projekts geändert; der Plan wurde für die geänderte Datei neu berechnet.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="449"/>
+        <source>The rebuilt plan leaves %1 mm² of risky area; the project saved %2 mm².</source>
+        <translation>Der neu aufgebaute Plan lässt %1 mm² Risikofläche übrig; im Projekt gespeichert waren %2 mm².</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="454"/>
+        <source>The plan could not be rebuilt on this model (%1); the model is shown without it.</source>
+        <translation>Der Plan konnte für dieses Modell nicht neu aufgebaut werden (%1); das Modell wird ohne ihn angezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="470"/>
+        <source>Recovered the autosaved project.</source>
+        <translation>Das automatisch gespeicherte Projekt wurde wiederhergestellt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="471"/>
+        <source>Project %1 opened.</source>
+        <translation>Projekt %1 geöffnet.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="474"/>
+        <source>Project %1</source>
+        <translation>Projekt %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="484"/>
+        <source>Could not open the project %1: %2</source>
+        <translation>Das Projekt %1 konnte nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="499"/>
+        <source>Could not open the project %1: its model %2 is missing.</source>
+        <translation>Das Projekt %1 konnte nicht geöffnet werden: sein Modell %2 fehlt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="500"/>
+        <source>Put the model back at %1, or open the model where it is now and save the project again.</source>
+        <translation>Legen Sie das Modell wieder unter %1 ab, oder öffnen Sie das Modell an seinem jetzigen Ort und speichern Sie das Projekt erneut.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="505"/>
+        <source>Opening the project %1...</source>
+        <translation>Projekt %1 wird geöffnet...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="518"/>
+        <source>%1 is still open.</source>
+        <translation>%1 ist weiterhin geöffnet.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <source>MultiDir Studio[*]</source>
+        <translation>MultiDir Studio[*]</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <source>%1[*] - MultiDir Studio</source>
+        <translation>%1[*] - MultiDir Studio</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::RecentFilesMenu</name>
+    <message>
+        <location filename="../ui/project/recent_files.cpp" line="41"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/recent_files.cpp" line="68"/>
+        <source>&amp;Clear Recent</source>
+        <translation>Liste &amp;leeren</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::SearchJob</name>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="91"/>
+        <location filename="../ui/jobs/search_job.cpp" line="37"/>
+        <source>The search was cancelled while growing supports: the plan is shown without them.</source>
+        <translation>Die Suche wurde beim Erzeugen der Stützen abgebrochen: der Plan wird ohne sie angezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="39"/>
+        <source>The supports could not be grown: %1 (%2)</source>
+        <translation>Die Stützen konnten nicht erzeugt werden: %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="43"/>
+        <source>Not enough memory to grow the supports: the plan is shown without them.</source>
+        <translation>Nicht genug Speicher, um die Stützen zu erzeugen: der Plan wird ohne sie angezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="45"/>
+        <source>Unexpected error while growing the supports: %1</source>
+        <translation>Unerwarteter Fehler beim Erzeugen der Stützen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="47"/>
+        <source>Unexpected error while growing the supports.</source>
+        <translation>Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="128"/>
+        <source>growing supports</source>
+        <translation>Stützen werden erzeugt</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="139"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>Nicht genug Speicher für diese Suche: verringern Sie die Strahlbreite oder die Zahl der Normalen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="94"/>
-        <location filename="../ui/jobs/search_job.cpp" line="98"/>
+        <location filename="../ui/jobs/search_job.cpp" line="142"/>
+        <location filename="../ui/jobs/search_job.cpp" line="146"/>
         <source>Unexpected error during the search.</source>
         <translation>Unerwarteter Fehler während der Suche.</translation>
     </message>
@@ -1634,84 +2270,84 @@
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="104"/>
+        <location filename="../ui/panels/search_panel.cpp" line="109"/>
         <source>Progress</source>
         <translation>Fortschritt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="112"/>
+        <location filename="../ui/panels/search_panel.cpp" line="117"/>
         <source>Level:</source>
         <translation>Ebene:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="113"/>
+        <location filename="../ui/panels/search_panel.cpp" line="118"/>
         <source>Beams alive:</source>
         <translation>Aktive Strahlen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="114"/>
+        <location filename="../ui/panels/search_panel.cpp" line="119"/>
         <source>Best J_G:</source>
         <translation>Bestes J_G:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="115"/>
+        <location filename="../ui/panels/search_panel.cpp" line="120"/>
         <source>Candidates scored:</source>
         <translation>Bewertete Kandidaten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="136"/>
+        <location filename="../ui/panels/search_panel.cpp" line="141"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="174"/>
+        <location filename="../ui/panels/search_panel.cpp" line="180"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>Nach Schnittebenen suchen, mit denen das Modell mit weniger Stützen druckbar wird</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="192"/>
+        <location filename="../ui/panels/search_panel.cpp" line="198"/>
         <source>Starting...</source>
         <translation>Starte...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="195"/>
-        <location filename="../ui/panels/search_panel.cpp" line="214"/>
-        <location filename="../ui/panels/search_panel.cpp" line="228"/>
+        <location filename="../ui/panels/search_panel.cpp" line="201"/>
+        <location filename="../ui/panels/search_panel.cpp" line="220"/>
+        <location filename="../ui/panels/search_panel.cpp" line="234"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="211"/>
+        <location filename="../ui/panels/search_panel.cpp" line="217"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1 (Achse %2 von %3)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="221"/>
+        <location filename="../ui/panels/search_panel.cpp" line="227"/>
         <source>Cancelling: keeping the best plan so far...</source>
         <translation>Abbruch: der bisher beste Plan wird behalten...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="227"/>
+        <location filename="../ui/panels/search_panel.cpp" line="233"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="227"/>
+        <location filename="../ui/panels/search_panel.cpp" line="233"/>
         <source>Done</source>
         <translation>Fertig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="233"/>
+        <location filename="../ui/panels/search_panel.cpp" line="239"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>Abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="237"/>
+        <location filename="../ui/panels/search_panel.cpp" line="243"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>Keine Verbesserung: keine Schnittebene verringert die Risikofläche (J_G bleibt %1 mm²). Versuchen Sie mehr Normalen, einen kleineren Versatzschritt, ein größeres w oder eine andere Maschine.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="242"/>
+        <location filename="../ui/panels/search_panel.cpp" line="248"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>Nicht stützenfrei: %1 mm² brauchen noch Stützen (vorher %2 mm²), in %n Bereich.</numerusform>
@@ -1719,7 +2355,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="246"/>
+        <location filename="../ui/panels/search_panel.cpp" line="252"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>Stützenfrei in %n Bereich (J_G war %1 mm²).</numerusform>
@@ -1727,12 +2363,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="254"/>
+        <location filename="../ui/panels/search_panel.cpp" line="260"/>
         <source>Failed</source>
         <translation>Fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="255"/>
+        <location filename="../ui/panels/search_panel.cpp" line="261"/>
         <source>%1
 %2</source>
         <translation>%1
@@ -1742,112 +2378,119 @@
 <context>
     <name>multidir::ui::StudioStartup</name>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="62"/>
+        <location filename="../ui/studio_startup.cpp" line="64"/>
         <source>MultiDir Studio: plans multi-directional 3D prints.</source>
         <translation>MultiDir Studio: plant mehrrichtige 3D-Drucke.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="66"/>
+        <location filename="../ui/studio_startup.cpp" line="68"/>
         <source>Printing (up) direction of the model: x, -y, +z or a,b,c. Default: +z.</source>
         <translation>Druckrichtung (oben) des Modells: x, -y, +z oder a,b,c. Standard: +z.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="67"/>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
         <source>direction</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <location filename="../ui/studio_startup.cpp" line="71"/>
         <source>Render the window to this PNG file and quit.</source>
         <translation>Das Fenster in diese PNG-Datei zeichnen und beenden.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <location filename="../ui/studio_startup.cpp" line="71"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="70"/>
+        <location filename="../ui/studio_startup.cpp" line="72"/>
         <source>Language of the user interface: de, zh_CN or en.</source>
         <translation>Sprache der Benutzeroberfläche: de, zh_CN oder en.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="71"/>
+        <location filename="../ui/studio_startup.cpp" line="73"/>
         <source>language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="73"/>
+        <location filename="../ui/studio_startup.cpp" line="75"/>
         <source>Run a search with the default settings once the model is shown.</source>
         <translation>Eine Suche mit den Standardeinstellungen starten, sobald das Modell angezeigt wird.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="74"/>
+        <location filename="../ui/studio_startup.cpp" line="76"/>
         <source>Maximal overhang angle in degrees (0-89).</source>
         <translation>Größter Überhangwinkel in Grad (0-89).</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="75"/>
+        <location filename="../ui/studio_startup.cpp" line="77"/>
         <source>degrees</source>
         <translation>Grad</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="82"/>
-        <source>Mesh file to open (.stl .obj .off .ply). Default: the first sample.</source>
-        <translation>Zu öffnende Netzdatei (.stl .obj .off .ply). Standard: das erste Beispiel.</translation>
+        <location filename="../ui/studio_startup.cpp" line="84"/>
+        <source>Mesh file (.stl .obj .off .ply) or MultiDir project (.multidir) to open. Default: the first sample.</source>
+        <translation>Zu öffnende Netzdatei (.stl .obj .off .ply) oder MultiDir-Projekt (.multidir). Standard: das erste Beispiel.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="83"/>
+        <location filename="../ui/studio_startup.cpp" line="208"/>
+        <source>The search or the project&apos;s plan did not finish within %1 s.</source>
+        <translation>Die Suche oder der Plan des Projekts wurde nicht innerhalb von %1 s fertig.</translation>
+    </message>
+    <message>
+        <source>Mesh file to open (.stl .obj .off .ply). Default: the first sample.</source>
+        <translation type="vanished">Zu öffnende Netzdatei (.stl .obj .off .ply). Standard: das erste Beispiel.</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="85"/>
         <source>[model]</source>
         <translation>[Modell]</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="88"/>
+        <location filename="../ui/studio_startup.cpp" line="90"/>
         <source>Try --help for usage.</source>
         <translation>Hinweise zur Verwendung mit --help.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="103"/>
+        <location filename="../ui/studio_startup.cpp" line="105"/>
         <source>Give at most one model; got %1.</source>
         <translation>Geben Sie höchstens ein Modell an; erhalten: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="107"/>
+        <location filename="../ui/studio_startup.cpp" line="109"/>
         <source>--up: %1</source>
         <translation>--up: %1</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="113"/>
+        <location filename="../ui/studio_startup.cpp" line="115"/>
         <source>--lang: &apos;%1&apos; is not available; use de, zh_CN or en.</source>
         <translation>--lang: „%1“ ist nicht verfügbar; verwenden Sie de, zh_CN oder en.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="120"/>
+        <location filename="../ui/studio_startup.cpp" line="122"/>
         <source>--alpha must be a number from 0 to 89.</source>
         <translation>--alpha muss eine Zahl von 0 bis 89 sein.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="125"/>
+        <location filename="../ui/studio_startup.cpp" line="127"/>
         <source>--screenshot needs a file name.</source>
         <translation>--screenshot braucht einen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="196"/>
+        <location filename="../ui/studio_startup.cpp" line="200"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>Das Modell wurde nicht innerhalb von %1 s fertig geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="202"/>
         <source>The search did not finish within %1 s.</source>
-        <translation>Die Suche wurde nicht innerhalb von %1 s fertig.</translation>
+        <translation type="vanished">Die Suche wurde nicht innerhalb von %1 s fertig.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="212"/>
         <source>Could not write the screenshot to %1.</source>
-        <translation>Das Bildschirmfoto konnte nicht nach %1 geschrieben werden.</translation>
+        <translation type="vanished">Das Bildschirmfoto konnte nicht nach %1 geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="216"/>
+        <location filename="../ui/studio_startup.cpp" line="222"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>Es wird kein Modell angezeigt; das Bildschirmfoto %1 zeigt das leere Fenster.</translation>
     </message>

@@ -2,6 +2,138 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>AddPlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="43"/>
+        <source>Add plane %1</source>
+        <translation>添加平面 %1</translation>
+    </message>
+</context>
+<context>
+    <name>DeletePlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="46"/>
+        <source>Delete plane %1</source>
+        <translation>删除平面 %1</translation>
+    </message>
+</context>
+<context>
+    <name>MovePlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="34"/>
+        <source>Move plane %1</source>
+        <translation>移动平面 %1</translation>
+    </message>
+</context>
+<context>
+    <name>PlanEditRefusal</name>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="34"/>
+        <source>The edit was not applied: %1 (%2)</source>
+        <translation>编辑未被应用：%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="39"/>
+        <source>Plane %1 would cut the platform region: move it up or tilt it less.</source>
+        <translation>平面 %1 会切入平台区域：请将其上移或减小倾斜。</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="41"/>
+        <source>Plane %1 would leave a piece below it that no longer stands on the platform: move or tilt it so that the part below stays in one piece on the platform.</source>
+        <translation>平面 %1 会在其下方留下一块不再立于平台上的部分：请移动或倾斜该平面，使其下方部分作为一个整体留在平台上。</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="46"/>
+        <source>The machine cannot print along the normal of plane %1: tilt it back within the machine&apos;s limits.</source>
+        <translation>机器无法沿平面 %1 的法向打印：请将其倾斜回机器的限制范围内。</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="50"/>
+        <source>Plane %1 would cut nothing off: move it into the part it cuts.</source>
+        <translation>平面 %1 不会切下任何部分：请将其移入它所切割的部分。</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="52"/>
+        <source>Plane %1 would leave nothing below it on the platform: move it up.</source>
+        <translation>平面 %1 下方不会在平台上留下任何部分：请将其上移。</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="53"/>
+        <source>Plane %1 was refused: %2</source>
+        <translation>平面 %1 被拒绝：%2</translation>
+    </message>
+</context>
+<context>
+    <name>TiltPlaneCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
+        <source>Tilt plane %1</source>
+        <translation>倾斜平面 %1</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::Autosave</name>
+    <message>
+        <location filename="../ui/project/autosave.cpp" line="83"/>
+        <source>Cannot create the autosave folder %1.</source>
+        <translation>无法创建自动保存文件夹 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/autosave.cpp" line="91"/>
+        <source>Cannot lock a new autosave file in %1.</source>
+        <translation>无法在 %1 中锁定新的自动保存文件。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/autosave.cpp" line="95"/>
+        <source>Autosave failed: %1 (%2)</source>
+        <translation>自动保存失败：%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::AxisPicker</name>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="17"/>
+        <source>Open a model first: the rotation axis is picked on the platform under it.</source>
+        <translation>请先打开一个模型：旋转轴在模型下方的平台上选取。</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="26"/>
+        <source>Click the first point on the platform (Esc cancels).</source>
+        <translation>请在平台上点击第一个点（按 Esc 取消）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="35"/>
+        <location filename="../ui/viewer/axis_picker.cpp" line="41"/>
+        <source>Picking the rotation axis was cancelled.</source>
+        <translation>已取消选取旋转轴。</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="49"/>
+        <source>Click the second point on the platform: the axis runs from the first point to it.</source>
+        <translation>请在平台上点击第二个点：轴从第一个点指向该点。</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="54"/>
+        <source>The second point is less than %1 mm from the first: click farther away.</source>
+        <translation>第二个点与第一个点相距不到 %1 mm：请在更远处点击。</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="61"/>
+        <source>Rotation axis picked: (%1, %2, %3).</source>
+        <translation>已选取旋转轴：（%1, %2, %3）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="71"/>
+        <source>The view looks along the platform: turn the view and click again.</source>
+        <translation>视线与平台平行：请转动视图后重新点击。</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/axis_picker.cpp" line="79"/>
+        <source>That click missed the platform: click on the grey disc under the model.</source>
+        <translation>该点击未落在平台上：请点击模型下方的灰色圆盘。</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::ConnectionForm</name>
     <message>
         <location filename="../ui/device/connection_form.cpp" line="36"/>
@@ -858,107 +990,117 @@
 <context>
     <name>multidir::ui::MachinePanel</name>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="26"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="27"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="42"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="43"/>
         <source>3-DOF: fixed printing direction</source>
         <translation>3 自由度：固定打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="43"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
         <source>4-DOF: rotary platform</source>
         <translation>4 自由度：旋转平台</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
         <source>5-DOF: tilting robot arm</source>
         <translation>5 自由度：倾斜机械臂</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="47"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="48"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>旋转平台（4 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="50"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="51"/>
         <source>The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform plane (perpendicular to up)</source>
         <translation>平台绕其旋转的轴，格式为 x,y,z 或 x、-y、+z；它必须位于平台平面内（垂直于向上方向）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="55"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="53"/>
+        <source>Pick on platform</source>
+        <translation>在平台上选取</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="56"/>
+        <source>Click two points on the platform in the 3D view: the axis runs from the first to the second. Esc or this button again cancels.</source>
+        <translation>在 3D 视图中点击平台上的两个点：轴从第一个点指向第二个点。按 Esc 或再次点击此按钮可取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="61"/>
         <source>The stepper&apos;s resolution: only multiples of this angle can be reached</source>
         <translation>步进电机的分辨率：只能到达该角度的整数倍</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="63"/>
         <source>Rotation axis:</source>
         <translation>旋转轴：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="58"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="65"/>
         <source>Minimal angle:</source>
         <translation>最小角度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="59"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
         <source>Maximal angle:</source>
         <translation>最大角度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="60"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
         <source>Angle step:</source>
         <translation>角度步长：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="69"/>
         <source>Tilting arm (5-DOF)</source>
         <translation>倾斜机械臂（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="64"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="71"/>
         <source>How far the arm can tilt the platform away from up</source>
         <translation>机械臂能将平台从向上方向倾斜的最大角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="73"/>
         <source>Tilt limit:</source>
         <translation>倾斜极限：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="79"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="73"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
         <source>model footprint</source>
         <translation>模型底面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="75"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="82"/>
         <source>Radius of the platform disc that no clipping plane may cut; 0 uses the model&apos;s footprint plus a margin</source>
         <translation>任何切割平面都不得穿过的平台圆盘半径；0 表示使用模型底面加上边距</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="85"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="92"/>
         <source>Machine:</source>
         <translation>机器：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="86"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
         <source>Platform radius:</source>
         <translation>平台半径：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="151"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="159"/>
         <source>The rotation axis &quot;%1&quot; cannot be read: type three numbers x,y,z or an axis such as x or -y.</source>
         <translation>无法识别旋转轴“%1”：请输入三个数 x,y,z，或 x、-y 这样的坐标轴。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="156"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="164"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
@@ -966,385 +1108,448 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="65"/>
+        <location filename="../ui/main_window.cpp" line="72"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="88"/>
+        <location filename="../ui/main_window.cpp" line="97"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="89"/>
+        <location filename="../ui/main_window.cpp" line="98"/>
         <source>&amp;Open...</source>
         <translation>打开(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="91"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY)</source>
-        <translation>打开网格文件（STL、OBJ、OFF 或 PLY）</translation>
+        <translation type="vanished">打开网格文件（STL、OBJ、OFF 或 PLY）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="93"/>
+        <location filename="../ui/main_window.cpp" line="103"/>
         <source>&amp;Samples</source>
         <translation>示例(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="102"/>
+        <location filename="../ui/main_window.cpp" line="112"/>
         <source>Open &amp;plan...</source>
         <translation>打开方案(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="104"/>
+        <location filename="../ui/main_window.cpp" line="114"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="105"/>
+        <location filename="../ui/main_window.cpp" line="115"/>
         <source>&amp;Export plan...</source>
         <translation>导出方案(&amp;E)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="107"/>
+        <location filename="../ui/main_window.cpp" line="117"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>保存当前方案：plan.json 以及每个区域一个 STL 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="110"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
         <source>&amp;Load machine profile...</source>
         <translation>加载机器配置(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="112"/>
+        <location filename="../ui/main_window.cpp" line="125"/>
         <source>&amp;Save machine profile...</source>
         <translation>保存机器配置(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="115"/>
+        <location filename="../ui/main_window.cpp" line="128"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="118"/>
+        <location filename="../ui/main_window.cpp" line="132"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="119"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
         <source>&amp;Fit to View</source>
         <translation>适应视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="121"/>
+        <location filename="../ui/main_window.cpp" line="135"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>显示模型(&amp;M)（隐藏方案）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="126"/>
+        <location filename="../ui/main_window.cpp" line="140"/>
         <source>&amp;Search</source>
         <translation>搜索(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="127"/>
+        <location filename="../ui/main_window.cpp" line="141"/>
         <source>&amp;Run</source>
         <translation>运行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="129"/>
+        <location filename="../ui/main_window.cpp" line="144"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="146"/>
+        <location filename="../ui/main_window.cpp" line="167"/>
         <source>Overhangs</source>
         <translation>悬垂</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="147"/>
+        <location filename="../ui/main_window.cpp" line="168"/>
         <source>Machine</source>
         <translation>机器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="148"/>
+        <location filename="../ui/main_window.cpp" line="169"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="149"/>
+        <location filename="../ui/main_window.cpp" line="170"/>
         <source>Plan</source>
         <translation>方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="174"/>
+        <location filename="../ui/main_window.cpp" line="210"/>
         <source>Hardware</source>
         <translation>硬件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="187"/>
+        <location filename="../ui/main_window.cpp" line="229"/>
         <source>Printing direction</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="190"/>
+        <location filename="../ui/main_window.cpp" line="232"/>
         <source>Up:</source>
         <translation>向上：</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="195"/>
+        <location filename="../ui/main_window.cpp" line="237"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="242"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="242"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="201"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="201"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="202"/>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="202"/>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
         <source>Open Model</source>
-        <translation>打开模型</translation>
+        <translation type="vanished">打开模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
         <source>Meshes (*.stl *.obj *.off *.ply);;All files (*)</source>
-        <translation>网格 (*.stl *.obj *.off *.ply);;所有文件 (*)</translation>
+        <translation type="vanished">网格 (*.stl *.obj *.off *.ply);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="260"/>
+        <location filename="../ui/main_window.cpp" line="100"/>
+        <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
+        <translation>打开网格文件（STL、OBJ、OFF 或 PLY）或 MultiDir 项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="119"/>
+        <source>Export Sc&amp;reenshot...</source>
+        <translation>导出截图(&amp;R)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="121"/>
+        <source>Save the 3D view as shown to a PNG or JPEG file</source>
+        <translation>将当前显示的 3D 视图保存为 PNG 或 JPEG 文件</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="290"/>
+        <source>Open Model or Project</source>
+        <translation>打开模型或项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="291"/>
+        <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
+        <translation>网格和项目 (*.stl *.obj *.off *.ply *.multidir);;网格 (*.stl *.obj *.off *.ply);;MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="308"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>自定义（%1, %2, %3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="281"/>
+        <location filename="../ui/main_window.cpp" line="330"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="285"/>
+        <location filename="../ui/main_window.cpp" line="334"/>
         <source>Repaired on load: %1</source>
         <translation>加载时已修复：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="299"/>
+        <location filename="../ui/main_window.cpp" line="348"/>
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
+        <location filename="../ui/main_window.cpp" line="352"/>
         <source>Could not open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="307"/>
+        <location filename="../ui/main_window.cpp" line="356"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="326"/>
-        <location filename="../ui/main_window.cpp" line="343"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
+        <location filename="../ui/main_window.cpp" line="393"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="336"/>
+        <location filename="../ui/main_window.cpp" line="386"/>
         <source>Triangles: %1</source>
         <translation>三角形：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="337"/>
+        <location filename="../ui/main_window.cpp" line="387"/>
         <source>Volume: %1 mm³</source>
         <translation>体积：%1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="351"/>
+        <location filename="../ui/main_window.cpp" line="401"/>
         <source>Risky area unavailable</source>
         <translation>风险面积不可用</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="359"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>风险面积（%1 向上）：%2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="361"/>
+        <location filename="../ui/main_window.cpp" line="411"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="376"/>
-        <location filename="../ui/main_window.cpp" line="395"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="378"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Fix the machine first: %1</source>
         <translation>请先修正机器设置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="394"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>A search is already running.</source>
         <translation>已有搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="404"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>Cannot search: %1</source>
         <translation>无法搜索：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="405"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Cannot search.</source>
         <translation>无法搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="419"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>Searching %1...</source>
         <translation>正在搜索 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Cancelling the search...</source>
         <translation>正在取消搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>搜索已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>Search finished.</source>
         <translation>搜索完成。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Search failed: %1</source>
         <translation>搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="545"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>没有可导出的方案：请先运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>无法将方案导出到 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="564"/>
         <source>Plan exported to %1.</source>
         <translation>方案已导出到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="571"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>无法打开方案 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="543"/>
+        <location filename="../ui/main_window.cpp" line="618"/>
         <source>Machine profile saved to %1.</source>
         <translation>机器配置已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="555"/>
+        <location filename="../ui/main_window.cpp" line="630"/>
         <source>Machine profile %1 loaded.</source>
         <translation>已加载机器配置 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="635"/>
         <source>Export Plan to Folder</source>
         <translation>将方案导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="638"/>
         <source>Export Plan</source>
         <translation>导出方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="567"/>
+        <location filename="../ui/main_window.cpp" line="648"/>
+        <source>Screenshot saved to %1.</source>
+        <translation>截图已保存到 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="653"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="654"/>
+        <source>JPEG images (*.jpg *.jpeg)</source>
+        <translation>JPEG 图像 (*.jpg *.jpeg)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="657"/>
+        <location filename="../ui/main_window.cpp" line="665"/>
+        <source>Export Screenshot</source>
+        <translation>导出截图</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="669"/>
         <source>Open Plan Folder</source>
         <translation>打开方案文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="570"/>
+        <location filename="../ui/main_window.cpp" line="672"/>
         <source>Open Plan</source>
         <translation>打开方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="574"/>
-        <location filename="../ui/main_window.cpp" line="578"/>
+        <location filename="../ui/main_window.cpp" line="676"/>
+        <location filename="../ui/main_window.cpp" line="680"/>
         <source>Save Machine Profile</source>
         <translation>保存机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="575"/>
+        <location filename="../ui/main_window.cpp" line="677"/>
         <source>Machine profiles (*.json)</source>
         <translation>机器配置 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
-        <location filename="../ui/main_window.cpp" line="586"/>
+        <location filename="../ui/main_window.cpp" line="684"/>
+        <location filename="../ui/main_window.cpp" line="688"/>
         <source>Load Machine Profile</source>
         <translation>加载机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="583"/>
+        <location filename="../ui/main_window.cpp" line="685"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>机器配置 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="590"/>
+        <location filename="../ui/main_window.cpp" line="692"/>
         <source>Loading %1...</source>
         <translation>正在加载 %1...</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="23"/>
+        <source>Edit plan</source>
+        <translation>编辑方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="54"/>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="56"/>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/main_window_editing.cpp" line="59"/>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
     </message>
 </context>
 <context>
     <name>multidir::ui::ModelLoader</name>
     <message>
-        <location filename="../ui/jobs/model_loader.cpp" line="50"/>
+        <location filename="../ui/jobs/model_loader.cpp" line="51"/>
         <source>Not enough memory to load this model.</source>
         <translation>内存不足，无法加载此模型。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/model_loader.cpp" line="53"/>
-        <location filename="../ui/jobs/model_loader.cpp" line="57"/>
+        <location filename="../ui/jobs/model_loader.cpp" line="54"/>
+        <location filename="../ui/jobs/model_loader.cpp" line="58"/>
         <source>Unexpected error while loading.</source>
         <translation>加载时发生意外错误。</translation>
     </message>
@@ -1403,10 +1608,51 @@
     </message>
 </context>
 <context>
+    <name>multidir::ui::PictureFile</name>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="32"/>
+        <source>Could not save %1: there is no picture to save.</source>
+        <translation>无法保存 %1：没有可保存的图像。</translation>
+    </message>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="35"/>
+        <source>Could not save %1: give the file name the extension .png or .jpg.</source>
+        <translation>无法保存 %1：请给文件名加上扩展名 .png 或 .jpg。</translation>
+    </message>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="42"/>
+        <source>Could not save %1: the file cannot be written there; check that its folder exists and may be written to.</source>
+        <translation>无法保存 %1：无法在该位置写入文件；请检查其所在文件夹是否存在且可写入。</translation>
+    </message>
+    <message>
+        <location filename="../ui/picture_file.cpp" line="45"/>
+        <source>Could not save %1: %2</source>
+        <translation>无法保存 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PlanEvaluationJob</name>
+    <message>
+        <location filename="../ui/edit/plan_evaluation_job.cpp" line="26"/>
+        <source>The supports could not be grown: %1 (%2)</source>
+        <translation>无法生成支撑：%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/plan_evaluation_job.cpp" line="31"/>
+        <source>Not enough memory to grow the supports: the plan is shown without them.</source>
+        <translation>内存不足，无法生成支撑：方案将不带支撑显示。</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit/plan_evaluation_job.cpp" line="33"/>
+        <source>Unexpected error while growing the supports.</source>
+        <translation>生成支撑时发生意外错误。</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::PlanPanel</name>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="45"/>
-        <location filename="../ui/panels/plan_panel.cpp" line="156"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="46"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="175"/>
         <source>No plan yet: run a search or open a plan.</source>
         <translation>尚无方案：请运行搜索或打开方案。</translation>
     </message>
@@ -1431,93 +1677,483 @@
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
         <source>Machine angles</source>
         <translation>机器角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="60"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <source>Supports (mm³)</source>
+        <translation>支撑 (mm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="61"/>
         <source>Printing directions</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="63"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="64"/>
         <source>Clipping planes</source>
         <translation>切割平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="65"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="66"/>
+        <source>Supports</source>
+        <translation>支撑</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="69"/>
+        <source>The tree supports grown for the risky area the plan leaves, in one colour</source>
+        <translation>为方案剩余的风险面积生成的树状支撑，以单一颜色显示</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="70"/>
         <source>Turn the view as the machine turns the part</source>
         <translation>随机器转动零件而旋转视图</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="70"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="75"/>
         <source>Moves the regions apart along their printing directions</source>
         <translation>沿各自打印方向将区域分开</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="77"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="82"/>
         <source>Previous region</source>
         <translation>上一个区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="80"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="85"/>
         <source>Next region</source>
         <translation>下一个区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="89"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="94"/>
         <source>Show:</source>
         <translation>显示：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="91"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="97"/>
         <source>Exploded view:</source>
         <translation>爆炸视图：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="92"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="98"/>
         <source>Printed up to:</source>
         <translation>打印到：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="126"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="136"/>
         <source>none (fixed)</source>
         <translation>无（固定）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="128"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="138"/>
         <source>rotary %1°</source>
         <translation>旋转 %1°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="131"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="141"/>
         <source>tilt %1°, azimuth %2°</source>
         <translation>倾斜 %1°，方位角 %2°</translation>
     </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="149"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
+        <source>No supports were grown for this plan</source>
+        <translation>未为此方案生成支撑</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/panels/plan_panel.cpp" line="137"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="153"/>
         <source>%n region(s); J_G %1 mm² before, %2 mm² after.</source>
         <translation>
             <numerusform>%n 个区域；J_G 之前 %1 mm²，之后 %2 mm²。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="186"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="208"/>
         <source>of %1</source>
         <translation>共 %1</translation>
     </message>
 </context>
 <context>
+    <name>multidir::ui::PlaneEditPanel</name>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <source>Plane</source>
+        <translation>平面</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <source>Normal</source>
+        <translation>法向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <source>Offset (mm)</source>
+        <translation>偏移 (mm)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="98"/>
+        <source> mm</source>
+        <translation> 毫米</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="100"/>
+        <source>Distance of the plane from the origin along its normal</source>
+        <translation>平面沿其法向到原点的距离</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="103"/>
+        <source>Moves the plane along its normal across what is left of the model</source>
+        <translation>沿法向在模型的剩余部分范围内移动平面</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="106"/>
+        <source>Offset:</source>
+        <translation>偏移：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="118"/>
+        <source>Tilt:</source>
+        <translation>倾斜：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="119"/>
+        <source>Azimuth:</source>
+        <translation>方位角：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="128"/>
+        <source>Rotary angle:</source>
+        <translation>旋转角度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="131"/>
+        <source>&amp;Add plane</source>
+        <translation>添加平面(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="134"/>
+        <source>Splits the piece above the selected plane in two (or, with no plane selected, cuts what is left on the platform at mid-height)</source>
+        <translation>将所选平面上方的部分一分为二（若未选择平面，则在半高处切割平台上剩余的部分）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="136"/>
+        <source>&amp;Delete plane</source>
+        <translation>删除平面(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="138"/>
+        <source>Updating the plan...</source>
+        <translation>正在更新方案...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="232"/>
+        <source>No plan to edit: run a search or open a plan.</source>
+        <translation>没有可编辑的方案：请运行搜索或打开方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="234"/>
+        <source>This plan is shown without its model: open the model it was made from to edit it.</source>
+        <translation>此方案显示时没有其模型：请打开生成该方案的模型后再编辑。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="236"/>
+        <source>Select a plane to move, tilt or delete it. Every change can be undone (Ctrl+Z).</source>
+        <translation>选择一个平面即可移动、倾斜或删除它。每次更改都可以撤销（Ctrl+Z）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="249"/>
+        <source>J_G before: %1 mm² (the whole model printed along up)
+J_G after: %2 mm² (%3 mm² before editing)</source>
+        <translation>J_G 之前：%1 mm²（整个模型沿向上方向打印）
+J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::ProjectSession</name>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="86"/>
+        <source>Open &amp;Project...</source>
+        <translation>打开项目(&amp;P)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="88"/>
+        <source>Open a MultiDir project (.multidir): its model, settings and plan</source>
+        <translation>打开 MultiDir 项目（.multidir）：包括其模型、设置和方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="92"/>
+        <source>&amp;Save Project</source>
+        <translation>保存项目(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="95"/>
+        <source>Save the model reference, the settings and the plan in a project file</source>
+        <translation>将模型引用、设置和方案保存到项目文件中</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="96"/>
+        <source>Save Project &amp;As...</source>
+        <translation>项目另存为(&amp;A)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="107"/>
+        <source>There is no model to save a project for: open a model first.</source>
+        <translation>没有可为之保存项目的模型：请先打开一个模型。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="116"/>
+        <source>The model shown has no file (it is the regions of a plan opened without its model): open the model itself to save a project.</source>
+        <translation>当前显示的模型没有对应的文件（它是一个在没有模型的情况下打开的方案的各个区域）：请打开模型本身以保存项目。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="135"/>
+        <source>Wait until the project has opened before saving.</source>
+        <translation>请等项目打开完成后再保存。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="138"/>
+        <source>Cannot save the project: %1</source>
+        <translation>无法保存项目：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="141"/>
+        <source>Could not save the project %1: %2 (%3)</source>
+        <translation>无法保存项目 %1：%2（%3）</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="147"/>
+        <source>Project saved to %1.</source>
+        <translation>项目已保存到 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="159"/>
+        <location filename="../ui/project/project_session.cpp" line="172"/>
+        <location filename="../ui/project/project_session.cpp" line="177"/>
+        <source>Save Project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="172"/>
+        <source>MultiDir projects (*.multidir)</source>
+        <translation>MultiDir 项目 (*.multidir)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="181"/>
+        <location filename="../ui/project/project_session.cpp" line="519"/>
+        <source>Open Project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="182"/>
+        <source>MultiDir projects (*.multidir);;All files (*)</source>
+        <translation>MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="203"/>
+        <source>%1 is no longer there; it was taken off the recent files.</source>
+        <translation>%1 已不存在，已将其从最近打开的文件中移除。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="223"/>
+        <source>Cannot open %1: drop a mesh file (.stl, .obj, .off, .ply) or a MultiDir project (.multidir).</source>
+        <translation>无法打开 %1：请拖放网格文件（.stl、.obj、.off、.ply）或 MultiDir 项目（.multidir）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="236"/>
+        <source>There is no autosaved project to recover.</source>
+        <translation>没有可恢复的自动保存项目。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="246"/>
+        <source>Recover Unsaved Work</source>
+        <translation>恢复未保存的工作</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="247"/>
+        <source>MultiDir Studio did not close properly. Recover the project it autosaved on %1?</source>
+        <translation>MultiDir Studio 未正常关闭。是否恢复它在 %1 自动保存的项目？</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="252"/>
+        <source>It was an untitled project.</source>
+        <translation>这是一个未命名的项目。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="253"/>
+        <source>It holds unsaved changes to %1.</source>
+        <translation>其中包含对 %1 的未保存更改。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="254"/>
+        <source>&amp;Recover</source>
+        <translation>恢复(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="255"/>
+        <source>&amp;Discard</source>
+        <translation>丢弃(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="256"/>
+        <source>&amp;Later</source>
+        <translation>稍后(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="300"/>
+        <source>untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="301"/>
+        <source>Unsaved Changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="302"/>
+        <source>The project %1 has changes that are not saved.</source>
+        <translation>项目 %1 有尚未保存的更改。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="305"/>
+        <source>Save them first?</source>
+        <translation>是否先保存？</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="392"/>
+        <location filename="../ui/project/project_session.cpp" line="428"/>
+        <source>Opening %1 was interrupted: another model was opened.</source>
+        <translation>打开 %1 时被中断：另一个模型已被打开。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="408"/>
+        <source>Rebuilding the plan of %1...</source>
+        <translation>正在重建 %1 的方案...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="435"/>
+        <source>The model file %1 changed since the project was saved; the plan was recomputed on the changed file.</source>
+        <translation>模型文件 %1 在项目保存后已发生变化；方案已根据变化后的文件重新计算。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="449"/>
+        <source>The rebuilt plan leaves %1 mm² of risky area; the project saved %2 mm².</source>
+        <translation>重建的方案剩余 %1 mm² 风险面积；项目中保存的是 %2 mm²。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="454"/>
+        <source>The plan could not be rebuilt on this model (%1); the model is shown without it.</source>
+        <translation>无法在此模型上重建方案（%1）；模型将不带方案显示。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="470"/>
+        <source>Recovered the autosaved project.</source>
+        <translation>已恢复自动保存的项目。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="471"/>
+        <source>Project %1 opened.</source>
+        <translation>已打开项目 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="474"/>
+        <source>Project %1</source>
+        <translation>项目 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="484"/>
+        <source>Could not open the project %1: %2</source>
+        <translation>无法打开项目 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="499"/>
+        <source>Could not open the project %1: its model %2 is missing.</source>
+        <translation>无法打开项目 %1：缺少其模型 %2。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="500"/>
+        <source>Put the model back at %1, or open the model where it is now and save the project again.</source>
+        <translation>请将模型放回 %1，或从模型现在所在的位置打开它，然后重新保存项目。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="505"/>
+        <source>Opening the project %1...</source>
+        <translation>正在打开项目 %1...</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="518"/>
+        <source>%1 is still open.</source>
+        <translation>%1 仍处于打开状态。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <source>MultiDir Studio[*]</source>
+        <translation>MultiDir Studio[*]</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <source>%1[*] - MultiDir Studio</source>
+        <translation>%1[*] - MultiDir Studio</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::RecentFilesMenu</name>
+    <message>
+        <location filename="../ui/project/recent_files.cpp" line="41"/>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/recent_files.cpp" line="68"/>
+        <source>&amp;Clear Recent</source>
+        <translation>清除最近记录(&amp;C)</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::SearchJob</name>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="91"/>
+        <location filename="../ui/jobs/search_job.cpp" line="37"/>
+        <source>The search was cancelled while growing supports: the plan is shown without them.</source>
+        <translation>搜索在生成支撑时被取消：方案将不带支撑显示。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="39"/>
+        <source>The supports could not be grown: %1 (%2)</source>
+        <translation>无法生成支撑：%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="43"/>
+        <source>Not enough memory to grow the supports: the plan is shown without them.</source>
+        <translation>内存不足，无法生成支撑：方案将不带支撑显示。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="45"/>
+        <source>Unexpected error while growing the supports: %1</source>
+        <translation>生成支撑时发生意外错误：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="47"/>
+        <source>Unexpected error while growing the supports.</source>
+        <translation>生成支撑时发生意外错误。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="128"/>
+        <source>growing supports</source>
+        <translation>正在生成支撑</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/search_job.cpp" line="139"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>内存不足，无法进行此搜索：请减小束宽或法向数量。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="94"/>
-        <location filename="../ui/jobs/search_job.cpp" line="98"/>
+        <location filename="../ui/jobs/search_job.cpp" line="142"/>
+        <location filename="../ui/jobs/search_job.cpp" line="146"/>
         <source>Unexpected error during the search.</source>
         <translation>搜索过程中发生意外错误。</translation>
     </message>
@@ -1630,103 +2266,103 @@
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="104"/>
+        <location filename="../ui/panels/search_panel.cpp" line="109"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="112"/>
+        <location filename="../ui/panels/search_panel.cpp" line="117"/>
         <source>Level:</source>
         <translation>层级：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="113"/>
+        <location filename="../ui/panels/search_panel.cpp" line="118"/>
         <source>Beams alive:</source>
         <translation>存活束：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="114"/>
+        <location filename="../ui/panels/search_panel.cpp" line="119"/>
         <source>Best J_G:</source>
         <translation>最佳 J_G：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="115"/>
+        <location filename="../ui/panels/search_panel.cpp" line="120"/>
         <source>Candidates scored:</source>
         <translation>已评估候选：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="136"/>
+        <location filename="../ui/panels/search_panel.cpp" line="141"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="174"/>
+        <location filename="../ui/panels/search_panel.cpp" line="180"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>搜索能让模型以更少支撑打印的切割平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="192"/>
+        <location filename="../ui/panels/search_panel.cpp" line="198"/>
         <source>Starting...</source>
         <translation>正在启动...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="195"/>
-        <location filename="../ui/panels/search_panel.cpp" line="214"/>
-        <location filename="../ui/panels/search_panel.cpp" line="228"/>
+        <location filename="../ui/panels/search_panel.cpp" line="201"/>
+        <location filename="../ui/panels/search_panel.cpp" line="220"/>
+        <location filename="../ui/panels/search_panel.cpp" line="234"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="211"/>
+        <location filename="../ui/panels/search_panel.cpp" line="217"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1（第 %2 / %3 个轴）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="221"/>
+        <location filename="../ui/panels/search_panel.cpp" line="227"/>
         <source>Cancelling: keeping the best plan so far...</source>
         <translation>正在取消：保留目前的最佳方案...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="227"/>
+        <location filename="../ui/panels/search_panel.cpp" line="233"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="227"/>
+        <location filename="../ui/panels/search_panel.cpp" line="233"/>
         <source>Done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="233"/>
+        <location filename="../ui/panels/search_panel.cpp" line="239"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="237"/>
+        <location filename="../ui/panels/search_panel.cpp" line="243"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>没有改进：没有切割平面能减少风险面积（J_G 仍为 %1 mm²）。请尝试更多法向、更小的偏移步长、更大的 w 或其他机器。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="242"/>
+        <location filename="../ui/panels/search_panel.cpp" line="248"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>并非无支撑：仍有 %1 mm² 需要支撑（原为 %2 mm²），共 %n 个区域。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="246"/>
+        <location filename="../ui/panels/search_panel.cpp" line="252"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>分为 %n 个区域后无需支撑（J_G 原为 %1 mm²）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="254"/>
+        <location filename="../ui/panels/search_panel.cpp" line="260"/>
         <source>Failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="255"/>
+        <location filename="../ui/panels/search_panel.cpp" line="261"/>
         <source>%1
 %2</source>
         <translation>%1
@@ -1736,112 +2372,119 @@
 <context>
     <name>multidir::ui::StudioStartup</name>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="62"/>
+        <location filename="../ui/studio_startup.cpp" line="64"/>
         <source>MultiDir Studio: plans multi-directional 3D prints.</source>
         <translation>MultiDir Studio：规划多方向 3D 打印。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="66"/>
+        <location filename="../ui/studio_startup.cpp" line="68"/>
         <source>Printing (up) direction of the model: x, -y, +z or a,b,c. Default: +z.</source>
         <translation>模型的打印（向上）方向：x、-y、+z 或 a,b,c。默认：+z。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="67"/>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
         <source>direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <location filename="../ui/studio_startup.cpp" line="71"/>
         <source>Render the window to this PNG file and quit.</source>
         <translation>将窗口渲染到此 PNG 文件后退出。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <location filename="../ui/studio_startup.cpp" line="71"/>
         <source>file</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="70"/>
+        <location filename="../ui/studio_startup.cpp" line="72"/>
         <source>Language of the user interface: de, zh_CN or en.</source>
         <translation>界面语言：de、zh_CN 或 en。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="71"/>
+        <location filename="../ui/studio_startup.cpp" line="73"/>
         <source>language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="73"/>
+        <location filename="../ui/studio_startup.cpp" line="75"/>
         <source>Run a search with the default settings once the model is shown.</source>
         <translation>模型显示后立即以默认设置运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="74"/>
+        <location filename="../ui/studio_startup.cpp" line="76"/>
         <source>Maximal overhang angle in degrees (0-89).</source>
         <translation>最大悬垂角，单位为度（0-89）。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="75"/>
+        <location filename="../ui/studio_startup.cpp" line="77"/>
         <source>degrees</source>
         <translation>度</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="82"/>
-        <source>Mesh file to open (.stl .obj .off .ply). Default: the first sample.</source>
-        <translation>要打开的网格文件（.stl .obj .off .ply）。默认：第一个示例。</translation>
+        <location filename="../ui/studio_startup.cpp" line="84"/>
+        <source>Mesh file (.stl .obj .off .ply) or MultiDir project (.multidir) to open. Default: the first sample.</source>
+        <translation>要打开的网格文件（.stl .obj .off .ply）或 MultiDir 项目（.multidir）。默认：第一个示例。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="83"/>
+        <location filename="../ui/studio_startup.cpp" line="208"/>
+        <source>The search or the project&apos;s plan did not finish within %1 s.</source>
+        <translation>搜索或项目方案未在 %1 秒内完成。</translation>
+    </message>
+    <message>
+        <source>Mesh file to open (.stl .obj .off .ply). Default: the first sample.</source>
+        <translation type="vanished">要打开的网格文件（.stl .obj .off .ply）。默认：第一个示例。</translation>
+    </message>
+    <message>
+        <location filename="../ui/studio_startup.cpp" line="85"/>
         <source>[model]</source>
         <translation>[模型]</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="88"/>
+        <location filename="../ui/studio_startup.cpp" line="90"/>
         <source>Try --help for usage.</source>
         <translation>使用 --help 查看用法。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="103"/>
+        <location filename="../ui/studio_startup.cpp" line="105"/>
         <source>Give at most one model; got %1.</source>
         <translation>最多只能指定一个模型；收到 %1 个。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="107"/>
+        <location filename="../ui/studio_startup.cpp" line="109"/>
         <source>--up: %1</source>
         <translation>--up：%1</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="113"/>
+        <location filename="../ui/studio_startup.cpp" line="115"/>
         <source>--lang: &apos;%1&apos; is not available; use de, zh_CN or en.</source>
         <translation>--lang：“%1”不可用；请使用 de、zh_CN 或 en。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="120"/>
+        <location filename="../ui/studio_startup.cpp" line="122"/>
         <source>--alpha must be a number from 0 to 89.</source>
         <translation>--alpha 必须是 0 到 89 之间的数。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="125"/>
+        <location filename="../ui/studio_startup.cpp" line="127"/>
         <source>--screenshot needs a file name.</source>
         <translation>--screenshot 需要一个文件名。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="196"/>
+        <location filename="../ui/studio_startup.cpp" line="200"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>模型未在 %1 秒内加载完成。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="202"/>
         <source>The search did not finish within %1 s.</source>
-        <translation>搜索未在 %1 秒内完成。</translation>
+        <translation type="vanished">搜索未在 %1 秒内完成。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="212"/>
         <source>Could not write the screenshot to %1.</source>
-        <translation>无法将截图写入 %1。</translation>
+        <translation type="vanished">无法将截图写入 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="216"/>
+        <location filename="../ui/studio_startup.cpp" line="222"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>未显示任何模型；截图 %1 显示的是空窗口。</translation>
     </message>
