@@ -1636,19 +1636,16 @@
 <context>
     <name>multidir::ui::PlanEvaluationJob</name>
     <message>
-        <location filename="../ui/edit/plan_evaluation_job.cpp" line="26"/>
         <source>The supports could not be grown: %1 (%2)</source>
-        <translation>Die Stützen konnten nicht erzeugt werden: %1 (%2)</translation>
+        <translation type="vanished">Die Stützen konnten nicht erzeugt werden: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/edit/plan_evaluation_job.cpp" line="31"/>
         <source>Not enough memory to grow the supports: the plan is shown without them.</source>
-        <translation>Nicht genug Speicher, um die Stützen zu erzeugen: der Plan wird ohne sie angezeigt.</translation>
+        <translation type="vanished">Nicht genug Speicher, um die Stützen zu erzeugen: der Plan wird ohne sie angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/edit/plan_evaluation_job.cpp" line="33"/>
         <source>Unexpected error while growing the supports.</source>
-        <translation>Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
+        <translation type="vanished">Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
     </message>
 </context>
 <context>
@@ -2121,43 +2118,43 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SearchJob</name>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="37"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="26"/>
         <source>The search was cancelled while growing supports: the plan is shown without them.</source>
         <translation>Die Suche wurde beim Erzeugen der Stützen abgebrochen: der Plan wird ohne sie angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="39"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="28"/>
         <source>The supports could not be grown: %1 (%2)</source>
         <translation>Die Stützen konnten nicht erzeugt werden: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="43"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="32"/>
         <source>Not enough memory to grow the supports: the plan is shown without them.</source>
         <translation>Nicht genug Speicher, um die Stützen zu erzeugen: der Plan wird ohne sie angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="45"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="34"/>
         <source>Unexpected error while growing the supports: %1</source>
         <translation>Unerwarteter Fehler beim Erzeugen der Stützen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="47"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="36"/>
         <source>Unexpected error while growing the supports.</source>
         <translation>Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="128"/>
+        <location filename="../ui/jobs/search_job.cpp" line="89"/>
         <source>growing supports</source>
         <translation>Stützen werden erzeugt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="139"/>
+        <location filename="../ui/jobs/search_job.cpp" line="100"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>Nicht genug Speicher für diese Suche: verringern Sie die Strahlbreite oder die Zahl der Normalen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="142"/>
-        <location filename="../ui/jobs/search_job.cpp" line="146"/>
+        <location filename="../ui/jobs/search_job.cpp" line="103"/>
+        <location filename="../ui/jobs/search_job.cpp" line="107"/>
         <source>Unexpected error during the search.</source>
         <translation>Unerwarteter Fehler während der Suche.</translation>
     </message>

@@ -1633,19 +1633,16 @@
 <context>
     <name>multidir::ui::PlanEvaluationJob</name>
     <message>
-        <location filename="../ui/edit/plan_evaluation_job.cpp" line="26"/>
         <source>The supports could not be grown: %1 (%2)</source>
-        <translation>无法生成支撑：%1（%2）</translation>
+        <translation type="vanished">无法生成支撑：%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/edit/plan_evaluation_job.cpp" line="31"/>
         <source>Not enough memory to grow the supports: the plan is shown without them.</source>
-        <translation>内存不足，无法生成支撑：方案将不带支撑显示。</translation>
+        <translation type="vanished">内存不足，无法生成支撑：方案将不带支撑显示。</translation>
     </message>
     <message>
-        <location filename="../ui/edit/plan_evaluation_job.cpp" line="33"/>
         <source>Unexpected error while growing the supports.</source>
-        <translation>生成支撑时发生意外错误。</translation>
+        <translation type="vanished">生成支撑时发生意外错误。</translation>
     </message>
 </context>
 <context>
@@ -2117,43 +2114,43 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SearchJob</name>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="37"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="26"/>
         <source>The search was cancelled while growing supports: the plan is shown without them.</source>
         <translation>搜索在生成支撑时被取消：方案将不带支撑显示。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="39"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="28"/>
         <source>The supports could not be grown: %1 (%2)</source>
         <translation>无法生成支撑：%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="43"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="32"/>
         <source>Not enough memory to grow the supports: the plan is shown without them.</source>
         <translation>内存不足，无法生成支撑：方案将不带支撑显示。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="45"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="34"/>
         <source>Unexpected error while growing the supports: %1</source>
         <translation>生成支撑时发生意外错误：%1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="47"/>
+        <location filename="../ui/jobs/support_growth.cpp" line="36"/>
         <source>Unexpected error while growing the supports.</source>
         <translation>生成支撑时发生意外错误。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="128"/>
+        <location filename="../ui/jobs/search_job.cpp" line="89"/>
         <source>growing supports</source>
         <translation>正在生成支撑</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="139"/>
+        <location filename="../ui/jobs/search_job.cpp" line="100"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>内存不足，无法进行此搜索：请减小束宽或法向数量。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="142"/>
-        <location filename="../ui/jobs/search_job.cpp" line="146"/>
+        <location filename="../ui/jobs/search_job.cpp" line="103"/>
+        <location filename="../ui/jobs/search_job.cpp" line="107"/>
         <source>Unexpected error during the search.</source>
         <translation>搜索过程中发生意外错误。</translation>
     </message>

@@ -52,6 +52,23 @@ ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::s
   return parsed;
 }
 
+std::string onlyPositional(const ParsedArgs& parsed, const std::string& command, const std::string& what,
+                           const std::string& usage) {
+  if (parsed.positionals.empty()) throw UsageError("multidir " + command + ": which " + what + "? Usage: " + usage);
+  if (parsed.positionals.size() > 1)
+    throw UsageError("multidir " + command + ": one " + what + " at a time (got '" + parsed.positionals[0] + "' and '" +
+                     parsed.positionals[1] + "')");
+  return parsed.positionals[0];
+}
+
+std::string outputFolder(const ParsedArgs& parsed, const std::string& command, const std::string& contents) {
+  if (!parsed.has("-o"))
+    throw UsageError("multidir " + command + ": -o OUTDIR is missing: name the folder to write " + contents + " to");
+  std::string folder = parsed.value("-o", "");
+  if (folder.empty()) throw UsageError("multidir " + command + ": -o needs a folder name");
+  return folder;
+}
+
 double parseNumber(const std::string& text, const std::string& option) {
   errno = 0;
   char* end = nullptr;

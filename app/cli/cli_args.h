@@ -42,6 +42,15 @@ struct ParsedArgs {
 ParsedArgs parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valueOptions,
                      const std::set<std::string>& flagOptions, const std::string& command);
 
+// The one positional argument of commands that take exactly one (`what`: "model", "plan"); UsageError when
+// there is none (with `usage`, "multidir info MODEL [options]") or more than one.
+std::string onlyPositional(const ParsedArgs& parsed, const std::string& command, const std::string& what,
+                           const std::string& usage);
+
+// The folder named by the required option -o; UsageError when -o is missing (saying that the folder receives
+// `contents`, "the plan") or empty.
+std::string outputFolder(const ParsedArgs& parsed, const std::string& command, const std::string& contents);
+
 // The whole text must be a finite number, else UsageError naming the option.
 double parseNumber(const std::string& text, const std::string& option);
 

@@ -158,15 +158,8 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
-  if (parsed.positionals.empty())
-    throw UsageError(kCommand + ": which model? Usage: multidir decompose MODEL -o OUTDIR");
-  if (parsed.positionals.size() > 1)
-    throw UsageError(kCommand + ": one model at a time (got '" + parsed.positionals[0] + "' and '" +
-                     parsed.positionals[1] + "')");
-  s.model = parsed.positionals[0];
-  if (!parsed.has("-o")) throw UsageError(kCommand + ": -o OUTDIR is missing: name the folder to write the plan to");
-  s.outDir = parsed.value("-o", "");
-  if (s.outDir.empty()) throw UsageError(kCommand + ": -o needs a folder name");
+  s.model = onlyPositional(parsed, "decompose", "model", "multidir decompose MODEL -o OUTDIR");
+  s.outDir = outputFolder(parsed, "decompose", "the plan");
   if (parsed.has("--summary")) {
     s.summaryPath = parsed.value("--summary", "");
     if (s.summaryPath.empty()) throw UsageError(kCommand + ": --summary needs a file name");
@@ -196,18 +189,6 @@ std::string vectorText(const core::Vec3& v) {
   return formatNumber("%6.3f", v.x()) + ", " + formatNumber("%6.3f", v.y()) + ", " + formatNumber("%6.3f", v.z());
 }
 
-std::string anglesText(const core::MachineSpec& machine, const core::MachineAngles& a) {
-  switch (machine.kind) {
-    case core::MachineKind::ThreeAxis:
-      return "-";
-    case core::MachineKind::RotaryPlatform:
-      return "rotary " + formatNumber("%6.1f", a.rotaryDegrees);
-    case core::MachineKind::TiltRotate:
-      return "tilt " + formatNumber("%5.1f", a.tiltDegrees) + "  azimuth " + formatNumber("%6.1f", a.azimuthDegrees);
-  }
-  return "";
-}
-
 void printTable(std::ostream& out, const Settings& s, const core::Decomposition& plan) {
   out << "Regions in printing order (" << plan.regions.size() << " regions, " << plan.clippingPlanes.size()
       << " clipping planes; " << core::machineKindName(s.machine.kind) << ", " << core::schemeName(s.options.scheme)
@@ -220,8 +201,8 @@ void printTable(std::ostream& out, const Settings& s, const core::Decomposition&
     const core::Region& r = plan.regions[i];
     char row[200];
     std::snprintf(row, sizeof row, "  %3zu  %-24s  %-28s  %14.2f  %12.2f\n", i + 1,
-                  vectorText(r.printingDirection).c_str(), anglesText(s.machine, r.angles).c_str(), r.volumeMm3,
-                  r.riskyAreaMm2);
+                  vectorText(r.printingDirection).c_str(), machineAnglesText(s.machine.kind, r.angles).c_str(),
+                  r.volumeMm3, r.riskyAreaMm2);
     out << row;
   }
   const double reduction = plan.jgBeforeMm2 > 0 ? 100.0 * (1.0 - plan.jgAfterMm2 / plan.jgBeforeMm2) : 0.0;

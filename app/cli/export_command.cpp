@@ -46,16 +46,8 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
-  if (parsed.positionals.empty())
-    throw UsageError(kCommand + ": which plan? Usage: multidir export PLAN_DIR -o OUTDIR");
-  if (parsed.positionals.size() > 1)
-    throw UsageError(kCommand + ": one plan at a time (got '" + parsed.positionals[0] + "' and '" +
-                     parsed.positionals[1] + "')");
-  s.planDir = parsed.positionals[0];
-  if (!parsed.has("-o"))
-    throw UsageError(kCommand + ": -o OUTDIR is missing: name the folder to write the print job to");
-  s.outDir = parsed.value("-o", "");
-  if (s.outDir.empty()) throw UsageError(kCommand + ": -o needs a folder name");
+  s.planDir = onlyPositional(parsed, "export", "plan", "multidir export PLAN_DIR -o OUTDIR");
+  s.outDir = outputFolder(parsed, "export", "the print job");
   s.options.format = parsed.value("--format", s.options.format);
   if (const core::Status valid = core::validate(s.options); !valid)
     throw UsageError(kCommand + ": --format: " + valid.error().message);
@@ -66,18 +58,6 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   }
   s.options.supports = !parsed.has("--no-supports");
   return s;
-}
-
-std::string anglesText(core::MachineKind kind, const core::MachineAngles& a) {
-  switch (kind) {
-    case core::MachineKind::ThreeAxis:
-      return "-";
-    case core::MachineKind::RotaryPlatform:
-      return "rotary " + formatNumber("%6.1f", a.rotaryDegrees);
-    case core::MachineKind::TiltRotate:
-      return "tilt " + formatNumber("%5.1f", a.tiltDegrees) + "  azimuth " + formatNumber("%6.1f", a.azimuthDegrees);
-  }
-  return "";
 }
 
 void printTable(std::ostream& out, const core::PrintJob& job) {
@@ -91,7 +71,7 @@ void printTable(std::ostream& out, const core::PrintJob& job) {
     char row[240];
     std::snprintf(row, sizeof row, "  %3d  %-22s  %-24s  %-28s  %12.2f\n", step.index, step.regionFile.c_str(),
                   step.supportsFile.empty() ? "-" : step.supportsFile.c_str(),
-                  anglesText(job.machine.kind, step.angles).c_str(), step.lowestHeightMm);
+                  machineAnglesText(job.machine.kind, step.angles).c_str(), step.lowestHeightMm);
     out << row;
   }
 }

@@ -102,11 +102,7 @@ int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     out << kInfoHelp;
     return kExitOk;
   }
-  if (parsed.positionals.empty()) throw UsageError("multidir info: which model? Usage: multidir info MODEL [options]");
-  if (parsed.positionals.size() > 1)
-    throw UsageError("multidir info: one model at a time (got '" + parsed.positionals[0] + "' and '" +
-                     parsed.positionals[1] + "')");
-  const std::string model = parsed.positionals[0];
+  const std::string model = onlyPositional(parsed, "info", "model", "multidir info MODEL [options]");
 
   // Every option is checked before the model is read, so a typo costs no loading time.
   const core::Result<core::Vec3> up = core::parseDirection(parsed.value("--up", "z"));

@@ -16,4 +16,17 @@ std::string formatNumber(const char* pattern, double value) {
   return buffer;
 }
 
+std::string machineAnglesText(core::MachineKind kind, const core::MachineAngles& angles) {
+  switch (kind) {
+    case core::MachineKind::ThreeAxis:
+      return "-";
+    case core::MachineKind::RotaryPlatform:
+      return "rotary " + formatNumber("%6.1f", angles.rotaryDegrees);
+    case core::MachineKind::TiltRotate:
+      return "tilt " + formatNumber("%5.1f", angles.tiltDegrees) + "  azimuth " +
+             formatNumber("%6.1f", angles.azimuthDegrees);
+  }
+  return "";
+}
+
 }  // namespace multidir::cli

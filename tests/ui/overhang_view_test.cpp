@@ -1,27 +1,19 @@
 // The overhang view: risky faces coloured on the model, alpha_max changing them live.
 #include <gtest/gtest.h>
 
-#include <QSignalSpy>
+#include <QLocale>
 #include <QSlider>
-#include <QTest>
 
 #include "multidir/core/analysis/overhang.h"
 #include "ui/main_window.h"
 #include "ui/panels/overhang_panel.h"
-#include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
 
-void showDefaultSample(MainWindow& window) {
-  window.resize(1200, 800);
-  window.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  startStudio(window, StudioOptions{});
-  ASSERT_TRUE(shown.wait(120000));
-}
+void showDefaultSample(MainWindow& window) { test::showDefaultSample(window, QSize(1200, 800)); }
 
 TEST(StudioOverhangs, RiskyFacesOfTheModelAreColouredAndCounted) {
   MainWindow window;

@@ -12,23 +12,14 @@
 #include "multidir/core/common/units.h"
 #include "ui/main_window.h"
 #include "ui/panels/machine_panel.h"
-#include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 #include "ui/viewer/axis_picker.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
 
-constexpr int kLoadTimeoutMs = 120000;
-
-void showDefaultSample(MainWindow& window) {
-  window.resize(1200, 850);
-  window.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  startStudio(window, StudioOptions{});
-  ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "the default sample did not load";
-}
+void showDefaultSample(MainWindow& window) { test::showDefaultSample(window, QSize(1200, 850)); }
 
 void chooseRotaryMachine(MainWindow& window) {
   core::MachineSpec machine;

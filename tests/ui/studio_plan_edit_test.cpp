@@ -8,7 +8,6 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
-#include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
 #include <QTableWidget>
@@ -22,39 +21,21 @@
 #include "ui/panels/plan_panel.h"
 #include "ui/panels/plane_edit_panel.h"
 #include "ui/panels/search_panel.h"
+#include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
 
-constexpr int kLoadTimeoutMs = 120000;
-constexpr int kSearchTimeoutMs = 240000;
 constexpr int kEvaluationTimeoutMs = 60000;
 
-// Settings small enough for a search of a second; on the snowman they give three clipping planes, each as
-// low as Criterion III allows (so moving one down cuts the platform region).
-core::SearchOptions quickOptions() {
-  core::SearchOptions options;
-  options.beamWidth = 2;
-  options.candidates.normalSamples = 60;
-  options.candidates.offsetStepMm = 2.0;
-  return options;
-}
-
-bool search(MainWindow& window) {
-  window.searchPanel()->setSearchOptions(quickOptions());
-  QSignalSpy finished(&window, &MainWindow::searchFinished);
-  if (!window.runSearch()) return false;
-  return finished.wait(kSearchTimeoutMs);
-}
-
-// The snowman, searched: a plan with planes, shown. The window stays hidden: nothing here depends on
-// pictures, and a software-rendered frame after every edit would make up most of the test's time.
+// The snowman, searched: a plan with planes, shown. With the quick search's settings each of its three
+// clipping planes is as low as Criterion III allows, so moving one down cuts the platform region. The window
+// stays hidden: nothing here depends on pictures, and a software-rendered frame after every edit would make
+// up most of the test's time.
 void showSearchedSnowman(MainWindow& window) {
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  window.openSample(QStringLiteral("snowman"));
-  ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "the snowman did not load";
-  ASSERT_TRUE(search(window)) << "the search did not finish";
+  ASSERT_NO_FATAL_FAILURE(test::openSample(window, QStringLiteral("snowman")));
+  ASSERT_TRUE(test::runQuickSearch(window).plan);
   ASSERT_TRUE(window.plan() && window.plan()->plan);
   ASSERT_GE(window.plan()->plan->clippingPlanes.size(), 2u) << "the snowman's plan should have planes to edit";
   ASSERT_TRUE(window.planEditor()->canEdit());
@@ -79,6 +60,15 @@ void expectSamePlanes(const std::vector<core::Plane>& actual, const std::vector<
     EXPECT_EQ(actual[i].normal, expected[i].normal) << "plane " << i + 1;
     EXPECT_EQ(actual[i].offset, expected[i].offset) << "plane " << i + 1;
   }
+}
+
+// Selects plane `row` in the Edit plan panel and presses its offset slider, as the mouse does when a drag
+// begins; setSliderDown(false) releases it.
+QSlider* pressOffsetSlider(PlaneEditPanel& panel, int row) {
+  panel.planeTable()->selectRow(row);
+  QSlider* slider = panel.offsetSlider();
+  slider->setSliderDown(true);
+  return slider;
 }
 
 QAction* action(const MainWindow& window, const char* name) {
@@ -144,11 +134,7 @@ TEST(StudioPlanEdit, APlanOpenedWithoutItsModelIsShownButCannotBeEdited) {
   ASSERT_TRUE(window.exportPlan(folder, &error)) << error.toStdString();
 
   MainWindow other;
-  QSignalSpy planShown(&other, &MainWindow::planShown);
-  ASSERT_TRUE(other.openPlan(folder, &error)) << error.toStdString();  // a sample's plan names no model file
-  if (planShown.isEmpty()) {
-    ASSERT_TRUE(planShown.wait(kLoadTimeoutMs));
-  }
+  ASSERT_NO_FATAL_FAILURE(test::openPlanFolder(other, folder));  // a sample's plan names no model file
   EXPECT_TRUE(other.planEditor()->hasPlan());
   EXPECT_FALSE(other.planEditor()->canEdit());
   EXPECT_FALSE(other.planeEditPanel()->findChild<QPushButton*>(QStringLiteral("addPlane"))->isEnabled());
@@ -259,12 +245,10 @@ TEST(StudioPlanEdit, ADragOfSeveralStepsIsOneUndoStep) {
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlanEditor& editor = *window.planEditor();
   PlaneEditPanel& panel = *window.planeEditPanel();
-  panel.planeTable()->selectRow(1);
-  QSlider* slider = panel.offsetSlider();
+  QSlider* slider = pressOffsetSlider(panel, 1);
   const int start = slider->value();
   ASSERT_LT(start + 60, slider->maximum());
 
-  slider->setSliderDown(true);  // pressed: the drag begins
   for (int step = 1; step <= 3; ++step) {
     slider->setValue(start + 20 * step);
     ASSERT_TRUE(settle(editor));
@@ -289,11 +273,9 @@ TEST(StudioPlanEdit, ADragReleasedWhereCoreRefusesKeepsItsLastAcceptedStep) {
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlanEditor& editor = *window.planEditor();
   PlaneEditPanel& panel = *window.planeEditPanel();
-  panel.planeTable()->selectRow(0);
-  QSlider* slider = panel.offsetSlider();
+  QSlider* slider = pressOffsetSlider(panel, 0);
   const int start = slider->value();
 
-  slider->setSliderDown(true);
   slider->setValue(start + 20);  // up: accepted
   ASSERT_TRUE(settle(editor));
   const double accepted = shownPlan(window)->clippingPlanes[0].offset;
@@ -397,7 +379,7 @@ TEST(StudioPlanEdit, ANewSearchClearsTheUndoStack) {
   ASSERT_TRUE(settle(editor));
   ASSERT_EQ(window.undoStack()->count(), 1);
 
-  ASSERT_TRUE(search(window));
+  ASSERT_TRUE(test::runQuickSearch(window).plan);
   EXPECT_EQ(window.undoStack()->count(), 0);
   EXPECT_FALSE(action(window, "undo")->isEnabled());
   EXPECT_EQ(editor.plan(), shownPlan(window));
@@ -410,9 +392,7 @@ TEST(StudioPlanEdit, ANewModelEndsEditing) {
   ASSERT_TRUE(settle(*window.planEditor()));
   ASSERT_EQ(window.undoStack()->count(), 1);
 
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  window.openSample(QStringLiteral("mushroom"));
-  ASSERT_TRUE(shown.wait(kLoadTimeoutMs));
+  ASSERT_NO_FATAL_FAILURE(test::openSample(window, QStringLiteral("mushroom")));
   EXPECT_EQ(window.undoStack()->count(), 0);
   EXPECT_FALSE(window.planEditor()->hasPlan());
   EXPECT_FALSE(window.planeEditPanel()->findChild<QPushButton*>(QStringLiteral("addPlane"))->isEnabled());

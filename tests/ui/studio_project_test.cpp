@@ -33,21 +33,14 @@
 #include "ui/project/project_session.h"
 #include "ui/project/recent_files.h"
 #include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 
 namespace multidir::ui {
 namespace {
 
-constexpr int kLoadTimeoutMs = 60000;
-constexpr int kSearchTimeoutMs = 120000;
-
-// Settings small enough for a search of a second or two.
-core::SearchOptions quickOptions() {
-  core::SearchOptions options;
-  options.beamWidth = 2;
-  options.candidates.normalSamples = 60;
-  options.candidates.offsetStepMm = 2.0;
-  return options;
-}
+using test::kLoadTimeoutMs;
+using test::kSearchTimeoutMs;
+using test::quickSearchOptions;
 
 // Writes the T-bar (a stem with two overhanging wings, +Z up) as an OFF file.
 QString writeTBar(const QTemporaryDir& dir, const QString& name) {
@@ -86,17 +79,8 @@ class StudioProject : public ::testing::Test {
     ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "did not load " << path.toStdString();
   }
 
-  static void openSample(MainWindow& window, const QString& id) {
-    QSignalSpy shown(&window, &MainWindow::modelShown);
-    window.openSample(id);
-    ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "did not build " << id.toStdString();
-  }
-
   static void search(MainWindow& window) {
-    window.searchPanel()->setSearchOptions(quickOptions());
-    QSignalSpy finished(&window, &MainWindow::searchFinished);
-    ASSERT_TRUE(window.runSearch());
-    ASSERT_TRUE(finished.wait(kSearchTimeoutMs)) << "the search did not finish";
+    ASSERT_TRUE(test::runQuickSearch(window).plan);
     ASSERT_TRUE(window.plan().has_value());
     ASSERT_GE(window.plan()->plan->clippingPlanes.size(), 1u) << "a plan without planes proves nothing here";
   }
@@ -131,7 +115,7 @@ TEST_F(StudioProject, SavedSampleProjectReopensInANewWindowWithTheSamePlan) {
   MainWindow window;
   show(window);
   const QString sample = QString::fromStdString(core::samples::catalogue().front().id);
-  openSample(window, sample);
+  test::openSample(window, sample);
   search(window);
   const SearchRun saved = *window.plan();
   ASSERT_GE(saved.plan->clippingPlanes.size(), 1u);
@@ -155,13 +139,13 @@ TEST_F(StudioProject, SavedSampleProjectReopensInANewWindowWithTheSamePlan) {
   ASSERT_TRUE(other.model().has_value());
   EXPECT_EQ(other.model()->sampleId, sample);
   expectSamePlan(other, saved);
-  EXPECT_EQ(other.plan()->options.candidates.normalSamples, quickOptions().candidates.normalSamples);
+  EXPECT_EQ(other.plan()->options.candidates.normalSamples, quickSearchOptions().candidates.normalSamples);
   EXPECT_FALSE(other.projectSession()->isModified());
   EXPECT_EQ(other.projectSession()->projectPath(), QFileInfo(path).absoluteFilePath());
-  EXPECT_EQ(other.searchPanel()->searchOptions().beamWidth, quickOptions().beamWidth);
+  EXPECT_EQ(other.searchPanel()->searchOptions().beamWidth, quickSearchOptions().beamWidth);
 
   // Any setting changed afterwards marks the project.
-  core::SearchOptions changed = quickOptions();
+  core::SearchOptions changed = quickSearchOptions();
   changed.beamWidth = 3;
   other.searchPanel()->setSearchOptions(changed);
   EXPECT_TRUE(other.projectSession()->isModified());

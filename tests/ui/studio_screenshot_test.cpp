@@ -7,30 +7,19 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QImageReader>
-#include <QSignalSpy>
 #include <QStatusBar>
-#include <QTest>
 
 #include "support/test_models.h"
 #include "ui/main_window.h"
 #include "ui/picture_census.h"
 #include "ui/picture_file.h"
-#include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
 
-constexpr int kLoadTimeoutMs = 120000;
-
-void showDefaultSample(MainWindow& window) {
-  window.resize(1100, 800);
-  window.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  startStudio(window, StudioOptions{});
-  ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "the default sample did not load";
-}
+void showDefaultSample(MainWindow& window) { test::showDefaultSample(window, QSize(1100, 800)); }
 
 QString scratchFile(const std::string& test, const QString& name) {
   return QDir(QString::fromStdString(test::scratchDirectory(test))).filePath(name);

@@ -22,42 +22,14 @@
 #include "ui/panels/plan_panel.h"
 #include "ui/panels/search_panel.h"
 #include "ui/picture_census.h"
-#include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
 
-constexpr int kLoadTimeoutMs = 120000;
-constexpr int kSearchTimeoutMs = 240000;
-
-void showDefaultSample(MainWindow& window) {
-  window.resize(1400, 900);
-  window.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  startStudio(window, StudioOptions{});
-  ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "the default sample did not load";
-}
-
-// Settings small enough for a search of a few seconds.
-core::SearchOptions quickOptions() {
-  core::SearchOptions options;
-  options.beamWidth = 2;
-  options.candidates.normalSamples = 60;
-  options.candidates.offsetStepMm = 2.0;
-  return options;
-}
-
-SearchRun runQuickSearch(MainWindow& window) {
-  window.searchPanel()->setSearchOptions(quickOptions());
-  QSignalSpy finished(&window, &MainWindow::searchFinished);
-  EXPECT_TRUE(window.runSearch());
-  EXPECT_TRUE(window.isSearching());
-  EXPECT_TRUE(finished.wait(kSearchTimeoutMs)) << "the search did not finish";
-  if (finished.isEmpty()) return {};
-  return finished.front().front().value<SearchRun>();
-}
+using test::runQuickSearch;
+using test::showDefaultSample;
 
 TEST(StudioSearch, PlanOfTheSampleIsShownAsColouredRegionsWithATable) {
   MainWindow window;
@@ -117,11 +89,7 @@ TEST(StudioSearch, ExportedPlanOpensAgainWithTheSameRegions) {
   MainWindow other;
   other.resize(1000, 700);
   other.show();
-  QSignalSpy planShown(&other, &MainWindow::planShown);
-  ASSERT_TRUE(other.openPlan(folder, &error)) << error.toStdString();
-  if (planShown.isEmpty()) {
-    ASSERT_TRUE(planShown.wait(kLoadTimeoutMs));
-  }
+  ASSERT_NO_FATAL_FAILURE(test::openPlanFolder(other, folder));
   ASSERT_TRUE(other.plan().has_value());
   EXPECT_EQ(other.plan()->plan->regions.size(), run.plan->regions.size());
   EXPECT_EQ(other.planPanel()->regionTable()->rowCount(), static_cast<int>(run.plan->regions.size()));
@@ -153,7 +121,7 @@ TEST(StudioSearch, CancelledSearchKeepsTheGuiResponsiveAndDeliversTheBestPlanSoF
   EXPECT_GE(ticks, 10);
 
   window.cancelSearch();
-  ASSERT_TRUE(finished.wait(kSearchTimeoutMs));
+  ASSERT_TRUE(finished.wait(test::kSearchTimeoutMs));
   const SearchRun run = finished.front().front().value<SearchRun>();
   ASSERT_TRUE(run.plan);
   EXPECT_TRUE(run.plan->cancelled);

@@ -8,7 +8,6 @@
 #include <QImage>
 #include <QSignalSpy>
 #include <QTableWidget>
-#include <QTest>
 
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/samples/samples.h"
@@ -19,42 +18,16 @@
 #include "ui/panels/search_panel.h"
 #include "ui/picture_census.h"
 #include "ui/region_palette.h"
-#include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
 
-constexpr int kLoadTimeoutMs = 120000;
-constexpr int kSearchTimeoutMs = 240000;
-
-void showDefaultSample(MainWindow& window) {
-  window.resize(1400, 900);
-  window.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  startStudio(window, StudioOptions{});
-  ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "the default sample did not load";
-}
-
-// Settings small enough for a search of a moment. With them the snowman's plan keeps risky area under its
-// bottom (J_G > 0), so it needs supports.
-core::SearchOptions quickOptions() {
-  core::SearchOptions options;
-  options.beamWidth = 2;
-  options.candidates.normalSamples = 60;
-  options.candidates.offsetStepMm = 2.0;
-  return options;
-}
-
-SearchRun runSearchNeedingSupports(MainWindow& window) {
-  window.searchPanel()->setSearchOptions(quickOptions());
-  QSignalSpy finished(&window, &MainWindow::searchFinished);
-  EXPECT_TRUE(window.runSearch());
-  EXPECT_TRUE(finished.wait(kSearchTimeoutMs)) << "the search did not finish";
-  if (finished.isEmpty()) return {};
-  return finished.front().front().value<SearchRun>();
-}
+// The quick search leaves the default sample's (the snowman's) plan with risky area under its bottom
+// (J_G > 0), so it needs supports.
+using test::runQuickSearch;
+using test::showDefaultSample;
 
 int nonEmptySets(const std::vector<core::SupportSet>& sets, int firstCount) {
   int count = 0;
@@ -71,8 +44,8 @@ TEST(StudioSupports, SearchJobGrowsSupportsAfterThePlanAsItsLastPhase) {
   QSignalSpy finished(&job, &SearchJob::finished);
   core::MachineSpec machine;
   machine.up = core::samples::sampleUp();
-  ASSERT_TRUE(job.start(model, machine, quickOptions()));
-  ASSERT_TRUE(finished.wait(kSearchTimeoutMs));
+  ASSERT_TRUE(job.start(model, machine, test::quickSearchOptions()));
+  ASSERT_TRUE(finished.wait(test::kSearchTimeoutMs));
   const SearchRun run = finished.front().front().value<SearchRun>();
   ASSERT_TRUE(run.plan);
   ASSERT_GT(run.plan->jgAfterMm2, 0.0);
@@ -88,7 +61,7 @@ TEST(StudioSupports, SearchJobGrowsSupportsAfterThePlanAsItsLastPhase) {
 TEST(StudioSupports, SearchLeavingRiskyAreaShowsSupportsThatTheCheckboxHides) {
   MainWindow window;
   showDefaultSample(window);
-  const SearchRun run = runSearchNeedingSupports(window);
+  const SearchRun run = runQuickSearch(window);
   ASSERT_TRUE(run.plan);
   ASSERT_GT(run.plan->jgAfterMm2, 0.0);
   ASSERT_TRUE(run.supports) << run.supportsNote.toStdString();
@@ -112,7 +85,7 @@ TEST(StudioSupports, SearchLeavingRiskyAreaShowsSupportsThatTheCheckboxHides) {
 TEST(StudioSupports, RegionTableListsEachRegionsSupportVolume) {
   MainWindow window;
   showDefaultSample(window);
-  const SearchRun run = runSearchNeedingSupports(window);
+  const SearchRun run = runQuickSearch(window);
   ASSERT_TRUE(run.plan && run.supports);
   QTableWidget* table = window.planPanel()->regionTable();
   ASSERT_GT(table->columnCount(), PlanPanel::kSupportVolumeColumn);
@@ -128,7 +101,7 @@ TEST(StudioSupports, RegionTableListsEachRegionsSupportVolume) {
 TEST(StudioSupports, StepperShowsTheSupportsOfTheRegionsShownOnly) {
   MainWindow window;
   showDefaultSample(window);
-  const SearchRun run = runSearchNeedingSupports(window);
+  const SearchRun run = runQuickSearch(window);
   ASSERT_TRUE(run.plan && run.supports);
   const int regions = static_cast<int>(run.plan->regions.size());
   for (int shown = 1; shown <= regions; ++shown) {
@@ -140,7 +113,7 @@ TEST(StudioSupports, StepperShowsTheSupportsOfTheRegionsShownOnly) {
 TEST(StudioSupports, ExportedPlanCarriesTheSupportsAndShowsThemWhenOpened) {
   MainWindow window;
   showDefaultSample(window);
-  const SearchRun run = runSearchNeedingSupports(window);
+  const SearchRun run = runQuickSearch(window);
   ASSERT_TRUE(run.plan && run.supports);
   const QString folder = QString::fromStdString(test::scratchDirectory("StudioSupportsExport")) + QStringLiteral("/plan");
   QString error;
@@ -157,11 +130,7 @@ TEST(StudioSupports, ExportedPlanCarriesTheSupportsAndShowsThemWhenOpened) {
   MainWindow other;
   other.resize(1000, 700);
   other.show();
-  QSignalSpy planShown(&other, &MainWindow::planShown);
-  ASSERT_TRUE(other.openPlan(folder, &error)) << error.toStdString();
-  if (planShown.isEmpty()) {
-    ASSERT_TRUE(planShown.wait(kLoadTimeoutMs));
-  }
+  ASSERT_NO_FATAL_FAILURE(test::openPlanFolder(other, folder));
   ASSERT_TRUE(other.plan() && other.plan()->supports);
   EXPECT_EQ(other.viewer()->supportSetsShown(), nonEmptySets(*run.supports, static_cast<int>(run.supports->size())));
   EXPECT_TRUE(other.planPanel()->findChild<QCheckBox*>(QStringLiteral("showSupports"))->isEnabled());

@@ -3,7 +3,6 @@
 
 #include <QImage>
 #include <algorithm>
-#include <QSignalSpy>
 #include <QTest>
 #include <QWheelEvent>
 
@@ -11,23 +10,13 @@
 #include "support/test_models.h"
 #include "ui/main_window.h"
 #include "ui/picture_census.h"
-#include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
 
-constexpr int kLoadTimeoutMs = 120000;
-
-// Shows the default sample in a main window and waits until it is loaded and the window is on screen.
-void showDefaultSample(MainWindow& window) {
-  window.resize(1000, 760);
-  window.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-  QSignalSpy shown(&window, &MainWindow::modelShown);
-  startStudio(window, StudioOptions{});
-  ASSERT_TRUE(shown.wait(kLoadTimeoutMs)) << "the default sample did not load";
-}
+void showDefaultSample(MainWindow& window) { test::showDefaultSample(window, QSize(1000, 760)); }
 
 TEST(StudioViewer, EmptyViewShowsBackgroundButNoModel) {
   MeshViewerWidget viewer;

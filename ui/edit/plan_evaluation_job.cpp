@@ -6,35 +6,9 @@
 #include <new>
 
 #include "multidir/core/search/plan_from_planes.h"
-#include "multidir/core/supports/projected_supports.h"
-#include "ui/error_text.h"
+#include "ui/jobs/support_growth.h"
 
 namespace multidir::ui {
-namespace {
-
-// Supports for an accepted plan, as a search grows them; never throws (the plan is good whatever happens).
-void growSupports(const PlanEvaluationRequest& request, EvaluatedPlan& evaluated, core::JobContext& job) {
-  const core::Decomposition& plan = *evaluated.plan;
-  if (!(plan.jgAfterMm2 > 0.0)) return;
-  try {
-    core::Result<core::ProjectedSupports> result =
-        core::generateSupports(*request.model, plan, request.machine, core::SupportOptions{}, job);
-    if (result) {
-      evaluated.supports = std::make_shared<const std::vector<core::SupportSet>>(std::move(result->regions));
-    } else if (result.error().code != core::ErrorCode::Cancelled) {
-      evaluated.supportsNote =
-          PlanEvaluationJob::tr("The supports could not be grown: %1 (%2)")
-              .arg(errorHeadline(result.error().code), QString::fromStdString(result.error().describe()));
-    }
-  } catch (const std::bad_alloc&) {
-    evaluated.supportsNote =
-        PlanEvaluationJob::tr("Not enough memory to grow the supports: the plan is shown without them.");
-  } catch (...) {
-    evaluated.supportsNote = PlanEvaluationJob::tr("Unexpected error while growing the supports.");
-  }
-}
-
-}  // namespace
 
 // Written by the worker, read on the GUI thread after QThread::finished (which orders the two).
 struct PlanEvaluationJob::Outcome {
@@ -119,7 +93,10 @@ void PlanEvaluationJob::start(quint64 ticket, PlanEvaluationRequest request) {
       outcome->error = core::Error{core::ErrorCode::Internal, "rebuilding the plan failed", "plan"};
       return;
     }
-    growSupports(request, outcome->evaluated, supportsJob);
+    // The note growSupports leaves when cancelled is never shown: a cancelled evaluation's outcome is dropped.
+    GrownSupports grown = growSupports(*request.model, *outcome->evaluated.plan, request.machine, supportsJob);
+    outcome->evaluated.supports = std::move(grown.sets);
+    outcome->evaluated.supportsNote = grown.note;
   });
   connect(m_thread, &QThread::finished, this, &PlanEvaluationJob::finishRunning);
   m_thread->start();

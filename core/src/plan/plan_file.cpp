@@ -7,6 +7,7 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "plan/json_field.h"
 #include "plan/json_file.h"
+#include "plan/output_folder.h"
 #include "plan/plan_json.h"
 #include "plan/stl_image.h"
 #include "plan/supports_json.h"
@@ -67,17 +68,6 @@ Result<std::string> checkedPlanText(const Decomposition& onDisk, const PlanMetad
     return invalid("it would not load back: " + e.error().describe());
   }
   return text;
-}
-
-Status makeFolder(const fs::path& folder) {
-  const std::string name = folder.string();
-  std::error_code ec;
-  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
-    return Error{ErrorCode::WriteFailed, "a file of this name exists, so the plan folder cannot be created there",
-                 name};
-  fs::create_directories(folder, ec);
-  if (ec) return Error{ErrorCode::WriteFailed, "cannot create the plan folder: " + ec.message(), name};
-  return Done{};
 }
 
 // A binary STL of n triangles has 84 + 50 n bytes; the supports' own mesh comes from plan.json, so the file
@@ -159,7 +149,7 @@ Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const s
     const Result<std::string> text = checkedPlanText(*onDisk, metadata, supports);
     if (!text) return text.error();
     const fs::path folder(directory);
-    if (Status made = makeFolder(folder); !made) return made;
+    if (Status made = detail::makeOutputFolder(folder, "plan folder"); !made) return made;
     for (std::size_t i = 0; i < onDisk->regions.size(); ++i)
       if (Status saved = saveMesh(onDisk->regions[i].mesh, (folder / detail::regionFileName(i)).string()); !saved)
         return saved;

@@ -12,6 +12,7 @@
 #include "multidir/core/common/units.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "plan/json_file.h"
+#include "plan/output_folder.h"
 #include "plan/settings_json.h"
 
 namespace multidir::core {
@@ -187,17 +188,6 @@ std::string printJobText(const PrintJob& job) {
   return document.dump(2) + "\n";
 }
 
-Status makeFolder(const fs::path& folder) {
-  const std::string name = folder.string();
-  std::error_code ec;
-  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
-    return Error{ErrorCode::WriteFailed, "a file of this name exists, so the print job folder cannot be created there",
-                 name};
-  fs::create_directories(folder, ec);
-  if (ec) return Error{ErrorCode::WriteFailed, "cannot create the print job folder: " + ec.message(), name};
-  return Done{};
-}
-
 // A file name the job may write: inside the folder, with the job's extension.
 bool isStepFileName(const std::string& name, const std::string& format) {
   const std::string extension = "." + format;
@@ -296,7 +286,7 @@ Status writePrintJob(const PrintJob& job, const std::string& directory) {
   try {
     const std::string text = printJobText(job);
     const fs::path folder(directory);
-    if (Status made = makeFolder(folder); !made) return made;
+    if (Status made = detail::makeOutputFolder(folder, "print job folder"); !made) return made;
     std::error_code ec;
     fs::remove(folder / kPrintJobFileName, ec);
     if (ec)
