@@ -34,6 +34,13 @@ void MainWindow::buildPlanEditing() {
     if (!isSearching()) m_searchPanel->searchFinished(*run.plan);
   });
   connect(m_planEditor, &PlanEditor::selectionChanged, m_viewer, &MeshViewerWidget::setSelectedPlane);
+  // A click on a plane's disc in the view selects it; a disc of a plane the editor does not have (the view
+  // still shows the plan before a deletion) changes nothing.
+  connect(m_viewer, &MeshViewerWidget::clippingPlaneClicked, m_planEditor, [this](int plane) {
+    if (plane >= 0 && static_cast<std::size_t>(plane) < m_planEditor->state().planes.size()) {
+      m_planEditor->selectPlane(plane);
+    }
+  });
   // A refusal is also said in the status bar, and taken back from there once an edit is accepted.
   connect(m_planEditor, &PlanEditor::refusalChanged, this,
           [this, said = QString()](const QString& message, const QString& detail) mutable {

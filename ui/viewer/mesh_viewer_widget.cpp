@@ -164,7 +164,7 @@ struct MeshViewerWidget::Impl {
   std::unique_ptr<PlanScene> plan;
   std::unique_ptr<SupportScene> supports;
   bool picking = false;
-  std::optional<QPointF> pickPress;  // where a left button went down while picking, until it moved away
+  std::optional<QPointF> clickPress;  // where the left button went down, until it moved away: a click
   std::vector<vtkSmartPointer<vtkActor>> pickMarkers;
   bool turnWithMachine = false;
   core::Vec3 viewUp = core::Vec3::UnitZ();
@@ -428,7 +428,7 @@ PlatformDisc MeshViewerWidget::platform() const { return m_impl->platform; }
 void MeshViewerWidget::setPlatformPicking(bool on) {
   Impl& m = *m_impl;
   m.picking = on;
-  m.pickPress.reset();
+  m.clickPress.reset();
   if (on) {
     setCursor(Qt::CrossCursor);
   } else {
@@ -588,6 +588,12 @@ int MeshViewerWidget::selectedPlane() const { return m_impl->plan->selectedPlane
 
 bool MeshViewerWidget::selectedPlaneShown() const { return m_impl->plan->selectedPlaneShown(); }
 
+int MeshViewerWidget::clippingPlaneAt(const QPointF& position) const {
+  // VTK's display coordinates: device pixels, origin bottom left (as setMouseInformation hands clicks over).
+  const qreal ratio = devicePixelRatioF();
+  return m_impl->plan->planeAt(position.x() * ratio, m_impl->window->GetSize()[1] - 1 - position.y() * ratio);
+}
+
 void MeshViewerWidget::setExplodeDistance(double distanceMm) {
   m_impl->plan->setExplodeDistance(distanceMm);
   placeSupports();
@@ -734,7 +740,7 @@ unsigned long releaseEventFor(Qt::MouseButton button) {
 }  // namespace
 
 void MeshViewerWidget::mousePressEvent(QMouseEvent* event) {
-  if (m_impl->picking && event->button() == Qt::LeftButton) m_impl->pickPress = event->position();
+  if (event->button() == Qt::LeftButton) m_impl->clickPress = event->position();
   const unsigned long id = pressEventFor(event->button());
   if (id == vtkCommand::NoEvent) return QOpenGLWidget::mousePressEvent(event);
   setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
@@ -744,8 +750,8 @@ void MeshViewerWidget::mousePressEvent(QMouseEvent* event) {
 }
 
 void MeshViewerWidget::mouseDoubleClickEvent(QMouseEvent* event) {
-  // Two quick clicks while picking are two picks: the second press arrives as this event.
-  if (m_impl->picking && event->button() == Qt::LeftButton) m_impl->pickPress = event->position();
+  // Two quick clicks are two clicks (two picks): the second press arrives as this event.
+  if (event->button() == Qt::LeftButton) m_impl->clickPress = event->position();
   const unsigned long id = pressEventFor(event->button());
   if (id == vtkCommand::NoEvent) return QOpenGLWidget::mouseDoubleClickEvent(event);
   setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 1);
@@ -761,22 +767,26 @@ void MeshViewerWidget::mouseReleaseEvent(QMouseEvent* event) {
   m_impl->interactor->InvokeEvent(id);
   event->accept();
   update();
-  // A click without movement picks; the view has not turned, so the point is where the cursor shows it.
-  if (m_impl->picking && event->button() == Qt::LeftButton && m_impl->pickPress) {
-    m_impl->pickPress.reset();
+  // A click without movement picks; the view has not turned, so what is picked is what the cursor shows.
+  if (event->button() != Qt::LeftButton || !m_impl->clickPress) return;
+  m_impl->clickPress.reset();
+  if (m_impl->picking) {
     const PlatformHit hit = platformHitAt(event->position());
     if (hit.kind == PlatformHitKind::Hit) {
       emit platformPointPicked(hit.point);
     } else {
       emit platformPickMissed(hit.kind);
     }
+  } else if (m_impl->plan->planesVisible()) {
+    const int plane = clippingPlaneAt(event->position());
+    if (plane >= 0) emit clippingPlaneClicked(plane);
   }
 }
 
 void MeshViewerWidget::mouseMoveEvent(QMouseEvent* event) {
-  if (m_impl->pickPress) {
-    const QPointF moved = event->position() - *m_impl->pickPress;
-    if (std::abs(moved.x()) + std::abs(moved.y()) > kClickSlopPixels) m_impl->pickPress.reset();  // a drag
+  if (m_impl->clickPress) {
+    const QPointF moved = event->position() - *m_impl->clickPress;
+    if (std::abs(moved.x()) + std::abs(moved.y()) > kClickSlopPixels) m_impl->clickPress.reset();  // a drag
   }
   setMouseInformation(m_impl->interactor, this, event->position(), event->modifiers(), 0);
   m_impl->interactor->InvokeEvent(vtkCommand::MouseMoveEvent);

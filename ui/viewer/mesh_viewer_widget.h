@@ -91,6 +91,10 @@ class MeshViewerWidget : public QOpenGLWidget {
   [[nodiscard]] int selectedPlane() const;
   // The selected plane's disc is drawn now (false when it left no cut to draw).
   [[nodiscard]] bool selectedPlaneShown() const;
+  // The clipping plane whose disc is drawn under `position` (widget coordinates, logical pixels), the disc
+  // nearest the camera where several overlap; -1 when no disc is drawn there. Regions do not hide a disc
+  // (every disc lies inside the part it cut). A click there emits clippingPlaneClicked.
+  [[nodiscard]] int clippingPlaneAt(const QPointF& position) const;
   // Exploded view: regions moved apart along their printing directions by `distanceMm` per level.
   void setExplodeDistance(double distanceMm);
   // Sequence stepper: regions 1..count are shown (clamped to the plan's regions).
@@ -124,6 +128,10 @@ class MeshViewerWidget : public QOpenGLWidget {
   void platformPickMissed(multidir::ui::PlatformHitKind reason);
   // Platform picking ended by Esc, a new model or clear().
   void platformPickCancelled();
+  // Outside platform picking, with the clipping planes shown: a left click without movement on the disc of
+  // clipping plane `plane` (0-based, clipping order; the disc nearest the camera where several overlap).
+  // A click on no disc emits nothing.
+  void clippingPlaneClicked(int plane);
 
  protected:
   void initializeGL() override;

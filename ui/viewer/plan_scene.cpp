@@ -5,6 +5,7 @@
 
 #include <vtkActor.h>
 #include <vtkArrowSource.h>
+#include <vtkCellPicker.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -83,7 +84,6 @@ vtkSmartPointer<vtkActor> discActor(const PlaneDisc& disc) {
   property->SetAmbient(0.5);
   property->SetDiffuse(0.5);
   property->BackfaceCullingOff();
-  actor->PickableOff();
   return actor;
 }
 
@@ -221,6 +221,25 @@ bool PlanScene::selectedPlaneShown() const {
   if (m_selectedPlane < 0 || static_cast<std::size_t>(m_selectedPlane) >= m_outlines.size()) return false;
   const vtkSmartPointer<vtkActor>& outline = m_outlines[static_cast<std::size_t>(m_selectedPlane)];
   return outline && outline->GetVisibility() != 0;
+}
+
+int PlanScene::planeAt(double x, double y) const {
+  // A ray cast against the disc actors only (their placement included), done on the CPU: no GL context is
+  // needed, unlike the hardware pickers.
+  vtkNew<vtkCellPicker> picker;
+  picker->PickFromListOn();
+  bool anyShown = false;
+  for (const vtkSmartPointer<vtkActor>& disc : m_discs) {
+    if (!disc || disc->GetVisibility() == 0) continue;
+    picker->AddPickList(disc);
+    anyShown = true;
+  }
+  if (!anyShown || picker->Pick(x, y, 0.0, m_renderer) == 0) return -1;
+  const vtkActor* hit = picker->GetActor();
+  for (std::size_t k = 0; k < m_discs.size(); ++k) {
+    if (m_discs[k] && m_discs[k].GetPointer() == hit) return static_cast<int>(k);
+  }
+  return -1;
 }
 
 void PlanScene::applyPlacement() {

@@ -38,6 +38,7 @@ class PlanScene {
 
   void setDirectionsVisible(bool visible);
   void setPlanesVisible(bool visible);
+  [[nodiscard]] bool planesVisible() const { return m_planesVisible; }
   // Moves regions apart along their printing directions (see explodeOffsets).
   void setExplodeDistance(double distanceMm);
   // Shows regions 1..count (clamped to [1, regionCount()]), with their arrows and base discs.
@@ -50,6 +51,10 @@ class PlanScene {
   [[nodiscard]] int selectedPlane() const { return m_selectedPlane; }
   // The selected plane's outline is drawn now.
   [[nodiscard]] bool selectedPlaneShown() const;
+  // The clipping plane whose disc is drawn at display point (x, y) (VTK's display pixels, origin bottom
+  // left), the disc nearest the camera where several overlap; -1 when no disc drawn now is there. Regions
+  // do not hide a disc: every disc lies inside the part it cut.
+  [[nodiscard]] int planeAt(double x, double y) const;
 
  private:
   void applyVisibility();
