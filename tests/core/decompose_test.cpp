@@ -32,12 +32,6 @@ Decomposition run(const TriangleMesh& model, const MachineSpec& machine, const S
   return std::move(result).value();
 }
 
-TriangleMesh loadShared(const std::string& name) {
-  auto loaded = loadMesh(multidir::test::sharedModelPath(name));
-  if (!loaded.ok()) throw std::runtime_error(loaded.error().describe());
-  return loaded->mesh;
-}
-
 MachineSpec machineWithUp(const Vec3& up, MachineKind kind = MachineKind::TiltRotate) {
   MachineSpec machine;
   machine.kind = kind;
@@ -98,11 +92,11 @@ TEST(Decompose, NoClippingPlaneCutsThePlatformRegion) {
 TEST(Decompose, ReportedJgEqualsTheRiskyAreaOfTheRegionMeshes) {
   const SearchOptions options;
   for (const char* name : {"kitten.off", "bunny.off"}) {
-    const Decomposition plan = run(loadShared(name), machineWithUp(Vec3::UnitY()), options);
+    const Decomposition plan = run(multidir::test::loadSharedModel(name), machineWithUp(Vec3::UnitY()), options);
     EXPECT_NEAR(recomputedJg(plan, options), plan.jgAfterMm2, 1e-6 * plan.jgBeforeMm2 + 1e-9) << name;
     double volume = 0;
     for (const Region& region : plan.regions) volume += region.volumeMm3;
-    EXPECT_NEAR(volume, signedVolume(loadShared(name)), 1e-9 * volume) << name;
+    EXPECT_NEAR(volume, signedVolume(multidir::test::loadSharedModel(name)), 1e-9 * volume) << name;
   }
 }
 
@@ -110,7 +104,7 @@ TEST(Decompose, BeamSearchIsNeverWorseThanEitherGreedyScheme) {
   std::vector<std::pair<TriangleMesh, Vec3>> models = {{makeTBar(10, 30, 80, 10, 10), Vec3::UnitZ()},
                                                       {makeHook(10), Vec3::UnitZ()}};
   for (const samples::SampleInfo& sample : samples::catalogue()) models.push_back({*samples::makeSample(sample.id), Vec3::UnitZ()});
-  for (const char* name : {"kitten.off", "3holes.off"}) models.push_back({loadShared(name), Vec3::UnitY()});
+  for (const char* name : {"kitten.off", "3holes.off"}) models.push_back({multidir::test::loadSharedModel(name), Vec3::UnitY()});
   for (const auto& [model, up] : models) {
     const MachineSpec machine = machineWithUp(up);
     const double beam = run(model, machine, optionsFor(SearchScheme::Beam)).jgAfterMm2;
@@ -122,13 +116,13 @@ TEST(Decompose, BeamSearchIsNeverWorseThanEitherGreedyScheme) {
 TEST(Decompose, DefaultBeamSearchLeavesNoMoreOfJgThanThePaperOnKittenAndBunny) {
   // The paper's shares (5-DOF, beam 10, alpha 45): kitten <= 1 %, bunny <= 3.5 % of J_G before.
   for (const auto& [name, share] : {std::pair<const char*, double>{"kitten.off", 0.01}, {"bunny.off", 0.035}}) {
-    const Decomposition plan = run(loadShared(name), machineWithUp(Vec3::UnitY()), SearchOptions{});
+    const Decomposition plan = run(multidir::test::loadSharedModel(name), machineWithUp(Vec3::UnitY()), SearchOptions{});
     EXPECT_LE(plan.jgAfterMm2, share * plan.jgBeforeMm2) << name;
   }
 }
 
 TEST(Decompose, OneAndTwoThreadsGiveTheSamePlan) {
-  const TriangleMesh kitten = loadShared("kitten.off");
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
   SearchOptions one, two;
   one.threads = 1;
   two.threads = 2;
@@ -145,7 +139,7 @@ TEST(Decompose, OneAndTwoThreadsGiveTheSamePlan) {
 TEST(Decompose, RotaryPlatformPlansUseOnlyRealizableDirections) {
   const MachineSpec machine = machineWithUp(Vec3::UnitY(), MachineKind::RotaryPlatform);
   JobContext job;
-  auto result = decomposeWithAxisSearch(loadShared("kitten.off"), machine, SearchOptions{}, 6, job);
+  auto result = decomposeWithAxisSearch(multidir::test::loadSharedModel("kitten.off"), machine, SearchOptions{}, 6, job);
   ASSERT_TRUE(result.ok()) << result.error().describe();
   MachineSpec used = machine;
   used.rotationAxis = result->rotationAxis;
@@ -160,7 +154,7 @@ TEST(Decompose, RotaryPlatformPlansUseOnlyRealizableDirections) {
 TEST(Decompose, CancelReturnsTheBestPlanFoundSoFar) {
   JobContext job;
   int reports = 0;
-  auto result = decompose(loadShared("kitten.off"), machineWithUp(Vec3::UnitY()), SearchOptions{}, job,
+  auto result = decompose(multidir::test::loadSharedModel("kitten.off"), machineWithUp(Vec3::UnitY()), SearchOptions{}, job,
                           [&](const SearchProgress&) {
                             ++reports;
                             job.cancel();

@@ -15,12 +15,6 @@ using multidir::test::makeTBar;
 
 namespace {
 
-TriangleMesh loadShared(const std::string& name) {
-  auto loaded = loadMesh(multidir::test::sharedModelPath(name));
-  if (!loaded.ok()) throw std::runtime_error(loaded.error().describe());
-  return loaded->mesh;
-}
-
 // The T-bar's platform region as a disc of radius 4.9 mm: planes at |x| = 5 along the stem's sides clear it.
 MachineSpec narrowPlatform() {
   MachineSpec machine;
@@ -37,7 +31,7 @@ MachineSpec machineWithUp(const Vec3& up) {
 }  // namespace
 
 TEST(PlanFromPlanes, ThePlanesOfASearchedPlanGiveTheSamePlan) {
-  const TriangleMesh kitten = loadShared("kitten.off");
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
   const MachineSpec machine = machineWithUp(Vec3::UnitY());
   const SearchOptions options;
   JobContext job;

@@ -22,12 +22,6 @@ using multidir::test::makeTBar;
 
 namespace {
 
-TriangleMesh loadShared(const std::string& name) {
-  auto loaded = loadMesh(multidir::test::sharedModelPath(name));
-  if (!loaded.ok()) throw std::runtime_error(loaded.error().describe());
-  return loaded->mesh;
-}
-
 TriangleMesh translated(TriangleMesh mesh, const Vec3& by) {
   for (Vec3& v : mesh.vertices) v += by;
   return mesh;
@@ -57,7 +51,7 @@ struct KittenPlan {
 const KittenPlan& kittenPlan() {
   static const KittenPlan result = [] {
     KittenPlan k;
-    k.model = loadShared("kitten.off");
+    k.model = multidir::test::loadSharedModel("kitten.off");
     k.machine = machineWithUp(Vec3::UnitY());
     SearchOptions search;
     search.beamWidth = 2;
@@ -311,7 +305,7 @@ TEST(SupportReport, MultiDirectionNeedsLessSupportOnKittenAndFertility) {
     SearchOptions search;
     search.beamWidth = 2;
     JobContext job;
-    const auto report = supportReport(loadShared(name), machineWithUp(Vec3::UnitY()), search, {}, job);
+    const auto report = supportReport(multidir::test::loadSharedModel(name), machineWithUp(Vec3::UnitY()), search, {}, job);
     ASSERT_TRUE(report.ok()) << name << ": " << report.error().describe();
     EXPECT_GT(report->fixedVolumeMm3, 0.0) << name;
     EXPECT_LT(report->multiVolumeMm3, report->fixedVolumeMm3) << name;

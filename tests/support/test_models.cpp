@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "multidir/core/mesh/mesh_io.h"
+
 namespace multidir::test {
 
 std::string sharedModelPath(const std::string& name) {
@@ -25,6 +27,12 @@ std::string scratchDirectory(const std::string& testName) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
+}
+
+core::TriangleMesh loadSharedModel(const std::string& name) {
+  auto loaded = core::loadMesh(sharedModelPath(name));
+  if (!loaded.ok()) throw std::runtime_error(loaded.error().describe());
+  return loaded->mesh;
 }
 
 }  // namespace multidir::test
