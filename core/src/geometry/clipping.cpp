@@ -5,7 +5,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "cross_section_cap.h"
+#include "geometry/cross_section_cap.h"
 #include "detail/mesh_indices.h"
 #include "detail/union_find.h"
 #include "multidir/core/mesh/mesh_measure.h"

@@ -1,4 +1,4 @@
-#include "cross_section_cap.h"
+#include "geometry/cross_section_cap.h"
 
 #include <algorithm>
 #include <cmath>

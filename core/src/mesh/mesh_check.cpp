@@ -11,8 +11,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "mesh_formats.h"
-#include "mesh_shells.h"
+#include "mesh/mesh_formats.h"
+#include "mesh/mesh_shells.h"
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::core {

@@ -6,7 +6,7 @@
 #include <new>
 #include <sstream>
 
-#include "mesh_formats.h"
+#include "mesh/mesh_formats.h"
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::core {

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "detail/atomic_file.h"
-#include "mesh_formats.h"
+#include "mesh/mesh_formats.h"
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::core {

@@ -1,4 +1,4 @@
-#include "mesh_shells.h"
+#include "mesh/mesh_shells.h"
 
 #include <cmath>
 #include <unordered_map>

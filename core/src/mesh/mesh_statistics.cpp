@@ -1,6 +1,6 @@
 #include <algorithm>
 
-#include "mesh_shells.h"
+#include "mesh/mesh_shells.h"
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::core {

@@ -2,7 +2,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "mesh_formats.h"
+#include "mesh/mesh_formats.h"
 
 namespace multidir::core::detail {
 

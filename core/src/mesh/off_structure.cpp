@@ -5,7 +5,7 @@
 #include <ostream>
 #include <vector>
 
-#include "mesh_formats.h"
+#include "mesh/mesh_formats.h"
 
 namespace multidir::core::detail {
 namespace {

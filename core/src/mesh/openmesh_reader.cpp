@@ -5,7 +5,7 @@
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
-#include "mesh_formats.h"
+#include "mesh/mesh_formats.h"
 
 namespace multidir::core::detail {
 namespace {

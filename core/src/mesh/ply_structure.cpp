@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "mesh_formats.h"
+#include "mesh/mesh_formats.h"
 
 namespace multidir::core::detail {
 namespace {
