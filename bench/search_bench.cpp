@@ -3,6 +3,8 @@
 //
 //   multidir_search_bench [--models kitten,bunny,...] [--machine 5dof|4dof] [--axes N] [--threads N]
 //                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--refine ROUNDS]
+//                         [--min-region-height MM] [--min-plane-gain PERCENT]
+// The default runs all nine shared models. J_G is the one definition of docs/jg-definition.md.
 // Up is +Y for every shared model. Peak memory is the process's maximum resident set so far.
 #include <sys/resource.h>
 
@@ -12,7 +14,11 @@
 #include <string>
 #include <vector>
 
+#include <algorithm>
+#include <filesystem>
+
 #include "multidir/core/mesh/mesh_io.h"
+#include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
 
 using namespace multidir::core;
@@ -35,7 +41,8 @@ std::vector<std::string> split(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> models = {"kitten", "bunny", "fertility", "3holes"};
+  std::vector<std::string> models = {"kitten", "bunny",  "fertility", "3holes",     "cheburashka",
+                                     "knight", "fandisk", "bumpy",     "screwdriver"};
   MachineSpec machine;
   machine.up = Vec3::UnitY();
   SearchOptions options;
@@ -54,6 +61,8 @@ int main(int argc, char** argv) {
     else if (flag == "--diversity-cosine") options.diversityCosine = std::atof(value.c_str());
     else if (flag == "--normals") options.candidates.normalSamples = std::atoi(value.c_str());
     else if (flag == "--refine") options.refinementRounds = std::atoi(value.c_str());
+    else if (flag == "--min-region-height") options.minRegionHeightMm = std::atof(value.c_str());
+    else if (flag == "--min-plane-gain") options.minPlaneGainPercent = std::atof(value.c_str());
     else if (flag == "--verbose") verbose = value == "1";
     else {
       std::fprintf(stderr, "unknown option %s\n", flag.c_str());
@@ -67,8 +76,9 @@ int main(int argc, char** argv) {
               machineKindName(machine.kind), schemeName(options.scheme), options.beamWidth, options.alphaMaxDegrees,
               options.candidates.normalSamples, options.refinementRounds, options.candidates.offsetStepMm, options.minVolumeDivisor,
               axes ? (", axis search over " + std::to_string(axes) + " axes").c_str() : "");
-  std::printf("%-12s %9s %11s %9s %9s %7s %12s %12s %8s\n", "model", "triangles", "candidates", "seconds", "peak MiB",
-              "regions", "J_G before", "J_G after", "after %");
+  std::printf("%-12s %9s %11s %9s %9s %7s %12s %12s %8s %6s\n", "model", "triangles", "candidates", "seconds", "peak MiB",
+              "regions", "J_G before", "J_G after", "after %", "saved");
+  std::vector<double> shares;
   for (const std::string& name : models) {
     const auto loaded = loadMesh(std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + name + ".off");
     if (!loaded.ok()) {
@@ -86,9 +96,20 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s: %s\n", name.c_str(), plan.error().describe().c_str());
       return 1;
     }
-    std::printf("%-12s %9zu %11d %9.2f %9.1f %7zu %12.2f %12.2f %8.2f\n", name.c_str(), loaded->mesh.faceCount(),
+    // Every plan must save: written to a scratch folder and removed again.
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("multidir-bench-" + name);
+    PlanMetadata metadata;
+    metadata.machine = machine;
+    metadata.up = machine.up;
+    metadata.options = options;
+    const Status saved = savePlan(*plan, metadata, folder.string());
+    std::filesystem::remove_all(folder);
+    const double share = 100.0 * plan->jgAfterMm2 / plan->jgBeforeMm2;
+    shares.push_back(share);
+    std::printf("%-12s %9zu %11d %9.2f %9.1f %7zu %12.2f %12.2f %8.2f %6s\n", name.c_str(), loaded->mesh.faceCount(),
                 plan->statistics.candidatesPerLevel, plan->statistics.seconds, peakMemoryMiB(), plan->regions.size(),
-                plan->jgBeforeMm2, plan->jgAfterMm2, 100.0 * plan->jgAfterMm2 / plan->jgBeforeMm2);
+                plan->jgBeforeMm2, plan->jgAfterMm2, share, saved.ok() ? "yes" : "NO");
+    if (!saved.ok()) std::printf("    not saved: %s\n", saved.error().describe().c_str());
     if (verbose)
       for (std::size_t r = 0; r < plan->regions.size(); ++r) {
         const Region& region = plan->regions[r];
@@ -97,6 +118,12 @@ int main(int argc, char** argv) {
                     region.angles.tiltDegrees, region.volumeMm3, region.riskyAreaMm2);
       }
     std::fflush(stdout);
+  }
+  if (!shares.empty()) {
+    std::sort(shares.begin(), shares.end());
+    const std::size_t n = shares.size();
+    const double median = n % 2 ? shares[n / 2] : 0.5 * (shares[n / 2 - 1] + shares[n / 2]);
+    std::printf("median after/before %.2f %%, worst %.2f %%\n", median, shares.back());
   }
   return 0;
 }

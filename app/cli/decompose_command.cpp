@@ -43,6 +43,13 @@ const char* const kDecomposeHelp =
     "                       (default: 3)\n"
     "  --offset-step MM     spacing of candidate planes along a normal, 0.01 to 1000 (default: 1)\n"
     "  --w W                every region keeps at least 1/W of the model's volume, 1 to 1000 (default: 10)\n"
+    "  --min-region-height MM\n"
+    "                       no region is thinner than this along its printing direction (default: 2)\n"
+    "  --min-plane-gain PERCENT\n"
+    "                       a plane stays only if removing it would raise J_G by at least this share of\n"
+    "                       J_G before (default: 1) ...\n"
+    "  --min-plane-gain-area MM2\n"
+    "                       ... and by at least this area (default: 1)\n"
     "  --threads N          worker threads, 0 = all (default: 0)\n"
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
     "  --no-supports        do not generate supports\n"
@@ -145,6 +152,12 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
   apply("--offset-step",
         [&](const std::string& t) { options.candidates.offsetStepMm = parseNumber(t, "--offset-step"); });
   apply("--w", [&](const std::string& t) { options.minVolumeDivisor = parseNumber(t, "--w"); });
+  apply("--min-region-height",
+        [&](const std::string& t) { options.minRegionHeightMm = parseNumber(t, "--min-region-height"); });
+  apply("--min-plane-gain",
+        [&](const std::string& t) { options.minPlaneGainPercent = parseNumber(t, "--min-plane-gain"); });
+  apply("--min-plane-gain-area",
+        [&](const std::string& t) { options.minPlaneGainMm2 = parseNumber(t, "--min-plane-gain-area"); });
   apply("--threads", [&](const std::string& t) { options.threads = parseInteger(t, "--threads"); });
   return options;
 }
@@ -153,7 +166,8 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   const ParsedArgs parsed =
       parseArgs(args,
                 {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
-                 "--refine", "--offset-step", "--w", "--threads", "--profile", "-o", "--summary", "--support-spacing"},
+                 "--refine", "--offset-step", "--w", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
+                 "--threads", "--profile", "-o", "--summary", "--support-spacing"},
                 {"--help", "--no-supports"}, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;

@@ -96,6 +96,24 @@ TEST(CliDecompose, KittenSummaryHasTheSearchNumbers) {
   EXPECT_NE(s["model"].get<std::string>().find("kitten.off"), std::string::npos);
 }
 
+TEST(CliDecompose, PlanJsonSummaryAndReportAgreeOnJg) {
+  // One definition of J_G (docs/jg-definition.md): every output of the same search shows the same number.
+  const KittenRun& k = kittenRun();
+  ASSERT_EQ(k.run.exitCode, 0) << k.run.err;
+  const nlohmann::json plan = nlohmann::json::parse(readAll(k.dir + "/plan/plan.json"));
+  const double planJg = plan["result"]["jgAfterMm2"].get<double>();
+  EXPECT_NEAR(k.summary["jg_after"].get<double>(), planJg, 1e-9 * std::max(1.0, planJg));
+  double regions = 0;
+  for (const nlohmann::json& region : plan["regions"]) regions += region["riskyAreaMm2"].get<double>();
+  EXPECT_NEAR(regions, planJg, 1e-6 * std::max(1.0, planJg));
+  const CliRun report =
+      runCli("report " + kitten() + " --up y --beam-width 2 --json '" + k.dir + "/report.json'", k.dir);
+  ASSERT_EQ(report.exitCode, 0) << report.err;
+  const nlohmann::json rows = nlohmann::json::parse(readAll(k.dir + "/report.json"));
+  EXPECT_NEAR(rows[0]["jg_after"].get<double>(), planJg, 1e-9 * std::max(1.0, planJg));
+  EXPECT_NEAR(rows[0]["jg_before"].get<double>(), k.summary["jg_before"].get<double>(), 1e-9);
+}
+
 TEST(CliDecompose, KittenPlanLoadsBackWithTheModelChecksum) {
   const KittenRun& k = kittenRun();
   ASSERT_EQ(k.run.exitCode, 0) << k.run.err;

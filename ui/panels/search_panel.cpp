@@ -66,6 +66,22 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   m_alpha->setSuffix(tr("°"));
   m_alpha->setValue(defaults.alphaMaxDegrees);
   m_alpha->setToolTip(tr("Maximal self-supporting angle the search plans for"));
+  m_minRegionHeight = new QDoubleSpinBox(this);
+  m_minRegionHeight->setObjectName(QStringLiteral("minRegionHeight"));
+  m_minRegionHeight->setRange(0.0, 1000.0);
+  m_minRegionHeight->setDecimals(1);
+  m_minRegionHeight->setSuffix(tr(" mm"));
+  m_minRegionHeight->setValue(defaults.minRegionHeightMm);
+  m_minRegionHeight->setToolTip(tr("No region, the one on the platform included, is thinner than this along its "
+                                   "printing direction"));
+  m_minPlaneGain = new QDoubleSpinBox(this);
+  m_minPlaneGain->setObjectName(QStringLiteral("minPlaneGain"));
+  m_minPlaneGain->setRange(0.0, 100.0);
+  m_minPlaneGain->setDecimals(1);
+  m_minPlaneGain->setSuffix(tr(" % of J_G"));
+  m_minPlaneGain->setValue(defaults.minPlaneGainPercent);
+  m_minPlaneGain->setToolTip(tr("A plane stays only if removing it would raise J_G by at least this share of J_G "
+                                "before (and by at least 1 mm²): each region costs a platform move and a seam"));
   m_axisCount = new QSpinBox(this);
   m_axisCount->setObjectName(QStringLiteral("axisCount"));
   m_axisCount->setRange(0, 180);
@@ -80,6 +96,8 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   form->addRow(tr("Normals:"), m_normals);
   form->addRow(tr("Offset step:"), m_offsetStep);
   form->addRow(tr("Max. overhang angle α:"), m_alpha);
+  form->addRow(tr("Min. region height:"), m_minRegionHeight);
+  form->addRow(tr("Min. gain per plane:"), m_minPlaneGain);
   m_axisCountLabel = new QLabel(tr("Axes to try:"), this);
   form->addRow(m_axisCountLabel, m_axisCount);
 
@@ -97,7 +115,7 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::settingsChanged);
   for (QSpinBox* box : {m_beamWidth, m_normals, m_axisCount})
     connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
-  for (QDoubleSpinBox* box : {m_minVolumeDivisor, m_offsetStep, m_alpha})
+  for (QDoubleSpinBox* box : {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain})
     connect(box, &QDoubleSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
 
   m_progress = new QProgressBar(this);
@@ -149,6 +167,8 @@ core::SearchOptions SearchPanel::searchOptions() const {
   options.candidates.normalSamples = m_normals->value();
   options.candidates.offsetStepMm = m_offsetStep->value();
   options.alphaMaxDegrees = m_alpha->value();
+  options.minRegionHeightMm = m_minRegionHeight->value();
+  options.minPlaneGainPercent = m_minPlaneGain->value();
   return options;
 }
 
@@ -162,6 +182,8 @@ void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
   m_normals->setValue(options.candidates.normalSamples);
   m_offsetStep->setValue(options.candidates.offsetStepMm);
   m_alpha->setValue(options.alphaMaxDegrees);
+  m_minRegionHeight->setValue(options.minRegionHeightMm);
+  m_minPlaneGain->setValue(options.minPlaneGainPercent);
   emit settingsChanged();  // also when only options the panel does not show changed
 }
 
@@ -186,7 +208,7 @@ void SearchPanel::setRunning(bool running) {
   m_run->setEnabled(m_runnable && !running);
   m_cancel->setEnabled(running);
   for (QWidget* w : std::initializer_list<QWidget*>{m_scheme, m_beamWidth, m_minVolumeDivisor, m_normals,
-                                                    m_offsetStep, m_alpha}) {
+                                                    m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain}) {
     w->setEnabled(!running);
   }
 }

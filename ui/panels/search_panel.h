@@ -67,6 +67,8 @@ class SearchPanel : public QWidget {
   QSpinBox* m_normals = nullptr;
   QDoubleSpinBox* m_offsetStep = nullptr;
   QDoubleSpinBox* m_alpha = nullptr;
+  QDoubleSpinBox* m_minRegionHeight = nullptr;
+  QDoubleSpinBox* m_minPlaneGain = nullptr;
   QSpinBox* m_axisCount = nullptr;
   QLabel* m_axisCountLabel = nullptr;
   QPushButton* m_run = nullptr;

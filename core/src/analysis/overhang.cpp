@@ -32,6 +32,12 @@ double triangleAreaAbove(std::array<double, 3> heights, double area, double leve
   return area * (hc - level) * (hc - level) / ((hc - ha) * (hc - hb));
 }
 
+double inPlaneToleranceMm(const TriangleMesh& mesh) {
+  double largest = 1.0;
+  for (const Vec3& v : mesh.vertices) largest = std::max(largest, v.cwiseAbs().maxCoeff());
+  return 1e-5 * largest;
+}
+
 Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& printingDirection,
                                          const OverhangOptions& options) {
   if (Status s = validate(options); !s) return s.error();
@@ -50,13 +56,22 @@ Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& p
     for (std::int32_t v : t) lowest = std::min(lowest, d.dot(mesh.vertices[v]));
   out.platformHeightMm = mesh.triangles.empty() ? 0.0 : lowest;
 
+  const bool onPlatform = options.base == RegionBase::Platform;
+  const double inPlane = onPlatform ? 0.0 : inPlaneToleranceMm(mesh);
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Vec3 areaNormal = mesh.areaNormal(f);
     const double doubleArea = areaNormal.norm();
     if (doubleArea <= 0.0) continue;
     if (areaNormal.dot(d) / doubleArea + sinAlpha >= 0.0) continue;
-    const double counted = triangleAreaAbove({d.dot(mesh.corner(f, 0)), d.dot(mesh.corner(f, 1)), d.dot(mesh.corner(f, 2))},
-                                             0.5 * doubleArea, lowest + options.supportedBandMm);
+    const std::array<double, 3> heights = {d.dot(mesh.corner(f, 0)), d.dot(mesh.corner(f, 1)), d.dot(mesh.corner(f, 2))};
+    double counted = 0.0;
+    if (onPlatform) {
+      counted = triangleAreaAbove(heights, 0.5 * doubleArea, lowest + options.supportedBandMm);
+    } else {
+      // The cap rests on the cap of the material below; nothing else above a cut plane is held up.
+      const bool inBasePlane = *std::max_element(heights.begin(), heights.end()) - lowest <= inPlane;
+      counted = inBasePlane ? 0.0 : 0.5 * doubleArea;
+    }
     if (counted <= 0.0) continue;
     out.risky[f] = 1;
     out.riskyFaceAreaMm2[f] = counted;

@@ -46,12 +46,22 @@ Result<Decomposition> planOnDisk(const Decomposition& plan) {
     const std::string name = detail::regionFileName(i);
     const Result<LoadedMesh> reloaded =
         checkAndRepair(RawSoup{image.mesh.vertices, image.mesh.triangles, 0}, regionLoadOptions(), name);
-    if (!reloaded || reloaded->mesh.triangles.size() != image.mesh.triangles.size())
-      return Error{ErrorCode::WriteFailed,
-                   "float precision (binary STL) cannot keep this region's shape" +
-                       (reloaded ? std::string() : ": " + reloaded.error().message) +
-                       "; a slightly different offset step moves the planes away from the vertices they graze",
-                   name};
+    if (!reloaded || reloaded->mesh.triangles.size() != image.mesh.triangles.size()) {
+      // Say what really happened: the input was closed; rounding the cut to float broke it.
+      std::string what = "writing region " + std::to_string(i) + " as binary STL (float) ";
+      if (image.mergedCorners > 0)
+        what += "would merge " + std::to_string(image.mergedCorners) +
+                " of its corners that lie closer together than float precision can tell apart";
+      else
+        what += "would change its faces";
+      what += ", and the region read back would not be the region cut (" +
+              (reloaded ? std::to_string(image.mesh.triangles.size() - reloaded->mesh.triangles.size()) +
+                              " faces lost"
+                        : reloaded.error().message) +
+              "). This comes from a clipping plane passing within rounding distance of the model's vertices, not "
+              "from the model: move that plane slightly (or use another --offset-step) and save again";
+      return Error{ErrorCode::WriteFailed, what, name};
+    }
     onDisk.regions[i].mesh = std::move(image.mesh);
   }
   return onDisk;

@@ -44,6 +44,10 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"diversityCosine", o.diversityCosine},
           {"diversityOffsetMm", o.diversityOffsetMm},
           {"refinementRounds", o.refinementRounds},
+          {"supportedBandMm", o.supportedBandMm},
+          {"minRegionHeightMm", o.minRegionHeightMm},
+          {"minPlaneGainPercent", o.minPlaneGainPercent},
+          {"minPlaneGainMm2", o.minPlaneGainMm2},
           {"platformToleranceMm", o.platformToleranceMm},
           {"threads", o.threads}};
 }
@@ -95,6 +99,15 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   // Plans written before refinement existed were searched without it.
   const auto refinement = field.optional("refinementRounds");
   o.refinementRounds = refinement ? smallInteger(*refinement) : 0;
+  // Plans written before these existed: the band was the default, and there were no printability limits.
+  const auto band = field.optional("supportedBandMm");
+  o.supportedBandMm = band ? band->number() : kDefaultSupportedBandMm;
+  const auto minHeight = field.optional("minRegionHeightMm");
+  o.minRegionHeightMm = minHeight ? minHeight->number() : 0.0;
+  const auto gainPercent = field.optional("minPlaneGainPercent");
+  o.minPlaneGainPercent = gainPercent ? gainPercent->number() : 0.0;
+  const auto gainArea = field.optional("minPlaneGainMm2");
+  o.minPlaneGainMm2 = gainArea ? gainArea->number() : 0.0;
   o.platformToleranceMm = field["platformToleranceMm"].number();
   o.threads = smallInteger(field["threads"]);
   if (Status valid = validate(o); !valid) field.failInside(valid.error().message, ErrorCode::InvalidParameter);

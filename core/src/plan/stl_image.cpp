@@ -33,6 +33,18 @@ FloatCorner toFloat(const Vec3& p) {
 
 }  // namespace
 
+std::size_t cornersMergedAtFloatPrecision(const TriangleMesh& mesh) {
+  // Vertices already at the same point (a pinch split in two by the clip) are one corner either way.
+  std::unordered_map<FloatCorner, Vec3, FloatCornerHash> seen;
+  seen.reserve(mesh.vertices.size());
+  std::size_t merged = 0;
+  for (const Vec3& v : mesh.vertices) {
+    const auto [it, inserted] = seen.emplace(toFloat(v), v);
+    if (!inserted && it->second != v) ++merged;
+  }
+  return merged;
+}
+
 StlImage stlImage(const TriangleMesh& mesh) {
   StlImage image;
   std::unordered_map<FloatCorner, std::int32_t, FloatCornerHash> index;
@@ -40,7 +52,10 @@ StlImage stlImage(const TriangleMesh& mesh) {
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const FloatCorner c = toFloat(mesh.vertices[v]);
     const auto [it, inserted] = index.emplace(c, static_cast<std::int32_t>(image.mesh.vertices.size()));
-    if (inserted) image.mesh.vertices.emplace_back(c.xyz[0], c.xyz[1], c.xyz[2]);
+    if (inserted)
+      image.mesh.vertices.emplace_back(c.xyz[0], c.xyz[1], c.xyz[2]);
+    else
+      ++image.mergedCorners;
     map[v] = it->second;
   }
   // The loader drops faces with a repeated corner, then every repeat of a face already kept.

@@ -12,7 +12,12 @@ namespace multidir::core::detail {
 struct StlImage {
   TriangleMesh mesh;  // float-exact vertices, origins of the faces kept
   std::size_t droppedFaces = 0;
+  std::size_t mergedCorners = 0;  // vertices that fell onto another one when rounded to float
 };
+
+// How many vertices of `mesh` fall onto another vertex at a different position when rounded to float (0: the
+// binary STL keeps every point apart, so a closed mesh stays closed). O(V).
+std::size_t cornersMergedAtFloatPrecision(const TriangleMesh& mesh);
 
 // Precondition: mesh.origins.size() == mesh.triangles.size().
 StlImage stlImage(const TriangleMesh& mesh);

@@ -210,6 +210,52 @@ bool runGreedy(SearchEngine& engine, bool constrained, BestPlan& best, const Sea
   return false;
 }
 
+// The planes of a node's chain, in clipping order.
+std::vector<Plane> planesOf(const NodePtr& node) {
+  std::vector<Plane> planes;
+  for (const SearchNode* n = node.get(); n && n->parent; n = n->parent.get()) planes.push_back(n->plane);
+  std::reverse(planes.begin(), planes.end());
+  return planes;
+}
+
+// The node that the planes make from the root, or null when some plane is refused.
+NodePtr rebuild(SearchEngine& engine, const std::vector<Plane>& planes) {
+  NodePtr node = engine.root();
+  for (const Plane& plane : planes) {
+    auto child = engine.cut(node, plane);
+    if (!child.ok()) return nullptr;
+    node = *child;
+  }
+  return node;
+}
+
+// A plane is kept only if it pays for itself: each region costs a platform move and a seam. Removes, one at a
+// time, the plane whose removal raises J_G least, while that rise stays below the threshold and the other
+// planes still make a valid plan.
+NodePtr withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOptions& o) {
+  const double threshold = std::max(o.minPlaneGainMm2, o.minPlaneGainPercent / 100.0 * engine.root()->riskyUpAreaMm2);
+  std::vector<Plane> planes = planesOf(node);
+  while (!planes.empty()) {
+    NodePtr bestNode;
+    std::size_t bestIndex = 0;
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+      std::vector<Plane> fewer = planes;
+      fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(k));
+      NodePtr candidate = rebuild(engine, fewer);
+      if (!candidate || candidate->jg() - node->jg() >= threshold) continue;
+      if (!bestNode || candidate->jg() < bestNode->jg()) {
+        bestNode = candidate;
+        bestIndex = k;
+      }
+    }
+    if (!bestNode) break;
+    node = bestNode;
+    planes.erase(planes.begin() + static_cast<std::ptrdiff_t>(bestIndex));
+    planes = planesOf(node);  // as cut: each kept off the vertices of what it cuts now
+  }
+  return node;
+}
+
 Status checkInputs(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options) {
   if (Status s = validate(options); !s) return s;
   if (Status s = validate(machine); !s) return s;
@@ -240,7 +286,7 @@ Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& mac
     case SearchScheme::Greedy: cancelled = runGreedy(engine, false, best, progress, levels); break;
     case SearchScheme::ConstrainedGreedy: cancelled = runGreedy(engine, true, best, progress, levels); break;
   }
-  Decomposition plan = engine.planOf(*best.node());
+  Decomposition plan = engine.planOf(*withoutUnpaidPlanes(engine, best.node(), options));
   plan.cancelled = cancelled;
   plan.rotationAxis = machine.rotationAxis;
   plan.statistics.candidatesScored = engine.candidatesScored();

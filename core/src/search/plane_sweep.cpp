@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "search/grid_polynomial_sum.h"
 
@@ -9,14 +10,12 @@ namespace multidir::core {
 
 using detail::GridPolynomialSum;
 
-PlaneSweeper::PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax,
-                           double supportedBandMm)
+PlaneSweeper::PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax)
     : m_solid(solid),
       m_area(solid.triangles.size(), 0.0),
       m_unitNormal(solid.triangles.size(), Vec3::Zero()),
       m_riskyArea(solid.triangles.size(), 0.0),
-      m_sinAlpha(sinAlphaMax),
-      m_band(supportedBandMm) {
+      m_sinAlpha(sinAlphaMax) {
   for (std::size_t f = 0; f < solid.triangles.size(); ++f) {
     const Vec3 areaNormal = solid.areaNormal(f);
     const double doubleArea = areaNormal.norm();
@@ -28,13 +27,14 @@ PlaneSweeper::PlaneSweeper(const TriangleMesh& solid, const std::vector<double>&
 }
 
 SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid) const {
-  // R(M+, plane at t) counts what lies above t + band: the same sums on a grid shifted by the band.
-  OffsetGrid shifted = grid;
-  shifted.firstMm += m_band;
-  GridPolynomialSum volume(grid), riskyAlongNormal(shifted), riskyFlagged(grid);
+  GridPolynomialSum volume(grid), riskyAlongNormal(grid), riskyFlagged(grid);
 
   std::vector<double> height(m_solid.vertices.size());
-  for (std::size_t v = 0; v < height.size(); ++v) height[v] = unitNormal.dot(m_solid.vertices[v]);
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t v = 0; v < height.size(); ++v) {
+    height[v] = unitNormal.dot(m_solid.vertices[v]);
+    top = std::max(top, height[v]);
+  }
 
   for (std::size_t f = 0; f < m_solid.triangles.size(); ++f) {
     const double area = m_area[f];
@@ -55,9 +55,7 @@ SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid)
       if (upper > 0) sum.addPiece(jb, jc, hc, {0, 0, part / (span * upper), 0});
     };
     const int ja = volume.indexAtOrAbove(ha), jb = volume.indexAtOrAbove(hb), jc = volume.indexAtOrAbove(hc);
-    if (cosine + m_sinAlpha < 0.0)
-      addArea(riskyAlongNormal, area, riskyAlongNormal.indexAtOrAbove(ha), riskyAlongNormal.indexAtOrAbove(hb),
-              riskyAlongNormal.indexAtOrAbove(hc));
+    if (cosine + m_sinAlpha < 0.0) addArea(riskyAlongNormal, area, ja, jb, jc);
     if (m_riskyArea[f] > 0.0) addArea(riskyFlagged, m_riskyArea[f], ja, jb, jc);
 
     // cosine * integral over the face's part above t of (h - t) dA: its share of the volume above.
@@ -72,12 +70,13 @@ SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid)
   profile.volumeAboveMm3 = volume.values();
   profile.riskyAreaAlongNormalMm2 = riskyAlongNormal.values();
   profile.riskyAreaFlaggedMm2 = riskyFlagged.values();
+  profile.topMm = top;
   return profile;
 }
 
 SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, const OffsetGrid& grid,
-                         const std::vector<double>& riskyShare, double sinAlphaMax, double supportedBandMm) {
-  return PlaneSweeper(solid, riskyShare, sinAlphaMax, supportedBandMm).sweep(unitNormal, grid);
+                         const std::vector<double>& riskyShare, double sinAlphaMax) {
+  return PlaneSweeper(solid, riskyShare, sinAlphaMax).sweep(unitNormal, grid);
 }
 
 }  // namespace multidir::core

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "detail/parallel.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/geometry/clipping.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "multidir/core/search/plane_sweep.h"
+#include "plan/stl_image.h"
 
 namespace multidir::core::detail {
 
@@ -21,6 +23,10 @@ SearchEngine::SearchEngine(const TriangleMesh& model, const MachineSpec& machine
   m_modelVolume = signedVolume(model);
   m_minRegionVolume = m_modelVolume / options.minVolumeDivisor;
   m_threads = resolveThreadCount(options.threads);
+  // Several times the tolerance within which a region's corners count as lying in its base plane, so that a
+  // region read back from its STL still tells its cap from its other faces.
+  m_vertexClearanceMm = 4.0 * inPlaneToleranceMm(model);
+  m_checkFloatPrecision = cornersMergedAtFloatPrecision(model) == 0;
   m_root = makeNode(std::make_shared<const TriangleMesh>(model));
 }
 
@@ -28,7 +34,7 @@ std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const Triangl
   auto node = std::make_shared<SearchNode>();
   // The remaining part always stands on the original platform (Criterion II), so its platform height is
   // the model's; analyzeOverhang finds the same lowest point.
-  const auto analysis = analyzeOverhang(*remaining, m_machine.up, overhangOptions());
+  const auto analysis = analyzeOverhang(*remaining, m_machine.up, overhangOptions(RegionBase::Platform));
   if (analysis.ok()) {
     node->riskyUpShare.resize(remaining->triangles.size(), 0.0);
     for (std::size_t f = 0; f < remaining->triangles.size(); ++f)
@@ -55,7 +61,7 @@ std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, 
   std::vector<std::vector<ScoredCandidate>> perNormal(count);
   std::vector<long long> offered(count, 0);
   const double volumeSlack = 1e-9 * m_modelVolume;
-  const PlaneSweeper sweeper(*node.remaining, node.riskyUpShare, m_sinAlpha, m_options.supportedBandMm);
+  const PlaneSweeper sweeper(*node.remaining, node.riskyUpShare, m_sinAlpha);
 
   parallelFor(count, m_threads, [&](int k) {
     if (m_job.isCancelled()) return;
@@ -66,6 +72,8 @@ std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, 
     offered[k] = grid.count;
     const SweepProfile profile = sweeper.sweep(n, grid);
     for (int j = 0; j < grid.count; ++j) {
+      // The part above must be at least minRegionHeightMm tall along its printing direction.
+      if (profile.topMm - grid.offsetAt(j) < m_options.minRegionHeightMm) continue;
       const double above = profile.volumeAboveMm3[j];
       if (above < m_minRegionVolume || node.volumeMm3 - above < volumeSlack) continue;
       ScoredCandidate c;
@@ -109,27 +117,30 @@ std::shared_ptr<SearchNode> SearchEngine::makeChild(const std::shared_ptr<const 
 
 std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std::shared_ptr<const SearchNode>& node,
                                                                       const ScoredCandidate& candidate) {
-  const Plane plane{m_normals[candidate.normal], candidate.offsetMm};
-  ++m_clips;
-  auto clipped = clipByPlane(*node->remaining, plane, node->level);
+  Plane plane = keptOffVertices(Plane{m_normals[candidate.normal], candidate.offsetMm}, *node->remaining);
+  auto clipped = clipSavably(*node->remaining, plane, node->level);
   if (!clipped.ok() || clipped->below.empty() || clipped->above.empty()) return std::nullopt;
   if (!standsOnPlatform(clipped->below)) return std::nullopt;
-  // The sweep's risky area of the part above equals the clipped region's (tested to 1e-6), and keeps J_G
-  // exactly what the candidate was ranked by.
-  return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), candidate.riskyAboveMm2));
+  if (!unprintableReason(*clipped, plane).empty()) return std::nullopt;
+  // Measured on the region itself, so J_G is what the saved region gives; the sweep ranked the candidate and
+  // agrees with this up to the few micrometres the plane was moved off vertices.
+  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(RegionBase::CutPlane));
+  if (!risky.ok()) return std::nullopt;
+  const double regionRisky = risky->riskyAreaMm2;
+  return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), regionRisky));
 }
 
 Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_ptr<const SearchNode>& node,
-                                                          const Plane& plane) {
+                                                          const Plane& givenPlane) {
   const std::string where = "plane " + std::to_string(node->level + 1);
+  Plane plane = keptOffVertices(givenPlane, *node->remaining);
   if (!isRealizable(m_machine, plane.normal, degToRad(0.01)))
     return Error{ErrorCode::InvalidParameter,
                  "the machine cannot print along this plane's normal: tilt it back within the machine's limits", where};
   if (!planeClearsPlatform(plane, m_platform, m_machine.up))
     return Error{ErrorCode::InvalidParameter,
                  "the plane cuts the platform region (Criterion III): move it up or tilt it less", where};
-  ++m_clips;
-  auto clipped = clipByPlane(*node->remaining, plane, node->level);
+  auto clipped = clipSavably(*node->remaining, plane, node->level);
   if (!clipped.ok()) return Error{clipped.error().code, clipped.error().message, where};
   if (clipped->above.empty())
     return Error{ErrorCode::InvalidParameter, "the plane passes above what is left of the model: it cuts nothing off",
@@ -141,17 +152,108 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
                  "after this cut a piece below the plane no longer stands on the platform (Criterion II): move or "
                  "tilt the plane so the part below stays in one piece on the platform",
                  where};
-  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions());
+  if (const std::string why = unprintableReason(*clipped, plane); !why.empty())
+    return Error{ErrorCode::InvalidParameter, why, where};
+  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(RegionBase::CutPlane));
   if (!risky.ok()) return Error{risky.error().code, risky.error().message, where};
   const double regionRisky = risky->riskyAreaMm2;
   return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), regionRisky));
 }
 
-OverhangOptions SearchEngine::overhangOptions() const {
+OverhangOptions SearchEngine::overhangOptions(RegionBase base) const {
   OverhangOptions overhang;
   overhang.alphaMaxDegrees = m_options.alphaMaxDegrees;
   overhang.supportedBandMm = m_options.supportedBandMm;
+  overhang.base = base;
   return overhang;
+}
+
+namespace {
+
+// Height of a solid along a direction above a level: its top along d minus the level.
+double heightAbove(const TriangleMesh& solid, const Vec3& d, double level) {
+  double top = -INFINITY;
+  for (const Vec3& v : solid.vertices) top = std::max(top, d.dot(v));
+  return top - level;
+}
+
+std::string millimetres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f mm", value);
+  return text;
+}
+
+}  // namespace
+
+bool SearchEngine::keepsFloatPrecision(const ClipResult& clipped) const {
+  return !m_checkFloatPrecision ||
+         (cornersMergedAtFloatPrecision(clipped.above) == 0 && cornersMergedAtFloatPrecision(clipped.below) == 0);
+}
+
+Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& plane, int planeId) {
+  // Where two cuts cross near an edge, a cut vertex can land within float rounding of another one even with
+  // the plane off every vertex; a few nearby placements (2, 4, 8 clearances down, then up) avoid it.
+  const Plane first = plane;
+  Result<ClipResult> clipped = Error{ErrorCode::Internal, "not clipped", "clip"};
+  for (const double steps : {0.0, -2.0, 2.0, -4.0, 4.0, -8.0, 8.0}) {
+    const Plane tried{first.normal, first.offset + steps * m_vertexClearanceMm};
+    if (steps != 0.0 && keptOffVertices(tried, solid).offset != tried.offset) continue;
+    ++m_clips;
+    clipped = clipByPlane(solid, tried, planeId);
+    if (!clipped.ok() || keepsFloatPrecision(*clipped)) {
+      plane = tried;
+      return clipped;
+    }
+  }
+  plane = first;
+  return clipByPlane(solid, first, planeId);  // unprintableReason names what is wrong with it
+}
+
+std::string SearchEngine::unprintableReason(const ClipResult& clipped, const Plane& plane) const {
+  const double minHeight = m_options.minRegionHeightMm;
+  const double regionHeight = heightAbove(clipped.above, plane.normal, plane.offset);
+  if (regionHeight < minHeight)
+    return "the region above the plane is only " + millimetres(regionHeight) + " tall along its printing direction (at least " +
+           millimetres(minHeight) + " are needed to print it): move the plane down or remove it";
+  const double platformHeight = heightAbove(clipped.below, m_machine.up, m_platform.heightMm);
+  if (platformHeight < minHeight)
+    return "the part left on the platform would be only " + millimetres(platformHeight) + " tall (at least " +
+           millimetres(minHeight) + " are needed): move the plane up or tilt it less";
+  if (!keepsFloatPrecision(clipped))
+    return "the plane passes so close to the model's vertices that a binary STL could not keep the cut closed: move "
+           "it slightly";
+  return {};
+}
+
+Plane SearchEngine::keptOffVertices(const Plane& plane, const TriangleMesh& solid) const {
+  const double clearance = m_vertexClearanceMm;
+  const double window = 64.0 * clearance;
+  std::vector<double> near;  // vertex heights close to the plane
+  bool touches = false;
+  for (const Vec3& v : solid.vertices) {
+    const double d = plane.normal.dot(v) - plane.offset;
+    if (std::abs(d) < window) near.push_back(d);
+    if (std::abs(d) < clearance) touches = true;
+  }
+  if (!touches) return plane;
+  // The nearest shift that leaves every vertex at least `clearance` away: 0 is taken, so the shift sits just
+  // beyond some vertex's clearance. Ties go down, into the part below, so the region above keeps the vertices
+  // the plane went through (a plane along a wall then leaves no sliver of what the wall holds up below it),
+  // and the same input always gives the same plane.
+  std::vector<double> shifts;
+  for (double d : near) {
+    shifts.push_back(d - clearance);
+    shifts.push_back(d + clearance);
+  }
+  std::sort(shifts.begin(), shifts.end(), [](double a, double b) {
+    return std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : a < b;
+  });
+  for (double shift : shifts) {
+    if (std::abs(shift) > window - clearance) break;  // beyond what `near` covers
+    const bool clear = std::none_of(near.begin(), near.end(), [&](double d) { return std::abs(d - shift) < clearance * (1 - 1e-9); });
+    if (clear) return Plane{plane.normal, plane.offset + shift};
+  }
+  return plane;  // vertices packed closer than the clearance all around: the float check decides
 }
 
 bool SearchEngine::standsOnPlatform(const TriangleMesh& solid) const {
@@ -176,7 +278,6 @@ Decomposition SearchEngine::planOf(const SearchNode& node) const {
   for (const SearchNode* n = &node; n && n->parent; n = n->parent.get()) chain.push_back(n);
 
   Decomposition plan;
-  const OverhangOptions overhang = overhangOptions();
 
   auto addRegion = [&](const TriangleMesh& mesh, const Vec3& direction, std::optional<Plane> base, int index) {
     Region region;
@@ -186,10 +287,11 @@ Decomposition SearchEngine::planOf(const SearchNode& node) const {
     region.printingDirection = direction;
     region.angles = machineAnglesFor(m_machine, direction);
     region.volumeMm3 = signedVolume(mesh);
-    // Printed on its base plane (or the platform), which is its lowest level along the direction: the
-    // overhang analysis then treats the base as supported, as it is.
-    const auto analysis = analyzeOverhang(mesh, direction, overhang);
+    // Printed on its base plane (or the platform), which is its lowest level along the direction.
+    const auto analysis =
+        analyzeOverhang(mesh, direction, overhangOptions(base ? RegionBase::CutPlane : RegionBase::Platform));
     region.riskyAreaMm2 = analysis.ok() ? analysis->riskyAreaMm2 : 0.0;
+    plan.jgAfterMm2 += region.riskyAreaMm2;
     plan.regions.push_back(std::move(region));
   };
 
@@ -198,8 +300,7 @@ Decomposition SearchEngine::planOf(const SearchNode& node) const {
   for (const SearchNode* n : chain) addRegion(*n->region, n->plane.normal, n->plane, n->level - 1);
   for (auto it = chain.rbegin(); it != chain.rend(); ++it) plan.clippingPlanes.push_back((*it)->plane);
   plan.jgBeforeMm2 = m_root->riskyUpAreaMm2;
-  // The search's own value, from the plane sweep; the regions' risky areas above are measured on their meshes.
-  plan.jgAfterMm2 = node.jg();
+  // J_G after is the sum of the regions' risky areas, measured on their meshes (node.jg() is the same sum).
   return plan;
 }
 

@@ -2,6 +2,7 @@
 // What every search scheme shares: the candidate normals, the platform, scoring a beam's candidates with the
 // plane sweep, and extending a beam by one clip (where Criterion II is checked).
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "multidir/core/analysis/overhang.h"
@@ -42,6 +43,11 @@ class SearchEngine {
   // Criterion II: whether every connected solid of `solid` touches the platform.
   bool standsOnPlatform(const TriangleMesh& solid) const;
 
+  // The plane moved (by at most a few micrometres, deterministically) so that no vertex of `solid` lies within
+  // rounding distance of it. A plane through vertices would leave cap corners closer to them than a binary
+  // STL can keep apart, and model faces lying in the plane that no cap supports (docs/jg-definition.md).
+  Plane keptOffVertices(const Plane& plane, const TriangleMesh& solid) const;
+
   // Whether a node needs no further cut: too small to cut again, or self-supported along up.
   bool isTerminal(const SearchNode& node) const;
 
@@ -57,7 +63,13 @@ class SearchEngine {
   JobContext& job() { return m_job; }
 
  private:
-  OverhangOptions overhangOptions() const;
+  OverhangOptions overhangOptions(RegionBase base) const;
+  // Clips by `plane`, moved a few micrometres more where the first placement would not survive a binary STL;
+  // `plane` becomes the placement used.
+  Result<ClipResult> clipSavably(const TriangleMesh& solid, Plane& plane, int planeId);
+  bool keepsFloatPrecision(const ClipResult& clipped) const;
+  // Why a clip's two parts cannot be regions (too thin, not savable), or empty when they can.
+  std::string unprintableReason(const ClipResult& clipped, const Plane& plane) const;
   std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining) const;
   std::shared_ptr<SearchNode> makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
                                         ClipResult clipped, double regionRiskyMm2) const;
@@ -71,6 +83,8 @@ class SearchEngine {
   double m_sinAlpha = 0.0;
   double m_modelVolume = 0.0;
   double m_minRegionVolume = 0.0;
+  double m_vertexClearanceMm = 0.0;  // how far planes stay from vertices
+  bool m_checkFloatPrecision = true;  // false when the model itself has vertices float cannot tell apart
   int m_threads = 1;
   std::shared_ptr<const SearchNode> m_root;
   long long m_candidatesScored = 0;

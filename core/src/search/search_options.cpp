@@ -34,6 +34,12 @@ Status validate(const SearchOptions& o) {
   if (!(o.diversityOffsetMm >= 0 && o.diversityOffsetMm < 1e4)) return bad("diversity offset", "must be between 0 and 10000 mm");
   if (!(o.supportedBandMm >= 0 && o.supportedBandMm <= 100)) return bad("supported band", "must be between 0 and 100 mm");
   if (!(o.platformToleranceMm >= 0 && o.platformToleranceMm < 10)) return bad("platform tolerance", "must be between 0 and 10 mm");
+  if (!(o.minRegionHeightMm >= 0 && o.minRegionHeightMm <= 1000))
+    return bad("minimum region height", "must be between 0 and 1000 mm");
+  if (!(o.minPlaneGainPercent >= 0 && o.minPlaneGainPercent <= 100))
+    return bad("minimum plane gain", "must be between 0 and 100 % of J_G before");
+  if (!(o.minPlaneGainMm2 >= 0 && o.minPlaneGainMm2 <= 1e9))
+    return bad("minimum plane gain area", "must be between 0 and 1e9 mm^2");
   if (o.refinementRounds < 0 || o.refinementRounds > 10) return bad("refinement rounds", "must be between 0 (off) and 10");
   if (o.threads < 0 || o.threads > 256) return bad("threads", "must be between 0 (all) and 256");
   return validate(o.candidates);

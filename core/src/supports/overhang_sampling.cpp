@@ -113,15 +113,17 @@ bool nearAny(const std::vector<OverhangSample>& samples, const Vec3& p, double d
 }  // namespace
 
 Result<std::vector<OverhangSample>> sampleOverhangs(const TriangleMesh& mesh, const Vec3& printingDirection,
-                                                    const SupportOptions& options) {
+                                                    const SupportOptions& options, RegionBase base) {
   if (Status s = validate(options); !s) return s.error();
   OverhangOptions overhang;
   overhang.alphaMaxDegrees = options.alphaMaxDegrees;
   overhang.supportedBandMm = options.supportedBandMm;
+  overhang.base = base;
   const Result<OverhangAnalysis> analysis = analyzeOverhang(mesh, printingDirection, overhang);
   if (!analysis) return analysis.error();
   const DirectionFrame frame(printingDirection.normalized());
-  const double minHeight = analysis->platformHeightMm + options.supportedBandMm;
+  const double minHeight =
+      analysis->platformHeightMm + (base == RegionBase::Platform ? options.supportedBandMm : 0.0);
   const double spacing = options.samplingSpacingMm;
 
   std::vector<OverhangSample> samples;

@@ -58,7 +58,8 @@ class Grower {
       if (m_job.isCancelled()) return false;
       const Cell& cell = m_layout.cells[c];
       if (cell.mesh) {
-        const Result<std::vector<OverhangSample>> samples = sampleOverhangs(*cell.mesh, cell.up, m_options);
+        const Result<std::vector<OverhangSample>> samples = sampleOverhangs(
+            *cell.mesh, cell.up, m_options, cell.base ? RegionBase::CutPlane : RegionBase::Platform);
         if (samples)
           for (const OverhangSample& s : *samples) addTip(static_cast<int>(c), s, stats);
       }

@@ -147,3 +147,39 @@ TEST(MeshMeasure, IcosphereIsClosedWithTheRightVolume) {
   EXPECT_EQ(eulerCharacteristic(sphere), 2);
   EXPECT_NEAR(signedVolume(sphere), 4.0 / 3.0 * kPi * 1000.0, 0.005 * 4.0 / 3.0 * kPi * 1000.0);
 }
+
+namespace {
+OverhangOptions onACutPlane() {
+  OverhangOptions options;
+  options.base = RegionBase::CutPlane;
+  return options;
+}
+}  // namespace
+
+TEST(Overhang, OnACutPlaneTheCapRestsOnTheMaterialBelow) {
+  // A box printed on its base plane: its bottom lies in the plane (the cap) and needs nothing.
+  const auto result = analyzeOverhang(makeBox(Vec3(0, 0, 40), Vec3(10, 20, 50)), Vec3::UnitZ(), onACutPlane());
+  ASSERT_TRUE(result.ok());
+  EXPECT_DOUBLE_EQ(result->riskyAreaMm2, 0.0);
+}
+
+TEST(Overhang, OnACutPlaneNoBandAboveThePlaneIsFree) {
+  // The inverted pyramid's slanted faces start at its apex, the lowest level: on the platform the 1 mm band
+  // above the apex would be free; above a cut plane nothing but the cap is, so all of them count.
+  const double side = 20.0, height = 5.0;
+  const TriangleMesh pyramid = makeInvertedPyramid(side, height);
+  const double slantedArea = 4 * 0.5 * side * std::hypot(side / 2, height);
+  const auto onPlane = analyzeOverhang(pyramid, Vec3::UnitZ(), onACutPlane());
+  const auto onBed = analyzeOverhang(pyramid, Vec3::UnitZ());
+  ASSERT_TRUE(onPlane.ok() && onBed.ok());
+  EXPECT_NEAR(onPlane->riskyAreaMm2, slantedArea, 1e-9 * slantedArea);
+  EXPECT_LT(onBed->riskyAreaMm2, onPlane->riskyAreaMm2 - 1.0);
+}
+
+TEST(Overhang, InPlaneToleranceCoversFloatRoundingAndScalesWithTheCoordinates) {
+  const TriangleMesh small = makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const TriangleMesh far = makeBox(Vec3(1000, 0, 0), Vec3(1001, 1, 1));
+  EXPECT_GT(inPlaneToleranceMm(small), 100 * 6e-8);
+  EXPECT_NEAR(inPlaneToleranceMm(far) / inPlaneToleranceMm(makeBox(Vec3(100, 0, 0), Vec3(101, 1, 1))), 1001.0 / 101.0, 1e-9);
+  EXPECT_LT(inPlaneToleranceMm(far), 0.05);  // far below a layer
+}

@@ -67,7 +67,9 @@ TEST(PlanFromPlanes, CuttingTheTBarsArmsOffAlongThemMakesItSupportFree) {
   const auto plan = planFromClippingPlanes(tbar, narrowPlatform(), SearchOptions{}, planes);
   ASSERT_TRUE(plan.ok()) << plan.error().describe();
   EXPECT_EQ(plan->regions.size(), 3u);
-  EXPECT_LT(plan->jgAfterMm2, 1e-6);
+  // Planes along the stem's walls are kept a couple of micrometres off its vertices; the slivers of the arms'
+  // undersides that this can leave beside the stem are all that remains (docs/jg-definition.md).
+  EXPECT_LT(plan->jgAfterMm2, 0.05);
 }
 
 TEST(PlanFromPlanes, APlaneThatLeavesAFloatingPieceIsRefusedByCriterionII) {

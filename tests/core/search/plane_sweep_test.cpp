@@ -4,6 +4,7 @@
 #include <random>
 
 #include "multidir/core/analysis/overhang.h"
+#include "multidir/core/geometry/clipping.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "multidir/core/search/plane_sweep.h"
 #include "support/primitives.h"
@@ -13,6 +14,12 @@ using multidir::test::makeBox;
 using multidir::test::makeIcosphere;
 
 namespace {
+
+OverhangOptions cutPlaneBase() {
+  OverhangOptions options;
+  options.base = RegionBase::CutPlane;
+  return options;
+}
 
 // Reference: clip each face by the half-space n.x > t (Sutherland-Hodgman) and integrate exactly.
 struct AboveMeasures {
@@ -46,21 +53,20 @@ std::vector<double> riskyShares(const TriangleMesh& mesh, const OverhangAnalysis
 }
 
 AboveMeasures measureAboveByClippingFaces(const TriangleMesh& mesh, const Vec3& n, double t,
-                                          const std::vector<double>& share, double sinAlpha, double band) {
+                                          const std::vector<double>& share, double sinAlpha) {
   AboveMeasures out;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto [area, centroid] = faceAbove(mesh, f, n, t);
     if (area == 0) continue;
     const Vec3 faceNormal = mesh.faceNormal(f);
     out.volume += n.dot(faceNormal) * area * (n.dot(centroid) - t);
-    if (n.dot(faceNormal) + sinAlpha < 0) out.riskyAlongNormal += faceAbove(mesh, f, n, t + band).first;
+    if (n.dot(faceNormal) + sinAlpha < 0) out.riskyAlongNormal += area;
     out.riskyFlagged += share[f] * area;
   }
   return out;
 }
 
-void expectSweepMatchesReference(const TriangleMesh& mesh, const Vec3& n, double step, double tolerance,
-                                 double band = kDefaultSupportedBandMm) {
+void expectSweepMatchesReference(const TriangleMesh& mesh, const Vec3& n, double step, double tolerance) {
   const BoundingBox box = boundingBox(mesh);
   const double radius = box.size().norm();
   OffsetGrid grid{n.dot(box.center()) - radius / 2, step, static_cast<int>(radius / step) + 1};
@@ -68,11 +74,11 @@ void expectSweepMatchesReference(const TriangleMesh& mesh, const Vec3& n, double
   const auto overhang = analyzeOverhang(mesh, Vec3::UnitZ());
   ASSERT_TRUE(overhang.ok());
   const std::vector<double> share = riskyShares(mesh, *overhang);
-  const SweepProfile profile = sweepPlanes(mesh, n, grid, share, sinAlpha, band);
+  const SweepProfile profile = sweepPlanes(mesh, n, grid, share, sinAlpha);
   const double totalVolume = signedVolume(mesh);
   const double totalArea = surfaceArea(mesh);
   for (int j = 0; j < grid.count; ++j) {
-    const AboveMeasures ref = measureAboveByClippingFaces(mesh, n, grid.offsetAt(j), share, sinAlpha, band);
+    const AboveMeasures ref = measureAboveByClippingFaces(mesh, n, grid.offsetAt(j), share, sinAlpha);
     EXPECT_NEAR(profile.volumeAboveMm3[j], ref.volume, tolerance * totalVolume) << "offset " << j;
     EXPECT_NEAR(profile.riskyAreaAlongNormalMm2[j], ref.riskyAlongNormal, tolerance * totalArea) << "offset " << j;
     EXPECT_NEAR(profile.riskyAreaFlaggedMm2[j], ref.riskyFlagged, tolerance * totalArea) << "offset " << j;
@@ -86,7 +92,7 @@ TEST(PlaneSweep, VolumeAboveASphereCapMatchesTheClosedForm) {
   const TriangleMesh sphere = makeIcosphere(Vec3::Zero(), r, 6);
   const double meshVolume = signedVolume(sphere);
   OffsetGrid grid{-r, 0.5, 81};
-  const SweepProfile profile = sweepPlanes(sphere, Vec3::UnitZ(), grid, {}, std::sin(degToRad(45.0)), 1.0);
+  const SweepProfile profile = sweepPlanes(sphere, Vec3::UnitZ(), grid, {}, std::sin(degToRad(45.0)));
   for (int j = 0; j < grid.count; ++j) {
     const double capHeight = r - grid.offsetAt(j);
     const double exactCap = kPi * capHeight * capHeight * (3 * r - capHeight) / 3;
@@ -116,16 +122,32 @@ TEST(PlaneSweep, AxisAlignedNormalOnFacesParallelToThePlanesStaysExact) {
   expectSweepMatchesReference(makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 12)), Vec3::UnitZ(), 1.0, 1e-9);
 }
 
-TEST(PlaneSweep, WithoutASupportedBandEveryRiskyPartAboveThePlaneCounts) {
-  expectSweepMatchesReference(makeIcosphere(Vec3(0, 0, 20), 20.0, 3), Vec3(0, 1, 1).normalized(), 1.0, 1e-9, 0.0);
+TEST(PlaneSweep, EveryRiskyPartAboveThePlaneCountsHoweverCloseToThePlane) {
+  // Above a cut plane only the cap rests on printed material: no band of air is free (docs/jg-definition.md).
+  const TriangleMesh sphere = makeIcosphere(Vec3(0, 0, 20), 20.0, 3);
+  const Vec3 n = Vec3(0, 1, 1).normalized();
+  expectSweepMatchesReference(sphere, n, 1.0, 1e-9);
+  // 17 mm below the centre along n, the sphere's faces near the cut face down steeply along n.
+  const OffsetGrid grid{n.dot(Vec3(0, 0, 20)) - 17.0, 1.0, 1};
+  const SweepProfile profile = sweepPlanes(sphere, n, grid, {}, std::sin(degToRad(45.0)));
+  const auto clipped = clipByPlane(sphere, Plane{n, grid.offsetAt(0)}, 0);
+  ASSERT_TRUE(clipped.ok());
+  double riskyJustAbove = 0;  // risky faces within 1 mm above the plane: the old band hid them
+  for (std::size_t f = 0; f < clipped->above.triangles.size(); ++f) {
+    if (clipped->above.origins[f].isCap() || n.dot(clipped->above.faceNormal(f)) + std::sin(degToRad(45.0)) >= 0) continue;
+    double low = INFINITY;
+    for (int k = 0; k < 3; ++k) low = std::min(low, n.dot(clipped->above.corner(f, k)));
+    if (low < grid.offsetAt(0) + 1.0) riskyJustAbove += clipped->above.faceArea(f);
+  }
+  EXPECT_GT(riskyJustAbove, 1.0);
+  EXPECT_NEAR(profile.riskyAreaAlongNormalMm2[0], analyzeOverhang(clipped->above, n, cutPlaneBase())->riskyAreaMm2, 1e-9 * 5e3);
 }
 
 TEST(PlaneSweep, EmptyGridGivesEmptyProfile) {
-  const SweepProfile profile = sweepPlanes(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), Vec3::UnitZ(), OffsetGrid{0, 1, 0}, {}, 0.7, 1.0);
+  const SweepProfile profile = sweepPlanes(makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1)), Vec3::UnitZ(), OffsetGrid{0, 1, 0}, {}, 0.7);
   EXPECT_TRUE(profile.volumeAboveMm3.empty());
 }
 
-#include "multidir/core/geometry/clipping.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "support/test_models.h"
 
@@ -150,14 +172,14 @@ TEST(PlaneSweep, EqualsClipThenMeasureOnRandomPlanesOfRealModels) {
         high = std::max(high, n.dot(v));
       }
       const OffsetGrid grid{low + 0.37, 1.3, static_cast<int>((high - low) / 1.3)};
-      const SweepProfile profile = sweepPlanes(mesh, n, grid, share, sinAlpha, kDefaultSupportedBandMm);
+      const SweepProfile profile = sweepPlanes(mesh, n, grid, share, sinAlpha);
       for (int j = trial % 5; j < grid.count; j += 9) {
         const Plane plane{n, grid.offsetAt(j)};
         const auto clipped = clipByPlane(mesh, plane, 7);
         ASSERT_TRUE(clipped.ok()) << clipped.error().describe();
         const TriangleMesh& above = clipped->above;
-        // The part above, printed along n on the plane, measured as a region: its base supports the band.
-        const double riskyAlongNormal = analyzeOverhang(above, n)->riskyAreaMm2;
+        // The part above, printed along n on the plane, measured as a region: only its cap is supported.
+        const double riskyAlongNormal = analyzeOverhang(above, n, cutPlaneBase())->riskyAreaMm2;
         double flagged = 0;
         for (std::size_t f = 0; f < above.triangles.size(); ++f)
           if (!above.origins[f].isCap()) flagged += share[above.origins[f].index] * above.faceArea(f);

@@ -1,8 +1,12 @@
 #pragma once
 // Overhang analysis (the paper's Eq. 1): a face is risky for printing direction d when
 // n.d + sin(alpha_max) < 0, i.e. it faces downward more steeply than the printer can bridge.
-// The platform is the plane through the mesh's lowest point along d; the part of a face within
-// supportedBandMm above it is supported by it, so only the part of a risky face above that band counts.
+// A risky face needs support unless printed material (or the bed) lies directly below it. What lies below
+// depends on what the region stands on (docs/jg-definition.md, the one definition of J_G):
+//  - on the platform, the bed is the plane through the mesh's lowest point along d, and the part of a face
+//    within supportedBandMm above it rests on the bed;
+//  - on a cut plane, only the cap (the faces lying in the base plane) rests on the material printed before;
+//    everything else above the plane hangs over air, however close to the plane it is.
 #include <array>
 
 #include "multidir/core/common/result.h"
@@ -11,9 +15,16 @@
 
 namespace multidir::core {
 
+// What a region stands on while it is printed.
+enum class RegionBase {
+  Platform,  // the bed, at the region's lowest level
+  CutPlane,  // the cap it shares with the material printed before it, at the region's lowest level
+};
+
 struct OverhangOptions {
   double alphaMaxDegrees = kDefaultAlphaMaxDegrees;        // in [0, 90)
-  double supportedBandMm = kDefaultSupportedBandMm;  // >= 0
+  double supportedBandMm = kDefaultSupportedBandMm;  // >= 0; used on the platform only
+  RegionBase base = RegionBase::Platform;
 };
 
 struct OverhangAnalysis {
@@ -21,8 +32,13 @@ struct OverhangAnalysis {
   std::vector<double> riskyFaceAreaMm2;  // per face: the risky part's area (0 for safe faces)
   double riskyAreaMm2 = 0.0;
   std::size_t riskyFaces = 0;
-  double platformHeightMm = 0.0;  // min over vertices of d.x
+  double platformHeightMm = 0.0;  // min over vertices of d.x: the bed or the base plane
 };
+
+// How far (mm) a corner may lie from a region's base plane and still count as lying in it: the rounding of
+// a binary STL (float, about 6e-8 of the coordinates' size) and of the clip, with a wide margin. It scales
+// with the size of the coordinates so that a region read back from its STL keeps its cap.
+double inPlaneToleranceMm(const TriangleMesh& mesh);
 
 // Checks the options and the direction (finite, non-zero; it is normalised).
 Status validate(const OverhangOptions& options);

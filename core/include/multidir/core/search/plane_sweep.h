@@ -23,27 +23,27 @@ struct OffsetGrid {
 // What lies above each plane of the grid.
 struct SweepProfile {
   std::vector<double> volumeAboveMm3;
-  // R(M+, plane): area of faces that would be risky if the part above were printed along the normal, counted
-  // above the supported band over the plane (the plane is that part's base).
+  // R(M+, plane): area of faces that would be risky if the part above were printed along the normal. Only
+  // the cap rests on the material below the plane (it is not a face of the solid, so it is not summed);
+  // every other down-facing face above the plane hangs over air (docs/jg-definition.md).
   std::vector<double> riskyAreaAlongNormalMm2;
   // Area above the plane of the risky parts of faces for the solid's current printing direction.
   std::vector<double> riskyAreaFlaggedMm2;
+  double topMm = 0.0;  // the solid's highest level along the normal
 };
 
 // Sweeps the planes of `grid` along `unitNormal` through `solid` (closed, outward normals).
 // `riskyShare` holds, per face, the share of its area that is risky for the solid's current printing
 // direction (OverhangAnalysis::riskyFaceAreaMm2 over the face's area; empty: none). A face's share is taken
-// to be spread evenly over it. `sinAlphaMax` = sin(alpha_max) decides which faces are risky along the normal;
-// `supportedBandMm` is the height above a base that the base supports (OverhangOptions::supportedBandMm).
+// to be spread evenly over it. `sinAlphaMax` = sin(alpha_max) decides which faces are risky along the normal.
 SweepProfile sweepPlanes(const TriangleMesh& solid, const Vec3& unitNormal, const OffsetGrid& grid,
-                         const std::vector<double>& riskyShare, double sinAlphaMax, double supportedBandMm);
+                         const std::vector<double>& riskyShare, double sinAlphaMax);
 
 // The same, for many normals through one solid: the per-face data is prepared once. sweep() is const and
 // may run on several threads at once. The solid must outlive the sweeper.
 class PlaneSweeper {
  public:
-  PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax,
-               double supportedBandMm);
+  PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax);
   SweepProfile sweep(const Vec3& unitNormal, const OffsetGrid& grid) const;
 
  private:
@@ -52,7 +52,6 @@ class PlaneSweeper {
   std::vector<Vec3> m_unitNormal;
   std::vector<double> m_riskyArea;  // share * area
   double m_sinAlpha;
-  double m_band;
 };
 
 }  // namespace multidir::core

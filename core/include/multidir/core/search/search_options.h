@@ -32,7 +32,16 @@ struct SearchOptions {
   // many rounds of a pattern search (half the lattice spacing, then halved each round); 0: off. The paper's
   // closing remark: sampled planes miss the real optimum; refining them locally is how to get closer.
   int refinementRounds = 3;
-  double supportedBandMm = kDefaultSupportedBandMm;  // height above the platform or a base that it supports
+  double supportedBandMm = kDefaultSupportedBandMm;  // height above the platform (only) that the bed supports
+  // Printable regions: no region, the one on the platform included, is thinner than this along its printing
+  // direction (its height from its base plane, or from the bed, to its top). A sliver a few layers thick can
+  // neither be printed reliably nor hold the region above it. >= 0.
+  double minRegionHeightMm = 2.0;
+  // A plane is kept only if it pays for itself: each region costs a platform move and a seam, so a plane
+  // whose removal would raise J_G by less than max(minPlaneGainMm2, minPlaneGainPercent % of J_G before) is
+  // removed from the plan after the search.
+  double minPlaneGainPercent = 1.0;
+  double minPlaneGainMm2 = 1.0;
   double platformToleranceMm = kDefaultPlatformToleranceMm;  // how close a solid must reach to touch the platform
   int threads = 0;                          // 0: all hardware threads
 };

@@ -3,6 +3,7 @@
 // overhangs), plus edges and vertices that hang lower than everything around them (edge and point overhangs).
 #include <vector>
 
+#include "multidir/core/analysis/overhang.h"
 #include "multidir/core/supports/support_options.h"
 #include "multidir/core/mesh/triangle_mesh.h"
 
@@ -26,9 +27,11 @@ struct OverhangSample {
 //    every R along it; edges of caps (cut faces, FaceOrigin::Cap) are left out;
 //  - point overhangs: a vertex lower along the direction than all its neighbours, unless a sample lies
 //    within R/2 already.
-// Everything within the supported band above the mesh's lowest level is left out.
+// On the platform, everything within the supported band above the mesh's lowest level is left out (it rests
+// on the bed); above a cut plane only the base plane itself is (the cap rests on the material below).
 // Cost: O(F + samples). Errors: InvalidParameter (options, direction).
 Result<std::vector<OverhangSample>> sampleOverhangs(const TriangleMesh& mesh, const Vec3& printingDirection,
-                                                    const SupportOptions& options = {});
+                                                    const SupportOptions& options = {},
+                                                    RegionBase base = RegionBase::Platform);
 
 }  // namespace multidir::core
