@@ -42,7 +42,7 @@ const char* const kDecomposeHelp =
     "  --refine N           beam: refine the best planes between the sampled normals in N rounds, 0 = off\n"
     "                       (default: 3)\n"
     "  --offset-step MM     spacing of candidate planes along a normal, 0.01 to 1000 (default: 1)\n"
-    "  --w W                every region keeps at least 1/W of the model's volume, 1 to 1000 (default: 10)\n"
+    "  --w W                every region keeps at least 1/W of the model's volume, 1 to 1000 (default: 40)\n"
     "  --min-region-height MM\n"
     "                       no region is thinner than this along its printing direction (default: 2)\n"
     "  --min-plane-gain PERCENT\n"

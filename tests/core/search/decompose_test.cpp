@@ -120,11 +120,10 @@ TEST(Decompose, BeamSearchIsNeverWorseThanEitherGreedyScheme) {
   }
 }
 
-TEST(Decompose, DefaultBeamSearchKeepsItsMeasuredShareOfJgOnKittenAndBunny) {
-  // Honest J_G (docs/jg-definition.md), 5-DOF, beam 10, alpha 45: measured 0.80 % on the kitten (issue target
-  // 2 %) and 17.5 % on the bunny, whose belly lies in regions no later cut reaches. These bounds guard against
-  // a search that gets worse; bench/ tracks the targets.
-  for (const auto& [name, share] : {std::pair<const char*, double>{"kitten.off", 0.02}, {"bunny.off", 0.20}}) {
+TEST(Decompose, DefaultBeamSearchLeavesAtMostTheTargetShareOfJgOnKittenAndBunny) {
+  // Honest J_G (docs/jg-definition.md), 5-DOF defaults, alpha 45: targets kitten <= 2 %, bunny <= 3.5 % (the
+  // paper's share); measured 0.77 % and 2.62 %.
+  for (const auto& [name, share] : {std::pair<const char*, double>{"kitten.off", 0.02}, {"bunny.off", 0.035}}) {
     const Decomposition plan = run(multidir::test::loadSharedModel(name), machineWithUp(Vec3::UnitY()), SearchOptions{});
     EXPECT_LE(plan.jgAfterMm2, share * plan.jgBeforeMm2) << name;
   }
