@@ -29,10 +29,13 @@ PlaneSweeper::PlaneSweeper(const TriangleMesh& solid, const std::vector<double>&
 SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid) const {
   GridPolynomialSum volume(grid), riskyAlongNormal(grid), riskyFlagged(grid);
 
+  // Each vertex's height and grid index once per normal: a vertex is shared by about six faces.
   std::vector<double> height(m_solid.vertices.size());
+  std::vector<int> index(m_solid.vertices.size());
   double top = -std::numeric_limits<double>::infinity();
   for (std::size_t v = 0; v < height.size(); ++v) {
     height[v] = unitNormal.dot(m_solid.vertices[v]);
+    index[v] = volume.indexAtOrAbove(height[v]);
     top = std::max(top, height[v]);
   }
 
@@ -41,9 +44,10 @@ SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid)
     if (area == 0.0) continue;
     const Triangle& t = m_solid.triangles[f];
     double ha = height[t[0]], hb = height[t[1]], hc = height[t[2]];
-    if (ha > hb) std::swap(ha, hb);
-    if (hb > hc) std::swap(hb, hc);
-    if (ha > hb) std::swap(ha, hb);
+    int ja = index[t[0]], jb = index[t[1]], jc = index[t[2]];
+    if (ha > hb) std::swap(ha, hb), std::swap(ja, jb);
+    if (hb > hc) std::swap(hb, hc), std::swap(jb, jc);
+    if (ha > hb) std::swap(ha, hb), std::swap(ja, jb);
     const double lower = hb - ha, span = hc - ha, upper = hc - hb;
     const double cosine = unitNormal.dot(m_unitNormal[f]);  // n . n_f
 
@@ -54,7 +58,6 @@ SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid)
       if (lower > 0) sum.addPiece(ja, jb, ha, {part, 0, -part / (lower * span), 0});
       if (upper > 0) sum.addPiece(jb, jc, hc, {0, 0, part / (span * upper), 0});
     };
-    const int ja = volume.indexAtOrAbove(ha), jb = volume.indexAtOrAbove(hb), jc = volume.indexAtOrAbove(hc);
     if (cosine + m_sinAlpha < 0.0) addArea(riskyAlongNormal, area, ja, jb, jc);
     if (m_riskyArea[f] > 0.0) addArea(riskyFlagged, m_riskyArea[f], ja, jb, jc);
 

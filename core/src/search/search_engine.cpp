@@ -47,11 +47,20 @@ std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const Triangl
 }
 
 std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int beamIndex, bool& cancelled) {
+  // Greedy, constrained greedy and the beam's first level all score the uncut model: once is enough.
+  const bool root = &node == m_root.get();
+  if (root && m_rootScored) {
+    std::vector<ScoredCandidate> copy = *m_rootScored;
+    for (ScoredCandidate& c : copy) c.beam = beamIndex;
+    cancelled = m_job.isCancelled();
+    return copy;
+  }
   std::vector<int> lattice(m_latticeSize);
   for (int i = 0; i < m_latticeSize; ++i) lattice[i] = i;
   const long long before = m_candidatesScored;
   std::vector<ScoredCandidate> all = scoreNormals(node, beamIndex, lattice, cancelled);
   if (m_firstLevelCandidates < 0) m_firstLevelCandidates = static_cast<int>(m_candidatesScored - before);
+  if (root && !cancelled) m_rootScored = all;
   return all;
 }
 

@@ -87,6 +87,7 @@ class SearchEngine {
   bool m_checkFloatPrecision = true;  // false when the model itself has vertices float cannot tell apart
   int m_threads = 1;
   std::shared_ptr<const SearchNode> m_root;
+  std::optional<std::vector<ScoredCandidate>> m_rootScored;  // the lattice's candidates on the uncut model
   long long m_candidatesScored = 0;
   int m_clips = 0;
   int m_firstLevelCandidates = -1;
