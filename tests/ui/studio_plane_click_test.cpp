@@ -63,9 +63,16 @@ std::optional<QPoint> pointOnDisc(MeshViewerWidget* viewer, const PlaneDisc& dis
       const core::Vec3 point =
           disc.center + fraction * disc.radiusMm * (std::cos(angle) * side + std::sin(angle) * across);
       const std::optional<QPointF> position = viewer->widgetPositionOf(point);
-      if (position && viewer->rect().contains(position->toPoint()) &&
-          viewer->clippingPlaneAt(QPointF(position->toPoint())) == plane) {
-        return position->toPoint();
+      // Well inside what this disc shows: the point and its neighbours a few pixels away all show it, so a
+      // click is not decided by a disc's rim under the cursor.
+      const auto showsPlane = [&](const QPoint& p) {
+        return viewer->rect().contains(p) && viewer->clippingPlaneAt(QPointF(p)) == plane;
+      };
+      if (position) {
+        const QPoint p = position->toPoint();
+        if (showsPlane(p) && showsPlane(p + QPoint(4, 0)) && showsPlane(p - QPoint(4, 0)) &&
+            showsPlane(p + QPoint(0, 4)) && showsPlane(p - QPoint(0, 4)))
+          return p;
       }
       if (fraction == 0.0) break;
     }

@@ -54,7 +54,8 @@ TEST(StudioSearch, PlanOfTheSampleIsShownAsColouredRegionsWithATable) {
   // The view shows the regions in distinct palette colours.
   window.planPanel()->setClippingPlanesShown(false);
   const QImage picture = window.viewer()->grabFramebuffer();
-  EXPECT_GE(test::regionColoursSeen(picture, regions, 0.001), 3);
+  // Some regions are small (a nose, a brim): 0.02 % of the frame is still some 200 pixels.
+  EXPECT_GE(test::regionColoursSeen(picture, regions, 0.0002), 3);
 }
 
 TEST(StudioSearch, SequenceStepperShowsTheFirstRegionsOnly) {

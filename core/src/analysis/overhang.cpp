@@ -35,7 +35,7 @@ double triangleAreaAbove(std::array<double, 3> heights, double area, double leve
 double inPlaneToleranceMm(const TriangleMesh& mesh) {
   double largest = 1.0;
   for (const Vec3& v : mesh.vertices) largest = std::max(largest, v.cwiseAbs().maxCoeff());
-  return 1e-5 * largest;
+  return 1e-6 * largest;
 }
 
 Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& printingDirection,

@@ -179,7 +179,9 @@ TEST(Overhang, OnACutPlaneNoBandAboveThePlaneIsFree) {
 TEST(Overhang, InPlaneToleranceCoversFloatRoundingAndScalesWithTheCoordinates) {
   const TriangleMesh small = makeBox(Vec3(0, 0, 0), Vec3(1, 1, 1));
   const TriangleMesh far = makeBox(Vec3(1000, 0, 0), Vec3(1001, 1, 1));
-  EXPECT_GT(inPlaneToleranceMm(small), 100 * 6e-8);
+  // A height along an oblique direction sums three float-rounded coordinates: at most 3 * 6e-8 of them.
+  EXPECT_GT(inPlaneToleranceMm(small), 4 * 3 * 6e-8);
+  EXPECT_GT(inPlaneToleranceMm(far), 4 * 3 * 6e-8 * 1001);
   EXPECT_NEAR(inPlaneToleranceMm(far) / inPlaneToleranceMm(makeBox(Vec3(100, 0, 0), Vec3(101, 1, 1))), 1001.0 / 101.0, 1e-9);
   EXPECT_LT(inPlaneToleranceMm(far), 0.05);  // far below a layer
 }

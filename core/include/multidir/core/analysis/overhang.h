@@ -35,9 +35,10 @@ struct OverhangAnalysis {
   double platformHeightMm = 0.0;  // min over vertices of d.x: the bed or the base plane
 };
 
-// How far (mm) a corner may lie from a region's base plane and still count as lying in it: the rounding of
-// a binary STL (float, about 6e-8 of the coordinates' size) and of the clip, with a wide margin. It scales
-// with the size of the coordinates so that a region read back from its STL keeps its cap.
+// How far (mm) a corner may lie from a region's base plane and still count as lying in it: 1e-6 of the
+// largest coordinate (at least 1 mm), over five times what a binary STL's rounding can move a height (float:
+// 6e-8 per coordinate, three coordinates). It scales with the coordinates so that a region read back from its
+// STL keeps its cap.
 double inPlaneToleranceMm(const TriangleMesh& mesh);
 
 // Checks the options and the direction (finite, non-zero; it is normalised).
