@@ -98,6 +98,47 @@ TEST(DeviceSimulator, PrintRunDrivesTheSimulatedPlatformThroughTwoRegions) {
   EXPECT_NEAR(anglesWhenPrinting[1], 40.0, 1e-9);
 }
 
+// Issue 14: a pause during a short outage logged "motion stopped" although the stop was never sent, and the
+// platform went on to its target after the reconnect.
+TEST(DeviceSimulator, PrintRunPausedDuringAnOutageSaysStoppedOnlyOnceTheDeviceConfirmsAndItNeverMovesAfter) {
+  DeviceSimulator sim;
+  ASSERT_TRUE(sim.start().ok());
+  RotaryPlatformOptions options;
+  options.connection = fastSettings(sim.port(), 1);
+  options.machine.kind = core::MachineKind::RotaryPlatform;
+  options.speedDegreesPerSecond = 20.0;  // 0 -> 60 degrees takes 3 s (homing runs at the controller's speed)
+  RotaryPlatform platform(options);
+  ASSERT_TRUE(platform.connect().ok());
+  ASSERT_TRUE(outcome(platform.enable()).ok());
+  ASSERT_TRUE(eventually([&] { return platform.status().enabled; }));
+  ASSERT_TRUE(outcome(platform.home()).ok());
+  ASSERT_TRUE(eventually([&] { return platform.status().homed && !platform.status().homing; }));
+
+  auto positioner = makePositioner(platform);
+  PrintRun run(*positioner, {{PlatformOrientation::rotary(60.0), "region_1.gcode"}});
+  ASSERT_TRUE(run.start().ok()) << run.lastProblem();
+  ASSERT_EQ(run.state(), PrintRunState::Moving) << run.lastProblem();
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  sim.dropConnections(400ms);
+  ASSERT_TRUE(eventually([&] { return platform.status().link == LinkState::Reconnecting; }));
+  ASSERT_TRUE(run.pause().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+  run.tick();
+  EXPECT_EQ(run.log().back().message.find("motion stopped"), std::string::npos) << run.log().back().message;
+  EXPECT_TRUE(run.stopUnconfirmed());
+  ASSERT_TRUE(eventually([&] {
+    run.tick();
+    return !run.stopUnconfirmed();
+  })) << run.log().back().message;
+  EXPECT_NE(run.log().back().message.find("motion stopped"), std::string::npos) << run.log().back().message;
+  const double stoppedAt = sim.rotaryState().angleDegrees;
+  EXPECT_FALSE(sim.rotaryState().moving);
+  EXPECT_LT(stoppedAt, 50.0);
+  const auto polls = platform.status().polls;
+  ASSERT_TRUE(eventually([&] { return platform.status().polls > polls + 20; }));
+  EXPECT_DOUBLE_EQ(sim.rotaryState().angleDegrees, stoppedAt);
+}
+
 TEST(DeviceSimulator, PositionerForTheRotaryPlatformRefusesTiltTargets) {
   RotaryPlatformOptions options;
   options.machine.kind = core::MachineKind::RotaryPlatform;
