@@ -33,6 +33,21 @@ TEST(DeviceSimulator, PortInUseIsReportedWithWhatToDo) {
   EXPECT_NE(status.error().message.find("cannot listen on 127.0.0.1:" + std::to_string(first.port())),
             std::string::npos)
       << status.error().message;
+  EXPECT_NE(status.error().message.find("address already in use: choose another port"), std::string::npos)
+      << status.error().message;
+}
+
+// Issue 14: an address of another machine was reported as "choose another port".
+TEST(DeviceSimulator, ListenAddressOfAnotherMachineIsReportedAsNotAnAddressOfThisMachine) {
+  SimulatorOptions options;
+  options.listenAddress = "192.0.2.1";  // TEST-NET-1 (RFC 5737): never assigned to a machine
+  DeviceSimulator sim(options);
+  const core::Status status = sim.start();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("cannot assign requested address: 192.0.2.1 is not an address of this machine"),
+            std::string::npos)
+      << status.error().message;
+  EXPECT_EQ(status.error().message.find("choose another port"), std::string::npos) << status.error().message;
 }
 
 TEST(DeviceSimulator, AddressThatIsNotIPv4IsRefused) {
