@@ -63,7 +63,7 @@ TEST(DeviceSimulatorLoad, ElevenHundredClientsOpenedThenClosedLeaveItServingANor
     for (const RawClient& client : clients) ASSERT_TRUE(client.connected());
     ASSERT_TRUE(eventually([&] { return sim.refusedConnectionCount() >= 1100u - 64u; }));
     EXPECT_EQ(sim.connectionCount(), 64);  // the limit, and not one more
-  }  // all closed
+  }                                        // all closed
   ASSERT_TRUE(eventually([&] { return sim.connectionCount() == 0; }));
   EXPECT_TRUE(sim.running());
   auto platform = connectedPlatform(sim.port());

@@ -42,7 +42,8 @@ class RawClient {
   }
 
   // One reply frame (MBAP header and PDU), or nothing when none came within `limit` or the server closed.
-  std::optional<std::vector<std::uint8_t>> readFrame(std::chrono::milliseconds limit = std::chrono::milliseconds(2000)) {
+  std::optional<std::vector<std::uint8_t>> readFrame(
+      std::chrono::milliseconds limit = std::chrono::milliseconds(2000)) {
     const auto deadline = std::chrono::steady_clock::now() + limit;
     for (;;) {
       if (m_pending.size() >= 7) {
@@ -76,7 +77,8 @@ class RawClient {
  private:
   bool waitReadable(std::chrono::steady_clock::time_point deadline) {
     if (m_fd < 0) return false;
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return false;
     pollfd p{m_fd, POLLIN, 0};
     return ::poll(&p, 1, static_cast<int>(left.count())) > 0;

@@ -129,8 +129,8 @@ TEST_F(RobotArmTest, EmergencyStopHaltsUntilTheFaultIsCleared) {
 
 // Issue 14: an e-stop asked for during a short outage used to be dropped and the arm went on to 60 degrees.
 TEST_F(RobotArmTest, EmergencyStopDuringAShortOutageIsSentFirstOnReconnectAndTheArmNeverMovesAfterIt) {
-  options.speedPercent = 5;                    // 18 degrees/s: 0 -> 60 takes 3.3 s
-  options.programHeartbeatTimeout = 1000ms;    // longer than the outage: only the e-stop can stop it
+  options.speedPercent = 5;                  // 18 degrees/s: 0 -> 60 takes 3.3 s
+  options.programHeartbeatTimeout = 1000ms;  // longer than the outage: only the e-stop can stop it
   auto arm = connected();
   ASSERT_TRUE(outcome(arm->moveTo(60.0, 0.0)).ok());
   ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));

@@ -82,9 +82,10 @@ class DriverLink {
   [[nodiscard]] core::Status refuseWhileStopLatched(const std::string& what) const {
     const StopLatch stop = m_worker.stopLatch();
     if (!stop.latched()) return core::Done{};
-    std::string message = "cannot " + what + ": the " + std::string(stopKindName(stop.kind)) +
-                          " the operator asked for is latched";
-    message += stop.confirmed ? "; clear the stop first" : " and not yet confirmed by the device (" + stop.problem + ")";
+    std::string message =
+        "cannot " + what + ": the " + std::string(stopKindName(stop.kind)) + " the operator asked for is latched";
+    message +=
+        stop.confirmed ? "; clear the stop first" : " and not yet confirmed by the device (" + stop.problem + ")";
     return refuse(message);
   }
 

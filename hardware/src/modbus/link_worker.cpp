@@ -84,10 +84,11 @@ std::future<core::Status> LinkWorker::latchStop(StopKind kind, Command command, 
     }
     m_stop.confirmed = false;
     if (!running)
-      m_stop.problem = m_label + " is not connected: the " + stopKindName(m_stop.kind) + " is sent first when you connect";
+      m_stop.problem =
+          m_label + " is not connected: the " + stopKindName(m_stop.kind) + " is sent first when you connect";
     else if (!m_linkUp)
-      m_stop.problem = m_label + " is reconnecting: the " + stopKindName(m_stop.kind) +
-                       " is sent first when the link is back";
+      m_stop.problem =
+          m_label + " is reconnecting: the " + stopKindName(m_stop.kind) + " is sent first when the link is back";
     else
       m_stop.problem = "the " + std::string(stopKindName(m_stop.kind)) + " is being written to " + m_label;
     m_stopDue = true;
@@ -97,13 +98,13 @@ std::future<core::Status> LinkWorker::latchStop(StopKind kind, Command command, 
     cancelled.swap(m_queue);
   }
   for (Pending& queued : cancelled)
-    queued.promise.set_value(core::Error{
-        core::ErrorCode::Cancelled, queued.what + " was cancelled by " + what + " before it was sent", m_label});
+    queued.promise.set_value(core::Error{core::ErrorCode::Cancelled,
+                                         queued.what + " was cancelled by " + what + " before it was sent", m_label});
   if (!running) {
-    promise.set_value(core::Error{core::ErrorCode::InvalidParameter,
-                                  m_label + " is not connected: " + what +
-                                      " was not sent; it stays latched and is sent first when you connect",
-                                  m_label});
+    promise.set_value(core::Error{
+        core::ErrorCode::InvalidParameter,
+        m_label + " is not connected: " + what + " was not sent; it stays latched and is sent first when you connect",
+        m_label});
     return future;
   }
   m_wake.notify_all();
@@ -188,8 +189,7 @@ void LinkWorker::cancelStopWaiters(const std::string& why) {
   for (auto& waiter : waiters)
     waiter.second.set_value(core::Error{
         core::ErrorCode::Cancelled,
-        what + " was not confirmed: " + why + "; it stays latched and is sent first when you connect again",
-        m_label});
+        what + " was not confirmed: " + why + "; it stays latched and is sent first when you connect again", m_label});
 }
 
 void LinkWorker::failQueued(const core::Error& error) {
@@ -221,8 +221,8 @@ void LinkWorker::linkBroken(const std::string& problem) {
     m_linkUp = false;
     if (m_stop.latched() && !m_stop.confirmed) {
       stopWaiting = true;
-      m_stop.problem = "the link is down (" + problem + "); the " + stopKindName(m_stop.kind) +
-                       " is sent first when it is back";
+      m_stop.problem =
+          "the link is down (" + problem + "); the " + stopKindName(m_stop.kind) + " is sent first when it is back";
     }
   }
   // An unconfirmed stop keeps the retries at the shortest delay.

@@ -29,9 +29,9 @@ using sim::Clock;
 namespace {
 
 constexpr auto kCycle = std::chrono::milliseconds(2);  // the simulated control loop's period (at most)
-constexpr int kBacklog = SOMAXCONN;  // a burst of connections waits for accept() instead of retrying SYNs
-constexpr int kAcceptsPerCycle = 256;            // a burst of connections is refused within a few cycles
-constexpr std::size_t kMaxUnsentBytes = 65536;   // a client that sends requests but never reads replies
+constexpr int kBacklog = SOMAXCONN;             // a burst of connections waits for accept() instead of retrying SYNs
+constexpr int kAcceptsPerCycle = 256;           // a burst of connections is refused within a few cycles
+constexpr std::size_t kMaxUnsentBytes = 65536;  // a client that sends requests but never reads replies
 constexpr std::size_t kReceiveChunk = 4096;
 
 core::Error invalid(const std::string& field, const std::string& message) {

@@ -31,8 +31,8 @@ MbapHeader parseMbap(const std::uint8_t* bytes);
 
 enum class FrameProblem {
   None,
-  NotModbus,    // protocol id other than 0: not a Modbus request, the connection is closed
-  BadLength,    // a length field that no Modbus PDU can have (below 2 or above 254): framing is lost
+  NotModbus,  // protocol id other than 0: not a Modbus request, the connection is closed
+  BadLength,  // a length field that no Modbus PDU can have (below 2 or above 254): framing is lost
 };
 FrameProblem checkMbap(const MbapHeader& header);
 

@@ -92,8 +92,8 @@ class RotaryPlatform {
   // Stop and e-stop are latched (stop_latch.h): they jump the queue, are written as soon as the link allows
   // and again first after every reconnect, and every move or homing is refused until clearStop(). The
   // future ends once the device answered the write (not when the link is down: it then waits for the link).
-  std::future<core::Status> stop();                          // decelerates
-  std::future<core::Status> emergencyStop();                 // cuts the power stage
+  std::future<core::Status> stop();           // decelerates
+  std::future<core::Status> emergencyStop();  // cuts the power stage
   // The operator allows moves again; refused (InvalidParameter) until the device confirmed the stop. After
   // an e-stop the controller also needs clearFault(), enable() and home().
   core::Status clearStop();
