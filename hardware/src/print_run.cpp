@@ -75,10 +75,13 @@ core::Status PrintRun::requestStop() {
   core::Status stopped = m_positioner.stopMotion();
   m_awaitingStopConfirmation = stopped.ok();
   m_stopProblemLogged = false;
+  m_stopRequested = m_options.steadyNow();
   return stopped;
 }
 
 namespace {
+
+constexpr std::chrono::milliseconds kStopConfirmationWarning{1000};
 
 // What the log says after asking for a stop: never "stopped" before the device confirmed it.
 std::string stopRequestText(const core::Status& stopped, const std::string& device) {
@@ -94,11 +97,15 @@ void PrintRun::watchStop(const PositionerSnapshot& snapshot) {
   if (snapshot.stopConfirmed) {
     m_awaitingStopConfirmation = false;
     enter(m_state, stepLabel() + ": motion stopped: " + m_positioner.name() + " confirmed the stop");
-  } else if (snapshot.faulted && !m_stopProblemLogged) {
+  } else if (!m_stopProblemLogged && m_options.steadyNow() - m_stopRequested >= kStopConfirmationWarning) {
+    // Usually the device confirms within milliseconds; longer means the link is down or the stop failed.
     m_stopProblemLogged = true;
-    enter(m_state, stepLabel() + ": the stop is not confirmed yet (" +
-                       (snapshot.problem.empty() ? std::string("device fault") : snapshot.problem) +
-                       "): if it still moves, use the E-STOP");
+    const std::string why = !snapshot.problem.empty() ? snapshot.problem
+                            : snapshot.linkUp         ? std::string("no answer yet")
+                                                      : std::string("the link is down");
+    enter(m_state, stepLabel() + ": " + m_positioner.name() + " has not confirmed the stop after " +
+                       std::to_string(kStopConfirmationWarning.count()) + " ms (" + why +
+                       "); it is sent as soon as the link allows; if the device still moves, use the E-STOP");
   }
 }
 

@@ -301,6 +301,23 @@ TEST_F(PrintRunTest, PauseLogsMotionStoppedOnlyOnceTheDeviceConfirmsTheStop) {
   EXPECT_EQ(run.state(), PrintRunState::Paused);
 }
 
+TEST_F(PrintRunTest, StopStillUnconfirmedAfterASecondIsLoggedOnceAsAWarning) {
+  device.stopMode = FakePositioner::StopMode::WaitsForTheLink;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.pause().ok());
+  device.state.linkUp = false;
+  advance(900ms, run);
+  EXPECT_FALSE(logMentions(run, "has not confirmed the stop"));
+  advance(200ms, run);
+  EXPECT_NE(run.log().back().message.find("fake platform has not confirmed the stop after 1000 ms (the link is down)"),
+            std::string::npos)
+      << run.log().back().message;
+  const std::size_t entries = run.log().size();
+  for (int i = 0; i < 5; ++i) advance(1s, run);
+  EXPECT_EQ(run.log().size(), entries);
+}
+
 TEST_F(PrintRunTest, ResumeIsRefusedUntilTheDeviceConfirmedTheStop) {
   device.stopMode = FakePositioner::StopMode::WaitsForTheLink;
   PrintRun run(device, threeSteps(), options());

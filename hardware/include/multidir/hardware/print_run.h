@@ -33,7 +33,8 @@
 //
 // A stop is only requested by stopMotion(); "motion stopped" is logged when a later tick() sees the device's
 // confirmation (PositionerSnapshot::stopConfirmed), in whatever state the run is then (ticks keep watching
-// for it in Paused, Faulted and Aborted). A refused stop is logged at once and says to use the E-STOP.
+// for it in Paused, Faulted and Aborted); a stop not confirmed after a second is logged once as a warning. A
+// refused stop is logged at once and says to use the E-STOP.
 //
 // While Printing no move is ever commanded; device faults seen while printing are logged and taken up
 // after regionDone. Completed and Aborted are final.
@@ -172,6 +173,7 @@ class PrintRun {
   std::chrono::steady_clock::time_point m_started{};
   std::chrono::steady_clock::time_point m_moveStarted{};
   std::chrono::steady_clock::time_point m_settleStarted{};
+  std::chrono::steady_clock::time_point m_stopRequested{};
   std::string m_lastProblem;
   std::vector<PrintRunLogEntry> m_log;
   LogCallback m_logCallback;
