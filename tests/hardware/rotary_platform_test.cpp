@@ -278,6 +278,22 @@ TEST_F(RotaryPlatformTest, StopDuringAShortOutageIsLatchedSentFirstOnReconnectAn
   EXPECT_TRUE(eventually([&] { return platform->reached(20.0); }));
 }
 
+TEST_F(RotaryPlatformTest, StopAskedForBeforeConnectingIsWrittenDuringTheConnectBeforeTheFirstPoll) {
+  RotaryPlatform platform(options);
+  auto stop = platform.stop();
+  ASSERT_TRUE(readyAtOnce(stop));
+  const core::Status status = stop.get();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("stays latched and is sent first when you connect"), std::string::npos)
+      << status.error().message;
+  EXPECT_TRUE(platform.status().stop.latched());
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), 0u);
+  ASSERT_TRUE(platform.connect().ok());  // returns after the first attempt: open, stop, configure, poll
+  EXPECT_EQ(platform.status().stop.writes, 1u);
+  EXPECT_TRUE(platform.status().stop.confirmed);
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), 1u);
+}
+
 TEST_F(RotaryPlatformTest, LatchedStopIsWrittenAgainAfterEveryReconnect) {
   auto platform = homed();
   ASSERT_TRUE(outcome(platform->stop()).ok());
