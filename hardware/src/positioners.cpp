@@ -64,6 +64,7 @@ class RotaryPositioner : public Positioner {
     auto future = m_platform.stop();
     return immediateOutcome(future, m_pending);
   }
+  core::Status clearStop() override { return m_platform.clearStop(); }
   PositionerSnapshot snapshot() const override {
     const RotaryStatus s = m_platform.status();
     PositionerSnapshot snap;
@@ -71,6 +72,8 @@ class RotaryPositioner : public Positioner {
     snap.moving = s.moving || s.homing;
     snap.reached = m_target && m_platform.reached(*m_target);
     snap.faulted = s.fault != RotaryFault::None;
+    snap.stopLatched = s.stop.latched();
+    snap.stopConfirmed = s.stop.latched() && s.stop.confirmed;
     if (auto failed = m_pending.failure()) {
       snap.faulted = true;
       snap.problem = *failed;
@@ -104,6 +107,7 @@ class RobotPositioner : public Positioner {
     auto future = m_arm.stop();
     return immediateOutcome(future, m_pending);
   }
+  core::Status clearStop() override { return m_arm.clearStop(); }
   PositionerSnapshot snapshot() const override {
     const RobotStatus s = m_arm.status();
     PositionerSnapshot snap;
@@ -111,6 +115,8 @@ class RobotPositioner : public Positioner {
     snap.moving = s.state == RobotProgramState::Moving;
     snap.reached = m_target && m_arm.reached(m_target->tiltDegrees, m_target->azimuthDegrees);
     snap.faulted = s.state == RobotProgramState::Fault || s.state == RobotProgramState::Halted || !s.programAlive;
+    snap.stopLatched = s.stop.latched();
+    snap.stopConfirmed = s.stop.latched() && s.stop.confirmed;
     if (auto failed = m_pending.failure()) {
       snap.faulted = true;
       snap.problem = *failed;

@@ -71,10 +71,49 @@ core::Status PrintRun::refuse(const std::string& event) const {
                      "cannot " + event + " the print run while it is " + printRunStateName(m_state), "print run"};
 }
 
+core::Status PrintRun::requestStop() {
+  core::Status stopped = m_positioner.stopMotion();
+  m_awaitingStopConfirmation = stopped.ok();
+  m_stopProblemLogged = false;
+  m_stopRequested = m_options.steadyNow();
+  return stopped;
+}
+
+namespace {
+
+constexpr std::chrono::milliseconds kStopConfirmationWarning{1000};
+
+// What the log says after asking for a stop: never "stopped" before the device confirmed it.
+std::string stopRequestText(const core::Status& stopped, const std::string& device) {
+  if (stopped.ok()) return "stopping " + device + " (waiting for it to confirm)";
+  return "the stop was refused (" + stopped.error().describe() + "): " + device +
+         " may still move; use the E-STOP or cut its power";
+}
+
+}  // namespace
+
+void PrintRun::watchStop(const PositionerSnapshot& snapshot) {
+  if (!m_awaitingStopConfirmation) return;
+  if (snapshot.stopConfirmed) {
+    m_awaitingStopConfirmation = false;
+    enter(m_state, stepLabel() + ": motion stopped: " + m_positioner.name() + " confirmed the stop");
+  } else if (!m_stopProblemLogged && m_options.steadyNow() - m_stopRequested >= kStopConfirmationWarning) {
+    // Usually the device confirms within milliseconds; longer means the link is down or the stop failed.
+    m_stopProblemLogged = true;
+    const std::string why = !snapshot.problem.empty() ? snapshot.problem
+                            : snapshot.linkUp         ? std::string("no answer yet")
+                                                      : std::string("the link is down");
+    enter(m_state, stepLabel() + ": " + m_positioner.name() + " has not confirmed the stop after " +
+                       std::to_string(kStopConfirmationWarning.count()) + " ms (" + why +
+                       "); it is sent as soon as the link allows; if the device still moves, use the E-STOP");
+  }
+}
+
 void PrintRun::fault(const std::string& problem) {
   m_lastProblem = problem;
-  m_positioner.stopMotion();
-  enter(PrintRunState::Faulted, stepLabel() + ": " + problem + "; fix it, then resume to retry the step or abort");
+  const core::Status stopped = requestStop();
+  enter(PrintRunState::Faulted, stepLabel() + ": " + problem + "; " + stopRequestText(stopped, m_positioner.name()) +
+                                    "; fix it, then resume to retry the step or abort");
 }
 
 void PrintRun::beginMove() {
@@ -104,10 +143,16 @@ core::Status PrintRun::start() {
 core::Status PrintRun::pause() {
   switch (m_state) {
     case PrintRunState::Moving:
-    case PrintRunState::Settling:
-      m_positioner.stopMotion();
-      enter(PrintRunState::Paused, stepLabel() + ": paused, motion stopped");
+    case PrintRunState::Settling: {
+      const core::Status stopped = requestStop();
+      if (!stopped.ok()) {
+        m_lastProblem = "the stop was refused: " + stopped.error().describe();
+        enter(PrintRunState::Faulted, stepLabel() + ": pause: " + stopRequestText(stopped, m_positioner.name()));
+        return stopped;
+      }
+      enter(PrintRunState::Paused, stepLabel() + ": paused; " + stopRequestText(stopped, m_positioner.name()));
       return core::Done{};
+    }
     case PrintRunState::Printing:
       if (!m_pausePending) {
         m_pausePending = true;
@@ -126,6 +171,12 @@ core::Status PrintRun::resume() {
     return core::Done{};
   }
   if (m_state != PrintRunState::Paused && m_state != PrintRunState::Faulted) return refuse("resume");
+  // Resuming is the operator clearing the stop; refused while the device has not confirmed it.
+  watchStop(m_positioner.snapshot());
+  if (core::Status cleared = m_positioner.clearStop(); !cleared.ok())
+    return core::Error{core::ErrorCode::InvalidParameter, "cannot resume yet: " + cleared.error().describe(),
+                       "print run"};
+  m_awaitingStopConfirmation = false;
   enter(m_state, stepLabel() + (m_state == PrintRunState::Faulted ? ": retrying" : ": resuming"));
   beginMove();
   return core::Done{};
@@ -137,7 +188,12 @@ core::Status PrintRun::abort() {
     enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: stop the printer");
     return core::Done{};
   }
-  if (m_state == PrintRunState::Moving || m_state == PrintRunState::Settling) m_positioner.stopMotion();
+  if (m_state == PrintRunState::Moving || m_state == PrintRunState::Settling) {
+    const core::Status stopped = requestStop();
+    if (!stopped.ok()) m_lastProblem = "the stop was refused: " + stopped.error().describe();
+    enter(PrintRunState::Aborted, stepLabel() + ": aborted; " + stopRequestText(stopped, m_positioner.name()));
+    return core::Done{};
+  }
   enter(PrintRunState::Aborted, stepLabel() + ": aborted");
   return core::Done{};
 }
@@ -174,9 +230,10 @@ core::Status PrintRun::regionDone(std::size_t step) {
 }
 
 void PrintRun::tick() {
+  const PositionerSnapshot snapshot = m_positioner.snapshot();
+  watchStop(snapshot);
   if (m_state != PrintRunState::Moving && m_state != PrintRunState::Settling && m_state != PrintRunState::Printing)
     return;
-  const PositionerSnapshot snapshot = m_positioner.snapshot();
   const auto now = m_options.steadyNow();
   if (m_state == PrintRunState::Printing) {
     if ((snapshot.faulted || !snapshot.linkUp) && !m_faultLoggedWhilePrinting) {

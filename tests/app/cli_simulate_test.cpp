@@ -35,4 +35,15 @@ TEST(CliSimulate, ListensOnLoopbackAndStopsCleanlyOnSigint) {
   EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
 }
 
+// Issue 14: binding an address of another machine said "choose another port".
+TEST(CliSimulate, ListenAddressOfAnotherMachineGivesTheRealReason) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulate.ForeignAddress");
+  const CliRun run = runCli("simulate --listen 192.0.2.1 --port 0", dir, "timeout --preserve-status -s INT 5");
+  EXPECT_EQ(run.exitCode, 1) << run.err;
+  EXPECT_NE(run.err.find("cannot assign requested address: 192.0.2.1 is not an address of this machine"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(run.err.find("choose another port"), std::string::npos) << run.err;
+}
+
 }  // namespace

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <string>
 #include <vector>
 
 namespace multidir::hardware {
@@ -10,11 +12,16 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// A positioner the test moves by hand.
+// A positioner the test moves by hand. Its stop latches like the drivers' (moves refused until clearStop,
+// which is refused until the stop is confirmed) and, depending on stopMode, is confirmed at once, waits
+// (as during a link outage) until the test calls confirmStop(), or is refused.
 class FakePositioner : public Positioner {
  public:
+  enum class StopMode { ConfirmedAtOnce, WaitsForTheLink, Refused };
+
   core::Status startMove(const PlatformOrientation& target) override {
     moves.push_back(target);
+    if (state.stopLatched) return core::Error{core::ErrorCode::InvalidParameter, "a stop is latched", "fake"};
     if (refuseNext) {
       refuseNext = false;
       return core::Error{core::ErrorCode::InvalidParameter, "not homed", "fake"};
@@ -25,8 +32,23 @@ class FakePositioner : public Positioner {
   }
   core::Status stopMotion() override {
     ++stops;
-    state.moving = false;
+    if (stopMode == StopMode::Refused)
+      return core::Error{core::ErrorCode::InvalidParameter, "not connected: the stop was not sent", "fake"};
+    state.stopLatched = true;
+    state.stopConfirmed = false;
+    if (stopMode == StopMode::ConfirmedAtOnce) confirmStop();
     return core::Done{};
+  }
+  core::Status clearStop() override {
+    if (state.stopLatched && !state.stopConfirmed)
+      return core::Error{core::ErrorCode::InvalidParameter, "the stop is not confirmed yet", "fake"};
+    state.stopLatched = false;
+    state.stopConfirmed = false;
+    return core::Done{};
+  }
+  void confirmStop() {
+    state.stopConfirmed = true;
+    state.moving = false;
   }
   PositionerSnapshot snapshot() const override { return state; }
   std::string name() const override { return "fake platform"; }
@@ -39,8 +61,18 @@ class FakePositioner : public Positioner {
   std::vector<PlatformOrientation> moves;
   int stops = 0;
   bool refuseNext = false;
-  PositionerSnapshot state{true, false, false, false, ""};
+  StopMode stopMode = StopMode::ConfirmedAtOnce;
+  PositionerSnapshot state = [] {
+    PositionerSnapshot s;
+    s.linkUp = true;
+    return s;
+  }();
 };
+
+bool logMentions(const PrintRun& run, const std::string& text) {
+  return std::any_of(run.log().begin(), run.log().end(),
+                     [&](const PrintRunLogEntry& e) { return e.message.find(text) != std::string::npos; });
+}
 
 class PrintRunTest : public ::testing::Test {
  protected:
@@ -251,6 +283,99 @@ TEST_F(PrintRunTest, EveryTransitionIsLoggedWithTheClocksTime) {
   EXPECT_EQ(seen[2].elapsed, 510ms);
   EXPECT_NE(seen[2].message.find("step 1/3 (region_1.stl, rotary 0.00 deg)"), std::string::npos) << seen[2].message;
   EXPECT_EQ(run.log().size(), seen.size());
+}
+
+TEST_F(PrintRunTest, PauseLogsMotionStoppedOnlyOnceTheDeviceConfirmsTheStop) {
+  device.stopMode = FakePositioner::StopMode::WaitsForTheLink;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.pause().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+  for (int i = 0; i < 5; ++i) advance(100ms, run);
+  EXPECT_FALSE(logMentions(run, "motion stopped")) << run.log().back().message;
+  EXPECT_TRUE(logMentions(run, "waiting for it to confirm"));
+  device.confirmStop();
+  advance(10ms, run);
+  EXPECT_NE(run.log().back().message.find("motion stopped: fake platform confirmed the stop"), std::string::npos)
+      << run.log().back().message;
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+}
+
+TEST_F(PrintRunTest, StopStillUnconfirmedAfterASecondIsLoggedOnceAsAWarning) {
+  device.stopMode = FakePositioner::StopMode::WaitsForTheLink;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.pause().ok());
+  device.state.linkUp = false;
+  advance(900ms, run);
+  EXPECT_FALSE(logMentions(run, "has not confirmed the stop"));
+  advance(200ms, run);
+  EXPECT_NE(run.log().back().message.find("fake platform has not confirmed the stop after 1000 ms (the link is down)"),
+            std::string::npos)
+      << run.log().back().message;
+  const std::size_t entries = run.log().size();
+  for (int i = 0; i < 5; ++i) advance(1s, run);
+  EXPECT_EQ(run.log().size(), entries);
+}
+
+TEST_F(PrintRunTest, ResumeIsRefusedUntilTheDeviceConfirmedTheStop) {
+  device.stopMode = FakePositioner::StopMode::WaitsForTheLink;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.pause().ok());
+  const core::Status early = run.resume();
+  ASSERT_FALSE(early.ok());
+  EXPECT_NE(early.error().message.find("cannot resume yet"), std::string::npos) << early.error().message;
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+  EXPECT_EQ(device.moves.size(), 1u);
+  device.confirmStop();
+  ASSERT_TRUE(run.resume().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Moving);
+  EXPECT_EQ(device.moves.size(), 2u);
+  EXPECT_FALSE(device.state.stopLatched);
+  EXPECT_TRUE(logMentions(run, "motion stopped"));  // told before the retry, not skipped
+}
+
+TEST_F(PrintRunTest, RefusedStopOnPauseFaultsTheRunAndSaysToUseTheEStop) {
+  device.stopMode = FakePositioner::StopMode::Refused;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  const core::Status paused = run.pause();
+  ASSERT_FALSE(paused.ok());
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
+  EXPECT_NE(run.log().back().message.find("the stop was refused"), std::string::npos) << run.log().back().message;
+  EXPECT_NE(run.log().back().message.find("E-STOP"), std::string::npos);
+  EXPECT_NE(run.lastProblem().find("not connected"), std::string::npos) << run.lastProblem();
+  advance(100ms, run);
+  EXPECT_FALSE(logMentions(run, "motion stopped"));
+}
+
+TEST_F(PrintRunTest, AbortWithARefusedStopIsFinalButSaysTheDeviceMayStillMove) {
+  device.stopMode = FakePositioner::StopMode::Refused;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.abort().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Aborted);
+  EXPECT_NE(run.log().back().message.find("may still move"), std::string::npos) << run.log().back().message;
+  EXPECT_FALSE(logMentions(run, "motion stopped"));
+}
+
+TEST_F(PrintRunTest, LinkLossFaultLogsTheStopOnlyWhenTheDeviceConfirmsItAfterReconnecting) {
+  device.stopMode = FakePositioner::StopMode::WaitsForTheLink;
+  PrintRun run(device, threeSteps(), options());
+  ASSERT_TRUE(run.start().ok());
+  device.state.linkUp = false;
+  advance(10ms, run);
+  ASSERT_EQ(run.state(), PrintRunState::Faulted);
+  EXPECT_EQ(device.stops, 1);
+  EXPECT_TRUE(device.state.stopLatched);
+  advance(300ms, run);
+  EXPECT_FALSE(logMentions(run, "motion stopped"));
+  device.state.linkUp = true;
+  device.confirmStop();
+  advance(10ms, run);
+  EXPECT_TRUE(logMentions(run, "motion stopped"));
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
 }
 
 }  // namespace

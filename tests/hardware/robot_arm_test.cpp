@@ -119,7 +119,41 @@ TEST_F(RobotArmTest, EmergencyStopHaltsUntilTheFaultIsCleared) {
   EXPECT_NE(refused.error().message.find("halted"), std::string::npos) << refused.error().message;
   ASSERT_TRUE(outcome(arm->clearFault()).ok());
   ASSERT_TRUE(eventually([&] { return arm->status().state == RobotProgramState::Idle; }));
+  const core::Status latched = outcome(arm->moveTo(10.0, 10.0));
+  ASSERT_FALSE(latched.ok());
+  EXPECT_NE(latched.error().message.find("emergency stop the operator asked for is latched"), std::string::npos)
+      << latched.error().message;
+  ASSERT_TRUE(arm->clearStop().ok());
   EXPECT_TRUE(outcome(arm->moveTo(10.0, 10.0)).ok());
+}
+
+// Issue 14: an e-stop asked for during a short outage used to be dropped and the arm went on to 60 degrees.
+TEST_F(RobotArmTest, EmergencyStopDuringAShortOutageIsSentFirstOnReconnectAndTheArmNeverMovesAfterIt) {
+  options.speedPercent = 5;                  // 18 degrees/s: 0 -> 60 takes 3.3 s
+  options.programHeartbeatTimeout = 1000ms;  // longer than the outage: only the e-stop can stop it
+  auto arm = connected();
+  ASSERT_TRUE(outcome(arm->moveTo(60.0, 0.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));
+  sim.dropConnections(400ms);
+  ASSERT_TRUE(eventually([&] { return arm->status().link == LinkState::Reconnecting; }));
+
+  auto estop = arm->emergencyStop();
+  EXPECT_FALSE(readyAtOnce(estop));
+  EXPECT_FALSE(arm->clearStop().ok());
+  const core::Status stopped = outcome(std::move(estop));
+  ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 5; }));  // halted
+  const double stoppedAt = sim.robotState().tiltDegrees;
+  EXPECT_LT(stoppedAt, 50.0);
+  const auto polls = arm->status().polls;
+  ASSERT_TRUE(eventually([&] { return arm->status().polls > polls + 20; }));
+  EXPECT_DOUBLE_EQ(sim.robotState().tiltDegrees, stoppedAt);
+  EXPECT_EQ(arm->status().stop.kind, StopKind::EmergencyStop);
+  EXPECT_TRUE(arm->status().stop.confirmed);
+  ASSERT_TRUE(outcome(arm->clearFault()).ok());
+  ASSERT_TRUE(eventually([&] { return arm->status().state == RobotProgramState::Idle; }));
+  EXPECT_FALSE(outcome(arm->moveTo(10.0, 0.0)).ok());  // still latched: the reset alone does not allow moves
+  EXPECT_DOUBLE_EQ(sim.robotState().tiltDegrees, stoppedAt);
 }
 
 TEST_F(RobotArmTest, ExceptionReplyFromTheRobotIsReported) {

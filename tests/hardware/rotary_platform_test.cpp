@@ -234,6 +234,84 @@ TEST_F(RotaryPlatformTest, ControllerThatStopsEchoingTheHeartbeatIsReportedAndMo
   EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), writes);
 }
 
+// Issue 14: a stop asked for while the link was down used to be dropped ("not sent ... reconnecting") and
+// the platform finished its move to 60 degrees after the reconnect.
+TEST_F(RotaryPlatformTest, StopDuringAShortOutageIsLatchedSentFirstOnReconnectAndThePlatformNeverMovesAfterIt) {
+  options.speedDegreesPerSecond = 20.0;  // 10 -> 60 degrees takes 2.5 s
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->moveTo(10.0)).ok());
+  ASSERT_TRUE(eventually([&] { return platform->reached(10.0); }));
+  ASSERT_TRUE(outcome(platform->moveTo(60.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  sim.dropConnections(400ms);  // shorter than the controller's 1000 ms heartbeat timeout
+  ASSERT_TRUE(eventually([&] { return platform->status().link == LinkState::Reconnecting; }));
+
+  auto stop = platform->stop();
+  EXPECT_FALSE(readyAtOnce(stop));  // not "not sent": it waits for the link
+  EXPECT_TRUE(platform->status().stop.latched());
+  EXPECT_FALSE(platform->status().stop.confirmed);
+  const core::Status early = platform->clearStop();
+  ASSERT_FALSE(early.ok());
+  EXPECT_NE(early.error().message.find("has not confirmed it"), std::string::npos) << early.error().message;
+
+  const core::Status stopped = outcome(std::move(stop));
+  ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
+  EXPECT_FALSE(sim.rotaryState().moving);
+  const double stoppedAt = sim.rotaryState().angleDegrees;
+  EXPECT_LT(stoppedAt, 50.0);
+  // Twenty polls later it still stands there, and moves are refused until the operator clears the stop.
+  const auto polls = platform->status().polls;
+  ASSERT_TRUE(eventually([&] { return platform->status().polls > polls + 20; }));
+  EXPECT_DOUBLE_EQ(sim.rotaryState().angleDegrees, stoppedAt);
+  EXPECT_TRUE(platform->status().stop.confirmed);
+  EXPECT_EQ(platform->status().stop.kind, StopKind::Stop);
+  auto refused = platform->moveTo(20.0);
+  ASSERT_TRUE(readyAtOnce(refused));
+  const core::Status refusal = refused.get();
+  ASSERT_FALSE(refusal.ok());
+  EXPECT_NE(refusal.error().message.find("stop the operator asked for is latched"), std::string::npos)
+      << refusal.error().message;
+  EXPECT_DOUBLE_EQ(sim.rotaryState().angleDegrees, stoppedAt);
+
+  ASSERT_TRUE(platform->clearStop().ok());
+  ASSERT_TRUE(outcome(platform->moveTo(20.0)).ok());
+  EXPECT_TRUE(eventually([&] { return platform->reached(20.0); }));
+}
+
+TEST_F(RotaryPlatformTest, StopAskedForBeforeConnectingIsWrittenDuringTheConnectBeforeTheFirstPoll) {
+  RotaryPlatform platform(options);
+  auto stop = platform.stop();
+  ASSERT_TRUE(readyAtOnce(stop));
+  const core::Status status = stop.get();
+  ASSERT_FALSE(status.ok());
+  EXPECT_NE(status.error().message.find("stays latched and is sent first when you connect"), std::string::npos)
+      << status.error().message;
+  EXPECT_TRUE(platform.status().stop.latched());
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), 0u);
+  ASSERT_TRUE(platform.connect().ok());  // returns after the first attempt: open, stop, configure, poll
+  EXPECT_EQ(platform.status().stop.writes, 1u);
+  EXPECT_TRUE(platform.status().stop.confirmed);
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), 1u);
+}
+
+TEST_F(RotaryPlatformTest, LatchedStopIsWrittenAgainAfterEveryReconnect) {
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->stop()).ok());
+  ASSERT_EQ(platform->status().stop.writes, 1u);
+  sim.dropConnections(50ms);
+  ASSERT_TRUE(eventually([&] { return platform->status().stop.writes >= 2; }));
+  EXPECT_TRUE(eventually([&] { return platform->status().link == LinkState::Connected; }));
+  EXPECT_TRUE(platform->status().stop.confirmed);
+}
+
+TEST_F(RotaryPlatformTest, EmergencyStopIsNotDowngradedByALaterStop) {
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->emergencyStop()).ok());
+  ASSERT_TRUE(outcome(platform->stop()).ok());
+  EXPECT_EQ(platform->status().stop.kind, StopKind::EmergencyStop);
+  EXPECT_EQ(sim.rotaryState().faultCode, 5);
+}
+
 TEST_F(RotaryPlatformTest, BadOptionsAreRefusedWithoutStartingAnything) {
   options.machine.kind = core::MachineKind::TiltRotate;
   RotaryPlatform platform(options);

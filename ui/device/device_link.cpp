@@ -292,6 +292,9 @@ void DeviceLink::emergencyStop() {
 void DeviceLink::clearFault() {
   const QString name = tr("Clear fault");
   if (!m_session) return reportNotConnected(name);
+  // Also the operator clearing a latched stop or e-stop (docs/hardware.md): refused until the device confirmed it.
+  const core::Status cleared = m_session->rotary ? m_session->rotary->clearStop() : m_session->robot->clearStop();
+  if (!cleared.ok()) return report(name, cleared);
   submit(name, m_session->rotary ? m_session->rotary->clearFault() : m_session->robot->clearFault());
 }
 

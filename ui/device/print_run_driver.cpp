@@ -116,11 +116,10 @@ void PrintRunDriver::tick() {
 void PrintRunDriver::afterEvent() {
   const hardware::PrintRunState state = m_run->state();
   const bool active = !isFinal(state);
-  if (active && !m_timer.isActive()) m_timer.start();
-  if (!active) {
-    m_timer.stop();
-    if (!isFinal(m_lastState)) m_frozenElapsed = std::chrono::milliseconds(m_clock.elapsed());
-  }
+  // An aborted run keeps ticking until the device confirmed the stop, so that the log says when it did.
+  if ((active || m_run->stopUnconfirmed()) && !m_timer.isActive()) m_timer.start();
+  if (!active && !m_run->stopUnconfirmed()) m_timer.stop();
+  if (!active && !isFinal(m_lastState)) m_frozenElapsed = std::chrono::milliseconds(m_clock.elapsed());
   const int region = active ? static_cast<int>(m_run->currentStep()) : -1;
   if (state != m_lastState) {
     m_lastState = state;

@@ -4,8 +4,12 @@
 // commands that send nothing. A driver supplies only what is its own: the register map, how it reads its
 // status (poll), what it writes after each (re)connect and which status flag says the device itself is alive.
 //
-// Threads: status(), update(), setStatusCallback(), refuse...() and requireLink() may be called from any
-// thread; the hooks, publish() after a poll and the port helpers run on the worker thread.
+// The stop latch (stop_latch.h) lives in the worker; status() reports it in StatusT::stop, so every driver's
+// status has a `StopLatch stop` field.
+//
+// Threads: status(), update(), setStatusCallback(), refuse...(), requireLink(), latchStop(), clearStop() and
+// refuseWhileStopLatched() may be called from any thread; the hooks, publish() after a poll and the port
+// helpers run on the worker thread.
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -57,8 +61,32 @@ class DriverLink {
   [[nodiscard]] const std::string& name() const { return m_label; }
 
   [[nodiscard]] StatusT status() const {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_status;
+    StatusT snapshot;
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      snapshot = m_status;
+    }
+    snapshot.stop = m_worker.stopLatch();
+    return snapshot;
+  }
+
+  // The status callback hears of a latch change from the worker thread (after the write, or at once while
+  // the link is down); a cleared latch shows in the next poll.
+  std::future<core::Status> latchStop(StopKind kind, LinkWorker::Command command, const std::string& what) {
+    return m_worker.latchStop(kind, std::move(command), what);
+  }
+  core::Status clearStop() { return m_worker.clearStop(); }
+
+  // A move (`what`: "move", "home") refused because a stop is latched; Done when none is. Checked on the
+  // caller's thread and again on the worker's just before the move is written.
+  [[nodiscard]] core::Status refuseWhileStopLatched(const std::string& what) const {
+    const StopLatch stop = m_worker.stopLatch();
+    if (!stop.latched()) return core::Done{};
+    std::string message =
+        "cannot " + what + ": the " + std::string(stopKindName(stop.kind)) + " the operator asked for is latched";
+    message +=
+        stop.confirmed ? "; clear the stop first" : " and not yet confirmed by the device (" + stop.problem + ")";
+    return refuse(message);
   }
 
   // Runs change(status) under the status mutex; the driver keeps the fields it updates together with the
@@ -131,6 +159,7 @@ class DriverLink {
       if (!result.ok()) noteError(result.error().message);
       return result;
     };
+    hooks.stopLatchChanged = [this] { publish(); };
     hooks.linkChanged = [this](LinkState state, const std::string& problem) {
       update([&](StatusT& s) {
         s.link = state;

@@ -69,6 +69,129 @@ std::future<core::Status> LinkWorker::submit(Command command, bool urgent, const
   return future;
 }
 
+std::future<core::Status> LinkWorker::latchStop(StopKind kind, Command command, const std::string& what) {
+  std::promise<core::Status> promise;
+  std::future<core::Status> future = promise.get_future();
+  std::deque<Pending> cancelled;
+  bool running = false;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    running = m_running && !m_stopRequested;
+    if (!(m_stop.kind == StopKind::EmergencyStop && kind == StopKind::Stop)) {
+      m_stop.kind = kind;
+      m_stopCommand = std::move(command);
+      m_stopWhat = what;
+    }
+    m_stop.confirmed = false;
+    if (!running)
+      m_stop.problem =
+          m_label + " is not connected: the " + stopKindName(m_stop.kind) + " is sent first when you connect";
+    else if (!m_linkUp)
+      m_stop.problem =
+          m_label + " is reconnecting: the " + stopKindName(m_stop.kind) + " is sent first when the link is back";
+    else
+      m_stop.problem = "the " + std::string(stopKindName(m_stop.kind)) + " is being written to " + m_label;
+    m_stopDue = true;
+    m_stopWake = true;
+    ++m_stopGeneration;
+    if (running) m_stopWaiters.emplace_back(m_stopGeneration, std::move(promise));
+    cancelled.swap(m_queue);
+  }
+  for (Pending& queued : cancelled)
+    queued.promise.set_value(core::Error{core::ErrorCode::Cancelled,
+                                         queued.what + " was cancelled by " + what + " before it was sent", m_label});
+  if (!running) {
+    promise.set_value(core::Error{
+        core::ErrorCode::InvalidParameter,
+        m_label + " is not connected: " + what + " was not sent; it stays latched and is sent first when you connect",
+        m_label});
+    return future;
+  }
+  m_wake.notify_all();
+  return future;
+}
+
+core::Status LinkWorker::clearStop() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  if (!m_stop.latched()) return core::Done{};
+  if (!m_stop.confirmed)
+    return core::Error{core::ErrorCode::InvalidParameter,
+                       m_label + ": the " + stopKindName(m_stop.kind) +
+                           " cannot be cleared yet: the device has not confirmed it (" + m_stop.problem +
+                           "); wait until the link is back and the device took it",
+                       m_label};
+  m_stop = StopLatch{};
+  m_stopCommand = nullptr;
+  m_stopWhat.clear();
+  m_stopDue = false;
+  return core::Done{};
+}
+
+StopLatch LinkWorker::stopLatch() const {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  return m_stop;
+}
+
+core::Status LinkWorker::sendLatchedStop() {
+  Command command;
+  std::uint64_t generation = 0;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (!m_stop.latched()) return core::Done{};
+    command = m_stopCommand;
+    generation = m_stopGeneration;
+    m_stopDue = false;
+  }
+  core::Status result = command(m_port);
+  const bool linkFailure = !result.ok() && m_port.lastFailureBreaksLink();
+  std::vector<std::promise<core::Status>> settled;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_stop.latched()) {  // the operator may have cleared it while it was written again
+      if (result.ok()) {
+        ++m_stop.writes;
+        m_stopSentGeneration = std::max(m_stopSentGeneration, generation);
+        if (m_stopSentGeneration == m_stopGeneration) {
+          m_stop.confirmed = true;
+          m_stop.problem.clear();
+        }
+      } else {
+        if (!m_stop.confirmed) m_stop.problem = result.error().message;
+        // A lost link is no answer: the stop is written again after the reconnect. A refusal is an answer.
+        if (linkFailure) m_stopDue = true;
+      }
+    }
+    if (result.ok() || !linkFailure) {
+      for (auto it = m_stopWaiters.begin(); it != m_stopWaiters.end();) {
+        if (it->first > generation) {
+          ++it;
+          continue;
+        }
+        settled.push_back(std::move(it->second));
+        it = m_stopWaiters.erase(it);
+      }
+    }
+  }
+  for (std::promise<core::Status>& promise : settled) promise.set_value(result);
+  if (m_hooks.stopLatchChanged) m_hooks.stopLatchChanged();
+  return result;
+}
+
+void LinkWorker::cancelStopWaiters(const std::string& why) {
+  std::vector<std::pair<std::uint64_t, std::promise<core::Status>>> waiters;
+  std::string what;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    waiters.swap(m_stopWaiters);
+    what = m_stopWhat;
+    if (m_stop.latched() && !m_stop.confirmed) m_stop.problem = why;
+  }
+  for (auto& waiter : waiters)
+    waiter.second.set_value(core::Error{
+        core::ErrorCode::Cancelled,
+        what + " was not confirmed: " + why + "; it stays latched and is sent first when you connect again", m_label});
+}
+
 void LinkWorker::failQueued(const core::Error& error) {
   std::deque<Pending> failed;
   {
@@ -79,15 +202,32 @@ void LinkWorker::failQueued(const core::Error& error) {
     pending.promise.set_value(core::Error{error.code, pending.what + " was not sent: " + error.message, error.where});
 }
 
-void LinkWorker::waitUntil(Clock::time_point deadline) {
+bool LinkWorker::waitUntil(Clock::time_point deadline, bool linkUp) {
   std::unique_lock<std::mutex> lock(m_mutex);
-  m_wake.wait_until(lock, deadline, [this] { return m_stopRequested || !m_queue.empty(); });
+  // Link up: a due stop is written at once. Link down: a new stop request cuts the backoff short.
+  m_wake.wait_until(lock, deadline, [this, linkUp] {
+    return m_stopRequested || !m_queue.empty() || (linkUp ? m_stopDue && m_stop.latched() : m_stopWake);
+  });
+  const bool newStop = m_stopWake;
+  m_stopWake = false;
+  return newStop;
 }
 
 void LinkWorker::linkBroken(const std::string& problem) {
   m_port.close();
-  m_backoff = m_backoff.count() == 0 ? m_settings.reconnectInitialDelay
-                                     : std::min(m_backoff * 2, m_settings.reconnectMaxDelay);
+  bool stopWaiting = false;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_linkUp = false;
+    if (m_stop.latched() && !m_stop.confirmed) {
+      stopWaiting = true;
+      m_stop.problem =
+          "the link is down (" + problem + "); the " + stopKindName(m_stop.kind) + " is sent first when it is back";
+    }
+  }
+  // An unconfirmed stop keeps the retries at the shortest delay.
+  m_backoff = m_backoff.count() == 0 || stopWaiting ? m_settings.reconnectInitialDelay
+                                                    : std::min(m_backoff * 2, m_settings.reconnectMaxDelay);
   m_nextAttempt = Clock::now() + m_backoff;
   if (m_hooks.linkChanged) m_hooks.linkChanged(LinkState::Reconnecting, problem);
   // Commands are never replayed after a reconnect: the situation they were meant for may have changed.
@@ -96,10 +236,20 @@ void LinkWorker::linkBroken(const std::string& problem) {
 
 bool LinkWorker::tryConnect() {
   core::Status status = m_port.open();
+  // A latched stop goes first, before the heartbeat or anything else: the device may still be finishing the
+  // move the stop was meant to end. Only a lost link fails the attempt; a refusal was reported to the caller.
+  if (status.ok() && stopLatch().latched()) {
+    core::Status stopped = sendLatchedStop();
+    if (!stopped.ok() && m_port.lastFailureBreaksLink()) status = stopped;
+  }
   if (status.ok() && m_hooks.onConnected) status = m_hooks.onConnected(m_port);
   if (status.ok() && m_hooks.poll) status = m_hooks.poll(m_port);
   if (status.ok()) {
     m_backoff = std::chrono::milliseconds(0);
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_linkUp = true;
+    }
     if (m_hooks.linkChanged) m_hooks.linkChanged(LinkState::Connected, "");
   } else {
     linkBroken(status.error().message);
@@ -132,12 +282,27 @@ void LinkWorker::run() {
       if (Clock::now() < m_nextAttempt) {
         failQueued(core::Error{core::ErrorCode::DeviceUnreachable,
                                m_label + " is reconnecting: wait until the link is back", m_label});
-        waitUntil(m_nextAttempt);
+        // A stop asked for while the link is down: try to reconnect now rather than after the backoff.
+        if (waitUntil(m_nextAttempt, false)) {
+          m_nextAttempt = Clock::now();
+          if (m_hooks.stopLatchChanged) m_hooks.stopLatchChanged();
+        }
         continue;
       }
       if (!tryConnect()) continue;
       nextPoll = Clock::now() + m_settings.pollInterval;
       nextHeartbeat = Clock::now();
+    }
+
+    bool stopDue = false;
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      stopDue = m_stopDue && m_stop.latched();
+    }
+    if (stopDue) {
+      core::Status result = sendLatchedStop();
+      if (!result.ok() && m_port.lastFailureBreaksLink()) linkBroken(result.error().message);
+      continue;
     }
 
     std::optional<Pending> pending;
@@ -173,10 +338,15 @@ void LinkWorker::run() {
         continue;
       }
     }
-    waitUntil(std::min(nextPoll, nextHeartbeat));
+    waitUntil(std::min(nextPoll, nextHeartbeat), true);
   }
   m_port.close();
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_linkUp = false;
+  }
   failQueued(core::Error{core::ErrorCode::Cancelled, m_label + " was disconnected", m_label});
+  cancelStopWaiters(m_label + " was disconnected");
   {
     std::lock_guard<std::mutex> lock(m_mutex);
     if (!m_firstAttemptDone) {

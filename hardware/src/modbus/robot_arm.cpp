@@ -92,11 +92,13 @@ class RobotArm::Impl {
       return readyFuture(m_link.refuse(std::string("cannot move: the program is ") +
                                        robotProgramStateName(now.state) + " (fault code " +
                                        std::to_string(now.faultCode) + "); clear the fault first"));
+    if (auto ok = m_link.refuseWhileStopLatched("move"); !ok.ok()) return readyFuture(ok);
     const std::uint16_t speed = static_cast<std::uint16_t>(m_options.speedPercent);
     const std::uint16_t tilt = regs::degreesToInt16Register(tiltDegrees);
     const std::uint16_t az = regs::degreesToInt16Register(azimuth);
     return m_link.submit(
         [this, tilt, az, speed, tiltDegrees, azimuth](ModbusPort& port) {
+          if (auto ok = m_link.refuseWhileStopLatched("move"); !ok.ok()) return ok;
           return sendCommand(port, rb::kCmdMove, {tilt, az, speed},
                              "the move to tilt " + degreesText(tiltDegrees) + ", azimuth " + degreesText(azimuth) +
                                  " degrees (registers 128-132)");
@@ -104,8 +106,9 @@ class RobotArm::Impl {
         false, "move to tilt " + degreesText(tiltDegrees) + ", azimuth " + degreesText(azimuth) + " degrees");
   }
 
-  std::future<core::Status> stop() { return simple(rb::kCmdStop, "stop", true); }
-  std::future<core::Status> emergencyStop() { return simple(rb::kCmdHalt, "emergency stop", true); }
+  std::future<core::Status> stop() { return latch(StopKind::Stop, rb::kCmdStop, "stop"); }
+  std::future<core::Status> emergencyStop() { return latch(StopKind::EmergencyStop, rb::kCmdHalt, "emergency stop"); }
+  core::Status clearStop() { return m_link.clearStop(); }
   std::future<core::Status> clearFault() { return simple(rb::kCmdReset, "reset", false); }
 
   RobotStatus status() const { return m_link.status(); }
@@ -138,6 +141,21 @@ class RobotArm::Impl {
           return sendCommand(port, code, {}, "the " + what + " command (registers 131-132)");
         },
         isUrgent, what);
+  }
+
+  // The latched command reads the sequence the program holds first (the program may have restarted while
+  // the link was down), so that the stop is a new command to it.
+  std::future<core::Status> latch(StopKind kind, std::uint16_t code, const std::string& what) {
+    return m_link.latchStop(
+        kind,
+        [this, code, what](ModbusPort& port) {
+          std::uint16_t seq = 0;
+          auto result = port.readRegisters(rb::kSequence, 1, &seq, "the command sequence (register 132)");
+          if (!result.ok()) return result;
+          m_sequence = seq;
+          return sendCommand(port, code, {}, "the " + what + " command (registers 131-132)");
+        },
+        what);
   }
 
   // Worker thread: writes the request values (from register 128), the command and a new sequence number in
@@ -248,6 +266,7 @@ std::future<core::Status> RobotArm::moveTo(double tiltDegrees, double azimuthDeg
 }
 std::future<core::Status> RobotArm::stop() { return m_impl->stop(); }
 std::future<core::Status> RobotArm::emergencyStop() { return m_impl->emergencyStop(); }
+core::Status RobotArm::clearStop() { return m_impl->clearStop(); }
 std::future<core::Status> RobotArm::clearFault() { return m_impl->clearFault(); }
 RobotStatus RobotArm::status() const { return m_impl->status(); }
 bool RobotArm::reached(double tiltDegrees, double azimuthDegrees) const {

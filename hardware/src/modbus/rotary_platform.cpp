@@ -86,8 +86,10 @@ class RotaryPlatform::Impl {
       return readyFuture(m_link.refuse(std::string("cannot home while in fault (") + rotaryFaultName(now.fault) +
                                        "): clear the fault first"));
     if (!now.enabled) return readyFuture(m_link.refuse("cannot home: the drive is not enabled; enable it first"));
+    if (auto ok = m_link.refuseWhileStopLatched("home"); !ok.ok()) return readyFuture(ok);
     return m_link.submit(
         [this](ModbusPort& port) {
+          if (auto ok = m_link.refuseWhileStopLatched("home"); !ok.ok()) return ok;
           auto result = port.writeRegisters(rr::kCommand, {rr::kCmdHome}, "the home command (register 3)");
           if (result.ok()) expectMotion(0.0);
           return result;
@@ -107,6 +109,7 @@ class RotaryPlatform::Impl {
       return readyFuture(
           m_link.refuse("cannot move: the platform is not homed; home it first so angles mean something"));
     if (!now.enabled) return readyFuture(m_link.refuse("cannot move: the drive is not enabled; enable it first"));
+    if (auto ok = m_link.refuseWhileStopLatched("move"); !ok.ok()) return readyFuture(ok);
     if (!now.controllerAlive)
       return readyFuture(m_link.refuse("cannot move: the controller does not echo the heartbeat, so it could not "
                                        "stop on its own if MultiDir went silent; power-cycle it"));
@@ -116,6 +119,7 @@ class RotaryPlatform::Impl {
     values[3] = rr::kCmdMove;
     return m_link.submit(
         [this, values, angleDegrees](ModbusPort& port) {
+          if (auto ok = m_link.refuseWhileStopLatched("move"); !ok.ok()) return ok;
           auto result = port.writeRegisters(rr::kTargetAngle, values, "the move to " + degreesText(angleDegrees) +
                                                                           " degrees (registers 0-3)");
           if (result.ok()) expectMotion(angleDegrees);
@@ -124,8 +128,9 @@ class RotaryPlatform::Impl {
         false, "move to " + degreesText(angleDegrees) + " degrees");
   }
 
-  std::future<core::Status> stop() { return urgent(rr::kCmdStop, "stop"); }
-  std::future<core::Status> emergencyStop() { return urgent(rr::kCmdEStop, "emergency stop"); }
+  std::future<core::Status> stop() { return latch(StopKind::Stop, rr::kCmdStop, "stop"); }
+  std::future<core::Status> emergencyStop() { return latch(StopKind::EmergencyStop, rr::kCmdEStop, "emergency stop"); }
+  core::Status clearStop() { return m_link.clearStop(); }
 
   RotaryStatus status() const { return m_link.status(); }
 
@@ -151,9 +156,14 @@ class RotaryPlatform::Impl {
         isUrgent, what);
   }
 
-  std::future<core::Status> urgent(std::uint16_t code, const std::string& what) {
+  std::future<core::Status> latch(StopKind kind, std::uint16_t code, const std::string& what) {
     m_link.update([this](RotaryStatus&) { m_motionExpected = false; });
-    return command(code, what, true);
+    return m_link.latchStop(
+        kind,
+        [code, what](ModbusPort& port) {
+          return port.writeRegisters(rr::kCommand, {code}, "the " + what + " command (register 3)");
+        },
+        what);
   }
 
   // Worker thread.
@@ -275,6 +285,7 @@ std::future<core::Status> RotaryPlatform::home() { return m_impl->home(); }
 std::future<core::Status> RotaryPlatform::moveTo(double angleDegrees) { return m_impl->moveTo(angleDegrees); }
 std::future<core::Status> RotaryPlatform::stop() { return m_impl->stop(); }
 std::future<core::Status> RotaryPlatform::emergencyStop() { return m_impl->emergencyStop(); }
+core::Status RotaryPlatform::clearStop() { return m_impl->clearStop(); }
 std::future<core::Status> RotaryPlatform::clearFault() { return m_impl->clearFault(); }
 RotaryStatus RotaryPlatform::status() const { return m_impl->status(); }
 bool RotaryPlatform::reached(double angleDegrees) const { return m_impl->reached(angleDegrees); }

@@ -1,16 +1,14 @@
 #include "multidir/hardware/device_simulator.h"
 
 #include <arpa/inet.h>
-#include <modbus.h>
 #include <netinet/in.h>
-#include <sys/select.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
-#include <cstring>
 #include <deque>
 #include <mutex>
 #include <optional>
@@ -18,6 +16,8 @@
 #include <vector>
 
 #include "modbus/register_maps.h"
+#include "sim/listen_socket.h"
+#include "sim/modbus_tcp_frames.h"
 #include "sim/simulated_devices.h"
 
 namespace multidir::hardware {
@@ -29,6 +29,10 @@ using sim::Clock;
 namespace {
 
 constexpr auto kCycle = std::chrono::milliseconds(2);  // the simulated control loop's period (at most)
+constexpr int kBacklog = SOMAXCONN;             // a burst of connections waits for accept() instead of retrying SYNs
+constexpr int kAcceptsPerCycle = 256;           // a burst of connections is refused within a few cycles
+constexpr std::size_t kMaxUnsentBytes = 65536;  // a client that sends requests but never reads replies
+constexpr std::size_t kReceiveChunk = 4096;
 
 core::Error invalid(const std::string& field, const std::string& message) {
   return core::Error{core::ErrorCode::InvalidParameter, message, field};
@@ -51,31 +55,23 @@ class DeviceSimulator::Impl {
     if (m_options.port < 0 || m_options.port > 65535) return invalid("port", "must be between 0 and 65535");
     if (m_options.rotaryUnitId < 0 || m_options.rotaryUnitId > 255)
       return invalid("rotary unit id", "must be between 0 and 255");
+    if (m_options.maxClients < 1 || m_options.maxClients > 1000)
+      return invalid("maximal clients", "must be between 1 and 1000");
+    if (m_options.requestTimeout.count() < 1 || m_options.requestTimeout.count() > 60000)
+      return invalid("request timeout", "must be between 1 and 60000 ms");
 
-    m_context = modbus_new_tcp(m_options.listenAddress.c_str(), m_options.port);
-    m_rotaryMap = modbus_mapping_new_start_address(0, 0, 0, 0, 0, rr::kMapSize, 0, 0);
-    m_robotMap = modbus_mapping_new_start_address(0, 0, 0, 0, rb::kFirst, rb::kCount, 0, 0);
-    if (m_context == nullptr || m_rotaryMap == nullptr || m_robotMap == nullptr) {
-      release();
-      return core::Error{core::ErrorCode::Internal, "the simulator could not allocate its Modbus context", "simulator"};
-    }
-    m_listen = modbus_tcp_listen(m_context, 16);
-    if (m_listen < 0) {
-      const int errnum = errno;
-      release();
-      return core::Error{core::ErrorCode::Internal,
-                         "the simulator cannot listen on " + m_options.listenAddress + ":" +
-                             std::to_string(m_options.port) + ": " + std::strerror(errnum) +
-                             ": choose another port (0 picks a free one) or stop the program using it",
-                         "listen address"};
-    }
+    auto listening = sim::listenTcp(m_options.listenAddress, m_options.port, kBacklog);
+    if (!listening.ok()) return listening.error();
+    m_listen = listening.value();
     sockaddr_in bound{};
     socklen_t length = sizeof(bound);
     if (getsockname(m_listen, reinterpret_cast<sockaddr*>(&bound), &length) == 0) m_port = ntohs(bound.sin_port);
 
     const Clock::time_point now = Clock::now();
-    m_rotary.emplace(m_options, m_rotaryMap->tab_registers, now);
-    m_robot.emplace(m_options, m_robotMap->tab_registers, now);
+    m_rotaryRegs.assign(rr::kMapSize, 0);
+    m_robotRegs.assign(rb::kCount, 0);
+    m_rotary.emplace(m_options, m_rotaryRegs.data(), now);
+    m_robot.emplace(m_options, m_robotRegs.data(), now);
     m_stop = false;
     m_thread = std::thread([this] { run(); });
     return core::Done{};
@@ -85,12 +81,15 @@ class DeviceSimulator::Impl {
     if (!m_thread.joinable()) return;
     m_stop = true;
     m_thread.join();
+    std::lock_guard<std::mutex> lock(m_mutex);
     for (const Client& client : m_clients) ::close(client.fd);
     m_clients.clear();
     m_delayed.clear();
+    m_connections = 0;
     if (m_listen >= 0) ::close(m_listen);
     m_listen = -1;
-    release();
+    m_rotary.reset();
+    m_robot.reset();
   }
 
   bool running() const { return m_thread.joinable() && !m_stop; }
@@ -112,16 +111,13 @@ class DeviceSimulator::Impl {
   }
   void setMotorStuck(bool stuck) {
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_stuck = stuck;
     if (m_rotary) m_rotary->setStuck(stuck);
   }
   void setHeartbeatAnswering(SimulatedDevice device, bool answering) {
     std::lock_guard<std::mutex> lock(m_mutex);
     if (device == SimulatedDevice::Rotary) {
-      m_rotaryEchoing = answering;
       if (m_rotary) m_rotary->setEchoing(answering);
     } else {
-      m_robotAnswering = answering;
       if (m_robot) m_robot->setAnswering(answering);
     }
   }
@@ -146,112 +142,179 @@ class DeviceSimulator::Impl {
     std::lock_guard<std::mutex> lock(m_mutex);
     return m_connections;
   }
+  std::uint64_t refusedConnectionCount() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_refused;
+  }
+  std::uint64_t droppedClientCount() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_dropped;
+  }
 
  private:
   struct Client {
-    int fd;
-    std::uint64_t id;
+    int fd = -1;
+    std::uint64_t id = 0;
+    std::vector<std::uint8_t> received;  // bytes of a request not complete yet
+    std::vector<std::uint8_t> unsent;    // reply bytes the socket did not take yet
+    Clock::time_point requestStarted{};  // when the first byte of `received` arrived
+    bool closing = false;
   };
   struct DelayedRequest {
     std::uint64_t clientId;
-    std::vector<std::uint8_t> request;
+    std::vector<std::uint8_t> frame;
     Clock::time_point due;
   };
 
-  void release() {
-    if (m_context != nullptr) modbus_free(m_context);
-    if (m_rotaryMap != nullptr) modbus_mapping_free(m_rotaryMap);
-    if (m_robotMap != nullptr) modbus_mapping_free(m_robotMap);
-    m_context = nullptr;
-    m_rotaryMap = nullptr;
-    m_robotMap = nullptr;
-    m_rotary.reset();
-    m_robot.reset();
+  Client* findClient(std::uint64_t id) {
+    for (Client& client : m_clients)
+      if (client.id == id) return &client;
+    return nullptr;
   }
 
-  void closeClient(std::size_t index) {
-    ::close(m_clients[index].fd);
-    const std::uint64_t id = m_clients[index].id;
-    m_clients.erase(m_clients.begin() + static_cast<std::ptrdiff_t>(index));
-    m_delayed.erase(std::remove_if(m_delayed.begin(), m_delayed.end(),
-                                   [id](const DelayedRequest& d) { return d.clientId == id; }),
-                    m_delayed.end());
+  void removeClosing() {
+    for (const Client& client : m_clients)
+      if (client.closing) {
+        ::close(client.fd);
+        const std::uint64_t id = client.id;
+        m_delayed.erase(std::remove_if(m_delayed.begin(), m_delayed.end(),
+                                       [id](const DelayedRequest& d) { return d.clientId == id; }),
+                        m_delayed.end());
+      }
+    m_clients.erase(std::remove_if(m_clients.begin(), m_clients.end(), [](const Client& c) { return c.closing; }),
+                    m_clients.end());
+    m_connections = static_cast<int>(m_clients.size());
+  }
+
+  void drop(Client& client) {
+    if (client.closing) return;
+    client.closing = true;
+    ++m_dropped;
   }
 
   void run() {
-    std::vector<std::uint8_t> query(MODBUS_TCP_MAX_ADU_LENGTH);
+    std::vector<pollfd> fds;
     while (!m_stop) {
       {
         std::lock_guard<std::mutex> lock(m_mutex);
         if (m_dropRequested) {
           m_dropRequested = false;
-          while (!m_clients.empty()) closeClient(m_clients.size() - 1);
+          for (Client& client : m_clients) client.closing = true;
+          removeClosing();
         }
         const Clock::time_point now = Clock::now();
         if (m_options.rotary) m_rotary->step(now);
         if (m_options.robot) m_robot->step(now);
-        m_connections = static_cast<int>(m_clients.size());
+        fds.clear();
+        fds.push_back(pollfd{m_listen, static_cast<short>(now < m_acceptPausedUntil ? 0 : POLLIN), 0});
+        for (const Client& client : m_clients)
+          fds.push_back(pollfd{client.fd, static_cast<short>(POLLIN | (client.unsent.empty() ? 0 : POLLOUT)), 0});
       }
-
-      fd_set readable;
-      FD_ZERO(&readable);
-      FD_SET(m_listen, &readable);
-      int highest = m_listen;
-      for (const Client& client : m_clients) {
-        FD_SET(client.fd, &readable);
-        highest = std::max(highest, client.fd);
-      }
-      timeval timeout{0, static_cast<suseconds_t>(std::chrono::microseconds(kCycle).count())};
-      const int ready = select(highest + 1, &readable, nullptr, nullptr, &timeout);
+      const int ready = ::poll(fds.data(), fds.size(), static_cast<int>(kCycle.count()));
       if (ready < 0 && errno != EINTR) break;
 
       std::lock_guard<std::mutex> lock(m_mutex);
-      if (ready > 0 && FD_ISSET(m_listen, &readable)) {
-        int listenSocket = m_listen;
-        const int fd = modbus_tcp_accept(m_context, &listenSocket);
-        if (fd >= 0) {
-          if (Clock::now() < m_refuseUntil)
-            ::close(fd);
-          else
-            m_clients.push_back(Client{fd, ++m_nextClientId});
-        }
-      }
+      const Clock::time_point now = Clock::now();
       if (ready > 0) {
-        // Iterate over a copy of the ids: serving may close clients.
-        std::vector<Client> snapshot = m_clients;
-        for (const Client& client : snapshot) {
-          if (!FD_ISSET(client.fd, &readable)) continue;
-          modbus_set_socket(m_context, client.fd);
-          const int length = modbus_receive(m_context, query.data());
-          if (length < 0) {
-            closeById(client.id);
-            continue;
-          }
-          if (length == 0) continue;
-          const std::vector<std::uint8_t> request(query.begin(), query.begin() + length);
-          countRequest(request);
-          if (m_replyDelay.count() > 0 || !m_delayed.empty()) {
-            m_delayed.push_back(DelayedRequest{client.id, request, Clock::now() + m_replyDelay});
-          } else if (!serve(client, request)) {
-            closeById(client.id);
-          }
+        // fds[i + 1] belongs to m_clients[i]: nothing was added or removed since poll() was set up.
+        for (std::size_t i = 0; i + 1 < fds.size() && i < m_clients.size(); ++i) {
+          Client& client = m_clients[i];
+          if ((fds[i + 1].revents & POLLOUT) != 0) flush(client);
+          if ((fds[i + 1].revents & (POLLIN | POLLHUP | POLLERR)) != 0) receive(client, now);
         }
+        if ((fds[0].revents & POLLIN) != 0) acceptClients(now);
       }
+      for (Client& client : m_clients)
+        if (!client.received.empty() && now - client.requestStarted > m_options.requestTimeout) drop(client);
       while (!m_delayed.empty() && m_delayed.front().due <= Clock::now()) {
         DelayedRequest next = std::move(m_delayed.front());
         m_delayed.pop_front();
-        auto it = std::find_if(m_clients.begin(), m_clients.end(),
-                               [&](const Client& c) { return c.id == next.clientId; });
-        if (it == m_clients.end()) continue;
-        const Client client = *it;
-        if (!serve(client, next.request)) closeById(client.id);
+        if (Client* client = findClient(next.clientId); client != nullptr && !client->closing)
+          answer(*client, next.frame);
       }
+      removeClosing();
     }
   }
 
-  void closeById(std::uint64_t id) {
-    for (std::size_t i = 0; i < m_clients.size(); ++i)
-      if (m_clients[i].id == id) return closeClient(i);
+  void acceptClients(Clock::time_point now) {
+    for (int i = 0; i < kAcceptsPerCycle; ++i) {
+      const int fd = ::accept4(m_listen, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+      if (fd < 0) {
+        // Out of descriptors: the pending connection stays readable, so pause accepting instead of spinning.
+        if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM)
+          m_acceptPausedUntil = now + std::chrono::milliseconds(50);
+        return;  // EAGAIN: none left
+      }
+      if (now < m_refuseUntil || static_cast<int>(m_clients.size()) >= m_options.maxClients) {
+        ::close(fd);
+        ++m_refused;
+        continue;
+      }
+      Client client;
+      client.fd = fd;
+      client.id = ++m_nextClientId;
+      m_clients.push_back(std::move(client));
+    }
+  }
+
+  // Reads what the socket holds and answers every complete request in it.
+  void receive(Client& client, Clock::time_point now) {
+    std::uint8_t chunk[kReceiveChunk];
+    for (;;) {
+      const ssize_t got = ::recv(client.fd, chunk, sizeof chunk, 0);
+      if (got == 0) {
+        client.closing = true;  // the client closed: not a drop
+        return;
+      }
+      if (got < 0) {
+        if (errno == EINTR) continue;
+        if (errno != EAGAIN && errno != EWOULDBLOCK) client.closing = true;
+        break;
+      }
+      if (client.received.empty()) client.requestStarted = now;
+      client.received.insert(client.received.end(), chunk, chunk + got);
+      if (!frameRequests(client)) return;
+      if (static_cast<std::size_t>(got) < sizeof chunk) break;
+    }
+  }
+
+  // Cuts complete requests off the front of the received bytes; false when the client was dropped.
+  bool frameRequests(Client& client) {
+    std::size_t used = 0;
+    while (client.received.size() - used >= sim::kMbapSize) {
+      const sim::MbapHeader header = sim::parseMbap(client.received.data() + used);
+      if (sim::checkMbap(header) != sim::FrameProblem::None) {
+        drop(client);
+        return false;
+      }
+      const std::size_t size = sim::frameSize(header);
+      if (client.received.size() - used < size) break;
+      std::vector<std::uint8_t> frame(client.received.begin() + static_cast<std::ptrdiff_t>(used),
+                                      client.received.begin() + static_cast<std::ptrdiff_t>(used + size));
+      used += size;
+      countRequest(frame);
+      if (m_replyDelay.count() > 0 || !m_delayed.empty())
+        m_delayed.push_back(DelayedRequest{client.id, std::move(frame), Clock::now() + m_replyDelay});
+      else
+        answer(client, frame);
+      if (client.closing) return false;
+    }
+    client.received.erase(client.received.begin(), client.received.begin() + static_cast<std::ptrdiff_t>(used));
+    // The rest of a request counts from now: its timeout is for the request still incomplete.
+    if (used > 0 && !client.received.empty()) client.requestStarted = Clock::now();
+    return true;
+  }
+
+  void flush(Client& client) {
+    while (!client.unsent.empty()) {
+      const ssize_t sent = ::send(client.fd, client.unsent.data(), client.unsent.size(), MSG_NOSIGNAL);
+      if (sent < 0) {
+        if (errno == EINTR) continue;
+        if (errno != EAGAIN && errno != EWOULDBLOCK) client.closing = true;
+        return;
+      }
+      client.unsent.erase(client.unsent.begin(), client.unsent.begin() + sent);
+    }
   }
 
   std::optional<SimulatedDevice> deviceFor(std::uint8_t unit) const {
@@ -260,61 +323,64 @@ class DeviceSimulator::Impl {
     return std::nullopt;
   }
 
-  void countRequest(const std::vector<std::uint8_t>& request) {
-    const int header = modbus_get_header_length(m_context);
-    const auto device = deviceFor(request[header - 1]);
+  void countRequest(const std::vector<std::uint8_t>& frame) {
+    const sim::MbapHeader header = sim::parseMbap(frame.data());
+    const auto device = deviceFor(header.unit);
     if (!device) return;
     (*device == SimulatedDevice::Rotary ? m_rotaryRequests : m_robotRequests)++;
-    const std::uint8_t function = request[header];
-    if (function != 0x06 && function != 0x10) return;
-    const int address = (request[header + 1] << 8) | request[header + 2];
-    const int count = function == 0x06 ? 1 : ((request[header + 3] << 8) | request[header + 4]);
+    const std::uint8_t* pdu = frame.data() + sim::kMbapSize;
+    const std::size_t pduSize = frame.size() - sim::kMbapSize;
+    const std::uint8_t function = pdu[0];
+    if ((function != 0x06 && function != 0x10) || pduSize < 5) return;
+    const int address = (pdu[1] << 8) | pdu[2];
+    const int count = function == 0x06 ? 1 : ((pdu[3] << 8) | pdu[4]);
     const int heartbeatFirst = *device == SimulatedDevice::Rotary ? rr::kHeartbeat : rb::kHostHeartbeat;
     const int heartbeatLast = *device == SimulatedDevice::Rotary ? rr::kHeartbeatTimeout : rb::kHeartbeatTimeout;
     if (address < heartbeatFirst || address + count - 1 > heartbeatLast)
       (*device == SimulatedDevice::Rotary ? m_rotaryCommandWrites : m_robotCommandWrites)++;
   }
 
-  // Answers one request; false when the client's socket failed.
-  bool serve(const Client& client, const std::vector<std::uint8_t>& request) {
-    modbus_set_socket(m_context, client.fd);
-    const int header = modbus_get_header_length(m_context);
-    const int length = static_cast<int>(request.size());
-    const auto device = deviceFor(request[header - 1]);
-    if (!device) return modbus_reply_exception(m_context, request.data(), MODBUS_EXCEPTION_GATEWAY_TARGET) >= 0;
-    const bool rotary = *device == SimulatedDevice::Rotary;
-    const int exception = rotary ? m_rotaryException : m_robotException;
-    if (exception != 0)
-      return modbus_reply_exception(m_context, request.data(), static_cast<unsigned int>(exception)) >= 0;
-
-    const std::uint8_t function = request[header];
-    if (function != 0x03 && function != 0x06 && function != 0x10)
-      return modbus_reply_exception(m_context, request.data(), MODBUS_EXCEPTION_ILLEGAL_FUNCTION) >= 0;
-    const bool write = function != 0x03;
-    if (write) {
-      // Status registers belong to the device: a write there is refused as a real controller would.
-      const int address = (request[header + 1] << 8) | request[header + 2];
-      const int count = function == 0x06 ? 1 : ((request[header + 3] << 8) | request[header + 4]);
-      const int first = rotary ? rr::kFirstWritable : rb::kFirstHostWritable;
-      const int last = rotary ? rr::kLastWritable : rb::kLastHostWritable;
-      if (address < first || address + count - 1 > last)
-        return modbus_reply_exception(m_context, request.data(), MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS) >= 0;
+  // Queues the reply to one complete request frame and tries to send it.
+  void answer(Client& client, const std::vector<std::uint8_t>& frame) {
+    const sim::MbapHeader header = sim::parseMbap(frame.data());
+    const std::uint8_t* pdu = frame.data() + sim::kMbapSize;
+    const std::size_t pduSize = frame.size() - sim::kMbapSize;
+    std::vector<std::uint8_t> reply;
+    const auto device = deviceFor(header.unit);
+    if (!device) {
+      reply = sim::exceptionPdu(pdu[0], 0x0B);  // gateway target device failed to respond
+    } else {
+      const bool rotary = *device == SimulatedDevice::Rotary;
+      const int exception = rotary ? m_rotaryException : m_robotException;
+      if (exception != 0) {
+        reply = sim::exceptionPdu(pdu[0], static_cast<std::uint8_t>(exception));
+      } else {
+        sim::RegisterBlock block;
+        if (rotary) {
+          block = {m_rotaryRegs.data(), 0, rr::kMapSize, rr::kFirstWritable, rr::kLastWritable};
+        } else {
+          block = {m_robotRegs.data(), rb::kFirst, rb::kCount, rb::kFirstHostWritable, rb::kLastHostWritable};
+        }
+        sim::PduAnswer answered = sim::answerPdu(pdu, pduSize, block);
+        if (answered.wrote && rotary) m_rotary->afterWrite(Clock::now());
+        reply = std::move(answered.pdu);
+      }
     }
-    const int rc = modbus_reply(m_context, request.data(), length, rotary ? m_rotaryMap : m_robotMap);
-    if (write && rotary) m_rotary->afterWrite(Clock::now());
-    return rc >= 0;
+    const std::vector<std::uint8_t> bytes = sim::replyFrame(header, reply);
+    client.unsent.insert(client.unsent.end(), bytes.begin(), bytes.end());
+    flush(client);
+    if (client.unsent.size() > kMaxUnsentBytes) drop(client);
   }
 
   SimulatorOptions m_options;
-  modbus_t* m_context = nullptr;
-  modbus_mapping_t* m_rotaryMap = nullptr;
-  modbus_mapping_t* m_robotMap = nullptr;
   int m_listen = -1;
   int m_port = 0;
   std::thread m_thread;
   std::atomic<bool> m_stop{false};
 
   mutable std::mutex m_mutex;  // guards everything below against the public methods
+  std::vector<std::uint16_t> m_rotaryRegs;  // registers 0..kMapSize-1
+  std::vector<std::uint16_t> m_robotRegs;   // registers 128..255
   std::optional<sim::RotaryController> m_rotary;
   std::optional<sim::RobotProgram> m_robot;
   std::vector<Client> m_clients;
@@ -323,16 +389,16 @@ class DeviceSimulator::Impl {
   int m_connections = 0;
   bool m_dropRequested = false;
   Clock::time_point m_refuseUntil{};
+  Clock::time_point m_acceptPausedUntil{};
   std::chrono::milliseconds m_replyDelay{0};
   int m_rotaryException = 0;
   int m_robotException = 0;
-  bool m_stuck = false;
-  bool m_rotaryEchoing = true;
-  bool m_robotAnswering = true;
   std::uint64_t m_rotaryRequests = 0;
   std::uint64_t m_robotRequests = 0;
   std::uint64_t m_rotaryCommandWrites = 0;
   std::uint64_t m_robotCommandWrites = 0;
+  std::uint64_t m_refused = 0;
+  std::uint64_t m_dropped = 0;
 };
 
 DeviceSimulator::DeviceSimulator(SimulatorOptions options) : m_impl(std::make_unique<Impl>(std::move(options))) {}
@@ -356,5 +422,7 @@ std::uint64_t DeviceSimulator::commandWriteCount(SimulatedDevice device) const {
   return m_impl->commandWriteCount(device);
 }
 int DeviceSimulator::connectionCount() const { return m_impl->connectionCount(); }
+std::uint64_t DeviceSimulator::refusedConnectionCount() const { return m_impl->refusedConnectionCount(); }
+std::uint64_t DeviceSimulator::droppedClientCount() const { return m_impl->droppedClientCount(); }
 
 }  // namespace multidir::hardware

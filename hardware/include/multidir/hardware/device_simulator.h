@@ -4,8 +4,16 @@
 // program's behaviour) at every other unit id. Motion runs at finite speed, homing takes time, both
 // heartbeat watchdogs work, and faults can be injected.
 //
-// Listens on 127.0.0.1 unless told otherwise; port 0 picks a free port (see port()). Runs on its own thread;
-// every method may be called from any thread.
+// Listens on 127.0.0.1 unless told otherwise; port 0 picks a free port (see port()). Runs on its own thread
+// (one poll() loop over non-blocking sockets, so a slow or hostile client never holds up the others); every
+// method may be called from any thread.
+//
+// Under load and against bad input: at most maxClients connections (later ones are accepted and closed at
+// once, and counted); a client that starts a request and does not finish it within requestTimeout is
+// disconnected; every Modbus request gets its reply or the exception the specification names (quantity 0 or
+// above 125: illegal data value; unknown function: illegal function), framed by the length field so the
+// connection stays in sync; a frame whose protocol id is not 0 (not Modbus) or whose length no Modbus
+// request can have closes that connection.
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -21,6 +29,8 @@ struct SimulatorOptions {
   std::string listenAddress = "127.0.0.1";  // an IPv4 address; anything but loopback only when asked for
   int port = 0;                             // 0: a free port chosen by the system
   int rotaryUnitId = 1;                     // requests to this unit id go to the rotary controller
+  int maxClients = 64;                      // 1..1000 connections at once
+  std::chrono::milliseconds requestTimeout{1000};  // 1..60000 ms from a request's first byte to its last
 
   double rotaryInitialAngleDegrees = 7.5;   // where the platform stands at power-on (not homed)
   double rotaryHomingSpeedDegreesPerSecond = 90.0;
@@ -59,7 +69,7 @@ class DeviceSimulator {
   DeviceSimulator& operator=(const DeviceSimulator&) = delete;
 
   // Binds, listens and starts the thread. InvalidParameter for bad options; Internal when the address
-  // cannot be bound (in use, not on this machine).
+  // cannot be bound, saying why (port in use, not an address of this machine, port needs root).
   core::Status start();
   void stop();  // closes every connection and joins the thread; idempotent
   [[nodiscard]] bool running() const;
@@ -87,6 +97,10 @@ class DeviceSimulator {
   [[nodiscard]] std::uint64_t requestCount(SimulatedDevice device) const;
   [[nodiscard]] std::uint64_t commandWriteCount(SimulatedDevice device) const;
   [[nodiscard]] int connectionCount() const;  // clients connected now
+  // Connections closed by the simulator: refused beyond maxClients (or during dropConnections' refusal),
+  // and clients dropped for a request timeout, a non-Modbus frame or a broken length.
+  [[nodiscard]] std::uint64_t refusedConnectionCount() const;
+  [[nodiscard]] std::uint64_t droppedClientCount() const;
 
  private:
   class Impl;

@@ -18,16 +18,23 @@
 //   Settling  | tick: no longer reached                     | Moving    | (waits again, same target)
 //   Settling  | tick: fault, link down                      | Faulted   | stopMotion()
 //   Moving,   | pause()                                     | Paused    | stopMotion()
-//   Settling  |                                             |           |
+//   Settling  |   ... the stop is refused                   | Faulted   | (pause() returns the refusal)
 //   Printing  | pause()                                     | Printing  | pause pending: no motion while printing
 //   Printing  | regionDone(i), i current, more steps        | Moving    | startMove(step i+1)
 //             |   ... with a pause pending                  | Paused    | (step i+1 not started)
 //   Printing  | regionDone(i), i the last step              | Completed |
-//   Paused    | resume()                                    | Moving    | startMove(current step)
-//   Faulted   | resume() (retry the current step)           | Moving    | startMove(current step)
+//   Paused    | resume()                                    | Moving    | clearStop(), startMove(current step)
+//   Faulted   | resume() (retry the current step)           | Moving    | clearStop(), startMove(current step)
+//   Paused,   | resume() while the device has not confirmed | (same)    | refused: the stop has not reached the
+//   Faulted   |   the stop (clearStop refused)              |           | device yet
 //   any but   | abort()                                     | Aborted   | stopMotion() unless Printing (the
 //   Completed,|                                             |           | operator stops the printer)
 //   Aborted   |                                             |           |
+//
+// A stop is only requested by stopMotion(); "motion stopped" is logged when a later tick() sees the device's
+// confirmation (PositionerSnapshot::stopConfirmed), in whatever state the run is then (ticks keep watching
+// for it in Paused, Faulted and Aborted); a stop not confirmed after a second is logged once as a warning. A
+// refused stop is logged at once and says to use the E-STOP.
 //
 // While Printing no move is ever commanded; device faults seen while printing are logged and taken up
 // after regionDone. Completed and Aborted are final.
@@ -70,6 +77,8 @@ struct PositionerSnapshot {
   bool reached = false;   // at the orientation of the last startMove, at rest
   bool faulted = false;
   std::string problem;    // why faulted (or the link is down), for the log
+  bool stopLatched = false;    // a stop is held by the device's driver: moves are refused until clearStop()
+  bool stopConfirmed = false;  // ... and the device confirmed it
 };
 
 // The device behind the sequencer: the real drivers (makePositioner) or a test double.
@@ -78,7 +87,11 @@ class Positioner {
   virtual ~Positioner() = default;
   // Starts a move and returns without waiting for it; a refusal comes back at once.
   virtual core::Status startMove(const PlatformOrientation& target) = 0;
+  // Latches a stop and returns without waiting for it: a refusal comes back at once; Done means asked for,
+  // not done (snapshot().stopConfirmed tells when the device took it).
   virtual core::Status stopMotion() = 0;
+  // Allows moves again after stopMotion(); refused while the device has not confirmed the stop.
+  virtual core::Status clearStop() = 0;
   [[nodiscard]] virtual PositionerSnapshot snapshot() const = 0;
   [[nodiscard]] virtual std::string name() const = 0;
 };
@@ -129,6 +142,8 @@ class PrintRun {
   [[nodiscard]] PrintRunState state() const { return m_state; }
   [[nodiscard]] std::size_t currentStep() const { return m_step; }
   [[nodiscard]] bool pausePending() const { return m_pausePending; }
+  // A stop was asked for and the device has not confirmed it yet: keep calling tick() (even once Aborted).
+  [[nodiscard]] bool stopUnconfirmed() const { return m_awaitingStopConfirmation; }
   [[nodiscard]] const std::vector<PrintStep>& steps() const { return m_steps; }
   [[nodiscard]] const std::vector<PrintRunLogEntry>& log() const { return m_log; }
   [[nodiscard]] const std::string& lastProblem() const { return m_lastProblem; }
@@ -140,6 +155,9 @@ class PrintRun {
   void enter(PrintRunState state, const std::string& message);
   void beginMove();
   void fault(const std::string& problem);
+  // stopMotion(), remembering to log the device's confirmation; the positioner's refusal, if any.
+  core::Status requestStop();
+  void watchStop(const PositionerSnapshot& snapshot);
   std::string stepLabel() const;
   core::Status refuse(const std::string& event) const;
 
@@ -150,9 +168,12 @@ class PrintRun {
   std::size_t m_step = 0;
   bool m_pausePending = false;
   bool m_faultLoggedWhilePrinting = false;
+  bool m_awaitingStopConfirmation = false;
+  bool m_stopProblemLogged = false;
   std::chrono::steady_clock::time_point m_started{};
   std::chrono::steady_clock::time_point m_moveStarted{};
   std::chrono::steady_clock::time_point m_settleStarted{};
+  std::chrono::steady_clock::time_point m_stopRequested{};
   std::string m_lastProblem;
   std::vector<PrintRunLogEntry> m_log;
   LogCallback m_logCallback;

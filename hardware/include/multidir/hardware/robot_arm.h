@@ -15,6 +15,7 @@
 #include "multidir/core/common/result.h"
 #include "multidir/core/search/machine.h"
 #include "multidir/hardware/connection.h"
+#include "multidir/hardware/stop_latch.h"
 
 namespace multidir::hardware {
 
@@ -45,6 +46,7 @@ struct RobotStatus {
   int faultCode = 0;                // the program's FAULT_CODE (0 none, 1 beyond limits, 2 heartbeat lost, 3 unknown command)
   std::string lastError;
   std::uint64_t polls = 0;
+  StopLatch stop;  // the stop or e-stop held until clearStop(): moves are refused
 };
 
 struct RobotArmOptions {
@@ -76,8 +78,11 @@ class RobotArm {
 
   // Requires the program alive and not halted or faulted; azimuth is taken modulo 360.
   std::future<core::Status> moveTo(double tiltDegrees, double azimuthDegrees);
-  std::future<core::Status> stop();           // jumps the queue
-  std::future<core::Status> emergencyStop();  // halts the program (stopj at maximal deceleration); jumps the queue
+  // Stop and e-stop are latched as in rotary_platform.h: written as soon as the link allows and again first
+  // after every reconnect; moves are refused until clearStop().
+  std::future<core::Status> stop();
+  std::future<core::Status> emergencyStop();  // halts the program (stopj at maximal deceleration)
+  core::Status clearStop();                   // refused until the program confirmed the stop
   std::future<core::Status> clearFault();     // reset after a halt or fault
 
   [[nodiscard]] RobotStatus status() const;

@@ -21,6 +21,7 @@
 #include "multidir/core/common/result.h"
 #include "multidir/core/search/machine.h"
 #include "multidir/hardware/connection.h"
+#include "multidir/hardware/stop_latch.h"
 
 namespace multidir::hardware {
 
@@ -52,6 +53,7 @@ struct RotaryStatus {
   bool controllerAlive = false;   // the controller's heartbeat echo follows MultiDir's heartbeat
   std::string lastError;          // the latest link or device problem, for the operator ("" when none)
   std::uint64_t polls = 0;        // status reads since connect(); grows while the link works
+  StopLatch stop;                 // the stop or e-stop held until clearStop(): moves and homing are refused
 };
 
 struct RotaryPlatformOptions {
@@ -87,8 +89,14 @@ class RotaryPlatform {
   std::future<core::Status> disable();
   std::future<core::Status> home();                          // requires enabled; finds the home switch (0 degrees)
   std::future<core::Status> moveTo(double angleDegrees);     // requires homed; checked with checkRotaryTarget
-  std::future<core::Status> stop();                          // decelerates; jumps the queue
-  std::future<core::Status> emergencyStop();                 // cuts the power stage; jumps the queue
+  // Stop and e-stop are latched (stop_latch.h): they jump the queue, are written as soon as the link allows
+  // and again first after every reconnect, and every move or homing is refused until clearStop(). The
+  // future ends once the device answered the write (not when the link is down: it then waits for the link).
+  std::future<core::Status> stop();           // decelerates
+  std::future<core::Status> emergencyStop();  // cuts the power stage
+  // The operator allows moves again; refused (InvalidParameter) until the device confirmed the stop. After
+  // an e-stop the controller also needs clearFault(), enable() and home().
+  core::Status clearStop();
   std::future<core::Status> clearFault();                    // then enable and home again
 
   [[nodiscard]] RotaryStatus status() const;
