@@ -132,8 +132,14 @@ void printTable(std::ostream& out, const slicing::SlicedJob& job) {
     out << line;
   }
   for (const slicing::TurnPlan& t : job.turns) {
-    std::snprintf(line, sizeof line, "  turn after step %d: %.1f -> %.1f degrees, part sweeps to z %.2f mm, nozzle at %.2f mm\n",
-                  t.fromStep, t.fromDegrees, t.toDegrees, t.sweptTopZMm, t.clearanceZMm);
+    // Only a rotary platform's turn has one angle; a robot arm's is a tilt and an azimuth (print-job.json).
+    std::string angles;
+    if (t.fromDegrees != 0.0 || t.toDegrees != 0.0) {
+      std::snprintf(line, sizeof line, " %.1f -> %.1f degrees,", t.fromDegrees, t.toDegrees);
+      angles = line;
+    }
+    std::snprintf(line, sizeof line, "  turn after step %d:%s part sweeps to z %.2f mm, nozzle at %.2f mm\n",
+                  t.fromStep, angles.c_str(), t.sweptTopZMm, t.clearanceZMm);
     out << line;
   }
 }
