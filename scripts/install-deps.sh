@@ -9,6 +9,7 @@ packages=(
   libvtk9-dev libopenmesh-dev libeigen3-dev libmodbus-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev
   xvfb xauth libgl1-mesa-dri
+  prusa-slicer
 )
 
 missing=()

@@ -44,6 +44,10 @@ QString errorHeadline(core::ErrorCode code) {
       return ErrorText::tr("The device does not answer: check its power, cable or network.");
     case core::ErrorCode::DeviceFault:
       return ErrorText::tr("The device reported an error.");
+    case core::ErrorCode::ExternalToolFailed:
+      return ErrorText::tr("A program MultiDir runs (the slicer) is missing or failed.");
+    case core::ErrorCode::CheckFailed:
+      return ErrorText::tr("The produced G-code failed MultiDir's safety checks.");
     case core::ErrorCode::Internal:
       break;
   }

@@ -10,6 +10,7 @@
 #include "info_command.h"
 #include "report_command.h"
 #include "simulate_command.h"
+#include "slice_command.h"
 
 namespace {
 
@@ -24,6 +25,7 @@ const char* const kUsage =
     "  info MODEL                  statistics, load checks and overhang area of a model\n"
     "  decompose MODEL -o OUTDIR   cut a model into regions with printing directions; write the plan\n"
     "  export PLAN_DIR -o OUTDIR   the print job of a plan: one mesh per step, posed as the machine holds it\n"
+    "  slice PLAN_OR_JOB --printer PROFILE -o OUTDIR   G-code for every step (PrusaSlicer), checked\n"
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
     "  help [COMMAND]              show this help, or a command's help\n"
@@ -50,6 +52,10 @@ int help(const std::vector<std::string>& args) {
   }
   if (args[0] == "export") {
     std::cout << kExportHelp;
+    return kExitOk;
+  }
+  if (args[0] == "slice") {
+    std::cout << kSliceHelp;
     return kExitOk;
   }
   if (args[0] == "report") {
@@ -81,6 +87,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "simulate") return runSimulate(rest, std::cout, std::cerr);
   if (command == "report") return runReport(rest, std::cout, std::cerr);
   if (command == "export") return runExport(rest, std::cout, std::cerr);
+  if (command == "slice") return runSlice(rest, std::cout, std::cerr);
   if (!command.empty() && command[0] == '-')
     throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");
   throw UsageError("multidir: unknown command '" + command + "'. Run 'multidir --help' for the list.");

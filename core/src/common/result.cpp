@@ -19,6 +19,8 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::DeviceUnreachable: return "DeviceUnreachable";
     case ErrorCode::DeviceFault: return "DeviceFault";
     case ErrorCode::Internal: return "Internal";
+    case ErrorCode::ExternalToolFailed: return "ExternalToolFailed";
+    case ErrorCode::CheckFailed: return "CheckFailed";
   }
   return "Unknown";
 }

@@ -23,6 +23,8 @@ enum class ErrorCode {
   DeviceUnreachable, // a printer device did not answer, or its link is down or reconnecting
   DeviceFault,       // a printer device answered with an error (a Modbus exception) or reports a fault
   Internal,          // a bug in MultiDir: please report it with the input that caused it
+  ExternalToolFailed, // a program MultiDir runs (the slicer) is missing, failed or wrote nothing usable
+  CheckFailed,       // a produced file (G-code) failed MultiDir's checks; the message names where and why
 };
 
 // Short, stable, English name of a code ("NotManifold"), for logs and JSON.

@@ -1,0 +1,191 @@
+#include "slice_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_args.h"
+#include "multidir/core/plan/print_job.h"
+#include "multidir/slicing/slice_job.h"
+#include "number_text.h"
+
+namespace multidir::cli {
+
+const char* const kSliceHelp =
+    "Usage: multidir slice PLAN_OR_JOB --printer PROFILE -o OUTDIR [options]\n"
+    "\n"
+    "Slices every step of a plan's print job with PrusaSlicer (prusa-slicer must be installed): each region\n"
+    "with its supports, posed as the machine holds it, layers starting on its base plane. Every G-code is\n"
+    "read back and checked (extrusions on or above the step's base plane and inside the printer; the platform\n"
+    "turns only with the nozzle above the swept part). Writes into OUTDIR the print job (step meshes and\n"
+    "print-job.json with the estimates under \"slicing\"), step-01.gcode, ... and, when the printer turns its\n"
+    "platform by a firmware axis, job.gcode: one program with one start and one end sequence.\n"
+    "PLAN_OR_JOB is a plan folder (multidir decompose) or a print-job folder (multidir export) whose plan is\n"
+    "still where print-job.json says.\n"
+    "\n"
+    "Options:\n"
+    "  --printer PROFILE      a PrusaSlicer .ini with MultiDir's keys (docs/slicing.md) or a shipped profile:\n"
+    "                         marlin-220, klipper-rotary, robot-0.8 (required)\n"
+    "  -o OUTDIR              output folder (created if missing; required)\n"
+    "  --dialect DIALECT      how the firmware turns the platform: klipper, marlin or rrf (default: the profile's)\n"
+    "  --set \"KEY=VALUE ...\"  slicer settings over the profile's, separated by spaces (layer_height=0.3)\n"
+    "  --no-comparison        do not slice the fixed-direction print (whole model along up, slicer supports)\n"
+    "  --slicer PROGRAM       the prusa-slicer program (default: prusa-slicer on PATH)\n"
+    "  -h, --help             show this help\n"
+    "\n"
+    "Exit codes: 0 ok, 1 a file cannot be read, the slicer failed or a check refused the G-code, 2 usage error.\n";
+
+namespace {
+
+namespace core = multidir::core;
+namespace slicing = multidir::slicing;
+namespace fs = std::filesystem;
+
+const std::string kCommand = "multidir slice";
+
+struct Settings {
+  std::string input;
+  std::string outDir;
+  std::string printer;
+  slicing::SliceJobOptions options;
+};
+
+Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
+  const ParsedArgs parsed =
+      parseArgs(args, {"-o", "--printer", "--dialect", "--set", "--slicer"}, {"--help", "--no-comparison"}, "slice");
+  helpOnly = parsed.has("--help");
+  Settings s;
+  if (helpOnly) return s;
+  s.input = onlyPositional(parsed, "slice", "plan or print job", "multidir slice PLAN_OR_JOB --printer PROFILE -o OUTDIR");
+  s.outDir = outputFolder(parsed, "slice", "the G-code and the print job");
+  if (!parsed.has("--printer"))
+    throw UsageError(kCommand + ": --printer is required: a PrusaSlicer .ini or one of marlin-220, klipper-rotary, "
+                                "robot-0.8");
+  s.printer = parsed.value("--printer", "");
+  if (parsed.has("--dialect")) {
+    const core::Result<slicing::Dialect> d = slicing::parseDialect(parsed.value("--dialect", ""));
+    if (!d) throw UsageError(kCommand + ": --dialect: " + d.error().message);
+    s.options.dialect = *d;
+  }
+  std::istringstream settings(parsed.value("--set", ""));
+  std::string pair;
+  while (settings >> pair) {
+    const std::size_t eq = pair.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError(kCommand + ": --set: '" + pair + "' is not KEY=VALUE (layer_height=0.3)");
+    s.options.settings.emplace_back(pair.substr(0, eq), pair.substr(eq + 1));
+  }
+  s.options.fixedDirection = !parsed.has("--no-comparison");
+  s.options.slicerExecutable = parsed.value("--slicer", s.options.slicerExecutable);
+  return s;
+}
+
+// A plan folder, or a print-job folder whose print-job.json names its plan.
+std::string planFolderOf(const std::string& input) {
+  fs::path path(input);
+  std::error_code ec;
+  if (fs::is_regular_file(path, ec)) path = path.parent_path();
+  if (fs::exists(path / "plan.json", ec)) return path.string();
+  const fs::path jobFile = path / "print-job.json";
+  if (!fs::exists(jobFile, ec))
+    throw FileError(kCommand + ": '" + input + "' holds neither plan.json nor print-job.json; make a plan with "
+                    "'multidir decompose MODEL -o DIR'");
+  std::ifstream in(jobFile);
+  const nlohmann::json job = nlohmann::json::parse(in, nullptr, false);
+  if (job.is_discarded() || !job.contains("plan") || !job["plan"].is_string())
+    throw FileError(kCommand + ": " + jobFile.string() + ": no \"plan\" field naming the plan folder");
+  const std::string plan = job["plan"].get<std::string>();
+  for (const fs::path& candidate : {fs::path(plan), path / plan, path.parent_path() / plan})
+    if (fs::exists(candidate / "plan.json", ec)) return candidate.string();
+  throw FileError(kCommand + ": " + jobFile.string() + " names the plan '" + plan +
+                  "', which is not there any more; slice the plan folder itself");
+}
+
+void printTable(std::ostream& out, const slicing::SlicedJob& job) {
+  out << "Sliced with " << job.engine << " for " << job.profile.name << " (platform: "
+      << slicing::platformDriveName(job.profile.platform) << ")\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "  %4s  %-14s  %10s  %12s  %11s  %12s  %9s\n", "step", "G-code", "base z mm",
+                "print time", "filament m", "filament g", "slice s");
+  out << line;
+  for (const slicing::SlicedStep& s : job.steps) {
+    std::snprintf(line, sizeof line, "  %4d  %-14s  %10.2f  %12s  %11.2f  %12.1f  %9.2f\n", s.index,
+                  s.gcodeFile.c_str(), s.baseZMm, slicing::durationText(s.estimate.printSeconds).c_str(),
+                  s.estimate.filamentMm / 1000.0, s.estimate.filamentGrams, s.sliceSeconds);
+    out << line;
+  }
+  double sliceSeconds = 0.0;
+  for (const slicing::SlicedStep& s : job.steps) sliceSeconds += s.sliceSeconds;
+  std::snprintf(line, sizeof line, "  %4s  %-14s  %10s  %12s  %11.2f  %12.1f  %9.2f\n", "all",
+                job.stitchedFile.empty() ? "-" : job.stitchedFile.c_str(), "",
+                slicing::durationText(job.total.printSeconds).c_str(), job.total.filamentMm / 1000.0,
+                job.total.filamentGrams, sliceSeconds);
+  out << line;
+  if (job.fixedDirection) {
+    std::snprintf(line, sizeof line, "  %-30s  %12s  %11.2f  %12.1f  %9.2f\n",
+                  "fixed direction, slicer supports", slicing::durationText(job.fixedDirection->printSeconds).c_str(),
+                  job.fixedDirection->filamentMm / 1000.0, job.fixedDirection->filamentGrams,
+                  job.fixedDirectionSliceSeconds);
+    out << line;
+  }
+  for (const slicing::TurnPlan& t : job.turns) {
+    // Only a rotary platform's turn has one angle; a robot arm's is a tilt and an azimuth (print-job.json).
+    std::string angles;
+    if (t.fromDegrees != 0.0 || t.toDegrees != 0.0) {
+      std::snprintf(line, sizeof line, " %.1f -> %.1f degrees,", t.fromDegrees, t.toDegrees);
+      angles = line;
+    }
+    std::snprintf(line, sizeof line, "  turn after step %d:%s part sweeps to z %.2f mm, nozzle at %.2f mm\n",
+                  t.fromStep, angles.c_str(), t.sweptTopZMm, t.clearanceZMm);
+    out << line;
+  }
+}
+
+}  // namespace
+
+int runSlice(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  bool helpOnly = false;
+  const Settings s = settingsFrom(args, helpOnly);
+  if (helpOnly) {
+    out << kSliceHelp;
+    return kExitOk;
+  }
+  const core::Result<slicing::PrinterProfile> profile = slicing::loadPrinterProfile(s.printer);
+  if (!profile) throw FileError(kCommand + ": --printer: " + profile.error().describe());
+  const std::string planDir = planFolderOf(s.input);
+  const core::Result<core::LoadedPlan> plan = core::loadPlan(planDir);
+  if (!plan) throw FileError(kCommand + ": cannot read the plan in '" + planDir + "': " + plan.error().describe());
+  core::PrintJobOptions jobOptions;
+  jobOptions.frame = core::PrintJobOptions::Frame::Machine;
+  const core::Result<core::PrintJob> job = core::buildPrintJob(*plan, jobOptions);
+  if (!job) {
+    err << kCommand << ": " << planDir << ": " << job.error().describe() << "\n";
+    return job.error().code == core::ErrorCode::Internal ? kExitInternal : kExitBadInput;
+  }
+
+  std::mutex mutex;
+  core::JobContext context([&err, &mutex](double fraction, const std::string& phase) {
+    std::lock_guard<std::mutex> lock(mutex);
+    const int filled = static_cast<int>(fraction * 30.0 + 0.5);
+    err << "\r\033[K[" << std::string(static_cast<std::size_t>(filled), '#')
+        << std::string(static_cast<std::size_t>(30 - filled), '.') << "] " << static_cast<int>(fraction * 100.0 + 0.5)
+        << "% " << phase << std::flush;
+  });
+  const core::Result<slicing::SlicedJob> sliced = slicing::sliceJob(*job, *profile, s.options, s.outDir, context);
+  err << "\r\033[K" << std::flush;
+  if (!sliced) {
+    err << kCommand << ": " << sliced.error().describe() << "\n";
+    return sliced.error().code == core::ErrorCode::Internal ? kExitInternal : kExitBadInput;
+  }
+  printTable(out, *sliced);
+  out << "G-code saved     " << s.outDir << "/step-01.gcode ... step-" << (sliced->steps.size() < 10 ? "0" : "")
+      << sliced->steps.size() << ".gcode";
+  if (!sliced->stitchedFile.empty()) out << " and " << s.outDir << "/" << sliced->stitchedFile;
+  out << "; estimates in " << s.outDir << "/print-job.json\n";
+  return kExitOk;
+}
+
+}  // namespace multidir::cli

@@ -1,0 +1,35 @@
+#pragma once
+// Runs another program (the slicer) as a child process: posix_spawn, its stdout and stderr captured through
+// one pipe, cancellable from any thread through the JobContext (the child is sent SIGTERM, then SIGKILL).
+#include <string>
+#include <vector>
+
+#include "multidir/core/common/job_context.h"
+#include "multidir/core/common/result.h"
+
+namespace multidir::slicing {
+
+struct ChildOutput {
+  int exitCode = 0;    // the program's exit status; 128 + N when signal N ended it
+  std::string output;  // stdout and stderr interleaved as the program wrote them (at most the last 1 MiB)
+};
+
+// The command as a person would type it, for messages: arguments with spaces or quotes are quoted.
+std::string commandText(const std::vector<std::string>& argv);
+
+// The last `count` non-empty lines of `text`, joined by newlines.
+std::string lastLines(const std::string& text, int count);
+
+// Where `program` is found: itself when it contains a '/', else the first executable match on PATH; empty
+// when there is none.
+std::string findExecutable(const std::string& program);
+
+// Runs argv[0] (looked up on PATH) with the arguments argv[1..] and waits for it, reading its output. Checks
+// the context about every 50 ms; once cancelled the child is terminated and the result is Cancelled.
+// A non-zero exit is not an error here (the caller decides), only a program that cannot be started.
+// Errors: FileNotFound (argv[0] is not an executable on PATH; the message names the command),
+// ExternalToolFailed (the process could not be started), Cancelled, InvalidParameter (empty argv).
+// Thread-safe: each call owns its child.
+core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context);
+
+}  // namespace multidir::slicing

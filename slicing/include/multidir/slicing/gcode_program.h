@@ -1,0 +1,46 @@
+#pragma once
+// G-code read back as moves, so MultiDir can check what a slicer wrote instead of trusting it. Understands
+// what PrusaSlicer and MultiDir's stitching write: G0/G1 (X Y Z E F and the rotary axis), G90/G91, M82/M83,
+// G92, G28, Klipper's MANUAL_STEPPER ... MOVE=, and MultiDir's section markers (below). Other commands are
+// kept out of the moves; their lines still count.
+//
+// Section markers (comments MultiDir writes into a stitched program):
+//   ; MULTIDIR STEP k          the moves that follow belong to step k
+//   ; MULTIDIR TRANSITION k    the moves that follow turn the platform from step k to step k + 1
+//   ; MULTIDIR START SEQUENCE  the printer's start (homing, heating, purge): step 0
+//   ; MULTIDIR END SEQUENCE    the printer's end: step 0
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "multidir/core/common/result.h"
+
+namespace multidir::slicing {
+
+struct GcodeMove {
+  int line = 0;                                   // 1-based line of the file
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();  // printer coordinates, mm
+  Eigen::Vector3d to = Eigen::Vector3d::Zero();
+  double filamentMm = 0.0;      // filament pushed by this move (negative: retracted)
+  double rotaryFromDegrees = 0.0;
+  double rotaryToDegrees = 0.0;
+  int step = 0;                 // the section it lies in: the step (from 1), 0 before any marker
+  bool inTransition = false;    // inside a "; MULTIDIR TRANSITION" section (step is the step it leaves)
+
+  bool movesXy() const { return (to.head<2>() - from.head<2>()).squaredNorm() > 1e-12; }
+  bool movesZ() const { return std::abs(to.z() - from.z()) > 1e-9; }
+  bool rotates() const { return std::abs(rotaryToDegrees - rotaryFromDegrees) > 1e-9; }
+  // Lays down plastic: pushes filament while moving in XY.
+  bool extrudes() const { return filamentMm > 1e-9 && movesXy(); }
+};
+
+struct GcodeProgram {
+  std::vector<GcodeMove> moves;
+  int lineCount = 0;
+};
+
+// Errors: MalformedFile naming `name` and the line of a G0/G1 word that is not a number.
+core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string& rotaryAxis = "A",
+                                      const std::string& name = "G-code");
+
+}  // namespace multidir::slicing

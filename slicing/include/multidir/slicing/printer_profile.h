@@ -1,0 +1,84 @@
+#pragma once
+// A printer as MultiDir slices for it: a PrusaSlicer .ini (every slicer setting, loaded as it is by the
+// slicer) plus MultiDir's own keys, written as comment lines the slicer ignores:
+//
+//   # multidir.platform = firmware-axis      none | firmware-axis | modbus: who turns the platform
+//   # multidir.dialect = klipper             klipper | marlin | rrf: how a firmware axis is turned
+//   # multidir.rotary_axis = A               the G-code axis letter of the platform
+//   # multidir.klipper_stepper = rotary_a    Klipper: the [manual_stepper] that drives it
+//   # multidir.rotary_feed = 1800            degrees per minute while turning
+//   # multidir.platform_center = 110,110     printer XY of the platform centre (default: the bed's centre)
+//   # multidir.platform_z = 0                printer Z of the platform plane at rest
+//   # multidir.park = 5,215                  printer XY where the nozzle waits while the platform turns
+//   # multidir.clearance_margin = 5          mm above the swept part while the platform turns
+//   # multidir.step_start_gcode = G92 E0     start of steps 2.. (they print on plastic: no homing or purge)
+//
+// Shipped profiles live in resources/printers/NAME.ini (marlin-220, klipper-rotary, robot-0.8); the format
+// is documented in docs/slicing.md.
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "multidir/core/common/result.h"
+
+namespace multidir::slicing {
+
+// Who turns the platform between steps.
+enum class PlatformDrive {
+  None,          // an ordinary printer: it can print the first step only
+  FirmwareAxis,  // the printer's firmware (an A axis): one stitched program, job.gcode
+  Modbus,        // MultiDir over Modbus (the hardware panel's print run): one program per step
+};
+
+// How a firmware axis is driven.
+enum class Dialect { Klipper, Marlin, RepRapFirmware };
+
+const char* platformDriveName(PlatformDrive drive);  // "none", "firmware-axis", "modbus"
+const char* dialectName(Dialect dialect);            // "klipper", "marlin", "rrf"
+// Errors: InvalidParameter listing the dialects there are.
+core::Result<Dialect> parseDialect(const std::string& text);
+
+struct PrinterProfile {
+  std::string path;  // the .ini
+  std::string name;  // multidir.name, else the file's stem
+
+  // From the slicer settings (defaults are PrusaSlicer's own when the .ini leaves a key out).
+  std::vector<Eigen::Vector2d> bedShape;  // bed_shape: the bed polygon, printer XY (mm)
+  double maxPrintHeightMm = 200.0;        // max_print_height
+  double nozzleDiameterMm = 0.4;          // nozzle_diameter (first extruder)
+  double retractLengthMm = 2.0;           // retract_length (first extruder)
+  double travelSpeedMmPerS = 130.0;       // travel_speed
+  std::string startGcode;                 // start_gcode, escaped as in the .ini ("\n" for new lines)
+  std::string endGcode;                   // end_gcode, escaped likewise
+
+  // MultiDir's keys.
+  PlatformDrive platform = PlatformDrive::None;
+  Dialect dialect = Dialect::Marlin;
+  std::string rotaryAxis = "A";
+  std::string klipperStepper = "rotary_a";
+  double rotaryFeedDegreesPerMin = 1800.0;
+  Eigen::Vector2d platformCenter = Eigen::Vector2d::Zero();
+  double platformZMm = 0.0;
+  Eigen::Vector2d park = Eigen::Vector2d::Zero();
+  double clearanceMarginMm = 5.0;
+  std::string stepStartGcode = "G92 E0";  // escaped as in the .ini
+
+  // Every `key = value` setting of the .ini, for the slicer's keys not listed above.
+  std::map<std::string, std::string> settings;
+
+  Eigen::Vector2d bedMin() const;  // bounding box of bedShape
+  Eigen::Vector2d bedMax() const;
+};
+
+// The shipped profiles' names, sorted ("klipper-rotary", "marlin-220", "robot-0.8").
+std::vector<std::string> builtinPrinterNames();
+
+// Reads a profile: a path to a .ini, or the name of a shipped one. Checks bed_shape (at least three corners,
+// positive area), max_print_height (> 0), nozzle_diameter (> 0) and every multidir.* key, naming the first
+// that is wrong: "my.ini: bed_shape '0x0,0x0,0x0' has no area: give the bed's corners as XxY pairs".
+// Errors: FileNotFound (no such file or shipped name; the message lists the shipped names), MalformedFile
+// (a line or value that cannot be read), InvalidParameter (a value out of range).
+core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName);
+
+}  // namespace multidir::slicing

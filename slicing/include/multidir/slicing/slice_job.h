@@ -1,0 +1,74 @@
+#pragma once
+// From print job to machine code: every step of a print job sliced by a real slicer (its region and its
+// projected supports as one solid, posed as the machine holds it, layers starting on its base plane), the
+// G-code checked by parsing it, the stitched program for a firmware-axis platform, and the estimates.
+//
+// Written into the output folder (docs/plan-format.md, "slicing" in print-job.json):
+//   step-01-region.stl ...   the print job (core::writePrintJob)
+//   step-01.gcode ...        one program per step
+//   job.gcode                the stitched program, when the platform is a firmware axis
+//   print-job.json           the job, with a "slicing" object: estimates per step and in total, the turns
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "multidir/core/common/job_context.h"
+#include "multidir/core/plan/print_job.h"
+#include "multidir/slicing/estimates.h"
+#include "multidir/slicing/gcode_checks.h"
+#include "multidir/slicing/printer_profile.h"
+#include "multidir/slicing/stitch.h"
+
+namespace multidir::slicing {
+
+struct SliceJobOptions {
+  std::optional<Dialect> dialect;  // overrides the profile's multidir.dialect
+  // Extra slicer settings applied after the profile (key, value as in a .ini), e.g. {"layer_height", "0.3"}.
+  std::vector<std::pair<std::string, std::string>> settings;
+  // Also slice the whole model along up with the slicer's own supports (the fixed-direction comparison).
+  bool fixedDirection = true;
+  std::string slicerExecutable = "prusa-slicer";
+};
+
+struct SlicedStep {
+  int index = 1;
+  std::string gcodeFile;   // "step-01.gcode"
+  Estimate estimate;
+  StepTotals totals;       // from the checks
+  double baseZMm = 0.0;    // printer z of the step's base plane
+  double zOffsetMm = 0.0;  // given to the slicer: where its layers start from
+  double sliceSeconds = 0.0;
+};
+
+struct SlicedJob {
+  std::string engine;             // "PrusaSlicer"
+  PrinterProfile profile;
+  Dialect dialect = Dialect::Marlin;
+  std::vector<SlicedStep> steps;
+  std::vector<TurnPlan> turns;    // one per gap between steps
+  Estimate total;                 // sum over the steps
+  std::optional<Estimate> fixedDirection;  // the whole model along up, the slicer's supports on
+  double fixedDirectionSliceSeconds = 0.0;
+  std::string stitchedFile;       // "job.gcode", empty when the platform is not a firmware axis
+};
+
+// The clearance of every turn between two steps (printer z): the printed regions and supports of steps 1..k
+// posed for step k, turned to step k + 1 (4-DOF: exactly over the arc about the rotation axis; 5-DOF: any turn
+// about the pivot; 3-DOF: no turn), plus the profile's margin. Errors: Internal when consecutive poses do not
+// differ by a turn about the axis.
+core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile);
+
+// Slices `job` (frame Machine) for `profile` into `directory` (created when missing). Progress: one share per
+// step, one for the fixed-direction print, one for stitching; cancellation is checked while the slicer runs
+// (about every 50 ms) and between steps. A G-code that fails a check is not kept (no step-NN.gcode, no
+// job.gcode) and the job is refused.
+// Errors: InvalidParameter (the job is in the model frame, the printer cannot turn its platform and the job has
+// several steps, a firmware axis asked to print a 5-DOF plan), FileNotFound / ExternalToolFailed (the slicer),
+// CheckFailed (a check, naming step, line and reason; also a clearance above the printer's height),
+// WriteFailed, Cancelled.
+core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile& profile,
+                                 const SliceJobOptions& options, const std::string& directory,
+                                 core::JobContext& context);
+
+}  // namespace multidir::slicing

@@ -1,0 +1,42 @@
+#include "multidir/slicing/clearance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace multidir::slicing {
+
+double sweptTopZ(const std::vector<core::Vec3>& points, const core::Vec3& axisUnit, double turnRadians) {
+  const core::Vec3 a = axisUnit.normalized();
+  const double lo = std::min(0.0, turnRadians);
+  const double hi = std::max(0.0, turnRadians);
+  double top = -std::numeric_limits<double>::infinity();
+  for (const core::Vec3& q : points) {
+    // Rodrigues: R(t) q = a (a.q) + q_perp cos t + (a x q) sin t.
+    const double along = a.dot(q);
+    const core::Vec3 perp = q - along * a;
+    const double c = a.z() * along;
+    const double cosCoeff = perp.z();
+    const double sinCoeff = a.cross(q).z();
+    const auto zAt = [&](double t) { return c + cosCoeff * std::cos(t) + sinCoeff * std::sin(t); };
+    double best = std::max(zAt(lo), zAt(hi));
+    // The peak of A cos t + B sin t is at t* = atan2(B, A) (+ 2 pi k).
+    const double amplitude = std::hypot(cosCoeff, sinCoeff);
+    if (amplitude > 0.0) {
+      const double peak = std::atan2(sinCoeff, cosCoeff);
+      const double twoPi = 2.0 * M_PI;
+      const double first = peak + twoPi * std::ceil((lo - peak) / twoPi);
+      if (first <= hi) best = c + amplitude;
+    }
+    top = std::max(top, best);
+  }
+  return top;
+}
+
+double anyTurnTopZ(const std::vector<core::Vec3>& points) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (const core::Vec3& q : points) top = std::max(top, q.norm());
+  return top;
+}
+
+}  // namespace multidir::slicing

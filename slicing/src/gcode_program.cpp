@@ -1,0 +1,174 @@
+#include "multidir/slicing/gcode_program.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+namespace multidir::slicing {
+
+namespace {
+
+using core::Error;
+using core::ErrorCode;
+
+struct Word {
+  char letter;
+  double value;
+};
+
+std::string upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// "G1 X10 Y2.5 E.3" -> words; false when a letter is followed by something that is not a number.
+bool splitWords(const std::string& code, std::vector<Word>& words) {
+  std::size_t i = 0;
+  while (i < code.size()) {
+    const unsigned char c = static_cast<unsigned char>(code[i]);
+    if (std::isspace(c)) {
+      ++i;
+      continue;
+    }
+    if (!std::isalpha(c)) return false;
+    const char* start = code.c_str() + i + 1;
+    char* end = nullptr;
+    const double value = std::strtod(start, &end);
+    if (end == start || !std::isfinite(value)) return false;
+    words.push_back({static_cast<char>(std::toupper(c)), value});
+    i = static_cast<std::size_t>(end - code.c_str());
+  }
+  return true;
+}
+
+// MANUAL_STEPPER STEPPER=name MOVE=deg ...: the MOVE value, if any.
+bool manualStepperMove(const std::string& code, double& degrees) {
+  const std::string u = upper(code);
+  if (u.rfind("MANUAL_STEPPER", 0) != 0) return false;
+  const std::size_t at = u.find("MOVE=");
+  if (at == std::string::npos) return false;
+  char* end = nullptr;
+  degrees = std::strtod(code.c_str() + at + 5, &end);
+  return end != code.c_str() + at + 5;
+}
+
+}  // namespace
+
+core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string& rotaryAxis, const std::string& name) {
+  const char rotaryLetter = rotaryAxis.empty() ? 'A' : static_cast<char>(std::toupper(rotaryAxis[0]));
+  GcodeProgram program;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double e = 0.0;
+  double rotary = 0.0;
+  bool absoluteXyz = true;
+  bool absoluteE = true;
+  int step = 0;
+  bool inTransition = false;
+
+  std::istringstream in(text);
+  std::string line;
+  int lineNumber = 0;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    const std::size_t semicolon = line.find(';');
+    if (semicolon != std::string::npos) {
+      const std::string comment = line.substr(semicolon + 1);
+      int k = 0;
+      if (std::sscanf(comment.c_str(), " MULTIDIR STEP %d", &k) == 1) {
+        step = k;
+        inTransition = false;
+      } else if (std::sscanf(comment.c_str(), " MULTIDIR TRANSITION %d", &k) == 1) {
+        step = k;
+        inTransition = true;
+      } else if (comment.find("MULTIDIR START SEQUENCE") != std::string::npos ||
+                 comment.find("MULTIDIR END SEQUENCE") != std::string::npos) {
+        step = 0;
+        inTransition = false;
+      }
+    }
+    std::string code = line.substr(0, semicolon);
+    const std::size_t first = code.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    code = code.substr(first);
+    while (!code.empty() && std::isspace(static_cast<unsigned char>(code.back()))) code.pop_back();
+
+    double manualDegrees = 0.0;
+    if (manualStepperMove(code, manualDegrees)) {
+      GcodeMove move;
+      move.line = lineNumber;
+      move.from = move.to = position;
+      move.rotaryFromDegrees = rotary;
+      move.rotaryToDegrees = rotary = manualDegrees;
+      move.step = step;
+      move.inTransition = inTransition;
+      program.moves.push_back(move);
+      continue;
+    }
+    const std::string head = upper(code.substr(0, code.find_first_of(" \t")));
+    if (head != "G0" && head != "G1" && head != "G00" && head != "G01" && head != "G90" && head != "G91" &&
+        head != "M82" && head != "M83" && head != "G92" && head != "G28")
+      continue;  // temperatures, fans, Klipper macros...: no motion MultiDir needs to follow
+    std::vector<Word> words;
+    if (!splitWords(code, words))
+      return Error{ErrorCode::MalformedFile, "line " + std::to_string(lineNumber) + " '" + code + "' is not G-code",
+                   name};
+    if (head == "G90") absoluteXyz = absoluteE = true;
+    if (head == "G91") absoluteXyz = absoluteE = false;
+    if (head == "M82") absoluteE = true;
+    if (head == "M83") absoluteE = false;
+    if (head == "G92") {
+      for (std::size_t w = 1; w < words.size(); ++w) {
+        const Word& word = words[w];
+        if (word.letter == 'X') position.x() = word.value;
+        if (word.letter == 'Y') position.y() = word.value;
+        if (word.letter == 'Z') position.z() = word.value;
+        if (word.letter == 'E') e = word.value;
+        if (word.letter == rotaryLetter) rotary = word.value;
+      }
+      continue;
+    }
+    if (head == "G28") {
+      // Homing ends at the printer's origin for the axes named (all when none is).
+      bool any = false;
+      for (std::size_t w = 1; w < words.size(); ++w) {
+        const char l = words[w].letter;
+        if (l == 'X' || l == 'Y' || l == 'Z') {
+          position[l - 'X'] = 0.0;
+          any = true;
+        }
+      }
+      if (!any) position.setZero();
+      continue;
+    }
+    if (head == "G90" || head == "G91" || head == "M82" || head == "M83") continue;
+
+    GcodeMove move;
+    move.line = lineNumber;
+    move.from = position;
+    move.rotaryFromDegrees = rotary;
+    move.step = step;
+    move.inTransition = inTransition;
+    for (std::size_t w = 1; w < words.size(); ++w) {
+      const Word& word = words[w];
+      if (word.letter >= 'X' && word.letter <= 'Z') {
+        const int axis = word.letter - 'X';
+        position[axis] = absoluteXyz ? word.value : position[axis] + word.value;
+      } else if (word.letter == 'E') {
+        const double next = absoluteE ? word.value : e + word.value;
+        move.filamentMm = next - e;
+        e = next;
+      } else if (word.letter == rotaryLetter) {
+        rotary = absoluteXyz ? word.value : rotary + word.value;
+      }
+    }
+    move.to = position;
+    move.rotaryToDegrees = rotary;
+    program.moves.push_back(move);
+  }
+  program.lineCount = lineNumber;
+  return program;
+}
+
+}  // namespace multidir::slicing

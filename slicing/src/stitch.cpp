@@ -1,0 +1,125 @@
+#include "multidir/slicing/stitch.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "multidir/slicing/gcode_program.h"
+
+namespace multidir::slicing {
+
+namespace {
+
+using core::Error;
+using core::ErrorCode;
+
+std::string fixed(double value, int digits = 3) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", digits, value);
+  return text;
+}
+
+// The offset of the line that holds `marker`, or npos.
+std::size_t lineOf(const std::string& text, const std::string& marker, std::size_t from = 0) {
+  const std::size_t at = text.find(marker, from);
+  if (at == std::string::npos) return at;
+  const std::size_t start = text.rfind('\n', at);
+  return start == std::string::npos ? 0 : start + 1;
+}
+
+}  // namespace
+
+std::string turnCommands(const PrinterProfile& profile, Dialect dialect, double degrees) {
+  std::string lines = "M400 ; let the queued moves end\n";
+  switch (dialect) {
+    case Dialect::Klipper:
+      lines += "MANUAL_STEPPER STEPPER=" + profile.klipperStepper + " MOVE=" + fixed(degrees) +
+               " SPEED=" + fixed(profile.rotaryFeedDegreesPerMin / 60.0) + "\n";
+      break;
+    case Dialect::Marlin:
+    case Dialect::RepRapFirmware:
+      lines += "G1 " + profile.rotaryAxis + fixed(degrees) + " F" + fixed(profile.rotaryFeedDegreesPerMin, 0) + "\n";
+      break;
+  }
+  lines += "M400 ; wait until the platform stands\n";
+  return lines;
+}
+
+core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, const std::vector<TurnPlan>& turns,
+                                        const PrinterProfile& profile, Dialect dialect, const Estimate& total) {
+  if (steps.empty()) return Error{ErrorCode::InvalidParameter, "no steps to stitch", "stitching"};
+  if (turns.size() + 1 != steps.size())
+    return Error{ErrorCode::InvalidParameter, "one platform turn is needed between two steps", "stitching"};
+  const std::string endMarker = "; MULTIDIR END SEQUENCE";
+
+  struct Parts {
+    std::string prelude, body, end;
+    Eigen::Vector2d firstXy = Eigen::Vector2d::Zero();
+  };
+  std::vector<Parts> parts;
+  for (const StepGcode& step : steps) {
+    const std::string stepMarker = "; MULTIDIR STEP " + std::to_string(step.step);
+    const std::size_t bodyAt = lineOf(step.text, stepMarker);
+    const std::size_t endAt = bodyAt == std::string::npos ? bodyAt : lineOf(step.text, endMarker, bodyAt);
+    if (bodyAt == std::string::npos || endAt == std::string::npos)
+      return Error{ErrorCode::InvalidParameter,
+                   "the G-code of step " + std::to_string(step.step) + " lacks MultiDir's markers ('" + stepMarker +
+                       "', '" + endMarker + "'): was it sliced by MultiDir?",
+                   "stitching"};
+    Parts p{step.text.substr(0, bodyAt), step.text.substr(bodyAt, endAt - bodyAt), step.text.substr(endAt), {}};
+    const core::Result<GcodeProgram> body = parseGcode(p.body, profile.rotaryAxis, "step " + std::to_string(step.step));
+    if (!body) return body.error();
+    bool found = false;
+    for (const GcodeMove& move : body->moves)
+      if (move.movesXy()) {
+        p.firstXy = move.to.head<2>();
+        found = true;
+        break;
+      }
+    if (!found)
+      return Error{ErrorCode::InvalidParameter, "step " + std::to_string(step.step) + " never moves in XY", "stitching"};
+    parts.push_back(std::move(p));
+  }
+
+  // Axis set-up: the platform stands at rest (angle 0) while the first step prints.
+  std::string setup = "; MultiDir: the platform's axis, at rest = 0 degrees\n";
+  if (dialect == Dialect::Klipper)
+    setup += "MANUAL_STEPPER STEPPER=" + profile.klipperStepper + " ENABLE=1 SET_POSITION=0\n";
+  else
+    setup += "G92 " + profile.rotaryAxis + "0\n";
+
+  const double retract = profile.retractLengthMm;
+  const std::string travel = fixed(profile.travelSpeedMmPerS * 60.0, 0);
+  std::string out = parts.front().prelude + setup;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    out += parts[i].body;
+    if (i + 1 == parts.size()) break;
+    const TurnPlan& turn = turns[i];
+    const Eigen::Vector2d& next = parts[i + 1].firstXy;
+    out += "; MULTIDIR TRANSITION " + std::to_string(steps[i].step) + "\n";
+    out += "; turn the platform from " + fixed(turn.fromDegrees, 2) + " to " + fixed(turn.toDegrees, 2) +
+           " degrees; the printed part sweeps up to z " + fixed(turn.sweptTopZMm, 2) + " mm\n";
+    out += "G92 E0\nG1 E" + fixed(-retract, 4) + " F2400 ; retract\n";
+    out += "G90\nG1 Z" + fixed(turn.clearanceZMm) + " F600 ; lift above the swept part\n";
+    out += "G1 X" + fixed(profile.park.x()) + " Y" + fixed(profile.park.y()) + " F" + travel + " ; park\n";
+    out += turnCommands(profile, dialect, turn.toDegrees);
+    out += "G1 X" + fixed(next.x()) + " Y" + fixed(next.y()) + " F" + travel + " ; return above step " +
+           std::to_string(steps[i + 1].step) + "'s first point\n";
+    out += "G92 E0\nG1 E" + fixed(retract, 4) + " F2400 ; unretract\nG92 E0 ; reset E\n";
+  }
+  // The last step's end sequence, without its own estimate comments: the totals follow.
+  std::string end = parts.back().end;
+  const std::size_t estimates = lineOf(end, "; filament used [mm]");
+  if (estimates != std::string::npos) end = end.substr(0, estimates);
+  out += end;
+  out += "; MultiDir: " + std::to_string(steps.size()) + " steps stitched\n";
+  out += "; filament used [mm] = " + fixed(total.filamentMm, 2) + "\n";
+  out += "; filament used [cm3] = " + fixed(total.filamentCm3, 2) + "\n";
+  out += "; total filament used [g] = " + fixed(total.filamentGrams, 2) + "\n";
+  const long seconds = std::lround(total.printSeconds);
+  out += "; estimated printing time (normal mode) = " + std::to_string(seconds / 86400) + "d " +
+         std::to_string((seconds / 3600) % 24) + "h " + std::to_string((seconds / 60) % 60) + "m " +
+         std::to_string(seconds % 60) + "s\n";
+  return out;
+}
+
+}  // namespace multidir::slicing

@@ -1,0 +1,274 @@
+// Slicing print jobs end to end with PrusaSlicer: the snowman, kitten and bunny plans, a plan with supports,
+// the stitched program, and the errors for a missing slicer and a bed too small.
+#include "multidir/slicing/slice_job.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "multidir/core/samples/samples.h"
+#include "multidir/slicing/gcode_program.h"
+#include "slicing_fixtures.h"
+#include "support/primitives.h"
+#include "support/test_models.h"
+
+using namespace multidir;
+using namespace multidir::slicing;
+using core::Vec3;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+PrinterProfile profileNamed(const std::string& name) {
+  core::Result<PrinterProfile> p = loadPrinterProfile(name);
+  if (!p) throw std::runtime_error(p.error().describe());
+  return *p;
+}
+
+std::string scratch(const std::string& name) {
+  return test::scratchDirectory("slice_job." + name + "." +
+                                testing::UnitTest::GetInstance()->current_test_info()->name());
+}
+
+int countOf(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Independent of the checks inside sliceJob: every extrusion of every step file lies on or above its base
+// plane and on the bed.
+void expectStepsOnTheirBasePlanes(const SlicedJob& sliced, const std::string& dir) {
+  for (const SlicedStep& step : sliced.steps) {
+    const std::vector<GcodeMove> moves = test::extrusionsOf(dir + "/" + step.gcodeFile);
+    int stepMoves = 0;
+    for (const GcodeMove& m : moves) {
+      EXPECT_GE(m.to.x(), sliced.profile.bedMin().x() - 1e-3);
+      EXPECT_LE(m.to.x(), sliced.profile.bedMax().x() + 1e-3);
+      EXPECT_GE(m.to.y(), sliced.profile.bedMin().y() - 1e-3);
+      EXPECT_LE(m.to.y(), sliced.profile.bedMax().y() + 1e-3);
+      if (m.step != step.index) continue;
+      ++stepMoves;
+      ASSERT_GE(std::min(m.from.z(), m.to.z()), step.baseZMm - 1e-3) << step.gcodeFile << " line " << m.line;
+    }
+    EXPECT_GT(stepMoves, 0) << step.gcodeFile;
+    EXPECT_GT(step.estimate.printSeconds, 0.0);
+    EXPECT_GT(step.estimate.filamentMm, 0.0);
+  }
+}
+
+// Generalised winding number: about 1 inside a closed, outward-oriented mesh, about 0 outside.
+double windingNumber(const core::TriangleMesh& mesh, const Vec3& p) {
+  double total = 0.0;
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
+    const Vec3 a = mesh.corner(f, 0) - p, b = mesh.corner(f, 1) - p, c = mesh.corner(f, 2) - p;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double num = a.dot(b.cross(c));
+    const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    total += 2.0 * std::atan2(num, den);
+  }
+  return total / (4.0 * M_PI);
+}
+
+core::MachineSpec rotary(const Vec3& up) {
+  core::MachineSpec m;
+  m.kind = core::MachineKind::RotaryPlatform;
+  m.up = up;
+  m.rotationAxis = Vec3::UnitX();  // perpendicular to both ups used here
+  return m;
+}
+
+}  // namespace
+
+TEST(SliceJob, SnowmanOnAKlipperRotaryAxisGivesCheckedStepsAndOneStitchedProgram) {
+  const core::Result<core::TriangleMesh> snowman = core::samples::makeSample("snowman");
+  ASSERT_TRUE(snowman.ok());
+  const core::LoadedPlan plan = test::plannedInMemory(*snowman, rotary(Vec3::UnitZ()), "snowman", 0.5);
+  const core::PrintJob job = test::machineJob(plan);
+  SliceJobOptions options;
+  options.settings = test::coarseSettings(0.3);
+  options.fixedDirection = false;
+  const std::string dir = scratch("snowman");
+  core::JobContext context;
+  const core::Result<SlicedJob> sliced = sliceJob(job, profileNamed("klipper-rotary"), options, dir, context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+  ASSERT_EQ(sliced->steps.size(), job.steps.size());
+  expectStepsOnTheirBasePlanes(*sliced, dir);
+
+  ASSERT_EQ(sliced->stitchedFile, "job.gcode");
+  const std::string stitched = test::readFile(dir + "/job.gcode");
+  EXPECT_EQ(countOf(stitched, "; MULTIDIR START SEQUENCE"), 1);
+  EXPECT_EQ(countOf(stitched, "\nG28"), 1);  // homing only once
+  EXPECT_EQ(countOf(stitched, "; MULTIDIR END SEQUENCE"), 1);
+  EXPECT_EQ(countOf(stitched, "purge line"), 1);
+  const core::Result<GcodeProgram> program = parseGcode(stitched);
+  ASSERT_TRUE(program.ok());
+  int turns = 0;
+  for (const GcodeMove& m : program->moves)
+    if (m.rotates()) {
+      ASSERT_TRUE(m.inTransition);
+      const TurnPlan& turn = sliced->turns[static_cast<std::size_t>(turns)];
+      EXPECT_GE(m.from.z(), turn.clearanceZMm - 1e-3);
+      EXPECT_NEAR(m.rotaryToDegrees, turn.toDegrees, 1e-3);
+      ++turns;
+    }
+  const int expectedTurns = [&] {
+    int n = 0;
+    for (const TurnPlan& t : sliced->turns) n += std::abs(t.toDegrees - t.fromDegrees) > 1e-9 ? 1 : 0;
+    return n;
+  }();
+  EXPECT_EQ(turns, expectedTurns);
+  // Steps after the first print on plastic: no skirt.
+  for (std::size_t i = 1; i < sliced->steps.size(); ++i)
+    EXPECT_EQ(countOf(test::readFile(dir + "/" + sliced->steps[i].gcodeFile), ";TYPE:Skirt"), 0);
+
+  const std::string jobJson = test::readFile(dir + "/print-job.json");
+  EXPECT_NE(jobJson.find("\"slicing\""), std::string::npos);
+  EXPECT_NE(jobJson.find("\"printSeconds\""), std::string::npos);
+}
+
+TEST(SliceJob, BunnyPlanSlicesForTheRobotWithEstimatesAndTheFixedDirectionComparison) {
+  core::MachineSpec machine;
+  machine.kind = core::MachineKind::TiltRotate;
+  machine.up = Vec3::UnitY();
+  const core::LoadedPlan plan = test::plannedInMemory(test::loadSharedModel("bunny.off"), machine, "bunny", 0.3);
+  const core::PrintJob job = test::machineJob(plan);
+  SliceJobOptions options;
+  options.settings = test::coarseSettings(0.6);
+  const std::string dir = scratch("bunny");
+  core::JobContext context;
+  const core::Result<SlicedJob> sliced = sliceJob(job, profileNamed("robot-0.8"), options, dir, context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+  expectStepsOnTheirBasePlanes(*sliced, dir);
+  EXPECT_TRUE(sliced->stitchedFile.empty());  // the robot turns over Modbus: one program per step
+  EXPECT_FALSE(fs::exists(dir + "/job.gcode"));
+  ASSERT_TRUE(sliced->fixedDirection.has_value());
+  EXPECT_GT(sliced->fixedDirection->filamentMm, 0.0);
+  double sum = 0.0;
+  for (const SlicedStep& s : sliced->steps) sum += s.estimate.printSeconds;
+  EXPECT_DOUBLE_EQ(sliced->total.printSeconds, sum);
+  // A Modbus platform turns after each step but the last: those programs end above the clearance.
+  for (std::size_t i = 0; i + 1 < sliced->steps.size(); ++i) {
+    const core::Result<GcodeProgram> p = parseGcode(test::readFile(dir + "/" + sliced->steps[i].gcodeFile));
+    ASSERT_TRUE(p.ok());
+    EXPECT_GE(p->moves.back().to.z(), sliced->turns[i].clearanceZMm - 1e-3);
+  }
+}
+
+TEST(SliceJob, KittenPlanSlicesOnARotaryPlatformIntoOneStitchedProgram) {
+  const core::LoadedPlan plan =
+      test::plannedInMemory(test::loadSharedModel("kitten.off"), rotary(Vec3::UnitY()), "kitten", 0.4);
+  const core::PrintJob job = test::machineJob(plan);
+  SliceJobOptions options;
+  options.settings = test::coarseSettings(0.3);
+  options.fixedDirection = false;
+  const std::string dir = scratch("kitten");
+  core::JobContext context;
+  const core::Result<SlicedJob> sliced = sliceJob(job, profileNamed("klipper-rotary"), options, dir, context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+  expectStepsOnTheirBasePlanes(*sliced, dir);
+  EXPECT_EQ(sliced->stitchedFile, "job.gcode");
+  const std::string stitched = test::readFile(dir + "/job.gcode");
+  EXPECT_EQ(countOf(stitched, "; MULTIDIR START SEQUENCE"), 1);
+  EXPECT_EQ(countOf(stitched, "; MULTIDIR TRANSITION"), static_cast<int>(sliced->steps.size()) - 1);
+}
+
+TEST(SliceJob, PlanWithSupportsExtrudesInsideTheSupportMeshes) {
+  // The T-bar printed along up on a plain printer: its bar's undersides stand on supports.
+  core::MachineSpec machine;
+  machine.kind = core::MachineKind::ThreeAxis;
+  const core::LoadedPlan plan = test::plannedInMemory(test::makeTBar(10, 30, 60, 10, 20), machine, "tbar");
+  const core::PrintJob job = test::machineJob(plan);
+  std::size_t withSupports = 0;
+  while (withSupports < job.steps.size() && job.steps[withSupports].supports.empty()) ++withSupports;
+  ASSERT_LT(withSupports, job.steps.size()) << "the T-bar's plan was expected to keep supports";
+  SliceJobOptions options;
+  options.settings = test::coarseSettings(0.3);
+  options.fixedDirection = false;
+  const std::string dir = scratch("tbar");
+  core::JobContext context;
+  const PrinterProfile profile = profileNamed("marlin-220");
+  const core::Result<SlicedJob> sliced = sliceJob(job, profile, options, dir, context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+
+  const core::PrintJobStep& step = job.steps[withSupports];
+  core::TriangleMesh supports = step.supports;
+  core::TriangleMesh region = step.region;
+  const Vec3 shift(profile.platformCenter.x(), profile.platformCenter.y(), profile.platformZMm);
+  for (Vec3& v : supports.vertices) v += shift;
+  for (Vec3& v : region.vertices) v += shift;
+  const std::vector<GcodeMove> moves = test::extrusionsOf(dir + "/" + sliced->steps[withSupports].gcodeFile);
+  int inSupports = 0;
+  int sampled = 0;
+  for (std::size_t i = 0; i < moves.size() && sampled < 400; i += std::max<std::size_t>(1, moves.size() / 400)) {
+    if (moves[i].step != step.index) continue;
+    ++sampled;
+    const Vec3 mid = 0.5 * (moves[i].from + moves[i].to) - Vec3(0, 0, 0.15);  // the middle of the layer
+    if (windingNumber(supports, mid) > 0.5 && windingNumber(region, mid) < 0.5) ++inSupports;
+  }
+  EXPECT_GT(inSupports, 0) << "of " << sampled << " sampled extrusions";
+}
+
+TEST(SliceJob, MissingSlicerNamesTheCommand) {
+  core::MachineSpec machine;
+  machine.kind = core::MachineKind::ThreeAxis;
+  core::PrintJob job;
+  job.machine = machine;
+  core::PrintJobStep step;
+  step.region = test::makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  step.regionFile = "step-01-region.stl";
+  job.steps = {step};
+  SliceJobOptions options;
+  options.slicerExecutable = "no-such-prusa-slicer";
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, scratch("missing"), context);
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::FileNotFound);
+  EXPECT_NE(sliced.error().message.find("no-such-prusa-slicer --loglevel 1 --export-gcode"), std::string::npos)
+      << sliced.error().message;
+}
+
+TEST(SliceJob, FailingSlicerGivesItsExitCodeAndLastOutput) {
+  core::PrintJob job;
+  job.machine.kind = core::MachineKind::ThreeAxis;
+  core::PrintJobStep step;
+  step.region = test::makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  step.regionFile = "step-01-region.stl";
+  job.steps = {step};
+  const std::string dir = scratch("failing");
+  const std::string fake = dir + "/fake-slicer.sh";
+  std::ofstream(fake) << "#!/bin/sh\necho 'Error: the slicer could not do it' >&2\nexit 4\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  SliceJobOptions options;
+  options.slicerExecutable = fake;
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::ExternalToolFailed);
+  EXPECT_NE(sliced.error().message.find("exit code 4"), std::string::npos) << sliced.error().message;
+  EXPECT_NE(sliced.error().message.find("the slicer could not do it"), std::string::npos);
+}
+
+TEST(SliceJob, BedTooSmallForThePartIsRefusedNamingStepAndLine) {
+  core::PrintJob job;
+  job.machine.kind = core::MachineKind::ThreeAxis;
+  core::PrintJobStep step;
+  step.region = test::makeBox(Vec3(-20, -20, 0), Vec3(20, 20, 3));
+  step.regionFile = "step-01-region.stl";
+  job.steps = {step};
+  const std::string dir = scratch("smallbed");
+  const std::string ini = dir + "/small.ini";
+  std::ofstream(ini) << "bed_shape = 0x0,30x0,30x30,0x30\nmax_print_height = 100\nskirts = 0\n";
+  SliceJobOptions options;
+  options.settings = test::coarseSettings(0.3);
+  options.fixedDirection = false;
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed(ini), options, dir + "/out", context);
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::CheckFailed);
+  EXPECT_NE(sliced.error().message.find("step 1, line "), std::string::npos) << sliced.error().message;
+  EXPECT_NE(sliced.error().message.find("outside the printer's bed"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir + "/out/step-01.gcode"));
+}
