@@ -14,6 +14,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -152,10 +153,20 @@ void MainWindow::buildMenus() {
 }
 
 void MainWindow::buildDocks() {
-  auto addDock = [this](QWidget* panel, const QString& title, const QString& name) {
+  // On a small screen (1280x720) the docks share little height: a panel scrolls inside its dock rather than
+  // push the dock tab bar and the status bar off screen. The Hardware panel scrolls itself (E-STOP stays out).
+  auto addDock = [this](QWidget* panel, const QString& title, const QString& name, bool scrolls = true) {
     auto* dock = new QDockWidget(title, this);
     dock->setObjectName(name);
-    dock->setWidget(panel);
+    if (scrolls) {
+      auto* scroll = new QScrollArea(dock);
+      scroll->setWidgetResizable(true);
+      scroll->setFrameShape(QFrame::NoFrame);
+      scroll->setWidget(panel);
+      dock->setWidget(scroll);
+    } else {
+      dock->setWidget(panel);
+    }
     dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
     addDockWidget(Qt::RightDockWidgetArea, dock);
     return dock;
@@ -207,10 +218,16 @@ void MainWindow::buildDocks() {
 
   // Hardware: the Machine panel's profile gives the device's limits; the plan shown is the one to run.
   auto* hardwarePanel = new HardwarePanel(this);
-  tabifyDockWidget(m_planDock, addDock(hardwarePanel, tr("Hardware"), QStringLiteral("hardwareDock")));
+  tabifyDockWidget(m_planDock, addDock(hardwarePanel, tr("Hardware"), QStringLiteral("hardwareDock"), false));
   auto sendProfile = [this, hardwarePanel] {
     if (m_upBox) hardwarePanel->setMachineProfile(m_machinePanel->machineSpec(upDirection()));
   };
+  // A second E-STOP, above everything, while a device is connected: the dock may be tabbed away or closed.
+  QToolBar* estopBar = addToolBar(tr("Emergency stop"));
+  estopBar->setObjectName(QStringLiteral("emergencyStopToolBar"));
+  estopBar->setMovable(false);
+  estopBar->toggleViewAction()->setVisible(false);  // it cannot be hidden from the toolbar menu
+  hardwarePanel->addEmergencyStopTo(estopBar);
   QTimer::singleShot(0, hardwarePanel, sendProfile);  // once the Up box exists
   connect(m_machinePanel, &MachinePanel::machineChanged, hardwarePanel, sendProfile);
   connect(hardwarePanel, &HardwarePanel::connectRequested, hardwarePanel, sendProfile);  // the latest up too

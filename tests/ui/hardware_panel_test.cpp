@@ -1,96 +1,13 @@
 // The Hardware panel against the device simulator on 127.0.0.1 (ephemeral port): buttons pressed as an
 // operator would, outcomes read from the panel's labels and the simulator's own state.
-#include "ui/device/hardware_panel.h"
-
 #include <gtest/gtest.h>
 
-#include <QDoubleSpinBox>
-#include <QLabel>
-#include <QLocale>
-#include <QPushButton>
 #include <QSignalSpy>
-#include <QTest>
-#include <chrono>
-#include <memory>
 
-#include "hardware/hardware_test_support.h"
-#include "multidir/hardware/device_simulator.h"
-#include "ui/device/connection_form.h"
-#include "ui/device/device_link.h"
-#include "ui/device/print_run_driver.h"
+#include "ui/hardware_panel_fixture.h"
 
 namespace multidir::ui {
 namespace {
-
-using namespace std::chrono_literals;
-
-constexpr int kWaitMs = 5000;  // generous: the simulator answers within milliseconds
-
-// The hardware tests' short timeouts and intervals, with the rotary platform's unit id.
-hardware::ConnectionSettings fastSettings(int port) { return hardware::test::fastSettings(port, 1); }
-
-QString degreesText(double value) { return QLocale().toString(value, 'f', 2) + QStringLiteral("°"); }
-
-class HardwarePanelTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ASSERT_TRUE(sim.start().ok());
-    core::MachineSpec profile;
-    profile.kind = core::MachineKind::RotaryPlatform;
-    profile.minAngleDegrees = -60.0;
-    profile.maxAngleDegrees = 60.0;
-    profile.angleStepDegrees = 1.0;
-    panel.setMachineProfile(profile);
-    panel.connectionForm()->setKind(DeviceKind::RotaryPlatform);
-    panel.connectionForm()->setSettings(fastSettings(sim.port()));
-    panel.connectionForm()->setRotarySpeedDegreesPerSecond(60.0);
-    hardware::PrintRunOptions runOptions;
-    runOptions.settleTime = 50ms;
-    panel.setPrintRunOptions(runOptions);
-    panel.resize(480, 1000);
-    panel.show();
-  }
-
-  QPushButton* buttonNamed(const char* name) {
-    auto* found = panel.findChild<QPushButton*>(QString::fromLatin1(name));
-    EXPECT_NE(found, nullptr) << name;
-    return found;
-  }
-  // Presses a button as the operator would: only an enabled button does anything.
-  void press(const char* name) {
-    QPushButton* target = buttonNamed(name);
-    ASSERT_NE(target, nullptr);
-    ASSERT_TRUE(target->isEnabled()) << name << " is disabled; message: " << panel.messageText().toStdString();
-    QTest::mouseClick(target, Qt::LeftButton);
-  }
-  QString label(const char* name) {
-    auto* found = panel.findChild<QLabel*>(QString::fromLatin1(name));
-    return found ? found->text() : QStringLiteral("<no label %1>").arg(QString::fromLatin1(name));
-  }
-  const DeviceSnapshot& snapshot() { return panel.deviceLink()->snapshot(); }
-
-  void connectPanel() {
-    press("connectButton");
-    ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().state == DeviceState::Connected; }, kWaitMs))
-        << panel.messageText().toStdString();
-    EXPECT_EQ(label("stateValue"), QStringLiteral("Connected"));
-  }
-  void enableAndHome() {
-    press("enableButton");
-    ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().enabled; }, kWaitMs)) << panel.messageText().toStdString();
-    press("homeButton");
-    ASSERT_TRUE(QTest::qWaitFor([&] { return snapshot().homed && !snapshot().homing; }, kWaitMs))
-        << panel.messageText().toStdString();
-    EXPECT_EQ(label("homedValue"), QStringLiteral("yes"));
-  }
-  void goTo(double angleDegrees) {
-    panel.findChild<QDoubleSpinBox*>(QStringLiteral("targetAngle"))->setValue(angleDegrees);
-    press("goToButton");
-  }
-
-  hardware::DeviceSimulator sim;
-  HardwarePanel panel;
-};
 
 TEST_F(HardwarePanelTest, HomeThenGoToShowsTheAngleReached) {
   connectPanel();

@@ -1,5 +1,6 @@
 #include "ui/device/device_link.h"
 
+#include <QDateTime>
 #include <QLocale>
 #include <QMetaObject>
 #include <QThread>
@@ -140,6 +141,8 @@ core::Status DeviceLink::connectDevice(const DeviceLinkSettings& settings) {
                        "machine profile"};
   disconnectDevice();
   m_settings = settings;
+  m_rawLastError.clear();
+  m_resolvedProblem.reset();
   const std::uint64_t generation = ++m_generation;
 
   auto session = std::make_shared<Session>();
@@ -295,15 +298,15 @@ void DeviceLink::clearFault() {
   // Also the operator clearing a latched stop or e-stop (docs/hardware.md): refused until the device confirmed it.
   const core::Status cleared = m_session->rotary ? m_session->rotary->clearStop() : m_session->robot->clearStop();
   if (!cleared.ok()) return report(name, cleared);
-  submit(name, m_session->rotary ? m_session->rotary->clearFault() : m_session->robot->clearFault());
+  submit(name, m_session->rotary ? m_session->rotary->clearFault() : m_session->robot->clearFault(), true);
 }
 
-void DeviceLink::submit(const QString& name, std::future<core::Status> future) {
+void DeviceLink::submit(const QString& name, std::future<core::Status> future, bool resolvesProblem) {
   if (future.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
     report(name, future.get());  // refused: nothing was sent
     return;
   }
-  m_pending.push_back(PendingCommand{name, std::move(future)});
+  m_pending.push_back(PendingCommand{name, std::move(future), resolvesProblem});
   if (!m_pendingTimer.isActive()) m_pendingTimer.start();
 }
 
@@ -331,6 +334,7 @@ void DeviceLink::report(const QString& name, const core::Status& status) {
 void DeviceLink::checkPending() {
   // Collected first: a slot of commandFinished may issue a new command.
   std::vector<std::pair<QString, core::Status>> finished;
+  bool resolved = false;
   for (auto it = m_pending.begin(); it != m_pending.end();) {
     if (it->future.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
       ++it;
@@ -342,10 +346,12 @@ void DeviceLink::checkPending() {
     } catch (const std::exception& e) {  // a broken promise: the driver went away
       status = core::Error{core::ErrorCode::Cancelled, e.what(), ""};
     }
+    resolved = resolved || (it->resolvesProblem && status.ok());
     finished.emplace_back(it->name, std::move(status));
     it = m_pending.erase(it);
   }
   if (m_pending.empty()) m_pendingTimer.stop();
+  if (resolved) problemResolved();
   for (const auto& [name, status] : finished) report(name, status);
 }
 
@@ -398,7 +404,31 @@ void DeviceLink::takeStatus() {
   } else {
     return;
   }
-  if (next.link == hardware::LinkState::Connected && next.deviceAlive) next.lastAlive = Clock::now();
+  const bool linkUp = next.link == hardware::LinkState::Connected;
+  if (linkUp && next.deviceAlive) next.lastAlive = Clock::now();
+  // Before the first read with the link up the status holds the driver's defaults (angle 0, program "not
+  // running"): not the device's state, so nothing of it is shown; afterwards a lost link makes it stale.
+  next.hasRead = m_snapshot.hasRead || linkUp;
+  if (!next.hasRead) next.faultText.clear();
+  if (!linkUp && next.hasRead)
+    next.staleSince = m_snapshot.staleSince ? m_snapshot.staleSince : std::optional(QDateTime::currentDateTime());
+  // The driver keeps its last problem until another one comes; what it reported before the link came (back)
+  // up is resolved by the link being up.
+  m_rawLastError = next.lastError;
+  if (!linkUp)
+    m_resolvedProblem.reset();
+  else if (!m_resolvedProblem)
+    m_resolvedProblem = next.lastError;
+  if (m_resolvedProblem && next.lastError == *m_resolvedProblem) next.lastError.clear();
+  setSnapshot(next);
+}
+
+void DeviceLink::problemResolved() {
+  if (!m_session || m_snapshot.link != hardware::LinkState::Connected) return;
+  m_resolvedProblem = m_rawLastError;
+  if (m_snapshot.lastError.isEmpty()) return;
+  DeviceSnapshot next = m_snapshot;
+  next.lastError.clear();
   setSnapshot(next);
 }
 

@@ -15,6 +15,7 @@
 #include <QTimer>
 #include <future>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "multidir/core/common/result.h"
@@ -77,19 +78,26 @@ class DeviceLink : public QObject {
   struct PendingCommand {
     QString name;
     std::future<core::Status> future;
+    bool resolvesProblem = false;  // done, it resolves the device's last problem (Clear fault)
   };
 
-  void submit(const QString& name, std::future<core::Status> future);
+  void submit(const QString& name, std::future<core::Status> future, bool resolvesProblem = false);
   void report(const QString& name, const core::Status& status);
   void reportNotConnected(const QString& name);
   void checkPending();
   void takeStatus();
   void setSnapshot(const DeviceSnapshot& snapshot);
+  // The driver's last problem no longer applies (Clear fault done): the snapshot stops showing it.
+  void problemResolved();
 
   DeviceLinkSettings m_settings;
   std::shared_ptr<Session> m_session;
   std::shared_ptr<Mailbox> m_mailbox;
   DeviceSnapshot m_snapshot;
+  QString m_rawLastError;  // the driver's lastError as last received
+  // The driver's lastError at the moment it stopped applying (the link came up, a fault was cleared);
+  // unset while the link is down, when whatever the driver last reported is the cause.
+  std::optional<QString> m_resolvedProblem;
   std::vector<PendingCommand> m_pending;
   QTimer m_pendingTimer;
   std::vector<QThread*> m_connectThreads;

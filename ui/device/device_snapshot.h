@@ -1,6 +1,7 @@
 #pragma once
 // What the Hardware panel knows of the device it drives: which kind it is, how to reach it, and the last
 // status the driver reported, in the panel's terms (plain values, copied to the GUI thread).
+#include <QDateTime>
 #include <QMetaType>
 #include <QString>
 #include <chrono>
@@ -43,12 +44,23 @@ struct DeviceSnapshot {
   double azimuthDegrees = 0.0;      // robot
   double targetTiltDegrees = 0.0;
   double targetAzimuthDegrees = 0.0;
-  QString faultText;         // the fault in plain words, empty when none
-  QString lastError;         // the driver's latest link or device problem (English, from the driver), empty when none
+  // Whether the device values above were ever read in this session (a status with the link up). Before the
+  // first good read they are the driver's defaults, not the device's: the panel shows none of them.
+  bool hasRead = false;
+  // The values were read, but the link is down since this wall-clock time: they are stale (the device may
+  // have moved, faulted or stopped since). Unset while the link is up or before the first read.
+  std::optional<QDateTime> staleSince;
+  QString faultText;  // the fault in plain words, empty when none (and before the first read)
+  // The driver's latest link or device problem that still applies (English, from the driver), empty when
+  // none: a link problem clears once the link is back, a device problem after Clear fault.
+  QString lastError;
   bool deviceAlive = false;  // the controller echoes the heartbeat / the robot program's heartbeat runs
   // When the GUI last received a status with the device alive (nullopt: not since connecting).
   std::optional<std::chrono::steady_clock::time_point> lastAlive;
   std::uint64_t polls = 0;
+
+  // The values are the device's as read just now (link up and read at least once).
+  [[nodiscard]] bool isFresh() const { return hasRead && !staleSince; }
 };
 
 // The machine profile's limits when `profile` fits `kind`; else a default profile of the device's kind with

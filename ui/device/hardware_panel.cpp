@@ -1,6 +1,8 @@
 #include "ui/device/hardware_panel.h"
 
+#include <QAction>
 #include <QComboBox>
+#include <QDateTime>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
@@ -11,8 +13,10 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QToolBar>
 #include <QVBoxLayout>
 #include <chrono>
+#include <utility>
 
 #include "ui/device/connection_form.h"
 #include "ui/device/device_link.h"
@@ -95,6 +99,20 @@ QString orientationText(const hardware::PlatformOrientation& orientation) {
       .arg(degrees(orientation.tiltDegrees), degrees(orientation.azimuthDegrees));
 }
 
+// How to get a device going again after a fault or an E-STOP: the rotary platform's drive must be switched on
+// and homed again; the robot program takes moves again once reset (the arm has no Enable, and its Home is
+// only "level the platform").
+QString recoveryText(DeviceKind kind) {
+  return kind == DeviceKind::RotaryPlatform
+             ? HardwarePanel::tr("Clear fault, then Enable and Home")
+             : HardwarePanel::tr("Clear fault; the robot program then takes moves again");
+}
+
+QString timeText(const QDateTime& time) { return time.toString(QStringLiteral("HH:mm:ss")); }
+
+constexpr const char* kStaleStyle = "color: #8a8a8a;";
+constexpr const char* kFaultStyle = "color: #c62828;";
+
 QString clockText(std::chrono::milliseconds elapsed) {
   const long long seconds = elapsed.count() / 1000;
   return QStringLiteral("%1:%2:%3")
@@ -121,20 +139,32 @@ HardwarePanel::HardwarePanel(QWidget* parent) : QWidget(parent) {
   layout->addStretch(1);
 
   auto* scroll = new QScrollArea(this);
+  scroll->setObjectName(QStringLiteral("hardwareScroll"));
   scroll->setWidgetResizable(true);
   scroll->setFrameShape(QFrame::NoFrame);
   scroll->setWidget(content);
+  // The banner and the safety buttons stay above the scrolled part: never below the fold.
+  m_banner = valueLabel(this, QStringLiteral("linkBanner"));  // styled and shown by updateBanner()
+  m_banner->hide();
   auto* outer = new QVBoxLayout(this);
   outer->setContentsMargins(0, 0, 0, 0);
-  outer->addWidget(scroll);
+  outer->addWidget(m_banner);
+  outer->addWidget(buildSafetyBar());
+  outer->addWidget(scroll, 1);
 
   connect(m_link, &DeviceLink::snapshotChanged, this, &HardwarePanel::onSnapshot);
   connect(m_link, &DeviceLink::commandFinished, this, &HardwarePanel::onCommandFinished);
   connect(m_link, &DeviceLink::connectFinished, this, &HardwarePanel::onConnectFinished);
   connect(m_run, &PrintRunDriver::stateChanged, this, &HardwarePanel::onRunStateChanged);
+  connect(m_run, &PrintRunDriver::stateChanged, this, &HardwarePanel::updateBanner);
   connect(m_run, &PrintRunDriver::printRequested, this, &HardwarePanel::onPrintRequested);
   connect(m_run, &PrintRunDriver::currentRegionChanged, this, &HardwarePanel::currentRegionChanged);
   connect(m_run, &PrintRunDriver::logged, m_runLog, &QPlainTextEdit::appendPlainText);
+  connect(m_run, &PrintRunDriver::pausedForLostLink, this, [this] {
+    updateBanner();
+    updateRunTexts();
+    updateControls();
+  });
   connect(m_form, &ConnectionForm::kindChanged, this, [this] {
     updateKindWidgets();
     updateLimits();
@@ -181,6 +211,7 @@ QGroupBox* HardwarePanel::buildConnectionGroup() {
 QGroupBox* HardwarePanel::buildStatusGroup() {
   auto* group = new QGroupBox(tr("Status"), this);
   m_state = valueLabel(group, QStringLiteral("stateValue"));
+  m_enabled = valueLabel(group, QStringLiteral("enabledValue"));
   m_position = valueLabel(group, QStringLiteral("positionValue"));
   m_moving = valueLabel(group, QStringLiteral("movingValue"));
   m_homed = valueLabel(group, QStringLiteral("homedValue"));
@@ -188,7 +219,10 @@ QGroupBox* HardwarePanel::buildStatusGroup() {
   m_heartbeat = valueLabel(group, QStringLiteral("heartbeatValue"));
   m_linkProblem = valueLabel(group, QStringLiteral("linkProblemValue"));
   auto* form = new QFormLayout(group);
+  m_statusForm = form;
   form->addRow(tr("State:"), m_state);
+  // The rotary platform's drive must be switched on before it homes or moves; the arm has no such step.
+  form->addRow(tr("Enabled:"), m_enabled);
   form->addRow(tr("Position:"), m_position);
   form->addRow(tr("Moving:"), m_moving);
   form->addRow(tr("Homed:"), m_homed);
@@ -219,15 +253,6 @@ QGroupBox* HardwarePanel::buildControlsGroup() {
   m_targetTiltLabel = new QLabel(tr("Tilt:"), group);
   m_targetAzimuthLabel = new QLabel(tr("Azimuth:"), group);
   m_goTo = button(group, QStringLiteral("goToButton"), tr("Go to"));
-  m_stop =
-      button(group, QStringLiteral("stopButton"), tr("Stop"), tr("Decelerates and stops; cancels queued commands."));
-  m_estop = button(group, QStringLiteral("estopButton"), tr("E-STOP"),
-                   tr("Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards."));
-  m_estop->setMinimumHeight(48);
-  m_estop->setStyleSheet(
-      QStringLiteral("QPushButton { background-color: #c62828; color: white; font-weight: bold; font-size: 16pt; }"
-                     "QPushButton:disabled { background-color: #e0a0a0; color: #f5f5f5; }"));
-
   auto* grid = new QGridLayout(group);
   grid->addWidget(m_enable, 0, 0);
   grid->addWidget(m_home, 0, 1);
@@ -244,8 +269,6 @@ QGroupBox* HardwarePanel::buildControlsGroup() {
   grid->addWidget(m_targetAzimuthLabel, 5, 0);
   grid->addWidget(m_targetAzimuth, 5, 1);
   grid->addWidget(m_goTo, 3, 2);
-  grid->addWidget(m_stop, 6, 0, 1, 3);
-  grid->addWidget(m_estop, 7, 0, 1, 3);
 
   connect(m_enable, &QPushButton::clicked, m_link, &DeviceLink::enable);
   connect(m_home, &QPushButton::clicked, m_link, &DeviceLink::home);
@@ -253,9 +276,41 @@ QGroupBox* HardwarePanel::buildControlsGroup() {
   connect(m_jogMinus, &QPushButton::clicked, this, [this] { jog(-1.0); });
   connect(m_jogPlus, &QPushButton::clicked, this, [this] { jog(1.0); });
   connect(m_goTo, &QPushButton::clicked, this, &HardwarePanel::goTo);
+  return group;
+}
+
+QWidget* HardwarePanel::buildSafetyBar() {
+  auto* bar = new QWidget(this);
+  bar->setObjectName(QStringLiteral("safetyBar"));
+  m_stop = button(bar, QStringLiteral("stopButton"), tr("Stop"), tr("Decelerates and stops; cancels queued commands."));
+  m_estop = button(bar, QStringLiteral("estopButton"), tr("E-STOP"));
+  styleEmergencyStop(m_estop);
+  m_estop->setMinimumHeight(48);
+  m_stop->setMinimumHeight(48);
+  auto* layout = new QHBoxLayout(bar);
+  layout->setContentsMargins(9, 6, 9, 6);
+  layout->addWidget(m_stop, 1);
+  layout->addWidget(m_estop, 2);
   connect(m_stop, &QPushButton::clicked, m_link, &DeviceLink::stop);
   connect(m_estop, &QPushButton::clicked, m_link, &DeviceLink::emergencyStop);
-  return group;
+  return bar;
+}
+
+void HardwarePanel::styleEmergencyStop(QPushButton* estop) const {
+  estop->setStyleSheet(
+      QStringLiteral("QPushButton { background-color: #c62828; color: white; font-weight: bold; font-size: 16pt; "
+                     "padding: 4px 12px; }"
+                     "QPushButton:disabled { background-color: #e0a0a0; color: #f5f5f5; }"));
+}
+
+QAction* HardwarePanel::addEmergencyStopTo(QToolBar* bar) {
+  m_windowEstop = button(bar, QStringLiteral("windowEstopButton"), tr("E-STOP"));
+  styleEmergencyStop(m_windowEstop);
+  connect(m_windowEstop, &QPushButton::clicked, m_link, &DeviceLink::emergencyStop);
+  m_windowEstopAction = bar->addWidget(m_windowEstop);
+  updateKindWidgets();
+  updateControls();
+  return m_windowEstopAction;
 }
 
 QGroupBox* HardwarePanel::buildRunGroup() {
@@ -311,23 +366,58 @@ QString HardwarePanel::messageText() const { return m_message->text(); }
 
 QString HardwarePanel::promptText() const { return m_prompt->text(); }
 
+QString HardwarePanel::bannerText() const { return m_banner->isHidden() ? QString() : m_banner->text(); }
+
+void HardwarePanel::updateBanner() {
+  const DeviceSnapshot& s = m_link->snapshot();
+  const bool open = m_link->isOpen();
+  const bool held = m_run->isActive() && m_run->heldForLostLink();
+  QString text;
+  bool alarm = true;
+  if (open && s.staleSince) {
+    text = tr("The link to %1 was lost at %2. The values below are not the device's any more; MultiDir keeps "
+              "trying to reconnect.")
+               .arg(m_link->deviceName(), timeText(*s.staleSince));
+    if (held)
+      text += QLatin1Char(' ') + tr("The print run is paused: a region being printed may finish, no new region "
+                                    "starts. Press Resume once the link is back.");
+  } else if (open && !s.hasRead && !s.lastError.isEmpty()) {
+    text = tr("%1 does not answer: %2").arg(m_link->deviceName(), s.lastError);
+  } else if (held) {
+    alarm = false;
+    text = tr("The link is back. The print run is still paused since the link was lost: check the platform, "
+              "then press Resume.");
+  }
+  m_banner->setText(text);
+  m_banner->setStyleSheet(QStringLiteral("QLabel#linkBanner { background-color: %1; color: %2; font-weight: bold; "
+                                         "padding: 8px; }")
+                              .arg(alarm ? QStringLiteral("#c62828") : QStringLiteral("#ffb300"),
+                                   alarm ? QStringLiteral("white") : QStringLiteral("black")));
+  m_banner->setVisible(!text.isEmpty());
+}
+
 core::MachineSpec HardwarePanel::machineForNextConnection() const {
   return machineForDevice(m_form->kind(), m_profile);
 }
 
 void HardwarePanel::setMachineProfile(const core::MachineSpec& profile) {
   m_profile = profile;
+  // The device follows the machine the plans are made for; an open session keeps its device.
+  if (!m_link->isOpen()) {
+    if (profile.kind == core::MachineKind::RotaryPlatform) m_form->setKind(DeviceKind::RotaryPlatform);
+    if (profile.kind == core::MachineKind::TiltRotate) m_form->setKind(DeviceKind::RobotArm);
+  }
   updateLimits();
 }
 
 void HardwarePanel::setPlan(const core::Decomposition& plan) {
-  m_planAngles = regionAngles(plan);
+  m_planTargets = regionTargets(plan);
   updateRunTexts();
   updateControls();
 }
 
 void HardwarePanel::clearPlan() {
-  m_planAngles.clear();
+  m_planTargets.clear();
   updateRunTexts();
   updateControls();
 }
@@ -349,6 +439,7 @@ void HardwarePanel::connectDevice() {
   setMessage(tr("Connecting to %1…").arg(m_link->deviceName()), false);
   m_clockTimer.start();
   updateLimits();
+  emit sessionOpenChanged(true);
 }
 
 void HardwarePanel::disconnectDevice() {
@@ -356,36 +447,73 @@ void HardwarePanel::disconnectDevice() {
   if (!m_run->isActive()) m_clockTimer.stop();
   setMessage(tr("Disconnected."), false);
   updateLimits();
+  emit sessionOpenChanged(false);
 }
 
 void HardwarePanel::onSnapshot(const DeviceSnapshot& s) {
-  m_state->setText(stateText(s));
   const bool open = s.state != DeviceState::Disconnected;
   if (!open) {
-    m_position->setText(QStringLiteral("—"));
-    m_moving->setText(QStringLiteral("—"));
-    m_homed->setText(QStringLiteral("—"));
-  } else if (s.kind == DeviceKind::RotaryPlatform) {
-    m_position->setText(tr("%1 (target %2)").arg(degrees(s.angleDegrees), degrees(s.targetAngleDegrees)));
-    m_moving->setText(s.homing ? tr("homing") : s.moving ? tr("yes") : tr("no"));
-    m_homed->setText(s.homed ? tr("yes") : tr("no"));
+    m_state->setText(stateText(s));
+  } else if (!s.hasRead && !s.lastError.isEmpty()) {
+    m_state->setText(tr("Not reachable; MultiDir keeps trying…"));
+  } else if (s.staleSince) {
+    m_state->setText(tr("Link lost at %1; reconnecting…").arg(timeText(*s.staleSince)));
   } else {
-    m_position->setText(tr("tilt %1, azimuth %2").arg(degrees(s.tiltDegrees), degrees(s.azimuthDegrees)));
-    m_moving->setText(s.moving ? tr("yes") : tr("no"));
-    m_homed->setText(tr("not needed (robot arm)"));
+    m_state->setText(stateText(s));
   }
-  m_fault->setText(s.faultText.isEmpty() ? (open ? tr("none") : QStringLiteral("—")) : s.faultText);
-  m_fault->setStyleSheet(s.faultText.isEmpty() ? QString() : QStringLiteral("color: #c62828;"));
+
+  QString enabled;
+  QString position;
+  QString moving;
+  QString homed;
+  if (s.kind == DeviceKind::RotaryPlatform) {
+    enabled = s.enabled ? tr("yes") : tr("no: press Enable");
+    position = tr("%1 (target %2)").arg(degrees(s.angleDegrees), degrees(s.targetAngleDegrees));
+    moving = s.homing ? tr("homing") : s.moving ? tr("yes") : tr("no");
+    homed = s.homed ? tr("yes") : tr("no");
+  } else {
+    position = tr("tilt %1, azimuth %2").arg(degrees(s.tiltDegrees), degrees(s.azimuthDegrees));
+    moving = s.moving ? tr("yes") : tr("no");
+    homed = tr("not needed (robot arm)");
+  }
+  const QString fault = s.faultText.isEmpty() ? tr("none") : s.faultText;
+  const std::pair<QLabel*, QString> fields[] = {
+      {m_enabled, enabled}, {m_position, position}, {m_moving, moving}, {m_homed, homed}, {m_fault, fault}};
+  for (const auto& [label, value] : fields) {
+    if (!open) {
+      label->setText(QStringLiteral("—"));
+      label->setStyleSheet(QString());
+    } else if (!s.hasRead) {
+      // The driver's defaults are not the device's state: show none of them.
+      label->setText(tr("unknown: not read yet"));
+      label->setStyleSheet(QString::fromLatin1(kStaleStyle));
+    } else if (s.staleSince) {
+      label->setText(tr("unknown since %1 (last read: %2)").arg(timeText(*s.staleSince), value));
+      label->setStyleSheet(QString::fromLatin1(kStaleStyle));
+    } else {
+      label->setText(value);
+      label->setStyleSheet(QString());
+    }
+  }
+  if (s.isFresh() && !s.faultText.isEmpty()) m_fault->setStyleSheet(QString::fromLatin1(kFaultStyle));
   m_linkProblem->setText(s.lastError.isEmpty() ? tr("none") : s.lastError);
+  m_linkProblem->setStyleSheet(s.lastError.isEmpty() ? QString() : QString::fromLatin1(kFaultStyle));
+  // The link dropped: what the panel said before (a command sent, a run finished) is no longer the news.
+  if (s.staleSince && !m_wasStale && m_messageTopic == MessageTopic::General) m_message->clear();
+  m_wasStale = s.staleSince.has_value();
+  updateBanner();
   updateClockTexts();
   updateControls();
 }
 
 void HardwarePanel::onCommandFinished(const QString& command, bool ok, const QString& problem) {
-  if (ok)
-    setMessage(tr("%1: sent to the device.").arg(command), false);
-  else
+  if (!ok) {
     setMessage(problem, true);
+  } else if (command == DeviceLink::tr("E-STOP")) {  // the name DeviceLink gave the command
+    setMessage(tr("%1: sent to the device. To go on: %2.").arg(command, recoveryText(m_link->settings().kind)), false);
+  } else {
+    setMessage(tr("%1: sent to the device.").arg(command), false);
+  }
 }
 
 void HardwarePanel::onConnectFinished(bool connected, const QString& problem) {
@@ -399,14 +527,15 @@ void HardwarePanel::onConnectFinished(bool connected, const QString& problem) {
 void HardwarePanel::onRunStateChanged(hardware::PrintRunState state) {
   if (state != hardware::PrintRunState::Printing) m_prompt->clear();
   if (state == hardware::PrintRunState::Faulted)
-    setMessage(tr("The print run stopped: %1. Fix the device (Clear fault, Enable, Home), then press Resume to "
-                  "retry this step, or Abort.")
-                   .arg(m_run->lastProblem()),
-               true);
+    setMessage(tr("The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.")
+                   .arg(m_run->lastProblem(), recoveryText(m_link->settings().kind)),
+               true, MessageTopic::Run);
   else if (state == hardware::PrintRunState::Completed)
-    setMessage(tr("The print run is finished: every region was printed."), false);
+    setMessage(tr("The print run is finished: every region was printed."), false, MessageTopic::Run);
   else if (state == hardware::PrintRunState::Aborted)
-    setMessage(tr("The print run was aborted."), false);
+    setMessage(tr("The print run was aborted."), false, MessageTopic::Run);
+  else if (m_messageTopic == MessageTopic::Run)
+    m_message->clear();  // the run went on: the previous run's outcome or stop no longer applies
   if (m_run->isActive()) m_clockTimer.start();
   updateRunTexts();
   updateControls();
@@ -445,13 +574,14 @@ void HardwarePanel::startRun() {
   }
   // The limits the driver enforces are those it was connected with.
   const DeviceLinkSettings& settings = m_link->settings();
-  auto steps = printSteps(m_planAngles, settings.kind, settings.machine);
+  auto steps = printSteps(m_planTargets, settings.kind, settings.machine);
   if (!steps) {
     setMessage(tr("Start run refused: %1").arg(QString::fromStdString(steps.error().message)), true);
     return;
   }
   m_runLog->clear();
   m_prompt->clear();
+  if (m_messageTopic == MessageTopic::Run) m_message->clear();
   const core::Status started = m_run->start(m_link->positioner(), std::move(steps.value()), m_runOptions);
   runEvent(tr("Start run"), started);
 }
@@ -462,9 +592,10 @@ void HardwarePanel::runEvent(const QString& event, const core::Status& status) {
   updateControls();
 }
 
-void HardwarePanel::setMessage(const QString& text, bool error) {
+void HardwarePanel::setMessage(const QString& text, bool error, MessageTopic topic) {
   m_message->setText(text);
   m_messageIsError = error;
+  m_messageTopic = topic;
   m_message->setStyleSheet(error ? QStringLiteral("color: #c62828;") : QString());
 }
 
@@ -501,6 +632,21 @@ void HardwarePanel::updateKindWidgets() {
   m_targetAzimuthLabel->setVisible(!rotary);
   m_jogAxis->setVisible(!rotary);
   m_enable->setVisible(rotary);
+  m_statusForm->setRowVisible(m_enabled, rotary);
+  // What to do after a fault or an E-STOP depends on the device: say only what applies to it.
+  const QString recovery = recoveryText(kind);
+  const QString estopTip = rotary ? tr("Emergency stop: cuts the platform's power stage at once. Afterwards: %1.")
+                                        .arg(recovery)
+                                  : tr("Emergency stop: halts the robot program at maximal deceleration. "
+                                       "Afterwards: %1.")
+                                        .arg(recovery);
+  m_estop->setToolTip(estopTip);
+  if (m_windowEstop) m_windowEstop->setToolTip(estopTip);
+  m_clearFault->setToolTip(rotary ? tr("Resets the platform after a fault or an E-STOP; then Enable and Home again.")
+                                  : tr("Resets the robot program after a fault or an E-STOP; it then takes moves "
+                                       "again."));
+  m_home->setToolTip(rotary ? tr("Finds the home switch (0°); the drive must be enabled.")
+                            : tr("Levels the platform (tilt 0°)."));
 }
 
 void HardwarePanel::updateControls() {
@@ -525,8 +671,10 @@ void HardwarePanel::updateControls() {
   m_clearFault->setEnabled(linkUp && !runHoldsDevice);
   m_stop->setEnabled(open);
   m_estop->setEnabled(open);  // whenever there is a session, even while reconnecting
+  if (m_windowEstop) m_windowEstop->setEnabled(open);
+  if (m_windowEstopAction) m_windowEstopAction->setVisible(open);
 
-  m_startRun->setEnabled(connected && !m_planAngles.empty() && !m_run->isActive());
+  m_startRun->setEnabled(connected && !m_planTargets.empty() && !m_run->isActive());
   m_regionDone->setEnabled(runState == hardware::PrintRunState::Printing);
   const bool pausable = runState == hardware::PrintRunState::Moving || runState == hardware::PrintRunState::Settling ||
                         runState == hardware::PrintRunState::Printing;
@@ -538,8 +686,11 @@ void HardwarePanel::updateControls() {
 
 void HardwarePanel::updateClockTexts() {
   const DeviceSnapshot& s = m_link->snapshot();
+  m_heartbeat->setStyleSheet(s.staleSince ? QString::fromLatin1(kStaleStyle) : QString());
   if (s.state == DeviceState::Disconnected) {
     m_heartbeat->setText(QStringLiteral("—"));
+  } else if (s.staleSince) {
+    m_heartbeat->setText(tr("unknown since %1").arg(timeText(*s.staleSince)));
   } else if (!s.lastAlive) {
     m_heartbeat->setText(tr("not seen yet"));
   } else {

@@ -6,6 +6,11 @@
 // panel reads only the last snapshot); the print run is ticked by PrintRunDriver's timer. Errors (refusals,
 // timeouts, faults) are shown in the panel in plain words, never in a modal dialog.
 //
+// Truthfulness: no device value is shown before the first good read; when the link drops every value is
+// greyed and marked "unknown since HH:MM:SS", a banner above everything says so, and the print run pauses.
+// Stop and E-STOP sit above the scrolled part, so they stay in view at any dock height; the main window
+// can put a second E-STOP in a toolbar (addEmergencyStopTo) that shows while a device is connected.
+//
 // Limits: commands are checked by the driver against the machine profile given with setMachineProfile()
 // when it fits the device (a rotary platform profile for the platform, a tilt-rotate one for the arm),
 // otherwise against a default profile of the device's kind; the choice is made at Connect.
@@ -18,13 +23,17 @@
 #include "multidir/core/search/decomposition.h"
 #include "multidir/hardware/print_run.h"
 #include "ui/device/device_snapshot.h"
+#include "ui/device/plan_steps.h"
 
 class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
+class QAction;
+class QFormLayout;
 class QPlainTextEdit;
 class QPushButton;
+class QToolBar;
 
 namespace multidir::ui {
 
@@ -51,9 +60,13 @@ class HardwarePanel : public QWidget {
   [[nodiscard]] QString promptText() const;
   // The limits the next Connect uses (see the header comment).
   [[nodiscard]] core::MachineSpec machineForNextConnection() const;
-  [[nodiscard]] int planRegionCount() const { return static_cast<int>(m_planAngles.size()); }
+  [[nodiscard]] int planRegionCount() const { return static_cast<int>(m_planTargets.size()); }
   // Options of the next print run (settle time, move timeout, clocks).
   void setPrintRunOptions(const hardware::PrintRunOptions& options) { m_runOptions = options; }
+  // The banner above the panel (link lost, device not reachable, run held); empty when hidden.
+  [[nodiscard]] QString bannerText() const;
+  // Adds an E-STOP button to `bar` that is shown while a device is connected; returns its action.
+  QAction* addEmergencyStopTo(QToolBar* bar);
 
  public slots:
   void setMachineProfile(const core::MachineSpec& profile);
@@ -70,8 +83,13 @@ class HardwarePanel : public QWidget {
   // Connect was pressed; emitted before the machine profile is read, so a direct connection can still
   // send the latest one with setMachineProfile().
   void connectRequested();
+  // A device session opened (Connect) or closed (Disconnect).
+  void sessionOpenChanged(bool open);
 
  private:
+  enum class MessageTopic { General, Run };
+
+  QWidget* buildSafetyBar();
   QGroupBox* buildConnectionGroup();
   QGroupBox* buildStatusGroup();
   QGroupBox* buildControlsGroup();
@@ -85,7 +103,9 @@ class HardwarePanel : public QWidget {
   void goTo();
   void startRun();
   void runEvent(const QString& event, const core::Status& status);
-  void setMessage(const QString& text, bool error);
+  void setMessage(const QString& text, bool error, MessageTopic topic = MessageTopic::General);
+  void updateBanner();
+  void styleEmergencyStop(QPushButton* estop) const;
   void updateLimits();
   void updateKindWidgets();
   void updateControls();
@@ -99,7 +119,10 @@ class HardwarePanel : public QWidget {
   QPushButton* m_connect = nullptr;
   QPushButton* m_disconnect = nullptr;
 
+  QLabel* m_banner = nullptr;
+  QFormLayout* m_statusForm = nullptr;
   QLabel* m_state = nullptr;
+  QLabel* m_enabled = nullptr;
   QLabel* m_position = nullptr;
   QLabel* m_moving = nullptr;
   QLabel* m_homed = nullptr;
@@ -123,8 +146,12 @@ class HardwarePanel : public QWidget {
   QPushButton* m_goTo = nullptr;
   QPushButton* m_stop = nullptr;
   QPushButton* m_estop = nullptr;
+  QPushButton* m_windowEstop = nullptr;  // in the main window's toolbar, when added
+  QAction* m_windowEstopAction = nullptr;
   QLabel* m_message = nullptr;
   bool m_messageIsError = false;
+  MessageTopic m_messageTopic = MessageTopic::General;
+  bool m_wasStale = false;  // the last snapshot was stale
 
   QLabel* m_planSummary = nullptr;
   QPushButton* m_startRun = nullptr;
@@ -140,7 +167,7 @@ class HardwarePanel : public QWidget {
   QTimer m_clockTimer;  // refreshes the heartbeat age and the run's elapsed time from the last snapshot
   std::optional<core::MachineSpec> m_profile;
   bool m_linkUsesProfile = false;  // the open link's limits are the profile's (not defaults)
-  std::vector<core::MachineAngles> m_planAngles;
+  std::vector<RegionTarget> m_planTargets;
   hardware::PrintRunOptions m_runOptions;
 };
 

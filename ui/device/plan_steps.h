@@ -17,13 +17,22 @@ namespace multidir::ui {
 // "region-01.stl" for index 0: the file savePlan writes for the region (core/plan/plan_file.h).
 std::string regionFileName(std::size_t index);
 
-// The machine angles of each region of `plan`, in printing order (all the panel keeps of a plan).
-std::vector<core::MachineAngles> regionAngles(const core::Decomposition& plan);
+// What the panel keeps of a plan's region: its machine angles and its printing direction.
+struct RegionTarget {
+  core::MachineAngles angles;
+  core::Vec3 direction = core::Vec3::UnitZ();  // unit
+};
+
+// The targets of each region of `plan`, in printing order (all the panel keeps of a plan).
+std::vector<RegionTarget> regionTargets(const core::Decomposition& plan);
 
 // One step per region in printing order. Rotary angles within `snapToleranceDegrees` of a stepper step are
-// moved onto it (the plan's angles come from directions and carry rounding noise). InvalidParameter naming
-// the first region the profile cannot reach (its number from 1), or an empty plan.
-core::Result<std::vector<hardware::PrintStep>> printSteps(const std::vector<core::MachineAngles>& regions,
+// moved onto it (the plan's angles come from directions and carry rounding noise). InvalidParameter for an
+// empty plan or one the device cannot run. For the rotary platform the plan's real mismatch is named first:
+// every region whose direction tilts beyond the platform's range, then a direction off the plane it turns in
+// (a 5-DOF plan's), and only then a region's angle against the range and the stepper's grid (its number
+// from 1).
+core::Result<std::vector<hardware::PrintStep>> printSteps(const std::vector<RegionTarget>& regions,
                                                           DeviceKind kind, const core::MachineSpec& machine,
                                                           double snapToleranceDegrees = 1e-4);
 

@@ -48,6 +48,7 @@ core::Status PrintRunDriver::start(std::shared_ptr<hardware::Positioner> positio
   m_run = std::move(run);
   m_lastState = hardware::PrintRunState::Idle;
   m_frozenElapsed = std::chrono::milliseconds(0);
+  m_heldForLostLink = false;
   m_clock.start();
   const core::Status started = m_run->start();
   afterEvent();
@@ -71,6 +72,7 @@ core::Status PrintRunDriver::pause() {
 core::Status PrintRunDriver::resume() {
   if (!m_run) return noRun();
   const core::Status status = m_run->resume();
+  if (status.ok()) m_heldForLostLink = false;
   afterEvent();
   return status;
 }
@@ -78,6 +80,7 @@ core::Status PrintRunDriver::resume() {
 core::Status PrintRunDriver::abort() {
   if (!m_run) return noRun();
   const core::Status status = m_run->abort();
+  if (status.ok()) m_heldForLostLink = false;
   afterEvent();
   return status;
 }
@@ -109,8 +112,28 @@ void PrintRunDriver::setTickInterval(std::chrono::milliseconds interval) {
 
 void PrintRunDriver::tick() {
   if (!m_run) return;
+  holdIfLinkLost();
   m_run->tick();
   afterEvent();
+}
+
+void PrintRunDriver::holdIfLinkLost() {
+  const hardware::PrintRunState state = m_run->state();
+  const bool underWay = state == hardware::PrintRunState::Moving || state == hardware::PrintRunState::Settling ||
+                        state == hardware::PrintRunState::Printing;
+  if (!underWay || m_positioner->snapshot().linkUp) return;
+  if (state == hardware::PrintRunState::Printing && m_run->pausePending()) return;  // already holding
+  // Moving or settling: stops (the stop may not reach the device; its heartbeat watchdog stops it). Printing:
+  // the region may finish, the next one does not start.
+  if (!m_run->pause().ok()) return;
+  m_heldForLostLink = true;
+  const long long seconds = m_clock.elapsed() / 1000;
+  emit logged(QStringLiteral("%1:%2 %3")
+                  .arg(seconds / 60, 2, 10, QLatin1Char('0'))
+                  .arg(seconds % 60, 2, 10, QLatin1Char('0'))
+                  .arg(tr("the link to %1 was lost: the run is paused; press Resume once the link is back")
+                           .arg(QString::fromStdString(m_positioner->name()))));
+  emit pausedForLostLink();
 }
 
 void PrintRunDriver::afterEvent() {

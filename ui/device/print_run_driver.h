@@ -2,7 +2,11 @@
 // Drives the print-run sequencer (hardware::PrintRun) from the GUI thread: a timer calls tick() while a run
 // is under way, operator events go straight to the sequencer, and its callbacks become signals. The
 // positioner is held (shared) for the run's lifetime, so the device's driver outlives the run even when the
-// panel disconnects mid-run (the run then sees the link down and faults).
+// panel disconnects mid-run.
+//
+// A lost link pauses the run (the driver's policy, on top of the sequencer's): a move under way stops, a
+// region being printed may finish, and no next step starts until the operator presses Resume once the link
+// is back. Without it the sequencer would stay "printing" with the device out of reach.
 //
 // Thread: GUI thread only, like PrintRun itself.
 #include <QElapsedTimer>
@@ -50,6 +54,9 @@ class PrintRunDriver : public QObject {
   // Since start(), frozen once the run ended.
   [[nodiscard]] std::chrono::milliseconds elapsed() const;
   [[nodiscard]] QString lastProblem() const;
+  // The run was paused (or will pause when the region printing is done) because the link was lost; cleared
+  // by Resume, Abort or a new run.
+  [[nodiscard]] bool heldForLostLink() const { return m_heldForLostLink; }
   // How often tick() runs (50 ms by default).
   void setTickInterval(std::chrono::milliseconds interval);
 
@@ -61,10 +68,13 @@ class PrintRunDriver : public QObject {
   void printRequested(int region, const QString& regionFile);
   // One line per sequencer transition, "00:12 step 2/3 (region-02.stl): ... reached".
   void logged(const QString& line);
+  // The link to the device went down while the run was under way: the run is paused (see the header).
+  void pausedForLostLink();
 
  private:
   void tick();
   void afterEvent();
+  void holdIfLinkLost();
 
   std::shared_ptr<hardware::Positioner> m_positioner;
   std::unique_ptr<hardware::PrintRun> m_run;
@@ -73,6 +83,7 @@ class PrintRunDriver : public QObject {
   std::chrono::milliseconds m_frozenElapsed{0};
   hardware::PrintRunState m_lastState = hardware::PrintRunState::Idle;
   int m_lastRegion = -1;
+  bool m_heldForLostLink = false;
 };
 
 }  // namespace multidir::ui
