@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "core/support_clip_shapes.h"
+#include "core/geometry/support_clip_shapes.h"
 #include "multidir/core/geometry/connectivity.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_measure.h"

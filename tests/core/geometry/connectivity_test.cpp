@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/support_clip_shapes.h"
+#include "core/geometry/support_clip_shapes.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "support/primitives.h"
 
