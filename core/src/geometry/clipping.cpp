@@ -135,6 +135,11 @@ class PlaneSplitter {
         m_side[v] = 0;
         m_positions[v] += *move;
         m_positions[v] -= plane.signedDistance(m_positions[v]) * plane.normal;  // rounding
+      } else if (std::abs(d) <= snap.reach[v]) {
+        // The plane is (nearly) tangent to the surface there, as when it shaves a corner: moved along the
+        // normal, which changes the volume by at most |d| x the area around the vertex / 3.
+        m_side[v] = 0;
+        m_positions[v] -= d * plane.normal;
       } else {
         m_side[v] = d > 0.0 ? 1 : -1;
       }
@@ -146,7 +151,8 @@ class PlaneSplitter {
   // vertex is moved onto the plane instead, when the move is at most kSnapRatio of its smallest height in
   // the faces around it (so each face's area changes by at most that fraction, and none turns over).
   // The move goes along the surface, perpendicular to the vertex's area-weighted normal: the solid's volume
-  // is linear in one vertex's position with that normal as gradient, so it does not change.
+  // is linear in one vertex's position with that normal as gradient, so it does not change (unless the plane
+  // is nearly tangent there; then the vertex moves along the plane's normal).
   struct SnapData {
     std::vector<double> reach;  // mm
     std::vector<Vec3> normal;   // sum of the faces' (b - a) x (c - a) around the vertex

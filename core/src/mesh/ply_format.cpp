@@ -57,7 +57,9 @@ bool hostIsLittleEndian() {
 // Reads the body value by value, whatever the encoding.
 class BodyReader {
  public:
-  BodyReader(std::istream& in, Encoding encoding) : m_in(in), m_lines(in), m_encoding(encoding) {}
+  // `headerLines`: the lines before the body, so that ASCII line numbers count from the file's start.
+  BodyReader(std::istream& in, Encoding encoding, std::size_t headerLines)
+      : m_in(in), m_lines(in), m_encoding(encoding), m_headerLines(headerLines) {}
 
   enum class Value { Ok, End, NotANumber, NotFinite };
   // One value of `type`; in ASCII the token must be a plain decimal number (see parseCoordinate).
@@ -87,7 +89,7 @@ class BodyReader {
     std::snprintf(text, sizeof text, "%g", m_lastBinary);
     return text;
   }
-  std::size_t lineNumber() const { return m_encoding == Encoding::Ascii ? m_lines.lineNumber() : 0; }
+  std::size_t lineNumber() const { return m_encoding == Encoding::Ascii ? m_headerLines + m_lines.lineNumber() : 0; }
   bool binaryText() const { return m_lines.binary() || m_lines.tooLong(); }
 
  private:
@@ -131,6 +133,7 @@ class BodyReader {
   LineReader m_lines;
   Encoding m_encoding;
   std::deque<std::string> m_tokens;
+  std::size_t m_headerLines;
   std::string m_token;
   double m_lastBinary = 0.0;
 };
@@ -244,7 +247,7 @@ Result<RawSoup> readPly(std::istream& in, std::uintmax_t fileSize, const std::st
   RawSoup soup;
   soup.vertices.reserve(static_cast<std::size_t>(nv));
   soup.triangles.reserve(static_cast<std::size_t>(nf));
-  BodyReader body(in, encoding);
+  BodyReader body(in, encoding, header.lineNumber());
   auto where = [&](const Element& e, std::uintmax_t i) {
     const std::size_t lineNumber = body.lineNumber();
     return (lineNumber > 0 ? "line " + std::to_string(lineNumber) + ", " : std::string()) + e.name + " " +

@@ -162,7 +162,9 @@ Status checkCandidateCount(const TriangleMesh& model, const MachineSpec& machine
   const auto normals = static_cast<double>(std::max<std::size_t>(1, candidateNormals(machine, options).size()));
   const double offsets = std::ceil(widthMm / options.offsetStepMm);
   const double candidates = normals * offsets;
-  if (std::isfinite(candidates) && candidates <= static_cast<double>(kMaxCandidatesPerLevel)) return Done{};
+  if (std::isfinite(candidates) && offsets <= static_cast<double>(kMaxOffsetsPerNormal) &&
+      candidates <= static_cast<double>(kMaxCandidatesPerLevel))
+    return Done{};
   char width[64];
   std::snprintf(width, sizeof width, "%.4g", widthMm / 1000.0);
   char count[64];
@@ -173,8 +175,8 @@ Status checkCandidateCount(const TriangleMesh& model, const MachineSpec& machine
                "the model is " + std::string(width) + " m wide (its bounding-box diagonal), so the search would score " +
                    count + " candidate planes per level (" + std::to_string(static_cast<long long>(normals)) +
                    " normals, an offset every " + step +
-                   " mm), more than the " + std::to_string(kMaxCandidatesPerLevel) +
-                   " it can hold. Wrong units? Use --scale (0.001 for a model in micrometres, 25.4 for inches); "
+                   " mm), more than it can hold (" + std::to_string(kMaxOffsetsPerNormal) + " offsets per normal, " +
+                   std::to_string(kMaxCandidatesPerLevel) + " planes in all). Wrong units? Use --scale (0.001 for a model in micrometres, 25.4 for inches); "
                    "or a larger --offset-step or fewer --normals",
                "model"};
 }

@@ -28,7 +28,7 @@ TEST(CandidateCount, ModelInMicrometresIsRefusedWithUnitsAdvice) {
   EXPECT_EQ(result.error().code, ErrorCode::InvalidParameter);
   EXPECT_EQ(result.error().where, "model");
   EXPECT_NE(result.error().message.find("173.2 m wide"), std::string::npos) << result.error().describe();
-  EXPECT_NE(result.error().message.find("wrong units? Use --scale"), std::string::npos) << result.error().describe();
+  EXPECT_NE(result.error().message.find("Wrong units? Use --scale"), std::string::npos) << result.error().describe();
 }
 
 TEST(CandidateCount, ModelScaledBy1e8IsRefusedNotOverflowed) {
