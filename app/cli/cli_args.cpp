@@ -3,6 +3,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include <unistd.h>
 
 namespace multidir::cli {
 
@@ -67,6 +71,33 @@ std::string outputFolder(const ParsedArgs& parsed, const std::string& command, c
   std::string folder = parsed.value("-o", "");
   if (folder.empty()) throw UsageError("multidir " + command + ": -o needs a folder name");
   return folder;
+}
+
+core::LoadOptions modelLoadOptions(const ParsedArgs& parsed, const std::string& command) {
+  core::LoadOptions options;
+  if (!parsed.has("--scale")) return options;
+  options.scale = parseNumber(parsed.value("--scale", ""), "multidir " + command + ": --scale");
+  if (!(options.scale >= 1e-6 && options.scale <= 1e6))
+    throw UsageError("multidir " + command + ": --scale must be from 0.000001 to 1000000 (0.001 turns micrometres "
+                     "into millimetres, 25.4 inches), not " + parsed.value("--scale", ""));
+  return options;
+}
+
+void checkOutputFolder(const std::string& folder, const std::string& command) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path existing = fs::absolute(fs::path(folder), ec).lexically_normal();
+  if (ec) throw FileError("multidir " + command + ": -o " + folder + ": " + ec.message());
+  // The folder itself, or the nearest folder above it that exists (where it would be created).
+  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing.parent_path() != existing)
+    existing = existing.parent_path();
+  const bool isFolder = fs::is_directory(existing, ec);
+  if (!isFolder)
+    throw FileError("multidir " + command + ": -o " + folder + ": " + existing.string() +
+                    " is a file, not a folder; choose another output folder");
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    throw FileError("multidir " + command + ": -o " + folder + ": the folder " + existing.string() +
+                    " is not writable (" + std::strerror(errno) + "); choose another output folder");
 }
 
 double parseNumber(const std::string& text, const std::string& option) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "multidir/core/mesh/mesh_io.h"
+
 namespace multidir::cli {
 
 // Exit codes of every subcommand.
@@ -50,6 +52,14 @@ std::string onlyPositional(const ParsedArgs& parsed, const std::string& command,
 // The folder named by the required option -o; UsageError when -o is missing (saying that the folder receives
 // `contents`, "the plan") or empty.
 std::string outputFolder(const ParsedArgs& parsed, const std::string& command, const std::string& contents);
+
+// Load options for the model of `command`: --scale FACTOR (coordinates times FACTOR, for a model saved in
+// other units) when given. UsageError when FACTOR is not a number from 1e-6 to 1e6.
+core::LoadOptions modelLoadOptions(const ParsedArgs& parsed, const std::string& command);
+
+// Refuses an output folder that cannot be written, before any work: it must be a writable folder, or not
+// exist yet below a writable folder (it is created only when the results are saved). Throws FileError.
+void checkOutputFolder(const std::string& folder, const std::string& command);
 
 // The whole text must be a finite number, else UsageError naming the option.
 double parseNumber(const std::string& text, const std::string& option);

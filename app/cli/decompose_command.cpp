@@ -54,6 +54,8 @@ const char* const kDecomposeHelp =
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
     "  --no-supports        do not generate supports\n"
     "  --support-spacing MM overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"
+    "  --scale FACTOR       multiply the model's coordinates by FACTOR, for a model in other units\n"
+    "                       (0.001: micrometres, 25.4: inches; default: 1)\n"
     "  -h, --help           show this help\n"
     "\n"
     "On a terminal a status line shows the search's progress. Ctrl-C stops the search and saves the best plan\n"
@@ -83,6 +85,7 @@ std::string optionFor(const std::string& where) {
 
 struct Settings {
   std::string model;
+  core::LoadOptions loadOptions;  // --scale
   std::string outDir;
   std::string summaryPath;
   core::Vec3 up = core::Vec3::UnitZ();
@@ -167,13 +170,14 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
       parseArgs(args,
                 {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
                  "--refine", "--offset-step", "--w", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
-                 "--threads", "--profile", "-o", "--summary", "--support-spacing"},
+                 "--threads", "--profile", "-o", "--summary", "--support-spacing", "--scale"},
                 {"--help", "--no-supports"}, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
   s.model = onlyPositional(parsed, "decompose", "model", "multidir decompose MODEL -o OUTDIR");
   s.outDir = outputFolder(parsed, "decompose", "the plan");
+  s.loadOptions = modelLoadOptions(parsed, "decompose");
   if (parsed.has("--summary")) {
     s.summaryPath = parsed.value("--summary", "");
     if (s.summaryPath.empty()) throw UsageError(kCommand + ": --summary needs a file name");
@@ -276,7 +280,9 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
     return kExitOk;
   }
 
-  const core::Result<core::LoadedMesh> loaded = core::loadMesh(s.model);
+  // A folder that cannot take the plan is refused before the search, not after it.
+  checkOutputFolder(s.outDir, "decompose");
+  const core::Result<core::LoadedMesh> loaded = core::loadMesh(s.model, s.loadOptions);
   if (!loaded) {
     err << kCommand << ": " << loaded.error().describe() << "\n";
     return kExitBadInput;

@@ -11,7 +11,7 @@
 namespace multidir::cli {
 
 const char* const kInfoHelp =
-    "Usage: multidir info MODEL [--up DIRECTION] [--alpha DEGREES] [--json FILE]\n"
+    "Usage: multidir info MODEL [--up DIRECTION] [--alpha DEGREES] [--scale FACTOR] [--json FILE]\n"
     "\n"
     "Loads MODEL (.stl, .obj, .off, .ply; millimetres), checks and repairs it, and prints its statistics,\n"
     "the defects found and repaired, and the area that would need support printed along the up direction.\n"
@@ -19,6 +19,8 @@ const char* const kInfoHelp =
     "Options:\n"
     "  --up DIRECTION   printing direction: x, y, z, -x, -y, -z or three numbers a,b,c (default: z)\n"
     "  --alpha DEGREES  maximal self-supporting angle, at least 0 and below 90 (default: 45)\n"
+    "  --scale FACTOR   multiply the model's coordinates by FACTOR, for a model in other units\n"
+    "                   (0.001: micrometres, 25.4: inches; default: 1)\n"
     "  --json FILE      also write everything as JSON to FILE\n"
     "  -h, --help       show this help\n"
     "\n"
@@ -97,7 +99,7 @@ void printText(std::ostream& out, const std::string& model, const core::LoadedMe
 }  // namespace
 
 int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(args, {"--up", "--alpha", "--json"}, {"--help"}, "info");
+  const ParsedArgs parsed = parseArgs(args, {"--up", "--alpha", "--json", "--scale"}, {"--help"}, "info");
   if (parsed.has("--help")) {
     out << kInfoHelp;
     return kExitOk;
@@ -114,7 +116,8 @@ int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   const std::string jsonPath = parsed.value("--json", "");
   if (parsed.has("--json") && jsonPath.empty()) throw UsageError("multidir info: --json needs a file name");
 
-  const core::Result<core::LoadedMesh> loaded = core::loadMesh(model);
+  const core::LoadOptions loadOptions = modelLoadOptions(parsed, "info");
+  const core::Result<core::LoadedMesh> loaded = core::loadMesh(model, loadOptions);
   if (!loaded) {
     err << "multidir info: " << loaded.error().describe() << "\n";
     if (!jsonPath.empty())

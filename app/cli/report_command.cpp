@@ -27,6 +27,7 @@ const char* const kReportHelp =
     "  --normals N           candidate normals sampled on the sphere, 1 to 100000 (default: 250)\n"
     "  --threads N           worker threads of the search, 0 = all (default: 0)\n"
     "  --support-spacing MM  overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"
+    "  --scale FACTOR        multiply the models' coordinates by FACTOR (0.001: micrometres, 25.4: inches)\n"
     "  --json FILE           also write the rows as JSON to FILE\n"
     "  -h, --help            show this help\n"
     "\n"
@@ -40,6 +41,7 @@ const std::string kCommand = "multidir report";
 
 struct Settings {
   std::vector<std::string> models;
+  core::LoadOptions loadOptions;  // --scale
   std::string jsonPath;
   core::MachineSpec machine;
   core::SearchOptions search;
@@ -55,13 +57,15 @@ int wholeNumber(const std::string& text, const std::string& option) {
 
 Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   const ParsedArgs parsed = parseArgs(
-      args, {"--up", "--machine", "--beam-width", "--normals", "--threads", "--support-spacing", "--json"}, {"--help"},
+      args, {"--up", "--machine", "--beam-width", "--normals", "--threads", "--support-spacing", "--json", "--scale"},
+      {"--help"},
       "report");
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
   if (parsed.positionals.empty()) throw UsageError(kCommand + ": which models? Usage: multidir report MODEL...");
   s.models = parsed.positionals;
+  s.loadOptions = modelLoadOptions(parsed, "report");
   if (parsed.has("--machine")) {
     const core::Result<core::MachineKind> kind = core::parseMachineKind(parsed.value("--machine", ""));
     if (!kind) throw UsageError(kCommand + ": --machine: " + kind.error().message);
@@ -157,7 +161,7 @@ int runReport(const std::vector<std::string>& args, std::ostream& out, std::ostr
   nlohmann::json rows = nlohmann::json::array();
   int status = kExitOk;
   for (const std::string& model : s.models) {
-    const core::Result<core::LoadedMesh> loaded = core::loadMesh(model);
+    const core::Result<core::LoadedMesh> loaded = core::loadMesh(model, s.loadOptions);
     if (!loaded) {
       err << kCommand << ": " << loaded.error().describe() << "\n";
       status = kExitBadInput;

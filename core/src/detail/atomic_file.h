@@ -1,5 +1,6 @@
 #pragma once
-// Writing a file so that readers never see half of it: the content goes to `path.partial`, which is renamed
+// Writing a file so that readers never see half of it: the content goes to a new `path.<random>.partial`
+// (created exclusively, never through a symbolic link), which is renamed
 // into place only when everything was written. A failed write leaves any old file as it was.
 #include <functional>
 #include <ostream>

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
@@ -14,6 +16,8 @@ namespace multidir::core {
 namespace {
 
 constexpr double kUnitLengthTolerance = 1e-9;
+// How close (relative to its heights) a vertex must be to be moved onto the plane: see PlaneSplitter::snapData.
+constexpr double kSnapRatio = 1e-3;
 
 std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
@@ -27,11 +31,15 @@ Status checkPlane(const Plane& plane, const ClipOptions& options) {
                  "plane.normal"};
   if (!std::isfinite(plane.offset))
     return Error{ErrorCode::InvalidParameter, "the clipping plane's offset is not finite", "plane.offset"};
-  if (!std::isfinite(options.planeToleranceMm) || options.planeToleranceMm < 0.0)
-    return Error{
-        ErrorCode::InvalidParameter,
-        "the plane tolerance must be a finite distance >= 0 mm, not " + std::to_string(options.planeToleranceMm),
-        "planeToleranceMm"};
+  // Vertices within the tolerance are moved onto the plane: that is meant to absorb rounding, and a larger
+  // move changes the solid (5 mm left open sides and lost 4.5 % of a model's volume).
+  if (!std::isfinite(options.planeToleranceMm) || options.planeToleranceMm < 0.0 ||
+      options.planeToleranceMm > kMaxPlaneToleranceMm)
+    return Error{ErrorCode::InvalidParameter,
+                 "the plane tolerance must be a distance from 0 to " + std::to_string(kMaxPlaneToleranceMm) +
+                     " mm (it absorbs rounding; vertices within it are moved onto the plane), not " +
+                     std::to_string(options.planeToleranceMm),
+                 "planeToleranceMm"};
   return Done{};
 }
 
@@ -117,15 +125,70 @@ class PlaneSplitter {
  public:
   PlaneSplitter(const TriangleMesh& solid, const Plane& plane, double tolerance)
       : m_solid(solid), m_plane(plane), m_positions(solid.vertices), m_side(solid.vertices.size()) {
+    const SnapData snap = snapData(solid);
     for (std::size_t v = 0; v < m_positions.size(); ++v) {
       const double d = plane.signedDistance(m_positions[v]);
       if (std::abs(d) <= tolerance) {
+        m_side[v] = 0;
+        m_positions[v] -= d * plane.normal;
+      } else if (const std::optional<Vec3> move = volumeKeepingSnap(d, snap.normal[v], snap.reach[v])) {
+        m_side[v] = 0;
+        m_positions[v] += *move;
+        m_positions[v] -= plane.signedDistance(m_positions[v]) * plane.normal;  // rounding
+      } else if (std::abs(d) <= snap.reach[v]) {
+        // The plane is (nearly) tangent to the surface there, as when it shaves a corner: moved along the
+        // normal, which changes the volume by at most |d| x the area around the vertex / 3.
         m_side[v] = 0;
         m_positions[v] -= d * plane.normal;
       } else {
         m_side[v] = d > 0.0 ? 1 : -1;
       }
     }
+  }
+
+  // A plane that passes a hair from a vertex cuts slivers: a sliver-thin strip of each face at the vertex,
+  // and cap triangles between crossing points a hair apart (the cap of 2.7 % of random clips had one). Such a
+  // vertex is moved onto the plane instead, when the move is at most kSnapRatio of its smallest height in
+  // the faces around it (so each face's area changes by at most that fraction, and none turns over).
+  // The move goes along the surface, perpendicular to the vertex's area-weighted normal: the solid's volume
+  // is linear in one vertex's position with that normal as gradient, so it does not change (unless the plane
+  // is nearly tangent there; then the vertex moves along the plane's normal).
+  struct SnapData {
+    std::vector<double> reach;  // mm
+    std::vector<Vec3> normal;   // sum of the faces' (b - a) x (c - a) around the vertex
+  };
+  static SnapData snapData(const TriangleMesh& solid) {
+    SnapData data{std::vector<double>(solid.vertices.size(), std::numeric_limits<double>::infinity()),
+                  std::vector<Vec3>(solid.vertices.size(), Vec3::Zero())};
+    for (const Triangle& t : solid.triangles) {
+      const Vec3& a = solid.vertices[t[0]];
+      const Vec3& b = solid.vertices[t[1]];
+      const Vec3& c = solid.vertices[t[2]];
+      const Vec3 areaNormal = (b - a).cross(c - a);
+      const double twiceArea = areaNormal.norm();
+      const double opposite[3] = {(c - b).norm(), (a - c).norm(), (b - a).norm()};
+      for (int k = 0; k < 3; ++k) {
+        const double height = opposite[k] > 0.0 ? twiceArea / opposite[k] : 0.0;
+        data.reach[t[k]] = std::min(data.reach[t[k]], kSnapRatio * height);
+        data.normal[t[k]] += areaNormal;
+      }
+    }
+    for (double& r : data.reach)
+      if (!std::isfinite(r)) r = 0.0;
+    return data;
+  }
+  // The move that brings a vertex at signed distance d onto the plane along its surface, if short enough.
+  std::optional<Vec3> volumeKeepingSnap(double d, const Vec3& vertexNormal, double reach) const {
+    const double length = vertexNormal.norm();
+    if (!(length > 0.0) || !(reach > 0.0)) return std::nullopt;
+    const Vec3 unit = vertexNormal / length;
+    const Vec3 along = m_plane.normal - m_plane.normal.dot(unit) * unit;  // the plane's normal in the tangent plane
+    const double alongSquared = along.squaredNorm();  // = along . plane normal
+    // A plane (nearly) tangent to the surface there: no short move along the surface reaches it.
+    if (alongSquared < 1e-6) return std::nullopt;
+    const Vec3 move = -d / alongSquared * along;
+    if (move.norm() > reach) return std::nullopt;
+    return move;
   }
 
   void splitFaces() {

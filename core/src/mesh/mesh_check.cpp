@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "detail/union_find.h"
 #include "mesh/mesh_formats.h"
 #include "mesh/mesh_shells.h"
 #include "multidir/core/mesh/mesh_io.h"
@@ -25,6 +26,9 @@ constexpr std::size_t kFirstFew = 5;
 // Beyond this many shells the nesting test (shells x faces winding numbers) would cost too much; every
 // shell is then taken as an outer one.
 constexpr std::int32_t kMaxShellsForNesting = 64;
+// A shell whose volume is below this times its area^(3/2) is flat (a sphere has about 0.09, a 100 mm
+// square sheet 0.01 mm thick 4e-5): rounding leaves a flat shell at 1e-17 or so.
+constexpr double kFlatShellRatio = 1e-9;
 
 std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
   const auto lo = static_cast<std::uint32_t>(std::min(a, b));
@@ -141,36 +145,31 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
 }
 
 // Vertices whose faces form more than one fan (the first few), for the message; edgeCensus gives the count.
+// Linear in the faces: the faces around a vertex are grouped through the other corner they share (a
+// union-find per vertex), so a vertex with 100,000 faces costs 100,000 steps, not their square.
 std::vector<std::int64_t> firstNonManifoldVertices(const TriangleMesh& mesh) {
   std::vector<std::vector<std::int32_t>> facesOfVertex(mesh.vertices.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
     for (std::int32_t v : mesh.triangles[f]) facesOfVertex[static_cast<std::size_t>(v)].push_back(static_cast<std::int32_t>(f));
   std::vector<std::int64_t> out;
+  std::unordered_map<std::int32_t, std::int32_t> firstFaceWithCorner;
   for (std::size_t v = 0; v < facesOfVertex.size() && out.size() < kFirstFew; ++v) {
     const auto& faces = facesOfVertex[v];
     if (faces.size() < 2) continue;
-    // Walk the fan from the first face through faces sharing an edge at v.
-    std::vector<char> reached(faces.size(), 0);
-    std::vector<std::size_t> stack{0};
-    reached[0] = 1;
-    std::size_t count = 1;
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      for (std::size_t j = 0; j < faces.size(); ++j) {
-        if (reached[j]) continue;
-        int shared = 0;
-        for (std::int32_t a : mesh.triangles[static_cast<std::size_t>(faces[i])])
-          for (std::int32_t b : mesh.triangles[static_cast<std::size_t>(faces[j])])
-            if (a == b) ++shared;
-        if (shared >= 2) {
-          reached[j] = 1;
-          ++count;
-          stack.push_back(j);
-        }
+    detail::UnionFind fans(faces.size());
+    firstFaceWithCorner.clear();
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (std::int32_t w : mesh.triangles[static_cast<std::size_t>(faces[i])]) {
+        if (w == static_cast<std::int32_t>(v)) continue;
+        auto [it, inserted] = firstFaceWithCorner.emplace(w, static_cast<std::int32_t>(i));
+        if (!inserted) fans.unite(it->second, static_cast<std::int32_t>(i));
       }
-    }
-    if (count != faces.size()) out.push_back(static_cast<std::int64_t>(v));
+    const std::int32_t root = fans.find(0);
+    for (std::size_t i = 1; i < faces.size(); ++i)
+      if (fans.find(static_cast<std::int32_t>(i)) != root) {
+        out.push_back(static_cast<std::int64_t>(v));
+        break;
+      }
   }
   return out;
 }
@@ -434,16 +433,46 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
     std::vector<TriangleMesh> shells;
     shells.reserve(shellFaces.size());
     for (const auto& faces : shellFaces) shells.push_back(detail::extractFaces(mesh, faces));
+    // Nesting: shell s lies inside shell o when its probes say so; shells whose surfaces cross are two
+    // overlapping parts, and neither a part nor a cavity can be told apart there, so they are refused
+    // rather than one of them turned inside out on the word of a single vertex.
+    std::vector<int> depth(shells.size(), 0);
+    if (components.count <= kMaxShellsForNesting && shells.size() > 1) {
+      std::vector<BoundingBox> boxes;
+      boxes.reserve(shells.size());
+      for (const TriangleMesh& shell : shells) boxes.push_back(boundingBox(shell));
+      for (std::size_t s = 0; s < shells.size(); ++s)
+        for (std::size_t other = 0; other < shells.size(); ++other) {
+          if (other == s) continue;
+          const detail::Containment where = detail::containment(shells[s], shells[other], boxes[other]);
+          if (where == detail::Containment::Crossing)
+            return check.fatal(
+                ErrorCode::NotManifold,
+                "shells " + std::to_string(std::min(s, other)) + " and " + std::to_string(std::max(s, other)) +
+                    " (with faces " + std::to_string(sourceFace[static_cast<std::size_t>(shellFaces[s].front())]) +
+                    " and " + std::to_string(sourceFace[static_cast<std::size_t>(shellFaces[other].front())]) +
+                    ") cross each other: part of one lies inside the other and part outside, so neither is a "
+                    "cavity and the solid they make is not defined. Join them with a boolean union in a mesh "
+                    "editor (e.g. MeshLab's 'Mesh Boolean: Union') and load the model again");
+          if (where == detail::Containment::Inside) ++depth[s];
+        }
+    }
     std::size_t inverted = 0;
     std::vector<std::int64_t> first;
     for (std::size_t s = 0; s < shells.size(); ++s) {
-      int depth = 0;
-      if (components.count <= kMaxShellsForNesting)
-        for (std::size_t other = 0; other < shells.size(); ++other)
-          if (other != s && std::abs(detail::windingNumber(shells[other], shells[s].vertices.front())) > 0.5) ++depth;
       const double volume = signedVolume(shells[s]);
-      const bool wantPositive = depth % 2 == 0;
-      if (volume != 0.0 && (volume > 0.0) != wantPositive) {
+      // A closed shell that encloses no volume (a flat tetrahedron, a surface folded onto itself) is no
+      // solid. Relative to the shell's area, so that the test does not depend on the model's units.
+      const double area = surfaceArea(shells[s]);
+      if (!(std::abs(volume) > kFlatShellRatio * area * std::sqrt(area)))
+        return check.fatal(ErrorCode::EmptyMesh,
+                           "shell " + std::to_string(s) + " (with face " +
+                               std::to_string(sourceFace[static_cast<std::size_t>(shellFaces[s].front())]) +
+                               ") encloses no volume (" + std::to_string(volume) + " mm^3 for " +
+                               std::to_string(area) + " mm^2 of surface): it is flat, not a solid. Remove it or "
+                               "give it thickness in a mesh editor");
+      const bool wantPositive = depth[s] % 2 == 0;
+      if ((volume > 0.0) != wantPositive) {
         for (std::int32_t f : shellFaces[s]) flip(mesh.triangles[static_cast<std::size_t>(f)]);
         if (inverted++ < kFirstFew) first.push_back(static_cast<std::int64_t>(s));
       }

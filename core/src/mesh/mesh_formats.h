@@ -3,44 +3,34 @@
 #include <cstdint>
 #include <istream>
 #include <string>
+#include <vector>
 
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::core::detail {
 
-// What a structure check learned about a file that OpenMesh will then read.
-struct FileShape {
-  std::size_t vertices = 0;  // as the file announces (and holds)
-  std::size_t polygons = 0;
-  std::size_t triangles = 0;  // after fanning polygons
-  std::size_t shortPolygons = 0;  // polygons with fewer than three corners (degenerate, not passed on)
-};
+// The readers: each reads the whole file once and builds the soup as the file gives it (polygons fanned
+// into triangles), in memory proportional to what the file really holds (announced counts are checked
+// against the file size before anything is reserved). Every number is parsed here, strictly (see
+// parseCoordinate), so no third-party reader ever guesses at a malformed token. Errors: MalformedFile,
+// TooLarge, UnsupportedFormat, NonFiniteVertex, each naming the line (or element) at fault. `name` is the
+// file's name for messages.
+// OFF: ASCII OFF with optional colour/normal prefixes (ST, C, N); 4-D, n-D and binary OFF are refused.
+Result<RawSoup> readOff(std::istream& in, std::uintmax_t fileSize, const std::string& name,
+                        const LoadOptions& options);
+// PLY: ASCII and binary (either byte order); the 'vertex' element's x, y, z and the 'face' element's
+// vertex_indices (or vertex_index) list; other elements and properties are read past.
+Result<RawSoup> readPly(std::istream& in, std::uintmax_t fileSize, const std::string& name,
+                        const LoadOptions& options);
+// OBJ: 'v' and 'f' lines (f v, v/vt, v/vt/vn or v//vn; negative indices count back); the rest is ignored.
+Result<RawSoup> readObj(std::istream& in, const std::string& name, const LoadOptions& options);
 
-// Each check reads the whole file once, in bounded memory, and fails with MalformedFile, TooLarge,
-// UnsupportedFormat or NonFiniteVertex (a coordinate OpenMesh's readers would silently misread).
-// `name` is the file's name for messages.
-// OFF: also writes the file in the one form OpenMesh's OFF reader reads reliably to `canonical` ("OFF",
-// counts, one vertex per line, one face per line; no comments, blank lines, colours or normals): that
-// reader misreads comments, counts on the keyword line and face colours, and reads uninitialised memory
-// on short files.
-Result<FileShape> checkOffStructure(std::istream& in, std::uintmax_t fileSize, const std::string& name,
-                                    const LoadOptions& options, std::ostream& canonical);
-Result<FileShape> checkPlyStructure(std::istream& in, std::uintmax_t fileSize, const std::string& name,
-                                    const LoadOptions& options);
-Result<FileShape> checkObjStructure(std::istream& in, const std::string& name, const LoadOptions& options);
-
-// STL is read without OpenMesh: its reader welds vertices and drops degenerate facets without saying so.
+// STL: ASCII or binary, told apart by size.
 Result<RawSoup> readStl(std::istream& in, std::uintmax_t fileSize, const std::string& name,
                         const LoadOptions& options);
 Status writeStl(const TriangleMesh& mesh, std::ostream& out, bool ascii);
 
-// Reads an OFF, OBJ or PLY file that passed its structure check through OpenMesh's readers into a soup.
-// `extension` is lower case without the dot ("off"). Reading from a stream also keeps OpenMesh's OBJ
-// reader from opening material files next to the model.
-Result<RawSoup> readWithOpenMesh(std::istream& in, const std::string& extension, const std::string& name,
-                                 const FileShape& shape);
-
-// Line-oriented text reading with a bound on line length, for the structure checks.
+// Line-oriented text reading with a bound on line length, for the readers.
 class LineReader {
  public:
   static constexpr std::size_t kMaxLineLength = 1 << 20;
@@ -62,7 +52,17 @@ class LineReader {
 // Splits on blanks. Returns the number of tokens written to `tokens` (cleared first).
 std::size_t splitTokens(const std::string& line, std::vector<std::string>& tokens);
 // Strict number parsing: the whole token must be the number.
+enum class NumberStatus { Ok, NotANumber, NotFinite };
+// A coordinate in plain decimal notation ([+-]digits[.digits][e[+-]digits], locale-independent) whose value
+// is finite both as a double and as a float (|x| <= 3.4e38: binary STL, the GPU and other tools store
+// floats). "nan", "inf" and values out of range are NotFinite; hexadecimal and other spellings NotANumber.
+NumberStatus parseCoordinate(const std::string& token, double& value);
+bool isFiniteAsFloat(double value);
+// parseCoordinate(...) == Ok.
 bool parseDouble(const std::string& token, double& value);
+// The error for a coordinate token parseCoordinate refused; `line` 0 when there is no line (binary data).
+Error coordinateError(const std::string& name, std::size_t line, std::size_t vertex, const std::string& token,
+                      NumberStatus status);
 bool parseInteger(const std::string& token, long long& value);
 
 // "first: 3, 7, 12" style lists; the caller passes at most a handful.
@@ -71,6 +71,11 @@ std::string joinIndices(const std::vector<std::int64_t>& indices);
 std::string withThousands(std::size_t n);
 
 Error malformed(const std::string& name, const std::string& message);
+// Fans a polygon (corner indices already checked) into the soup's triangles: exact for the convex polygons
+// exporters write. A polygon with fewer than three corners is counted in droppedByReader (degenerate).
+// TooLarge once the soup holds more than options.maxTriangles triangles.
+Status addPolygon(RawSoup& soup, const std::vector<std::int32_t>& corners, const LoadOptions& options,
+                  const std::string& name);
 // TooLarge once the faces read so far fan into more than options.maxTriangles triangles.
 Status checkTriangleCount(std::size_t triangles, const LoadOptions& options, const std::string& name);
 

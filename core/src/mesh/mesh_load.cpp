@@ -1,10 +1,10 @@
-// loadMesh: find the format, check the file's structure, read it, then check and repair the soup.
+// loadMesh: find the format, read the file into a soup (each reader checks its structure and every number),
+// then check and repair the soup.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <new>
-#include <sstream>
 
 #include "mesh/mesh_formats.h"
 #include "multidir/core/mesh/mesh_io.h"
@@ -13,6 +13,9 @@ namespace multidir::core {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr double kMinScale = 1e-6;
+constexpr double kMaxScale = 1e6;
 
 std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
@@ -26,18 +29,9 @@ Result<RawSoup> readSoup(const std::string& path, const std::string& ext, const 
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{ErrorCode::FileNotFound, "the file cannot be opened (check its permissions): " + path, name};
   if (ext == "stl") return detail::readStl(in, size, name, options);
-
-  Result<detail::FileShape> shape = detail::FileShape{};
-  std::stringstream canonical;
-  if (ext == "off") shape = detail::checkOffStructure(in, size, name, options, canonical);
-  else if (ext == "obj") shape = detail::checkObjStructure(in, name, options);
-  else shape = detail::checkPlyStructure(in, size, name, options);
-  if (!shape) return shape.error();
-  if (ext == "off") return detail::readWithOpenMesh(canonical, ext, name, *shape);
-
-  std::ifstream again(path, std::ios::binary);
-  if (!again) return Error{ErrorCode::FileNotFound, "the file cannot be opened again: " + path, name};
-  return detail::readWithOpenMesh(again, ext, name, *shape);
+  if (ext == "off") return detail::readOff(in, size, name, options);
+  if (ext == "obj") return detail::readObj(in, name, options);
+  return detail::readPly(in, size, name, options);
 }
 
 }  // namespace
@@ -60,8 +54,15 @@ Result<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& options)
     if (ec) return Error{ErrorCode::FileNotFound, "the file size cannot be read: " + path, name};
     if (size == 0) return Error{ErrorCode::MalformedFile, "the file is empty (0 bytes)", name};
 
+    if (!(options.scale >= kMinScale && options.scale <= kMaxScale))
+      return Error{ErrorCode::InvalidParameter,
+                   "the scale must be a number from 0.000001 to 1000000 (0.001 turns micrometres into millimetres, "
+                   "25.4 inches), not " + std::to_string(options.scale),
+                   "scale"};
     Result<RawSoup> soup = readSoup(path, ext, name, size, options);
     if (!soup) return soup.error();
+    if (options.scale != 1.0)
+      for (Vec3& v : soup->vertices) v *= options.scale;
     return checkAndRepair(*soup, options, name);
   } catch (const std::bad_alloc&) {
     return Error{ErrorCode::TooLarge, "there is not enough memory to load this model", name};

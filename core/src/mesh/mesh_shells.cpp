@@ -1,5 +1,6 @@
 #include "mesh/mesh_shells.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -44,6 +45,30 @@ double windingNumber(const TriangleMesh& shell, const Vec3& point) {
     total += 2.0 * std::atan2(numerator, denominator);
   }
   return total / (4.0 * kPi);
+}
+
+Containment containment(const TriangleMesh& shell, const TriangleMesh& other, const BoundingBox& otherBox) {
+  // A point on the box's faces may still be on `other`'s surface; the slack keeps such points for the
+  // winding-number test, which then calls them undecided.
+  const double slack = 1e-9 * std::max(1.0, (otherBox.max - otherBox.min).norm());
+  const Vec3 low = otherBox.min - Vec3::Constant(slack), high = otherBox.max + Vec3::Constant(slack);
+  std::vector<std::size_t> inBox;
+  std::size_t outside = 0;
+  for (std::size_t v = 0; v < shell.vertices.size(); ++v) {
+    const Vec3& p = shell.vertices[v];
+    if ((p.array() < low.array()).any() || (p.array() > high.array()).any()) ++outside;
+    else inBox.push_back(v);
+  }
+  std::size_t inside = 0;
+  const std::size_t probes = std::min(inBox.size(), kContainmentProbes);
+  for (std::size_t k = 0; k < probes; ++k) {
+    const std::size_t v = inBox[k * inBox.size() / probes];
+    const double winding = std::abs(windingNumber(other, shell.vertices[v]));
+    if (winding > 0.75) ++inside;
+    else if (winding < 0.25) ++outside;
+  }
+  if (inside > 0 && outside > 0) return Containment::Crossing;
+  return inside > 0 ? Containment::Inside : Containment::Outside;
 }
 
 }  // namespace multidir::core::detail

@@ -109,9 +109,12 @@ Result<RawSoup> readAscii(std::istream& in, const std::string& name, const LoadO
       case State::InLoop:
         if (key == "vertex") {
           Vec3 p;
-          if (tokens.size() != 4 || !parseDouble(tokens[1], p.x()) || !parseDouble(tokens[2], p.y()) ||
-              !parseDouble(tokens[3], p.z()))
-            return lineError("a vertex needs three numbers x y z");
+          if (tokens.size() != 4) return lineError("a vertex needs three numbers x y z");
+          for (int axis = 0; axis < 3; ++axis) {
+            const std::string& token = tokens[static_cast<std::size_t>(axis) + 1];
+            if (NumberStatus status = parseCoordinate(token, p[axis]); status != NumberStatus::Ok)
+              return coordinateError(name, reader.lineNumber(), soup.vertices.size(), token, status);
+          }
           if (soup.vertices.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
             return tooMany(name, soup.triangles.size(), options);
           loop.push_back(static_cast<std::int32_t>(soup.vertices.size()));

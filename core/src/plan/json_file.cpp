@@ -5,10 +5,75 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace multidir::core::detail {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// Walks a document with nlohmann's SAX interface only to learn where a value it cannot hold sits
+// ("regions[0].volumeMm3"): the DOM parser reports a number such as 1e999 without saying where.
+class FieldLocator : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  std::string failedPath;
+  std::string failedToken;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    m_stack.push_back({false, 0, ""});
+    return true;
+  }
+  bool key(string_t& name) override {
+    m_stack.back().key = name;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override {
+    m_stack.push_back({true, 0, ""});
+    return true;
+  }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string& lastToken, const nlohmann::detail::exception&) override {
+    failedPath = path();
+    failedToken = lastToken;
+    return false;
+  }
+
+ private:
+  struct Level {
+    bool array;
+    std::size_t index;
+    std::string key;
+  };
+  // A value completes one element of the enclosing array.
+  bool value() {
+    if (!m_stack.empty() && m_stack.back().array) ++m_stack.back().index;
+    return true;
+  }
+  bool close() {
+    m_stack.pop_back();
+    return value();
+  }
+  std::string path() const {
+    std::string out;
+    for (const Level& level : m_stack) {
+      if (level.array) out += "[" + std::to_string(level.index) + "]";
+      else out += (out.empty() ? "" : ".") + level.key;
+    }
+    return out;
+  }
+  std::vector<Level> m_stack;
+};
+
+}  // namespace
 
 Result<nlohmann::json> readJsonFile(const std::string& path, const std::string& name) {
   std::error_code ec;
@@ -34,6 +99,15 @@ Result<nlohmann::json> readJsonFile(const std::string& path, const std::string& 
         ErrorCode::MalformedFile,
         "not valid JSON (syntax error near byte " + std::to_string(e.byte) + "); check brackets, commas and quotes",
         name};
+  } catch (const nlohmann::json::out_of_range&) {
+    // A number beyond double's range (1e999): valid JSON text, but no value MultiDir can hold.
+    FieldLocator locator;
+    nlohmann::json::sax_parse(content, &locator);
+    return Error{ErrorCode::MalformedFile,
+                 (locator.failedPath.empty() ? std::string("a value") : locator.failedPath) + " is '" +
+                     locator.failedToken.substr(0, 40) +
+                     "', a number too large to represent (not finite); correct that field",
+                 name};
   }
 }
 

@@ -1,9 +1,12 @@
 #include "multidir/core/search/candidate_planes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "multidir/core/common/units.h"
+#include "multidir/core/mesh/mesh_measure.h"
 
 namespace multidir::core {
 
@@ -147,8 +150,35 @@ OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const
   const double first = (std::floor(start / options.offsetStepMm) + 1.0) * options.offsetStepMm;
   if (first >= high) return grid;
   grid.firstMm = first;
-  grid.count = static_cast<int>(std::ceil((high - first) / options.offsetStepMm));
+  const double count = std::ceil((high - first) / options.offsetStepMm);
+  grid.count = static_cast<int>(std::min(count, static_cast<double>(kMaxCandidatesPerLevel)));
   return grid;
+}
+
+Status checkCandidateCount(const TriangleMesh& model, const MachineSpec& machine, const CandidateOptions& options) {
+  if (Status valid = validate(options); !valid) return valid;
+  const BoundingBox box = boundingBox(model);
+  const double widthMm = (box.max - box.min).norm();
+  const auto normals = static_cast<double>(std::max<std::size_t>(1, candidateNormals(machine, options).size()));
+  const double offsets = std::ceil(widthMm / options.offsetStepMm);
+  const double candidates = normals * offsets;
+  if (std::isfinite(candidates) && offsets <= static_cast<double>(kMaxOffsetsPerNormal) &&
+      candidates <= static_cast<double>(kMaxCandidatesPerLevel))
+    return Done{};
+  char width[64];
+  std::snprintf(width, sizeof width, "%.4g", widthMm / 1000.0);
+  char count[64];
+  std::snprintf(count, sizeof count, "%.3g", candidates);
+  char step[64];
+  std::snprintf(step, sizeof step, "%g", options.offsetStepMm);
+  return Error{ErrorCode::InvalidParameter,
+               "the model is " + std::string(width) + " m wide (its bounding-box diagonal), so the search would score " +
+                   count + " candidate planes per level (" + std::to_string(static_cast<long long>(normals)) +
+                   " normals, an offset every " + step +
+                   " mm), more than it can hold (" + std::to_string(kMaxOffsetsPerNormal) + " offsets per normal, " +
+                   std::to_string(kMaxCandidatesPerLevel) + " planes in all). Wrong units? Use --scale (0.001 for a model in micrometres, 25.4 for inches); "
+                   "or a larger --offset-step or fewer --normals",
+               "model"};
 }
 
 }  // namespace multidir::core

@@ -263,7 +263,8 @@ Status checkInputs(const TriangleMesh& model, const MachineSpec& machine, const 
   if (!(signedVolume(model) > 0))
     return Error{ErrorCode::InvalidParameter, "the model has no positive volume: load it with loadMesh, which orients it",
                  "model"};
-  return Done{};
+  // Before the engine allocates anything: a model in the wrong units would ask for gigabytes.
+  return checkCandidateCount(model, machine, options.candidates);
 }
 
 // The search itself, for validated inputs; reports levels but leaves the job's overall progress alone.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iterator>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -262,7 +264,36 @@ TEST(PlanFile, RegionFileOfAnotherSolidIsRefusedByItsTriangleCount) {
   const Result<LoadedPlan> loaded = loadPlan(dir);
   ASSERT_FALSE(loaded.ok());
   EXPECT_EQ(loaded.error().code, ErrorCode::MalformedFile);
-  EXPECT_NE(loaded.error().describe().find("region-02.stl: has 12 triangles, but plan.json says"), std::string::npos)
+  // The 684-byte box cannot hold the region's triangles: refused by size before anything is read.
+  EXPECT_EQ(loaded.error().where, "region-02.stl");
+  EXPECT_NE(loaded.error().message.find("regions[1].triangles"), std::string::npos) << loaded.error().describe();
+}
+
+TEST(PlanFile, TriangleClaimsBeyondWhatTheRegionFileHoldsAreRefusedBeforeAllocating) {
+  // 50 million triangles per region would cost 400 MB of face origins each before the file was looked at.
+  const Error error = loadEdited("PlanFile.HugeClaim", [](nlohmann::json& d) {
+    d["regions"][0]["triangles"] = 50'000'000;
+    d["regions"][0]["faceOrigins"] = "s0+50000000";
+  });
+  EXPECT_EQ(error.code, ErrorCode::MalformedFile) << error.describe();
+  EXPECT_NE(error.message.find("regions[0].triangles is 50000000"), std::string::npos) << error.describe();
+  EXPECT_NE(error.message.find("holds at most"), std::string::npos) << error.describe();
+}
+
+TEST(PlanFile, NonFiniteNumberNamesTheField) {
+  const std::string dir = savedTbar("PlanFile.NonFinite");
+  std::ifstream in(dir + "/plan.json");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key = "\"volumeMm3\": ";
+  const std::size_t at = text.find(key, text.find("\"regions\""));
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t end = text.find_first_of(",\n}", at + key.size());
+  text.replace(at + key.size(), end - at - key.size(), "1e999");
+  writeText(dir + "/plan.json", text);
+  const Result<LoadedPlan> loaded = loadPlan(dir);
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_EQ(loaded.error().code, ErrorCode::MalformedFile) << loaded.error().describe();
+  EXPECT_NE(loaded.error().describe().find("plan.json: regions[0].volumeMm3 is '1e999'"), std::string::npos)
       << loaded.error().describe();
 }
 

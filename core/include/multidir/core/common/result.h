@@ -13,7 +13,7 @@ enum class ErrorCode {
   MalformedFile,     // the file's content does not follow its format (truncated, lying counts, bad numbers)
   TooLarge,          // a count or size in the file is beyond what MultiDir accepts
   WriteFailed,       // the file could not be written
-  EmptyMesh,         // no vertices or no faces
+  EmptyMesh,         // no vertices or no faces, or a closed shell that encloses no volume (flat)
   NonFiniteVertex,   // a coordinate is NaN or infinite
   NotManifold,       // an edge with other than two faces, or a vertex whose faces do not form one fan
   OpenBoundary,      // the surface has holes: it does not enclose a solid

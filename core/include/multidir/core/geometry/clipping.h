@@ -10,8 +10,12 @@
 
 namespace multidir::core {
 
+// The largest plane tolerance clipByPlane accepts (mm): a micrometre, below any printer's resolution.
+constexpr double kMaxPlaneToleranceMm = 1e-3;
+
 struct ClipOptions {
-  // Vertices within this distance (mm) of the plane are moved onto it and count as lying in it.
+  // Vertices within this distance (mm) of the plane are moved onto it and count as lying in it. At most
+  // kMaxPlaneToleranceMm: it absorbs rounding, it does not reshape the solid.
   double planeToleranceMm = kDefaultPlaneToleranceMm;
   // Checks that the input is closed and consistently oriented with positive volume (O(F), a few ms per
   // 100k triangles). Callers that clip a clipper's own output again may turn it off; index ranges and
@@ -38,7 +42,7 @@ struct ClipResult {
 // Cost: O(F) for the faces plus the cap triangulation (close to linear in the cross-section's size).
 // Thread-safe: no shared state.
 // Errors: InvalidParameter (plane normal not finite or not unit length within 1e-9, offset or tolerance not
-// finite, negative tolerance, origins.size() != triangles.size()); EmptyMesh; NonFiniteVertex;
+// finite, tolerance negative or above kMaxPlaneToleranceMm, origins.size() != triangles.size()); EmptyMesh; NonFiniteVertex;
 // NotManifold, OpenBoundary, InconsistentOrientation (input not a closed oriented solid, when checked);
 // Internal when the cross-section cannot be closed (a bug: please report the input).
 Result<ClipResult> clipByPlane(const TriangleMesh& solid, const Plane& plane, std::int32_t planeId,

@@ -46,6 +46,9 @@ struct LoadOptions {
   double degenerateAreaMm2 = kDefaultDegenerateAreaMm2;
   std::size_t maxTriangles = 50'000'000;  // larger inputs are refused with TooLarge
   bool repair = true;                     // false: any defect is an error
+  // loadMesh multiplies every coordinate by this before the checks, for a model saved in other units
+  // (0.001: micrometres, 25.4: inches, 10: centimetres). From 1e-6 to 1e6, else InvalidParameter.
+  double scale = 1.0;
 };
 
 struct LoadedMesh {
@@ -58,9 +61,10 @@ struct LoadedMesh {
 // NonFiniteVertex, NotManifold, OpenBoundary, InconsistentOrientation.
 // Files are checked for structure before they are read (lying counts, truncation, indices out of range),
 // so bad input costs at most one pass over the file and memory in proportion to what it really holds.
-// STL is read by MultiDir's own reader (ASCII or binary, told apart by size, not by the word "solid");
-// OFF, OBJ and PLY are read through OpenMesh, whose float reader keeps about 7 significant digits.
-// Thread-safety: OpenMesh's warning streams are switched off during a read; do not load from two threads.
+// Every format is read by MultiDir's own readers (STL ASCII or binary, told apart by size, not by the word
+// "solid"), which parse every number strictly: plain decimal notation, finite as a double and as a float
+// (|x| <= 3.4e38); "1e39", "0x10", "nan" or "inf" as a coordinate or index is refused naming the line.
+// Text coordinates keep full double precision. Thread-safety: loads on different threads are independent.
 Result<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& options = {});
 
 // A polygon soup as a file holds it: vertices and triangles (polygons already fanned into triangles),
@@ -68,7 +72,7 @@ Result<LoadedMesh> loadMesh(const std::string& path, const LoadOptions& options 
 struct RawSoup {
   std::vector<Vec3> vertices;       // mm
   std::vector<Triangle> triangles;  // indices into vertices, as read
-  std::size_t droppedByReader = 0;  // polygons the reader dropped itself (a repeated corner): degenerate
+  std::size_t droppedByReader = 0;  // polygons with fewer than three corners, left out: degenerate
 };
 
 // The checks and repairs loadMesh runs after reading, for a soup built in memory. `sourceName` is put in
@@ -77,9 +81,12 @@ struct RawSoup {
 // shells that face inward (a shell nested inside an odd number of others is a cavity and must face inward).
 // With options.repair == false each of these is an error instead: duplicate vertices OpenBoundary (the
 // faces do not connect), degenerate or duplicate faces NotManifold, orientation and inside-out shells
-// InconsistentOrientation. Several shells and unused vertices are reported but are no defect. Errors as
-// loadMesh, plus MalformedFile for an index out of range and InvalidParameter for negative tolerances.
-// Cost: about linear in the size of the soup; with 2 to 64 shells, nesting adds shells x faces work.
+// InconsistentOrientation. Several shells and unused vertices are reported but are no defect. Refused
+// whatever the options: shells that cross each other (neither inside nor outside the other, decided by up
+// to 16 probes each: NotManifold) and shells that enclose no volume (flat: EmptyMesh). Errors as loadMesh,
+// plus MalformedFile for an index out of range and InvalidParameter for negative tolerances.
+// Cost: about linear in the size of the soup; with 2 to 64 shells, nesting adds up to 16 x shells x faces
+// work (only for shells whose bounding boxes overlap).
 Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& options = {},
                                   const std::string& sourceName = "mesh");
 

@@ -44,8 +44,23 @@ std::vector<Vec3> neighbourNormals(const MachineSpec& machine, const Vec3& norma
 // Criterion III: whether the platform region P lies wholly below `plane` (at least clearanceMm below).
 bool planeClearsPlatform(const Plane& plane, const PlatformRegion& platform, const Vec3& up, double clearanceMm = 0.0);
 
+// The most offsets one normal may have (20 m across at the default 1 mm step: no printer is that large), and
+// the most candidate planes one level of the search may score (normals x offsets, about 64 bytes each while a
+// level is ranked).
+constexpr long long kMaxOffsetsPerNormal = 20'000;
+constexpr long long kMaxCandidatesPerLevel = 50'000'000;
+
+// Refuses, before anything is allocated, a search that needs more offsets per normal (the model's
+// bounding-box diagonal over the offset step) or more candidates per level than the bounds above: the usual
+// cause is a model in the wrong units (micrometres read as millimetres are 1000 times too wide), so the
+// message gives the model's width in metres and suggests --scale, a larger offset step or fewer normals.
+// Errors: InvalidParameter (where: "model").
+Status checkCandidateCount(const TriangleMesh& model, const MachineSpec& machine, const CandidateOptions& options);
+
 // Offsets along one normal for a solid: every stepMm from just above the lowest allowed offset to below the
 // solid's top, where the lowest allowed offset keeps the platform region P wholly below (Criterion III).
+// At most kMaxCandidatesPerLevel offsets (checkCandidateCount refuses models that need more), so the count
+// never overflows whatever the model's size.
 OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
                             const Vec3& up, const CandidateOptions& options);
 

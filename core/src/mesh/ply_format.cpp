@@ -1,7 +1,9 @@
-// Structure check of PLY files (ASCII and binary, either byte order): header, counts against the file
-// size, and a walk over the body that checks every face's vertex indices.
+// PLY files (ASCII and binary, either byte order), read by MultiDir itself: header, counts against the
+// file size, then one walk over the body that parses every value strictly and keeps the vertex positions
+// and the faces' vertex indices.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <deque>
 #include <limits>
@@ -55,20 +57,39 @@ bool hostIsLittleEndian() {
 // Reads the body value by value, whatever the encoding.
 class BodyReader {
  public:
-  BodyReader(std::istream& in, Encoding encoding) : m_in(in), m_lines(in), m_encoding(encoding) {}
+  // `headerLines`: the lines before the body, so that ASCII line numbers count from the file's start.
+  BodyReader(std::istream& in, Encoding encoding, std::size_t headerLines)
+      : m_in(in), m_lines(in), m_encoding(encoding), m_headerLines(headerLines) {}
 
-  // False at the end of the data or on a token that is not a number.
-  bool read(const ScalarType& type, double& value) {
+  enum class Value { Ok, End, NotANumber, NotFinite };
+  // One value of `type`; in ASCII the token must be a plain decimal number (see parseCoordinate).
+  Value read(const ScalarType& type, double& value) {
     if (m_encoding == Encoding::Ascii) {
-      if (!nextToken()) return false;
-      return parseDouble(m_tokens.front(), value) && (m_tokens.pop_front(), true);
+      if (!nextToken()) return Value::End;
+      m_token = std::move(m_tokens.front());
+      m_tokens.pop_front();
+      switch (parseCoordinate(m_token, value)) {
+        case NumberStatus::Ok: return Value::Ok;
+        case NumberStatus::NotFinite: return Value::NotFinite;
+        case NumberStatus::NotANumber: return Value::NotANumber;
+      }
+      return Value::NotANumber;
     }
     unsigned char bytes[8];
-    if (!m_in.read(reinterpret_cast<char*>(bytes), type.bytes)) return false;
+    if (!m_in.read(reinterpret_cast<char*>(bytes), type.bytes)) return Value::End;
     if ((m_encoding == Encoding::BinaryBig) == hostIsLittleEndian()) std::reverse(bytes, bytes + type.bytes);
     value = decode(type, bytes);
-    return true;
+    m_lastBinary = value;
+    return isFiniteAsFloat(value) ? Value::Ok : Value::NotFinite;
   }
+  // The ASCII token read last and its line (0 in binary files).
+  std::string token() const {
+    if (m_encoding == Encoding::Ascii) return m_token;
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", m_lastBinary);
+    return text;
+  }
+  std::size_t lineNumber() const { return m_encoding == Encoding::Ascii ? m_headerLines + m_lines.lineNumber() : 0; }
   bool binaryText() const { return m_lines.binary() || m_lines.tooLong(); }
 
  private:
@@ -112,12 +133,15 @@ class BodyReader {
   LineReader m_lines;
   Encoding m_encoding;
   std::deque<std::string> m_tokens;
+  std::size_t m_headerLines;
+  std::string m_token;
+  double m_lastBinary = 0.0;
 };
 
 }  // namespace
 
-Result<FileShape> checkPlyStructure(std::istream& in, std::uintmax_t fileSize, const std::string& name,
-                                    const LoadOptions& options) {
+Result<RawSoup> readPly(std::istream& in, std::uintmax_t fileSize, const std::string& name,
+                        const LoadOptions& options) {
   LineReader header(in);
   std::string line;
   std::vector<std::string> tokens;
@@ -220,56 +244,75 @@ Result<FileShape> checkPlyStructure(std::istream& in, std::uintmax_t fileSize, c
   if (nv > static_cast<std::uintmax_t>(std::numeric_limits<std::int32_t>::max()))
     return Error{ErrorCode::TooLarge, "the file holds more vertices than MultiDir can index", name};
 
-  FileShape shape;
-  shape.vertices = nv;
-  shape.polygons = nf;
-  BodyReader body(in, encoding);
-  auto truncated = [&](const Element& e, std::uintmax_t i) -> Error {
-    if (body.binaryText())
-      return malformed(name, "the ASCII body holds binary bytes or an overlong line (in " + e.name + " " +
-                                 std::to_string(i) + ")");
-    return malformed(name, "the data ends or holds a non-number in " + e.name + " " + std::to_string(i) + " of " +
-                               withThousands(e.count) + ": the file is truncated or damaged");
+  RawSoup soup;
+  soup.vertices.reserve(static_cast<std::size_t>(nv));
+  soup.triangles.reserve(static_cast<std::size_t>(nf));
+  BodyReader body(in, encoding, header.lineNumber());
+  auto where = [&](const Element& e, std::uintmax_t i) {
+    const std::size_t lineNumber = body.lineNumber();
+    return (lineNumber > 0 ? "line " + std::to_string(lineNumber) + ", " : std::string()) + e.name + " " +
+           std::to_string(i);
   };
+  auto refused = [&](const Element& e, std::uintmax_t i, BodyReader::Value value) -> Error {
+    if (body.binaryText())
+      return malformed(name, "the ASCII body holds binary bytes or an overlong line (in " + where(e, i) + ")");
+    if (value == BodyReader::Value::End)
+      return malformed(name, "the data ends in " + e.name + " " + std::to_string(i) + " of " +
+                                 withThousands(e.count) + ": the file is truncated");
+    return malformed(name, where(e, i) + ": '" + body.token().substr(0, 40) +
+                               "' is not a plain decimal number in range; the file is damaged, export it again");
+  };
+  std::vector<std::int32_t> corners;
   for (const Element& e : elements) {
     const bool isVertex = &e == vertexElement, isFace = &e == faceElement;
     for (std::uintmax_t i = 0; i < e.count; ++i) {
+      Vec3 point = Vec3::Zero();
       for (std::size_t pi = 0; pi < e.properties.size(); ++pi) {
         const Property& p = e.properties[pi];
         double value = 0.0;
         if (!p.list) {
-          if (!body.read(p.type, value)) return truncated(e, i);
-          if (isVertex && !std::isfinite(value) &&
-              (static_cast<int>(pi) == xyzIndex[0] || static_cast<int>(pi) == xyzIndex[1] ||
-               static_cast<int>(pi) == xyzIndex[2]))
-            return Error{ErrorCode::NonFiniteVertex,
-                         "vertex " + std::to_string(i) +
-                             " has a coordinate that is not a finite number; fix or remove it in a mesh editor",
-                         name};
+          const BodyReader::Value got = body.read(p.type, value);
+          const int axis = !isVertex                          ? -1
+                           : static_cast<int>(pi) == xyzIndex[0] ? 0
+                           : static_cast<int>(pi) == xyzIndex[1] ? 1
+                           : static_cast<int>(pi) == xyzIndex[2] ? 2
+                                                                 : -1;
+          if (axis >= 0 && got == BodyReader::Value::NotFinite)
+            return coordinateError(name, body.lineNumber(), static_cast<std::size_t>(i), body.token(),
+                                   NumberStatus::NotFinite);
+          // Values MultiDir does not use (normals, colours) may be anything finite or not, but must be numbers.
+          if (got != BodyReader::Value::Ok && !(axis < 0 && got == BodyReader::Value::NotFinite))
+            return refused(e, i, got);
+          if (axis >= 0) point[axis] = value;
           continue;
         }
         double countValue = 0.0;
-        if (!body.read(p.countType, countValue) || countValue < 0 || countValue != std::floor(countValue))
-          return truncated(e, i);
+        if (const BodyReader::Value got = body.read(p.countType, countValue); got != BodyReader::Value::Ok)
+          return refused(e, i, got);
+        if (countValue < 0 || countValue != std::floor(countValue) || countValue > static_cast<double>(bodyBytes))
+          return malformed(name, where(e, i) + ": the list length '" + body.token().substr(0, 40) +
+                                     "' is not a count this file can hold; the file is damaged");
         const auto count = static_cast<std::uintmax_t>(countValue);
-        if (count > bodyBytes) return truncated(e, i);
         const bool isIndexList = isFace && static_cast<int>(pi) == indexList;
+        if (isIndexList) corners.clear();
         for (std::uintmax_t k = 0; k < count; ++k) {
-          if (!body.read(p.type, value)) return truncated(e, i);
-          if (isIndexList && (value < 0 || value >= static_cast<double>(nv) || value != std::floor(value)))
-            return malformed(name, "face " + std::to_string(i) + " refers to vertex " + std::to_string(value) +
-                                       ", but the vertices are numbered 0 to " +
+          const BodyReader::Value got = body.read(p.type, value);
+          if (got != BodyReader::Value::Ok && !(!isIndexList && got == BodyReader::Value::NotFinite))
+            return refused(e, i, got);
+          if (!isIndexList) continue;
+          if (value < 0 || value >= static_cast<double>(nv) || value != std::floor(value))
+            return malformed(name, where(e, i) + " refers to vertex '" + body.token().substr(0, 40) +
+                                       "', but the vertices are numbered 0 to " +
                                        std::to_string(static_cast<long long>(nv) - 1));
+          corners.push_back(static_cast<std::int32_t>(value));
         }
-        if (isIndexList) {
-          if (count < 3) ++shape.shortPolygons;
-          else shape.triangles += static_cast<std::size_t>(count - 2);
-          if (Status total = checkTriangleCount(shape.triangles, options, name); !total.ok()) return total.error();
-        }
+        if (isIndexList)
+          if (Status added = addPolygon(soup, corners, options, name); !added.ok()) return added.error();
       }
+      if (isVertex) soup.vertices.push_back(point);
     }
   }
-  return shape;
+  return soup;
 }
 
 }  // namespace multidir::core::detail

@@ -1,8 +1,8 @@
-// Structure check of OFF files (Geomview's Object File Format, ASCII form).
+// OFF files (Geomview's Object File Format, ASCII form), read by MultiDir itself: OpenMesh's reader
+// misread comments, counts on the keyword line, face colours and number tokens such as "1e39" or "0x10"
+// (uninitialised indices, gigabytes requested for a small file).
 #include <cmath>
 #include <limits>
-#include <sstream>
-#include <ostream>
 #include <vector>
 
 #include "mesh/mesh_formats.h"
@@ -36,8 +36,8 @@ bool isOffKeyword(const std::string& word) {
 
 }  // namespace
 
-Result<FileShape> checkOffStructure(std::istream& in, std::uintmax_t fileSize, const std::string& name,
-                                    const LoadOptions& options, std::ostream& canonical) {
+Result<RawSoup> readOff(std::istream& in, std::uintmax_t fileSize, const std::string& name,
+                        const LoadOptions& options) {
   LineReader reader(in);
   std::string line;
   std::vector<std::string> tokens;
@@ -96,56 +96,53 @@ Result<FileShape> checkOffStructure(std::istream& in, std::uintmax_t fileSize, c
                                " faces, more than a file of " + withThousands(fileSize) +
                                " bytes can hold: the file is truncated or its header is wrong");
 
-  // Polygons with fewer than three corners are left out (and counted as degenerate), so the header is
-  // written last.
-  std::ostringstream vertexText, faceText;
+  RawSoup soup;
+  soup.vertices.reserve(static_cast<std::size_t>(nv));
+  soup.triangles.reserve(static_cast<std::size_t>(nf));
   for (std::uintmax_t v = 0; v < nv; ++v) {
     if (!nextDataLine(reader, line, tokens))
       return malformed(name, "the file ends after " + withThousands(v) + " of the " + withThousands(nv) +
                                  " vertices it announces: it is truncated");
     if (reader.binary() || reader.tooLong()) return badText();
-    double xyz[3] = {0, 0, 0};
-    if (tokens.size() < 3 || !parseDouble(tokens[0], xyz[0]) || !parseDouble(tokens[1], xyz[1]) ||
-        !parseDouble(tokens[2], xyz[2]))
-      return lineError("vertex " + std::to_string(v) + " needs three numbers x y z");
-    for (double c : xyz)
-      if (!std::isfinite(c))
-        return Error{ErrorCode::NonFiniteVertex,
-                     "vertex " + std::to_string(v) + " (line " + std::to_string(reader.lineNumber()) +
-                         ") has a coordinate that is not a finite number (" + tokens[0] + " " + tokens[1] + " " +
-                         tokens[2] + "); fix or remove it in a mesh editor",
-                     name};
-    vertexText << tokens[0] << ' ' << tokens[1] << ' ' << tokens[2] << '\n';
+    if (tokens.size() < 3) return lineError("vertex " + std::to_string(v) + " needs three numbers x y z");
+    Vec3 p;
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::string& token = tokens[static_cast<std::size_t>(axis)];
+      if (NumberStatus status = parseCoordinate(token, p[axis]); status != NumberStatus::Ok)
+        return coordinateError(name, reader.lineNumber(), static_cast<std::size_t>(v), token, status);
+    }
+    soup.vertices.push_back(p);
   }
 
-  FileShape shape;
-  shape.vertices = nv;
-  shape.polygons = nf;
+  std::vector<std::int32_t> corners;
   for (std::uintmax_t f = 0; f < nf; ++f) {
     if (!nextDataLine(reader, line, tokens))
       return malformed(name, "the file ends after " + withThousands(f) + " of the " + withThousands(nf) +
                                  " faces it announces: it is truncated");
     if (reader.binary() || reader.tooLong()) return badText();
-    long long corners = 0;
-    if (!parseInteger(tokens[0], corners) || corners < 0 ||
-        static_cast<std::uintmax_t>(corners) + 1 > tokens.size())
+    long long cornerCount = 0;
+    if (!parseInteger(tokens[0], cornerCount) || cornerCount < 0 ||
+        static_cast<std::uintmax_t>(cornerCount) + 1 > tokens.size())
       return lineError("face " + std::to_string(f) + " must give its corner count and that many vertex indices");
-    if (corners < 3) ++shape.shortPolygons;
-    else faceText << corners;
-    for (long long k = 1; k <= corners; ++k) {
+    corners.clear();
+    for (long long k = 1; k <= cornerCount; ++k) {
       long long index = -1;
       if (!parseInteger(tokens[static_cast<std::size_t>(k)], index) || index < 0 ||
           static_cast<std::uintmax_t>(index) >= nv)
         return lineError("face " + std::to_string(f) + " refers to vertex '" + tokens[static_cast<std::size_t>(k)] +
                          "', but the vertices are numbered 0 to " + std::to_string(vertexCount - 1));
-      if (corners >= 3) faceText << ' ' << index;
+      corners.push_back(static_cast<std::int32_t>(index));
     }
-    if (corners >= 3) faceText << '\n';
-    if (corners >= 3) shape.triangles += static_cast<std::size_t>(corners - 2);
-    if (Status total = checkTriangleCount(shape.triangles, options, name); !total.ok()) return total.error();
+    // What follows the indices is an optional colour: numbers, checked so that nothing is guessed at.
+    for (std::size_t k = static_cast<std::size_t>(cornerCount) + 1; k < tokens.size(); ++k) {
+      double ignored = 0.0;
+      if (!parseDouble(tokens[k], ignored))
+        return lineError("face " + std::to_string(f) + " ends with '" + tokens[k].substr(0, 20) +
+                         "', which is not a colour value");
+    }
+    if (Status added = addPolygon(soup, corners, options, name); !added.ok()) return added.error();
   }
-  canonical << "OFF\n" << nv << ' ' << (nf - shape.shortPolygons) << " 0\n" << vertexText.str() << faceText.str();
-  return shape;
+  return soup;
 }
 
 }  // namespace multidir::core::detail
