@@ -1,6 +1,6 @@
 // One plane numbering and one angle convention in every panel (issue 11, item 14): the Edit plan table lists
 // planes in printing order, plane k under region k + 1 as the Plan panel numbers regions; an azimuth reads the
-// same in the Plan and Edit plan panels; and a tilt that moves a plane's offset says so.
+// same in the Plan and Edit plan panels.
 #include <gtest/gtest.h>
 
 #include <QDoubleSpinBox>
@@ -68,30 +68,6 @@ TEST(StudioPlaneNumbering, AnAzimuthReadsTheSameInThePlanAndEditPlanPanels) {
   EXPECT_NEAR(azimuth, -100.0, 0.05);
   const QString angles = window.planPanel()->regionTable()->item(count, kAnglesColumn)->text();
   EXPECT_TRUE(angles.contains(QStringLiteral("azimuth %1°").arg(number(azimuth, 1)))) << angles.toStdString();
-}
-
-TEST(StudioPlaneNumbering, ATiltThatMovesThePlanesOffsetSaysFromWhatToWhat) {
-  MainWindow window;
-  ASSERT_NO_FATAL_FAILURE(showSearchedSnowman(window));
-  PlaneEditPanel& panel = *window.planeEditPanel();
-  const int count = static_cast<int>(window.plan()->plan->clippingPlanes.size());
-  panel.planeTable()->selectRow(planeNumber(0, count) - 1);
-  auto* note = panel.findChild<QLabel*>(QStringLiteral("offsetFollowsTilt"));
-  ASSERT_NE(note, nullptr) << "nothing says that a tilt moves the offset";
-  EXPECT_FALSE(note->isVisibleTo(&panel));
-  const double before = panel.offsetBox()->value();
-  panel.tiltBox()->setValue(panel.tiltBox()->value() + 8.0);
-  ASSERT_TRUE(settle(*window.planEditor()));
-  ASSERT_TRUE(panel.refusalText().isEmpty()) << panel.refusalText().toStdString();
-  const double after = panel.offsetBox()->value();
-  ASSERT_GE(std::abs(after - before), 0.01) << "this tilt happened to keep the offset: it proves nothing";
-  EXPECT_TRUE(note->isVisibleTo(&panel));
-  EXPECT_TRUE(note->text().contains(number(before, 2)) && note->text().contains(number(after, 2)))
-      << note->text().toStdString();
-
-  // Typing an offset is no tilt: the note goes.
-  panel.offsetBox()->setValue(after + 1.0);
-  EXPECT_FALSE(note->isVisibleTo(&panel));
 }
 
 }  // namespace
