@@ -6,6 +6,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
@@ -27,10 +28,12 @@
 #include "multidir/core/plan/checksum.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/samples/samples.h"
+#include "multidir/core/search/search_options.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/edit/plan_editor.h"
 #include "ui/error_text.h"
 #include "ui/jobs/model_loader.h"
+#include "ui/jobs/support_regrowth.h"
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/overhang_panel.h"
 #include "ui/panels/plan_panel.h"
@@ -78,6 +81,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(m_loader, &ModelLoader::failed, this, &MainWindow::reportLoadError);
   connect(m_loader, &ModelLoader::busyChanged, this, &MainWindow::setBusy);
   m_search = new SearchJob(this);
+  m_regrowth = new SupportRegrowth(this);
+  connect(m_regrowth, &SupportRegrowth::grown, this, &MainWindow::onSupportsRegrown);
 
   buildDocks();
   m_project = new ProjectSession(*this);
@@ -97,33 +102,35 @@ MainWindow::~MainWindow() {
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::chooseFile);
+  open->setObjectName(QStringLiteral("openModel"));
   open->setShortcut(QKeySequence::Open);
   open->setStatusTip(tr("Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project"));
   m_project->addFileActions(file);
 
-  QMenu* samples = file->addMenu(tr("&Samples"));
+  QMenu* samples = file->addMenu(tr("Sa&mples"));
   for (const core::samples::SampleInfo& info : core::samples::catalogue()) {
     const QString id = QString::fromStdString(info.id);
-    QAction* action = samples->addAction(QString::fromStdString(info.title), this, [this, id] { openSample(id); });
+    QAction* action =
+        samples->addAction(QString::fromStdString(info.title), this, [this, id] { openSampleFromUser(id); });
     action->setStatusTip(QString::fromStdString(info.description));
     action->setObjectName(QStringLiteral("sample-") + id);
   }
 
   file->addSeparator();
-  QAction* openPlanAction = file->addAction(tr("Open &plan..."), this, &MainWindow::chooseOpenPlan);
+  QAction* openPlanAction = file->addAction(tr("Open pla&n..."), this, &MainWindow::chooseOpenPlan);
   openPlanAction->setObjectName(QStringLiteral("openPlan"));
   openPlanAction->setStatusTip(tr("Show a plan saved earlier (a folder with plan.json)"));
   m_exportPlanAction = file->addAction(tr("&Export plan..."), this, &MainWindow::chooseExportPlan);
   m_exportPlanAction->setObjectName(QStringLiteral("exportPlan"));
   m_exportPlanAction->setStatusTip(tr("Save the plan shown: plan.json and one STL per region"));
   m_exportPlanAction->setEnabled(false);
-  QAction* screenshot = file->addAction(tr("Export Sc&reenshot..."), this, &MainWindow::chooseExportScreenshot);
+  QAction* screenshot = file->addAction(tr("Export Screens&hot..."), this, &MainWindow::chooseExportScreenshot);
   screenshot->setObjectName(QStringLiteral("exportScreenshot"));
   screenshot->setStatusTip(tr("Save the 3D view as shown to a PNG or JPEG file"));
   file->addSeparator();
   QAction* loadMachine = file->addAction(tr("&Load machine profile..."), this, &MainWindow::chooseLoadMachine);
   loadMachine->setObjectName(QStringLiteral("loadMachine"));
-  QAction* saveMachine = file->addAction(tr("&Save machine profile..."), this, &MainWindow::chooseSaveMachine);
+  QAction* saveMachine = file->addAction(tr("Save machine pro&file..."), this, &MainWindow::chooseSaveMachine);
   saveMachine->setObjectName(QStringLiteral("saveMachine"));
   file->addSeparator();
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
@@ -150,6 +157,24 @@ void MainWindow::buildMenus() {
     }
   });
   cancel->setShortcut(QKeySequence(Qt::Key_Escape));
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  QAction* about = help->addAction(tr("&About MultiDir Studio"), this, &MainWindow::showAbout);
+  about->setObjectName(QStringLiteral("about"));
+  about->setMenuRole(QAction::AboutRole);
+}
+
+void MainWindow::showAbout() {
+  // Non-modal: nothing waits on it, and a test reads it like the user does.
+  auto* box = new QMessageBox(QMessageBox::Information, tr("About MultiDir Studio"),
+                              tr("MultiDir Studio %1").arg(studioVersion()), QMessageBox::Ok, this);
+  box->setObjectName(QStringLiteral("aboutBox"));
+  box->setInformativeText(tr("Plans multi-directional 3D prints: cuts a model by planes into regions, each printed "
+                             "along its own direction, and drives the machine that prints them.\n\nQt %1")
+                              .arg(QString::fromLatin1(qVersion())));
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->setModal(false);
+  box->show();
 }
 
 void MainWindow::buildDocks() {
@@ -186,11 +211,19 @@ void MainWindow::buildDocks() {
   resizeDocks({overhangs}, {430}, Qt::Horizontal);
 
   connect(m_overhangPanel, &OverhangPanel::alphaMaxChanged, this, [this] { updateOverhangs(); });
+  // One alpha_max, shown in both panels: each follows the other (setting an equal value emits nothing).
+  connect(m_overhangPanel, &OverhangPanel::alphaMaxChanged, m_searchPanel, &SearchPanel::setAlphaMaxDegrees);
+  connect(m_searchPanel, &SearchPanel::alphaMaxChanged, m_overhangPanel, &OverhangPanel::setAlphaMaxDegrees);
   connect(m_machinePanel, &MachinePanel::machineChanged, this, &MainWindow::onMachineChanged);
   connect(m_searchPanel, &SearchPanel::runClicked, this, [this] { runSearch(); });
   connect(m_searchPanel, &SearchPanel::cancelClicked, this, &MainWindow::cancelSearch);
-  connect(m_search, &SearchJob::progressed, m_searchPanel, &SearchPanel::showProgress);
-  connect(m_search, &SearchJob::fractionChanged, m_searchPanel, &SearchPanel::showFraction);
+  // A search being abandoned reports nothing more: the panel already shows another model.
+  connect(m_search, &SearchJob::progressed, this, [this](const core::SearchProgress& progress) {
+    if (!m_dropSearchResult) m_searchPanel->showProgress(progress);
+  });
+  connect(m_search, &SearchJob::fractionChanged, this, [this](double fraction, const QString& phase) {
+    if (!m_dropSearchResult) m_searchPanel->showFraction(fraction, phase);
+  });
   connect(m_search, &SearchJob::finished, this, &MainWindow::onSearchFinished);
   connect(m_search, &SearchJob::failed, this, &MainWindow::onSearchFailed);
   connect(m_search, &SearchJob::runningChanged, this, [this] { updateRunnable(); });
@@ -261,7 +294,10 @@ void MainWindow::buildUpBox() {
               {tr("+Z"), core::Vec3::UnitZ()},  {tr("-Z"), -core::Vec3::UnitZ()}};
   for (const auto& axis : axes) m_upBox->addItem(axis.text, toQVector(axis.direction));
   m_upBox->setCurrentIndex(4);  // +Z, the samples' up
-  connect(m_upBox, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MainWindow::onUpChanged);
+  m_upIndex = 4;
+  m_upBox->setFocusPolicy(Qt::StrongFocus);  // a wheel over it neither gives it the focus ...
+  m_upBox->installEventFilter(this);         // ... nor turns it (eventFilter)
+  connect(m_upBox, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MainWindow::onUpBoxChosen);
   bar->addWidget(m_upBox);
 }
 
@@ -302,45 +338,118 @@ void MainWindow::openSample(const QString& id) {
   m_loader->loadSample(id);
 }
 
+void MainWindow::openSampleFromUser(const QString& id) {
+  m_project->whenWorkMayBeReplaced([this, id] { openSample(id); });
+}
+
+void MainWindow::openPlanFromUser(const QString& directory) {
+  rememberDialogFolder(FileKind::Plan, directory);
+  m_project->whenWorkMayBeReplaced([this, directory] {
+    QString error;
+    if (!openPlan(directory, &error)) QMessageBox::warning(this, tr("Open Plan"), error);
+  });
+}
+
+void MainWindow::abandonSearch() {
+  if (!m_search->isRunning()) return;
+  m_dropSearchResult = true;
+  m_search->cancel();
+  m_searchPanel->searchDropped();
+  statusBar()->showMessage(tr("The search was stopped; its result is dropped."));
+}
+
+QString MainWindow::dialogFolder(FileKind kind) const {
+  const QString remembered = rememberedDialogFolder(kind);
+  if (!remembered.isEmpty()) return remembered;
+  if (kind != FileKind::Model && !m_project->projectPath().isEmpty())
+    return QFileInfo(m_project->projectPath()).absolutePath();
+  if (m_model && !m_model->sourcePath.isEmpty()) return QFileInfo(m_model->sourcePath).absolutePath();
+  return QString();
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == m_upBox && event->type() == QEvent::Wheel && !m_upBox->hasFocus()) {
+    event->ignore();
+    return true;
+  }
+  return QMainWindow::eventFilter(watched, event);
+}
+
 void MainWindow::chooseFile() {
   const QString path = QFileDialog::getOpenFileName(
-      this, tr("Open Model or Project"), m_lastDirectory,
+      this, tr("Open Model or Project"), dialogFolder(FileKind::Model),
       tr("Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;"
          "MultiDir projects (*.multidir);;All files (*)"));
   if (path.isEmpty()) return;
-  m_lastDirectory = QFileInfo(path).absolutePath();
   m_project->openFromUser(path);
 }
 
 void MainWindow::setUpDirection(const core::Vec3& up) {
   const double length = up.norm();
   if (!std::isfinite(length) || length == 0.0) return;
-  const core::Vec3 unit = up / length;
+  const int index = selectUpEntry(up / length);
+  if (index == m_upIndex) return;
+  m_upIndex = index;
+  onUpChanged();
+}
+
+int MainWindow::selectUpEntry(const core::Vec3& unit) {
+  // The box's own signal is for the user's choices (onUpBoxChosen); the callers apply the entry themselves.
+  const QSignalBlocker blocker(m_upBox);
   for (int i = 0; i < m_upBox->count(); ++i) {
     if ((toVec3(m_upBox->itemData(i).value<QVector3D>()) - unit).norm() < 1e-6) {
       m_upBox->setCurrentIndex(i);
-      return;
+      return i;
     }
   }
   const QString text = tr("Custom (%1, %2, %3)")
                            .arg(formatNumber(unit.x(), 3), formatNumber(unit.y(), 3), formatNumber(unit.z(), 3));
   m_upBox->addItem(text, toQVector(unit));
   m_upBox->setCurrentIndex(m_upBox->count() - 1);
+  return m_upBox->count() - 1;
+}
+
+void MainWindow::onUpBoxChosen(int index) {
+  if (index == m_upIndex || index < 0) return;
+  const bool dropsWork = isSearching() || (m_plan.has_value() && m_project->isModified());
+  auto apply = [this, index] {
+    if (index >= m_upBox->count()) return;
+    {
+      const QSignalBlocker blocker(m_upBox);
+      m_upBox->setCurrentIndex(index);
+    }
+    m_upIndex = index;
+    onUpChanged();
+  };
+  if (!dropsWork) {
+    apply();
+    return;
+  }
+  // The box shows the direction in force until the question is answered.
+  {
+    const QSignalBlocker blocker(m_upBox);
+    m_upBox->setCurrentIndex(m_upIndex);
+  }
+  m_project->whenWorkMayBeReplaced(apply);
 }
 
 core::Vec3 MainWindow::upDirection() const {
-  return toVec3(m_upBox->currentData().value<QVector3D>()).normalized();
+  return toVec3(m_upBox->itemData(m_upIndex).value<QVector3D>()).normalized();
 }
 
 bool MainWindow::isLoading() const { return m_loader->isBusy(); }
 
 void MainWindow::showModel(const LoadedModel& model) {
   m_model = model;
-  // Setting the up box redraws through onUpChanged only when it changes; draw once here either way.
-  const QSignalBlocker blocker(m_upBox);
-  if (model.naturalUp) setUpDirection(*model.naturalUp);
-  if (m_pendingPlan && m_pendingPlan->machine.up.allFinite()) setUpDirection(m_pendingPlan->machine.up);
+  // The up direction the model comes with is selected without redrawing: it is drawn once below. Only here:
+  // whoever answers modelShown (a project applying its own up direction) must redraw.
+  auto selectUp = [this](const core::Vec3& up) {
+    if (up.allFinite() && up.norm() > 0.0) m_upIndex = selectUpEntry(up.normalized());
+  };
+  if (model.naturalUp) selectUp(*model.naturalUp);
+  if (m_pendingPlan) selectUp(m_pendingPlan->machine.up);
   clearPlan();
+  m_searchPanel->clearResult();
   m_viewer->setMesh(*model.mesh, upDirection());
   m_planPanel->setModelSize(modelSizeMm());
   m_machinePanel->setPickAvailable(true);
@@ -482,7 +591,7 @@ bool MainWindow::runSearch() {
   overhang.supportedBandMm = options.supportedBandMm;
   const core::Result<core::OverhangAnalysis> before = core::analyzeOverhang(*m_model->mesh, m_searchUp, overhang);
   if (!m_search->start(m_model->mesh, machine, options, m_searchPanel->axisSearchCount())) return false;
-  m_searchPanel->searchStarted(before ? before->riskyAreaMm2 : 0.0);
+  m_searchPanel->searchStarted(before ? before->riskyAreaMm2 : 0.0, core::maxSearchLevels(options));
   m_searchDock->raise();
   statusBar()->showMessage(tr("Searching %1...").arg(m_model->name));
   return true;
@@ -496,6 +605,11 @@ void MainWindow::cancelSearch() {
 }
 
 void MainWindow::onSearchFinished(const SearchRun& run) {
+  if (m_dropSearchResult) {
+    m_dropSearchResult = false;
+    m_searchModel.reset();
+    return;
+  }
   const bool current = m_model && m_model->mesh == m_searchModel && (upDirection() - m_searchUp).norm() < 1e-9;
   m_searchModel.reset();
   m_searchPanel->searchFinished(*run.plan);
@@ -512,6 +626,10 @@ void MainWindow::onSearchFinished(const SearchRun& run) {
 
 void MainWindow::onSearchFailed(const QString& headline, const QString& detail) {
   m_searchModel.reset();
+  if (m_dropSearchResult) {
+    m_dropSearchResult = false;
+    return;
+  }
   m_searchPanel->searchFailed(headline, detail);
   statusBar()->showMessage(tr("Search failed: %1").arg(headline));
   statusBar()->setToolTip(detail);
@@ -530,12 +648,42 @@ void MainWindow::showPlan(const SearchRun& run, PlanChange change) {
     m_planEditor->setPlan(m_model && m_model->mesh != m_regionsModel ? m_model->mesh : nullptr, run);
   }
   m_exportPlanAction->setEnabled(true);
+  regrowSupportsIfMissing();
   emit planShown();
+}
+
+void MainWindow::regrowSupportsIfMissing() {
+  const bool needed = m_plan && m_plan->plan && m_plan->plan->jgAfterMm2 > 0.0 && !m_plan->supports;
+  // A plan shown over its own regions has no model to grow supports on: it keeps the ones saved with it.
+  const bool model = m_model && m_model->mesh != m_regionsModel;
+  if (!needed || !model) {
+    m_regrowth->cancel();
+    return;
+  }
+  if (m_regrowth->growingFor() == m_plan->plan) return;
+  m_regrowth->start(m_model->mesh, m_plan->plan, m_plan->machine);
+  statusBar()->showMessage(tr("Growing supports for the plan..."));
+}
+
+bool MainWindow::isGrowingSupports() const { return m_regrowth->growingFor() != nullptr; }
+
+void MainWindow::onSupportsRegrown(const std::shared_ptr<const core::Decomposition>& plan,
+                                   const std::shared_ptr<const std::vector<core::SupportSet>>& supports,
+                                   const QString& note) {
+  if (!m_plan || m_plan->plan != plan) return;
+  m_plan->supports = supports;
+  m_plan->supportsNote = note;
+  m_viewer->setSupports(supports);
+  m_planPanel->setPlan(*plan, m_plan->machine.kind, supports ? *supports : std::vector<core::SupportSet>{});
+  m_planEditor->adoptSupports(plan, supports, note);
+  statusBar()->showMessage(note.isEmpty() ? tr("Supports grown for the plan.") : note);
+  emit supportsRegrown();
 }
 
 void MainWindow::clearPlan() {
   const bool hadPlan = m_plan.has_value();
   m_plan.reset();
+  if (m_regrowth) m_regrowth->cancel();
   m_viewer->clearPlan();
   m_planPanel->clearPlan();
   if (m_planEditor) m_planEditor->clear();
@@ -554,12 +702,21 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   QMainWindow::closeEvent(event);
 }
 
-bool MainWindow::exportPlan(const QString& directory, QString* error) {
+bool MainWindow::exportPlan(const QString& directory, QString* error, QString* warning) {
   auto fail = [error](const QString& message) {
     if (error) *error = message;
     return false;
   };
   if (!m_plan || !m_plan->plan) return fail(tr("There is no plan to export: run a search first."));
+  const bool needsSupports = m_plan->plan->jgAfterMm2 > 0.0;
+  if (needsSupports && !m_plan->supports && isGrowingSupports()) {
+    return fail(tr("The supports of this plan are still being grown: export it again when the status bar says "
+                   "they are ready."));
+  }
+  if (!QDir().mkpath(directory)) {
+    return fail(tr("Could not create the folder %1: check that its parent exists and can be written.")
+                    .arg(QDir::toNativeSeparators(directory)));
+  }
   core::PlanMetadata metadata;
   metadata.up = m_plan->machine.up;
   metadata.machine = m_plan->machine;
@@ -577,6 +734,16 @@ bool MainWindow::exportPlan(const QString& directory, QString* error) {
   if (!saved) {
     return fail(tr("Could not export the plan to %1: %2 (%3)")
                     .arg(directory, errorHeadline(saved.error().code), QString::fromStdString(saved.error().describe())));
+  }
+  if (needsSupports && !m_plan->supports) {
+    // Written all the same (the regions are good), but never silently without them.
+    const QString text =
+        tr("Plan exported to %1 without supports although %2 mm² of risky area remains: %3")
+            .arg(directory, formatNumber(m_plan->plan->jgAfterMm2, 2),
+                 m_plan->supportsNote.isEmpty() ? tr("no supports were grown for it.") : m_plan->supportsNote);
+    statusBar()->showMessage(text);
+    if (warning) *warning = text;
+    return true;
   }
   statusBar()->showMessage(tr("Plan exported to %1.").arg(directory));
   return true;
@@ -649,10 +816,21 @@ bool MainWindow::loadMachineProfile(const QString& path, QString* error) {
 }
 
 void MainWindow::chooseExportPlan() {
-  const QString directory = QFileDialog::getExistingDirectory(this, tr("Export Plan to Folder"), m_lastDirectory);
+  // A folder name to write the plan into: an existing folder, or a new one that exportPlan creates (a folder
+  // dialog would accept only folders that already exist).
+  const QString stem = m_model ? QFileInfo(m_model->name).completeBaseName() : QStringLiteral("multidir");
+  const QString directory = QFileDialog::getSaveFileName(
+      this, tr("Export Plan to Folder"), QDir(dialogFolder(FileKind::Plan)).filePath(stem + tr("-plan")),
+      tr("Plan folders (*)"), nullptr, QFileDialog::ShowDirsOnly | QFileDialog::DontConfirmOverwrite);
   if (directory.isEmpty()) return;
+  rememberDialogFolder(FileKind::Plan, directory);
   QString error;
-  if (!exportPlan(directory, &error)) QMessageBox::warning(this, tr("Export Plan"), error);
+  QString warning;
+  if (!exportPlan(directory, &error, &warning)) {
+    QMessageBox::warning(this, tr("Export Plan"), error);
+  } else if (!warning.isEmpty()) {
+    QMessageBox::warning(this, tr("Export Plan"), warning);
+  }
 }
 
 bool MainWindow::exportScreenshot(const QString& path, QString* error) {
@@ -672,37 +850,51 @@ void MainWindow::chooseExportScreenshot() {
   const QString name = m_model ? QFileInfo(m_model->name).completeBaseName() : QStringLiteral("multidir");
   QString filter = png;
   QString path = QFileDialog::getSaveFileName(this, tr("Export Screenshot"),
-                                              QDir(m_lastDirectory).filePath(name + QStringLiteral(".png")),
+                                              QDir(dialogFolder(FileKind::Picture)).filePath(name + QStringLiteral(".png")),
                                               png + QStringLiteral(";;") + jpeg, &filter);
   if (path.isEmpty()) return;
   // A name typed without an extension gets the chosen filter's.
   if (QFileInfo(path).suffix().isEmpty()) path += filter == jpeg ? QStringLiteral(".jpg") : QStringLiteral(".png");
-  m_lastDirectory = QFileInfo(path).absolutePath();
+  rememberDialogFolder(FileKind::Picture, path);
   QString error;
   if (!exportScreenshot(path, &error)) QMessageBox::warning(this, tr("Export Screenshot"), error);
 }
 
 void MainWindow::chooseOpenPlan() {
-  const QString directory = QFileDialog::getExistingDirectory(this, tr("Open Plan Folder"), m_lastDirectory);
+  const QString directory =
+      QFileDialog::getExistingDirectory(this, tr("Open Plan Folder"), dialogFolder(FileKind::Plan));
   if (directory.isEmpty()) return;
-  QString error;
-  if (!openPlan(directory, &error)) QMessageBox::warning(this, tr("Open Plan"), error);
+  openPlanFromUser(directory);
 }
 
 void MainWindow::chooseSaveMachine() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save Machine Profile"), m_lastDirectory,
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save Machine Profile"),
+                                                    dialogFolder(FileKind::MachineProfile),
                                                     tr("Machine profiles (*.json)"));
   if (path.isEmpty()) return;
+  rememberDialogFolder(FileKind::MachineProfile, path);
   QString error;
   if (!saveMachineProfile(path, &error)) QMessageBox::warning(this, tr("Save Machine Profile"), error);
 }
 
 void MainWindow::chooseLoadMachine() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load Machine Profile"), m_lastDirectory,
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load Machine Profile"),
+                                                    dialogFolder(FileKind::MachineProfile),
                                                     tr("Machine profiles (*.json);;All files (*)"));
   if (path.isEmpty()) return;
-  QString error;
-  if (!loadMachineProfile(path, &error)) QMessageBox::warning(this, tr("Load Machine Profile"), error);
+  rememberDialogFolder(FileKind::MachineProfile, path);
+  auto load = [this, path] {
+    QString error;
+    if (!loadMachineProfile(path, &error)) QMessageBox::warning(this, tr("Load Machine Profile"), error);
+  };
+  // A profile with another up direction drops the plan shown: asked about like any other replacement.
+  const core::Result<core::MachineSpec> profile = core::loadMachineProfile(localPath(path));
+  const bool turnsUp = profile && (profile->up.normalized() - upDirection()).norm() > 1e-9;
+  if (turnsUp && (m_plan || isSearching())) {
+    m_project->whenWorkMayBeReplaced(load);
+  } else {
+    load();
+  }
 }
 
 void MainWindow::setBusy(bool busy) {

@@ -8,8 +8,18 @@
 // in a non-modal message box and through loadFailed().
 //
 // Steps and what invalidates them: a new model or up direction clears the plan (and cancels a running
-// search, whose result is then dropped); alpha_max recolours the overhangs only; machine and search
-// settings apply to the next search, the plan shown keeps the settings it was made with.
+// search, whose result is then dropped); alpha_max recolours the overhangs (and is the search's: the
+// Overhangs and Search panels show one value); machine and search settings apply to the next search, the plan
+// shown keeps the settings it was made with.
+//
+// Nothing the user made is replaced without asking: what the user starts from the menus, the Up box or a drop
+// (another model, sample, project or plan folder, another up direction) first asks to stop a running search
+// and to save or discard unsaved changes (ProjectSession::whenWorkMayBeReplaced). The functions below that
+// take a path or a direction are the program's own and do not ask.
+//
+// A plan that leaves risky area is never shown or exported without its supports for long: a plan that comes
+// without them (a reopened or recovered project, a cancelled search) gets them regrown (SupportRegrowth), and
+// exportPlan() refuses while they are being grown.
 #include <QMainWindow>
 #include <QString>
 #include <cstddef>
@@ -17,6 +27,7 @@
 
 #include "ui/jobs/search_job.h"
 #include "ui/loaded_model.h"
+#include "ui/project/dialog_folders.h"
 
 class QCloseEvent;
 class QComboBox;
@@ -38,6 +49,7 @@ class PlanPanel;
 class PlaneEditPanel;
 class ProjectSession;
 class SearchPanel;
+class SupportRegrowth;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -52,6 +64,19 @@ class MainWindow : public QMainWindow {
   void openFile(const QString& path);
   // Starts building a sample (a core::samples id); the up direction becomes the sample's (+Z).
   void openSample(const QString& id);
+  // The same from the File menu: asks first when a search runs or there are unsaved changes.
+  void openSampleFromUser(const QString& id);
+  // File > Open plan with `directory` chosen: asks first like openSampleFromUser, then openPlan().
+  void openPlanFromUser(const QString& directory);
+  // Stops the running search and drops its result (another model is about to replace the one searched):
+  // the Search panel then shows nothing of it.
+  void abandonSearch();
+  // Where the file dialog for `kind` starts: the folder last used for that kind (models where models were
+  // opened from, projects where projects were saved), else the project's folder, else the model's; empty when
+  // none is known (the dialog's own default).
+  [[nodiscard]] QString dialogFolder(FileKind kind) const;
+  // Help > About: a non-modal box with the version.
+  void showAbout();
 
   // The printing (up) direction; a zero or non-finite vector is ignored. Axis directions select the
   // matching entry of the Up box; any other direction adds a "custom" entry.
@@ -86,8 +111,12 @@ class MainWindow : public QMainWindow {
   // Shows a plan made elsewhere (a project's plan rebuilt from its planes) as a new plan.
   void showRebuiltPlan(const SearchRun& run);
 
-  // Writes the plan shown into `directory` (core::savePlan). On failure returns false with a message.
-  bool exportPlan(const QString& directory, QString* error = nullptr);
+  // Writes the plan shown into `directory` (core::savePlan), creating the folder when it does not exist. On
+  // failure returns false with a message; refuses (saying why) while the plan's supports are being grown. A
+  // plan that needs supports but has none (they could not be grown) is written with `warning` saying so.
+  bool exportPlan(const QString& directory, QString* error = nullptr, QString* warning = nullptr);
+  // Supports are being grown for the plan shown (SupportRegrowth).
+  [[nodiscard]] bool isGrowingSupports() const;
   // Saves the 3D view as shown (its framebuffer, at its size) to `path`, PNG or JPEG by the extension
   // (savePicture). On failure returns false with the message, also shown in the status bar.
   bool exportScreenshot(const QString& path, QString* error = nullptr);
@@ -117,10 +146,15 @@ class MainWindow : public QMainWindow {
   void upDirectionChanged();
   // The plan shown was dropped (a new model or up direction, or View > Show the model).
   void planCleared();
+  // Supports grown later for the plan shown were attached to it (plan()->supports), or could not be grown
+  // (plan()->supportsNote says why).
+  void supportsRegrown();
 
  protected:
   // Asks about unsaved project changes first (ProjectSession::confirmClose); saves the window's layout.
   void closeEvent(QCloseEvent* event) override;
+  // The Up box takes no wheel event unless it has the focus: scrolling over the toolbar must not drop a plan.
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void buildMenus();
@@ -150,6 +184,13 @@ class MainWindow : public QMainWindow {
   void showModel(const LoadedModel& model);
   void reportLoadError(const QString& source, const QString& headline, const QString& detail);
   void onUpChanged();
+  // The user picked entry `index` of the Up box: applied at once, or after asking when it would drop work.
+  void onUpBoxChosen(int index);
+  // Selects the Up box entry for `unit` (adding a custom one) without applying it; returns its index.
+  int selectUpEntry(const core::Vec3& unit);
+  void regrowSupportsIfMissing();
+  void onSupportsRegrown(const std::shared_ptr<const core::Decomposition>& plan,
+                         const std::shared_ptr<const std::vector<core::SupportSet>>& supports, const QString& note);
   void updateModelStatus();
   void setBusy(bool busy);
 
@@ -162,7 +203,6 @@ class MainWindow : public QMainWindow {
   QLabel* m_riskyLabel = nullptr;
   QLabel* m_busyLabel = nullptr;
   QProgressBar* m_busyBar = nullptr;
-  QString m_lastDirectory;
   QString m_pendingName;
   std::optional<LoadedModel> m_model;
 
@@ -188,6 +228,9 @@ class MainWindow : public QMainWindow {
   PlanEditor* m_planEditor = nullptr;
   PlaneEditPanel* m_planeEditPanel = nullptr;
   ProjectSession* m_project = nullptr;
+  SupportRegrowth* m_regrowth = nullptr;
+  int m_upIndex = -1;               // the Up box entry applied (the box shows another one while asking)
+  bool m_dropSearchResult = false;  // abandonSearch(): the running search's result is not shown
 };
 
 }  // namespace multidir::ui

@@ -149,19 +149,27 @@ bool installTranslations(const QString& language) {
   // The translators live as long as the application; a second call replaces the first's.
   static std::unique_ptr<QTranslator> studio;
   static std::unique_ptr<QTranslator> qtBase;
+  // Numbers follow the language chosen ("1.507,2" in German); English keeps the locale the studio started with.
+  static const QLocale startLocale;
   for (auto* translator : {&studio, &qtBase}) {
     if (*translator) QCoreApplication::removeTranslator(translator->get());
     translator->reset();
   }
-  if (language == QLatin1String("en")) return true;
+  if (language == QLatin1String("en")) {
+    QLocale::setDefault(startLocale);
+    return true;
+  }
   if (!studioLanguages().contains(language)) return false;
   auto own = std::make_unique<QTranslator>();
   if (!own->load(QStringLiteral(":/i18n/multidir_%1.qm").arg(language))) return false;
   QCoreApplication::installTranslator(own.get());
   studio = std::move(own);
-  // Qt's own texts (dialog buttons, context menus), when the system has them.
+  QLocale::setDefault(QLocale(language));
+  // Qt's own texts (standard buttons, file dialogs, context menus): embedded when the build had them, else
+  // the system's.
   auto qt = std::make_unique<QTranslator>();
-  if (qt->load(QLocale(language), QStringLiteral("qtbase"), QStringLiteral("_"),
+  if (qt->load(QStringLiteral(":/i18n/qtbase_%1.qm").arg(language)) ||
+      qt->load(QLocale(language), QStringLiteral("qtbase"), QStringLiteral("_"),
                QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
     QCoreApplication::installTranslator(qt.get());
     qtBase = std::move(qt);
@@ -174,7 +182,7 @@ void startStudio(MainWindow& window, const StudioOptions& options) {
   if (options.screenshotPath.isEmpty()) window.projectSession()->offerRecovery();
   if (options.up) window.setUpDirection(*options.up);
   if (options.alphaMaxDegrees >= 0.0) {
-    window.overhangPanel()->setAlphaMaxDegrees(static_cast<int>(std::lround(options.alphaMaxDegrees)));
+    window.overhangPanel()->setAlphaMaxDegrees(options.alphaMaxDegrees);
   }
   if (options.runSearch) {
     // Once, for the first model shown.

@@ -48,8 +48,9 @@ QStringList studioLanguages();
 // "language" when it is, else the system locale's ("de_AT" -> "de", "zh_CN"/"zh" -> "zh_CN"), else "en".
 QString chooseLanguage(const QString& requested);
 
-// Installs the translations (embedded .qm files) for `language` into the application, replacing ones
-// installed earlier; "en" installs none. Returns false when `language` has no translation. Call before
+// Installs the translations (embedded .qm files: the studio's and Qt's own, qtbase) for `language` into the
+// application, replacing ones installed earlier, and makes the language's locale the default for numbers;
+// "en" installs none and restores the locale the studio started with. Returns false when `language` has no translation. Call before
 // creating windows: texts are translated when widgets are built.
 bool installTranslations(const QString& language);
 

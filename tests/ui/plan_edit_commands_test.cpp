@@ -36,7 +36,8 @@ TEST(PlanEditCommands, UndoAndRedoApplyTheExactStatesBeforeAndAfter) {
   EXPECT_EQ(target.applied[1].selectedPlane, -1);
   EXPECT_TRUE(samePlanes(target.applied[2].planes, after.planes));
   EXPECT_EQ(target.applied[2].selectedPlane, 1);
-  EXPECT_EQ(stack.undoText(), QStringLiteral("Move plane 2"));
+  // Plane 1 (0-based) of two is the lower one, the first the machine prints on: plane 1 in printing order.
+  EXPECT_EQ(stack.undoText(), QStringLiteral("Move plane 1"));
 }
 
 TEST(PlanEditCommands, MovesOfOnePlaneInOneDragMergeIntoOneStep) {
@@ -75,11 +76,12 @@ TEST(PlanEditCommands, ADragBackToWhereItStartedLeavesNoStep) {
   EXPECT_EQ(stack.undoText(), QStringLiteral("Add plane 1"));
 }
 
-TEST(PlanEditCommands, DeleteNamesThePlaneCountingFromOne) {
+TEST(PlanEditCommands, DeleteNamesThePlaneByItsNumberInPrintingOrder) {
   RecordingTarget target;
   QUndoStack stack;
+  // The last plane cut (z = 2) is the lowest: the first one printed on.
   stack.push(new DeletePlaneCommand(target, withOffsets({10.0, 5.0, 2.0}, 2), withOffsets({10.0, 5.0}, 1), 2));
-  EXPECT_EQ(stack.undoText(), QStringLiteral("Delete plane 3"));
+  EXPECT_EQ(stack.undoText(), QStringLiteral("Delete plane 1"));
   stack.undo();
   EXPECT_EQ(target.applied.back().planes.size(), 3u);
   EXPECT_EQ(target.applied.back().selectedPlane, 2);

@@ -28,21 +28,22 @@ core::Error refusalOf(const core::TriangleMesh& model, const core::MachineSpec& 
 TEST(PlanEditRefusal, APlaneThroughThePlatformRegionIsToldToMoveUpOrTiltLess) {
   const core::Error error = refusalOf(tBar(), core::MachineSpec{}, {core::Plane{core::Vec3::UnitX(), 0.0}});
   EXPECT_EQ(refusedPlaneNumber(error), 1);
-  EXPECT_EQ(refusalText(error), QStringLiteral("Plane 1 would cut the platform region: move it up or tilt it less."));
+  EXPECT_EQ(refusalText(error, 1), QStringLiteral("Plane 1 would cut the platform region: move it up or tilt it less."));
 }
 
 TEST(PlanEditRefusal, APlaneLeavingAPieceFloatingSaysSo) {
   const core::Error error =
       refusalOf(test::makeHook(10), core::MachineSpec{}, {core::Plane{core::Vec3::UnitZ(), 40.0}});
-  EXPECT_TRUE(refusalText(error).startsWith(QStringLiteral("Plane 1 would leave a piece below it")))
-      << refusalText(error).toStdString();
+  EXPECT_TRUE(refusalText(error, 1).startsWith(QStringLiteral("Plane 1 would leave a piece below it")))
+      << refusalText(error, 1).toStdString();
 }
 
 TEST(PlanEditRefusal, APlaneAboveWhatIsLeftCutsNothing) {
   const core::Error error = refusalOf(tBar(), narrowPlatform(),
                                       {core::Plane{core::Vec3::UnitX(), 5.0}, core::Plane{core::Vec3::UnitX(), 100.0}});
   EXPECT_EQ(refusedPlaneNumber(error), 2);
-  EXPECT_EQ(refusalText(error), QStringLiteral("Plane 2 would cut nothing off: move it into the part it cuts."));
+  // Core's second plane cut is the lower of the two: plane 1 in printing order, as the Edit plan table says.
+  EXPECT_EQ(refusalText(error, 2), QStringLiteral("Plane 1 would cut nothing off: move it into the part it cuts."));
 }
 
 TEST(PlanEditRefusal, ADirectionTheMachineCannotPrintAlongIsNamed) {
@@ -50,15 +51,15 @@ TEST(PlanEditRefusal, ADirectionTheMachineCannotPrintAlongIsNamed) {
   rotary.kind = core::MachineKind::RotaryPlatform;
   rotary.rotationAxis = core::Vec3::UnitX();
   const core::Error error = refusalOf(tBar(), rotary, {core::Plane{core::Vec3::UnitX(), 5.0}});
-  EXPECT_TRUE(refusalText(error).contains(QStringLiteral("cannot print along the normal of plane 1")))
-      << refusalText(error).toStdString();
+  EXPECT_TRUE(refusalText(error, 1).contains(QStringLiteral("cannot print along the normal of plane 1")))
+      << refusalText(error, 1).toStdString();
 }
 
 TEST(PlanEditRefusal, AnErrorNamingNoPlaneKeepsCoresDescription) {
   const core::Error error{core::ErrorCode::TooLarge, "there is not enough memory to rebuild the plan", "plan"};
   EXPECT_EQ(refusedPlaneNumber(error), 0);
-  EXPECT_TRUE(refusalText(error).contains(QStringLiteral("plan: there is not enough memory to rebuild the plan")))
-      << refusalText(error).toStdString();
+  EXPECT_TRUE(refusalText(error, 3).contains(QStringLiteral("plan: there is not enough memory to rebuild the plan")))
+      << refusalText(error, 3).toStdString();
 }
 
 }  // namespace

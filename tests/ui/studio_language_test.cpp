@@ -3,12 +3,19 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QHash>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QStatusBar>
 
 #include "ui/main_window.h"
+#include "ui/panels/overhang_panel.h"
 #include "ui/studio_startup.h"
+#include "ui/studio_test_support.h"
 
 namespace multidir::ui {
 namespace {
@@ -71,6 +78,50 @@ TEST_F(StudioLanguage, SimplifiedChineseHardwareDockAndButtons) {
   EXPECT_EQ(dock->windowTitle(), QStringLiteral("硬件"));
   EXPECT_EQ(dock->findChild<QPushButton*>(QStringLiteral("connectButton"))->text(), QStringLiteral("连接"));
   EXPECT_EQ(dock->findChild<QPushButton*>(QStringLiteral("estopButton"))->text(), QStringLiteral("急停"));
+}
+
+// Qt's own texts (standard buttons of message boxes, file dialogs) follow the language too.
+TEST_F(StudioLanguage, QtsOwnButtonsAreGermanAndChineseToo) {
+  startWith(QStringLiteral("de"));
+  {
+    QMessageBox box(QMessageBox::Warning, QString(), QString(), QMessageBox::Save | QMessageBox::Cancel);
+    EXPECT_EQ(box.button(QMessageBox::Cancel)->text(), QStringLiteral("Abbrechen"));
+    EXPECT_EQ(box.button(QMessageBox::Save)->text(), QStringLiteral("Speichern"));
+  }
+  startWith(QStringLiteral("zh_CN"));
+  QMessageBox box(QMessageBox::Warning, QString(), QString(), QMessageBox::Cancel);
+  EXPECT_EQ(box.button(QMessageBox::Cancel)->text(), QStringLiteral("取消"));
+}
+
+TEST_F(StudioLanguage, GermanNumbersUseTheDecimalCommaAndThePointBetweenThousands) {
+  startWith(QStringLiteral("de"));
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(test::openSample(window, QStringLiteral("snowman")));
+  const QString area = window.overhangPanel()->riskyAreaText();
+  EXPECT_TRUE(QRegularExpression(QStringLiteral("^\\d{1,3}(\\.\\d{3})*,\\d mm²$")).match(area).hasMatch())
+      << area.toStdString();
+}
+
+// Alt+letter reaches one entry per menu: no two entries of a menu (or two menus) share a mnemonic.
+TEST_F(StudioLanguage, EnglishMenusHaveNoMnemonicTwice) {
+  startWith(QStringLiteral("en"));
+  MainWindow window;
+  auto collisions = [](const QList<QAction*>& actions) {
+    QStringList found;
+    QHash<QChar, QString> taken;
+    static const QRegularExpression mnemonic(QStringLiteral("&([^&])"));
+    for (const QAction* action : actions) {
+      const QRegularExpressionMatch match = mnemonic.match(action->text());
+      if (!match.hasMatch()) continue;
+      const QChar key = match.captured(1).front().toLower();
+      if (taken.contains(key)) found << taken.value(key) + QStringLiteral(" / ") + action->text();
+      taken.insert(key, action->text());
+    }
+    return found;
+  };
+  QStringList all = collisions(window.menuBar()->actions());
+  for (const QMenu* menu : window.menuBar()->findChildren<QMenu*>()) all << collisions(menu->actions());
+  EXPECT_TRUE(all.isEmpty()) << all.join(QStringLiteral("; ")).toStdString();
 }
 
 TEST_F(StudioLanguage, EnglishInstallsNoTranslation) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLabel>
@@ -16,6 +17,7 @@
 
 #include "support/test_models.h"
 #include "ui/edit/plan_editor.h"
+#include "ui/edit/plane_numbering.h"
 #include "ui/main_window.h"
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/plan_panel.h"
@@ -62,10 +64,22 @@ void expectSamePlanes(const std::vector<core::Plane>& actual, const std::vector<
   }
 }
 
-// Selects plane `row` in the Edit plan panel and presses its offset slider, as the mouse does when a drag
+// The number the studio shows for plane `plane` (0-based, clipping order) of the plan being edited: its
+// number in printing order.
+int numberOf(const MainWindow& window, int plane) {
+  return planeNumber(plane, static_cast<int>(window.planEditor()->state().planes.size()));
+}
+
+// Selects plane `plane` (0-based, clipping order) in the Edit plan table, which lists planes in printing order.
+void selectPlaneInTable(const MainWindow& window, int plane) {
+  window.planeEditPanel()->planeTable()->selectRow(numberOf(window, plane) - 1);
+}
+
+// Selects plane `plane` in the Edit plan panel and presses its offset slider, as the mouse does when a drag
 // begins; setSliderDown(false) releases it.
-QSlider* pressOffsetSlider(PlaneEditPanel& panel, int row) {
-  panel.planeTable()->selectRow(row);
+QSlider* pressOffsetSlider(const MainWindow& window, int plane) {
+  PlaneEditPanel& panel = *window.planeEditPanel();
+  selectPlaneInTable(window, plane);
   QSlider* slider = panel.offsetSlider();
   slider->setSliderDown(true);
   return slider;
@@ -82,7 +96,7 @@ TEST(StudioPlanEdit, MovingAPlaneChangesJgAndTheRegionsAndUndoRestoresTheExactPl
   PlanEditor& editor = *window.planEditor();
   PlaneEditPanel& panel = *window.planeEditPanel();
 
-  panel.planeTable()->selectRow(0);
+  selectPlaneInTable(window, 0);
   ASSERT_EQ(editor.selectedPlane(), 0);
   const QString jgBefore = panel.jgText();
   panel.offsetBox()->setValue(searched->clippingPlanes[0].offset + 5.0);  // typed: one edit
@@ -97,7 +111,7 @@ TEST(StudioPlanEdit, MovingAPlaneChangesJgAndTheRegionsAndUndoRestoresTheExactPl
   EXPECT_NE(moved->regions[cutByFirst].mesh.triangles.size(), searched->regions[cutByFirst].mesh.triangles.size());
   EXPECT_NE(panel.jgText(), jgBefore);
   EXPECT_EQ(window.undoStack()->count(), 1);
-  EXPECT_EQ(action(window, "undo")->text(), QStringLiteral("&Undo Move plane 1"));
+  EXPECT_EQ(action(window, "undo")->text(), QStringLiteral("&Undo Move plane %1").arg(numberOf(window, 0)));
 
   action(window, "undo")->trigger();
   ASSERT_TRUE(settle(editor));
@@ -171,14 +185,15 @@ TEST(StudioPlanEdit, DeletingAPlaneGivesOneRegionFewerAndUndoBringsItBack) {
   showSearchedSnowman(window);
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlaneEditPanel& panel = *window.planeEditPanel();
-  panel.planeTable()->selectRow(1);
+  selectPlaneInTable(window, 1);
   panel.findChild<QPushButton*>(QStringLiteral("deletePlane"))->click();
   ASSERT_TRUE(settle(*window.planEditor()));
 
   EXPECT_EQ(shownPlan(window)->regions.size(), searched->regions.size() - 1);
   EXPECT_EQ(window.planPanel()->regionTable()->rowCount(), static_cast<int>(searched->regions.size()) - 1);
   EXPECT_EQ(panel.planeTable()->rowCount(), static_cast<int>(searched->clippingPlanes.size()) - 1);
-  EXPECT_EQ(action(window, "undo")->text(), QStringLiteral("&Undo Delete plane 2"));
+  EXPECT_EQ(action(window, "undo")->text(),
+            QStringLiteral("&Undo Delete plane %1").arg(planeNumber(1, static_cast<int>(searched->clippingPlanes.size()))));
 
   window.undoStack()->undo();
   ASSERT_TRUE(settle(*window.planEditor()));
@@ -188,12 +203,46 @@ TEST(StudioPlanEdit, DeletingAPlaneGivesOneRegionFewerAndUndoBringsItBack) {
   EXPECT_EQ(window.planEditor()->selectedPlane(), 1);
 }
 
+TEST(StudioPlanEdit, DeleteKeyInThePlanesTableDeletesTheSelectedPlane) {
+  MainWindow window;
+  showSearchedSnowman(window);
+  const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
+  PlaneEditPanel& panel = *window.planeEditPanel();
+  window.show();  // key events go to a shown window
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  selectPlaneInTable(window, 1);
+  panel.planeTable()->setFocus();
+  QTest::keyClick(panel.planeTable(), Qt::Key_Delete);
+  ASSERT_TRUE(settle(*window.planEditor()));
+  EXPECT_EQ(shownPlan(window)->clippingPlanes.size(), searched->clippingPlanes.size() - 1);
+  EXPECT_EQ(panel.planeTable()->rowCount(), static_cast<int>(searched->clippingPlanes.size()) - 1);
+  EXPECT_EQ(window.undoStack()->count(), 1);
+}
+
+TEST(StudioPlanEdit, DoubleClickOnAPlanesOffsetPutsTheCursorInItsOffset) {
+  MainWindow window;
+  showSearchedSnowman(window);
+  PlaneEditPanel& panel = *window.planeEditPanel();
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  window.findChild<QDockWidget*>(QStringLiteral("editPlanDock"))->raise();
+  QTableWidget* table = panel.planeTable();
+  table->clearSelection();
+  QTest::qWait(20);
+  const QRect cell = table->visualRect(table->model()->index(numberOf(window, 1) - 1, 2));
+  ASSERT_FALSE(cell.isEmpty());
+  QTest::mouseDClick(table->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+  EXPECT_EQ(window.planEditor()->selectedPlane(), 1);
+  ASSERT_TRUE(test::waitUntil([&panel] { return panel.offsetBox()->hasFocus(); }, 2000))
+      << "the double-click did not start editing the plane's offset";
+}
+
 TEST(StudioPlanEdit, AddingAPlaneGivesOneRegionMore) {
   MainWindow window;
   showSearchedSnowman(window);
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlaneEditPanel& panel = *window.planeEditPanel();
-  panel.planeTable()->selectRow(0);
+  selectPlaneInTable(window, 0);
   panel.findChild<QPushButton*>(QStringLiteral("addPlane"))->click();
   ASSERT_TRUE(settle(*window.planEditor()));
 
@@ -205,7 +254,7 @@ TEST(StudioPlanEdit, AddingAPlaneGivesOneRegionMore) {
   const core::Plane& added = shownPlan(window)->clippingPlanes[0];
   EXPECT_EQ(added.normal, searched->clippingPlanes[0].normal);
   EXPECT_GT(added.offset, searched->clippingPlanes[0].offset);
-  EXPECT_EQ(action(window, "undo")->text(), QStringLiteral("&Undo Add plane 1"));
+  EXPECT_EQ(action(window, "undo")->text(), QStringLiteral("&Undo Add plane %1").arg(numberOf(window, 0)));
 }
 
 TEST(StudioPlanEdit, APlaneMovedThroughThePlatformRegionIsRefusedAndNothingChanges) {
@@ -214,7 +263,7 @@ TEST(StudioPlanEdit, APlaneMovedThroughThePlatformRegionIsRefusedAndNothingChang
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlanEditor& editor = *window.planEditor();
   PlaneEditPanel& panel = *window.planeEditPanel();
-  panel.planeTable()->selectRow(0);
+  selectPlaneInTable(window, 0);
   panel.offsetBox()->setValue(searched->clippingPlanes[0].offset - 10.0);
   ASSERT_TRUE(settle(editor));
 
@@ -223,7 +272,7 @@ TEST(StudioPlanEdit, APlaneMovedThroughThePlatformRegionIsRefusedAndNothingChang
   EXPECT_FALSE(action(window, "undo")->isEnabled());
   // Said where the person is looking, naming the plane and what to do, and in the status bar.
   const QString message = panel.refusalText();
-  EXPECT_TRUE(message.contains(QStringLiteral("Plane 1"))) << message.toStdString();
+  EXPECT_TRUE(message.contains(QStringLiteral("Plane %1").arg(numberOf(window, 0)))) << message.toStdString();
   EXPECT_TRUE(message.contains(QStringLiteral("platform region"))) << message.toStdString();
   EXPECT_TRUE(panel.findChild<QWidget*>(QStringLiteral("editRefusal"))->isVisibleTo(&panel));
   EXPECT_EQ(window.statusBar()->currentMessage(), message);
@@ -244,8 +293,7 @@ TEST(StudioPlanEdit, ADragOfSeveralStepsIsOneUndoStep) {
   showSearchedSnowman(window);
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlanEditor& editor = *window.planEditor();
-  PlaneEditPanel& panel = *window.planeEditPanel();
-  QSlider* slider = pressOffsetSlider(panel, 1);
+  QSlider* slider = pressOffsetSlider(window, 1);
   const int start = slider->value();
   ASSERT_LT(start + 60, slider->maximum());
 
@@ -259,7 +307,7 @@ TEST(StudioPlanEdit, ADragOfSeveralStepsIsOneUndoStep) {
   ASSERT_TRUE(settle(editor));
 
   EXPECT_EQ(window.undoStack()->count(), 1);
-  EXPECT_EQ(window.undoStack()->undoText(), QStringLiteral("Move plane 2"));
+  EXPECT_EQ(window.undoStack()->undoText(), QStringLiteral("Move plane %1").arg(numberOf(window, 1)));
   const double dragged = shownPlan(window)->clippingPlanes[1].offset;
   EXPECT_GT(dragged, searched->clippingPlanes[1].offset);
   window.undoStack()->undo();
@@ -273,7 +321,7 @@ TEST(StudioPlanEdit, ADragReleasedWhereCoreRefusesKeepsItsLastAcceptedStep) {
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlanEditor& editor = *window.planEditor();
   PlaneEditPanel& panel = *window.planeEditPanel();
-  QSlider* slider = pressOffsetSlider(panel, 0);
+  QSlider* slider = pressOffsetSlider(window, 0);
   const int start = slider->value();
 
   slider->setValue(start + 20);  // up: accepted
@@ -305,7 +353,7 @@ TEST(StudioPlanEdit, TiltingAPlaneTurnsItAboutItsCutAndIsOneStep) {
   int row = -1;
   double wanted = 0.0;
   for (int r = 0; r < static_cast<int>(searched->clippingPlanes.size()) && row < 0; ++r) {
-    panel.planeTable()->selectRow(r);
+    selectPlaneInTable(window, r);
     const double tilt = panel.tiltBox()->value();
     for (const double delta : {-3.0, 3.0, -1.0, 1.0}) {
       panel.tiltBox()->setValue(tilt + delta);
@@ -324,7 +372,7 @@ TEST(StudioPlanEdit, TiltingAPlaneTurnsItAboutItsCutAndIsOneStep) {
   EXPECT_NEAR(angles.tiltDegrees, wanted, 0.05);
   EXPECT_NEAR(panel.tiltBox()->value(), wanted, 0.05);
   EXPECT_EQ(window.undoStack()->count(), 1) << "refused tilts leave no undo step";
-  EXPECT_EQ(window.undoStack()->undoText(), QStringLiteral("Tilt plane %1").arg(row + 1));
+  EXPECT_EQ(window.undoStack()->undoText(), QStringLiteral("Tilt plane %1").arg(numberOf(window, row)));
   // It turned about the centre of its cut, which therefore stays on it.
   EXPECT_LT(std::abs(tilted.offset - searched->clippingPlanes[static_cast<std::size_t>(row)].offset), 5.0);
 }
@@ -339,7 +387,7 @@ TEST(StudioPlanEdit, OnARotaryMachineAPlaneTurnsInWholeStepsOfThePlatform) {
   PlaneEditPanel& panel = *window.planeEditPanel();
   EXPECT_TRUE(panel.rotaryBox()->isVisibleTo(&panel));
   EXPECT_FALSE(panel.tiltBox()->isVisibleTo(&panel));
-  panel.planeTable()->selectRow(0);
+  selectPlaneInTable(window, 0);
   const double angle = panel.rotaryBox()->value();
   // Typed between two steps of 1°: the plane turns to the nearest step.
   panel.rotaryBox()->setValue(angle > 0.0 ? angle - 4.6 : angle + 4.6);
@@ -351,7 +399,7 @@ TEST(StudioPlanEdit, OnARotaryMachineAPlaneTurnsInWholeStepsOfThePlatform) {
   EXPECT_TRUE(core::isRealizable(machine, normal));
   EXPECT_NEAR(core::machineAnglesFor(machine, normal).rotaryDegrees, angle > 0.0 ? angle - 5.0 : angle + 5.0, 1e-9);
   EXPECT_NEAR(panel.rotaryBox()->value(), angle > 0.0 ? angle - 5.0 : angle + 5.0, 1e-9);
-  EXPECT_EQ(window.undoStack()->undoText(), QStringLiteral("Tilt plane 1"));
+  EXPECT_EQ(window.undoStack()->undoText(), QStringLiteral("Tilt plane %1").arg(numberOf(window, 0)));
 }
 
 TEST(StudioPlanEdit, OnlyTheLatestOfManyQuickEditsIsEvaluatedAndShown) {
@@ -373,7 +421,7 @@ TEST(StudioPlanEdit, SelectingAPlaneHighlightsItsDiscInTheView) {
   MainWindow window;
   showSearchedSnowman(window);
   EXPECT_EQ(window.viewer()->selectedPlane(), -1);
-  window.planeEditPanel()->planeTable()->selectRow(1);
+  selectPlaneInTable(window, 1);
   EXPECT_EQ(window.planEditor()->selectedPlane(), 1);
   EXPECT_EQ(window.viewer()->selectedPlane(), 1);
   // Shown although the clipping planes are hidden.

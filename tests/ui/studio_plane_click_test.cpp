@@ -12,6 +12,7 @@
 
 #include "multidir/core/common/units.h"
 #include "ui/edit/plan_editor.h"
+#include "ui/edit/plane_numbering.h"
 #include "ui/main_window.h"
 #include "ui/panels/plane_edit_panel.h"
 #include "ui/studio_test_support.h"
@@ -45,10 +46,12 @@ QPoint onScreen(MeshViewerWidget* viewer, const PlaneDisc& disc) {
   return position ? position->toPoint() : QPoint();
 }
 
-// The row selected in the Edit plan panel's plane list, -1 for none.
+// The plane (0-based, clipping order) selected in the Edit plan panel's plane list, -1 for none. The list
+// shows planes in printing order: row r is plane number r + 1.
 int panelSelection(const MainWindow& window) {
   const QList<QTableWidgetItem*> selected = window.planeEditPanel()->planeTable()->selectedItems();
-  return selected.isEmpty() ? -1 : selected.front()->row();
+  const int count = static_cast<int>(window.planEditor()->state().planes.size());
+  return selected.isEmpty() ? -1 : planeIndexOfNumber(selected.front()->row() + 1, count);
 }
 
 // A point of the view where `disc` of plane `plane` is the disc in front: its centre, or else a point of

@@ -41,14 +41,8 @@ namespace {
 using test::kLoadTimeoutMs;
 using test::kSearchTimeoutMs;
 using test::quickSearchOptions;
-
-// Writes the T-bar (a stem with two overhanging wings, +Z up) as an OFF file.
-QString writeTBar(const QTemporaryDir& dir, const QString& name) {
-  const QString path = dir.filePath(name);
-  const core::Status saved = core::saveMesh(test::makeTBar(10, 30, 80, 10, 10), path.toStdString());
-  EXPECT_TRUE(saved.ok()) << saved.error().describe();
-  return path;
-}
+using test::writeTBar;
+using test::dropFile;
 
 // Empty settings, recent files and autosaves before and after each test: they outlive the test process.
 class StudioProject : public ::testing::Test {
@@ -59,13 +53,7 @@ class StudioProject : public ::testing::Test {
   }
   void TearDown() override { reset(); }
 
-  static void reset() {
-    QSettings settings;
-    settings.remove(QStringLiteral("recentFiles"));
-    settings.remove(QStringLiteral("window"));
-    settings.remove(QStringLiteral("autosave"));
-    for (const QString& orphan : Autosave::orphans()) Autosave::removeOrphan(orphan);
-  }
+  static void reset() { test::resetStudioSettings(); }
 
   static void show(MainWindow& window) {
     window.resize(1000, 700);
@@ -85,13 +73,8 @@ class StudioProject : public ::testing::Test {
     ASSERT_GE(window.plan()->plan->clippingPlanes.size(), 1u) << "a plan without planes proves nothing here";
   }
 
-  // Opens a project (or an autosave) and waits until its plan is shown.
   static void waitOpened(ProjectSession* session, const std::function<bool()>& start) {
-    QSignalSpy opened(session, &ProjectSession::projectOpened);
-    QSignalSpy failed(session, &ProjectSession::projectOpenFailed);
-    ASSERT_TRUE(start());
-    ASSERT_TRUE(opened.wait(kSearchTimeoutMs))
-        << (failed.isEmpty() ? std::string("no answer") : failed.front().front().toString().toStdString());
+    test::waitProjectOpened(session, start);
   }
 
   static void expectSamePlan(const MainWindow& reopened, const SearchRun& saved) {
@@ -367,17 +350,6 @@ TEST_F(StudioProject, RecentFilesListTheLatestFirstAndDropOnesThatAreGone) {
 }
 
 // Drags `path` over the window and drops it there, as a file manager would.
-void dropFile(MainWindow& window, const QString& path) {
-  QMimeData data;
-  data.setUrls({QUrl::fromLocalFile(path)});
-  const QPoint centre = window.rect().center();
-  QDragEnterEvent enter(centre, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(&window, &enter);
-  EXPECT_TRUE(enter.isAccepted());
-  QDropEvent drop(centre, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(&window, &drop);
-}
-
 TEST_F(StudioProject, DroppedMeshFileIsOpened) {
   const QString model = writeTBar(m_dir, QStringLiteral("dropped.off"));
   MainWindow window;

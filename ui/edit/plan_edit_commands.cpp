@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "ui/edit/plane_numbering.h"
+
 namespace multidir::ui {
 
 PlanEditCommand::PlanEditCommand(PlanEditTarget& target, PlanEditState before, PlanEditState after, const QString& text)
@@ -29,20 +31,28 @@ bool DraggablePlaneCommand::mergeWith(const QUndoCommand* other) {
   return true;
 }
 
+// The texts name the plane by its number in printing order (plane_numbering.h), counted in the plan after a
+// move, tilt or addition and before a deletion: as the Edit plan table showed it when the edit was made.
 MovePlaneCommand::MovePlaneCommand(PlanEditTarget& target, PlanEditState before, PlanEditState after, int plane,
                                    int dragSession)
-    : DraggablePlaneCommand(target, std::move(before), std::move(after), tr("Move plane %1").arg(plane + 1), kId, plane,
-                            dragSession) {}
+    : DraggablePlaneCommand(target, std::move(before), std::move(after), QString(), kId, plane, dragSession) {
+  setText(tr("Move plane %1").arg(planeNumber(plane, static_cast<int>(m_after.planes.size()))));
+}
 
 TiltPlaneCommand::TiltPlaneCommand(PlanEditTarget& target, PlanEditState before, PlanEditState after, int plane,
                                    int dragSession)
-    : DraggablePlaneCommand(target, std::move(before), std::move(after), tr("Tilt plane %1").arg(plane + 1), kId, plane,
-                            dragSession) {}
+    : DraggablePlaneCommand(target, std::move(before), std::move(after), QString(), kId, plane, dragSession) {
+  setText(tr("Tilt plane %1").arg(planeNumber(plane, static_cast<int>(m_after.planes.size()))));
+}
 
 AddPlaneCommand::AddPlaneCommand(PlanEditTarget& target, PlanEditState before, PlanEditState after, int plane)
-    : PlanEditCommand(target, std::move(before), std::move(after), tr("Add plane %1").arg(plane + 1)) {}
+    : PlanEditCommand(target, std::move(before), std::move(after), QString()) {
+  setText(tr("Add plane %1").arg(planeNumber(plane, static_cast<int>(m_after.planes.size()))));
+}
 
 DeletePlaneCommand::DeletePlaneCommand(PlanEditTarget& target, PlanEditState before, PlanEditState after, int plane)
-    : PlanEditCommand(target, std::move(before), std::move(after), tr("Delete plane %1").arg(plane + 1)) {}
+    : PlanEditCommand(target, std::move(before), std::move(after), QString()) {
+  setText(tr("Delete plane %1").arg(planeNumber(plane, static_cast<int>(m_before.planes.size()))));
+}
 
 }  // namespace multidir::ui

@@ -59,7 +59,7 @@ class DraggablePlaneCommand : public PlanEditCommand {
   int m_dragSession;
 };
 
-// A new offset for plane `plane` (0-based; the text counts from 1).
+// A new offset for plane `plane` (0-based, clipping order; the text names it by its printing-order number).
 class MovePlaneCommand : public DraggablePlaneCommand {
   Q_DECLARE_TR_FUNCTIONS(MovePlaneCommand)
 

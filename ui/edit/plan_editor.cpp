@@ -214,7 +214,8 @@ void PlanEditor::onRefused(quint64 ticket, const core::Error& error) {
   if (!m_awaited || m_awaited->ticket != ticket) return;
   const Awaited awaited = std::move(*m_awaited);
   m_awaited.reset();
-  setRefusal(refusalText(error), QString::fromStdString(error.describe()));
+  setRefusal(refusalText(error, static_cast<int>(awaited.state.planes.size())),
+             QString::fromStdString(error.describe()));
   if (!awaited.edit) {
     // A state undo or redo reached could not be rebuilt: keep showing (and offering) the plan shown.
     setDesired(m_shown);
@@ -231,6 +232,15 @@ void PlanEditor::onRefused(quint64 ticket, const core::Error& error) {
       evaluate(Awaited{0, m_stackState, std::nullopt, -1, 0});
     }
   }
+}
+
+void PlanEditor::adoptSupports(const std::shared_ptr<const core::Decomposition>& plan,
+                               const std::shared_ptr<const std::vector<core::SupportSet>>& supports,
+                               const QString& note) {
+  if (!m_run || m_run->plan != plan) return;
+  m_run->supports = supports;
+  m_run->supportsNote = note;
+  remember(m_shown.planes, EvaluatedPlan{plan, supports, note});
 }
 
 void PlanEditor::show(const PlanEditState& state, const EvaluatedPlan& plan) {

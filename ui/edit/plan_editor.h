@@ -48,6 +48,10 @@ class PlanEditor : public QObject, public PlanEditTarget {
   void setPlan(std::shared_ptr<const core::TriangleMesh> model, const SearchRun& run);
   // No plan: nothing to edit; clears the undo stack.
   void clear();
+  // Supports grown later for the plan shown (MainWindow regrows them for a plan opened or recovered without
+  // them): kept with it, also for undo and redo. Ignored when `plan` is no longer the one shown.
+  void adoptSupports(const std::shared_ptr<const core::Decomposition>& plan,
+                     const std::shared_ptr<const std::vector<core::SupportSet>>& supports, const QString& note);
 
   [[nodiscard]] bool hasPlan() const { return m_run.has_value(); }
   // There is a plan and its model, so planes can be changed.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "ui/edit/plane_numbering.h"
 #include "ui/error_text.h"
 
 namespace multidir::ui {
@@ -28,8 +29,11 @@ int refusedPlaneNumber(const core::Error& error) {
   }
 }
 
-QString refusalText(const core::Error& error) {
-  const int plane = refusedPlaneNumber(error);
+QString refusalText(const core::Error& error, int planeCount) {
+  const int clippingNumber = refusedPlaneNumber(error);
+  const int plane = clippingNumber > 0 && clippingNumber <= planeCount
+                        ? planeNumber(clippingNumber - 1, planeCount)
+                        : clippingNumber;
   if (plane == 0 || error.code != core::ErrorCode::InvalidParameter) {
     return PlanEditRefusal::tr("The edit was not applied: %1 (%2)")
         .arg(errorHeadline(error.code), QString::fromStdString(error.describe()));

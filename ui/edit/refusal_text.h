@@ -8,10 +8,12 @@
 
 namespace multidir::ui {
 
-// The plane core names (1-based, as the editor counts them); 0 when it names none.
+// The plane core names (1-based, in clipping order as core counts them); 0 when it names none.
 [[nodiscard]] int refusedPlaneNumber(const core::Error& error);
 
-// "Plane 2 would cut the platform region: move it up or tilt it less." and the like.
-[[nodiscard]] QString refusalText(const core::Error& error);
+// "Plane 2 would cut the platform region: move it up or tilt it less." and the like, for a plan of
+// `planeCount` planes: the plane is named by its number in printing order (ui/edit/plane_numbering.h), as the
+// Edit plan table shows it.
+[[nodiscard]] QString refusalText(const core::Error& error, int planeCount);
 
 }  // namespace multidir::ui

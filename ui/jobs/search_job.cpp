@@ -70,7 +70,9 @@ bool SearchJob::start(std::shared_ptr<const core::TriangleMesh> model, const cor
     shared->fractionChanged = true;
     post();
   };
-  m_job = core::JobContext([report](double fraction, const std::string& phase) { report(kSearchShare * fraction, phase); });
+  // The search's own phases ("search done" even when cancelled) say less than its read-out
+  // (SearchProgress): only the phases after it are named.
+  m_job = core::JobContext([report](double fraction, const std::string&) { report(kSearchShare * fraction, {}); });
   m_supportsJob = core::JobContext([report](double fraction, const std::string& phase) {
     report(kSearchShare + (1.0 - kSearchShare) * fraction, phase);
   });

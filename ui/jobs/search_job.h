@@ -66,7 +66,7 @@ class SearchJob : public QObject {
  signals:
   // The search's latest report (level, beams alive, best J_G, candidates, axis).
   void progressed(const multidir::core::SearchProgress& progress);
-  // Fraction done in [0, 1] and the phase core names.
+  // Fraction done in [0, 1] and the phase after the search itself ("growing supports"); empty during it.
   void fractionChanged(double fraction, const QString& phase);
   // The plan (complete, or the best so far when cancelled).
   void finished(const multidir::ui::SearchRun& run);

@@ -11,9 +11,9 @@ namespace multidir::ui {
 
 // The notes keep SearchJob's translation context, where they were first written and translated.
 GrownSupports growSupports(const core::TriangleMesh& model, const core::Decomposition& plan, core::MachineSpec machine,
-                           core::JobContext& job, const std::string& phase) {
+                           core::JobContext& job, const std::string& phase, bool growForCancelledPlan) {
   GrownSupports grown;
-  if (plan.cancelled || !(plan.jgAfterMm2 > 0.0)) return grown;
+  if ((plan.cancelled && !growForCancelledPlan) || !(plan.jgAfterMm2 > 0.0)) return grown;
   if (machine.kind == core::MachineKind::RotaryPlatform) machine.rotationAxis = plan.rotationAxis;
   job.setProgress(0.0, phase);
   try {

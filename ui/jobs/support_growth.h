@@ -20,11 +20,12 @@ struct GrownSupports {
   QString note;  // translated: why there are none although the plan needs them; empty otherwise
 };
 
-// Supports for a complete plan that still has risky area (J_G > 0); nothing for a cancelled or support-free
-// plan. On a 4-DOF machine they stand on the plan's rotation axis, which an axis search may have chosen
+// Supports for a complete plan that still has risky area (J_G > 0); nothing for a support-free plan, nor for
+// a cancelled search's plan unless `growForCancelledPlan` (the plan is shown and exported all the same, so it
+// gets them once the search has ended: SupportRegrowth). On a 4-DOF machine they stand on the plan's rotation axis, which an axis search may have chosen
 // instead of `machine`'s. Reports `phase` through `job` at the start and the end; cancelling `job` stops
 // them, with a note saying so. Never throws; may run on any thread.
 GrownSupports growSupports(const core::TriangleMesh& model, const core::Decomposition& plan, core::MachineSpec machine,
-                           core::JobContext& job, const std::string& phase = {});
+                           core::JobContext& job, const std::string& phase = {}, bool growForCancelledPlan = false);
 
 }  // namespace multidir::ui

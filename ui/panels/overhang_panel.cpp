@@ -5,7 +5,9 @@
 #include <QLabel>
 #include <QLocale>
 #include <QSlider>
-#include <QSpinBox>
+#include <QDoubleSpinBox>
+#include <QSignalBlocker>
+#include <cmath>
 #include <QVBoxLayout>
 
 #include "multidir/core/common/units.h"
@@ -17,22 +19,27 @@ OverhangPanel::OverhangPanel(QWidget* parent) : QWidget(parent) {
   setObjectName(QStringLiteral("overhangPanel"));
   m_slider = new QSlider(Qt::Horizontal, this);
   m_slider->setObjectName(QStringLiteral("alphaSlider"));
-  m_spin = new QSpinBox(this);
+  m_spin = new QDoubleSpinBox(this);
   m_spin->setObjectName(QStringLiteral("alphaSpin"));
-  // alpha_max = 90 degrees would call no face risky at all, which the analysis rejects.
+  // alpha_max = 90 degrees would call no face risky at all, which the analysis rejects. The spin box has
+  // the Search panel's precision (one value, shown in both); the slider moves in whole degrees.
   m_slider->setRange(0, 89);
-  m_spin->setRange(0, 89);
+  m_spin->setRange(0.0, 89.0);
+  m_spin->setDecimals(1);
   m_spin->setSuffix(tr("°"));
-  const int initial = static_cast<int>(core::kDefaultAlphaMaxDegrees);
-  m_slider->setValue(initial);
-  m_spin->setValue(initial);
+  m_slider->setValue(static_cast<int>(std::lround(core::kDefaultAlphaMaxDegrees)));
+  m_spin->setValue(core::kDefaultAlphaMaxDegrees);
   const QString tip = tr("Maximal self-supporting angle: faces that lean over by more than this from the "
                          "printing direction need support");
   m_slider->setToolTip(tip);
   m_spin->setToolTip(tip);
-  connect(m_slider, &QSlider::valueChanged, m_spin, &QSpinBox::setValue);
-  connect(m_spin, QOverload<int>::of(&QSpinBox::valueChanged), this, [this](int value) {
-    m_slider->setValue(value);
+  connect(m_slider, &QSlider::valueChanged, this, [this](int value) {
+    // A slider that only follows the spin box's rounding must not round the spin box's value.
+    if (static_cast<int>(std::lround(m_spin->value())) != value) m_spin->setValue(value);
+  });
+  connect(m_spin, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+    const QSignalBlocker blocker(m_slider);
+    m_slider->setValue(static_cast<int>(std::lround(value)));
     emit alphaMaxChanged(value);
   });
 
@@ -68,9 +75,9 @@ OverhangPanel::OverhangPanel(QWidget* parent) : QWidget(parent) {
   showUnavailable(tr("No model"));
 }
 
-int OverhangPanel::alphaMaxDegrees() const { return m_spin->value(); }
+double OverhangPanel::alphaMaxDegrees() const { return m_spin->value(); }
 
-void OverhangPanel::setAlphaMaxDegrees(int degrees) { m_spin->setValue(degrees); }
+void OverhangPanel::setAlphaMaxDegrees(double degrees) { m_spin->setValue(degrees); }
 
 void OverhangPanel::showResult(double riskyAreaMm2, std::size_t riskyFaces, std::size_t faces) {
   m_area->setText(tr("%1 mm²").arg(QLocale().toString(riskyAreaMm2, 'f', 1)));

@@ -1,13 +1,13 @@
 #pragma once
-// The Overhangs panel: the maximal self-supporting angle alpha_max (slider and spin box, 0-89 degrees,
-// default 45) and what it means for the model at the current up direction: the risky area in mm^2 and the
+// The Overhangs panel: the maximal self-supporting angle alpha_max (slider in whole degrees and a spin box
+// to a tenth, 0-89 degrees, default 45; MainWindow keeps it equal to the Search panel's) and what it means for the model at the current up direction: the risky area in mm^2 and the
 // number of risky faces.
 #include <QWidget>
 #include <cstddef>
 
 class QLabel;
 class QSlider;
-class QSpinBox;
+class QDoubleSpinBox;
 
 namespace multidir::ui {
 
@@ -17,9 +17,9 @@ class OverhangPanel : public QWidget {
  public:
   explicit OverhangPanel(QWidget* parent = nullptr);
 
-  [[nodiscard]] int alphaMaxDegrees() const;
+  [[nodiscard]] double alphaMaxDegrees() const;
   // Moves the slider and spin box (emits alphaMaxChanged when the value changes).
-  void setAlphaMaxDegrees(int degrees);
+  void setAlphaMaxDegrees(double degrees);
 
   // What the analysis found; `riskyFaces` of `faces` faces.
   void showResult(double riskyAreaMm2, std::size_t riskyFaces, std::size_t faces);
@@ -29,11 +29,11 @@ class OverhangPanel : public QWidget {
   [[nodiscard]] QString riskyAreaText() const;
 
  signals:
-  void alphaMaxChanged(int degrees);
+  void alphaMaxChanged(double degrees);
 
  private:
   QSlider* m_slider = nullptr;
-  QSpinBox* m_spin = nullptr;
+  QDoubleSpinBox* m_spin = nullptr;
   QLabel* m_area = nullptr;
   QLabel* m_faces = nullptr;
 };

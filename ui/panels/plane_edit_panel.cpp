@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QTableWidget>
@@ -16,6 +17,7 @@
 
 #include "ui/edit/plan_editor.h"
 #include "ui/edit/plane_edit_geometry.h"
+#include "ui/edit/plane_numbering.h"
 
 namespace multidir::ui {
 namespace {
@@ -59,9 +61,12 @@ QWidget* pair(QWidget* parent, QWidget* box, QWidget* slide) {
   return row;
 }
 
+// Azimuths in (-180, 180], the convention of core's machine angles and so of the Plan and Hardware panels.
 double wrapDegrees(double degrees) {
-  const double wrapped = std::fmod(degrees, 360.0);
-  return wrapped < 0.0 ? wrapped + 360.0 : wrapped;
+  double wrapped = std::fmod(degrees, 360.0);
+  if (wrapped <= -180.0) wrapped += 360.0;
+  if (wrapped > 180.0) wrapped -= 360.0;
+  return wrapped;
 }
 
 bool validPlane(const std::vector<core::Plane>& planes, int plane) {
@@ -82,6 +87,8 @@ PlaneEditPanel::PlaneEditPanel(PlanEditor* editor, QWidget* parent) : QWidget(pa
   m_table = new QTableWidget(0, 3, this);
   m_table->setObjectName(QStringLiteral("planeTable"));
   m_table->setHorizontalHeaderLabels({tr("Plane"), tr("Normal"), tr("Offset (mm)")});
+  m_table->horizontalHeaderItem(0)->setToolTip(
+      tr("Planes are numbered in printing order, like the regions: plane k is the base of region k + 1"));
   m_table->verticalHeader()->hide();
   m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   m_table->horizontalHeader()->setStretchLastSection(true);
@@ -109,10 +116,10 @@ PlaneEditPanel::PlaneEditPanel(PlanEditor* editor, QWidget* parent) : QWidget(pa
   m_tilt = angleBox(m_fiveDof, QStringLiteral("planeTilt"));
   m_tiltSlider = slider(m_fiveDof, QStringLiteral("planeTiltSlider"));
   m_azimuth = angleBox(m_fiveDof, QStringLiteral("planeAzimuth"));
-  m_azimuth->setRange(0.0, 360.0);
+  m_azimuth->setRange(-180.0, 180.0);
   m_azimuth->setWrapping(true);
   m_azimuthSlider = slider(m_fiveDof, QStringLiteral("planeAzimuthSlider"));
-  m_azimuthSlider->setRange(0, 360 * kAngleScale);
+  m_azimuthSlider->setRange(-180 * kAngleScale, 180 * kAngleScale);
   auto* fiveForm = new QFormLayout(m_fiveDof);
   fiveForm->setContentsMargins(0, 0, 0, 0);
   fiveForm->addRow(tr("Tilt:"), pair(m_fiveDof, m_tilt, m_tiltSlider));
@@ -143,6 +150,11 @@ PlaneEditPanel::PlaneEditPanel(PlanEditor* editor, QWidget* parent) : QWidget(pa
   buttons->addWidget(m_delete);
   buttons->addWidget(m_busy, 1);
 
+  m_offsetNote = new QLabel(this);
+  m_offsetNote->setObjectName(QStringLiteral("offsetFollowsTilt"));
+  m_offsetNote->setWordWrap(true);
+  m_offsetNote->setVisible(false);
+
   m_refusal = new QLabel(this);
   m_refusal->setObjectName(QStringLiteral("editRefusal"));
   m_refusal->setWordWrap(true);
@@ -154,12 +166,13 @@ PlaneEditPanel::PlaneEditPanel(PlanEditor* editor, QWidget* parent) : QWidget(pa
   layout->addWidget(m_jg);
   layout->addWidget(m_table, 1);
   layout->addWidget(m_controls);
+  layout->addWidget(m_offsetNote);
   layout->addLayout(buttons);
   layout->addWidget(m_refusal);
 
   connect(m_table, &QTableWidget::itemSelectionChanged, this, [this] {
     const QList<QTableWidgetItem*> selected = m_table->selectedItems();
-    m_editor->selectPlane(selected.isEmpty() ? -1 : selected.front()->row());
+    m_editor->selectPlane(selected.isEmpty() ? -1 : planeOfRow(selected.front()->row()));
   });
   connect(m_offset, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, &PlaneEditPanel::offsetTyped);
   connectSlider(m_offsetSlider, [this](int session) { offsetSlid(m_offsetSlider->value(), session); });
@@ -196,6 +209,22 @@ PlaneEditPanel::PlaneEditPanel(PlanEditor* editor, QWidget* parent) : QWidget(pa
     directionChanged(session);
   });
 
+  // Delete in the table deletes the selected plane; a double-click edits the cell's value: the offset, or
+  // the direction (the tilt on 5-DOF machines, the rotary angle on 4-DOF ones).
+  auto* deleteKey = new QShortcut(QKeySequence(QKeySequence::Delete), m_table);
+  deleteKey->setContext(Qt::WidgetWithChildrenShortcut);
+  connect(deleteKey, &QShortcut::activated, this, [this] {
+    if (m_delete->isEnabled()) m_delete->click();
+  });
+  connect(m_table, &QTableWidget::cellDoubleClicked, this, [this](int row, int column) {
+    m_editor->selectPlane(planeOfRow(row));
+    if (!m_controls->isEnabled()) return;
+    QDoubleSpinBox* box = m_offset;
+    if (column == 1 && m_fiveDof->isVisibleTo(this)) box = m_tilt;
+    if (column == 1 && m_fourDof->isVisibleTo(this)) box = m_rotary;
+    box->setFocus(Qt::OtherFocusReason);
+    box->selectAll();
+  });
   connect(m_add, &QPushButton::clicked, m_editor, &PlanEditor::addPlane);
   connect(m_delete, &QPushButton::clicked, this, [this] { m_editor->deletePlane(m_editor->selectedPlane()); });
   connect(m_editor, &PlanEditor::stateChanged, this, &PlaneEditPanel::refresh);
@@ -251,23 +280,34 @@ void PlaneEditPanel::refreshJg() {
                     .arg(number(plan->jgBeforeMm2, 1), number(plan->jgAfterMm2, 1), number(m_editor->startJgMm2(), 1)));
 }
 
+int PlaneEditPanel::planeOfRow(int row) const {
+  const int count = static_cast<int>(m_editor->state().planes.size());
+  return row >= 0 && row < count ? planeIndexOfNumber(row + 1, count) : -1;
+}
+
+int PlaneEditPanel::rowOfPlane(int plane) const {
+  const int count = static_cast<int>(m_editor->state().planes.size());
+  return plane >= 0 && plane < count ? planeNumber(plane, count) - 1 : -1;
+}
+
 void PlaneEditPanel::refreshTable() {
+  // One row per plane in printing order (plane_numbering.h): row k shows plane k + 1, the base of region k + 2.
   const std::vector<core::Plane>& planes = m_editor->state().planes;
   const QSignalBlocker block(m_table);
   m_table->setRowCount(static_cast<int>(planes.size()));
-  for (int i = 0; i < static_cast<int>(planes.size()); ++i) {
-    const core::Plane& plane = planes[static_cast<std::size_t>(i)];
-    m_table->setItem(i, 0, cell(QString::number(i + 1), false));
+  for (int row = 0; row < static_cast<int>(planes.size()); ++row) {
+    const core::Plane& plane = planes[static_cast<std::size_t>(planeOfRow(row))];
+    m_table->setItem(row, 0, cell(QString::number(row + 1), false));
     m_table->setItem(
-        i, 1,
+        row, 1,
         cell(QStringLiteral("(%1, %2, %3)")
                  .arg(number(plane.normal.x(), 3), number(plane.normal.y(), 3), number(plane.normal.z(), 3)),
              false));
-    m_table->setItem(i, 2, cell(number(plane.offset, 2), true));
+    m_table->setItem(row, 2, cell(number(plane.offset, 2), true));
   }
   const int selected = m_editor->selectedPlane();
   if (validPlane(planes, selected)) {
-    m_table->selectRow(selected);
+    m_table->selectRow(rowOfPlane(selected));
   } else {
     m_table->clearSelection();
   }
@@ -282,6 +322,7 @@ void PlaneEditPanel::refreshControls() {
   m_add->setEnabled(editable);
   m_delete->setEnabled(hasSelection);
   m_controls->setEnabled(hasSelection);
+  refreshOffsetNote();
   m_fiveDof->setVisible(machine.kind == core::MachineKind::TiltRotate);
   m_fourDof->setVisible(machine.kind == core::MachineKind::RotaryPlatform);
   if (!hasSelection) return;
@@ -349,10 +390,30 @@ void PlaneEditPanel::showRefusal(const QString& message, const QString& detail) 
   m_refusal->setVisible(!message.isEmpty());
 }
 
-void PlaneEditPanel::offsetTyped(double offsetMm) { m_editor->movePlane(m_editor->selectedPlane(), offsetMm); }
+void PlaneEditPanel::offsetTyped(double offsetMm) {
+  m_tiltStart.reset();
+  m_editor->movePlane(m_editor->selectedPlane(), offsetMm);
+}
 
 void PlaneEditPanel::offsetSlid(int position, int dragSession) {
+  m_tiltStart.reset();
   m_editor->movePlane(m_editor->selectedPlane(), sliderOffset(position), dragSession);
+}
+
+void PlaneEditPanel::refreshOffsetNote() {
+  const PlanEditState& state = m_editor->state();
+  const int selected = state.selectedPlane;
+  if (!m_tiltStart || m_tiltStart->plane != selected || !validPlane(state.planes, selected)) {
+    m_tiltStart.reset();
+    m_offsetNote->setVisible(false);
+    return;
+  }
+  const double now = state.planes[static_cast<std::size_t>(selected)].offset;
+  const bool moved = std::abs(now - m_tiltStart->offsetMm) >= 0.005;  // what the offset box shows changed
+  m_offsetNote->setText(tr("Tilting turns the plane about the middle of its cut, so its offset (measured from the "
+                           "origin along the normal) went from %1 mm to %2 mm.")
+                            .arg(number(m_tiltStart->offsetMm, 2), number(now, 2)));
+  m_offsetNote->setVisible(moved);
 }
 
 double PlaneEditPanel::sliderOffset(int position) const {
@@ -362,6 +423,13 @@ double PlaneEditPanel::sliderOffset(int position) const {
 void PlaneEditPanel::directionChanged(int dragSession) {
   const core::MachineSpec& machine = m_editor->machine();
   const int plane = m_editor->selectedPlane();
+  // The offset before this tilt (before the whole drag, for a drag) is what the note compares with.
+  const PlanEditState& state = m_editor->state();
+  const bool sameDrag = dragSession > 0 && m_tiltStart && m_tiltStart->plane == plane &&
+                        m_tiltStart->dragSession == dragSession;
+  if (!sameDrag && validPlane(state.planes, plane)) {
+    m_tiltStart = TiltStart{plane, state.planes[static_cast<std::size_t>(plane)].offset, dragSession};
+  }
   switch (machine.kind) {
     case core::MachineKind::ThreeAxis:
       return;

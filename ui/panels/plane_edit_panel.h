@@ -1,13 +1,16 @@
 #pragma once
-// The Edit plan panel: the clipping planes of the plan shown (number, normal, offset) and controls to change
-// the selected one: its offset (typed in mm, or dragged across the range where it cuts what is left of the
-// model), its direction (5-DOF: tilt and azimuth; 4-DOF: the rotary angle in the machine's steps; 3-DOF:
-// none, planes stay level), Add plane and Delete plane. J_G before and after is shown and kept up to date;
-// a refused edit is explained in red under the controls.
+// The Edit plan panel: the clipping planes of the plan shown (number in printing order, normal, offset) and
+// controls to change the selected one: its offset (typed in mm, or dragged across the range where it cuts
+// what is left of the model), its direction (5-DOF: tilt and azimuth, the azimuth in (-180, 180] like the
+// Plan panel's; 4-DOF: the rotary angle in the machine's steps; 3-DOF: none, planes stay level), Add plane and
+// Delete plane (also the Delete key in the table; a double-click on a plane puts the cursor in its offset, or
+// in its direction for a double-click on the normal). J_G before and after is shown and kept up to date; a
+// refused edit is explained in red under the controls; a tilt that moved the offset says so.
 //
 // The panel edits through a PlanEditor (it calls it and follows its signals); it owns no plan state.
 #include <QWidget>
 #include <functional>
+#include <optional>
 
 class QDoubleSpinBox;
 class QLabel;
@@ -43,6 +46,11 @@ class PlaneEditPanel : public QWidget {
   void refreshTable();
   void refreshControls();
   void showRefusal(const QString& message, const QString& detail);
+  // Says how a tilt moved the selected plane's offset (it turns about the middle of its cut); hidden otherwise.
+  void refreshOffsetNote();
+  // Rows list the planes in printing order (ui/edit/plane_numbering.h); planes are 0-based in clipping order.
+  [[nodiscard]] int planeOfRow(int row) const;
+  [[nodiscard]] int rowOfPlane(int plane) const;
   void offsetTyped(double offsetMm);
   void offsetSlid(int position, int dragSession);
   void directionChanged(int dragSession);
@@ -69,6 +77,13 @@ class PlaneEditPanel : public QWidget {
   QPushButton* m_delete = nullptr;
   QLabel* m_busy = nullptr;
   QLabel* m_refusal = nullptr;
+  QLabel* m_offsetNote = nullptr;
+  struct TiltStart {
+    int plane = -1;
+    double offsetMm = 0.0;
+    int dragSession = 0;
+  };
+  std::optional<TiltStart> m_tiltStart;  // the selected plane's offset before it was last tilted
   double m_rangeMin = 0.0;  // the offset slider's range, mm
   double m_rangeMax = 1.0;
   QSlider* m_dragged = nullptr;  // the slider a drag is under way on

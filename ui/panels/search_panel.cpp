@@ -11,6 +11,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -20,6 +21,12 @@ namespace multidir::ui {
 namespace {
 
 QString area(double mm2) { return QLocale().toString(mm2, 'f', 1); }
+
+// "0:07", "12:34": minutes and seconds.
+QString elapsedText(qint64 ms) {
+  const qint64 seconds = ms / 1000;
+  return QStringLiteral("%1:%2").arg(seconds / 60).arg(seconds % 60, 2, 10, QLatin1Char('0'));
+}
 
 // J_G below this counts as zero: a plan is support-free when what is left is numerical dust.
 constexpr double kSupportFreeMm2 = 1e-6;
@@ -117,6 +124,10 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
     connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
   for (QDoubleSpinBox* box : {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain})
     connect(box, &QDoubleSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
+  connect(m_alpha, &QDoubleSpinBox::valueChanged, this, &SearchPanel::alphaMaxChanged);
+  m_tick = new QTimer(this);
+  m_tick->setInterval(1000);
+  connect(m_tick, &QTimer::timeout, this, &SearchPanel::updateProgressText);
 
   m_progress = new QProgressBar(this);
   m_progress->setObjectName(QStringLiteral("searchProgress"));
@@ -187,6 +198,10 @@ void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
   emit settingsChanged();  // also when only options the panel does not show changed
 }
 
+double SearchPanel::alphaMaxDegrees() const { return m_alpha->value(); }
+
+void SearchPanel::setAlphaMaxDegrees(double degrees) { m_alpha->setValue(degrees); }
+
 int SearchPanel::axisSearchCount() const { return m_axisCount->isEnabled() ? m_axisCount->value() : 0; }
 
 void SearchPanel::setAxisSearchCount(int count) { m_axisCount->setValue(count); }
@@ -213,27 +228,39 @@ void SearchPanel::setRunning(bool running) {
   }
 }
 
-void SearchPanel::searchStarted(double jgBeforeMm2) {
+void SearchPanel::searchStarted(double jgBeforeMm2, int maxLevels) {
   m_jgBefore = jgBeforeMm2;
+  m_maxLevels = maxLevels;
+  m_cancelling = false;
+  m_latest.reset();
+  m_phase.clear();
+  m_clock.start();
+  m_tick->start();
   setRunning(true);
-  m_progress->setValue(0);
-  m_progress->setFormat(tr("Starting..."));
-  m_level->setText(QStringLiteral("-"));
-  m_beams->setText(QStringLiteral("-"));
+  resetReadout();
   m_bestJg->setText(tr("%1 mm²").arg(area(jgBeforeMm2)));
   m_candidates->setText(QStringLiteral("0"));
-  m_chart->clear();
   m_chart->setBest(0, jgBeforeMm2);
+  updateProgressText();
+}
+
+void SearchPanel::resetReadout() {
+  m_progress->setValue(0);
+  m_progress->setFormat(QStringLiteral("%p%"));
+  for (QLabel* value : {m_level, m_beams, m_bestJg, m_candidates}) value->setText(QStringLiteral("-"));
+  m_chart->clear();
   m_notice->hide();
   m_notice->clear();
 }
 
 void SearchPanel::showFraction(double fraction, const QString& phase) {
   m_progress->setValue(static_cast<int>(std::lround(1000.0 * fraction)));
-  m_progress->setFormat(phase.isEmpty() ? QStringLiteral("%p%") : phase + QStringLiteral(" %p%"));
+  m_phase = phase;  // SearchJob names only the phases after the search itself (supports)
+  updateProgressText();
 }
 
 void SearchPanel::showProgress(const core::SearchProgress& progress) {
+  m_latest = progress;
   m_level->setText(QString::number(progress.level));
   if (progress.axisCount > 0) {
     m_level->setText(tr("%1 (axis %2 of %3)").arg(progress.level).arg(progress.axisIndex + 1).arg(progress.axisCount));
@@ -242,15 +269,40 @@ void SearchPanel::showProgress(const core::SearchProgress& progress) {
   m_bestJg->setText(tr("%1 mm²").arg(area(progress.bestJgMm2)));
   m_candidates->setText(QLocale().toString(progress.candidatesScored));
   m_chart->setBest(progress.level, progress.bestJgMm2);
+  updateProgressText();
+}
+
+void SearchPanel::updateProgressText() {
+  if (!m_running) return;
+  const QString elapsed = elapsedText(m_clock.elapsed());
+  QString text;
+  if (m_cancelling) {
+    text = tr("Cancelling: keeping the best plan so far... %1").arg(elapsed);
+  } else if (!m_phase.isEmpty()) {
+    text = tr("%1 %2 - %3").arg(m_phase, QStringLiteral("%p%"), elapsed);
+  } else if (!m_latest) {
+    text = m_maxLevels > 0 ? tr("Level 1 of %1: scoring candidates... %2").arg(m_maxLevels).arg(elapsed)
+                           : tr("Scoring candidates... %1").arg(elapsed);
+  } else {
+    const core::SearchProgress& p = *m_latest;
+    QString level = m_maxLevels > 0 ? tr("Level %1 of %2").arg(p.level).arg(m_maxLevels) : tr("Level %1").arg(p.level);
+    if (p.axisCount > 0) level = tr("Axis %1 of %2, %3").arg(p.axisIndex + 1).arg(p.axisCount).arg(level);
+    text = tr("%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5")
+               .arg(level, QLocale().toString(p.beamsAlive), area(p.bestJgMm2),
+                    QLocale().toString(p.candidatesScored), elapsed);
+  }
+  m_progress->setFormat(text);
 }
 
 void SearchPanel::cancelRequested() {
   m_cancel->setEnabled(false);
-  m_progress->setFormat(tr("Cancelling: keeping the best plan so far..."));
+  m_cancelling = true;
+  updateProgressText();
 }
 
 void SearchPanel::searchFinished(const core::Decomposition& plan) {
   setRunning(false);
+  m_tick->stop();
   m_progress->setValue(m_progress->maximum());
   m_progress->setFormat(plan.cancelled ? tr("Cancelled") : tr("Done"));
   m_bestJg->setText(tr("%1 mm²").arg(area(plan.jgAfterMm2)));
@@ -278,9 +330,22 @@ void SearchPanel::searchFinished(const core::Decomposition& plan) {
 
 void SearchPanel::searchFailed(const QString& headline, const QString& detail) {
   setRunning(false);
+  m_tick->stop();
   m_progress->setValue(0);
   m_progress->setFormat(tr("Failed"));
   showNotice(detail.isEmpty() ? headline : tr("%1\n%2").arg(headline, detail), true);
+}
+
+void SearchPanel::searchDropped() {
+  setRunning(false);
+  m_tick->stop();
+  resetReadout();
+  m_progress->setFormat(tr("Stopped"));
+}
+
+void SearchPanel::clearResult() {
+  if (m_running) return;
+  resetReadout();
 }
 
 void SearchPanel::showNotice(const QString& text, bool warning) {
@@ -297,6 +362,8 @@ QString SearchPanel::noticeText() const { return m_notice->text(); }
 QString SearchPanel::readoutText() const {
   return QStringList{m_level->text(), m_beams->text(), m_bestJg->text(), m_candidates->text()}.join(QLatin1Char('|'));
 }
+
+QString SearchPanel::progressText() const { return m_progress->text(); }
 
 int SearchPanel::chartPointCount() const { return m_chart->pointCount(); }
 

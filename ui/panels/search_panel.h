@@ -5,7 +5,9 @@
 // (support-free or not, improved or not, cancelled).
 //
 // The panel only shows and collects; MainWindow runs the search (SearchJob) and feeds the panel.
+#include <QElapsedTimer>
 #include <QWidget>
+#include <optional>
 
 #include "multidir/core/search/decomposition.h"
 
@@ -15,6 +17,7 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
+class QTimer;
 
 namespace multidir::ui {
 
@@ -33,33 +36,47 @@ class SearchPanel : public QWidget {
   void setAxisSearchCount(int count);
   // The axis-search count is offered for 4-DOF machines only.
   void setRotaryMachine(bool rotary);
+  // alpha_max, the same value as the Overhangs panel's (MainWindow links the two).
+  [[nodiscard]] double alphaMaxDegrees() const;
+  void setAlphaMaxDegrees(double degrees);
   // Run is offered only when a model is shown and the machine is valid; `reason` says why not.
   void setRunnable(bool runnable, const QString& reason);
 
-  // A search started: clears the read-out and the chart, swaps Run for Cancel.
-  void searchStarted(double jgBeforeMm2);
+  // A search started: clears the read-out and the chart, swaps Run for Cancel. `maxLevels` is
+  // core::maxSearchLevels of its options. While it runs the progress bar says where it is: "Level k of n",
+  // beams alive, best J_G, candidates scored and the time it has taken, updated every second.
+  void searchStarted(double jgBeforeMm2, int maxLevels = 0);
   void showFraction(double fraction, const QString& phase);
   void showProgress(const core::SearchProgress& progress);
   void cancelRequested();
   // The search ended with `plan` (complete or cancelled), or failed.
   void searchFinished(const core::Decomposition& plan);
   void searchFailed(const QString& headline, const QString& detail);
+  // The search was stopped and its result dropped (another model is being opened): nothing of it stays.
+  void searchDropped();
+  // A new model is shown: the read-out, chart and notice of the previous model's search are cleared.
+  void clearResult();
 
   // What the notice line says (for tests and the status bar).
   [[nodiscard]] QString noticeText() const;
   [[nodiscard]] QString readoutText() const;
+  // The progress bar's text as shown.
+  [[nodiscard]] QString progressText() const;
   // Points on the best-J_G chart.
   [[nodiscard]] int chartPointCount() const;
 
  signals:
   void runClicked();
   void cancelClicked();
+  void alphaMaxChanged(double degrees);
   // A setting was edited (by the user or setSearchOptions / setAxisSearchCount).
   void settingsChanged();
 
  private:
   void setRunning(bool running);
   void showNotice(const QString& text, bool warning);
+  void updateProgressText();
+  void resetReadout();
 
   QComboBox* m_scheme = nullptr;
   QSpinBox* m_beamWidth = nullptr;
@@ -84,6 +101,12 @@ class SearchPanel : public QWidget {
   double m_jgBefore = 0.0;
   bool m_runnable = false;
   bool m_running = false;
+  bool m_cancelling = false;
+  int m_maxLevels = 0;
+  QString m_phase;                               // core's phase when it is not the search itself
+  std::optional<core::SearchProgress> m_latest;  // of the running search
+  QElapsedTimer m_clock;                         // since the search started
+  QTimer* m_tick = nullptr;                      // refreshes the elapsed time
 };
 
 }  // namespace multidir::ui

@@ -25,6 +25,7 @@
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/search_panel.h"
 #include "ui/project/autosave.h"
+#include "ui/project/dialog_folders.h"
 #include "ui/project/recent_files.h"
 #include "ui/studio_startup.h"
 
@@ -144,6 +145,7 @@ bool ProjectSession::saveProjectAs(const QString& path, QString* error) {
   m_path = QFileInfo(path).absoluteFilePath();
   setModified(false);
   remember(m_path);
+  rememberDialogFolder(FileKind::Project, m_path);
   m_window.statusBar()->showMessage(tr("Project saved to %1.").arg(path));
   emit projectSaved(m_path);
   return true;
@@ -165,34 +167,79 @@ void ProjectSession::chooseSaveAs() {
   if (suggestion.isEmpty() && m_window.model()) {
     const QFileInfo model(m_window.model()->sourcePath);
     const QString stem = model.fileName().isEmpty() ? m_window.model()->sampleId : model.completeBaseName();
-    suggestion = QFileInfo(m_lastDirectory.isEmpty() ? model.absolutePath() : m_lastDirectory, stem).filePath() +
+    const QString folder = m_window.dialogFolder(FileKind::Project);
+    suggestion = QFileInfo(folder.isEmpty() ? model.absolutePath() : folder, stem).filePath() +
                  QLatin1String(core::kProjectFileExtension);
   }
   QString path =
       QFileDialog::getSaveFileName(&m_window, tr("Save Project"), suggestion, tr("MultiDir projects (*.multidir)"));
   if (path.isEmpty()) return;
   if (!isProjectFile(path)) path += QLatin1String(core::kProjectFileExtension);
-  m_lastDirectory = QFileInfo(path).absolutePath();
+  rememberDialogFolder(FileKind::Project, path);
   QString error;
   if (!saveProjectAs(path, &error)) QMessageBox::warning(&m_window, tr("Save Project"), error);
 }
 
 void ProjectSession::chooseOpenProject() {
-  const QString path = QFileDialog::getOpenFileName(&m_window, tr("Open Project"), m_lastDirectory,
-                                                    tr("MultiDir projects (*.multidir);;All files (*)"));
+  const QString path =
+      QFileDialog::getOpenFileName(&m_window, tr("Open Project"), m_window.dialogFolder(FileKind::Project),
+                                   tr("MultiDir projects (*.multidir);;All files (*)"));
   if (path.isEmpty()) return;
-  m_lastDirectory = QFileInfo(path).absolutePath();
   openFromUser(path);
 }
 
 bool ProjectSession::openProject(const QString& path, QString* error) { return open(path, false, error); }
 
 void ProjectSession::openFromUser(const QString& path) {
-  if (!isProjectFile(path)) {
-    m_window.openFile(path);
-    return;
+  const bool project = isProjectFile(path);
+  rememberDialogFolder(project ? FileKind::Project : FileKind::Model, path);
+  whenWorkMayBeReplaced([this, path, project] {
+    if (project) {
+      openProject(path);
+    } else {
+      m_window.openFile(path);
+    }
+  });
+}
+
+bool ProjectSession::whenWorkMayBeReplaced(const std::function<void()>& proceed) {
+  if (!m_window.isSearching()) return settleUnsavedChanges(proceed);
+  auto stopThenSettle = [this, proceed] {
+    m_window.abandonSearch();
+    settleUnsavedChanges(proceed);
+  };
+  if (m_presetSearchAnswer) {
+    if (*m_presetSearchAnswer == RunningSearchAnswer::Cancel) return false;
+    stopThenSettle();
+    return !m_question;
   }
-  settleUnsavedChanges([this, path] { openProject(path); });
+  if (m_question) {  // one question at a time
+    m_question->raise();
+    return false;
+  }
+  auto* box = new QMessageBox(QMessageBox::Question, tr("Search Running"),
+                              tr("A search is running on %1.")
+                                  .arg(m_window.model() ? m_window.model()->name : tr("the model shown")),
+                              QMessageBox::NoButton, &m_window);
+  box->setObjectName(QStringLiteral("searchRunningBox"));
+  box->setInformativeText(tr("Stop it? Its result is then dropped."));
+  QPushButton* stop = box->addButton(tr("S&top the Search"), QMessageBox::AcceptRole);
+  stop->setObjectName(QStringLiteral("stopSearch"));
+  box->addButton(QMessageBox::Cancel);
+  box->setDefaultButton(QMessageBox::Cancel);
+  box->setWindowModality(Qt::WindowModal);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::finished, this, [this, box, stop, stopThenSettle] {
+    const bool stopped = box->clickedButton() == stop;
+    m_question.clear();  // answered: the unsaved-changes question may follow
+    // After the box has gone, so that the next question can be asked.
+    QTimer::singleShot(0, this, [stopped, stopThenSettle] {
+      if (stopped) stopThenSettle();
+    });
+  });
+  m_question = box;
+  box->open();
+  return false;
 }
 
 void ProjectSession::openRecent(const QString& path) {
@@ -358,6 +405,9 @@ bool ProjectSession::eventFilter(QObject* watched, QEvent* event) {
 
 void ProjectSession::onChanged() {
   if (m_opening) return;  // opening applies its own settings; it decides the state when it ends
+  // Settings chosen before any model is shown (or while a load that then fails runs) are nothing to lose:
+  // there is no project to save yet.
+  if (!m_window.model()) return;
   setModified(true);
 }
 
@@ -391,9 +441,11 @@ void ProjectSession::onModelShown() {
     m_opening.reset();
     emit projectOpenFailed(tr("Opening %1 was interrupted: another model was opened.").arg(file));
   }
-  // A model opened into an untitled project starts it afresh; into a project, it changes the project.
+  // A model opened on its own leaves the project (Save then asks where): it starts a fresh, untitled
+  // project with nothing to lose yet. Whoever opened it asked about unsaved changes first.
   if (!model->sourcePath.isEmpty()) remember(model->sourcePath);
-  setModified(!m_path.isEmpty());
+  m_path.clear();
+  setModified(false);
 }
 
 void ProjectSession::onModelLoadFailed(const QString& message) {

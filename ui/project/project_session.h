@@ -3,9 +3,9 @@
 // (core::loadProject / saveProject), whether there are unsaved changes (the title's [*]), the question before
 // they are lost, autosave and crash recovery, File > Open Recent, and files dropped on the window.
 //
-// Unsaved changes: the model, the up direction, the machine or search settings, or the plan changed since the
-// project was opened or saved. A model opened while no project file is open starts a fresh, untitled project
-// with nothing to lose yet.
+// Unsaved changes: the up direction, the machine or search settings, or the plan changed since the project
+// was opened or saved. A model opened on its own (not as a project's) leaves the project: it starts a fresh,
+// untitled project with nothing to lose yet, so Save then asks where instead of overwriting the project.
 //
 // Opening a project reads and checks the file, loads its model (the file, or the sample rebuilt; a missing file
 // is an error and the model shown stays), applies its up direction and settings, rebuilds the plan from its
@@ -79,9 +79,13 @@ class ProjectSession : public QObject {
   // cannot be read or its model file is missing, and the window keeps what it shows. projectOpened() or
   // projectOpenFailed() tells how it ended. Unsaved changes are not asked about: see openFromUser().
   bool openProject(const QString& path, QString* error = nullptr);
-  // What the user picked (File > Open..., Open Recent, a drop): a project, after the unsaved-changes
-  // question; a mesh file, directly.
+  // What the user picked (File > Open..., Open Recent, a drop): a project or a mesh file, once the work shown
+  // may be replaced (whenWorkMayBeReplaced).
   void openFromUser(const QString& path);
+  // Runs `proceed` once the work shown may be replaced: a running search is stopped after asking (its result
+  // is dropped: MainWindow::abandonSearch), then unsaved changes are saved or discarded after asking.
+  // Cancel to either question drops `proceed`. Returns whether it ran at once.
+  bool whenWorkMayBeReplaced(const std::function<void()>& proceed);
   // An Open Recent entry: a file that has gone is taken off the list, with a status-bar message.
   void openRecent(const QString& path);
   // Files dropped on the window: the first mesh or project is opened; other files are refused with a
@@ -104,6 +108,10 @@ class ProjectSession : public QObject {
   bool confirmClose();
   // Answers the unsaved-changes question in advance (tests); nullopt: ask.
   void setUnsavedChangesAnswer(std::optional<UnsavedAnswer> answer) { m_presetAnswer = answer; }
+  // Answers "A search is running: stop it?" in advance (tests); nullopt: ask (a window-modal, asynchronous box
+  // named "searchRunningBox").
+  enum class RunningSearchAnswer { Stop, Cancel };
+  void setRunningSearchAnswer(std::optional<RunningSearchAnswer> answer) { m_presetSearchAnswer = answer; }
 
  signals:
   // A project (or a recovered autosave, `path` being the autosave) is shown with its plan.
@@ -147,10 +155,10 @@ class ProjectSession : public QObject {
   bool m_modified = false;
   bool m_closeConfirmed = false;
   std::optional<UnsavedAnswer> m_presetAnswer;
+  std::optional<RunningSearchAnswer> m_presetSearchAnswer;
   QPointer<QMessageBox> m_question;
   std::unique_ptr<Opening> m_opening;
   quint64 m_generation = 0;  // of the latest opening: older rebuilds finishing late are dropped
-  QString m_lastDirectory;
 };
 
 }  // namespace multidir::ui

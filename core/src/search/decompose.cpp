@@ -138,7 +138,7 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
   std::vector<NodePtr> beams = {engine.root()};
   best.offer(engine.root());
   if (engine.isTerminal(*engine.root())) return false;
-  const int maxLevels = static_cast<int>(std::ceil(o.minVolumeDivisor)) + 1;
+  const int maxLevels = maxSearchLevels(o);
   for (int level = 0; !beams.empty() && level < maxLevels; ++level) {
     levels = level + 1;
     std::vector<ScoredCandidate> pool;

@@ -45,4 +45,8 @@ Status validate(const SearchOptions& o) {
   return validate(o.candidates);
 }
 
+int maxSearchLevels(const SearchOptions& options) {
+  return static_cast<int>(std::ceil(options.minVolumeDivisor)) + 1;
+}
+
 }  // namespace multidir::core

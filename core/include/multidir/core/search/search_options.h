@@ -52,6 +52,10 @@ struct SearchOptions {
 
 Status validate(const SearchOptions& options);
 
+// How many levels (clipping planes in one plan) the search explores at most: every region cut off keeps at
+// least V/w, so no plan has more than ceil(w) + 1 of them.
+[[nodiscard]] int maxSearchLevels(const SearchOptions& options);
+
 // What the search reports while it runs (on the thread that runs it).
 struct SearchProgress {
   int level = 0;                 // clipping planes in the plans being extended

@@ -1,0 +1,108 @@
+// What the Search panel says while a search runs (issue 11, items 12 and 13): the progress bar names the
+// level of how many, the beams alive, the best J_G, the candidates scored and the time taken, and says it is
+// cancelling (never "done") while it cancels; the two "Max. overhang angle" controls are one value.
+#include <gtest/gtest.h>
+
+#include <QDoubleSpinBox>
+#include <QRegularExpression>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStringList>
+#include <QTest>
+
+#include "multidir/core/search/search_options.h"
+#include "ui/jobs/search_job.h"
+#include "ui/main_window.h"
+#include "ui/panels/overhang_panel.h"
+#include "ui/panels/search_panel.h"
+#include "ui/studio_test_support.h"
+
+namespace multidir::ui {
+namespace {
+
+// Every text the progress bar shows from now on, read after the panel has taken each report.
+class ProgressTexts {
+ public:
+  explicit ProgressTexts(MainWindow& window) : m_panel(window.searchPanel()) {
+    auto* job = window.findChild<SearchJob*>();
+    EXPECT_NE(job, nullptr);
+    // Connected after the window's own connections, so these run once the panel has been updated.
+    QObject::connect(job, &SearchJob::progressed, m_panel, [this] { record(); });
+    QObject::connect(job, &SearchJob::fractionChanged, m_panel, [this] { record(); });
+  }
+  void record() {
+    const QString text = m_panel->progressText();
+    if (m_texts.isEmpty() || m_texts.back() != text) m_texts << text;
+  }
+  [[nodiscard]] const QStringList& texts() const { return m_texts; }
+
+ private:
+  SearchPanel* m_panel;
+  QStringList m_texts;
+};
+
+TEST(StudioSearchProgress, ProgressSaysLevelOfHowManyBeamsBestJgCandidatesAndElapsedTime) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(test::openSample(window, QStringLiteral("snowman")));
+  ProgressTexts progress(window);
+  const int levels = core::maxSearchLevels(test::quickSearchOptions());
+  ASSERT_TRUE(test::runQuickSearch(window).plan);
+  const QRegularExpression expected(QStringLiteral("^Level \\d+ of %1 · beams alive: \\d+ · best J_G [\\d.,]+ mm² · "
+                                                   "[\\d.,]+ candidates · \\d+:\\d\\d$")
+                                        .arg(levels));
+  bool seen = false;
+  for (const QString& text : progress.texts()) seen = seen || expected.match(text).hasMatch();
+  EXPECT_TRUE(seen) << progress.texts().join(QStringLiteral(" | ")).toStdString();
+  EXPECT_FALSE(progress.texts().contains(QStringLiteral("Starting...")));
+}
+
+TEST(StudioSearchProgress, CancellingSaysSoUntilTheSearchHasStoppedAndNeverDone) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(test::openSample(window, QStringLiteral("snowman")));
+  window.searchPanel()->setSearchOptions(test::longSearchOptions());
+  QSignalSpy finished(&window, &MainWindow::searchFinished);
+  QSignalSpy failed(&window, &MainWindow::searchFailed);
+  ASSERT_TRUE(window.runSearch());
+  QTest::qWait(1000);  // under way: it has a best plan to deliver
+  ASSERT_TRUE(window.isSearching()) << "the search ended before it could be cancelled";
+  window.cancelSearch();
+  ProgressTexts progress(window);
+  progress.record();
+  ASSERT_TRUE(test::waitUntil([&] { return !finished.isEmpty() || !failed.isEmpty(); }, test::kSearchTimeoutMs));
+  ASSERT_FALSE(finished.isEmpty()) << failed.front().front().toString().toStdString();
+  ASSERT_FALSE(progress.texts().isEmpty());
+  for (const QString& text : progress.texts()) {
+    EXPECT_TRUE(text.startsWith(QStringLiteral("Cancelling"))) << text.toStdString();
+    EXPECT_FALSE(text.contains(QStringLiteral("done"))) << text.toStdString();
+  }
+  EXPECT_EQ(window.searchPanel()->progressText(), QStringLiteral("Cancelled"));
+}
+
+TEST(StudioOverhangAngle, OverhangsAndSearchPanelsShowOneValue) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(test::openSample(window, QStringLiteral("snowman")));
+  auto* overhangSpin = window.overhangPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("alphaSpin"));
+  auto* overhangSlider = window.overhangPanel()->findChild<QSlider*>(QStringLiteral("alphaSlider"));
+  auto* searchSpin = window.searchPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("searchAlpha"));
+  ASSERT_TRUE(overhangSpin && overhangSlider && searchSpin);
+
+  overhangSlider->setValue(30);
+  EXPECT_DOUBLE_EQ(searchSpin->value(), 30.0);
+  EXPECT_DOUBLE_EQ(window.searchPanel()->searchOptions().alphaMaxDegrees, 30.0);
+
+  const QString riskyAt30 = window.overhangPanel()->riskyAreaText();
+  searchSpin->setValue(52.5);
+  EXPECT_DOUBLE_EQ(overhangSpin->value(), 52.5);
+  EXPECT_DOUBLE_EQ(window.overhangPanel()->alphaMaxDegrees(), 52.5);
+  EXPECT_EQ(overhangSlider->value(), 53);
+  EXPECT_NE(window.overhangPanel()->riskyAreaText(), riskyAt30) << "the overhangs were not recoloured";
+
+  // A project's or plan's settings set both.
+  core::SearchOptions options = test::quickSearchOptions();
+  options.alphaMaxDegrees = 40.0;
+  window.searchPanel()->setSearchOptions(options);
+  EXPECT_DOUBLE_EQ(overhangSpin->value(), 40.0);
+}
+
+}  // namespace
+}  // namespace multidir::ui
