@@ -109,8 +109,12 @@ Result<std::vector<PoseCandidate>> restingPoses(const TriangleMesh& model, doubl
   if (!hull.ok()) return hull.error();
   const Vec3 centre = centreOfMass(model);
   std::vector<PoseCandidate> poses;
-  for (const HullFacet& facet : mergedFacets(*hull, mergeDegrees)) {
-    if (facet.polygon.empty()) continue;
+  const std::vector<HullFacet> facets = mergedFacets(*hull, mergeDegrees);
+  double hullArea = 0;
+  for (const HullFacet& facet : facets) hullArea += facet.areaMm2;
+  for (const HullFacet& facet : facets) {
+    // Slivers along hull edges (near-collinear corners) have normals that rounding decides: no pose.
+    if (facet.polygon.size() < 3 || facet.areaMm2 < 1e-6 * hullArea) continue;
     const Vec3 onPlane = centre - facet.normal * facet.normal.dot(centre - facet.polygon.front());
     const double margin = marginInside(facet, onPlane);
     if (!(margin > 0)) continue;
