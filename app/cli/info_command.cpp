@@ -5,13 +5,14 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "multidir/core/search/pose_search.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::cli {
 
 const char* const kInfoHelp =
-    "Usage: multidir info MODEL [--up DIRECTION] [--alpha DEGREES] [--json FILE]\n"
+    "Usage: multidir info MODEL [--up DIRECTION] [--alpha DEGREES] [--poses] [--json FILE]\n"
     "\n"
     "Loads MODEL (.stl, .obj, .off, .ply; millimetres), checks and repairs it, and prints its statistics,\n"
     "the defects found and repaired, and the area that would need support printed along the up direction.\n"
@@ -19,6 +20,8 @@ const char* const kInfoHelp =
     "Options:\n"
     "  --up DIRECTION   printing direction: x, y, z, -x, -y, -z or three numbers a,b,c (default: z)\n"
     "  --alpha DEGREES  maximal self-supporting angle, at least 0 and below 90 (default: 45)\n"
+    "  --poses          also list the candidate poses of 'decompose --pose auto' (the given up, stable\n"
+    "                   resting poses, sampled directions; 24) with their single-direction risky area\n"
     "  --json FILE      also write everything as JSON to FILE\n"
     "  -h, --help       show this help\n"
     "\n"
@@ -97,7 +100,7 @@ void printText(std::ostream& out, const std::string& model, const core::LoadedMe
 }  // namespace
 
 int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(args, {"--up", "--alpha", "--json"}, {"--help"}, "info");
+  const ParsedArgs parsed = parseArgs(args, {"--up", "--alpha", "--json"}, {"--help", "--poses"}, "info");
   if (parsed.has("--help")) {
     out << kInfoHelp;
     return kExitOk;
@@ -128,10 +131,30 @@ int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   if (!overhang) throw UsageError("multidir info: " + overhang.error().describe());
 
   printText(out, model, *loaded, *up, overhangOptions.alphaMaxDegrees, *overhang);
+  nlohmann::json poses = nlohmann::json::array();
+  if (parsed.has("--poses")) {
+    core::SearchOptions searchOptions;
+    searchOptions.alphaMaxDegrees = overhangOptions.alphaMaxDegrees;
+    const auto candidates = core::candidatePoses(loaded->mesh, *up, core::PoseOptions{}, searchOptions);
+    if (!candidates) {
+      err << "multidir info: poses: " << candidates.error().describe() << "\n";
+      return kExitBadInput;
+    }
+    out << "Candidate poses (up, source, contact mm^2, margin mm, risky mm^2)\n";
+    for (const core::PoseCandidate& c : *candidates) {
+      out << "  " << format("%7.3f", c.up.x()) << " " << format("%7.3f", c.up.y()) << " " << format("%7.3f", c.up.z())
+          << "  " << core::poseSourceName(c.source) << "  " << format("%.2f", c.contactAreaMm2) << "  "
+          << format("%.2f", c.stabilityMarginMm) << "  " << format("%.2f", c.riskyAreaMm2) << "\n";
+      poses.push_back({{"up", toJson(c.up)}, {"source", core::poseSourceName(c.source)},
+                       {"contactAreaMm2", c.contactAreaMm2}, {"stabilityMarginMm", c.stabilityMarginMm},
+                       {"riskyAreaMm2", c.riskyAreaMm2}});
+    }
+  }
   if (!jsonPath.empty()) {
     const double area = loaded->report.statistics.areaMm2;
     writeJson(jsonPath,
               {{"file", model},
+               {"poses", poses},
                {"statistics", toJson(loaded->report.statistics)},
                {"checks", toJson(loaded->report)},
                {"overhang",

@@ -115,3 +115,16 @@ TEST(CliPose, CountsOutOfRangeOrWithoutAutoAreUsageErrors) {
   expectUsageError(knight() + " -o out --poses 5", "add --pose auto");
   expectUsageError(knight() + " -o out --pose best", "use auto or up");
 }
+
+TEST(CliPose, InfoListsCandidatePosesGivenUpFirst) {
+  const std::string dir = multidir::test::scratchDirectory("CliPose.Info");
+  const CliRun run = runCli("info " + knight() + " --up y --poses --json '" + dir + "/info.json'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("Candidate poses"), std::string::npos) << run.out;
+  const nlohmann::json info = nlohmann::json::parse(readAll(dir + "/info.json"), nullptr, false);
+  ASSERT_GE(info["poses"].size(), 2u);
+  EXPECT_LE(info["poses"].size(), 24u);
+  EXPECT_EQ(info["poses"][0]["source"], "given");
+  EXPECT_NEAR(info["poses"][0]["riskyAreaMm2"].get<double>(), info["overhang"]["riskyAreaMm2"].get<double>(), 1e-6);
+  EXPECT_EQ(info["poses"][1]["source"], "resting");
+}
