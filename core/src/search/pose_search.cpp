@@ -256,6 +256,8 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   result.rotation = poseRotation(result.chosen.up, machine.up);
   result.trials = std::move(trials);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.plan.statistics.seconds = result.seconds;  // the whole pose search, as the time it took to get the plan
+  result.plan.statistics.threads = threads;
   job.setProgress(1.0, "pose search done");
   return result;
 }
