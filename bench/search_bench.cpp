@@ -3,7 +3,9 @@
 //
 //   multidir_search_bench [--models kitten,bunny,...] [--machine 5dof|4dof] [--axes N] [--threads N]
 //                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--refine ROUNDS]
-//                         [--min-region-height MM] [--min-plane-gain PERCENT]
+//                         [--min-region-height MM] [--min-plane-gain PERCENT] [--pose auto] [--poses N]
+// --pose auto: after each --up y search, also the pose search (decomposeWithPoseSearch), on one line below:
+// the chosen up, regions, J_G after as a share of the up-y J_G before, its seconds and its time over up y's.
 // The default runs all nine shared models. J_G is the one definition of docs/jg-definition.md.
 // Up is +Y for every shared model. Peak memory is the process's maximum resident set so far.
 #include <sys/resource.h>
@@ -18,6 +20,7 @@
 #include <filesystem>
 
 #include "multidir/core/mesh/mesh_io.h"
+#include "multidir/core/search/pose_search.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
 
@@ -48,6 +51,8 @@ int main(int argc, char** argv) {
   SearchOptions options;
   int axes = 0;
   bool verbose = false;
+  bool autoPose = false;
+  PoseOptions poseOptions;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--models") models = split(value);
@@ -64,6 +69,8 @@ int main(int argc, char** argv) {
     else if (flag == "--min-region-height") options.minRegionHeightMm = std::atof(value.c_str());
     else if (flag == "--min-plane-gain") options.minPlaneGainPercent = std::atof(value.c_str());
     else if (flag == "--verbose") verbose = value == "1";
+    else if (flag == "--pose") autoPose = value == "auto";
+    else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
     else {
       std::fprintf(stderr, "unknown option %s\n", flag.c_str());
       return 2;
@@ -79,6 +86,7 @@ int main(int argc, char** argv) {
   std::printf("%-12s %9s %11s %9s %9s %7s %12s %12s %8s %6s\n", "model", "triangles", "candidates", "seconds", "peak MiB",
               "regions", "J_G before", "J_G after", "after %", "saved");
   std::vector<double> shares;
+  std::vector<double> autoShares;
   for (const std::string& name : models) {
     const auto loaded = loadMesh(std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + name + ".off");
     if (!loaded.ok()) {
@@ -117,7 +125,29 @@ int main(int argc, char** argv) {
                     region.printingDirection.x(), region.printingDirection.y(), region.printingDirection.z(),
                     region.angles.tiltDegrees, region.volumeMm3, region.riskyAreaMm2);
       }
+    if (autoPose) {
+      JobContext poseJob;
+      const auto posed = decomposeWithPoseSearch(loaded->mesh, machine, options, poseOptions, poseJob);
+      if (!posed.ok()) {
+        std::fprintf(stderr, "%s: pose search: %s\n", name.c_str(), posed.error().describe().c_str());
+        return 1;
+      }
+      const double autoShare = 100.0 * posed->plan.jgAfterMm2 / plan->jgBeforeMm2;
+      autoShares.push_back(autoShare);
+      std::printf("  auto: up (%.2f %.2f %.2f) %-7s %2zu regions, J_G %.2f -> %.2f, %.2f %% of up-y J_G before, "
+                  "%.2f s (x%.1f)%s\n",
+                  posed->chosen.up.x(), posed->chosen.up.y(), posed->chosen.up.z(), poseSourceName(posed->chosen.source),
+                  posed->plan.regions.size(), posed->plan.jgBeforeMm2, posed->plan.jgAfterMm2, autoShare,
+                  posed->seconds, posed->seconds / std::max(1e-9, plan->statistics.seconds),
+                  posed->plan.jgAfterMm2 > plan->jgAfterMm2 + 1e-6 ? "  WORSE than up y" : "");
+    }
     std::fflush(stdout);
+  }
+  if (!autoShares.empty()) {
+    std::sort(autoShares.begin(), autoShares.end());
+    const std::size_t n = autoShares.size();
+    std::printf("auto: median after/(up-y before) %.2f %%\n",
+                n % 2 ? autoShares[n / 2] : 0.5 * (autoShares[n / 2 - 1] + autoShares[n / 2]));
   }
   if (!shares.empty()) {
     std::sort(shares.begin(), shares.end());

@@ -4,7 +4,7 @@
 <context>
     <name>AddPlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="43"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="50"/>
         <source>Add plane %1</source>
         <translation>Ebene %1 hinzufügen</translation>
     </message>
@@ -12,7 +12,7 @@
 <context>
     <name>DeletePlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="46"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="55"/>
         <source>Delete plane %1</source>
         <translation>Ebene %1 löschen</translation>
     </message>
@@ -20,7 +20,7 @@
 <context>
     <name>MovePlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="34"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
         <source>Move plane %1</source>
         <translation>Ebene %1 verschieben</translation>
     </message>
@@ -28,37 +28,37 @@
 <context>
     <name>PlanEditRefusal</name>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="34"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="38"/>
         <source>The edit was not applied: %1 (%2)</source>
         <translation>Die Änderung wurde nicht übernommen: %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="39"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="43"/>
         <source>Plane %1 would cut the platform region: move it up or tilt it less.</source>
         <translation>Ebene %1 würde den Plattformbereich schneiden: verschieben Sie sie nach oben oder neigen Sie sie weniger.</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="41"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="45"/>
         <source>Plane %1 would leave a piece below it that no longer stands on the platform: move or tilt it so that the part below stays in one piece on the platform.</source>
         <translation>Ebene %1 würde darunter ein Stück zurücklassen, das nicht mehr auf der Plattform steht: verschieben oder neigen Sie sie so, dass der Teil darunter in einem Stück auf der Plattform bleibt.</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="46"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="50"/>
         <source>The machine cannot print along the normal of plane %1: tilt it back within the machine&apos;s limits.</source>
         <translation>Die Maschine kann nicht entlang der Normalen von Ebene %1 drucken: neigen Sie sie zurück in die Grenzen der Maschine.</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="50"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="54"/>
         <source>Plane %1 would cut nothing off: move it into the part it cuts.</source>
         <translation>Ebene %1 würde nichts abtrennen: verschieben Sie sie in das Teil, das sie schneidet.</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="52"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="56"/>
         <source>Plane %1 would leave nothing below it on the platform: move it up.</source>
         <translation>Unter Ebene %1 bliebe nichts auf der Plattform: verschieben Sie sie nach oben.</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="53"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="57"/>
         <source>Plane %1 was refused: %2</source>
         <translation>Ebene %1 wurde abgelehnt: %2</translation>
     </message>
@@ -66,7 +66,7 @@
 <context>
     <name>TiltPlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="45"/>
         <source>Tilt plane %1</source>
         <translation>Ebene %1 neigen</translation>
     </message>
@@ -276,152 +276,153 @@
 <context>
     <name>multidir::ui::DeviceLink</name>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="29"/>
+        <location filename="../ui/device/device_link.cpp" line="30"/>
         <source>stall: the platform made no progress, so MultiDir stopped it</source>
         <translation>blockiert: die Plattform kam nicht voran, daher hat MultiDir sie angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="30"/>
+        <location filename="../ui/device/device_link.cpp" line="31"/>
         <source>stall: the controller lost its position (following error)</source>
         <translation>blockiert: die Steuerung hat ihre Position verloren (Schleppfehler)</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="33"/>
+        <location filename="../ui/device/device_link.cpp" line="34"/>
         <source>heartbeat lost: the controller stopped because MultiDir went silent</source>
         <translation>Heartbeat verloren: die Steuerung hat angehalten, weil MultiDir nicht mehr antwortete</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="36"/>
+        <location filename="../ui/device/device_link.cpp" line="37"/>
         <source>a limit switch was hit</source>
         <translation>ein Endschalter wurde ausgelöst</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="39"/>
+        <location filename="../ui/device/device_link.cpp" line="40"/>
         <source>the controller rejected a command (not homed, or beyond its own limits)</source>
         <translation>die Steuerung hat einen Befehl abgelehnt (nicht referenziert oder außerhalb ihrer eigenen Grenzen)</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="42"/>
+        <location filename="../ui/device/device_link.cpp" line="43"/>
         <source>emergency stop: the power stage is off</source>
         <translation>Not-Halt: die Endstufe ist ausgeschaltet</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="45"/>
+        <location filename="../ui/device/device_link.cpp" line="46"/>
         <source>unknown fault code %1</source>
         <translation>unbekannter Fehlercode %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="48"/>
+        <location filename="../ui/device/device_link.cpp" line="49"/>
         <source>; press Clear fault, then Enable and Home</source>
         <translation>; drücken Sie „Fehler löschen“, dann „Aktivieren“ und „Referenzfahrt“</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="54"/>
+        <location filename="../ui/device/device_link.cpp" line="55"/>
         <source>the robot program is not running: start it on the teach pendant</source>
         <translation>das Roboterprogramm läuft nicht: starten Sie es am Handbediengerät</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="56"/>
+        <location filename="../ui/device/device_link.cpp" line="57"/>
         <source>halted by an emergency stop: press Clear fault before moving again</source>
         <translation>durch einen Not-Halt angehalten: drücken Sie „Fehler löschen“, bevor Sie wieder verfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="60"/>
+        <location filename="../ui/device/device_link.cpp" line="61"/>
         <source>the target was beyond the robot program&apos;s limits; press Clear fault</source>
         <translation>das Ziel lag außerhalb der Grenzen des Roboterprogramms; drücken Sie „Fehler löschen“</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="62"/>
+        <location filename="../ui/device/device_link.cpp" line="63"/>
         <source>the robot stopped because MultiDir&apos;s heartbeat was lost; press Clear fault</source>
         <translation>der Roboter hat angehalten, weil der Heartbeat von MultiDir ausblieb; drücken Sie „Fehler löschen“</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="64"/>
+        <location filename="../ui/device/device_link.cpp" line="65"/>
         <source>the robot program got an unknown command; press Clear fault</source>
         <translation>das Roboterprogramm hat einen unbekannten Befehl erhalten; drücken Sie „Fehler löschen“</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="66"/>
+        <location filename="../ui/device/device_link.cpp" line="67"/>
         <source>robot program fault code %1; press Clear fault</source>
         <translation>Fehlercode %1 des Roboterprogramms; drücken Sie „Fehler löschen“</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="210"/>
+        <location filename="../ui/device/device_link.cpp" line="213"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>Mit diesen Einstellungen ist keine Verbindung möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="213"/>
+        <location filename="../ui/device/device_link.cpp" line="216"/>
         <source>Could not connect yet; MultiDir keeps trying. %1</source>
         <translation>Noch keine Verbindung; MultiDir versucht es weiter. %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="241"/>
+        <location filename="../ui/device/device_link.cpp" line="244"/>
         <source>Enable</source>
         <translation>Aktivieren</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="244"/>
+        <location filename="../ui/device/device_link.cpp" line="247"/>
         <source>%1 does not apply to the robot arm: its program enables the arm; start it on the teach pendant.</source>
         <translation>%1 gilt nicht für den Roboterarm: sein Programm aktiviert den Arm; starten Sie es am Handbediengerät.</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="254"/>
+        <location filename="../ui/device/device_link.cpp" line="257"/>
         <source>Home</source>
         <translation>Referenzfahrt</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="261"/>
+        <location filename="../ui/device/device_link.cpp" line="264"/>
         <source>Go to %1</source>
         <translation>%1 anfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="264"/>
+        <location filename="../ui/device/device_link.cpp" line="267"/>
         <source>%1 refused: the robot arm takes a tilt and an azimuth.</source>
         <translation>%1 abgelehnt: der Roboterarm erwartet eine Neigung und einen Azimut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="271"/>
+        <location filename="../ui/device/device_link.cpp" line="274"/>
         <source>Go to tilt %1, azimuth %2</source>
         <translation>Neigung %1, Azimut %2 anfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="274"/>
+        <location filename="../ui/device/device_link.cpp" line="277"/>
         <source>%1 refused: the rotary platform takes one angle.</source>
         <translation>%1 abgelehnt: die Drehplattform erwartet einen einzigen Winkel.</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="281"/>
+        <location filename="../ui/device/device_link.cpp" line="284"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="287"/>
+        <location filename="../ui/device/device_link.cpp" line="290"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="512"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="293"/>
+        <location filename="../ui/device/device_link.cpp" line="296"/>
         <source>Clear fault</source>
         <translation>Fehler löschen</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="308"/>
+        <location filename="../ui/device/device_link.cpp" line="314"/>
         <source>%1 refused: not connected; connect to the device first.</source>
         <translation>%1 abgelehnt: nicht verbunden; verbinden Sie zuerst das Gerät.</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="320"/>
+        <location filename="../ui/device/device_link.cpp" line="326"/>
         <source>%1 refused, nothing was sent: %2</source>
         <translation>%1 abgelehnt, nichts wurde gesendet: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="322"/>
+        <location filename="../ui/device/device_link.cpp" line="328"/>
         <source>%1 cancelled by Stop, E-STOP or Disconnect: %2</source>
         <translation>%1 durch Stopp, NOT-HALT oder Trennen abgebrochen: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="324"/>
+        <location filename="../ui/device/device_link.cpp" line="330"/>
         <source>%1 failed at the device or on the link: %2</source>
         <translation>%1 ist am Gerät oder auf der Verbindung fehlgeschlagen: %2</translation>
     </message>
@@ -499,7 +500,17 @@
         <translation>Das Gerät hat einen Fehler gemeldet.</translation>
     </message>
     <message>
+        <location filename="../ui/error_text.cpp" line="48"/>
+        <source>A program MultiDir runs (the slicer) is missing or failed.</source>
+        <translation>Ein von MultiDir ausgeführtes Programm (der Slicer) fehlt oder ist fehlgeschlagen.</translation>
+    </message>
+    <message>
         <location filename="../ui/error_text.cpp" line="50"/>
+        <source>The produced G-code failed MultiDir&apos;s safety checks.</source>
+        <translation>Der erzeugte G-Code hat die Sicherheitsprüfungen von MultiDir nicht bestanden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="54"/>
         <source>An internal error occurred: please report it with the model.</source>
         <translation>Ein interner Fehler ist aufgetreten: bitte melden Sie ihn zusammen mit dem Modell.</translation>
     </message>
@@ -507,403 +518,473 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="57"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="61"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="59"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="63"/>
         <source>Reconnecting…</source>
         <translation>Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="60"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="64"/>
         <source>Connecting…</source>
         <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="62"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="64"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
         <source>Fault</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
         <source>idle</source>
         <translation>im Leerlauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
         <source>turning the platform</source>
         <translation>Plattform wird gedreht</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
         <source>settling</source>
         <translation>Beruhigungszeit</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>finished</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>stopped by a device problem</source>
         <translation>durch ein Geräteproblem angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="93"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="97"/>
         <source>angle %1</source>
         <translation>Winkel %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="373"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
         <source>tilt %1, azimuth %2</source>
         <translation>Neigung %1, Azimut %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="163"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="107"/>
+        <source>Clear fault, then Enable and Home</source>
+        <translation>„Fehler löschen“, dann „Aktivieren“ und „Referenzfahrt“</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="108"/>
+        <source>Clear fault; the robot program then takes moves again</source>
+        <translation>„Fehler löschen“; danach nimmt das Roboterprogramm wieder Fahrbefehle an</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="193"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="166"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="196"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="167"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="197"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="168"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="198"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>Schließt die Verbindung, ohne dem Gerät einen Befehl zu senden; sein Heartbeat-Watchdog hält es an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="182"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="212"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="191"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="192"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="225"/>
+        <source>Enabled:</source>
+        <translation>Aktiviert:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="226"/>
         <source>Position:</source>
         <translation>Position:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="193"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="227"/>
         <source>Moving:</source>
         <translation>In Bewegung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="194"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="228"/>
         <source>Homed:</source>
         <translation>Referenziert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="195"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
         <source>Fault:</source>
         <translation>Fehler:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="196"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="230"/>
         <source>Heartbeat:</source>
         <translation>Heartbeat:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="197"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="231"/>
         <source>Last problem:</source>
         <translation>Letztes Problem:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="202"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="236"/>
         <source>Controls</source>
         <translation>Steuerung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="203"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
         <source>Enable</source>
         <translation>Aktivieren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="203"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>Schaltet den Antrieb der Plattform ein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="204"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
         <source>Home</source>
         <translation>Referenzfahrt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="205"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="239"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>Drehplattform: sucht den Referenzschalter (0°). Roboterarm: richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="206"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
         <source>Clear fault</source>
         <translation>Fehler löschen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="207"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="241"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>Setzt das Gerät nach einem Fehler oder NOT-HALT zurück; danach erneut aktivieren und referenzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="211"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
         <source>Tilt</source>
         <translation>Neigung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="212"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
         <source>Azimuth</source>
         <translation>Azimut</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="213"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
         <source>Jog −</source>
         <translation>Tippen −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
         <source>Jog +</source>
         <translation>Tippen +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="218"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
         <source>Angle:</source>
         <translation>Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Tilt:</source>
         <translation>Neigung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="220"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Azimuth:</source>
         <translation>Azimut:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="221"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
         <source>Go to</source>
         <translation>Anfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>Bremst ab und hält an; verwirft wartende Befehle.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="224"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="307"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="225"/>
-        <source>Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards.</source>
-        <translation>Not-Halt: unterbricht die Bewegung sofort. Danach den Fehler löschen, erneut aktivieren und referenzieren.</translation>
+        <location filename="../ui/device/hardware_panel.cpp" line="530"/>
+        <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
+        <translation>Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (%2) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="235"/>
+        <source>Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards.</source>
+        <translation type="vanished">Not-Halt: unterbricht die Bewegung sofort. Danach den Fehler löschen, erneut aktivieren und referenzieren.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
         <source>Jog step:</source>
         <translation>Tippschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="317"/>
         <source>Print run</source>
         <translation>Drucklauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="456"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="319"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="586"/>
         <source>Start run</source>
         <translation>Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="320"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>Dreht die Plattform in Druckreihenfolge in die Ausrichtung jedes Bereichs und fordert dazu auf, jeden Bereich zu drucken.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="303"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="329"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
         <source>Region done</source>
         <translation>Bereich fertig</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="275"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="330"/>
         <source>Press when the region asked for has been printed.</source>
         <translation>Drücken, sobald der angeforderte Bereich gedruckt ist.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="276"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="304"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="331"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="305"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="332"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>Setzt einen pausierten Lauf fort oder wiederholt nach einem Geräteproblem den aktuellen Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
         <source>Abort</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="292"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
         <source>Step:</source>
         <translation>Schritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="293"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="348"/>
         <source>Elapsed:</source>
         <translation>Verstrichen:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="345"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
+        <translation>Die Verbindung zu %1 ist um %2 abgerissen. Die Werte unten stammen nicht mehr vom Gerät; MultiDir versucht weiter, die Verbindung wiederherzustellen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
+        <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
+        <translation>Der Drucklauf ist pausiert: ein Bereich, der gerade gedruckt wird, darf fertig werden, aber kein neuer Bereich beginnt. Drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
+        <source>%1 does not answer: %2</source>
+        <translation>%1 antwortet nicht: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
+        <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
+        <translation>Die Verbindung steht wieder. Der Drucklauf ist seit dem Verbindungsabbruch weiterhin pausiert: prüfen Sie die Plattform und drücken Sie dann „Fortsetzen“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="435"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>Mit diesen Einstellungen ist keine Verbindung möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="349"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="439"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="357"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
         <source>Disconnected.</source>
         <translation>Getrennt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="369"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="458"/>
+        <source>Not reachable; MultiDir keeps trying…</source>
+        <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <source>Link lost at %1; reconnecting…</source>
+        <translation>Verbindung um %1 abgerissen; Verbindung wird wiederhergestellt…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
+        <source>no: press Enable</source>
+        <translation>nein: drücken Sie „Aktivieren“</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="471"/>
         <source>%1 (target %2)</source>
         <translation>%1 (Ziel %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
         <source>homing</source>
         <translation>Referenzfahrt läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="374"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="374"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="375"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="477"/>
         <source>not needed (robot arm)</source>
         <translation>nicht nötig (Roboterarm)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="377"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="499"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="386"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="488"/>
+        <source>unknown: not read yet</source>
+        <translation>unbekannt: noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="491"/>
+        <source>unknown since %1 (last read: %2)</source>
+        <translation>unbekannt seit %1 (zuletzt gelesen: %2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="513"/>
+        <source>%1: sent to the device. To go on: %2.</source>
+        <translation>%1: an das Gerät gesendet. Zum Weitermachen: %2.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
         <source>%1: sent to the device.</source>
         <translation>%1: an das Gerät gesendet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="393"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="521"/>
         <source>Connected to %1.</source>
         <translation>Verbunden mit %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
         <source>The print run stopped: %1. Fix the device (Clear fault, Enable, Home), then press Resume to retry this step, or Abort.</source>
-        <translation>Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (Fehler löschen, Aktivieren, Referenzfahrt) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
+        <translation type="vanished">Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (Fehler löschen, Aktivieren, Referenzfahrt) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="407"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="534"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>Der Drucklauf ist abgeschlossen: jeder Bereich wurde gedruckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="409"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="536"/>
         <source>The print run was aborted.</source>
         <translation>Der Drucklauf wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="416"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="545"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>Drucken Sie Bereich %1 (Datei %2) und drücken Sie dann „Bereich fertig“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="443"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="572"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>„Lauf starten“ abgelehnt: nicht verbunden; verbinden Sie zuerst das Gerät.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="450"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
         <source>Start run refused: %1</source>
         <translation>„Lauf starten“ abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="590"/>
         <source>%1 refused: %2</source>
         <translation>%1 abgelehnt: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="478"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="609"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>Grenzen: %1 bis %2 in Schritten von %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="480"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="611"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>Grenzen: Neigung bis %1, %n verbotener Kegel</numerusform>
@@ -911,42 +992,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="483"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
         <source> (machine profile)</source>
         <translation> (Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="485"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="616"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation> (Standardwerte: das Maschinenprofil gilt für eine %1-Maschine)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="488"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
         <source> (defaults: no machine profile)</source>
         <translation> (Standardwerte: kein Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="489"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="620"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>; ein geändertes Profil gilt ab dem nächsten Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="544"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="638"/>
+        <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
+        <translation>Not-Halt: schaltet die Endstufe der Plattform sofort ab. Danach: %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="640"/>
+        <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
+        <translation>Not-Halt: hält das Roboterprogramm mit größter Verzögerung an. Danach: %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="645"/>
+        <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
+        <translation>Setzt die Plattform nach einem Fehler oder NOT-HALT zurück; danach erneut „Aktivieren“ und „Referenzfahrt“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
+        <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
+        <translation>Setzt das Roboterprogramm nach einem Fehler oder NOT-HALT zurück; danach nimmt es wieder Fahrbefehle an.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="648"/>
+        <source>Finds the home switch (0°); the drive must be enabled.</source>
+        <translation>Sucht den Referenzschalter (0°); der Antrieb muss aktiviert sein.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
+        <source>Levels the platform (tilt 0°).</source>
+        <translation>Richtet die Plattform waagerecht aus (Neigung 0°).</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="693"/>
+        <source>unknown since %1</source>
+        <translation>unbekannt seit %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="695"/>
         <source>not seen yet</source>
         <translation>noch nicht empfangen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="547"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
         <source>%1 s ago</source>
         <translation>vor %1 s</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>Kein Plan: starten Sie zuerst eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>Plan mit %n Bereich.</numerusform>
@@ -954,7 +1070,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="714"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>%n Bereich gedruckt: abgeschlossen</numerusform>
@@ -962,17 +1078,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="565"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
         <source>%1 of %2: %3</source>
         <translation>%1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="567"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
         <source> (%1, %2)</source>
         <translation> (%1, %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="568"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="719"/>
         <source>; pausing after this region</source>
         <translation>; Pause nach diesem Bereich</translation>
     </message>
@@ -982,7 +1098,7 @@
     <message>
         <location filename="../ui/panels/jg_chart.cpp" line="27"/>
         <source>Level</source>
-        <translation>Ebene</translation>
+        <translation>Stufe</translation>
     </message>
     <message>
         <location filename="../ui/panels/jg_chart.cpp" line="32"/>
@@ -1111,17 +1227,17 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="72"/>
+        <location filename="../ui/main_window.cpp" line="76"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="97"/>
+        <location filename="../ui/main_window.cpp" line="103"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="98"/>
+        <location filename="../ui/main_window.cpp" line="104"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
@@ -1130,142 +1246,139 @@
         <translation type="vanished">Eine Netzdatei öffnen (STL, OBJ, OFF oder PLY)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="103"/>
         <source>&amp;Samples</source>
-        <translation>&amp;Beispiele</translation>
+        <translation type="vanished">&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="112"/>
         <source>Open &amp;plan...</source>
-        <translation>&amp;Plan öffnen...</translation>
+        <translation type="vanished">&amp;Plan öffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="114"/>
+        <location filename="../ui/main_window.cpp" line="122"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>Einen früher gespeicherten Plan anzeigen (ein Ordner mit plan.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="115"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
         <source>&amp;Export plan...</source>
         <translation>Plan &amp;exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="117"/>
+        <location filename="../ui/main_window.cpp" line="125"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>Den angezeigten Plan speichern: plan.json und eine STL-Datei je Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="123"/>
+        <location filename="../ui/main_window.cpp" line="131"/>
         <source>&amp;Load machine profile...</source>
         <translation>Maschinenprofil &amp;laden...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
         <source>&amp;Save machine profile...</source>
-        <translation>Maschinenprofil &amp;speichern...</translation>
+        <translation type="vanished">Maschinenprofil &amp;speichern...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="128"/>
+        <location filename="../ui/main_window.cpp" line="136"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="132"/>
+        <location filename="../ui/main_window.cpp" line="140"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="133"/>
+        <location filename="../ui/main_window.cpp" line="141"/>
         <source>&amp;Fit to View</source>
         <translation>In Ansicht ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="135"/>
+        <location filename="../ui/main_window.cpp" line="143"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>&amp;Modell zeigen (Plan ausblenden)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="140"/>
+        <location filename="../ui/main_window.cpp" line="148"/>
         <source>&amp;Search</source>
         <translation>&amp;Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="141"/>
+        <location filename="../ui/main_window.cpp" line="149"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="144"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="167"/>
+        <location filename="../ui/main_window.cpp" line="203"/>
         <source>Overhangs</source>
         <translation>Überhänge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="168"/>
+        <location filename="../ui/main_window.cpp" line="204"/>
         <source>Machine</source>
         <translation>Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="206"/>
         <source>Plan</source>
         <translation>Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="210"/>
+        <location filename="../ui/main_window.cpp" line="254"/>
         <source>Hardware</source>
         <translation>Hardware</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="229"/>
+        <location filename="../ui/main_window.cpp" line="279"/>
         <source>Printing direction</source>
         <translation>Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="232"/>
+        <location filename="../ui/main_window.cpp" line="282"/>
         <source>Up:</source>
         <translation>Oben:</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="237"/>
+        <location filename="../ui/main_window.cpp" line="287"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>Die Richtung, in der das Modell gedruckt wird: die Plattform liegt darunter, Überhänge werden daran gemessen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="242"/>
+        <location filename="../ui/main_window.cpp" line="292"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="242"/>
+        <location filename="../ui/main_window.cpp" line="292"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="294"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="294"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
@@ -1278,247 +1391,346 @@
         <translation type="vanished">Netze (*.stl *.obj *.off *.ply);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="100"/>
+        <location filename="../ui/main_window.cpp" line="107"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>Eine Netzdatei (STL, OBJ, OFF oder PLY) oder ein MultiDir-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="119"/>
         <source>Export Sc&amp;reenshot...</source>
-        <translation>Bildschirmfoto expo&amp;rtieren...</translation>
+        <translation type="vanished">Bildschirmfoto expo&amp;rtieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="121"/>
+        <location filename="../ui/main_window.cpp" line="129"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>Die 3D-Ansicht wie angezeigt als PNG- oder JPEG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="290"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
+        <source>Save machine pro&amp;file...</source>
+        <translation>Maschinenprofil &amp;speichern...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="161"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="162"/>
+        <source>&amp;About MultiDir Studio</source>
+        <translation>Ü&amp;ber MultiDir Studio</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="169"/>
+        <source>About MultiDir Studio</source>
+        <translation>Über MultiDir Studio</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="170"/>
+        <source>MultiDir Studio %1</source>
+        <translation>MultiDir Studio %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="172"/>
+        <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
+
+Qt %1</source>
+        <translation>Plant mehrrichtige 3D-Drucke: zerschneidet ein Modell mit Ebenen in Bereiche, die jeweils entlang ihrer eigenen Richtung gedruckt werden, und steuert die Maschine, die sie druckt.
+
+Qt %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="259"/>
+        <source>Emergency stop</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="358"/>
+        <source>The search was stopped; its result is dropped.</source>
+        <translation>Die Suche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="380"/>
         <source>Open Model or Project</source>
         <translation>Modell oder Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="291"/>
+        <location filename="../ui/main_window.cpp" line="381"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>Netze und Projekte (*.stl *.obj *.off *.ply *.multidir);;Netze (*.stl *.obj *.off *.ply);;MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="308"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>Benutzerdefiniert (%1, %2, %3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="330"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Repaired on load: %1</source>
         <translation>Beim Laden repariert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="348"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="352"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="356"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="376"/>
-        <location filename="../ui/main_window.cpp" line="393"/>
+        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>No model</source>
         <translation>Kein Modell</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="386"/>
+        <location filename="../ui/main_window.cpp" line="512"/>
         <source>Triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="387"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Volume: %1 mm³</source>
         <translation>Volumen: %1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="401"/>
+        <location filename="../ui/main_window.cpp" line="527"/>
         <source>Risky area unavailable</source>
         <translation>Risikofläche nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="409"/>
+        <location filename="../ui/main_window.cpp" line="535"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>Risikofläche (%1 oben): %2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="411"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>Fläche der Dreiecke, die bei dieser Aufwärtsrichtung um mehr als %1° überhängen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="553"/>
+        <location filename="../ui/main_window.cpp" line="572"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="555"/>
         <source>Fix the machine first: %1</source>
         <translation>Korrigieren Sie zuerst die Maschine: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="571"/>
         <source>A search is already running.</source>
         <translation>Eine Suche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="577"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="581"/>
         <source>Cannot search: %1</source>
         <translation>Suche nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="582"/>
         <source>Cannot search.</source>
         <translation>Suche nicht möglich.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="596"/>
         <source>Searching %1...</source>
         <translation>Durchsuche %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="604"/>
         <source>Cancelling the search...</source>
         <translation>Suche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="617"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>Das Suchergebnis wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="620"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>Suche abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="621"/>
         <source>Search finished.</source>
         <translation>Suche beendet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="499"/>
+        <location filename="../ui/main_window.cpp" line="634"/>
         <source>Search failed: %1</source>
         <translation>Suche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="545"/>
+        <location filename="../ui/main_window.cpp" line="665"/>
+        <source>Growing supports for the plan...</source>
+        <translation>Stützen für den Plan werden erzeugt...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="679"/>
+        <source>Supports grown for the plan.</source>
+        <translation>Stützen für den Plan erzeugt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="710"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>Es gibt keinen Plan zum Exportieren: starten Sie zuerst eine Suche.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="713"/>
+        <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
+        <translation>Die Stützen dieses Plans werden noch erzeugt: exportieren Sie ihn erneut, sobald die Statusleiste meldet, dass sie fertig sind.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="717"/>
+        <source>Could not create the folder %1: check that its parent exists and can be written.</source>
+        <translation>Der Ordner %1 konnte nicht angelegt werden: prüfen Sie, ob der übergeordnete Ordner existiert und beschreibbar ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="735"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>Der Plan konnte nicht nach %1 exportiert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="564"/>
+        <location filename="../ui/main_window.cpp" line="741"/>
+        <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
+        <translation>Plan ohne Stützen nach %1 exportiert, obwohl %2 mm² Risikofläche verbleiben: %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="743"/>
+        <source>no supports were grown for it.</source>
+        <translation>für ihn wurden keine Stützen erzeugt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="748"/>
         <source>Plan exported to %1.</source>
         <translation>Plan nach %1 exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="571"/>
+        <location filename="../ui/main_window.cpp" line="755"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>Der Plan %1 konnte nicht geöffnet werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="618"/>
+        <location filename="../ui/main_window.cpp" line="802"/>
         <source>Machine profile saved to %1.</source>
         <translation>Maschinenprofil unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="630"/>
+        <location filename="../ui/main_window.cpp" line="814"/>
         <source>Machine profile %1 loaded.</source>
         <translation>Maschinenprofil %1 geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="635"/>
+        <location filename="../ui/main_window.cpp" line="823"/>
         <source>Export Plan to Folder</source>
         <translation>Plan in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="638"/>
+        <location filename="../ui/main_window.cpp" line="823"/>
+        <source>-plan</source>
+        <translation>-Plan</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="824"/>
+        <source>Plan folders (*)</source>
+        <translation>Planordner (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="830"/>
+        <location filename="../ui/main_window.cpp" line="832"/>
         <source>Export Plan</source>
         <translation>Plan exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="648"/>
+        <location filename="../ui/main_window.cpp" line="843"/>
         <source>Screenshot saved to %1.</source>
         <translation>Bildschirmfoto unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="653"/>
+        <location filename="../ui/main_window.cpp" line="848"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="654"/>
+        <location filename="../ui/main_window.cpp" line="849"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG-Bilder (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="657"/>
-        <location filename="../ui/main_window.cpp" line="665"/>
+        <location filename="../ui/main_window.cpp" line="852"/>
+        <location filename="../ui/main_window.cpp" line="860"/>
         <source>Export Screenshot</source>
         <translation>Bildschirmfoto exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="669"/>
+        <location filename="../ui/main_window.cpp" line="865"/>
         <source>Open Plan Folder</source>
         <translation>Planordner öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="349"/>
         <source>Open Plan</source>
         <translation>Plan öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="676"/>
-        <location filename="../ui/main_window.cpp" line="680"/>
+        <location filename="../ui/main_window.cpp" line="110"/>
+        <source>Sa&amp;mples</source>
+        <translation>Beis&amp;piele</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="120"/>
+        <source>Open pla&amp;n...</source>
+        <translation>Pla&amp;n öffnen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="127"/>
+        <source>Export Screens&amp;hot...</source>
+        <translation>Bildschirmfoto expo&amp;rtieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="871"/>
+        <location filename="../ui/main_window.cpp" line="877"/>
         <source>Save Machine Profile</source>
         <translation>Maschinenprofil speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="677"/>
+        <location filename="../ui/main_window.cpp" line="873"/>
         <source>Machine profiles (*.json)</source>
         <translation>Maschinenprofile (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="684"/>
-        <location filename="../ui/main_window.cpp" line="688"/>
+        <location filename="../ui/main_window.cpp" line="881"/>
+        <location filename="../ui/main_window.cpp" line="888"/>
         <source>Load Machine Profile</source>
         <translation>Maschinenprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="685"/>
+        <location filename="../ui/main_window.cpp" line="883"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>Maschinenprofile (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="692"/>
+        <location filename="../ui/main_window.cpp" line="901"/>
         <source>Loading %1...</source>
         <translation>Lade %1...</translation>
     </message>
@@ -1528,17 +1740,17 @@
         <translation>Plan bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="54"/>
+        <location filename="../ui/edit/main_window_editing.cpp" line="61"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="56"/>
+        <location filename="../ui/edit/main_window_editing.cpp" line="63"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="59"/>
+        <location filename="../ui/edit/main_window_editing.cpp" line="66"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
@@ -1560,52 +1772,52 @@
 <context>
     <name>multidir::ui::OverhangPanel</name>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="25"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="29"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="29"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="32"/>
         <source>Maximal self-supporting angle: faces that lean over by more than this from the printing direction need support</source>
         <translation>Größter selbsttragender Winkel: Flächen, die stärker als dieser Winkel überhängen, brauchen Stützen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="58"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="65"/>
         <source>Risky faces (need support when printed along the up direction)</source>
         <translation>Risikoflächen (brauchen Stützen beim Druck in Aufwärtsrichtung)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="61"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="68"/>
         <source>Max. overhang angle α:</source>
         <translation>Max. Überhangwinkel α:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="62"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="69"/>
         <source>Risky area:</source>
         <translation>Risikofläche:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="63"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="70"/>
         <source>Risky faces:</source>
         <translation>Risikoflächen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="68"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="75"/>
         <source>No model</source>
         <translation>Kein Modell</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="76"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="83"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="78"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="85"/>
         <source>%1 of %2</source>
         <translation>%1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="83"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="90"/>
         <source>unavailable</source>
         <translation>nicht verfügbar</translation>
     </message>
@@ -1783,321 +1995,364 @@
 <context>
     <name>multidir::ui::PlaneEditPanel</name>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="89"/>
         <source>Plane</source>
         <translation>Ebene</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="89"/>
         <source>Normal</source>
         <translation>Normale</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="89"/>
         <source>Offset (mm)</source>
         <translation>Versatz (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="98"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="91"/>
+        <source>Planes are numbered in printing order, like the regions: plane k is the base of region k + 1</source>
+        <translation>Ebenen sind wie die Bereiche in Druckreihenfolge nummeriert: Ebene k ist die Grundfläche von Bereich k + 1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="105"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="100"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="107"/>
         <source>Distance of the plane from the origin along its normal</source>
         <translation>Abstand der Ebene vom Ursprung entlang ihrer Normalen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="103"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="110"/>
         <source>Moves the plane along its normal across what is left of the model</source>
         <translation>Verschiebt die Ebene entlang ihrer Normalen über den verbleibenden Teil des Modells</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="106"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="113"/>
         <source>Offset:</source>
         <translation>Versatz:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="118"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="125"/>
         <source>Tilt:</source>
         <translation>Neigung:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="119"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="126"/>
         <source>Azimuth:</source>
         <translation>Azimut:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="128"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="135"/>
         <source>Rotary angle:</source>
         <translation>Drehwinkel:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="131"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="138"/>
         <source>&amp;Add plane</source>
         <translation>Ebene &amp;hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="134"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="141"/>
         <source>Splits the piece above the selected plane in two (or, with no plane selected, cuts what is left on the platform at mid-height)</source>
         <translation>Teilt das Stück über der gewählten Ebene in zwei (oder schneidet, wenn keine Ebene gewählt ist, den auf der Plattform verbleibenden Teil auf halber Höhe)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="136"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="143"/>
         <source>&amp;Delete plane</source>
         <translation>Ebene &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="138"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="145"/>
         <source>Updating the plan...</source>
         <translation>Plan wird aktualisiert...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="232"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="261"/>
         <source>No plan to edit: run a search or open a plan.</source>
         <translation>Kein Plan zum Bearbeiten: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="234"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="263"/>
         <source>This plan is shown without its model: open the model it was made from to edit it.</source>
         <translation>Dieser Plan wird ohne sein Modell angezeigt: öffnen Sie das Modell, aus dem er erstellt wurde, um ihn zu bearbeiten.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="236"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="265"/>
         <source>Select a plane to move, tilt or delete it. Every change can be undone (Ctrl+Z).</source>
         <translation>Wählen Sie eine Ebene, um sie zu verschieben, zu neigen oder zu löschen. Jede Änderung lässt sich rückgängig machen (Strg+Z).</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="249"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="278"/>
         <source>J_G before: %1 mm² (the whole model printed along up)
 J_G after: %2 mm² (%3 mm² before editing)</source>
         <translation>J_G vorher: %1 mm² (ganzes Modell in Aufwärtsrichtung gedruckt)
 J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="413"/>
+        <source>Tilting turns the plane about the middle of its cut, so its offset (measured from the origin along the normal) went from %1 mm to %2 mm.</source>
+        <translation>Beim Neigen dreht sich die Ebene um die Mitte ihrer Schnittfläche, daher hat sich ihr Versatz (vom Ursprung entlang der Normalen gemessen) von %1 mm auf %2 mm geändert.</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PrintRunDriver</name>
+    <message>
+        <location filename="../ui/device/print_run_driver.cpp" line="134"/>
+        <source>the link to %1 was lost: the run is paused; press Resume once the link is back</source>
+        <translation>die Verbindung zu %1 ist abgerissen: der Lauf ist pausiert; drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::ProjectSession</name>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="86"/>
+        <location filename="../ui/project/project_session.cpp" line="87"/>
         <source>Open &amp;Project...</source>
         <translation>Pr&amp;ojekt öffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="88"/>
+        <location filename="../ui/project/project_session.cpp" line="89"/>
         <source>Open a MultiDir project (.multidir): its model, settings and plan</source>
         <translation>Ein MultiDir-Projekt (.multidir) öffnen: sein Modell, seine Einstellungen und seinen Plan</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="92"/>
+        <location filename="../ui/project/project_session.cpp" line="93"/>
         <source>&amp;Save Project</source>
         <translation>Pro&amp;jekt speichern</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="95"/>
+        <location filename="../ui/project/project_session.cpp" line="96"/>
         <source>Save the model reference, the settings and the plan in a project file</source>
         <translation>Modellverweis, Einstellungen und Plan in einer Projektdatei speichern</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="96"/>
+        <location filename="../ui/project/project_session.cpp" line="97"/>
         <source>Save Project &amp;As...</source>
         <translation>Projekt speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="107"/>
+        <location filename="../ui/project/project_session.cpp" line="108"/>
         <source>There is no model to save a project for: open a model first.</source>
         <translation>Es gibt kein Modell, für das ein Projekt gespeichert werden könnte: öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="116"/>
+        <location filename="../ui/project/project_session.cpp" line="117"/>
         <source>The model shown has no file (it is the regions of a plan opened without its model): open the model itself to save a project.</source>
         <translation>Das angezeigte Modell hat keine Datei (es besteht aus den Bereichen eines ohne sein Modell geöffneten Plans): öffnen Sie das Modell selbst, um ein Projekt zu speichern.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="135"/>
+        <location filename="../ui/project/project_session.cpp" line="136"/>
         <source>Wait until the project has opened before saving.</source>
         <translation>Warten Sie mit dem Speichern, bis das Projekt geöffnet ist.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="138"/>
+        <location filename="../ui/project/project_session.cpp" line="139"/>
         <source>Cannot save the project: %1</source>
         <translation>Das Projekt kann nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="141"/>
+        <location filename="../ui/project/project_session.cpp" line="142"/>
         <source>Could not save the project %1: %2 (%3)</source>
         <translation>Das Projekt %1 konnte nicht gespeichert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="147"/>
+        <location filename="../ui/project/project_session.cpp" line="149"/>
         <source>Project saved to %1.</source>
         <translation>Projekt unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="159"/>
-        <location filename="../ui/project/project_session.cpp" line="172"/>
-        <location filename="../ui/project/project_session.cpp" line="177"/>
+        <location filename="../ui/project/project_session.cpp" line="161"/>
+        <location filename="../ui/project/project_session.cpp" line="175"/>
+        <location filename="../ui/project/project_session.cpp" line="180"/>
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="172"/>
+        <location filename="../ui/project/project_session.cpp" line="175"/>
         <source>MultiDir projects (*.multidir)</source>
         <translation>MultiDir-Projekte (*.multidir)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="181"/>
-        <location filename="../ui/project/project_session.cpp" line="519"/>
+        <location filename="../ui/project/project_session.cpp" line="185"/>
+        <location filename="../ui/project/project_session.cpp" line="571"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="182"/>
+        <location filename="../ui/project/project_session.cpp" line="186"/>
         <source>MultiDir projects (*.multidir);;All files (*)</source>
         <translation>MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="203"/>
+        <location filename="../ui/project/project_session.cpp" line="220"/>
+        <source>Search Running</source>
+        <translation>Suche läuft</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="221"/>
+        <source>A search is running on %1.</source>
+        <translation>Für %1 läuft gerade eine Suche.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="222"/>
+        <source>the model shown</source>
+        <translation>das angezeigte Modell</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="225"/>
+        <source>Stop it? Its result is then dropped.</source>
+        <translation>Anhalten? Ihr Ergebnis wird dann verworfen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="226"/>
+        <source>S&amp;top the Search</source>
+        <translation>Suche an&amp;halten</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="250"/>
         <source>%1 is no longer there; it was taken off the recent files.</source>
         <translation>%1 ist nicht mehr vorhanden und wurde aus der Liste der zuletzt geöffneten Dateien entfernt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="223"/>
+        <location filename="../ui/project/project_session.cpp" line="270"/>
         <source>Cannot open %1: drop a mesh file (.stl, .obj, .off, .ply) or a MultiDir project (.multidir).</source>
         <translation>%1 kann nicht geöffnet werden: ziehen Sie eine Netzdatei (.stl, .obj, .off, .ply) oder ein MultiDir-Projekt (.multidir) hierher.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="236"/>
+        <location filename="../ui/project/project_session.cpp" line="283"/>
         <source>There is no autosaved project to recover.</source>
         <translation>Es gibt kein automatisch gespeichertes Projekt zum Wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="246"/>
+        <location filename="../ui/project/project_session.cpp" line="293"/>
         <source>Recover Unsaved Work</source>
         <translation>Nicht gespeicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="247"/>
+        <location filename="../ui/project/project_session.cpp" line="294"/>
         <source>MultiDir Studio did not close properly. Recover the project it autosaved on %1?</source>
         <translation>MultiDir Studio wurde nicht ordnungsgemäß beendet. Das am %1 automatisch gespeicherte Projekt wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="252"/>
+        <location filename="../ui/project/project_session.cpp" line="299"/>
         <source>It was an untitled project.</source>
         <translation>Es war ein unbenanntes Projekt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="253"/>
+        <location filename="../ui/project/project_session.cpp" line="300"/>
         <source>It holds unsaved changes to %1.</source>
         <translation>Es enthält nicht gespeicherte Änderungen an %1.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="254"/>
+        <location filename="../ui/project/project_session.cpp" line="301"/>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="255"/>
+        <location filename="../ui/project/project_session.cpp" line="302"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="256"/>
+        <location filename="../ui/project/project_session.cpp" line="303"/>
         <source>&amp;Later</source>
         <translation>&amp;Später</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="300"/>
+        <location filename="../ui/project/project_session.cpp" line="347"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="301"/>
+        <location filename="../ui/project/project_session.cpp" line="348"/>
         <source>Unsaved Changes</source>
         <translation>Nicht gespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="302"/>
+        <location filename="../ui/project/project_session.cpp" line="349"/>
         <source>The project %1 has changes that are not saved.</source>
         <translation>Das Projekt %1 enthält Änderungen, die nicht gespeichert sind.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="305"/>
+        <location filename="../ui/project/project_session.cpp" line="352"/>
         <source>Save them first?</source>
         <translation>Zuerst speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="392"/>
-        <location filename="../ui/project/project_session.cpp" line="428"/>
+        <location filename="../ui/project/project_session.cpp" line="442"/>
+        <location filename="../ui/project/project_session.cpp" line="480"/>
         <source>Opening %1 was interrupted: another model was opened.</source>
         <translation>Das Öffnen von %1 wurde unterbrochen: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="408"/>
+        <location filename="../ui/project/project_session.cpp" line="460"/>
         <source>Rebuilding the plan of %1...</source>
         <translation>Plan von %1 wird neu aufgebaut...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="435"/>
+        <location filename="../ui/project/project_session.cpp" line="487"/>
         <source>The model file %1 changed since the project was saved; the plan was recomputed on the changed file.</source>
         <translation>Die Modelldatei %1 hat sich seit dem Speichern des Projekts geändert; der Plan wurde für die geänderte Datei neu berechnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="449"/>
+        <location filename="../ui/project/project_session.cpp" line="501"/>
         <source>The rebuilt plan leaves %1 mm² of risky area; the project saved %2 mm².</source>
         <translation>Der neu aufgebaute Plan lässt %1 mm² Risikofläche übrig; im Projekt gespeichert waren %2 mm².</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="454"/>
+        <location filename="../ui/project/project_session.cpp" line="506"/>
         <source>The plan could not be rebuilt on this model (%1); the model is shown without it.</source>
         <translation>Der Plan konnte für dieses Modell nicht neu aufgebaut werden (%1); das Modell wird ohne ihn angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="470"/>
+        <location filename="../ui/project/project_session.cpp" line="522"/>
         <source>Recovered the autosaved project.</source>
         <translation>Das automatisch gespeicherte Projekt wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="471"/>
+        <location filename="../ui/project/project_session.cpp" line="523"/>
         <source>Project %1 opened.</source>
         <translation>Projekt %1 geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="474"/>
+        <location filename="../ui/project/project_session.cpp" line="526"/>
         <source>Project %1</source>
         <translation>Projekt %1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="484"/>
+        <location filename="../ui/project/project_session.cpp" line="536"/>
         <source>Could not open the project %1: %2</source>
         <translation>Das Projekt %1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="499"/>
+        <location filename="../ui/project/project_session.cpp" line="551"/>
         <source>Could not open the project %1: its model %2 is missing.</source>
         <translation>Das Projekt %1 konnte nicht geöffnet werden: sein Modell %2 fehlt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="500"/>
+        <location filename="../ui/project/project_session.cpp" line="552"/>
         <source>Put the model back at %1, or open the model where it is now and save the project again.</source>
         <translation>Legen Sie das Modell wieder unter %1 ab, oder öffnen Sie das Modell an seinem jetzigen Ort und speichern Sie das Projekt erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="505"/>
+        <location filename="../ui/project/project_session.cpp" line="557"/>
         <source>Opening the project %1...</source>
         <translation>Projekt %1 wird geöffnet...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="518"/>
+        <location filename="../ui/project/project_session.cpp" line="570"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <location filename="../ui/project/project_session.cpp" line="600"/>
         <source>MultiDir Studio[*]</source>
         <translation>MultiDir Studio[*]</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <location filename="../ui/project/project_session.cpp" line="600"/>
         <source>%1[*] - MultiDir Studio</source>
         <translation>%1[*] - MultiDir Studio</translation>
     </message>
@@ -2143,18 +2398,18 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="89"/>
+        <location filename="../ui/jobs/search_job.cpp" line="91"/>
         <source>growing supports</source>
         <translation>Stützen werden erzeugt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="100"/>
+        <location filename="../ui/jobs/search_job.cpp" line="102"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>Nicht genug Speicher für diese Suche: verringern Sie die Strahlbreite oder die Zahl der Normalen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="103"/>
-        <location filename="../ui/jobs/search_job.cpp" line="107"/>
+        <location filename="../ui/jobs/search_job.cpp" line="105"/>
+        <location filename="../ui/jobs/search_job.cpp" line="109"/>
         <source>Unexpected error during the search.</source>
         <translation>Unerwarteter Fehler während der Suche.</translation>
     </message>
@@ -2162,189 +2417,258 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SearchPanel</name>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="36"/>
+        <location filename="../ui/panels/search_panel.cpp" line="43"/>
         <source>Beam search (Algorithm 1)</source>
         <translation>Strahlsuche (Algorithmus 1)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="37"/>
+        <location filename="../ui/panels/search_panel.cpp" line="44"/>
         <source>Constrained greedy</source>
         <translation>Eingeschränkt gierig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="38"/>
+        <location filename="../ui/panels/search_panel.cpp" line="45"/>
         <source>Greedy</source>
         <translation>Gierig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="43"/>
+        <location filename="../ui/panels/search_panel.cpp" line="50"/>
         <source>How many partial plans each level keeps (b)</source>
         <translation>Wie viele Teilpläne jede Ebene behält (b)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="49"/>
+        <location filename="../ui/panels/search_panel.cpp" line="56"/>
         <source>w: every region cut off keeps at least the model&apos;s volume divided by w</source>
         <translation>w: jeder abgetrennte Bereich behält mindestens das Modellvolumen geteilt durch w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="54"/>
+        <location filename="../ui/panels/search_panel.cpp" line="61"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>Kandidatennormalen, auf der ganzen Kugel abgetastet (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="59"/>
+        <location filename="../ui/panels/search_panel.cpp" line="66"/>
+        <location filename="../ui/panels/search_panel.cpp" line="80"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="61"/>
+        <location filename="../ui/panels/search_panel.cpp" line="68"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>Abstand der Kandidatenebenen entlang jeder Normalen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="66"/>
+        <location filename="../ui/panels/search_panel.cpp" line="73"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="68"/>
+        <location filename="../ui/panels/search_panel.cpp" line="75"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>Größter selbsttragender Winkel, mit dem die Suche plant</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="73"/>
+        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
+        <translation>Kein Bereich, auch nicht der auf der Plattform, ist entlang seiner Druckrichtung dünner als dieser Wert</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="88"/>
+        <source> % of J_G</source>
+        <translation> % von J_G</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="90"/>
+        <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
+        <translation>Eine Ebene bleibt nur, wenn ihr Entfernen J_G um mindestens diesen Anteil des vorherigen J_G (und um mindestens 1 mm²) erhöhen würde: jeder Bereich kostet eine Plattformbewegung und eine Naht</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="96"/>
         <source>machine&apos;s axis only</source>
         <translation>nur Achse der Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="74"/>
+        <location filename="../ui/panels/search_panel.cpp" line="97"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4-DOF: zusätzlich so viele über 180° verteilte Drehachsen probieren und die beste behalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="77"/>
+        <location filename="../ui/panels/search_panel.cpp" line="100"/>
         <source>Scheme:</source>
         <translation>Verfahren:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="78"/>
+        <location filename="../ui/panels/search_panel.cpp" line="101"/>
         <source>Beam width:</source>
         <translation>Strahlbreite:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="79"/>
+        <location filename="../ui/panels/search_panel.cpp" line="102"/>
         <source>Volume divisor w:</source>
         <translation>Volumenteiler w:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="80"/>
+        <location filename="../ui/panels/search_panel.cpp" line="103"/>
         <source>Normals:</source>
         <translation>Normalen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="81"/>
+        <location filename="../ui/panels/search_panel.cpp" line="104"/>
         <source>Offset step:</source>
         <translation>Versatzschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="105"/>
         <source>Max. overhang angle α:</source>
         <translation>Max. Überhangwinkel α:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="83"/>
+        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <source>Min. region height:</source>
+        <translation>Min. Bereichshöhe:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <source>Min. gain per plane:</source>
+        <translation>Min. Gewinn je Ebene:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="108"/>
         <source>Axes to try:</source>
         <translation>Zu probierende Achsen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="86"/>
+        <location filename="../ui/panels/search_panel.cpp" line="111"/>
         <source>&amp;Run search</source>
         <translation>Suche &amp;starten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="89"/>
+        <location filename="../ui/panels/search_panel.cpp" line="114"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="109"/>
+        <location filename="../ui/panels/search_panel.cpp" line="138"/>
         <source>Progress</source>
         <translation>Fortschritt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="117"/>
+        <location filename="../ui/panels/search_panel.cpp" line="146"/>
         <source>Level:</source>
-        <translation>Ebene:</translation>
+        <translation>Stufe:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="118"/>
+        <location filename="../ui/panels/search_panel.cpp" line="147"/>
         <source>Beams alive:</source>
         <translation>Aktive Strahlen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="119"/>
+        <location filename="../ui/panels/search_panel.cpp" line="148"/>
         <source>Best J_G:</source>
         <translation>Bestes J_G:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="120"/>
+        <location filename="../ui/panels/search_panel.cpp" line="149"/>
         <source>Candidates scored:</source>
         <translation>Bewertete Kandidaten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="141"/>
+        <location filename="../ui/panels/search_panel.cpp" line="170"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="180"/>
+        <location filename="../ui/panels/search_panel.cpp" line="217"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>Nach Schnittebenen suchen, mit denen das Modell mit weniger Stützen druckbar wird</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="198"/>
-        <source>Starting...</source>
-        <translation>Starte...</translation>
+        <location filename="../ui/panels/search_panel.cpp" line="280"/>
+        <source>Cancelling: keeping the best plan so far... %1</source>
+        <translation>Abbruch: der bisher beste Plan wird behalten... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="201"/>
-        <location filename="../ui/panels/search_panel.cpp" line="220"/>
-        <location filename="../ui/panels/search_panel.cpp" line="234"/>
+        <location filename="../ui/panels/search_panel.cpp" line="282"/>
+        <source>%1 %2 - %3</source>
+        <translation>%1 %2 - %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="284"/>
+        <source>Level 1 of %1: scoring candidates... %2</source>
+        <translation>Stufe 1 von %1: Kandidaten werden bewertet... %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="285"/>
+        <source>Scoring candidates... %1</source>
+        <translation>Kandidaten werden bewertet... %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <source>Level %1 of %2</source>
+        <translation>Stufe %1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <source>Level %1</source>
+        <translation>Ebene %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="289"/>
+        <source>Axis %1 of %2, %3</source>
+        <translation>Achse %1 von %2, %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="290"/>
+        <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
+        <translation>%1 · aktive Strahlen: %2 · bestes J_G %3 mm² · %4 Kandidaten · %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <source>Stopped</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Starting...</source>
+        <translation type="vanished">Starte...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="241"/>
+        <location filename="../ui/panels/search_panel.cpp" line="269"/>
+        <location filename="../ui/panels/search_panel.cpp" line="308"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="217"/>
+        <location filename="../ui/panels/search_panel.cpp" line="266"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1 (Achse %2 von %3)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="227"/>
         <source>Cancelling: keeping the best plan so far...</source>
-        <translation>Abbruch: der bisher beste Plan wird behalten...</translation>
+        <translation type="vanished">Abbruch: der bisher beste Plan wird behalten...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="233"/>
+        <location filename="../ui/panels/search_panel.cpp" line="307"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="233"/>
+        <location filename="../ui/panels/search_panel.cpp" line="307"/>
         <source>Done</source>
         <translation>Fertig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="239"/>
+        <location filename="../ui/panels/search_panel.cpp" line="313"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>Abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="243"/>
+        <location filename="../ui/panels/search_panel.cpp" line="317"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>Keine Verbesserung: keine Schnittebene verringert die Risikofläche (J_G bleibt %1 mm²). Versuchen Sie mehr Normalen, einen kleineren Versatzschritt, ein größeres w oder eine andere Maschine.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="248"/>
+        <location filename="../ui/panels/search_panel.cpp" line="322"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>Nicht stützenfrei: %1 mm² brauchen noch Stützen (vorher %2 mm²), in %n Bereich.</numerusform>
@@ -2352,7 +2676,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="252"/>
+        <location filename="../ui/panels/search_panel.cpp" line="326"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>Stützenfrei in %n Bereich (J_G war %1 mm²).</numerusform>
@@ -2360,12 +2684,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="260"/>
+        <location filename="../ui/panels/search_panel.cpp" line="335"/>
         <source>Failed</source>
         <translation>Fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="261"/>
+        <location filename="../ui/panels/search_panel.cpp" line="336"/>
         <source>%1
 %2</source>
         <translation>%1
@@ -2430,7 +2754,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Zu öffnende Netzdatei (.stl .obj .off .ply) oder MultiDir-Projekt (.multidir). Standard: das erste Beispiel.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="208"/>
+        <location filename="../ui/studio_startup.cpp" line="216"/>
         <source>The search or the project&apos;s plan did not finish within %1 s.</source>
         <translation>Die Suche oder der Plan des Projekts wurde nicht innerhalb von %1 s fertig.</translation>
     </message>
@@ -2474,7 +2798,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>--screenshot braucht einen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="200"/>
+        <location filename="../ui/studio_startup.cpp" line="208"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>Das Modell wurde nicht innerhalb von %1 s fertig geladen.</translation>
     </message>
@@ -2487,7 +2811,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation type="vanished">Das Bildschirmfoto konnte nicht nach %1 geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="222"/>
+        <location filename="../ui/studio_startup.cpp" line="230"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>Es wird kein Modell angezeigt; das Bildschirmfoto %1 zeigt das leere Fenster.</translation>
     </message>

@@ -4,7 +4,7 @@
 <context>
     <name>AddPlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="43"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="50"/>
         <source>Add plane %1</source>
         <translation>添加平面 %1</translation>
     </message>
@@ -12,7 +12,7 @@
 <context>
     <name>DeletePlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="46"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="55"/>
         <source>Delete plane %1</source>
         <translation>删除平面 %1</translation>
     </message>
@@ -20,7 +20,7 @@
 <context>
     <name>MovePlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="34"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
         <source>Move plane %1</source>
         <translation>移动平面 %1</translation>
     </message>
@@ -28,37 +28,37 @@
 <context>
     <name>PlanEditRefusal</name>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="34"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="38"/>
         <source>The edit was not applied: %1 (%2)</source>
         <translation>编辑未被应用：%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="39"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="43"/>
         <source>Plane %1 would cut the platform region: move it up or tilt it less.</source>
         <translation>平面 %1 会切入平台区域：请将其上移或减小倾斜。</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="41"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="45"/>
         <source>Plane %1 would leave a piece below it that no longer stands on the platform: move or tilt it so that the part below stays in one piece on the platform.</source>
         <translation>平面 %1 会在其下方留下一块不再立于平台上的部分：请移动或倾斜该平面，使其下方部分作为一个整体留在平台上。</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="46"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="50"/>
         <source>The machine cannot print along the normal of plane %1: tilt it back within the machine&apos;s limits.</source>
         <translation>机器无法沿平面 %1 的法向打印：请将其倾斜回机器的限制范围内。</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="50"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="54"/>
         <source>Plane %1 would cut nothing off: move it into the part it cuts.</source>
         <translation>平面 %1 不会切下任何部分：请将其移入它所切割的部分。</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="52"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="56"/>
         <source>Plane %1 would leave nothing below it on the platform: move it up.</source>
         <translation>平面 %1 下方不会在平台上留下任何部分：请将其上移。</translation>
     </message>
     <message>
-        <location filename="../ui/edit/refusal_text.cpp" line="53"/>
+        <location filename="../ui/edit/refusal_text.cpp" line="57"/>
         <source>Plane %1 was refused: %2</source>
         <translation>平面 %1 被拒绝：%2</translation>
     </message>
@@ -66,7 +66,7 @@
 <context>
     <name>TiltPlaneCommand</name>
     <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="45"/>
         <source>Tilt plane %1</source>
         <translation>倾斜平面 %1</translation>
     </message>
@@ -276,152 +276,153 @@
 <context>
     <name>multidir::ui::DeviceLink</name>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="29"/>
+        <location filename="../ui/device/device_link.cpp" line="30"/>
         <source>stall: the platform made no progress, so MultiDir stopped it</source>
         <translation>堵转：平台没有前进，MultiDir 已将其停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="30"/>
+        <location filename="../ui/device/device_link.cpp" line="31"/>
         <source>stall: the controller lost its position (following error)</source>
         <translation>堵转：控制器丢失了位置（跟随误差）</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="33"/>
+        <location filename="../ui/device/device_link.cpp" line="34"/>
         <source>heartbeat lost: the controller stopped because MultiDir went silent</source>
         <translation>心跳丢失：MultiDir 不再发送信号，控制器已停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="36"/>
+        <location filename="../ui/device/device_link.cpp" line="37"/>
         <source>a limit switch was hit</source>
         <translation>触发了限位开关</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="39"/>
+        <location filename="../ui/device/device_link.cpp" line="40"/>
         <source>the controller rejected a command (not homed, or beyond its own limits)</source>
         <translation>控制器拒绝了一条命令（未回零，或超出其自身限制）</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="42"/>
+        <location filename="../ui/device/device_link.cpp" line="43"/>
         <source>emergency stop: the power stage is off</source>
         <translation>急停：功率级已关闭</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="45"/>
+        <location filename="../ui/device/device_link.cpp" line="46"/>
         <source>unknown fault code %1</source>
         <translation>未知故障代码 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="48"/>
+        <location filename="../ui/device/device_link.cpp" line="49"/>
         <source>; press Clear fault, then Enable and Home</source>
         <translation>；请按“清除故障”，然后按“使能”和“回零”</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="54"/>
+        <location filename="../ui/device/device_link.cpp" line="55"/>
         <source>the robot program is not running: start it on the teach pendant</source>
         <translation>机器人程序未运行：请在示教器上启动它</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="56"/>
+        <location filename="../ui/device/device_link.cpp" line="57"/>
         <source>halted by an emergency stop: press Clear fault before moving again</source>
         <translation>已被急停停止：再次移动前请按“清除故障”</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="60"/>
+        <location filename="../ui/device/device_link.cpp" line="61"/>
         <source>the target was beyond the robot program&apos;s limits; press Clear fault</source>
         <translation>目标超出了机器人程序的限制；请按“清除故障”</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="62"/>
+        <location filename="../ui/device/device_link.cpp" line="63"/>
         <source>the robot stopped because MultiDir&apos;s heartbeat was lost; press Clear fault</source>
         <translation>由于 MultiDir 的心跳丢失，机器人已停止；请按“清除故障”</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="64"/>
+        <location filename="../ui/device/device_link.cpp" line="65"/>
         <source>the robot program got an unknown command; press Clear fault</source>
         <translation>机器人程序收到了未知命令；请按“清除故障”</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="66"/>
+        <location filename="../ui/device/device_link.cpp" line="67"/>
         <source>robot program fault code %1; press Clear fault</source>
         <translation>机器人程序故障代码 %1；请按“清除故障”</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="210"/>
+        <location filename="../ui/device/device_link.cpp" line="213"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>无法用这些设置连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="213"/>
+        <location filename="../ui/device/device_link.cpp" line="216"/>
         <source>Could not connect yet; MultiDir keeps trying. %1</source>
         <translation>尚未连接上；MultiDir 会继续尝试。%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="241"/>
+        <location filename="../ui/device/device_link.cpp" line="244"/>
         <source>Enable</source>
         <translation>使能</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="244"/>
+        <location filename="../ui/device/device_link.cpp" line="247"/>
         <source>%1 does not apply to the robot arm: its program enables the arm; start it on the teach pendant.</source>
         <translation>%1 不适用于机械臂：机械臂由其程序使能；请在示教器上启动该程序。</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="254"/>
+        <location filename="../ui/device/device_link.cpp" line="257"/>
         <source>Home</source>
         <translation>回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="261"/>
+        <location filename="../ui/device/device_link.cpp" line="264"/>
         <source>Go to %1</source>
         <translation>前往 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="264"/>
+        <location filename="../ui/device/device_link.cpp" line="267"/>
         <source>%1 refused: the robot arm takes a tilt and an azimuth.</source>
         <translation>%1 被拒绝：机械臂需要倾斜角和方位角。</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="271"/>
+        <location filename="../ui/device/device_link.cpp" line="274"/>
         <source>Go to tilt %1, azimuth %2</source>
         <translation>前往倾斜 %1，方位角 %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="274"/>
+        <location filename="../ui/device/device_link.cpp" line="277"/>
         <source>%1 refused: the rotary platform takes one angle.</source>
         <translation>%1 被拒绝：旋转平台只需要一个角度。</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="281"/>
+        <location filename="../ui/device/device_link.cpp" line="284"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="287"/>
+        <location filename="../ui/device/device_link.cpp" line="290"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="512"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="293"/>
+        <location filename="../ui/device/device_link.cpp" line="296"/>
         <source>Clear fault</source>
         <translation>清除故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="308"/>
+        <location filename="../ui/device/device_link.cpp" line="314"/>
         <source>%1 refused: not connected; connect to the device first.</source>
         <translation>%1 被拒绝：未连接；请先连接设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="320"/>
+        <location filename="../ui/device/device_link.cpp" line="326"/>
         <source>%1 refused, nothing was sent: %2</source>
         <translation>%1 被拒绝，未发送任何内容：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="322"/>
+        <location filename="../ui/device/device_link.cpp" line="328"/>
         <source>%1 cancelled by Stop, E-STOP or Disconnect: %2</source>
         <translation>%1 已被停止、急停或断开取消：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/device_link.cpp" line="324"/>
+        <location filename="../ui/device/device_link.cpp" line="330"/>
         <source>%1 failed at the device or on the link: %2</source>
         <translation>%1 在设备端或链路上失败：%2</translation>
     </message>
@@ -499,7 +500,17 @@
         <translation>设备报告了一个错误。</translation>
     </message>
     <message>
+        <location filename="../ui/error_text.cpp" line="48"/>
+        <source>A program MultiDir runs (the slicer) is missing or failed.</source>
+        <translation>MultiDir 调用的程序（切片软件）缺失或运行失败。</translation>
+    </message>
+    <message>
         <location filename="../ui/error_text.cpp" line="50"/>
+        <source>The produced G-code failed MultiDir&apos;s safety checks.</source>
+        <translation>生成的 G 代码未通过 MultiDir 的安全检查。</translation>
+    </message>
+    <message>
+        <location filename="../ui/error_text.cpp" line="54"/>
         <source>An internal error occurred: please report it with the model.</source>
         <translation>发生内部错误：请连同模型一起报告。</translation>
     </message>
@@ -507,469 +518,574 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="57"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="61"/>
         <source>Disconnected</source>
         <translation>已断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="59"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="63"/>
         <source>Reconnecting…</source>
         <translation>正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="60"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="64"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="62"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
         <source>Connected</source>
         <translation>已连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="64"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
         <source>turning the platform</source>
         <translation>正在转动平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
         <source>settling</source>
         <translation>正在稳定</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>finished</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>stopped by a device problem</source>
         <translation>因设备问题而停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="93"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="97"/>
         <source>angle %1</source>
         <translation>角度 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="373"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
         <source>tilt %1, azimuth %2</source>
         <translation>倾斜 %1，方位角 %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="163"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="107"/>
+        <source>Clear fault, then Enable and Home</source>
+        <translation>按“清除故障”，然后按“使能”和“回零”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="108"/>
+        <source>Clear fault; the robot program then takes moves again</source>
+        <translation>按“清除故障”；之后机器人程序将重新接受运动指令</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="193"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="166"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="196"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="167"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="197"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="168"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="198"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>关闭链路而不向设备发送命令；设备的心跳看门狗会使其停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="182"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="212"/>
         <source>Status</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="191"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="192"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="225"/>
+        <source>Enabled:</source>
+        <translation>已使能：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="226"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="193"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="227"/>
         <source>Moving:</source>
         <translation>运动中：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="194"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="228"/>
         <source>Homed:</source>
         <translation>已回零：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="195"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
         <source>Fault:</source>
         <translation>故障：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="196"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="230"/>
         <source>Heartbeat:</source>
         <translation>心跳：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="197"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="231"/>
         <source>Last problem:</source>
         <translation>最近的问题：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="202"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="236"/>
         <source>Controls</source>
         <translation>控制</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="203"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
         <source>Enable</source>
         <translation>使能</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="203"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>接通平台的驱动。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="204"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
         <source>Home</source>
         <translation>回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="205"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="239"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>旋转平台：寻找原点开关（0°）。机械臂：将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="206"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
         <source>Clear fault</source>
         <translation>清除故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="207"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="241"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>在故障或急停后复位设备；之后请重新使能并回零。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="211"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
         <source>Tilt</source>
         <translation>倾斜</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="212"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
         <source>Azimuth</source>
         <translation>方位角</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="213"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
         <source>Jog −</source>
         <translation>点动 −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
         <source>Jog +</source>
         <translation>点动 +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="218"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
         <source>Angle:</source>
         <translation>角度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Tilt:</source>
         <translation>倾斜：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="220"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Azimuth:</source>
         <translation>方位角：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="221"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
         <source>Go to</source>
         <translation>前往</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>减速并停止；取消排队中的命令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="224"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="307"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="225"/>
-        <source>Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards.</source>
-        <translation>急停：立即切断运动。之后请清除故障、重新使能并回零。</translation>
+        <location filename="../ui/device/hardware_panel.cpp" line="530"/>
+        <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
+        <translation>打印运行已停止：%1。请修复设备（%2），然后按“继续”重试此步骤，或按“中止”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="235"/>
+        <source>Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards.</source>
+        <translation type="vanished">急停：立即切断运动。之后请清除故障、重新使能并回零。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
         <source>Jog step:</source>
         <translation>点动步长：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="317"/>
         <source>Print run</source>
         <translation>打印运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="456"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="319"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="586"/>
         <source>Start run</source>
         <translation>开始运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="320"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>按打印顺序将平台转到每个区域的方向，并提示打印每个区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="303"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="329"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
         <source>Region done</source>
         <translation>区域完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="275"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="330"/>
         <source>Press when the region asked for has been printed.</source>
         <translation>所要求的区域打印完成后按此按钮。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="276"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="304"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="331"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="305"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="332"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>继续已暂停的运行，或在设备出现问题后重试当前步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="292"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="293"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="348"/>
         <source>Elapsed:</source>
         <translation>已用时间：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="345"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
+        <translation>与 %1 的链路于 %2 中断。下方数值已不再反映设备的状态；MultiDir 会继续尝试重新连接。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
+        <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
+        <translation>打印运行已暂停：正在打印的区域可以完成，但不会开始新的区域。链路恢复后请按“继续”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
+        <source>%1 does not answer: %2</source>
+        <translation>%1 没有应答：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
+        <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
+        <translation>链路已恢复。由于链路曾中断，打印运行仍处于暂停状态：请检查平台，然后按“继续”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="435"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>无法用这些设置连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="349"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="439"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="357"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
         <source>Disconnected.</source>
         <translation>已断开。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="369"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="458"/>
+        <source>Not reachable; MultiDir keeps trying…</source>
+        <translation>无法访问；MultiDir 会继续尝试…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <source>Link lost at %1; reconnecting…</source>
+        <translation>链路于 %1 中断；正在重新连接…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
+        <source>no: press Enable</source>
+        <translation>否：请按“使能”</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="471"/>
         <source>%1 (target %2)</source>
         <translation>%1（目标 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
         <source>homing</source>
         <translation>正在回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="374"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="374"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="375"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="477"/>
         <source>not needed (robot arm)</source>
         <translation>不需要（机械臂）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="377"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="499"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="386"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="488"/>
+        <source>unknown: not read yet</source>
+        <translation>未知：尚未读取</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="491"/>
+        <source>unknown since %1 (last read: %2)</source>
+        <translation>自 %1 起未知（上次读取：%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="513"/>
+        <source>%1: sent to the device. To go on: %2.</source>
+        <translation>%1：已发送到设备。如需继续：%2。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
         <source>%1: sent to the device.</source>
         <translation>%1：已发送到设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="393"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="521"/>
         <source>Connected to %1.</source>
         <translation>已连接到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
         <source>The print run stopped: %1. Fix the device (Clear fault, Enable, Home), then press Resume to retry this step, or Abort.</source>
-        <translation>打印运行已停止：%1。请修复设备（清除故障、使能、回零），然后按“继续”重试此步骤，或按“中止”。</translation>
+        <translation type="vanished">打印运行已停止：%1。请修复设备（清除故障、使能、回零），然后按“继续”重试此步骤，或按“中止”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="407"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="534"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>打印运行已完成：所有区域均已打印。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="409"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="536"/>
         <source>The print run was aborted.</source>
         <translation>打印运行已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="416"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="545"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>请打印区域 %1（文件 %2），然后按“区域完成”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="443"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="572"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>开始运行被拒绝：未连接；请先连接设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="450"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
         <source>Start run refused: %1</source>
         <translation>开始运行被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="590"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="478"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="609"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>限制：%1 至 %2，步长 %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="480"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="611"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>限制：倾斜最多 %1，%n 个禁止锥</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="483"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
         <source> (machine profile)</source>
         <translation>（机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="485"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="616"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation>（默认值：该机器配置适用于 %1 机器）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="488"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
         <source> (defaults: no machine profile)</source>
         <translation>（默认值：无机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="489"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="620"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>；更改后的配置在下次连接时生效</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="544"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="638"/>
+        <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
+        <translation>急停：立即切断平台的功率级。之后：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="640"/>
+        <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
+        <translation>急停：以最大减速度停止机器人程序。之后：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="645"/>
+        <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
+        <translation>在故障或急停后复位平台；之后请重新“使能”并“回零”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
+        <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
+        <translation>在故障或急停后复位机器人程序；之后它将重新接受运动指令。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="648"/>
+        <source>Finds the home switch (0°); the drive must be enabled.</source>
+        <translation>寻找原点开关（0°）；驱动必须已使能。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
+        <source>Levels the platform (tilt 0°).</source>
+        <translation>将平台调平（倾斜 0°）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="693"/>
+        <source>unknown since %1</source>
+        <translation>自 %1 起未知</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="695"/>
         <source>not seen yet</source>
         <translation>尚未收到</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="547"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
         <source>%1 s ago</source>
         <translation>%1 秒前</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>无方案：请先运行搜索或打开方案。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>方案包含 %n 个区域。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="714"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>全部 %n 个区域已打印：完成</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="565"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
         <source>%1 of %2: %3</source>
         <translation>%1 / %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="567"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
         <source> (%1, %2)</source>
         <translation>（%1，%2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="568"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="719"/>
         <source>; pausing after this region</source>
         <translation>；此区域完成后暂停</translation>
     </message>
@@ -1108,17 +1224,17 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="72"/>
+        <location filename="../ui/main_window.cpp" line="76"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="97"/>
+        <location filename="../ui/main_window.cpp" line="103"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="98"/>
+        <location filename="../ui/main_window.cpp" line="104"/>
         <source>&amp;Open...</source>
         <translation>打开(&amp;O)...</translation>
     </message>
@@ -1127,142 +1243,139 @@
         <translation type="vanished">打开网格文件（STL、OBJ、OFF 或 PLY）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="103"/>
         <source>&amp;Samples</source>
-        <translation>示例(&amp;S)</translation>
+        <translation type="vanished">示例(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="112"/>
         <source>Open &amp;plan...</source>
-        <translation>打开方案(&amp;P)...</translation>
+        <translation type="vanished">打开方案(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="114"/>
+        <location filename="../ui/main_window.cpp" line="122"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="115"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
         <source>&amp;Export plan...</source>
         <translation>导出方案(&amp;E)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="117"/>
+        <location filename="../ui/main_window.cpp" line="125"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>保存当前方案：plan.json 以及每个区域一个 STL 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="123"/>
+        <location filename="../ui/main_window.cpp" line="131"/>
         <source>&amp;Load machine profile...</source>
         <translation>加载机器配置(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
         <source>&amp;Save machine profile...</source>
-        <translation>保存机器配置(&amp;S)...</translation>
+        <translation type="vanished">保存机器配置(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="128"/>
+        <location filename="../ui/main_window.cpp" line="136"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="132"/>
+        <location filename="../ui/main_window.cpp" line="140"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="133"/>
+        <location filename="../ui/main_window.cpp" line="141"/>
         <source>&amp;Fit to View</source>
         <translation>适应视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="135"/>
+        <location filename="../ui/main_window.cpp" line="143"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>显示模型(&amp;M)（隐藏方案）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="140"/>
+        <location filename="../ui/main_window.cpp" line="148"/>
         <source>&amp;Search</source>
         <translation>搜索(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="141"/>
+        <location filename="../ui/main_window.cpp" line="149"/>
         <source>&amp;Run</source>
         <translation>运行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="144"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="167"/>
+        <location filename="../ui/main_window.cpp" line="203"/>
         <source>Overhangs</source>
         <translation>悬垂</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="168"/>
+        <location filename="../ui/main_window.cpp" line="204"/>
         <source>Machine</source>
         <translation>机器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="206"/>
         <source>Plan</source>
         <translation>方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="210"/>
+        <location filename="../ui/main_window.cpp" line="254"/>
         <source>Hardware</source>
         <translation>硬件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="229"/>
+        <location filename="../ui/main_window.cpp" line="279"/>
         <source>Printing direction</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="232"/>
+        <location filename="../ui/main_window.cpp" line="282"/>
         <source>Up:</source>
         <translation>向上：</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="237"/>
+        <location filename="../ui/main_window.cpp" line="287"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="242"/>
+        <location filename="../ui/main_window.cpp" line="292"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="242"/>
+        <location filename="../ui/main_window.cpp" line="292"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="294"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="294"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
@@ -1275,247 +1388,346 @@
         <translation type="vanished">网格 (*.stl *.obj *.off *.ply);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="100"/>
+        <location filename="../ui/main_window.cpp" line="107"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>打开网格文件（STL、OBJ、OFF 或 PLY）或 MultiDir 项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="119"/>
         <source>Export Sc&amp;reenshot...</source>
-        <translation>导出截图(&amp;R)...</translation>
+        <translation type="vanished">导出截图(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="121"/>
+        <location filename="../ui/main_window.cpp" line="129"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>将当前显示的 3D 视图保存为 PNG 或 JPEG 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="290"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
+        <source>Save machine pro&amp;file...</source>
+        <translation>保存机器配置(&amp;F)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="161"/>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="162"/>
+        <source>&amp;About MultiDir Studio</source>
+        <translation>关于 MultiDir Studio(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="169"/>
+        <source>About MultiDir Studio</source>
+        <translation>关于 MultiDir Studio</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="170"/>
+        <source>MultiDir Studio %1</source>
+        <translation>MultiDir Studio %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="172"/>
+        <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
+
+Qt %1</source>
+        <translation>规划多方向 3D 打印：用平面将模型切割成多个区域，每个区域沿各自的方向打印，并驱动打印它们的机器。
+
+Qt %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="259"/>
+        <source>Emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="358"/>
+        <source>The search was stopped; its result is dropped.</source>
+        <translation>搜索已停止；其结果已丢弃。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="380"/>
         <source>Open Model or Project</source>
         <translation>打开模型或项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="291"/>
+        <location filename="../ui/main_window.cpp" line="381"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>网格和项目 (*.stl *.obj *.off *.ply *.multidir);;网格 (*.stl *.obj *.off *.ply);;MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="308"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>自定义（%1, %2, %3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="330"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Repaired on load: %1</source>
         <translation>加载时已修复：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="348"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="352"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Could not open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="356"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="376"/>
-        <location filename="../ui/main_window.cpp" line="393"/>
+        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="386"/>
+        <location filename="../ui/main_window.cpp" line="512"/>
         <source>Triangles: %1</source>
         <translation>三角形：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="387"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Volume: %1 mm³</source>
         <translation>体积：%1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="401"/>
+        <location filename="../ui/main_window.cpp" line="527"/>
         <source>Risky area unavailable</source>
         <translation>风险面积不可用</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="409"/>
+        <location filename="../ui/main_window.cpp" line="535"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>风险面积（%1 向上）：%2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="411"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="553"/>
+        <location filename="../ui/main_window.cpp" line="572"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="555"/>
         <source>Fix the machine first: %1</source>
         <translation>请先修正机器设置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="571"/>
         <source>A search is already running.</source>
         <translation>已有搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="577"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="581"/>
         <source>Cannot search: %1</source>
         <translation>无法搜索：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="582"/>
         <source>Cannot search.</source>
         <translation>无法搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="596"/>
         <source>Searching %1...</source>
         <translation>正在搜索 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="604"/>
         <source>Cancelling the search...</source>
         <translation>正在取消搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="617"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="620"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>搜索已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="621"/>
         <source>Search finished.</source>
         <translation>搜索完成。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="499"/>
+        <location filename="../ui/main_window.cpp" line="634"/>
         <source>Search failed: %1</source>
         <translation>搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="545"/>
+        <location filename="../ui/main_window.cpp" line="665"/>
+        <source>Growing supports for the plan...</source>
+        <translation>正在为方案生成支撑...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="679"/>
+        <source>Supports grown for the plan.</source>
+        <translation>已为方案生成支撑。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="710"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>没有可导出的方案：请先运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="713"/>
+        <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
+        <translation>此方案的支撑仍在生成中：请在状态栏提示支撑已就绪后重新导出。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="717"/>
+        <source>Could not create the folder %1: check that its parent exists and can be written.</source>
+        <translation>无法创建文件夹 %1：请检查其上级文件夹是否存在且可写入。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="735"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>无法将方案导出到 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="564"/>
+        <location filename="../ui/main_window.cpp" line="741"/>
+        <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
+        <translation>方案已导出到 %1，但未包含支撑，尽管仍剩余 %2 mm² 风险面积：%3</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="743"/>
+        <source>no supports were grown for it.</source>
+        <translation>未为其生成支撑。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="748"/>
         <source>Plan exported to %1.</source>
         <translation>方案已导出到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="571"/>
+        <location filename="../ui/main_window.cpp" line="755"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>无法打开方案 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="618"/>
+        <location filename="../ui/main_window.cpp" line="802"/>
         <source>Machine profile saved to %1.</source>
         <translation>机器配置已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="630"/>
+        <location filename="../ui/main_window.cpp" line="814"/>
         <source>Machine profile %1 loaded.</source>
         <translation>已加载机器配置 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="635"/>
+        <location filename="../ui/main_window.cpp" line="823"/>
         <source>Export Plan to Folder</source>
         <translation>将方案导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="638"/>
+        <location filename="../ui/main_window.cpp" line="823"/>
+        <source>-plan</source>
+        <translation>-方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="824"/>
+        <source>Plan folders (*)</source>
+        <translation>方案文件夹 (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="830"/>
+        <location filename="../ui/main_window.cpp" line="832"/>
         <source>Export Plan</source>
         <translation>导出方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="648"/>
+        <location filename="../ui/main_window.cpp" line="843"/>
         <source>Screenshot saved to %1.</source>
         <translation>截图已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="653"/>
+        <location filename="../ui/main_window.cpp" line="848"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="654"/>
+        <location filename="../ui/main_window.cpp" line="849"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG 图像 (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="657"/>
-        <location filename="../ui/main_window.cpp" line="665"/>
+        <location filename="../ui/main_window.cpp" line="852"/>
+        <location filename="../ui/main_window.cpp" line="860"/>
         <source>Export Screenshot</source>
         <translation>导出截图</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="669"/>
+        <location filename="../ui/main_window.cpp" line="865"/>
         <source>Open Plan Folder</source>
         <translation>打开方案文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="349"/>
         <source>Open Plan</source>
         <translation>打开方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="676"/>
-        <location filename="../ui/main_window.cpp" line="680"/>
+        <location filename="../ui/main_window.cpp" line="110"/>
+        <source>Sa&amp;mples</source>
+        <translation>示例(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="120"/>
+        <source>Open pla&amp;n...</source>
+        <translation>打开方案(&amp;N)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="127"/>
+        <source>Export Screens&amp;hot...</source>
+        <translation>导出截图(&amp;H)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="871"/>
+        <location filename="../ui/main_window.cpp" line="877"/>
         <source>Save Machine Profile</source>
         <translation>保存机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="677"/>
+        <location filename="../ui/main_window.cpp" line="873"/>
         <source>Machine profiles (*.json)</source>
         <translation>机器配置 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="684"/>
-        <location filename="../ui/main_window.cpp" line="688"/>
+        <location filename="../ui/main_window.cpp" line="881"/>
+        <location filename="../ui/main_window.cpp" line="888"/>
         <source>Load Machine Profile</source>
         <translation>加载机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="685"/>
+        <location filename="../ui/main_window.cpp" line="883"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>机器配置 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="692"/>
+        <location filename="../ui/main_window.cpp" line="901"/>
         <source>Loading %1...</source>
         <translation>正在加载 %1...</translation>
     </message>
@@ -1525,17 +1737,17 @@
         <translation>编辑方案</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="54"/>
+        <location filename="../ui/edit/main_window_editing.cpp" line="61"/>
         <source>&amp;Edit</source>
         <translation>编辑(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="56"/>
+        <location filename="../ui/edit/main_window_editing.cpp" line="63"/>
         <source>&amp;Undo</source>
         <translation>撤销(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="59"/>
+        <location filename="../ui/edit/main_window_editing.cpp" line="66"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
@@ -1557,52 +1769,52 @@
 <context>
     <name>multidir::ui::OverhangPanel</name>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="25"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="29"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="29"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="32"/>
         <source>Maximal self-supporting angle: faces that lean over by more than this from the printing direction need support</source>
         <translation>最大自支撑角度：相对打印方向倾斜超过此角度的面需要支撑</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="58"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="65"/>
         <source>Risky faces (need support when printed along the up direction)</source>
         <translation>风险面（沿向上方向打印时需要支撑）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="61"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="68"/>
         <source>Max. overhang angle α:</source>
         <translation>最大悬垂角 α：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="62"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="69"/>
         <source>Risky area:</source>
         <translation>风险面积：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="63"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="70"/>
         <source>Risky faces:</source>
         <translation>风险面：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="68"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="75"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="76"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="83"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="78"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="85"/>
         <source>%1 of %2</source>
         <translation>%1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/overhang_panel.cpp" line="83"/>
+        <location filename="../ui/panels/overhang_panel.cpp" line="90"/>
         <source>unavailable</source>
         <translation>不可用</translation>
     </message>
@@ -1779,321 +1991,364 @@
 <context>
     <name>multidir::ui::PlaneEditPanel</name>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="89"/>
         <source>Plane</source>
         <translation>平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="89"/>
         <source>Normal</source>
         <translation>法向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="84"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="89"/>
         <source>Offset (mm)</source>
         <translation>偏移 (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="98"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="91"/>
+        <source>Planes are numbered in printing order, like the regions: plane k is the base of region k + 1</source>
+        <translation>平面与区域一样按打印顺序编号：平面 k 是区域 k + 1 的底面</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="105"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="100"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="107"/>
         <source>Distance of the plane from the origin along its normal</source>
         <translation>平面沿其法向到原点的距离</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="103"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="110"/>
         <source>Moves the plane along its normal across what is left of the model</source>
         <translation>沿法向在模型的剩余部分范围内移动平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="106"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="113"/>
         <source>Offset:</source>
         <translation>偏移：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="118"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="125"/>
         <source>Tilt:</source>
         <translation>倾斜：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="119"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="126"/>
         <source>Azimuth:</source>
         <translation>方位角：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="128"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="135"/>
         <source>Rotary angle:</source>
         <translation>旋转角度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="131"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="138"/>
         <source>&amp;Add plane</source>
         <translation>添加平面(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="134"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="141"/>
         <source>Splits the piece above the selected plane in two (or, with no plane selected, cuts what is left on the platform at mid-height)</source>
         <translation>将所选平面上方的部分一分为二（若未选择平面，则在半高处切割平台上剩余的部分）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="136"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="143"/>
         <source>&amp;Delete plane</source>
         <translation>删除平面(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="138"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="145"/>
         <source>Updating the plan...</source>
         <translation>正在更新方案...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="232"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="261"/>
         <source>No plan to edit: run a search or open a plan.</source>
         <translation>没有可编辑的方案：请运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="234"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="263"/>
         <source>This plan is shown without its model: open the model it was made from to edit it.</source>
         <translation>此方案显示时没有其模型：请打开生成该方案的模型后再编辑。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="236"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="265"/>
         <source>Select a plane to move, tilt or delete it. Every change can be undone (Ctrl+Z).</source>
         <translation>选择一个平面即可移动、倾斜或删除它。每次更改都可以撤销（Ctrl+Z）。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="249"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="278"/>
         <source>J_G before: %1 mm² (the whole model printed along up)
 J_G after: %2 mm² (%3 mm² before editing)</source>
         <translation>J_G 之前：%1 mm²（整个模型沿向上方向打印）
 J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
+    <message>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="413"/>
+        <source>Tilting turns the plane about the middle of its cut, so its offset (measured from the origin along the normal) went from %1 mm to %2 mm.</source>
+        <translation>倾斜时平面绕其切口中心旋转，因此其偏移（从原点沿法向测量）由 %1 mm 变为 %2 mm。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PrintRunDriver</name>
+    <message>
+        <location filename="../ui/device/print_run_driver.cpp" line="134"/>
+        <source>the link to %1 was lost: the run is paused; press Resume once the link is back</source>
+        <translation>与 %1 的链路已中断：运行已暂停；链路恢复后请按“继续”</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::ProjectSession</name>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="86"/>
+        <location filename="../ui/project/project_session.cpp" line="87"/>
         <source>Open &amp;Project...</source>
         <translation>打开项目(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="88"/>
+        <location filename="../ui/project/project_session.cpp" line="89"/>
         <source>Open a MultiDir project (.multidir): its model, settings and plan</source>
         <translation>打开 MultiDir 项目（.multidir）：包括其模型、设置和方案</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="92"/>
+        <location filename="../ui/project/project_session.cpp" line="93"/>
         <source>&amp;Save Project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="95"/>
+        <location filename="../ui/project/project_session.cpp" line="96"/>
         <source>Save the model reference, the settings and the plan in a project file</source>
         <translation>将模型引用、设置和方案保存到项目文件中</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="96"/>
+        <location filename="../ui/project/project_session.cpp" line="97"/>
         <source>Save Project &amp;As...</source>
         <translation>项目另存为(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="107"/>
+        <location filename="../ui/project/project_session.cpp" line="108"/>
         <source>There is no model to save a project for: open a model first.</source>
         <translation>没有可为之保存项目的模型：请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="116"/>
+        <location filename="../ui/project/project_session.cpp" line="117"/>
         <source>The model shown has no file (it is the regions of a plan opened without its model): open the model itself to save a project.</source>
         <translation>当前显示的模型没有对应的文件（它是一个在没有模型的情况下打开的方案的各个区域）：请打开模型本身以保存项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="135"/>
+        <location filename="../ui/project/project_session.cpp" line="136"/>
         <source>Wait until the project has opened before saving.</source>
         <translation>请等项目打开完成后再保存。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="138"/>
+        <location filename="../ui/project/project_session.cpp" line="139"/>
         <source>Cannot save the project: %1</source>
         <translation>无法保存项目：%1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="141"/>
+        <location filename="../ui/project/project_session.cpp" line="142"/>
         <source>Could not save the project %1: %2 (%3)</source>
         <translation>无法保存项目 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="147"/>
+        <location filename="../ui/project/project_session.cpp" line="149"/>
         <source>Project saved to %1.</source>
         <translation>项目已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="159"/>
-        <location filename="../ui/project/project_session.cpp" line="172"/>
-        <location filename="../ui/project/project_session.cpp" line="177"/>
+        <location filename="../ui/project/project_session.cpp" line="161"/>
+        <location filename="../ui/project/project_session.cpp" line="175"/>
+        <location filename="../ui/project/project_session.cpp" line="180"/>
         <source>Save Project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="172"/>
+        <location filename="../ui/project/project_session.cpp" line="175"/>
         <source>MultiDir projects (*.multidir)</source>
         <translation>MultiDir 项目 (*.multidir)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="181"/>
-        <location filename="../ui/project/project_session.cpp" line="519"/>
+        <location filename="../ui/project/project_session.cpp" line="185"/>
+        <location filename="../ui/project/project_session.cpp" line="571"/>
         <source>Open Project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="182"/>
+        <location filename="../ui/project/project_session.cpp" line="186"/>
         <source>MultiDir projects (*.multidir);;All files (*)</source>
         <translation>MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="203"/>
+        <location filename="../ui/project/project_session.cpp" line="220"/>
+        <source>Search Running</source>
+        <translation>搜索正在运行</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="221"/>
+        <source>A search is running on %1.</source>
+        <translation>正在对 %1 运行搜索。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="222"/>
+        <source>the model shown</source>
+        <translation>当前显示的模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="225"/>
+        <source>Stop it? Its result is then dropped.</source>
+        <translation>是否停止？其结果将被丢弃。</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="226"/>
+        <source>S&amp;top the Search</source>
+        <translation>停止搜索(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/project/project_session.cpp" line="250"/>
         <source>%1 is no longer there; it was taken off the recent files.</source>
         <translation>%1 已不存在，已将其从最近打开的文件中移除。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="223"/>
+        <location filename="../ui/project/project_session.cpp" line="270"/>
         <source>Cannot open %1: drop a mesh file (.stl, .obj, .off, .ply) or a MultiDir project (.multidir).</source>
         <translation>无法打开 %1：请拖放网格文件（.stl、.obj、.off、.ply）或 MultiDir 项目（.multidir）。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="236"/>
+        <location filename="../ui/project/project_session.cpp" line="283"/>
         <source>There is no autosaved project to recover.</source>
         <translation>没有可恢复的自动保存项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="246"/>
+        <location filename="../ui/project/project_session.cpp" line="293"/>
         <source>Recover Unsaved Work</source>
         <translation>恢复未保存的工作</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="247"/>
+        <location filename="../ui/project/project_session.cpp" line="294"/>
         <source>MultiDir Studio did not close properly. Recover the project it autosaved on %1?</source>
         <translation>MultiDir Studio 未正常关闭。是否恢复它在 %1 自动保存的项目？</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="252"/>
+        <location filename="../ui/project/project_session.cpp" line="299"/>
         <source>It was an untitled project.</source>
         <translation>这是一个未命名的项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="253"/>
+        <location filename="../ui/project/project_session.cpp" line="300"/>
         <source>It holds unsaved changes to %1.</source>
         <translation>其中包含对 %1 的未保存更改。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="254"/>
+        <location filename="../ui/project/project_session.cpp" line="301"/>
         <source>&amp;Recover</source>
         <translation>恢复(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="255"/>
+        <location filename="../ui/project/project_session.cpp" line="302"/>
         <source>&amp;Discard</source>
         <translation>丢弃(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="256"/>
+        <location filename="../ui/project/project_session.cpp" line="303"/>
         <source>&amp;Later</source>
         <translation>稍后(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="300"/>
+        <location filename="../ui/project/project_session.cpp" line="347"/>
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="301"/>
+        <location filename="../ui/project/project_session.cpp" line="348"/>
         <source>Unsaved Changes</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="302"/>
+        <location filename="../ui/project/project_session.cpp" line="349"/>
         <source>The project %1 has changes that are not saved.</source>
         <translation>项目 %1 有尚未保存的更改。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="305"/>
+        <location filename="../ui/project/project_session.cpp" line="352"/>
         <source>Save them first?</source>
         <translation>是否先保存？</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="392"/>
-        <location filename="../ui/project/project_session.cpp" line="428"/>
+        <location filename="../ui/project/project_session.cpp" line="442"/>
+        <location filename="../ui/project/project_session.cpp" line="480"/>
         <source>Opening %1 was interrupted: another model was opened.</source>
         <translation>打开 %1 时被中断：另一个模型已被打开。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="408"/>
+        <location filename="../ui/project/project_session.cpp" line="460"/>
         <source>Rebuilding the plan of %1...</source>
         <translation>正在重建 %1 的方案...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="435"/>
+        <location filename="../ui/project/project_session.cpp" line="487"/>
         <source>The model file %1 changed since the project was saved; the plan was recomputed on the changed file.</source>
         <translation>模型文件 %1 在项目保存后已发生变化；方案已根据变化后的文件重新计算。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="449"/>
+        <location filename="../ui/project/project_session.cpp" line="501"/>
         <source>The rebuilt plan leaves %1 mm² of risky area; the project saved %2 mm².</source>
         <translation>重建的方案剩余 %1 mm² 风险面积；项目中保存的是 %2 mm²。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="454"/>
+        <location filename="../ui/project/project_session.cpp" line="506"/>
         <source>The plan could not be rebuilt on this model (%1); the model is shown without it.</source>
         <translation>无法在此模型上重建方案（%1）；模型将不带方案显示。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="470"/>
+        <location filename="../ui/project/project_session.cpp" line="522"/>
         <source>Recovered the autosaved project.</source>
         <translation>已恢复自动保存的项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="471"/>
+        <location filename="../ui/project/project_session.cpp" line="523"/>
         <source>Project %1 opened.</source>
         <translation>已打开项目 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="474"/>
+        <location filename="../ui/project/project_session.cpp" line="526"/>
         <source>Project %1</source>
         <translation>项目 %1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="484"/>
+        <location filename="../ui/project/project_session.cpp" line="536"/>
         <source>Could not open the project %1: %2</source>
         <translation>无法打开项目 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="499"/>
+        <location filename="../ui/project/project_session.cpp" line="551"/>
         <source>Could not open the project %1: its model %2 is missing.</source>
         <translation>无法打开项目 %1：缺少其模型 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="500"/>
+        <location filename="../ui/project/project_session.cpp" line="552"/>
         <source>Put the model back at %1, or open the model where it is now and save the project again.</source>
         <translation>请将模型放回 %1，或从模型现在所在的位置打开它，然后重新保存项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="505"/>
+        <location filename="../ui/project/project_session.cpp" line="557"/>
         <source>Opening the project %1...</source>
         <translation>正在打开项目 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="518"/>
+        <location filename="../ui/project/project_session.cpp" line="570"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <location filename="../ui/project/project_session.cpp" line="600"/>
         <source>MultiDir Studio[*]</source>
         <translation>MultiDir Studio[*]</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="548"/>
+        <location filename="../ui/project/project_session.cpp" line="600"/>
         <source>%1[*] - MultiDir Studio</source>
         <translation>%1[*] - MultiDir Studio</translation>
     </message>
@@ -2139,18 +2394,18 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>生成支撑时发生意外错误。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="89"/>
+        <location filename="../ui/jobs/search_job.cpp" line="91"/>
         <source>growing supports</source>
         <translation>正在生成支撑</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="100"/>
+        <location filename="../ui/jobs/search_job.cpp" line="102"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>内存不足，无法进行此搜索：请减小束宽或法向数量。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="103"/>
-        <location filename="../ui/jobs/search_job.cpp" line="107"/>
+        <location filename="../ui/jobs/search_job.cpp" line="105"/>
+        <location filename="../ui/jobs/search_job.cpp" line="109"/>
         <source>Unexpected error during the search.</source>
         <translation>搜索过程中发生意外错误。</translation>
     </message>
@@ -2158,208 +2413,277 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SearchPanel</name>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="36"/>
+        <location filename="../ui/panels/search_panel.cpp" line="43"/>
         <source>Beam search (Algorithm 1)</source>
         <translation>束搜索（算法 1）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="37"/>
+        <location filename="../ui/panels/search_panel.cpp" line="44"/>
         <source>Constrained greedy</source>
         <translation>受约束贪心</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="38"/>
+        <location filename="../ui/panels/search_panel.cpp" line="45"/>
         <source>Greedy</source>
         <translation>贪心</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="43"/>
+        <location filename="../ui/panels/search_panel.cpp" line="50"/>
         <source>How many partial plans each level keeps (b)</source>
         <translation>每一层保留的部分方案数量 (b)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="49"/>
+        <location filename="../ui/panels/search_panel.cpp" line="56"/>
         <source>w: every region cut off keeps at least the model&apos;s volume divided by w</source>
         <translation>w：每个切下的区域至少保留模型体积除以 w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="54"/>
+        <location filename="../ui/panels/search_panel.cpp" line="61"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>在整个球面上采样的候选法向（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="59"/>
+        <location filename="../ui/panels/search_panel.cpp" line="66"/>
+        <location filename="../ui/panels/search_panel.cpp" line="80"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="61"/>
+        <location filename="../ui/panels/search_panel.cpp" line="68"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>沿每个法向的候选平面间距</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="66"/>
+        <location filename="../ui/panels/search_panel.cpp" line="73"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="68"/>
+        <location filename="../ui/panels/search_panel.cpp" line="75"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>搜索所依据的最大自支撑角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="73"/>
+        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
+        <translation>任何区域（包括平台上的区域）沿其打印方向的厚度都不小于此值</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="88"/>
+        <source> % of J_G</source>
+        <translation> % 的 J_G</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="90"/>
+        <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
+        <translation>仅当移除某个平面会使 J_G 至少增加移除前 J_G 的这一比例（且至少 1 mm²）时，才保留该平面：每个区域都需要一次平台移动并产生一条接缝</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="96"/>
         <source>machine&apos;s axis only</source>
         <translation>仅机器自身的轴</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="74"/>
+        <location filename="../ui/panels/search_panel.cpp" line="97"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4 自由度：另外尝试这么多分布在 180° 内的旋转轴，并保留最佳的</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="77"/>
+        <location filename="../ui/panels/search_panel.cpp" line="100"/>
         <source>Scheme:</source>
         <translation>方案类型：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="78"/>
+        <location filename="../ui/panels/search_panel.cpp" line="101"/>
         <source>Beam width:</source>
         <translation>束宽：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="79"/>
+        <location filename="../ui/panels/search_panel.cpp" line="102"/>
         <source>Volume divisor w:</source>
         <translation>体积除数 w：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="80"/>
+        <location filename="../ui/panels/search_panel.cpp" line="103"/>
         <source>Normals:</source>
         <translation>法向数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="81"/>
+        <location filename="../ui/panels/search_panel.cpp" line="104"/>
         <source>Offset step:</source>
         <translation>偏移步长：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="105"/>
         <source>Max. overhang angle α:</source>
         <translation>最大悬垂角 α：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="83"/>
+        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <source>Min. region height:</source>
+        <translation>最小区域高度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <source>Min. gain per plane:</source>
+        <translation>每个平面的最小增益：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="108"/>
         <source>Axes to try:</source>
         <translation>尝试的轴数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="86"/>
+        <location filename="../ui/panels/search_panel.cpp" line="111"/>
         <source>&amp;Run search</source>
         <translation>运行搜索(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="89"/>
+        <location filename="../ui/panels/search_panel.cpp" line="114"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="109"/>
+        <location filename="../ui/panels/search_panel.cpp" line="138"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="117"/>
+        <location filename="../ui/panels/search_panel.cpp" line="146"/>
         <source>Level:</source>
         <translation>层级：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="118"/>
+        <location filename="../ui/panels/search_panel.cpp" line="147"/>
         <source>Beams alive:</source>
         <translation>存活束：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="119"/>
+        <location filename="../ui/panels/search_panel.cpp" line="148"/>
         <source>Best J_G:</source>
         <translation>最佳 J_G：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="120"/>
+        <location filename="../ui/panels/search_panel.cpp" line="149"/>
         <source>Candidates scored:</source>
         <translation>已评估候选：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="141"/>
+        <location filename="../ui/panels/search_panel.cpp" line="170"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="180"/>
+        <location filename="../ui/panels/search_panel.cpp" line="217"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>搜索能让模型以更少支撑打印的切割平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="198"/>
-        <source>Starting...</source>
-        <translation>正在启动...</translation>
+        <location filename="../ui/panels/search_panel.cpp" line="280"/>
+        <source>Cancelling: keeping the best plan so far... %1</source>
+        <translation>正在取消：保留目前的最佳方案... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="201"/>
-        <location filename="../ui/panels/search_panel.cpp" line="220"/>
-        <location filename="../ui/panels/search_panel.cpp" line="234"/>
+        <location filename="../ui/panels/search_panel.cpp" line="282"/>
+        <source>%1 %2 - %3</source>
+        <translation>%1 %2 - %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="284"/>
+        <source>Level 1 of %1: scoring candidates... %2</source>
+        <translation>层级 1 / %1：正在评估候选... %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="285"/>
+        <source>Scoring candidates... %1</source>
+        <translation>正在评估候选... %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <source>Level %1 of %2</source>
+        <translation>层级 %1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <source>Level %1</source>
+        <translation>层级 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="289"/>
+        <source>Axis %1 of %2, %3</source>
+        <translation>第 %1 / %2 个轴，%3</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="290"/>
+        <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
+        <translation>%1 · 存活束：%2 · 最佳 J_G %3 mm² · %4 个候选 · %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <source>Stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <source>Starting...</source>
+        <translation type="vanished">正在启动...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="241"/>
+        <location filename="../ui/panels/search_panel.cpp" line="269"/>
+        <location filename="../ui/panels/search_panel.cpp" line="308"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="217"/>
+        <location filename="../ui/panels/search_panel.cpp" line="266"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1（第 %2 / %3 个轴）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="227"/>
         <source>Cancelling: keeping the best plan so far...</source>
-        <translation>正在取消：保留目前的最佳方案...</translation>
+        <translation type="vanished">正在取消：保留目前的最佳方案...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="233"/>
+        <location filename="../ui/panels/search_panel.cpp" line="307"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="233"/>
+        <location filename="../ui/panels/search_panel.cpp" line="307"/>
         <source>Done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="239"/>
+        <location filename="../ui/panels/search_panel.cpp" line="313"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="243"/>
+        <location filename="../ui/panels/search_panel.cpp" line="317"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>没有改进：没有切割平面能减少风险面积（J_G 仍为 %1 mm²）。请尝试更多法向、更小的偏移步长、更大的 w 或其他机器。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="248"/>
+        <location filename="../ui/panels/search_panel.cpp" line="322"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>并非无支撑：仍有 %1 mm² 需要支撑（原为 %2 mm²），共 %n 个区域。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="252"/>
+        <location filename="../ui/panels/search_panel.cpp" line="326"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>分为 %n 个区域后无需支撑（J_G 原为 %1 mm²）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="260"/>
+        <location filename="../ui/panels/search_panel.cpp" line="335"/>
         <source>Failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="261"/>
+        <location filename="../ui/panels/search_panel.cpp" line="336"/>
         <source>%1
 %2</source>
         <translation>%1
@@ -2424,7 +2748,7 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>要打开的网格文件（.stl .obj .off .ply）或 MultiDir 项目（.multidir）。默认：第一个示例。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="208"/>
+        <location filename="../ui/studio_startup.cpp" line="216"/>
         <source>The search or the project&apos;s plan did not finish within %1 s.</source>
         <translation>搜索或项目方案未在 %1 秒内完成。</translation>
     </message>
@@ -2468,7 +2792,7 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>--screenshot 需要一个文件名。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="200"/>
+        <location filename="../ui/studio_startup.cpp" line="208"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>模型未在 %1 秒内加载完成。</translation>
     </message>
@@ -2481,7 +2805,7 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation type="vanished">无法将截图写入 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="222"/>
+        <location filename="../ui/studio_startup.cpp" line="230"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>未显示任何模型；截图 %1 显示的是空窗口。</translation>
     </message>

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <optional>
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
@@ -14,6 +16,7 @@
 #include "multidir/core/plan/checksum.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
+#include "multidir/core/search/pose_search.h"
 #include "multidir/core/supports/projected_supports.h"
 #include "number_text.h"
 #include "search_runner.h"
@@ -34,6 +37,10 @@ const char* const kDecomposeHelp =
     "  --machine KIND       3dof, 4dof or 5dof (default: 5dof, or the profile's)\n"
     "  --axis X,Y,Z         4dof: the platform's rotation axis, perpendicular to up (default: x, or y if up is x)\n"
     "  --axis-search N      4dof: also try N rotation axes over 180 degrees and keep the best plan\n"
+    "  --pose MODE          up: stand the model on --up (default); auto: choose the pose too, trying the\n"
+    "                       given up, the model's stable resting poses and sampled directions\n"
+    "  --poses N            --pose auto: candidate poses, 1 to 200 (default: 24)\n"
+    "  --pose-searches K    --pose auto: poses given the full search, 1 to N (default: 4)\n"
     "  --profile FILE       machine profile (JSON); --machine, --up and --axis override its fields\n"
     "  --scheme NAME        beam, greedy or cgreedy (default: beam)\n"
     "  --beam-width B       beams kept per level, 1 to 1000 (default: 10)\n"
@@ -92,6 +99,8 @@ struct Settings {
   core::MachineSpec machine;
   core::SearchOptions options;
   int axisSearch = 0;
+  bool autoPose = false;
+  core::PoseOptions poseOptions;
   bool supports = true;
   core::SupportOptions supportOptions;
 };
@@ -170,7 +179,8 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
       parseArgs(args,
                 {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
                  "--refine", "--offset-step", "--w", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
-                 "--threads", "--profile", "-o", "--summary", "--support-spacing", "--scale"},
+                 "--threads", "--profile", "-o", "--summary", "--support-spacing", "--scale", "--pose", "--poses",
+                 "--pose-searches"},
                 {"--help", "--no-supports"}, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;
@@ -200,7 +210,60 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
     if (s.axisSearch < 1 || s.axisSearch > 3600)
       throw UsageError(kCommand + ": --axis-search: the number of axes must be between 1 and 3600");
   }
+  if (parsed.has("--pose")) {
+    const std::string mode = parsed.value("--pose", "");
+    if (mode != "auto" && mode != "up")
+      throw UsageError(kCommand + ": --pose: \"" + mode + "\" is not a pose mode; use auto or up");
+    s.autoPose = mode == "auto";
+  }
+  for (const char* option : {"--poses", "--pose-searches"})
+    if (parsed.has(option) && !s.autoPose)
+      throw UsageError(kCommand + ": " + option + " counts poses of the pose search; add --pose auto");
+  if (parsed.has("--poses")) {
+    s.poseOptions.poses = parseInteger(parsed.value("--poses", ""), "--poses");
+    if (s.poseOptions.poses < 1 || s.poseOptions.poses > 200)
+      throw UsageError(kCommand + ": --poses: the number of poses must be between 1 and 200");
+    s.poseOptions.fullSearches = std::min(s.poseOptions.fullSearches, s.poseOptions.poses);
+  }
+  if (parsed.has("--pose-searches")) {
+    s.poseOptions.fullSearches = parseInteger(parsed.value("--pose-searches", ""), "--pose-searches");
+    if (s.poseOptions.fullSearches < 1 || s.poseOptions.fullSearches > s.poseOptions.poses)
+      throw UsageError(kCommand + ": --pose-searches: must be between 1 and the number of poses (" +
+                       std::to_string(s.poseOptions.poses) + ")");
+  }
+  if (s.autoPose && s.axisSearch > 0)
+    throw UsageError(kCommand + ": --pose auto and --axis-search cannot be combined; choose one");
   return s;
+}
+
+// The pose as plan.json records it: the chosen one and the others tried, best J_G first.
+core::PlanPose planPoseOf(const core::PoseSearchResult& r) {
+  core::PlanPose pose;
+  pose.up = r.chosen.up;
+  pose.rotation = r.rotation;
+  pose.source = core::poseSourceName(r.chosen.source);
+  pose.contactAreaMm2 = r.chosen.contactAreaMm2;
+  for (std::size_t i = 0; i < r.trials.size(); ++i) {
+    if (static_cast<int>(i) == r.chosenTrial) continue;
+    const core::PoseTrial& t = r.trials[i];
+    pose.runnersUp.push_back({t.pose.up, core::poseSourceName(t.pose.source), t.jgAfterMm2, t.regions, t.searched});
+  }
+  std::stable_sort(pose.runnersUp.begin(), pose.runnersUp.end(), [](const auto& a, const auto& b) {
+    if (a.searched != b.searched) return a.searched;
+    return a.jgAfterMm2 < b.jgAfterMm2;
+  });
+  return pose;
+}
+
+nlohmann::json poseSummary(const core::PlanPose& pose) {
+  nlohmann::json runnersUp = nlohmann::json::array();
+  for (const core::PlanPoseTrial& t : pose.runnersUp)
+    runnersUp.push_back({{"up", {t.up.x(), t.up.y(), t.up.z()}}, {"source", t.source}, {"jg_after", t.jgAfterMm2},
+                         {"regions", t.regions}, {"searched", t.searched}});
+  nlohmann::json rotation = nlohmann::json::array();
+  for (int r = 0; r < 3; ++r) rotation.push_back({pose.rotation(r, 0), pose.rotation(r, 1), pose.rotation(r, 2)});
+  return {{"up", {pose.up.x(), pose.up.y(), pose.up.z()}}, {"rotation", rotation}, {"source", pose.source},
+          {"contact_area", pose.contactAreaMm2}, {"runners_up", runnersUp}};
 }
 
 std::string vectorText(const core::Vec3& v) {
@@ -235,7 +298,7 @@ void printTable(std::ostream& out, const Settings& s, const core::Decomposition&
 }
 
 void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_t triangles,
-                  const std::vector<core::SupportSet>& supports) {
+                  const std::vector<core::SupportSet>& supports, const std::optional<core::PlanPose>& pose) {
   double supportVolume = 0.0;
   std::size_t struts = 0;
   for (const core::SupportSet& set : supports) {
@@ -243,7 +306,7 @@ void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_
     struts += set.struts.size();
   }
   const core::SearchStatistics& st = plan.statistics;
-  const nlohmann::json summary = {{"model", s.model},
+  nlohmann::json summary = {{"model", s.model},
                                   {"machine", core::machineKindName(s.machine.kind)},
                                   {"scheme", core::schemeName(s.options.scheme)},
                                   {"beam_width", s.options.beamWidth},
@@ -263,6 +326,8 @@ void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_
                                   {"support_volume", supportVolume},
                                   {"support_struts", struts},
                                   {"plan", s.outDir}};
+  summary["pose_mode"] = s.autoPose ? "auto" : "up";
+  if (pose) summary["pose"] = poseSummary(*pose);
   std::ofstream file(s.summaryPath);
   file << summary.dump(2) << '\n';
   file.flush();
@@ -298,7 +363,16 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
                                 withThousands(static_cast<long long>(model.faceCount())) + " triangles, " +
                                 core::machineKindName(s.machine.kind) + ", " + core::schemeName(s.options.scheme) +
                                 "); Ctrl-C stops and keeps the best plan so far";
-  const SearchCall search = [&](core::JobContext& job, const core::SearchProgressSink& progress) {
+  std::optional<core::PlanPose> pose;
+  core::MachineSpec machine = s.machine;  // with the chosen pose's up when --pose auto
+  const SearchCall search = [&](core::JobContext& job, const core::SearchProgressSink& progress) -> core::Result<core::Decomposition> {
+    if (s.autoPose) {
+      core::Result<core::PoseSearchResult> found = core::decomposeWithPoseSearch(model, s.machine, s.options, s.poseOptions, job);
+      if (!found) return found.error();
+      pose = planPoseOf(*found);
+      machine = core::machineForPose(s.machine, found->chosen.up);
+      return std::move(found->plan);
+    }
     if (s.axisSearch > 0)
       return core::decomposeWithAxisSearch(model, s.machine, s.options, s.axisSearch, job, progress);
     return core::decompose(model, s.machine, s.options, job, progress);
@@ -316,11 +390,15 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
   const core::Decomposition& plan = *outcome.result;
 
   printTable(out, s, plan);
+  if (pose) {
+    out << "Pose         up " << vectorText(pose->up) << " (" << pose->source << "; " << pose->runnersUp.size()
+        << " other poses tried)\n";
+  }
   std::vector<core::SupportSet> supports;
   if (s.supports && plan.jgAfterMm2 > 0) {
     core::JobContext job;
     const core::Result<core::ProjectedSupports> grown =
-        core::generateSupports(model, plan, s.machine, s.supportOptions, job);
+        core::generateSupports(model, plan, machine, s.supportOptions, job);
     if (!grown) {
       err << kCommand << ": supports: " << grown.error().describe() << "\n";
       return grown.error().code == core::ErrorCode::Internal ? kExitInternal : kExitBadInput;
@@ -336,7 +414,8 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
   metadata.modelPath = s.model;
   metadata.modelChecksum = *checksum;
   metadata.up = s.up;
-  metadata.machine = s.machine;
+  metadata.machine = machine;
+  metadata.pose = pose;
   metadata.options = s.options;
   metadata.axisSearchCount = s.axisSearch;
   metadata.multidirVersion = MULTIDIR_VERSION;
@@ -350,7 +429,7 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
   if (plan.cancelled)
     out << "Note: the search was cancelled; this is the best plan found until then, not the result of a full "
            "search\n";
-  if (!s.summaryPath.empty()) writeSummary(s, plan, model.faceCount(), supports);
+  if (!s.summaryPath.empty()) writeSummary(s, plan, model.faceCount(), supports, pose);
   return kExitOk;
 }
 

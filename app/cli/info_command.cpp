@@ -5,13 +5,14 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "multidir/core/search/pose_search.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::cli {
 
 const char* const kInfoHelp =
-    "Usage: multidir info MODEL [--up DIRECTION] [--alpha DEGREES] [--scale FACTOR] [--json FILE]\n"
+    "Usage: multidir info MODEL [--up DIRECTION] [--alpha DEGREES] [--scale FACTOR] [--poses] [--json FILE]\n"
     "\n"
     "Loads MODEL (.stl, .obj, .off, .ply; millimetres), checks and repairs it, and prints its statistics,\n"
     "the defects found and repaired, and the area that would need support printed along the up direction.\n"
@@ -21,6 +22,8 @@ const char* const kInfoHelp =
     "  --alpha DEGREES  maximal self-supporting angle, at least 0 and below 90 (default: 45)\n"
     "  --scale FACTOR   multiply the model's coordinates by FACTOR, for a model in other units\n"
     "                   (0.001: micrometres, 25.4: inches; default: 1)\n"
+    "  --poses          also list the candidate poses of 'decompose --pose auto' (the given up, stable\n"
+    "                   resting poses, sampled directions; 24) with their single-direction risky area\n"
     "  --json FILE      also write everything as JSON to FILE\n"
     "  -h, --help       show this help\n"
     "\n"
@@ -99,7 +102,7 @@ void printText(std::ostream& out, const std::string& model, const core::LoadedMe
 }  // namespace
 
 int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(args, {"--up", "--alpha", "--json", "--scale"}, {"--help"}, "info");
+  const ParsedArgs parsed = parseArgs(args, {"--up", "--alpha", "--json", "--scale"}, {"--help", "--poses"}, "info");
   if (parsed.has("--help")) {
     out << kInfoHelp;
     return kExitOk;
@@ -131,10 +134,30 @@ int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   if (!overhang) throw UsageError("multidir info: " + overhang.error().describe());
 
   printText(out, model, *loaded, *up, overhangOptions.alphaMaxDegrees, *overhang);
+  nlohmann::json poses = nlohmann::json::array();
+  if (parsed.has("--poses")) {
+    core::SearchOptions searchOptions;
+    searchOptions.alphaMaxDegrees = overhangOptions.alphaMaxDegrees;
+    const auto candidates = core::candidatePoses(loaded->mesh, *up, core::PoseOptions{}, searchOptions);
+    if (!candidates) {
+      err << "multidir info: poses: " << candidates.error().describe() << "\n";
+      return kExitBadInput;
+    }
+    out << "Candidate poses (up, source, contact mm^2, margin mm, risky mm^2)\n";
+    for (const core::PoseCandidate& c : *candidates) {
+      out << "  " << format("%7.3f", c.up.x()) << " " << format("%7.3f", c.up.y()) << " " << format("%7.3f", c.up.z())
+          << "  " << core::poseSourceName(c.source) << "  " << format("%.2f", c.contactAreaMm2) << "  "
+          << format("%.2f", c.stabilityMarginMm) << "  " << format("%.2f", c.riskyAreaMm2) << "\n";
+      poses.push_back({{"up", toJson(c.up)}, {"source", core::poseSourceName(c.source)},
+                       {"contactAreaMm2", c.contactAreaMm2}, {"stabilityMarginMm", c.stabilityMarginMm},
+                       {"riskyAreaMm2", c.riskyAreaMm2}});
+    }
+  }
   if (!jsonPath.empty()) {
     const double area = loaded->report.statistics.areaMm2;
     writeJson(jsonPath,
               {{"file", model},
+               {"poses", poses},
                {"statistics", toJson(loaded->report.statistics)},
                {"checks", toJson(loaded->report)},
                {"overhang",

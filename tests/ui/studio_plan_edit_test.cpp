@@ -208,8 +208,9 @@ TEST(StudioPlanEdit, DeleteKeyInThePlanesTableDeletesTheSelectedPlane) {
   showSearchedSnowman(window);
   const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
   PlaneEditPanel& panel = *window.planeEditPanel();
-  window.show();  // key events go to a shown window
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  window.show();  // key events go to a shown, active window (shortcuts and focus need it)
+  window.activateWindow();
+  ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
   selectPlaneInTable(window, 1);
   panel.planeTable()->setFocus();
   QTest::keyClick(panel.planeTable(), Qt::Key_Delete);
@@ -224,7 +225,8 @@ TEST(StudioPlanEdit, DoubleClickOnAPlanesOffsetPutsTheCursorInItsOffset) {
   showSearchedSnowman(window);
   PlaneEditPanel& panel = *window.planeEditPanel();
   window.show();
-  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  window.activateWindow();  // focus moves only inside the active window
+  ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
   window.findChild<QDockWidget*>(QStringLiteral("editPlanDock"))->raise();
   QTableWidget* table = panel.planeTable();
   table->clearSelection();

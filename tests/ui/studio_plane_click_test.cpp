@@ -73,8 +73,8 @@ std::optional<QPoint> pointOnDisc(MeshViewerWidget* viewer, const PlaneDisc& dis
       };
       if (position) {
         const QPoint p = position->toPoint();
-        if (showsPlane(p) && showsPlane(p + QPoint(4, 0)) && showsPlane(p - QPoint(4, 0)) &&
-            showsPlane(p + QPoint(0, 4)) && showsPlane(p - QPoint(0, 4)))
+        if (showsPlane(p) && showsPlane(p + QPoint(2, 0)) && showsPlane(p - QPoint(2, 0)) &&
+            showsPlane(p + QPoint(0, 2)) && showsPlane(p - QPoint(0, 2)))
           return p;
       }
       if (fraction == 0.0) break;

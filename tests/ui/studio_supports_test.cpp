@@ -71,7 +71,7 @@ TEST(StudioSupports, SearchLeavingRiskyAreaShowsSupportsThatTheCheckboxHides) {
 
   window.planPanel()->setClippingPlanesShown(false);
   const double shown = test::colourFraction(viewer->grabFramebuffer(), supportColor());
-  EXPECT_GT(shown, 0.002) << "too few pixels in the support colour";
+  EXPECT_GT(shown, 0.001) << "too few pixels in the support colour";
 
   auto* box = window.planPanel()->findChild<QCheckBox*>(QStringLiteral("showSupports"));
   ASSERT_NE(box, nullptr);

@@ -1,6 +1,7 @@
 // savePlan and loadPlan: the plan folder (plan.json + region STLs). The JSON side is in plan_json.cpp.
 #include "multidir/core/plan/plan_file.h"
 
+#include <set>
 #include <filesystem>
 #include <new>
 
@@ -106,6 +107,7 @@ Status checkSupportFile(const fs::path& folder, const std::string& file, std::si
 Status checkClaimedTriangles(const nlohmann::json& document, const fs::path& folder, const std::string& jsonName) {
   if (!document.is_object() || !document.contains("regions") || !document["regions"].is_array()) return Done{};
   const nlohmann::json& regions = document["regions"];
+  std::set<std::string> seen;  // a file named twice is planFromJson's to name
   for (std::size_t i = 0; i < regions.size(); ++i) {
     const nlohmann::json& region = regions[i];
     if (!region.is_object() || !region.contains("file") || !region["file"].is_string() ||
@@ -113,6 +115,7 @@ Status checkClaimedTriangles(const nlohmann::json& document, const fs::path& fol
       continue;
     const std::string file = region["file"].get<std::string>();
     if (file.empty() || file.find_first_of("/\\") != std::string::npos || file == "." || file == "..") continue;
+    if (!seen.insert(file).second) continue;
     const auto claimed = region["triangles"].get<unsigned long long>();
     const std::string field = "regions[" + std::to_string(i) + "]";
     std::error_code ec;

@@ -172,6 +172,42 @@ void readRegion(const JsonField& field, std::size_t index, std::size_t planeCoun
   doc.plan.decomposition.regions.push_back(std::move(region));
 }
 
+ordered_json poseToJson(const PlanPose& pose) {
+  ordered_json rotation = ordered_json::array();
+  for (int r = 0; r < 3; ++r) rotation.push_back({pose.rotation(r, 0), pose.rotation(r, 1), pose.rotation(r, 2)});
+  ordered_json runnersUp = ordered_json::array();
+  for (const PlanPoseTrial& t : pose.runnersUp)
+    runnersUp.push_back({{"up", toJson(t.up)}, {"source", t.source}, {"jgAfterMm2", t.jgAfterMm2},
+                         {"regions", t.regions}, {"searched", t.searched}});
+  return {{"up", toJson(pose.up)}, {"rotation", rotation}, {"source", pose.source},
+          {"contactAreaMm2", pose.contactAreaMm2}, {"runnersUp", runnersUp}};
+}
+
+PlanPose poseFromJson(const JsonField& field) {
+  PlanPose pose;
+  pose.up = field["up"].unitVector();
+  const JsonField rotation = field["rotation"];
+  if (rotation.arraySize() != 3) rotation.fail("must hold three rows");
+  for (std::size_t r = 0; r < 3; ++r) pose.rotation.row(static_cast<int>(r)) = rotation.element(r).vector().transpose();
+  if (!(pose.rotation * pose.rotation.transpose()).isApprox(Eigen::Matrix3d::Identity(), 1e-6) ||
+      pose.rotation.determinant() < 0)
+    rotation.fail("must be a rotation (orthonormal rows, determinant 1)");
+  pose.source = field["source"].string();
+  pose.contactAreaMm2 = field["contactAreaMm2"].numberAtLeast(0.0);
+  const JsonField runnersUp = field["runnersUp"];
+  for (std::size_t i = 0; i < runnersUp.arraySize(); ++i) {
+    const JsonField t = runnersUp.element(i);
+    PlanPoseTrial trial;
+    trial.up = t["up"].unitVector();
+    trial.source = t["source"].string();
+    trial.jgAfterMm2 = t["jgAfterMm2"].numberAtLeast(0.0);
+    trial.regions = static_cast<int>(t["regions"].integer(0, kMaxCount));
+    trial.searched = t["searched"].boolean();
+    pose.runnersUp.push_back(trial);
+  }
+  return pose;
+}
+
 }  // namespace
 
 std::string regionFileName(std::size_t index) {
@@ -189,7 +225,7 @@ ordered_json planToJson(const Decomposition& plan, const PlanMetadata& metadata,
     regions.push_back(regionToJsonWithSupports(plan.regions[i], i, i < supports.size() ? &supports[i] : nullptr));
   ordered_json search = searchOptionsToJson(metadata.options);
   search["axisSearchCount"] = metadata.axisSearchCount;
-  return {{"schema", kPlanSchema},
+  ordered_json document = {{"schema", kPlanSchema},
           {"version", kPlanFormatVersion},
           {"multidirVersion", metadata.multidirVersion},
           {"units", {{"length", "mm"}, {"angle", "degrees"}}},
@@ -207,6 +243,8 @@ ordered_json planToJson(const Decomposition& plan, const PlanMetadata& metadata,
             {"statistics", statisticsToJson(plan.statistics)}}},
           {"clippingPlanes", planes},
           {"regions", regions}};
+  if (metadata.pose) document["pose"] = poseToJson(*metadata.pose);
+  return document;
 }
 
 PlanDocument planFromJson(const json& document, const std::string& fileName) {
@@ -241,6 +279,7 @@ PlanDocument planFromJson(const json& document, const std::string& fileName) {
   const JsonField search = root["search"];
   meta.options = searchOptionsFromJson(search);
   meta.axisSearchCount = static_cast<int>(search["axisSearchCount"].integer(0, 3600));
+  if (const auto pose = root.optional("pose")) meta.pose = poseFromJson(*pose);  // older plans have none
 
   Decomposition& plan = doc.plan.decomposition;
   const JsonField result = root["result"];

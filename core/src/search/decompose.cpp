@@ -9,6 +9,7 @@
 
 #include "detail/parallel.h"
 #include "multidir/core/mesh/mesh_measure.h"
+#include "search/run_decomposition.h"
 #include "search/search_engine.h"
 
 namespace multidir::core {
@@ -256,7 +257,9 @@ NodePtr withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOpti
   return node;
 }
 
-Status checkInputs(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options) {
+}  // namespace
+
+Status detail::checkSearchInputs(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options) {
   if (Status s = validate(options); !s) return s;
   if (Status s = validate(machine); !s) return s;
   if (model.empty()) return Error{ErrorCode::EmptyMesh, "the model has no faces: load a closed mesh first", "model"};
@@ -267,8 +270,7 @@ Status checkInputs(const TriangleMesh& model, const MachineSpec& machine, const 
   return checkCandidateCount(model, machine, options.candidates);
 }
 
-// The search itself, for validated inputs; reports levels but leaves the job's overall progress alone.
-Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                JobContext& job, const SearchProgressSink& progress) {
   const auto start = std::chrono::steady_clock::now();
   SearchEngine engine(model, machine, options, job);
@@ -300,11 +302,12 @@ Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& mac
   return plan;
 }
 
-}  // namespace
+using detail::checkSearchInputs;
+using detail::runDecomposition;
 
 Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                 JobContext& job, const SearchProgressSink& progress) {
-  if (Status s = checkInputs(model, machine, options); !s) return s.error();
+  if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
   Decomposition plan = runDecomposition(model, machine, options, job, progress);
   job.setProgress(1.0, "search done");
   return plan;
@@ -312,7 +315,7 @@ Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& ma
 
 Result<Decomposition> planFromClippingPlanes(const TriangleMesh& model, const MachineSpec& machine,
                                              const SearchOptions& options, const std::vector<Plane>& clippingPlanes) {
-  if (Status s = checkInputs(model, machine, options); !s) return s.error();
+  if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
   const auto start = std::chrono::steady_clock::now();
   SearchOptions evaluation = options;
   evaluation.candidates.normalSamples = 1;  // the engine's own candidates are not used here
@@ -340,7 +343,7 @@ Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const M
     return Error{ErrorCode::InvalidParameter, "the axis search needs a 4-DOF machine (--machine 4dof)", "axis search"};
   if (axisCount < 1 || axisCount > 3600)
     return Error{ErrorCode::InvalidParameter, "the number of axes must be between 1 and 3600", "axis search"};
-  if (Status s = checkInputs(model, machine, options); !s) return s.error();
+  if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
   const auto start = std::chrono::steady_clock::now();
 
   const int threads = detail::resolveThreadCount(options.threads);

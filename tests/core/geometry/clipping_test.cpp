@@ -100,7 +100,9 @@ std::string clipViolation(const TriangleMesh& input, const Plane& plane, std::in
   }
   const double area = surfaceArea(input);
   const double pieces = areaNotFromCap(clip.below, planeId) + areaNotFromCap(clip.above, planeId);
-  if (std::abs(pieces - area) > 1e-9 * area) {
+  // A vertex a hair from the plane is moved onto it along the surface (no slivers, volume kept); that changes
+  // the area around it by a second-order amount, far below 1e-6 of the whole.
+  if (std::abs(pieces - area) > 1e-6 * area) {
     why << "surface pieces cover " << pieces << " mm^2 instead of " << area;
     return why.str();
   }

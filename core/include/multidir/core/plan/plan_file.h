@@ -7,6 +7,7 @@
 //   plan.json        schema "multidir-plan", version kPlanFormatVersion: metadata, planes, regions
 //   region-01.stl    the first region in printing order (binary STL, mm), region-02.stl, ...
 //   region-01-supports.stl   optional: the supports printed with region 1 (binary STL, mm), ...
+#include <optional>
 #include <string>
 
 #include "multidir/core/common/result.h"
@@ -20,6 +21,25 @@ namespace multidir::core {
 constexpr int kPlanFormatVersion = 1;
 constexpr int kMachineProfileVersion = 1;
 
+// A pose tried by the pose search (decomposeWithPoseSearch), as plan.json records it.
+struct PlanPoseTrial {
+  Vec3 up = Vec3::UnitZ();   // unit, in the model's coordinates
+  std::string source;        // "given", "resting" or "sampled"
+  double jgAfterMm2 = 0.0;   // full search, or the cheap (greedy) plan's when not fully searched
+  int regions = 0;
+  bool searched = false;
+};
+
+// The pose the search chose: its up, and the rotation that turns the input model so that this up points
+// along the up it was given (the platform's up). Plans stay in the model's coordinates.
+struct PlanPose {
+  Vec3 up = Vec3::UnitZ();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  std::string source;
+  double contactAreaMm2 = 0.0;
+  std::vector<PlanPoseTrial> runnersUp;  // the other poses tried, best J_G first
+};
+
 // What a plan was computed from, stored beside it so a plan can be checked against its model and rerun.
 struct PlanMetadata {
   std::string modelPath;        // as the user gave it
@@ -28,6 +48,7 @@ struct PlanMetadata {
   MachineSpec machine;          // every field, as the search used it (4-DOF: before any axis search)
   SearchOptions options;        // every field
   int axisSearchCount = 0;      // 4-DOF axes tried by decomposeWithAxisSearch; 0: no axis search
+  std::optional<PlanPose> pose; // set when the pose search chose machine.up (--pose auto)
   std::string multidirVersion;  // the MultiDir that wrote the plan ("0.1.0")
 };
 

@@ -1,0 +1,162 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "multidir/core/search/decompose.h"
+#include "multidir/core/search/pose_search.h"
+#include "support/primitives.h"
+#include "support/test_models.h"
+
+using namespace multidir::core;
+
+namespace {
+
+// Small searches: a few normals and beams keep each pose's search to a fraction of a second.
+SearchOptions smallOptions(int threads = 1) {
+  SearchOptions options;
+  options.beamWidth = 2;
+  options.candidates.normalSamples = 40;
+  options.refinementRounds = 0;
+  options.threads = threads;
+  return options;
+}
+
+PoseOptions fewPoses(int poses = 6, int searches = 2) {
+  PoseOptions options;
+  options.poses = poses;
+  options.fullSearches = searches;
+  return options;
+}
+
+bool parallel(const Vec3& a, const Vec3& b) { return a.normalized().dot(b.normalized()) > 1 - 1e-9; }
+
+}  // namespace
+
+TEST(RestingPoses, OfABoxAreItsSixSidesLargestFirst) {
+  const TriangleMesh box = multidir::test::makeBox(Vec3(0, 0, 0), Vec3(10, 20, 30));
+  auto poses = restingPoses(box);
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  ASSERT_EQ(poses->size(), 6u);
+  // Resting on a 20 x 30 side (up +-x) first, then 10 x 30 (up +-y), then 10 x 20 (up +-z).
+  EXPECT_NEAR((*poses)[0].contactAreaMm2, 600.0, 1e-9);
+  EXPECT_NEAR((*poses)[1].contactAreaMm2, 600.0, 1e-9);
+  EXPECT_NEAR((*poses)[2].contactAreaMm2, 300.0, 1e-9);
+  EXPECT_NEAR((*poses)[4].contactAreaMm2, 200.0, 1e-9);
+  EXPECT_NEAR(std::abs((*poses)[0].up.x()), 1.0, 1e-9);
+  EXPECT_NEAR(std::abs((*poses)[4].up.z()), 1.0, 1e-9);
+  EXPECT_NEAR((*poses)[0].stabilityMarginMm, 10.0, 1e-9);  // centre of a 20 x 30 side: 10 from the long edges
+  for (const PoseCandidate& p : *poses) EXPECT_EQ(p.source, PoseSource::Resting);
+}
+
+TEST(RestingPoses, OfATBarAreItsSidesBarTopSlantsAndStemButNotTheBarEnds) {
+  // Stem 4 wide and 20 tall, bar 30 wide and 4 tall, 10 deep; centre of mass 17.2 above the stem's foot.
+  const TriangleMesh tbar = multidir::test::makeTBar(4, 20, 30, 4, 10);
+  auto poses = restingPoses(tbar);
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  // The T's profile (its hull: 460 mm^2) twice, the bar's top (300), the two slants from the stem's foot to
+  // the bar's ends, the stem's foot (40). A bar's end (4 x 10, from 20 to 24 high) cannot hold it: the centre
+  // of mass projects below it.
+  ASSERT_EQ(poses->size(), 6u);
+  EXPECT_NEAR(std::abs((*poses)[0].up.y()), 1.0, 1e-9);
+  EXPECT_NEAR(std::abs((*poses)[1].up.y()), 1.0, 1e-9);
+  EXPECT_NEAR((*poses)[0].contactAreaMm2, 460.0, 1e-6);
+  EXPECT_TRUE(parallel((*poses)[2].up, Vec3(0, 0, -1)));
+  EXPECT_NEAR((*poses)[2].contactAreaMm2, 300.0, 1e-6);
+  EXPECT_TRUE(parallel((*poses)[5].up, Vec3(0, 0, 1)));
+  EXPECT_NEAR((*poses)[5].contactAreaMm2, 40.0, 1e-6);
+  EXPECT_NEAR((*poses)[5].stabilityMarginMm, 2.0, 1e-6);
+  for (const PoseCandidate& p : *poses) EXPECT_LT(std::abs(p.up.x()), 1 - 1e-6) << "resting on a bar's end";
+}
+
+TEST(CandidatePoses, StartWithTheGivenUpAndAreBoundedAndDistinct) {
+  const TriangleMesh tbar = multidir::test::makeTBar(4, 20, 30, 4, 10);
+  auto poses = candidatePoses(tbar, Vec3(0, 0, 2), fewPoses(10, 2));
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  ASSERT_LE(poses->size(), 10u);
+  ASSERT_GE(poses->size(), 4u);
+  EXPECT_EQ((*poses)[0].source, PoseSource::Given);
+  EXPECT_TRUE(parallel((*poses)[0].up, Vec3::UnitZ()));
+  EXPECT_NEAR((*poses)[0].riskyAreaMm2, 2 * 13 * 10, 1e-6);  // the bar's two undersides
+  for (std::size_t i = 0; i < poses->size(); ++i)
+    for (std::size_t j = i + 1; j < poses->size(); ++j)
+      EXPECT_LT((*poses)[i].up.dot((*poses)[j].up), std::cos(4.9 * kPi / 180)) << i << " " << j;
+}
+
+TEST(PoseOptions, OutOfRangeCountsAreRefusedWithTheirRange) {
+  PoseOptions options;
+  options.poses = 0;
+  EXPECT_NE(validate(options).error().message.find("between 1 and 200"), std::string::npos);
+  options.poses = 4;
+  options.fullSearches = 5;
+  EXPECT_FALSE(validate(options).ok());
+  options.fullSearches = 4;
+  EXPECT_TRUE(validate(options).ok());
+}
+
+TEST(MachineForPose, TurnsTheRotaryAxisWithUp) {
+  MachineSpec machine;
+  machine.kind = MachineKind::RotaryPlatform;
+  const MachineSpec posed = machineForPose(machine, Vec3(0, 1, 0));
+  EXPECT_TRUE(validate(posed).ok());
+  EXPECT_TRUE(parallel(posed.up, Vec3::UnitY()));
+  EXPECT_NEAR(posed.rotationAxis.dot(posed.up), 0.0, 1e-12);
+  EXPECT_TRUE(parallel(poseRotation(Vec3(1, 0, 0), Vec3::UnitZ()) * Vec3(1, 0, 0), Vec3::UnitZ()));
+}
+
+TEST(PoseSearch, IsNeverWorseThanTheGivenUp) {
+  // Standing on its stem the T's bar overhangs; lying down it does not.
+  const TriangleMesh tbar = multidir::test::makeTBar(4, 20, 30, 4, 10);
+  MachineSpec machine;
+  machine.up = Vec3::UnitZ();
+  JobContext job;
+  auto given = decompose(tbar, machine, smallOptions(), job);
+  ASSERT_TRUE(given.ok());
+  JobContext poseJob;
+  auto best = decomposeWithPoseSearch(tbar, machine, smallOptions(), fewPoses(), poseJob);
+  ASSERT_TRUE(best.ok()) << best.error().describe();
+  EXPECT_LE(best->plan.jgAfterMm2, given->jgAfterMm2 + 1e-6);
+  EXPECT_TRUE(best->trials[0].searched);
+  EXPECT_NEAR(best->trials[0].jgAfterMm2, given->jgAfterMm2, 1e-6);
+  EXPECT_EQ(best->trials[best->chosenTrial].pose.up, best->chosen.up);
+  EXPECT_TRUE(parallel(best->rotation * best->chosen.up, machine.up));
+  EXPECT_FALSE(best->plan.cancelled);
+  EXPECT_DOUBLE_EQ(poseJob.progress(), 1.0);
+}
+
+TEST(PoseSearch, ChoosesAPoseWithoutOverhangForABox) {
+  // Every pose of a box is risk-free; ties go to fewer regions, then the larger contact.
+  const TriangleMesh box = multidir::test::makeBox(Vec3(0, 0, 0), Vec3(10, 20, 30));
+  MachineSpec machine;
+  JobContext job;
+  auto best = decomposeWithPoseSearch(box, machine, smallOptions(), fewPoses(4, 3), job);
+  ASSERT_TRUE(best.ok());
+  EXPECT_NEAR(best->plan.jgAfterMm2, 0.0, 1e-9);
+  EXPECT_EQ(best->plan.regions.size(), 1u);
+  EXPECT_NEAR(best->chosen.contactAreaMm2, 600.0, 1e-9);
+}
+
+TEST(PoseSearch, GivesTheSameResultForOneAndTwoThreads) {
+  const TriangleMesh model = multidir::test::makeHook(10);
+  MachineSpec machine;
+  JobContext a, b;
+  auto one = decomposeWithPoseSearch(model, machine, smallOptions(1), fewPoses(), a);
+  auto two = decomposeWithPoseSearch(model, machine, smallOptions(2), fewPoses(), b);
+  ASSERT_TRUE(one.ok() && two.ok());
+  EXPECT_EQ(one->chosenTrial, two->chosenTrial);
+  EXPECT_EQ(one->plan.jgAfterMm2, two->plan.jgAfterMm2);
+  ASSERT_EQ(one->trials.size(), two->trials.size());
+  for (std::size_t i = 0; i < one->trials.size(); ++i) {
+    EXPECT_EQ(one->trials[i].cheapJgMm2, two->trials[i].cheapJgMm2);
+    EXPECT_EQ(one->trials[i].jgAfterMm2, two->trials[i].jgAfterMm2);
+    EXPECT_EQ(one->trials[i].searched, two->trials[i].searched);
+  }
+}
+
+TEST(PoseSearch, CancelledBeforeStartingSaysSo) {
+  MachineSpec machine;
+  JobContext job;
+  job.cancel();
+  auto result = decomposeWithPoseSearch(multidir::test::makeHook(10), machine, smallOptions(), fewPoses(), job);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
+}
