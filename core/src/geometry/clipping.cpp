@@ -135,16 +135,12 @@ class PlaneSplitter {
         m_side[v] = 0;
         m_positions[v] += *move;
         m_positions[v] -= plane.signedDistance(m_positions[v]) * plane.normal;  // rounding
-      } else if (std::abs(d) <= snap.reach[v] && nearlyTangent(snap.normal[v])) {
-        // The plane is (nearly) tangent to the surface there, as when it shaves a corner: moved along the
-        // normal, which changes the volume by at most |d| x the area around the vertex / 3.
-        m_side[v] = 0;
-        m_positions[v] -= d * plane.normal;
       } else {
         m_side[v] = d > 0.0 ? 1 : -1;
       }
     }
   }
+
 
   // A plane that passes a hair from a vertex cuts slivers: a sliver-thin strip of each face at the vertex,
   // and cap triangles between crossing points a hair apart (the cap of 2.7 % of random clips had one). Such a
@@ -176,14 +172,6 @@ class PlaneSplitter {
     for (double& r : data.reach)
       if (!std::isfinite(r)) r = 0.0;
     return data;
-  }
-  // Whether the plane is (nearly) tangent to the surface at a vertex with this area-weighted normal: then no
-  // short move along the surface reaches it. Only there is a vertex moved along the plane's normal instead.
-  bool nearlyTangent(const Vec3& vertexNormal) const {
-    const double length = vertexNormal.norm();
-    if (!(length > 0.0)) return false;
-    const Vec3 unit = vertexNormal / length;
-    return (m_plane.normal - m_plane.normal.dot(unit) * unit).squaredNorm() < 1e-6;
   }
   // The move that brings a vertex at signed distance d onto the plane along its surface, if short enough.
   std::optional<Vec3> volumeKeepingSnap(double d, const Vec3& vertexNormal, double reach) const {
