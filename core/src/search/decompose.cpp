@@ -238,20 +238,15 @@ NodePtr withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOpti
   std::vector<Plane> planes = planesOf(node);
   while (!planes.empty()) {
     NodePtr bestNode;
-    std::size_t bestIndex = 0;
     for (std::size_t k = 0; k < planes.size(); ++k) {
       std::vector<Plane> fewer = planes;
       fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(k));
       NodePtr candidate = rebuild(engine, fewer);
       if (!candidate || candidate->jg() - node->jg() >= threshold) continue;
-      if (!bestNode || candidate->jg() < bestNode->jg()) {
-        bestNode = candidate;
-        bestIndex = k;
-      }
+      if (!bestNode || candidate->jg() < bestNode->jg()) bestNode = candidate;
     }
     if (!bestNode) break;
     node = bestNode;
-    planes.erase(planes.begin() + static_cast<std::ptrdiff_t>(bestIndex));
     planes = planesOf(node);  // as cut: each kept off the vertices of what it cuts now
   }
   return node;

@@ -203,19 +203,20 @@ Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& p
   // Where two cuts cross near an edge, a cut vertex can land within float rounding of another one even with
   // the plane off every vertex; a few nearby placements (2, 4, 8 clearances down, then up) avoid it.
   const Plane first = plane;
-  Result<ClipResult> clipped = Error{ErrorCode::Internal, "not clipped", "clip"};
+  std::optional<Result<ClipResult>> firstClip;  // kept: when no placement keeps float precision, it is returned
   for (const double steps : {0.0, -2.0, 2.0, -4.0, 4.0, -8.0, 8.0}) {
     const Plane tried{first.normal, first.offset + steps * m_vertexClearanceMm};
     if (steps != 0.0 && keptOffVertices(tried, solid).offset != tried.offset) continue;
     ++m_clips;
-    clipped = clipByPlane(solid, tried, planeId);
+    Result<ClipResult> clipped = clipByPlane(solid, tried, planeId);
     if (!clipped.ok() || keepsFloatPrecision(*clipped)) {
       plane = tried;
       return clipped;
     }
+    if (!firstClip) firstClip = std::move(clipped);
   }
   plane = first;
-  return clipByPlane(solid, first, planeId);  // unprintableReason names what is wrong with it
+  return std::move(*firstClip);  // unprintableReason names what is wrong with it
 }
 
 std::string SearchEngine::unprintableReason(const ClipResult& clipped, const Plane& plane) const {
