@@ -115,9 +115,11 @@ Status checkSolid(const TriangleMesh& mesh, bool checkClosed) {
 struct SideFaces {
   std::vector<Triangle> triangles;
   std::vector<FaceOrigin> origins;
-  void add(std::int32_t a, std::int32_t b, std::int32_t c, FaceOrigin origin) {
+  std::vector<std::int32_t> sourceFace;  // input face kept unchanged, or -1
+  void add(std::int32_t a, std::int32_t b, std::int32_t c, FaceOrigin origin, std::int32_t source = -1) {
     triangles.push_back({a, b, c});
     origins.push_back(origin);
+    sourceFace.push_back(source);
   }
 };
 
@@ -193,7 +195,8 @@ class PlaneSplitter {
     m_below.origins.reserve(faceCount);
     m_above.triangles.reserve(faceCount);
     m_above.origins.reserve(faceCount);
-    for (std::size_t f = 0; f < faceCount; ++f) splitFace(m_solid.triangles[f], m_solid.origins[f]);
+    for (std::size_t f = 0; f < faceCount; ++f)
+      splitFace(m_solid.triangles[f], m_solid.origins[f], static_cast<std::int32_t>(f));
   }
 
   // The cap's boundary: the edges in the plane of `below` that no other face of `below` shares, reversed so
@@ -248,7 +251,7 @@ class PlaneSplitter {
     return it->second;
   }
 
-  void splitFace(const Triangle& t, FaceOrigin origin) {
+  void splitFace(const Triangle& t, FaceOrigin origin, std::int32_t face) {
     const int s[3] = {m_side[t[0]], m_side[t[1]], m_side[t[2]]};
     const bool anyBelow = s[0] < 0 || s[1] < 0 || s[2] < 0;
     const bool anyAbove = s[0] > 0 || s[1] > 0 || s[2] > 0;
@@ -260,7 +263,9 @@ class PlaneSplitter {
       return;
     }
     if (!anyBelow || !anyAbove) {
-      sideOf(anyBelow ? -1 : 1).add(t[0], t[1], t[2], origin);
+      // Unchanged only when no corner was moved onto the plane.
+      const bool unchanged = s[0] != 0 && s[1] != 0 && s[2] != 0;
+      sideOf(anyBelow ? -1 : 1).add(t[0], t[1], t[2], origin, unchanged ? face : -1);
       return;
     }
     // Rotate so that corner 0 is the odd one out: the corner in the plane, or the lone corner on its side.
@@ -344,7 +349,8 @@ void separatePinchedVertices(TriangleMesh& mesh, const std::vector<std::int32_t>
 
 // One side as a mesh of its own: only the vertices its faces use, numbered in order of first use.
 TriangleMesh assembleSide(SideFaces&& faces, const std::vector<Triangle>& cap, bool capFacesNormal,
-                          std::int32_t planeId, const PlaneSplitter& splitter) {
+                          std::int32_t planeId, const PlaneSplitter& splitter,
+                          std::vector<std::int32_t>* sourceFace = nullptr) {
   for (const Triangle& t : cap) {
     if (capFacesNormal)
       faces.add(t[0], t[1], t[2], FaceOrigin::cap(planeId));
@@ -368,6 +374,7 @@ TriangleMesh assembleSide(SideFaces&& faces, const std::vector<Triangle>& cap, b
   }
   mesh.triangles = std::move(faces.triangles);
   mesh.origins = std::move(faces.origins);
+  if (sourceFace) *sourceFace = std::move(faces.sourceFace);
   separatePinchedVertices(mesh, pinchCandidates);
   return mesh;
 }
@@ -387,7 +394,7 @@ Result<ClipResult> clipByPlane(const TriangleMesh& solid, const Plane& plane, st
   if (!cap) return cap.error();
 
   ClipResult result;
-  result.below = assembleSide(std::move(splitter.below()), cap.value(), true, planeId, splitter);
+  result.below = assembleSide(std::move(splitter.below()), cap.value(), true, planeId, splitter, &result.belowSourceFace);
   result.above = assembleSide(std::move(splitter.above()), cap.value(), false, planeId, splitter);
   return result;
 }

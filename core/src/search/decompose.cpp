@@ -89,6 +89,24 @@ std::vector<std::size_t> beamOrder(const std::vector<ScoredCandidate>& pool, con
   return order;
 }
 
+// Once every child of a node was scored, its sweeps are no longer needed (the root's serve all schemes).
+void releaseParentSweeps(const SearchEngine& engine, const SearchNode& scored) {
+  if (scored.parent && scored.parent != engine.root()) scored.parent->latticeSweeps.reset();
+}
+
+// Extends beams by the pool's candidates at `indices`, on the engine's threads; results in the order given.
+// The callers take these in order as if made one by one, so only the wasted work depends on the threads.
+std::vector<std::optional<NodePtr>> extendAll(SearchEngine& engine, const std::vector<NodePtr>& beams,
+                                              const std::vector<ScoredCandidate>& pool,
+                                              const std::vector<std::size_t>& indices) {
+  std::vector<std::optional<NodePtr>> children(indices.size());
+  detail::parallelFor(static_cast<int>(indices.size()), engine.threads(), [&](int i) {
+    const ScoredCandidate& c = pool[indices[i]];
+    children[i] = engine.extend(beams[c.beam], c);
+  });
+  return children;
+}
+
 // Refines the best candidates between the lattice normals (a pattern search on the sphere per seed: six
 // normals around the best so far, the radius halved each round) and adds what it scores to the pool. The
 // lattice spacing (~13 degrees for 250 normals) is coarse enough that which side of a feature a lattice
@@ -150,25 +168,37 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
       pool.insert(pool.end(), scored.begin(), scored.end());
     }
     if (refineCandidates(engine, beams, o, pool)) return true;
+    for (const NodePtr& beam : beams) releaseParentSweeps(engine, *beam);
     const std::vector<std::size_t> order = beamOrder(pool, o);
     std::vector<NodePtr> next;
     std::vector<ScoredCandidate> chosen;
-    for (std::size_t index : order) {
-      if (static_cast<int>(next.size()) >= o.beamWidth) break;
+    auto closeToChosen = [&](const ScoredCandidate& c) {
+      return std::any_of(chosen.begin(), chosen.end(),
+                         [&](const ScoredCandidate& other) { return tooClose(c, other, engine.normals(), o); });
+    };
+    // Candidates in Algorithm 1's order, clipped a batch at a time on the engine's threads; a batch holds
+    // as many as beams are still missing (at most the thread count), and its children are taken in order.
+    for (std::size_t position = 0; static_cast<int>(next.size()) < o.beamWidth && position < order.size();) {
       if (engine.job().isCancelled()) return true;
-      const ScoredCandidate& c = pool[index];
-      bool close = false;
-      for (const ScoredCandidate& other : chosen) close = close || tooClose(c, other, engine.normals(), o);
-      if (close) continue;
-      auto child = engine.extend(beams[c.beam], c);
-      if (!child) continue;
-      // The same cuts in another order leave the same part: keep one of them.
-      bool duplicate = false;
-      for (const NodePtr& other : next) duplicate = duplicate || sameState(**child, *other);
-      if (duplicate) continue;
-      chosen.push_back(c);
-      best.offer(*child);
-      next.push_back(*child);
+      const std::size_t wanted =
+          static_cast<std::size_t>(std::min(engine.threads(), o.beamWidth - static_cast<int>(next.size())));
+      std::vector<std::size_t> batch;
+      for (; batch.size() < wanted && position < order.size(); ++position)
+        if (!closeToChosen(pool[order[position]])) batch.push_back(order[position]);
+      const std::vector<std::optional<NodePtr>> children = extendAll(engine, beams, pool, batch);
+      for (std::size_t i = 0; i < batch.size() && static_cast<int>(next.size()) < o.beamWidth; ++i) {
+        const ScoredCandidate& c = pool[batch[i]];
+        if (closeToChosen(c)) continue;  // close to one chosen earlier in this batch
+        const std::optional<NodePtr>& child = children[i];
+        if (!child) continue;
+        // The same cuts in another order leave the same part: keep one of them.
+        bool duplicate = false;
+        for (const NodePtr& other : next) duplicate = duplicate || sameState(**child, *other);
+        if (duplicate) continue;
+        chosen.push_back(c);
+        best.offer(*child);
+        next.push_back(*child);
+      }
     }
     beams.clear();
     for (const NodePtr& node : next)
@@ -187,6 +217,7 @@ bool runGreedy(SearchEngine& engine, bool constrained, BestPlan& best, const Sea
     bool cancelled = false;
     std::vector<ScoredCandidate> pool = engine.score(*node, 0, cancelled);
     if (cancelled) return true;
+    releaseParentSweeps(engine, *node);
     levels = node->level + 1;
     const bool anyRiskFree = constrained && std::any_of(pool.begin(), pool.end(), [&](const ScoredCandidate& c) {
                                return c.riskyAboveMm2 < kRiskFree && c.localGainMm2() > 0;
@@ -197,11 +228,20 @@ bool runGreedy(SearchEngine& engine, bool constrained, BestPlan& best, const Sea
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return pool[a].localGainMm2() > pool[b].localGainMm2();
     });
+    // The first candidate in order that extends, tried a thread-count batch at a time.
     std::optional<NodePtr> child;
-    for (std::size_t index : order) {
+    const std::vector<NodePtr> beams = {node};
+    for (std::size_t position = 0; !child && position < order.size();) {
       if (engine.job().isCancelled()) return true;
-      child = engine.extend(node, pool[index]);
-      if (child) break;
+      const std::size_t end = std::min(order.size(), position + static_cast<std::size_t>(engine.threads()));
+      const std::vector<std::size_t> batch(order.begin() + static_cast<std::ptrdiff_t>(position),
+                                           order.begin() + static_cast<std::ptrdiff_t>(end));
+      position = end;
+      for (std::optional<NodePtr>& extended : extendAll(engine, beams, pool, batch))
+        if (extended) {
+          child = std::move(extended);
+          break;
+        }
     }
     if (!child) break;
     node = *child;
@@ -219,9 +259,17 @@ std::vector<Plane> planesOf(const NodePtr& node) {
   return planes;
 }
 
-// The node that the planes make from the root, or null when some plane is refused.
-NodePtr rebuild(SearchEngine& engine, const std::vector<Plane>& planes) {
-  NodePtr node = engine.root();
+// The nodes of a node's chain, the root first.
+std::vector<NodePtr> chainOf(const NodePtr& node) {
+  std::vector<NodePtr> chain;
+  for (NodePtr n = node; n; n = n->parent) chain.push_back(n);
+  std::reverse(chain.begin(), chain.end());
+  return chain;
+}
+
+// The node that the planes make from `start`, or null when some plane is refused.
+NodePtr rebuild(SearchEngine& engine, NodePtr start, const std::vector<Plane>& planes) {
+  NodePtr node = std::move(start);
   for (const Plane& plane : planes) {
     auto child = engine.cut(node, plane);
     if (!child.ok()) return nullptr;
@@ -237,11 +285,15 @@ NodePtr withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOpti
   const double threshold = std::max(o.minPlaneGainMm2, o.minPlaneGainPercent / 100.0 * engine.root()->riskyUpAreaMm2);
   std::vector<Plane> planes = planesOf(node);
   while (!planes.empty()) {
+    // Without plane k, the first k cuts are unchanged: start from the node they made.
+    const std::vector<NodePtr> chain = chainOf(node);
+    std::vector<NodePtr> without(planes.size());
+    detail::parallelFor(static_cast<int>(planes.size()), engine.threads(), [&](int k) {
+      const std::vector<Plane> later(planes.begin() + k + 1, planes.end());
+      without[k] = rebuild(engine, chain[k], later);
+    });
     NodePtr bestNode;
-    for (std::size_t k = 0; k < planes.size(); ++k) {
-      std::vector<Plane> fewer = planes;
-      fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(k));
-      NodePtr candidate = rebuild(engine, fewer);
+    for (const NodePtr& candidate : without) {
       if (!candidate || candidate->jg() - node->jg() >= threshold) continue;
       if (!bestNode || candidate->jg() < bestNode->jg()) bestNode = candidate;
     }

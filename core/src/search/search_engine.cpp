@@ -10,6 +10,7 @@
 #include "multidir/core/mesh/mesh_measure.h"
 #include "multidir/core/search/plane_sweep.h"
 #include "plan/stl_image.h"
+#include "search/floating_pieces.h"
 
 namespace multidir::core::detail {
 
@@ -27,6 +28,7 @@ SearchEngine::SearchEngine(const TriangleMesh& model, const MachineSpec& machine
   // region read back from its STL still tells its cap from its other faces.
   m_vertexClearanceMm = 4.0 * inPlaneToleranceMm(model);
   m_checkFloatPrecision = cornersMergedAtFloatPrecision(model) == 0;
+  m_clipMarginMm = clipMarginMm(model);
   m_root = makeNode(std::make_shared<const TriangleMesh>(model));
 }
 
@@ -58,28 +60,80 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
   std::vector<int> lattice(m_latticeSize);
   for (int i = 0; i < m_latticeSize; ++i) lattice[i] = i;
   const long long before = m_candidatesScored;
-  std::vector<ScoredCandidate> all = scoreNormals(node, beamIndex, lattice, cancelled);
+  auto sweeps = std::make_shared<std::vector<NormalSweep>>();
+  std::vector<ScoredCandidate> all = scoreNormals(node, beamIndex, lattice, cancelled, sweeps.get());
   if (m_firstLevelCandidates < 0) m_firstLevelCandidates = static_cast<int>(m_candidatesScored - before);
+  if (!cancelled) node.latticeSweeps = std::move(sweeps);
   if (root && !cancelled) m_rootScored = all;
   return all;
 }
 
+namespace {
+
+// The parent's grid position of the child grid's first offset, when the child's grid lies inside it.
+std::optional<int> shiftInto(const OffsetGrid& parent, const OffsetGrid& child) {
+  if (parent.stepMm != child.stepMm || parent.count == 0) return std::nullopt;
+  const double position = (child.firstMm - parent.firstMm) / parent.stepMm;
+  const double shift = std::round(position);
+  // Both grids sit on the same lattice (multiples of the step), so the position is an integer up to rounding.
+  if (std::abs(position - shift) > 1e-6 || shift < 0 || shift + child.count > parent.count) return std::nullopt;
+  return static_cast<int>(shift);
+}
+
+// parent (on its grid, from `shift`) - removed + added, on the child's grid.
+SweepProfile updatedProfile(const SweepProfile& parent, int shift, const SweepProfile& removed,
+                            const SweepProfile& added, double top) {
+  auto combine = [&](const std::vector<double>& p, const std::vector<double>& r, const std::vector<double>& a) {
+    std::vector<double> out(r.size());
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] = p[j + shift] - r[j] + a[j];
+    return out;
+  };
+  SweepProfile out;
+  out.volumeAboveMm3 = combine(parent.volumeAboveMm3, removed.volumeAboveMm3, added.volumeAboveMm3);
+  out.riskyAreaAlongNormalMm2 =
+      combine(parent.riskyAreaAlongNormalMm2, removed.riskyAreaAlongNormalMm2, added.riskyAreaAlongNormalMm2);
+  out.riskyAreaFlaggedMm2 = combine(parent.riskyAreaFlaggedMm2, removed.riskyAreaFlaggedMm2, added.riskyAreaFlaggedMm2);
+  out.topMm = top;
+  return out;
+}
+
+double topAlong(const TriangleMesh& solid, const Vec3& n) {
+  double top = -INFINITY;
+  for (const Vec3& v : solid.vertices) top = std::max(top, n.dot(v));
+  return top;
+}
+
+}  // namespace
+
 std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, int beamIndex,
-                                                        const std::vector<int>& normalIndices, bool& cancelled) {
+                                                        const std::vector<int>& normalIndices, bool& cancelled,
+                                                        std::vector<NormalSweep>* sweeps) {
   const int count = static_cast<int>(normalIndices.size());
   std::vector<std::vector<ScoredCandidate>> perNormal(count);
   std::vector<long long> offered(count, 0);
   const double volumeSlack = 1e-9 * m_modelVolume;
   const PlaneSweeper sweeper(*node.remaining, node.riskyUpShare, m_sinAlpha);
+  // A child differs from its parent by a few faces: its profiles are the parent's updated by those faces.
+  const std::vector<NormalSweep>* parentSweeps = node.parent ? node.parent->latticeSweeps.get() : nullptr;
+  std::optional<PlaneSweeper> parentSweeper;
+  if (parentSweeps) parentSweeper.emplace(*node.parent->remaining, node.parent->riskyUpShare, m_sinAlpha);
+  if (sweeps) sweeps->assign(count, NormalSweep{});
 
   parallelFor(count, m_threads, [&](int k) {
     if (m_job.isCancelled()) return;
     const int i = normalIndices[k];
     const Vec3& n = m_normals[i];
     const OffsetGrid grid = candidateOffsets(*node.remaining, n, m_platform, m_machine.up, m_options.candidates);
+    if (sweeps) (*sweeps)[k].grid = grid;
     if (grid.count == 0) return;
     offered[k] = grid.count;
-    const SweepProfile profile = sweeper.sweep(n, grid);
+    std::optional<int> shift;
+    if (parentSweeps && i < static_cast<int>(parentSweeps->size())) shift = shiftInto((*parentSweeps)[i].grid, grid);
+    const SweepProfile profile =
+        shift ? updatedProfile((*parentSweeps)[i].profile, *shift, parentSweeper->sweepFaces(n, grid, node.removedParentFaces),
+                               sweeper.sweepFaces(n, grid, node.addedFaces), topAlong(*node.remaining, n))
+              : sweeper.sweep(n, grid);
+    if (sweeps) (*sweeps)[k].profile = profile;
     for (int j = 0; j < grid.count; ++j) {
       // The part above must be at least minRegionHeightMm tall along its printing direction.
       if (profile.topMm - grid.offsetAt(j) < m_options.minRegionHeightMm) continue;
@@ -116,6 +170,19 @@ int SearchEngine::addNormal(const Vec3& normal) {
 std::shared_ptr<SearchNode> SearchEngine::makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
                                                   ClipResult clipped, double regionRiskyMm2) const {
   auto child = makeNode(std::make_shared<const TriangleMesh>(std::move(clipped.below)));
+  // The parent's faces that the child keeps unchanged (same corners, same risky share); the rest differ.
+  std::vector<char> kept(node->remaining->triangles.size(), 0);
+  for (std::size_t f = 0; f < child->remaining->triangles.size(); ++f) {
+    const std::int32_t source = f < clipped.belowSourceFace.size() ? clipped.belowSourceFace[f] : -1;
+    if (source >= 0 && child->riskyUpShare.size() == child->remaining->triangles.size() &&
+        node->riskyUpShare.size() == node->remaining->triangles.size() &&
+        child->riskyUpShare[f] == node->riskyUpShare[static_cast<std::size_t>(source)])
+      kept[static_cast<std::size_t>(source)] = 1;
+    else
+      child->addedFaces.push_back(static_cast<std::int32_t>(f));
+  }
+  for (std::size_t f = 0; f < kept.size(); ++f)
+    if (!kept[f]) child->removedParentFaces.push_back(static_cast<std::int32_t>(f));
   child->parent = node;
   child->plane = plane;
   child->region = std::make_shared<const TriangleMesh>(std::move(clipped.above));
@@ -127,6 +194,10 @@ std::shared_ptr<SearchNode> SearchEngine::makeChild(const std::shared_ptr<const 
 std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std::shared_ptr<const SearchNode>& node,
                                                                       const ScoredCandidate& candidate) {
   Plane plane = keptOffVertices(Plane{m_normals[candidate.normal], candidate.offsetMm}, *node->remaining);
+  // Criterion II refuses most candidates on branchy models; this finds the certain refusals without a clip.
+  if (certainlyLeavesFloatingPiece(*node->remaining, plane, m_machine.up,
+                                   m_platform.heightMm + m_options.platformToleranceMm, m_clipMarginMm))
+    return std::nullopt;
   auto clipped = clipSavably(*node->remaining, plane, node->level);
   if (!clipped.ok() || clipped->below.empty() || clipped->above.empty()) return std::nullopt;
   if (!standsOnPlatform(clipped->below)) return std::nullopt;

@@ -1,6 +1,7 @@
 #pragma once
 // What every search scheme shares: the candidate normals, the platform, scoring a beam's candidates with the
 // plane sweep, and extending a beam by one clip (where Criterion II is checked).
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,16 +24,18 @@ class SearchEngine {
   // Every admissible candidate of a node (Criterion III by construction, minimal volume above), in a
   // fixed order (normal, then offset). Sets `cancelled` and returns early when the job is cancelled.
   std::vector<ScoredCandidate> score(const SearchNode& node, int beamIndex, bool& cancelled);
-  // The same for some normals only (indices into normals()), in the order given.
+  // The same for some normals only (indices into normals()), in the order given; `sweeps`, when given,
+  // receives each normal's grid and profile. A node whose parent still holds its lattice sweeps is scored
+  // from them (the profile of the faces it differs by), which is exact up to rounding and much cheaper.
   std::vector<ScoredCandidate> scoreNormals(const SearchNode& node, int beamIndex, const std::vector<int>& normalIndices,
-                                            bool& cancelled);
+                                            bool& cancelled, std::vector<NormalSweep>* sweeps = nullptr);
   // Adds a normal beyond the lattice (refinement) and returns its index; a normal already there keeps its own.
   int addNormal(const Vec3& normal);
   const MachineSpec& machine() const { return m_machine; }
   const SearchOptions& options() const { return m_options; }
 
   // Clips the node by the candidate. Empty when the part below would not stand on the platform
-  // (Criterion II) or the clip failed.
+  // (Criterion II) or the clip failed. extend() and cut() may run on several threads at once.
   std::optional<std::shared_ptr<const SearchNode>> extend(const std::shared_ptr<const SearchNode>& node,
                                                           const ScoredCandidate& candidate);
 
@@ -84,12 +87,13 @@ class SearchEngine {
   double m_modelVolume = 0.0;
   double m_minRegionVolume = 0.0;
   double m_vertexClearanceMm = 0.0;  // how far planes stay from vertices
+  double m_clipMarginMm = 0.0;       // how far a clip may move vertices and the plane
   bool m_checkFloatPrecision = true;  // false when the model itself has vertices float cannot tell apart
   int m_threads = 1;
   std::shared_ptr<const SearchNode> m_root;
   std::optional<std::vector<ScoredCandidate>> m_rootScored;  // the lattice's candidates on the uncut model
   long long m_candidatesScored = 0;
-  int m_clips = 0;
+  std::atomic<int> m_clips{0};  // extend() and cut() run on several threads at once
   int m_firstLevelCandidates = -1;
 };
 

@@ -26,6 +26,9 @@ struct ClipOptions {
 struct ClipResult {
   TriangleMesh below;  // the side the plane's normal points away from, closed by a cap facing +normal
   TriangleMesh above;  // the side the plane's normal points to, closed by a cap facing -normal
+  // Per face of `below`: the index of the input face it is an unchanged copy of (not split, no corner moved
+  // onto the plane), or -1. Lets a caller update per-face sums instead of recomputing them (the search).
+  std::vector<std::int32_t> belowSourceFace;
 };
 
 // Splits a closed, consistently oriented solid by `plane`.

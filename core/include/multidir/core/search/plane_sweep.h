@@ -6,6 +6,7 @@
 // between its vertex heights, and (by the divergence theorem with the field (n.x - t) n, which vanishes on the
 // cut) the volume above is cubic. Summing those pieces over a uniform grid of offsets with difference arrays
 // costs O(F + offsets) per normal and never clips the mesh.
+#include <cstdint>
 #include <vector>
 
 #include "multidir/core/mesh/triangle_mesh.h"
@@ -45,8 +46,15 @@ class PlaneSweeper {
  public:
   PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax);
   SweepProfile sweep(const Vec3& unitNormal, const OffsetGrid& grid) const;
+  // The sums over some faces only (indices into the solid's triangles); topMm is left at 0. A solid that
+  // differs from another by a few faces has the other's profile minus those faces plus its own.
+  SweepProfile sweepFaces(const Vec3& unitNormal, const OffsetGrid& grid, const std::vector<std::int32_t>& faces) const;
 
  private:
+  struct Sums;
+  void addFace(Sums& sums, const Vec3& unitNormal, std::size_t f, double ha, double hb, double hc, int ja, int jb,
+               int jc) const;
+
   const TriangleMesh& m_solid;
   std::vector<double> m_area;
   std::vector<Vec3> m_unitNormal;
