@@ -28,7 +28,7 @@ class GridPolynomialSum {
 
   // Adds the polynomial at the grid points j0 <= j < j1. Inline: the sweep calls it a few times per face
   // per normal.
-  void addPiece(int j0, int j1, double ref, const Coefficients& c) {
+  [[gnu::always_inline]] void addPiece(int j0, int j1, double ref, const Coefficients& c) {
     if (j1 <= j0) return;
     if (j1 - j0 <= kDirectEvaluationLimit) {
       for (int j = j0; j < j1; ++j) m_direct[j] += evaluate(c, m_grid.offsetAt(j) - ref);
@@ -47,6 +47,13 @@ class GridPolynomialSum {
     Coefficients& end = m_delta[j1];
     begin[0] += p0, begin[1] += p1, begin[2] += p2, begin[3] += p3;
     end[0] -= p0, end[1] -= p1, end[2] -= p2, end[3] -= p3;
+  }
+  // Adds c0 + c1 t at every grid point below j1 (a linear piece reaching down to -infinity). Its coefficients
+  // stay small, so it always goes into the difference arrays.
+  void addLinearBelow(int j1, double c0, double c1) {
+    const double p0 = c0 + c1 * m_centerOffset, p1 = c1 * m_grid.stepMm;
+    m_delta[0][0] += p0, m_delta[0][1] += p1;
+    m_delta[j1][0] -= p0, m_delta[j1][1] -= p1;
   }
   // Adds `value` at every grid point below j1 (a constant piece reaching down to -infinity).
   void addConstantBelow(int j1, double value) {

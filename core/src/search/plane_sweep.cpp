@@ -11,18 +11,15 @@ namespace multidir::core {
 using detail::GridPolynomialSum;
 
 PlaneSweeper::PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax)
-    : m_solid(solid),
-      m_area(solid.triangles.size(), 0.0),
-      m_unitNormal(solid.triangles.size(), Vec3::Zero()),
-      m_riskyArea(solid.triangles.size(), 0.0),
-      m_sinAlpha(sinAlphaMax) {
+    : m_solid(solid), m_faces(solid.triangles.size()), m_sinAlpha(sinAlphaMax) {
   for (std::size_t f = 0; f < solid.triangles.size(); ++f) {
     const Vec3 areaNormal = solid.areaNormal(f);
     const double doubleArea = areaNormal.norm();
     if (!(doubleArea > 0.0)) continue;
-    m_area[f] = 0.5 * doubleArea;
-    m_unitNormal[f] = areaNormal / doubleArea;
-    if (f < riskyShare.size()) m_riskyArea[f] = riskyShare[f] * m_area[f];
+    FaceData& face = m_faces[f];
+    face.area = 0.5 * doubleArea;
+    face.unitNormal = areaNormal / doubleArea;
+    if (f < riskyShare.size()) face.riskyArea = riskyShare[f] * face.area;
   }
 }
 
@@ -40,15 +37,18 @@ struct PlaneSweeper::Sums {
 };
 
 // Face f's pieces, from its corner heights along the normal and their grid indices (in any order).
-void PlaneSweeper::addFace(Sums& sums, const Vec3& unitNormal, std::size_t f, double ha, double hb, double hc, int ja,
-                           int jb, int jc) const {
-  const double area = m_area[f];
-  if (area == 0.0) return;
-  if (ha > hb) std::swap(ha, hb), std::swap(ja, jb);
-  if (hb > hc) std::swap(hb, hc), std::swap(jb, jc);
-  if (ha > hb) std::swap(ha, hb), std::swap(ja, jb);
+void PlaneSweeper::addFace(Sums& sums, const Vec3& unitNormal, std::size_t f, double h0, double h1, double h2, int j0,
+                           int j1, int j2) const {
+  const FaceData& face = m_faces[f];
+  if (face.area == 0.0) return;
+  // Sorted without branches (which corner is lowest is a coin toss per face): grid indices grow with the
+  // height, so the indices sort the same way.
+  const double ha = std::min(std::min(h0, h1), h2), hc = std::max(std::max(h0, h1), h2);
+  const double hb = std::max(std::min(h0, h1), std::min(std::max(h0, h1), h2));
+  const int ja = std::min(std::min(j0, j1), j2), jc = std::max(std::max(j0, j1), j2);
+  const int jb = j0 + j1 + j2 - ja - jc;
   const double lower = hb - ha, span = hc - ha, upper = hc - hb;
-  const double cosine = unitNormal.dot(m_unitNormal[f]);  // n . n_f
+  const double cosine = unitNormal.dot(face.unitNormal);  // n . n_f
 
   // Area `part` of the face above the plane at offset t, summed into `sum`.
   auto addArea = [&](GridPolynomialSum& sum, double part) {
@@ -56,14 +56,15 @@ void PlaneSweeper::addFace(Sums& sums, const Vec3& unitNormal, std::size_t f, do
     if (lower > 0) sum.addPiece(ja, jb, ha, {part, 0, -part / (lower * span), 0});
     if (upper > 0) sum.addPiece(jb, jc, hc, {0, 0, part / (span * upper), 0});
   };
-  if (cosine + m_sinAlpha < 0.0) addArea(sums.riskyAlongNormal, area);
-  if (m_riskyArea[f] > 0.0) addArea(sums.riskyFlagged, m_riskyArea[f]);
+  if (cosine + m_sinAlpha < 0.0) addArea(sums.riskyAlongNormal, face.area);
+  if (face.riskyArea > 0.0) addArea(sums.riskyFlagged, face.riskyArea);
 
-  // cosine * integral over the face's part above t of (h - t) dA: its share of the volume above.
-  const double w = cosine * area;
+  // cosine * integral over the face's part above t of (h - t) dA: its share of the volume above. Below the
+  // middle corner that is w (mean - t), plus a cubic term from the lowest corner up.
+  const double w = cosine * face.area;
   const double mean = (ha + hb + hc) / 3.0;
-  sums.volume.addPiece(0, ja, ha, {w * (mean - ha), -w, 0, 0});
-  if (lower > 0) sums.volume.addPiece(ja, jb, ha, {w * (mean - ha), -w, 0, w / (3.0 * lower * span)});
+  sums.volume.addLinearBelow(jb, w * mean, -w);
+  if (lower > 0) sums.volume.addPiece(ja, jb, ha, {0, 0, 0, w / (3.0 * lower * span)});
   if (upper > 0) sums.volume.addPiece(jb, jc, hc, {0, 0, 0, -w / (3.0 * span * upper)});
 }
 

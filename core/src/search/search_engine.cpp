@@ -70,6 +70,9 @@ std::vector<ScoredCandidate> SearchEngine::score(const SearchNode& node, int bea
 
 namespace {
 
+// Cost per face of sweeping some faces, relative to sweeping a whole mesh (measured: kitten, bunny, fertility).
+constexpr double kIncrementalSweepCost = 1.2;
+
 // The parent's grid position of the child grid's first offset, when the child's grid lies inside it.
 std::optional<int> shiftInto(const OffsetGrid& parent, const OffsetGrid& child) {
   if (parent.stepMm != child.stepMm || parent.count == 0) return std::nullopt;
@@ -114,7 +117,13 @@ std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, 
   const double volumeSlack = 1e-9 * m_modelVolume;
   const PlaneSweeper sweeper(*node.remaining, node.riskyUpShare, m_sinAlpha);
   // A child differs from its parent by a few faces: its profiles are the parent's updated by those faces.
-  const std::vector<NormalSweep>* parentSweeps = node.parent ? node.parent->latticeSweeps.get() : nullptr;
+  // Worth it only when the faces it differs by are fewer than its own (a sweep of some faces costs a little
+  // more per face than one of them all, which shares each vertex's height among its faces).
+  const std::size_t differing = node.removedParentFaces.size() + node.addedFaces.size();
+  const bool fewDiffer = static_cast<double>(differing) * kIncrementalSweepCost <
+                         static_cast<double>(node.remaining->triangles.size());
+  const std::vector<NormalSweep>* parentSweeps =
+      node.parent && fewDiffer ? node.parent->latticeSweeps.get() : nullptr;
   std::optional<PlaneSweeper> parentSweeper;
   if (parentSweeps) parentSweeper.emplace(*node.parent->remaining, node.parent->riskyUpShare, m_sinAlpha);
   if (sweeps) sweeps->assign(count, NormalSweep{});
@@ -279,7 +288,16 @@ Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& p
     const Plane tried{first.normal, first.offset + steps * m_vertexClearanceMm};
     if (steps != 0.0 && keptOffVertices(tried, solid).offset != tried.offset) continue;
     ++m_clips;
-    Result<ClipResult> clipped = clipByPlane(solid, tried, planeId);
+    // What the search clips is the model (checked closed on its first clip) or a part clipByPlane made,
+    // closed by construction: re-checking it was two thirds of every clip. Debug builds check every clip.
+    ClipOptions options;
+    const bool model = &solid == m_root->remaining.get();
+    options.checkClosed = model && !m_modelChecked.load();
+#ifndef NDEBUG
+    options.checkClosed = true;
+#endif
+    Result<ClipResult> clipped = clipByPlane(solid, tried, planeId, options);
+    if (model && clipped.ok()) m_modelChecked = true;
     if (!clipped.ok() || keepsFloatPrecision(*clipped)) {
       plane = tried;
       return clipped;

@@ -93,6 +93,7 @@ class SearchEngine {
   std::shared_ptr<const SearchNode> m_root;
   std::optional<std::vector<ScoredCandidate>> m_rootScored;  // the lattice's candidates on the uncut model
   long long m_candidatesScored = 0;
+  std::atomic<bool> m_modelChecked{false};  // the model passed clipByPlane's closed-solid check once
   std::atomic<int> m_clips{0};  // extend() and cut() run on several threads at once
   int m_firstLevelCandidates = -1;
 };

@@ -55,10 +55,14 @@ class PlaneSweeper {
   void addFace(Sums& sums, const Vec3& unitNormal, std::size_t f, double ha, double hb, double hc, int ja, int jb,
                int jc) const;
 
+  // What the sweep reads of a face, side by side in memory.
+  struct FaceData {
+    Vec3 unitNormal = Vec3::Zero();
+    double area = 0.0;
+    double riskyArea = 0.0;  // share * area
+  };
   const TriangleMesh& m_solid;
-  std::vector<double> m_area;
-  std::vector<Vec3> m_unitNormal;
-  std::vector<double> m_riskyArea;  // share * area
+  std::vector<FaceData> m_faces;
   double m_sinAlpha;
 };
 
