@@ -1,0 +1,42 @@
+#include "multidir/core/mesh/mesh_resolution.h"
+
+#include <cmath>
+#include <unordered_map>
+
+#include "detail/edge_key.h"
+
+namespace multidir::core {
+
+Result<TriangleMesh> subdivided(const TriangleMesh& mesh, int levels) {
+  if (levels < 0 || levels > 6)
+    return Error{ErrorCode::InvalidParameter, "subdivide 0 to 6 times (each multiplies the faces by 4)", "subdivide"};
+  if (static_cast<double>(mesh.triangles.size()) * std::pow(4.0, levels) > 2147483647.0)
+    return Error{ErrorCode::InvalidParameter, "that many subdivisions would make more than 2^31 faces", "subdivide"};
+  TriangleMesh current = mesh;
+  for (int level = 0; level < levels; ++level) {
+    TriangleMesh next;
+    next.vertices = current.vertices;
+    next.triangles.reserve(current.triangles.size() * 4);
+    // Each edge's midpoint once, shared by the edge's two faces so the result stays closed.
+    std::unordered_map<std::uint64_t, std::int32_t> midpoints;
+    midpoints.reserve(current.triangles.size() * 2);
+    auto midpoint = [&](std::int32_t a, std::int32_t b) {
+      const std::uint64_t key = detail::undirectedEdgeKey(a, b);
+      auto [it, inserted] = midpoints.emplace(key, static_cast<std::int32_t>(next.vertices.size()));
+      if (inserted) next.vertices.push_back(0.5 * (current.vertices[a] + current.vertices[b]));
+      return it->second;
+    };
+    for (const Triangle& t : current.triangles) {
+      const std::int32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      next.triangles.push_back({t[0], ab, ca});
+      next.triangles.push_back({ab, t[1], bc});
+      next.triangles.push_back({ca, bc, t[2]});
+      next.triangles.push_back({ab, bc, ca});
+    }
+    next.resetOrigins();
+    current = std::move(next);
+  }
+  return current;
+}
+
+}  // namespace multidir::core
