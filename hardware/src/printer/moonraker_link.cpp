@@ -89,8 +89,8 @@ class MoonrakerLink : public PrinterLink {
     std::lock_guard<std::mutex> lock(m_mutex);
     m_running = false;
     m_status.link = LinkState::Disconnected;
-    failQueued(core::Error{core::ErrorCode::Cancelled, "the link was disconnected before the command was sent",
-                           m_name});
+    failQueued(
+        core::Error{core::ErrorCode::Cancelled, "the link was disconnected before the command was sent", m_name});
     for (auto& waiter : m_stopWaiters)
       waiter.second.set_value(core::Error{core::ErrorCode::Cancelled,
                                           "disconnected before the printer confirmed the emergency stop (it stays "
@@ -174,7 +174,8 @@ class MoonrakerLink : public PrinterLink {
   std::unique_ptr<httplib::Client> client(std::chrono::milliseconds replyTimeout) const {
     auto c = std::make_unique<httplib::Client>(m_settings.host, m_settings.port);
     const auto set = [](std::chrono::milliseconds t) {
-      return std::pair<time_t, time_t>(static_cast<time_t>(t.count() / 1000), static_cast<time_t>(t.count() % 1000) * 1000);
+      return std::pair<time_t, time_t>(static_cast<time_t>(t.count() / 1000),
+                                       static_cast<time_t>(t.count() % 1000) * 1000);
     };
     const auto connectTimeout = set(m_options.requestTimeout);
     const auto replyTimeoutParts = set(replyTimeout);
@@ -199,8 +200,7 @@ class MoonrakerLink : public PrinterLink {
       if (!body.is_discarded() && body.contains("error") && body["error"].is_object() &&
           body["error"].contains("message") && body["error"]["message"].is_string())
         message += ": " + body["error"]["message"].get<std::string>();
-      return core::Error{core::ErrorCode::DeviceFault, "the printer refused " + request + " (" + message + ")",
-                         m_name};
+      return core::Error{core::ErrorCode::DeviceFault, "the printer refused " + request + " (" + message + ")", m_name};
     }
     if (body.is_discarded())
       return core::Error{core::ErrorCode::DeviceFault,
@@ -272,7 +272,7 @@ class MoonrakerLink : public PrinterLink {
     std::lock_guard<std::mutex> lock(m_mutex);
     if (!reading) {
       m_status.link = m_status.polls == 0 && m_status.link == LinkState::Connecting ? LinkState::Connecting
-                                                                                     : LinkState::Reconnecting;
+                                                                                    : LinkState::Reconnecting;
       m_status.lastError = reading.error().describe();
       m_lastPollFailed = true;
       if (!m_firstDone) finishFirst(reading.error());

@@ -4,13 +4,20 @@ namespace multidir::hardware {
 
 const char* printerJobStateName(PrinterJobState state) {
   switch (state) {
-    case PrinterJobState::Unknown: return "unknown";
-    case PrinterJobState::Standby: return "standby";
-    case PrinterJobState::Printing: return "printing";
-    case PrinterJobState::Paused: return "paused";
-    case PrinterJobState::Complete: return "complete";
-    case PrinterJobState::Cancelled: return "cancelled";
-    case PrinterJobState::Error: return "error";
+    case PrinterJobState::Unknown:
+      return "unknown";
+    case PrinterJobState::Standby:
+      return "standby";
+    case PrinterJobState::Printing:
+      return "printing";
+    case PrinterJobState::Paused:
+      return "paused";
+    case PrinterJobState::Complete:
+      return "complete";
+    case PrinterJobState::Cancelled:
+      return "cancelled";
+    case PrinterJobState::Error:
+      return "error";
   }
   return "?";
 }

@@ -67,8 +67,10 @@ GcodeTimeline readGcodeTimeline(const std::string& text) {
         for (int a = 0; a < 4; ++a) position[a] = target[a];
       } else if (kind == 'G' && command == 4) {
         double v = 0;
-        if (word(code, 'P', v)) line.moveSeconds = v / 1000.0;
-        else if (word(code, 'S', v)) line.moveSeconds = v;
+        if (word(code, 'P', v))
+          line.moveSeconds = v / 1000.0;
+        else if (word(code, 'S', v))
+          line.moveSeconds = v;
       } else if (kind == 'G' && command == 28) {
         line.moveSeconds = kHomingSeconds;
       } else if (kind == 'G' && command == 90) {

@@ -10,10 +10,10 @@
 namespace multidir::hardware::sim {
 
 struct TimelineLine {
-  std::size_t endByte = 0;    // file position after this line
-  double moveSeconds = 0.0;   // at the simulated printer's nominal speed
+  std::size_t endByte = 0;   // file position after this line
+  double moveSeconds = 0.0;  // at the simulated printer's nominal speed
   enum class Heater { None, Extruder, Bed } heater = Heater::None;
-  double targetC = 0.0;       // for heater commands
+  double targetC = 0.0;        // for heater commands
   bool waitForHeater = false;  // M109 / M190
 };
 

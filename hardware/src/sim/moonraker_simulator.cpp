@@ -45,11 +45,16 @@ Json filtered(const Json& object, const std::string& attributes) {
 
 const char* printerFaultName(PrinterFault fault) {
   switch (fault) {
-    case PrinterFault::None: return "none";
-    case PrinterFault::ThermalRunaway: return "thermal-runaway";
-    case PrinterFault::LinkDrop: return "link-drop";
-    case PrinterFault::CancelledOnPrinter: return "cancelled-on-printer";
-    case PrinterFault::SlowReplies: return "slow-replies";
+    case PrinterFault::None:
+      return "none";
+    case PrinterFault::ThermalRunaway:
+      return "thermal-runaway";
+    case PrinterFault::LinkDrop:
+      return "link-drop";
+    case PrinterFault::CancelledOnPrinter:
+      return "cancelled-on-printer";
+    case PrinterFault::SlowReplies:
+      return "slow-replies";
   }
   return "?";
 }
@@ -207,17 +212,22 @@ class MoonrakerSimulator::Impl {
         m_printer.progress() >= m_options.faultAtProgress) {
       m_faultInjected = true;
       switch (m_options.fault) {
-        case PrinterFault::ThermalRunaway: m_printer.thermalRunaway(); break;
+        case PrinterFault::ThermalRunaway:
+          m_printer.thermalRunaway();
+          break;
         case PrinterFault::CancelledOnPrinter:
           m_printer.cancel();
           noteJobState();
           break;
-        case PrinterFault::SlowReplies: m_replyDelay = m_options.slowReplyDelay; break;
+        case PrinterFault::SlowReplies:
+          m_replyDelay = m_options.slowReplyDelay;
+          break;
         case PrinterFault::LinkDrop:
           m_dropUntil = now + m_options.linkDropFor;
           m_dropPending = true;
           break;
-        case PrinterFault::None: break;
+        case PrinterFault::None:
+          break;
       }
     }
   }
@@ -279,15 +289,15 @@ class MoonrakerSimulator::Impl {
 
   void configure(httplib::Server& server) {
     server.Get("/printer/objects/query", handled("GET", [this](const httplib::Request& req, httplib::Response& res,
-                                                              std::string&) { query(req, res); }));
+                                                               std::string&) { query(req, res); }));
     server.Get("/printer/info", handled("GET", [this](const httplib::Request&, httplib::Response& res, std::string&) {
-      replyJson(res, 200,
-                Json{{"result",
-                      {{"state", m_printer.firmwareState()},
-                       {"state_message", m_printer.firmwareMessage()},
-                       {"hostname", "multidir-simulator"},
-                       {"software_version", "multidir-simulated-klipper"}}}});
-    }));
+                 replyJson(res, 200,
+                           Json{{"result",
+                                 {{"state", m_printer.firmwareState()},
+                                  {"state_message", m_printer.firmwareMessage()},
+                                  {"hostname", "multidir-simulator"},
+                                  {"software_version", "multidir-simulated-klipper"}}}});
+               }));
     server.Post("/printer/print/start",
                 handled("POST", [this](const httplib::Request& req, httplib::Response& res, std::string& detail) {
                   detail = req.get_param_value("filename");
@@ -310,10 +320,8 @@ class MoonrakerSimulator::Impl {
                   m_printer.firmwareRestart();
                   command(res, "");
                 }));
-    server.Post("/server/files/upload",
-                handled("POST", [this](const httplib::Request& req, httplib::Response& res, std::string& detail) {
-                  upload(req, res, detail);
-                }));
+    server.Post("/server/files/upload", handled("POST", [this](const httplib::Request& req, httplib::Response& res,
+                                                               std::string& detail) { upload(req, res, detail); }));
   }
 
   void command(httplib::Response& res, const std::string& error) {
@@ -324,7 +332,8 @@ class MoonrakerSimulator::Impl {
   void query(const httplib::Request& req, httplib::Response& res) {
     const HeaterReading extruder = m_printer.extruder();
     const HeaterReading bed = m_printer.bed();
-    const std::string path = m_printer.currentFile().empty() ? "" : "/home/pi/printer_data/gcodes/" + m_printer.currentFile();
+    const std::string path =
+        m_printer.currentFile().empty() ? "" : "/home/pi/printer_data/gcodes/" + m_printer.currentFile();
     const Json all = {
         {"webhooks", {{"state", m_printer.firmwareState()}, {"state_message", m_printer.firmwareMessage()}}},
         {"print_stats",

@@ -87,8 +87,9 @@ void SimulatedPrinter::firmwareRestart() {
 
 void SimulatedPrinter::shutdown(const std::string& why) {
   m_firmwareState = "shutdown";
-  m_firmwareMessage = why + "\nOnce the underlying issue is corrected, use the \"FIRMWARE_RESTART\" command to reset "
-                            "the firmware, reload the config, and restart the host software.";
+  m_firmwareMessage = why +
+                      "\nOnce the underlying issue is corrected, use the \"FIRMWARE_RESTART\" command to reset "
+                      "the firmware, reload the config, and restart the host software.";
   if (m_state == "printing" || m_state == "paused") {
     m_state = "error";
     m_message = why;
@@ -125,8 +126,7 @@ void SimulatedPrinter::advance(double seconds) {
       (line.heater == TimelineLine::Heater::Extruder ? m_extruderTarget : m_bedTarget) = line.targetC;
       m_lineHeaterApplied = true;
     }
-    const double need =
-        line.waitForHeater ? secondsToReach(line) : std::max(0.0, line.moveSeconds - m_lineElapsed);
+    const double need = line.waitForHeater ? secondsToReach(line) : std::max(0.0, line.moveSeconds - m_lineElapsed);
     const double step = std::min(seconds, need);
     heat(step);
     if (m_state != "printing") return;  // shut down while heating

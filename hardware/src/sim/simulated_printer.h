@@ -15,8 +15,8 @@ struct SimulatedPrinterSettings {
   double ambientC = 22.0;
   double extruderRateCPerSecond = 10.0;  // heating and cooling
   double bedRateCPerSecond = 2.0;
-  double runawayRateCPerSecond = 20.0;   // a stuck-on extruder heater climbs this fast
-  double extruderMaxC = 280.0;           // Klipper's max_temp: beyond it the firmware shuts down
+  double runawayRateCPerSecond = 20.0;  // a stuck-on extruder heater climbs this fast
+  double extruderMaxC = 280.0;          // Klipper's max_temp: beyond it the firmware shuts down
 };
 
 class SimulatedPrinter {

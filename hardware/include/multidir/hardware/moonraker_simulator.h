@@ -21,10 +21,10 @@ namespace multidir::hardware {
 
 enum class PrinterFault {
   None,
-  ThermalRunaway,    // the extruder heater runs away upwards until Klipper shuts down ("ADC out of range")
-  LinkDrop,          // every connection closes and none is accepted for linkDropFor
+  ThermalRunaway,      // the extruder heater runs away upwards until Klipper shuts down ("ADC out of range")
+  LinkDrop,            // every connection closes and none is accepted for linkDropFor
   CancelledOnPrinter,  // the job is cancelled at the printer (its screen or another client)
-  SlowReplies,       // every reply is held for slowReplyDelay
+  SlowReplies,         // every reply is held for slowReplyDelay
 };
 
 // "none", "thermal-runaway", "link-drop", "cancelled-on-printer", "slow-replies" (as the command line spells them).

@@ -50,19 +50,19 @@ struct PrinterStatus {
   std::string currentFile;    // print_stats.filename ("" when none)
   HeaterReading extruder;
   HeaterReading bed;
-  std::uint64_t polls = 0;    // good status reads since connect()
+  std::uint64_t polls = 0;                            // good status reads since connect()
   std::chrono::steady_clock::time_point lastReply{};  // of the last good read (PrinterLinkOptions::steadyNow)
-  std::string lastError;      // the latest link or printer problem ("" after a good read)
-  StopLatch stop;             // the emergency stop, when one is latched
+  std::string lastError;                              // the latest link or printer problem ("" after a good read)
+  StopLatch stop;                                     // the emergency stop, when one is latched
 
   [[nodiscard]] bool busy() const { return state == PrinterJobState::Printing || state == PrinterJobState::Paused; }
 };
 
 struct PrinterLinkOptions {
   std::chrono::milliseconds pollInterval{250};
-  std::chrono::milliseconds requestTimeout{2000};   // connect, and each reply (uploads get uploadTimeout)
+  std::chrono::milliseconds requestTimeout{2000};  // connect, and each reply (uploads get uploadTimeout)
   std::chrono::milliseconds uploadTimeout{120000};
-  std::chrono::milliseconds linkLostAfter{3000};    // no good status read this long: PrinterStatus::linkLost
+  std::chrono::milliseconds linkLostAfter{3000};     // no good status read this long: PrinterStatus::linkLost
   std::chrono::milliseconds stopRetryInterval{100};  // an unanswered emergency stop is resent this often
   // The clock of lastReply and linkLost; the system's steady clock unless a test injects one.
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
