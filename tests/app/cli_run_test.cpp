@@ -25,8 +25,9 @@ std::string stepGcode() {
   return text + "M104 S0\n";
 }
 
-// A sliced 4-DOF job of two steps (0 and 30 degrees) as `multidir slice` writes it, G-code beside it.
-void writeJob(const std::string& dir, bool sliced = true) {
+// A sliced job of two steps as `multidir slice` writes it, G-code beside it: 4-DOF at 0 and 30 degrees, or
+// 5-DOF at tilt 0 and tilt 40 / azimuth 90.
+void writeJob(const std::string& dir, bool sliced = true, bool robot = false) {
   std::filesystem::create_directories(dir);
   std::string steps;
   std::string slicing;
@@ -34,16 +35,19 @@ void writeJob(const std::string& dir, bool sliced = true) {
   for (int k = 1; k <= 2; ++k) {
     const std::string gcode = "step-0" + std::to_string(k) + ".gcode";
     std::ofstream(dir + "/" + gcode) << stepGcode();
-    steps += std::string(k > 1 ? "," : "") + "{\"index\": " + std::to_string(k) +
-             ", \"angles\": {\"rotaryDegrees\": " + std::to_string(angles[k - 1]) + "}}";
+    const std::string stepAngles = robot ? (k == 1 ? "{\"tiltDegrees\": 0, \"azimuthDegrees\": 0}"
+                                                   : "{\"tiltDegrees\": 40, \"azimuthDegrees\": 90}")
+                                         : "{\"rotaryDegrees\": " + std::to_string(angles[k - 1]) + "}";
+    steps += std::string(k > 1 ? "," : "") + "{\"index\": " + std::to_string(k) + ", \"angles\": " + stepAngles + "}";
     slicing += std::string(k > 1 ? "," : "") + "{\"index\": " + std::to_string(k) + ", \"gcode\": \"" + gcode +
                "\", \"estimate\": {\"printSeconds\": 28, \"filamentMm\": 10, \"filamentCm3\": 0.02, "
                "\"filamentGrams\": 0}}";
   }
   std::ofstream(dir + "/print-job.json")
       << "{\"schema\": \"multidir-print-job\", \"version\": 1, "
-      << "\"machine\": {\"kind\": \"4dof\", \"up\": [0, 0, 1], \"rotationAxis\": [1, 0, 0], "
-      << "\"minAngleDegrees\": -90, \"maxAngleDegrees\": 90, \"angleStepDegrees\": 1}, "
+      << (robot ? "\"machine\": {\"kind\": \"5dof\", \"up\": [0, 0, 1], \"maxTiltDegrees\": 60}, "
+                : "\"machine\": {\"kind\": \"4dof\", \"up\": [0, 0, 1], \"rotationAxis\": [1, 0, 0], "
+                  "\"minAngleDegrees\": -90, \"maxAngleDegrees\": 90, \"angleStepDegrees\": 1}, ")
       << "\"steps\": [" << steps << "]"
       << (sliced ? ", \"slicing\": {\"printer\": {\"platform\": \"modbus\"}, \"steps\": [" + slicing + "]}" : "")
       << "}\n";
@@ -51,9 +55,10 @@ void writeJob(const std::string& dir, bool sliced = true) {
 
 class CliRunTest : public ::testing::Test {
  protected:
-  void startSimulators(double printerSpeed) {
+  void startSimulators(double printerSpeed, bool robot = false) {
     hw::SimulatorOptions deviceOptions;
-    deviceOptions.robot = false;
+    deviceOptions.robot = robot;
+    deviceOptions.rotary = !robot;
     devices = std::make_unique<hw::DeviceSimulator>(deviceOptions);
     ASSERT_TRUE(devices->start().ok());
     hw::MoonrakerSimulatorOptions printerOptions;
@@ -90,6 +95,18 @@ TEST_F(CliRunTest, RunsEveryStepHomingThePlatformAndLogsToAFile) {
   EXPECT_NEAR(devices->rotaryState().angleDegrees, 30.0, 0.05);
   const std::string log = multidir::test::readAll(dir + "/run.log");
   EXPECT_NE(log.find("all 2 regions printed"), std::string::npos) << log;
+}
+
+TEST_F(CliRunTest, Runs5DofJobsOnTheRobotArm) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.Robot");
+  writeJob(dir + "/job", true, true);
+  startSimulators(200.0, true);
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("robot arm"), std::string::npos) << run.out;
+  EXPECT_NEAR(devices->robotState().tiltDegrees, 40.0, 0.1);
+  EXPECT_NEAR(devices->robotState().azimuthDegrees, 90.0, 0.1);
+  EXPECT_EQ(printerRequests("/printer/print/start"), 2);
 }
 
 TEST_F(CliRunTest, APrinterFaultStopsTheRunWithItsReasonAndWhereToContinue) {
