@@ -272,14 +272,22 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   auto nextProgress = Clock::now();
   bool stoppedByOperator = false;
   Clock::time_point stopDeadline = Clock::time_point::max();
+  Clock::time_point firstInterrupt{};
+  bool emergencySent = false;
+  constexpr auto kSameInterrupt = 300ms;
   while (true) {
     run.tick();
+    // One Ctrl-C may arrive twice (to the process and to its process group, as timeout(1) sends it): signals
+    // within kSameInterrupt of the first count as that one.
     const int interrupts = g_interrupts.load();
     if (interrupts > handledInterrupts) {
+      const bool first = handledInterrupts == 0;
+      const bool second = !first && Clock::now() - firstInterrupt > kSameInterrupt && !emergencySent;
       handledInterrupts = interrupts;
-      stoppedByOperator = true;
-      stopDeadline = Clock::now() + 10s;
-      if (interrupts == 1) {
+      if (first) {
+        stoppedByOperator = true;
+        firstInterrupt = Clock::now();
+        stopDeadline = firstInterrupt + 10s;
         log.line("Ctrl-C: stopping both devices (press Ctrl-C again for their emergency stops)");
         // abort() cancels the printer's job itself when the run was printing; otherwise the printer is asked
         // here, in case it prints something the run did not start.
@@ -288,7 +296,9 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
         (void)run.abort();
         if (!runCancels && devices.printer->status().busy()) (void)devices.printer->cancelPrint();
         if (devices.positioner->snapshot().moving) (void)devices.positioner->stopMotion();
-      } else {
+      } else if (second) {
+        emergencySent = true;
+        stopDeadline = Clock::now() + 10s;
         log.line("second Ctrl-C: emergency stop of both devices");
         (void)run.emergencyStop();
       }

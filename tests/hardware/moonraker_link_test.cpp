@@ -147,7 +147,7 @@ TEST_F(MoonrakerLinkTest, ADroppedLinkIsLostAfterItsTimeAndComesBack) {
 
 TEST_F(MoonrakerLinkTest, RepliesSlowerThanTheTimeoutLoseTheLink) {
   auto link = connected();
-  sim->setReplyDelay(400ms);  // the link waits 300 ms
+  sim->setReplyDelay(1300ms);  // the link waits 1000 ms
   ASSERT_TRUE(eventually([&] { return link->status().linkLost; }));
   sim->setReplyDelay(0ms);
   ASSERT_TRUE(eventually([&] { return !link->status().linkLost; }));

@@ -233,7 +233,7 @@ TEST_F(PrintRunWithPrinterTest, RepliesSlowerThanTheLinksTimeoutPauseTheRunAndNo
   ASSERT_TRUE(run.start().ok());
   ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
   const Clock::time_point printing = clock();
-  printerSim->setReplyDelay(400ms);
+  printerSim->setReplyDelay(1300ms);  // the link waits 1000 ms
   expectPausedWithoutMotion(run, printing, "is lost");
   printerSim->setReplyDelay(0ms);
 }

@@ -30,9 +30,9 @@ inline std::string writeFile(const std::filesystem::path& path, const std::strin
 inline PrinterLinkOptions fastPrinterOptions() {
   PrinterLinkOptions options;
   options.pollInterval = 10ms;
-  options.requestTimeout = 300ms;
+  options.requestTimeout = 1000ms;
   options.uploadTimeout = 2000ms;
-  options.linkLostAfter = 150ms;
+  options.linkLostAfter = 400ms;
   options.stopRetryInterval = 20ms;
   return options;
 }
