@@ -501,8 +501,8 @@ core::Status PrintRun::emergencyStop() {
   std::string message = stepLabel() + ": EMERGENCY STOP sent to " + m_positioner.name() +
                         (platform.ok() ? std::string() : " (refused: " + platform.error().describe() + ")") +
                         (m_printer != nullptr ? " and " + m_printer->name() : std::string(" (no printer link: stop the printer by hand)"));
-  const bool final = m_state == PrintRunState::Completed || m_state == PrintRunState::Aborted;
-  enter(final ? m_state : PrintRunState::Aborted, message);
+  const bool finished = m_state == PrintRunState::Completed || m_state == PrintRunState::Aborted;
+  enter(finished ? m_state : PrintRunState::Aborted, message);
   return core::Done{};
 }
 
