@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 
 #include "multidir/hardware/moonraker_simulator.h"
 #include "printer_test_support.h"
@@ -189,6 +190,47 @@ TEST(MoonrakerUrl, RefusesHttpsPathsAndBadPortsSayingWhy) {
   EXPECT_NE(parseMoonrakerUrl("http://p:7125/api").error().message.find("without a path"), std::string::npos);
   EXPECT_NE(parseMoonrakerUrl("p:99999").error().message.find("1 to 65535"), std::string::npos);
   EXPECT_FALSE(parseMoonrakerUrl("http://:80").ok());
+}
+
+}  // namespace
+}  // namespace multidir::hardware
+
+namespace multidir::hardware {
+namespace {
+
+// The simulator's own clock, set by the test: the print's timing follows the G-code's feed rates exactly.
+TEST(MoonrakerSimulatorTiming, PrintsTheFileInTheTimeItsHeatingAndFeedRatesTake) {
+  static std::atomic<long long> elapsedMs{0};
+  elapsedMs = 0;
+  const auto origin = std::chrono::steady_clock::now();
+  MoonrakerSimulatorOptions options;
+  options.speed = 1.0;
+  options.steadyNow = [origin] { return origin + std::chrono::milliseconds(elapsedMs.load()); };
+  MoonrakerSimulator sim(options);
+  ASSERT_TRUE(sim.start().ok());
+  const std::string gcode = test::writeFile(
+      std::filesystem::path(testing::TempDir()) / "simulator-timing" / "step-01.gcode", test::shortGcode());
+  auto link = test::moonrakerLinkTo(sim.port());
+  ASSERT_TRUE(link->connect().ok());
+  ASSERT_TRUE(test::outcome(link->upload(gcode, "step-01.gcode")).ok());
+  ASSERT_TRUE(test::outcome(link->startPrint("step-01.gcode")).ok());
+  // M109 S200 from 22 C at 10 C/s ends within 1 C of 200: 17.7 s. Then 0.015 s to the first layer's height and
+  // 20 moves of 10 mm (the first) or sqrt(101) mm at 1200 mm/min: 10.047 s. Done at 27.762 s.
+  elapsedMs = 17600;
+  SimulatedPrinterState s = sim.state();
+  EXPECT_EQ(s.jobState, "printing");
+  EXPECT_NEAR(s.extruder.actualC, 198.0, 1e-6);
+  const double heatingProgress = s.progress;
+  elapsedMs = 22700;  // 5 s into the moves: about half of them
+  s = sim.state();
+  EXPECT_GT(s.progress, heatingProgress + 0.3);
+  EXPECT_LT(s.progress, 0.8);
+  elapsedMs = 27700;
+  EXPECT_EQ(sim.state().jobState, "printing");
+  elapsedMs = 27800;
+  s = sim.state();
+  EXPECT_EQ(s.jobState, "complete");
+  EXPECT_DOUBLE_EQ(s.progress, 1.0);
 }
 
 }  // namespace
