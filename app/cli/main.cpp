@@ -9,6 +9,7 @@
 #include "export_command.h"
 #include "info_command.h"
 #include "report_command.h"
+#include "run_command.h"
 #include "simulate_command.h"
 #include "slice_command.h"
 
@@ -28,13 +29,15 @@ const char* const kUsage =
     "  slice PLAN_OR_JOB --printer PROFILE -o OUTDIR   G-code for every step (PrusaSlicer), checked\n"
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
+    "  simulate --printer moonraker   run the simulator of a Klipper printer behind Moonraker\n"
+    "  run JOB --printer URL --platform HOST:PORT   print a sliced job: platform and printer in the loop\n"
     "  help [COMMAND]              show this help, or a command's help\n"
     "\n"
     "Options:\n"
     "  -h, --help                  show this help\n"
     "  --version                   show the version\n"
     "\n"
-    "Exit codes: 0 ok, 1 bad input file, 2 usage error, 3 internal error.\n";
+    "Exit codes: 0 ok, 1 bad input file, 2 usage error, 3 internal error, 4 a run that did not complete.\n";
 
 int help(const std::vector<std::string>& args) {
   if (args.empty()) {
@@ -66,6 +69,10 @@ int help(const std::vector<std::string>& args) {
     std::cout << kSimulateHelp;
     return kExitOk;
   }
+  if (args[0] == "run") {
+    std::cout << kRunHelp;
+    return kExitOk;
+  }
   throw UsageError("multidir help: unknown command '" + args[0] + "'. Run 'multidir --help' for the list.");
 }
 
@@ -88,6 +95,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "report") return runReport(rest, std::cout, std::cerr);
   if (command == "export") return runExport(rest, std::cout, std::cerr);
   if (command == "slice") return runSlice(rest, std::cout, std::cerr);
+  if (command == "run") return runRun(rest, std::cout, std::cerr);
   if (!command.empty() && command[0] == '-')
     throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");
   throw UsageError("multidir: unknown command '" + command + "'. Run 'multidir --help' for the list.");

@@ -9,11 +9,14 @@
 
 #include "cli_args.h"
 #include "multidir/hardware/device_simulator.h"
+#include "multidir/hardware/moonraker_simulator.h"
 
 namespace multidir::cli {
 
 const char* const kSimulateHelp =
     "Usage: multidir simulate [--rotary] [--robot] [--listen ADDRESS] [--port PORT] [--unit ID]\n"
+    "       multidir simulate --printer moonraker [--listen ADDRESS] [--port PORT] [--speed X]\n"
+    "                         [--fault NAME [--fault-at FRACTION]]\n"
     "\n"
     "Runs a Modbus TCP simulator of MultiDir's devices until Ctrl-C: the rotary platform controller and the\n"
     "Universal Robots arm's registers 128-255 with the behaviour of multidir_platform.script (register maps:\n"
@@ -27,6 +30,15 @@ const char* const kSimulateHelp =
     "  --listen ADDRESS  IPv4 address to listen on (default: 127.0.0.1, this machine only)\n"
     "  --port PORT       TCP port, 0 for a free one (default: 1502; 502 needs root)\n"
     "  --unit ID         unit id of the rotary controller, 0..255 (default: 1); the robot answers all others\n"
+    "\n"
+    "With --printer moonraker it runs a Klipper printer behind Moonraker's HTTP API instead (the endpoints\n"
+    "'multidir run' uses, with Moonraker's reply shapes; docs/hardware.md): uploaded G-code is printed line by\n"
+    "line, moves timed by their feed rates and heater waits by the heating rate.\n"
+    "  --printer moonraker  simulate a Moonraker printer (default port 7125)\n"
+    "  --speed X         simulated seconds per real second, above 0 and at most 100000 (default: 1)\n"
+    "  --fault NAME      inject once, when a job first reaches --fault-at: thermal-runaway, link-drop (3 s),\n"
+    "                    cancelled-on-printer, slow-replies (3 s each)\n"
+    "  --fault-at FRACTION  the job's progress for --fault, 0..1 (default: 0.5)\n"
     "  -h, --help        show this help\n"
     "\n"
     "Exit codes: 0 stopped by Ctrl-C, 1 cannot listen on the address and port, 2 usage error.\n";
@@ -66,9 +78,76 @@ std::string robotLine(const hardware::SimulatedRobotState& s) {
 
 }  // namespace
 
+namespace {
+
+int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
+  const std::string kind = parsed.value("--printer", "");
+  if (kind != "moonraker")
+    throw UsageError("multidir simulate: --printer '" + kind +
+                     "' is not simulated: this version simulates 'moonraker' (Klipper). Run 'multidir help simulate'.");
+  for (const char* modbusOnly : {"--rotary", "--robot", "--unit"})
+    if (parsed.has(modbusOnly))
+      throw UsageError(std::string("multidir simulate: ") + modbusOnly +
+                       " is for the Modbus simulator, not with --printer. Run 'multidir help simulate'.");
+  hardware::MoonrakerSimulatorOptions options;
+  options.listenAddress = parsed.value("--listen", "127.0.0.1");
+  options.port = wholeNumber(parsed.value("--port", "7125"), "--port", 0, 65535);
+  options.speed = parseNumber(parsed.value("--speed", "1"), "--speed");
+  if (!(options.speed > 0.0) || options.speed > 100000.0)
+    throw UsageError("multidir simulate: --speed must be above 0 and at most 100000. Run 'multidir help simulate'.");
+  if (parsed.has("--fault")) {
+    core::Result<hardware::PrinterFault> fault = hardware::parsePrinterFault(parsed.value("--fault", ""));
+    if (!fault) throw UsageError("multidir simulate: " + fault.error().describe() + ". Run 'multidir help simulate'.");
+    options.fault = *fault;
+  }
+  options.faultAtProgress = parseNumber(parsed.value("--fault-at", "0.5"), "--fault-at");
+  if (!(options.faultAtProgress >= 0.0) || options.faultAtProgress > 1.0)
+    throw UsageError("multidir simulate: --fault-at must be between 0 and 1. Run 'multidir help simulate'.");
+
+  g_stopRequested = false;
+  auto previousInt = std::signal(SIGINT, onStopSignal);
+  auto previousTerm = std::signal(SIGTERM, onStopSignal);
+  hardware::MoonrakerSimulator simulator(options);
+  const core::Status started = simulator.start();
+  if (!started.ok()) {
+    std::signal(SIGINT, previousInt);
+    std::signal(SIGTERM, previousTerm);
+    err << "multidir simulate: " << started.error().describe() << "\n";
+    return kExitBadInput;
+  }
+  if (!isLoopback(options.listenAddress))
+    err << "multidir simulate: warning: listening on " << options.listenAddress
+        << ", reachable from other machines on that network\n";
+  out << "Printer simulator (Moonraker, Klipper) listening on http://" << simulator.address() << " at speed "
+      << options.speed << (options.fault != hardware::PrinterFault::None
+                               ? std::string(", fault ") + hardware::printerFaultName(options.fault) + " at " +
+                                     std::to_string(static_cast<int>(options.faultAtProgress * 100)) + " %"
+                               : std::string())
+      << ". Ctrl-C stops it.\n"
+      << std::flush;
+  std::string last;
+  while (!g_stopRequested) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    const hardware::SimulatedPrinterState s = simulator.state();
+    char text[256];
+    std::snprintf(text, sizeof text, "printer: %s, job %s%s%s, %d %%, extruder %.0f/%.0f C, bed %.0f/%.0f C",
+                  s.firmwareState.c_str(), s.jobState.c_str(), s.file.empty() ? "" : " ", s.file.c_str(),
+                  static_cast<int>(std::floor(s.progress * 10.0)) * 10, s.extruder.actualC, s.extruder.targetC,
+                  s.bed.actualC, s.bed.targetC);
+    if (text != last) out << (last = text) << "\n" << std::flush;
+  }
+  std::signal(SIGINT, previousInt);
+  std::signal(SIGTERM, previousTerm);
+  simulator.stop();
+  out << "Simulator stopped.\n";
+  return kExitOk;
+}
+
+}  // namespace
+
 int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed =
-      parseArgs(args, {"--listen", "--port", "--unit"}, {"--rotary", "--robot", "--help"}, "simulate");
+  const ParsedArgs parsed = parseArgs(args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at"},
+                                      {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
     return kExitOk;
@@ -76,6 +155,11 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
   if (!parsed.positionals.empty())
     throw UsageError("multidir simulate: unexpected argument '" + parsed.positionals[0] +
                      "'. Run 'multidir help simulate'.");
+  if (parsed.has("--printer")) return simulatePrinter(parsed, out, err);
+  for (const char* printerOnly : {"--speed", "--fault", "--fault-at"})
+    if (parsed.has(printerOnly))
+      throw UsageError(std::string("multidir simulate: ") + printerOnly +
+                       " is for the printer simulator: add --printer moonraker. Run 'multidir help simulate'.");
   hardware::SimulatorOptions options;
   const bool rotary = parsed.has("--rotary");
   const bool robot = parsed.has("--robot");

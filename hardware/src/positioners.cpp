@@ -64,6 +64,11 @@ class RotaryPositioner : public Positioner {
     auto future = m_platform.stop();
     return immediateOutcome(future, m_pending);
   }
+  core::Status emergencyStop() override {
+    m_target.reset();
+    auto future = m_platform.emergencyStop();
+    return immediateOutcome(future, m_pending);
+  }
   core::Status clearStop() override { return m_platform.clearStop(); }
   PositionerSnapshot snapshot() const override {
     const RotaryStatus s = m_platform.status();
@@ -105,6 +110,11 @@ class RobotPositioner : public Positioner {
   core::Status stopMotion() override {
     m_target.reset();
     auto future = m_arm.stop();
+    return immediateOutcome(future, m_pending);
+  }
+  core::Status emergencyStop() override {
+    m_target.reset();
+    auto future = m_arm.emergencyStop();
     return immediateOutcome(future, m_pending);
   }
   core::Status clearStop() override { return m_arm.clearStop(); }

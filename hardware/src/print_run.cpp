@@ -1,10 +1,43 @@
 #include "multidir/hardware/print_run.h"
 
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <utility>
 
 #include "degrees_text.h"
 
 namespace multidir::hardware {
+
+namespace {
+
+bool commandReady(std::future<core::Status>& future) {
+  return future.valid() && future.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+std::string celsius(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f C", value);
+  return text;
+}
+
+// A heater overshooting its target, or a reading no sensor gives: "" when both read sane.
+std::string temperatureFault(const PrinterStatus& p, double overshootC) {
+  const auto check = [&](const HeaterReading& h, const char* name) -> std::string {
+    if (!std::isfinite(h.actualC) || h.actualC < -20.0 || h.actualC > 500.0)
+      return std::string("temperature fault: the ") + name + " reads " + celsius(h.actualC) +
+             ", which no working sensor gives: check its thermistor and wiring";
+    if (h.targetC > 0.0 && h.actualC > h.targetC + overshootC)
+      return std::string("temperature fault: the ") + name + " reads " + celsius(h.actualC) + ", more than " +
+             celsius(overshootC) + " above its target " + celsius(h.targetC) +
+             " (a heater running away?): the printer's job was paused; check the heater before resuming";
+    return {};
+  };
+  std::string fault = check(p.extruder, "extruder");
+  return fault.empty() ? check(p.bed, "bed") : fault;
+}
+
+}  // namespace
 
 PlatformOrientation PlatformOrientation::rotary(double angleDegrees) {
   PlatformOrientation o;
@@ -40,8 +73,9 @@ const char* printRunStateName(PrintRunState state) {
   return "?";
 }
 
-PrintRun::PrintRun(Positioner& positioner, std::vector<PrintStep> steps, PrintRunOptions options)
-    : m_positioner(positioner), m_steps(std::move(steps)), m_options(std::move(options)) {
+PrintRun::PrintRun(Positioner& positioner, std::vector<PrintStep> steps, PrintRunOptions options,
+                   PrinterLink* printer)
+    : m_positioner(positioner), m_printer(printer), m_steps(std::move(steps)), m_options(std::move(options)) {
   if (!m_options.steadyNow) m_options.steadyNow = [] { return std::chrono::steady_clock::now(); };
   if (!m_options.wallNow) m_options.wallNow = [] { return std::chrono::system_clock::now(); };
 }
@@ -116,10 +150,31 @@ void PrintRun::fault(const std::string& problem) {
                                     "; fix it, then resume to retry the step or abort");
 }
 
+std::string PrintRun::printerForbidsMotion() const {
+  if (m_printer == nullptr) return {};
+  const PrinterStatus p = m_printer->status();
+  if (p.linkLost)
+    return "the platform does not move while the printer's state is unknown: the link to " + m_printer->name() +
+           " is lost" + (p.lastError.empty() ? std::string() : " (" + p.lastError + ")");
+  if (p.busy())
+    return "the platform does not move while the printer reports a job " + std::string(printerJobStateName(p.state)) +
+           (p.currentFile.empty() ? std::string() : " (" + p.currentFile + ")") +
+           ": let it finish or cancel it on the printer";
+  return {};
+}
+
 void PrintRun::beginMove() {
   m_pausePending = false;
   m_faultLoggedWhilePrinting = false;
+  m_printInterrupted = false;
+  m_phase = PrintPhase::None;
   m_moveStarted = m_options.steadyNow();
+  if (const std::string forbidden = printerForbidsMotion(); !forbidden.empty()) {
+    m_lastProblem = forbidden;
+    enter(PrintRunState::Faulted, stepLabel() + ": the move was not sent: " + forbidden +
+                                      "; resume to retry the step once the printer is idle");
+    return;
+  }
   core::Status started = m_positioner.startMove(m_steps[m_step].orientation);
   if (!started.ok()) {
     m_lastProblem = started.error().describe();
@@ -171,6 +226,37 @@ core::Status PrintRun::resume() {
     return core::Done{};
   }
   if (m_state != PrintRunState::Paused && m_state != PrintRunState::Faulted) return refuse("resume");
+  if (m_state == PrintRunState::Paused && m_printInterrupted) {
+    const PrinterStatus p = m_printer->status();
+    const auto cannot = [&](const std::string& why) {
+      return core::Error{core::ErrorCode::InvalidParameter, "cannot resume step " + std::to_string(m_step + 1) + ": " + why,
+                         "print run"};
+    };
+    if (p.linkLost) return cannot("the link to " + m_printer->name() + " is still lost; check the printer and network");
+    if (p.stop.latched()) return cannot("the printer's emergency stop is latched");
+    const bool ours = p.currentFile == remoteName();
+    if (ours && p.state == PrinterJobState::Complete) {
+      enter(PrintRunState::Printing, stepLabel() + ": the printer finished " + remoteName() + " meanwhile");
+      finishRegion();
+      return core::Done{};
+    }
+    if (ours && (p.state == PrinterJobState::Paused || p.state == PrinterJobState::Printing)) {
+      if (p.state == PrinterJobState::Paused) m_printerSideCommand = m_printer->resumePrint();
+      m_printInterrupted = false;
+      m_phase = PrintPhase::Running;
+      m_pollsAtStart = p.polls;
+      m_printStarted = m_options.steadyNow();
+      m_printerPausedLogged = false;
+      enter(PrintRunState::Printing, stepLabel() + (p.state == PrinterJobState::Paused
+                                                        ? ": resuming the printer's job " + remoteName()
+                                                        : ": the printer is still printing " + remoteName() +
+                                                              "; following it again"));
+      return core::Done{};
+    }
+    return cannot("the printer's job for this step ended (" + std::string(printerJobStateName(p.state)) +
+                  (p.message.empty() ? std::string() : ": " + p.message) +
+                  "); finish the region by hand and press Region done, or abort the run");
+  }
   // Resuming is the operator clearing the stop; refused while the device has not confirmed it.
   watchStop(m_positioner.snapshot());
   if (core::Status cleared = m_positioner.clearStop(); !cleared.ok())
@@ -184,9 +270,18 @@ core::Status PrintRun::resume() {
 
 core::Status PrintRun::abort() {
   if (m_state == PrintRunState::Completed || m_state == PrintRunState::Aborted) return refuse("abort");
-  if (m_state == PrintRunState::Printing) {
-    enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: stop the printer");
-    return core::Done{};
+  if (m_state == PrintRunState::Printing || (m_state == PrintRunState::Paused && m_printInterrupted)) {
+    if (m_printer != nullptr && (m_phase != PrintPhase::None || m_printInterrupted)) {
+      m_phase = PrintPhase::None;
+      m_printerSideCommand = m_printer->cancelPrint();
+      enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: cancelling the job on " +
+                                        m_printer->name());
+      return core::Done{};
+    }
+    if (m_state == PrintRunState::Printing) {
+      enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: stop the printer");
+      return core::Done{};
+    }
   }
   if (m_state == PrintRunState::Moving || m_state == PrintRunState::Settling) {
     const core::Status stopped = requestStop();
@@ -199,7 +294,7 @@ core::Status PrintRun::abort() {
 }
 
 core::Status PrintRun::regionDone(std::size_t step) {
-  if (m_state != PrintRunState::Printing)
+  if (m_state != PrintRunState::Printing && !(m_state == PrintRunState::Paused && m_printInterrupted))
     return core::Error{core::ErrorCode::InvalidParameter,
                        "region " + std::to_string(step + 1) + " cannot be done: no region is printing (the run is " +
                            printRunStateName(m_state) + ")",
@@ -209,33 +304,54 @@ core::Status PrintRun::regionDone(std::size_t step) {
                        "region " + std::to_string(step + 1) + " is not the one printing (region " +
                            std::to_string(m_step + 1) + " is)",
                        "print run"};
-  enter(PrintRunState::Printing, stepLabel() + ": region done");
+  if (m_printer != nullptr && m_phase != PrintPhase::None)
+    return core::Error{core::ErrorCode::InvalidParameter,
+                       "region " + std::to_string(step + 1) + " is being printed by " + m_printer->name() +
+                           ": the run goes on by itself when the printer reports it complete",
+                       "print run"};
+  enter(m_state, stepLabel() + ": region done (operator)");
+  finishRegion();
+  return core::Done{};
+}
+
+void PrintRun::finishRegion() {
+  m_phase = PrintPhase::None;
+  m_printInterrupted = false;
   if (m_step + 1 == m_steps.size()) {
     enter(PrintRunState::Completed, "all " + std::to_string(m_steps.size()) + " regions printed");
-    return core::Done{};
+    return;
   }
   ++m_step;
   if (m_pausePending) {
     m_pausePending = false;
     enter(PrintRunState::Paused, stepLabel() + ": paused before moving (requested while printing)");
-    return core::Done{};
+    return;
   }
   const PositionerSnapshot snapshot = m_positioner.snapshot();
   if (snapshot.faulted || !snapshot.linkUp) {
     fault(snapshot.problem.empty() ? std::string("the positioner is not ready") : snapshot.problem);
-    return core::Done{};
+    return;
   }
   beginMove();
-  return core::Done{};
 }
 
 void PrintRun::tick() {
   const PositionerSnapshot snapshot = m_positioner.snapshot();
   watchStop(snapshot);
+  if (m_awaitingPrinterStop && m_printer->status().stop.confirmed) {
+    m_awaitingPrinterStop = false;
+    enter(m_state, stepLabel() + ": " + m_printer->name() + " confirmed the emergency stop");
+  }
+  if (commandReady(m_printerSideCommand)) {
+    const core::Status side = m_printerSideCommand.get();
+    if (!side.ok()) enter(m_state, stepLabel() + ": the printer refused: " + side.error().describe());
+  }
   if (m_state != PrintRunState::Moving && m_state != PrintRunState::Settling && m_state != PrintRunState::Printing)
     return;
   const auto now = m_options.steadyNow();
   if (m_state == PrintRunState::Printing) {
+    if (m_phase != PrintPhase::None) tickPrinter(snapshot);
+    if (m_state != PrintRunState::Printing) return;
     if ((snapshot.faulted || !snapshot.linkUp) && !m_faultLoggedWhilePrinting) {
       m_faultLoggedWhilePrinting = true;
       enter(PrintRunState::Printing, stepLabel() + ": warning while printing: " +
@@ -262,9 +378,132 @@ void PrintRun::tick() {
     return;
   }
   if (now - m_settleStarted >= m_options.settleTime) {
+    if (stepUsesPrinter()) return beginPrint(snapshot);
     enter(PrintRunState::Printing, stepLabel() + ": settled; print region " + std::to_string(m_step + 1));
     if (m_printRequest) m_printRequest(m_step, m_steps[m_step]);
   }
+}
+
+std::string PrintRun::remoteName() const {
+  return std::filesystem::path(m_steps[m_step].gcodePath).filename().string();
+}
+
+void PrintRun::beginPrint(const PositionerSnapshot& snapshot) {
+  // The printer never starts unless the platform is at rest at the step's orientation.
+  if (!snapshot.reached || snapshot.moving || !snapshot.linkUp || snapshot.faulted)
+    return fault("the print was not started: " + m_positioner.name() + " is not at rest at the step's orientation");
+  const PrinterStatus p = m_printer->status();
+  if (p.linkLost)
+    return fault("the print was not started: the link to " + m_printer->name() + " is lost" +
+                 (p.lastError.empty() ? std::string() : " (" + p.lastError + ")"));
+  if (p.busy())
+    return fault("the print was not started: " + m_printer->name() + " reports a job " +
+                 printerJobStateName(p.state) + " (" + p.currentFile + "); let it finish or cancel it on the printer");
+  if (p.stop.latched()) return fault("the print was not started: the printer's emergency stop is latched");
+  m_phase = PrintPhase::Uploading;
+  m_printInterrupted = false;
+  m_printerPausedLogged = false;
+  m_progressTenths = -1;
+  m_printerCommand = m_printer->upload(m_steps[m_step].gcodePath, remoteName());
+  enter(PrintRunState::Printing, stepLabel() + ": settled; uploading " + m_steps[m_step].gcodePath + " to " +
+                                     m_printer->name() + " as " + remoteName());
+  if (m_printRequest) m_printRequest(m_step, m_steps[m_step]);
+}
+
+void PrintRun::interruptPrint(const std::string& reason) {
+  m_phase = PrintPhase::None;
+  m_printInterrupted = true;
+  m_lastProblem = reason;
+  enter(PrintRunState::Paused, stepLabel() + ": paused: " + reason +
+                                   "; the platform stays where it is; fix it, then resume (the printer's job "
+                                   "continues when it is paused or still printing) or finish the region by hand "
+                                   "and press Region done, or abort");
+}
+
+
+void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
+  const PrinterStatus p = m_printer->status();
+  if (snapshot.moving) {
+    m_printerSideCommand = m_printer->pausePrint();
+    return interruptPrint(m_positioner.name() + " moved while the region printed: the printer's job was paused");
+  }
+  if (p.linkLost)
+    return interruptPrint("the link to " + m_printer->name() + " is lost" +
+                          (p.lastError.empty() ? std::string() : " (" + p.lastError + ")") +
+                          "; the printer may still be printing on its own");
+  if (m_phase == PrintPhase::Uploading) {
+    if (!commandReady(m_printerCommand)) return;
+    const core::Status uploaded = m_printerCommand.get();
+    if (!uploaded.ok()) return interruptPrint("the upload of " + remoteName() + " failed: " + uploaded.error().describe());
+    m_phase = PrintPhase::Starting;
+    m_printerCommand = m_printer->startPrint(remoteName());
+    enter(PrintRunState::Printing, stepLabel() + ": uploaded; starting " + remoteName());
+    return;
+  }
+  if (m_phase == PrintPhase::Starting) {
+    if (!commandReady(m_printerCommand)) return;
+    const core::Status started = m_printerCommand.get();
+    if (!started.ok())
+      return interruptPrint("the printer did not start " + remoteName() + ": " + started.error().describe());
+    m_phase = PrintPhase::Running;
+    m_pollsAtStart = p.polls;
+    m_printStarted = m_options.steadyNow();
+    enter(PrintRunState::Printing, stepLabel() + ": " + m_printer->name() + " prints " + remoteName());
+    return;
+  }
+  // Running: only a status read after the start was answered tells about this job.
+  if (p.polls <= m_pollsAtStart) return;
+  const bool ours = p.currentFile == remoteName();
+  if (p.state == PrinterJobState::Error)
+    return interruptPrint("the printer reports an error" + (p.message.empty() ? std::string() : ": " + p.message));
+  if (p.state == PrinterJobState::Cancelled && ours)
+    return interruptPrint("the job " + remoteName() + " was cancelled on the printer");
+  if (ours && (p.state == PrinterJobState::Printing || p.state == PrinterJobState::Paused)) {
+    if (const std::string fault = temperatureFault(p, m_options.temperatureOvershootC); !fault.empty()) {
+      m_printerSideCommand = m_printer->pausePrint();
+      return interruptPrint(fault);
+    }
+    if (p.state == PrinterJobState::Paused && !m_printerPausedLogged) {
+      m_printerPausedLogged = true;
+      enter(PrintRunState::Printing, stepLabel() + ": the job was paused on the printer; waiting for it to resume");
+    } else if (p.state == PrinterJobState::Printing) {
+      m_printerPausedLogged = false;
+    }
+    const int tenths = static_cast<int>(std::floor(p.progress * 10.0));
+    if (tenths > m_progressTenths) {
+      m_progressTenths = tenths;
+      enter(PrintRunState::Printing, stepLabel() + ": printing, " + std::to_string(tenths * 10) + " %, extruder " +
+                                         celsius(p.extruder.actualC) + " / " + celsius(p.extruder.targetC) + ", bed " +
+                                         celsius(p.bed.actualC) + " / " + celsius(p.bed.targetC));
+    }
+    return;
+  }
+  if (ours && p.state == PrinterJobState::Complete) {
+    enter(PrintRunState::Printing, stepLabel() + ": " + m_printer->name() + " reports " + remoteName() + " complete");
+    return finishRegion();
+  }
+  if (m_options.steadyNow() - m_printStarted > m_options.printStartTimeout)
+    interruptPrint("the printer accepted the start of " + remoteName() + " but reports " +
+                   printerJobStateName(p.state) + (p.currentFile.empty() ? std::string() : " of " + p.currentFile) +
+                   " after " + std::to_string(m_options.printStartTimeout.count()) + " ms");
+}
+
+core::Status PrintRun::emergencyStop() {
+  // Both devices first, before anything that could take time.
+  const core::Status platform = m_positioner.emergencyStop();
+  if (m_printer != nullptr) m_printerSideCommand = m_printer->emergencyStop();
+  m_awaitingStopConfirmation = platform.ok();
+  m_awaitingPrinterStop = m_printer != nullptr;
+  m_stopProblemLogged = false;
+  m_stopRequested = m_options.steadyNow();
+  m_phase = PrintPhase::None;
+  m_lastProblem = "emergency stop";
+  std::string message = stepLabel() + ": EMERGENCY STOP sent to " + m_positioner.name() +
+                        (platform.ok() ? std::string() : " (refused: " + platform.error().describe() + ")") +
+                        (m_printer != nullptr ? " and " + m_printer->name() : std::string(" (no printer link: stop the printer by hand)"));
+  const bool finished = m_state == PrintRunState::Completed || m_state == PrintRunState::Aborted;
+  enter(finished ? m_state : PrintRunState::Aborted, message);
+  return core::Done{};
 }
 
 }  // namespace multidir::hardware

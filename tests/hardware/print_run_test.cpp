@@ -39,6 +39,10 @@ class FakePositioner : public Positioner {
     if (stopMode == StopMode::ConfirmedAtOnce) confirmStop();
     return core::Done{};
   }
+  core::Status emergencyStop() override {
+    ++emergencyStops;
+    return stopMotion();
+  }
   core::Status clearStop() override {
     if (state.stopLatched && !state.stopConfirmed)
       return core::Error{core::ErrorCode::InvalidParameter, "the stop is not confirmed yet", "fake"};
@@ -60,6 +64,7 @@ class FakePositioner : public Positioner {
 
   std::vector<PlatformOrientation> moves;
   int stops = 0;
+  int emergencyStops = 0;
   bool refuseNext = false;
   StopMode stopMode = StopMode::ConfirmedAtOnce;
   PositionerSnapshot state = [] {

@@ -138,6 +138,10 @@ class DeviceSimulator::Impl {
     std::lock_guard<std::mutex> lock(m_mutex);
     return device == SimulatedDevice::Rotary ? m_rotaryCommandWrites : m_robotCommandWrites;
   }
+  std::vector<SimulatedCommandRecord> commandLog() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_commandLog;
+  }
   int connectionCount() const {
     std::lock_guard<std::mutex> lock(m_mutex);
     return m_connections;
@@ -336,8 +340,18 @@ class DeviceSimulator::Impl {
     const int count = function == 0x06 ? 1 : ((pdu[3] << 8) | pdu[4]);
     const int heartbeatFirst = *device == SimulatedDevice::Rotary ? rr::kHeartbeat : rb::kHostHeartbeat;
     const int heartbeatLast = *device == SimulatedDevice::Rotary ? rr::kHeartbeatTimeout : rb::kHeartbeatTimeout;
-    if (address < heartbeatFirst || address + count - 1 > heartbeatLast)
+    if (address < heartbeatFirst || address + count - 1 > heartbeatLast) {
       (*device == SimulatedDevice::Rotary ? m_rotaryCommandWrites : m_robotCommandWrites)++;
+      const int commandRegister = *device == SimulatedDevice::Rotary ? rr::kCommand : rb::kCommand;
+      SimulatedCommandRecord record;
+      record.at = m_options.steadyNow ? m_options.steadyNow() : Clock::now();
+      record.device = *device;
+      if (commandRegister >= address && commandRegister < address + count) {
+        const std::size_t at = function == 0x06 ? 3 : 6 + 2 * static_cast<std::size_t>(commandRegister - address);
+        if (at + 1 < pduSize) record.command = (pdu[at] << 8) | pdu[at + 1];
+      }
+      m_commandLog.push_back(record);
+    }
   }
 
   // Queues the reply to one complete request frame and tries to send it.
@@ -397,6 +411,7 @@ class DeviceSimulator::Impl {
   std::uint64_t m_robotRequests = 0;
   std::uint64_t m_rotaryCommandWrites = 0;
   std::uint64_t m_robotCommandWrites = 0;
+  std::vector<SimulatedCommandRecord> m_commandLog;
   std::uint64_t m_refused = 0;
   std::uint64_t m_dropped = 0;
 };
@@ -421,6 +436,7 @@ std::uint64_t DeviceSimulator::requestCount(SimulatedDevice device) const { retu
 std::uint64_t DeviceSimulator::commandWriteCount(SimulatedDevice device) const {
   return m_impl->commandWriteCount(device);
 }
+std::vector<SimulatedCommandRecord> DeviceSimulator::commandLog() const { return m_impl->commandLog(); }
 int DeviceSimulator::connectionCount() const { return m_impl->connectionCount(); }
 std::uint64_t DeviceSimulator::refusedConnectionCount() const { return m_impl->refusedConnectionCount(); }
 std::uint64_t DeviceSimulator::droppedClientCount() const { return m_impl->droppedClientCount(); }

@@ -16,8 +16,10 @@
 // request can have closes that connection.
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "multidir/core/common/result.h"
 
@@ -38,9 +40,21 @@ struct SimulatorOptions {
   double rotaryMaxAngleDegrees = 180.0;
   double robotMaxSpeedDegreesPerSecond = 90.0;  // at speed 100 %
   double robotMaxTiltDegrees = 90.0;           // the program's own limit (beyond it: fault 1)
+  // The clock of commandLog()'s times (motion always runs on the system's steady clock); tests inject the
+  // clock they share with the printer simulator, to compare both devices' records.
+  std::function<std::chrono::steady_clock::time_point()> steadyNow;
 };
 
 enum class SimulatedDevice { Rotary, Robot };
+
+// One command write (any write but the heartbeat registers') as the simulator received it.
+struct SimulatedCommandRecord {
+  std::chrono::steady_clock::time_point at;  // SimulatorOptions::steadyNow
+  SimulatedDevice device = SimulatedDevice::Rotary;
+  // The COMMAND register's value in the write (rotary: 1 enable ... 4 move, 5 stop, 6 e-stop; robot: 1 move,
+  // 2 stop, 3 halt, 4 reset), -1 when the write did not touch it.
+  int command = -1;
+};
 
 // A copy of the simulated rotary controller's state.
 struct SimulatedRotaryState {
@@ -96,6 +110,8 @@ class DeviceSimulator {
   // (target, speed, command, sequence...): a refused command must leave the second at 0.
   [[nodiscard]] std::uint64_t requestCount(SimulatedDevice device) const;
   [[nodiscard]] std::uint64_t commandWriteCount(SimulatedDevice device) const;
+  // Every command write, in the order received.
+  [[nodiscard]] std::vector<SimulatedCommandRecord> commandLog() const;
   [[nodiscard]] int connectionCount() const;  // clients connected now
   // Connections closed by the simulator: refused beyond maxClients (or during dropConnections' refusal),
   // and clients dropped for a request timeout, a non-Modbus frame or a broken length.

@@ -1,10 +1,12 @@
 #pragma once
-// The print-run sequencer: turns the platform to each region's orientation, waits until it has settled, asks
-// the operator (or an external signal) to print the region, waits for "region done", and goes on.
+// The print-run sequencer: turns the platform to each region's orientation, waits until it has settled, has
+// the region printed, and goes on. With a printer link (printer_link.h) it uploads and starts the step's
+// G-code itself and follows the printer's job until the printer reports it complete; without one (or for a
+// step without G-code) it asks the operator to print the region and waits for "region done".
 //
 // Driven by calls, not by its own thread: the owner calls tick() regularly (a GUI timer, the CLI loop, a
-// test) and forwards operator events (start, pause, resume, abort, regionDone). Time comes from an
-// injectable clock, so tests run without waiting. Not thread-safe: call every method from one thread.
+// test) and forwards operator events (start, pause, resume, abort, regionDone, emergencyStop). Time comes
+// from an injectable clock, so tests run without waiting. Not thread-safe: call every method from one thread.
 //
 // States and transitions (anything not listed is refused with InvalidParameter and changes nothing):
 //
@@ -13,39 +15,64 @@
 //   Idle      | start()                                     | Moving    | startMove(step 0)
 //   Moving    | tick: positioner reached the target         | Settling  |
 //   Moving    | tick: fault, link down, move timeout        | Faulted   | stopMotion()
-//   Moving    | start of move refused                       | Faulted   |
-//   Settling  | tick: reached for settleTime                | Printing  | print request callback(step)
+//   Moving    | start of move refused, or the printer busy  | Faulted   | (nothing moves)
+//             |   or its state unknown (interlock)          |           |
+//   Settling  | tick: reached for settleTime                | Printing  | print request callback(step); with a
+//             |                                             |           | printer: upload the step's G-code
+//   Settling  | tick: ... but the printer is busy or lost   | Faulted   | (nothing is sent)
 //   Settling  | tick: no longer reached                     | Moving    | (waits again, same target)
 //   Settling  | tick: fault, link down                      | Faulted   | stopMotion()
 //   Moving,   | pause()                                     | Paused    | stopMotion()
 //   Settling  |   ... the stop is refused                   | Faulted   | (pause() returns the refusal)
 //   Printing  | pause()                                     | Printing  | pause pending: no motion while printing
-//   Printing  | regionDone(i), i current, more steps        | Moving    | startMove(step i+1)
+//   Printing  | tick (printer): uploaded                    | Printing  | startPrint(step's file)
+//   Printing  | tick (printer): job complete, or            | Moving    | startMove(step i+1)
+//             | regionDone(i), i current, more steps        |           |
 //             |   ... with a pause pending                  | Paused    | (step i+1 not started)
-//   Printing  | regionDone(i), i the last step              | Completed |
+//   Printing  | the same, i the last step                   | Completed |
+//   Printing  | tick (printer): upload or start refused,    | Paused    | print interrupted (the reason is
+//             | printer error, job cancelled on the printer,|           | lastProblem); a temperature fault
+//             | link lost, temperature fault, the platform  |           | or a moving platform also pauses the
+//             | moving                                      |           | printer's job
+//   Paused    | resume(), print interrupted: printer paused | Printing  | resumePrint()
+//             |   ... printer still printing the file       | Printing  | (follows it again)
+//             |   ... printer reports the file complete     | Moving    | startMove(step i+1) (or Completed)
+//             |   ... anything else                         | Paused    | refused: finish the region by hand
+//             |                                             |           | and regionDone(i), or abort
+//   Paused    | regionDone(i), print interrupted            | Moving    | startMove(step i+1) (or Completed)
 //   Paused    | resume()                                    | Moving    | clearStop(), startMove(current step)
 //   Faulted   | resume() (retry the current step)           | Moving    | clearStop(), startMove(current step)
 //   Paused,   | resume() while the device has not confirmed | (same)    | refused: the stop has not reached the
 //   Faulted   |   the stop (clearStop refused)              |           | device yet
-//   any but   | abort()                                     | Aborted   | stopMotion() unless Printing (the
-//   Completed,|                                             |           | operator stops the printer)
-//   Aborted   |                                             |           |
+//   any but   | abort()                                     | Aborted   | stopMotion() unless Printing; while
+//   Completed,|                                             |           | Printing with a printer: cancelPrint()
+//   Aborted   |                                             |           | (without: the operator stops it)
+//   any       | emergencyStop()                             | Aborted   | the positioner's and the printer's
+//             |                                             | (final    | emergency stops, both at once, both
+//             |                                             | states    | latched by their drivers
+//             |                                             | stay)     |
 //
 // A stop is only requested by stopMotion(); "motion stopped" is logged when a later tick() sees the device's
 // confirmation (PositionerSnapshot::stopConfirmed), in whatever state the run is then (ticks keep watching
 // for it in Paused, Faulted and Aborted); a stop not confirmed after a second is logged once as a warning. A
 // refused stop is logged at once and says to use the E-STOP.
 //
-// While Printing no move is ever commanded; device faults seen while printing are logged and taken up
-// after regionDone. Completed and Aborted are final.
+// Interlocks (checked on every move and every print start, whatever the state machine believes): the platform
+// is never commanded while the printer reports a job printing or paused, or while the printer's state is
+// unknown (link lost); the printer is never started unless the positioner reports the step's orientation
+// reached, at rest, link up and no fault. While Printing no move is ever commanded; positioner faults seen
+// while printing are logged and taken up after the region is done.
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "multidir/core/common/result.h"
+#include "multidir/hardware/printer_link.h"
 
 namespace multidir::hardware {
 
@@ -68,6 +95,9 @@ struct PlatformOrientation {
 struct PrintStep {
   PlatformOrientation orientation;
   std::string regionFile;  // the region's G-code or mesh, shown to the operator
+  // The step's G-code, uploaded to the printer and started when the run has a printer link; empty: the
+  // operator prints the region and presses "region done".
+  std::string gcodePath = {};
 };
 
 // What the sequencer needs to know of the device that orients the platform.
@@ -90,6 +120,8 @@ class Positioner {
   // Latches a stop and returns without waiting for it: a refusal comes back at once; Done means asked for,
   // not done (snapshot().stopConfirmed tells when the device took it).
   virtual core::Status stopMotion() = 0;
+  // The device's own emergency stop (rotary: cut the power stage; robot: halt), latched like stopMotion().
+  virtual core::Status emergencyStop() = 0;
   // Allows moves again after stopMotion(); refused while the device has not confirmed the stop.
   virtual core::Status clearStop() = 0;
   [[nodiscard]] virtual PositionerSnapshot snapshot() const = 0;
@@ -117,6 +149,11 @@ struct PrintRunLogEntry {
 struct PrintRunOptions {
   std::chrono::milliseconds settleTime{500};     // reached this long before printing starts
   std::chrono::milliseconds moveTimeout{120000};  // a move not reached by then is a fault
+  // With a printer: a heater this far above its target while the step prints is a temperature fault (a
+  // heater running away; Klipper's own checks may shut it down later).
+  double temperatureOvershootC = 15.0;
+  // With a printer: started, but no job of the step's file seen printing or complete by then: a fault.
+  std::chrono::milliseconds printStartTimeout{30000};
   // Clocks; the defaults are the system's. Tests inject their own.
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
   std::function<std::chrono::system_clock::time_point()> wallNow;
@@ -129,21 +166,29 @@ class PrintRun {
   // regionDone(step).
   using PrintRequestCallback = std::function<void(std::size_t step, const PrintStep&)>;
 
-  PrintRun(Positioner& positioner, std::vector<PrintStep> steps, PrintRunOptions options = {});
+  // `printer` (optional, must outlive the run): prints the steps that have G-code; nullptr: the operator does.
+  PrintRun(Positioner& positioner, std::vector<PrintStep> steps, PrintRunOptions options = {},
+           PrinterLink* printer = nullptr);
 
   core::Status start();
   core::Status pause();
   core::Status resume();
   core::Status abort();
   core::Status regionDone(std::size_t step);
-  // Advances the state machine with the positioner's snapshot and the clock.
+  // Sends the positioner's and the printer's emergency stops at once and ends the run (Aborted); never refused.
+  // Both are latched by their drivers and resent until confirmed; ticks log each confirmation.
+  core::Status emergencyStop();
+  // Advances the state machine with the positioner's snapshot, the printer's status and the clock.
   void tick();
 
   [[nodiscard]] PrintRunState state() const { return m_state; }
   [[nodiscard]] std::size_t currentStep() const { return m_step; }
   [[nodiscard]] bool pausePending() const { return m_pausePending; }
   // A stop was asked for and the device has not confirmed it yet: keep calling tick() (even once Aborted).
-  [[nodiscard]] bool stopUnconfirmed() const { return m_awaitingStopConfirmation; }
+  [[nodiscard]] bool stopUnconfirmed() const { return m_awaitingStopConfirmation || m_awaitingPrinterStop; }
+  // Paused because the printer's job for the current step was interrupted (lastProblem says why).
+  [[nodiscard]] bool printInterrupted() const { return m_printInterrupted; }
+  [[nodiscard]] bool hasPrinter() const { return m_printer != nullptr; }
   [[nodiscard]] const std::vector<PrintStep>& steps() const { return m_steps; }
   [[nodiscard]] const std::vector<PrintRunLogEntry>& log() const { return m_log; }
   [[nodiscard]] const std::string& lastProblem() const { return m_lastProblem; }
@@ -160,8 +205,20 @@ class PrintRun {
   void watchStop(const PositionerSnapshot& snapshot);
   std::string stepLabel() const;
   core::Status refuse(const std::string& event) const;
+  // Why the platform may not move now because of the printer ("" when it may).
+  std::string printerForbidsMotion() const;
+  void beginPrint(const PositionerSnapshot& snapshot);
+  void tickPrinter(const PositionerSnapshot& snapshot);
+  void interruptPrint(const std::string& reason);
+  // The current region is printed: the next step, a pending pause, or Completed.
+  void finishRegion();
+  std::string remoteName() const;
+  bool stepUsesPrinter() const { return m_printer != nullptr && !m_steps[m_step].gcodePath.empty(); }
+
+  enum class PrintPhase { None, Uploading, Starting, Running };
 
   Positioner& m_positioner;
+  PrinterLink* m_printer = nullptr;
   std::vector<PrintStep> m_steps;
   PrintRunOptions m_options;
   PrintRunState m_state = PrintRunState::Idle;
@@ -175,6 +232,15 @@ class PrintRun {
   std::chrono::steady_clock::time_point m_settleStarted{};
   std::chrono::steady_clock::time_point m_stopRequested{};
   std::string m_lastProblem;
+  PrintPhase m_phase = PrintPhase::None;
+  std::future<core::Status> m_printerCommand;  // the upload or start in flight
+  std::future<core::Status> m_printerSideCommand;  // a pause or cancel sent on the side (outcome logged)
+  std::uint64_t m_pollsAtStart = 0;
+  std::chrono::steady_clock::time_point m_printStarted{};
+  bool m_printInterrupted = false;
+  bool m_printerPausedLogged = false;
+  int m_progressTenths = -1;
+  bool m_awaitingPrinterStop = false;
   std::vector<PrintRunLogEntry> m_log;
   LogCallback m_logCallback;
   PrintRequestCallback m_printRequest;

@@ -1,0 +1,348 @@
+#include "run_command.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include "cli_args.h"
+#include "multidir/hardware/moonraker_link.h"
+#include "multidir/hardware/print_run.h"
+#include "multidir/hardware/robot_arm.h"
+#include "multidir/hardware/rotary_platform.h"
+#include "multidir/slicing/estimates.h"
+#include "run_job_file.h"
+
+namespace multidir::cli {
+
+const char* const kRunHelp =
+    "Usage: multidir run JOB --printer URL --platform HOST:PORT [options]\n"
+    "\n"
+    "Runs a sliced print job headless (JOB: the folder written by 'multidir slice' for a profile whose platform\n"
+    "is driven over Modbus, or its print-job.json). For each step: turns the platform (4-DOF rotary controller\n"
+    "or 5-DOF robot arm, as the job's machine says) to the step's orientation, waits until it has settled,\n"
+    "uploads the step's G-code to the printer (Klipper through Moonraker), starts it, follows it until the\n"
+    "printer reports it complete, and goes on. The platform never moves while the printer prints, and the\n"
+    "printer never starts while the platform is not at rest at the step's orientation.\n"
+    "\n"
+    "Every event is logged with its time; a progress line (step, printer progress, temperatures, the job's\n"
+    "remaining time from the slicer's estimates) follows the printer. When the printer reports an error, a\n"
+    "job cancelled on the printer, a temperature fault, or a link is lost, the run stops there (the platform\n"
+    "stays where it is) and says why; fix it and continue with --from STEP.\n"
+    "\n"
+    "Ctrl-C stops both devices: the platform's motion and the printer's job (cancelled). A second Ctrl-C sends\n"
+    "both emergency stops (Klipper then needs a FIRMWARE_RESTART, the platform a clear fault and homing).\n"
+    "\n"
+    "Options:\n"
+    "  --printer URL        Moonraker's address: http://HOST:PORT (default port 80) or HOST:PORT (7125 when\n"
+    "                       absent)\n"
+    "  --api-key KEY        Moonraker's API key, when its [authorization] asks for one\n"
+    "  --platform HOST:PORT the platform's Modbus TCP address (rotary controller or robot)\n"
+    "  --unit ID            Modbus unit id, 0..255 (default: 1 for the rotary controller, 255 for the robot)\n"
+    "  --from STEP          start at this step, 1..the number of steps (default: 1)\n"
+    "  --settle MS          the platform holds the orientation this long before printing (default: 500)\n"
+    "  --log FILE           also write the log to FILE\n"
+    "  -h, --help           show this help\n"
+    "\n"
+    "Exit codes: 0 every step printed, 1 the job cannot be read, 2 usage error, 4 the run did not complete\n"
+    "(a device unreachable or faulted, a printer fault, Ctrl-C).\n";
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using namespace std::chrono_literals;
+
+std::atomic<int> g_interrupts{0};
+
+extern "C" void onRunSignal(int) { g_interrupts.fetch_add(1); }
+
+int wholeNumber(const std::string& text, const std::string& option, long low, long high) {
+  const double value = parseNumber(text, option);
+  if (value != std::floor(value) || value < static_cast<double>(low) || value > static_cast<double>(high))
+    throw UsageError("multidir run: " + option + " must be a whole number from " + std::to_string(low) + " to " +
+                     std::to_string(high) + ", not '" + text + "'. Run 'multidir help run'.");
+  return static_cast<int>(value);
+}
+
+std::string clockText() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[16];
+  std::strftime(text, sizeof text, "%H:%M:%S", &local);
+  return text;
+}
+
+// Writes each line to the terminal and the log file.
+class RunLog {
+ public:
+  RunLog(std::ostream& out, const std::string& path) : m_out(out) {
+    if (path.empty()) return;
+    m_file.open(path, std::ios::app);
+    if (!m_file)
+      throw FileError("multidir run: cannot write the log file " + path + ": check the folder exists and is writable");
+  }
+  void line(const std::string& text) {
+    const std::string stamped = "[" + clockText() + "] " + text + "\n";
+    m_out << stamped << std::flush;
+    if (m_file.is_open()) m_file << stamped << std::flush;
+  }
+
+ private:
+  std::ostream& m_out;
+  std::ofstream m_file;
+};
+
+// Restores the previous handlers however the command ends.
+class SignalScope {
+ public:
+  SignalScope() {
+    g_interrupts = 0;
+    m_int = std::signal(SIGINT, onRunSignal);
+    m_term = std::signal(SIGTERM, onRunSignal);
+  }
+  ~SignalScope() {
+    std::signal(SIGINT, m_int);
+    std::signal(SIGTERM, m_term);
+  }
+  SignalScope(const SignalScope&) = delete;
+  SignalScope& operator=(const SignalScope&) = delete;
+
+ private:
+  void (*m_int)(int) = SIG_DFL;
+  void (*m_term)(int) = SIG_DFL;
+};
+
+// Polls `condition` every 20 ms until it holds, `limit` passes or Ctrl-C.
+bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds limit) {
+  const auto deadline = Clock::now() + limit;
+  while (Clock::now() < deadline && g_interrupts == 0) {
+    if (condition()) return true;
+    std::this_thread::sleep_for(20ms);
+  }
+  return condition();
+}
+
+std::string celsius(const hardware::HeaterReading& h) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.1f/%.0f C", h.actualC, h.targetC);
+  return text;
+}
+
+// The devices of one run and how to bring the platform to a known state.
+struct Devices {
+  std::unique_ptr<hardware::PrinterLink> printer;
+  std::unique_ptr<hardware::RotaryPlatform> rotary;
+  std::unique_ptr<hardware::RobotArm> robot;
+  std::unique_ptr<hardware::Positioner> positioner;
+};
+
+void connectPlatform(Devices& devices, const RunJob& job, const std::string& host, int port, int unit, RunLog& log) {
+  hardware::ConnectionSettings connection;
+  connection.tcp.host = host;
+  connection.tcp.port = port;
+  if (job.machine.kind == core::MachineKind::RotaryPlatform) {
+    hardware::RotaryPlatformOptions options;
+    options.connection = connection;
+    options.connection.slaveId = unit < 0 ? 1 : unit;
+    options.machine = job.machine;
+    devices.rotary = std::make_unique<hardware::RotaryPlatform>(options);
+    if (core::Status c = devices.rotary->connect(); !c) throw std::runtime_error(c.error().describe());
+    const hardware::RotaryStatus s = devices.rotary->status();
+    if (s.fault != hardware::RotaryFault::None)
+      throw std::runtime_error(devices.rotary->name() + " reports a fault (" + hardware::rotaryFaultName(s.fault) +
+                               "): clear it in the studio or on the controller first");
+    if (!s.homed) {
+      log.line("homing " + devices.rotary->name() + " (not homed yet)");
+      if (!s.enabled) {
+        auto enabled = devices.rotary->enable();
+        if (enabled.wait_for(5s) != std::future_status::ready || !enabled.get().ok() ||
+            !waitFor([&] { return devices.rotary->status().enabled; }, 5s))
+          throw std::runtime_error(devices.rotary->name() + " did not enable");
+      }
+      auto homed = devices.rotary->home();
+      if (homed.wait_for(5s) != std::future_status::ready)
+        throw std::runtime_error(devices.rotary->name() + " did not take the homing command");
+      if (core::Status h = homed.get(); !h) throw std::runtime_error(h.error().describe());
+      if (!waitFor([&] { return devices.rotary->status().homed && !devices.rotary->status().homing; }, 120s))
+        throw std::runtime_error(devices.rotary->name() + " did not finish homing within 120 s");
+    }
+    devices.positioner = hardware::makePositioner(*devices.rotary);
+    return;
+  }
+  hardware::RobotArmOptions options;
+  options.connection = connection;
+  options.connection.slaveId = unit < 0 ? 255 : unit;
+  options.machine = job.machine;
+  devices.robot = std::make_unique<hardware::RobotArm>(options);
+  if (core::Status c = devices.robot->connect(); !c) throw std::runtime_error(c.error().describe());
+  devices.positioner = hardware::makePositioner(*devices.robot);
+}
+
+}  // namespace
+
+int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const ParsedArgs parsed = parseArgs(
+      args, {"--printer", "--platform", "--unit", "--api-key", "--log", "--settle", "--from"}, {"--help"}, "run");
+  if (parsed.has("--help")) {
+    out << kRunHelp;
+    return kExitOk;
+  }
+  const std::string jobPath =
+      onlyPositional(parsed, "run", "job", "multidir run JOB --printer URL --platform HOST:PORT");
+  if (!parsed.has("--printer"))
+    throw UsageError(
+        "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125). "
+        "Run 'multidir help run'.");
+  if (!parsed.has("--platform"))
+    throw UsageError(
+        "multidir run: --platform HOST:PORT is required (the platform's Modbus TCP address, such as "
+        "192.168.0.30:502). Run 'multidir help run'.");
+  core::Result<hardware::MoonrakerSettings> printerSettings =
+      hardware::parseMoonrakerUrl(parsed.value("--printer", ""));
+  if (!printerSettings)
+    throw UsageError("multidir run: " + printerSettings.error().describe() + ". Run 'multidir help run'.");
+  printerSettings->apiKey = parsed.value("--api-key", "");
+  const std::string platformText = parsed.value("--platform", "");
+  const std::size_t colon = platformText.rfind(':');
+  if (colon == std::string::npos || colon == 0)
+    throw UsageError("multidir run: --platform must be HOST:PORT, such as 192.168.0.30:502, not '" + platformText +
+                     "'. Run 'multidir help run'.");
+  const std::string platformHost = platformText.substr(0, colon);
+  const int platformPort = wholeNumber(platformText.substr(colon + 1), "--platform's port", 1, 65535);
+  const int unit = parsed.has("--unit") ? wholeNumber(parsed.value("--unit", ""), "--unit", 0, 255) : -1;
+  const int settleMs = wholeNumber(parsed.value("--settle", "500"), "--settle", 0, 600000);
+
+  const RunJob job = readRunJob(jobPath);
+  const int from = wholeNumber(parsed.value("--from", "1"), "--from", 1, static_cast<long>(job.steps.size()));
+  RunLog log(out, parsed.value("--log", ""));
+  SignalScope signals;
+
+  Devices devices;
+  core::Result<std::unique_ptr<hardware::PrinterLink>> link = hardware::makeMoonrakerLink(*printerSettings);
+  if (!link) throw UsageError("multidir run: " + link.error().describe());
+  devices.printer = std::move(*link);
+  log.line("job " + job.jobFile + ": " + std::to_string(job.steps.size()) + " steps, " +
+           core::machineKindName(job.machine.kind) + (from > 1 ? ", starting at step " + std::to_string(from) : ""));
+  if (core::Status c = devices.printer->connect(); !c) {
+    err << "multidir run: " << c.error().describe() << "\n";
+    return kExitRunStopped;
+  }
+  const hardware::PrinterStatus first = devices.printer->status();
+  if (first.busy() || first.firmwareState != "ready") {
+    err << "multidir run: " << devices.printer->name() << " is not ready for a job (job "
+        << hardware::printerJobStateName(first.state) << ", firmware " << first.firmwareState
+        << (first.message.empty() ? "" : ": " + first.message) << "): let it finish, or cancel or restart it first\n";
+    return kExitRunStopped;
+  }
+  log.line("connected to " + devices.printer->name() + " (firmware " + first.firmwareState + ")");
+  try {
+    connectPlatform(devices, job, platformHost, platformPort, unit, log);
+  } catch (const std::runtime_error& e) {
+    err << "multidir run: " << e.what() << "\n";
+    return kExitRunStopped;
+  }
+  log.line("connected to " + devices.positioner->name());
+
+  std::vector<hardware::PrintStep> steps;
+  std::vector<double> estimates;
+  for (std::size_t i = static_cast<std::size_t>(from - 1); i < job.steps.size(); ++i) {
+    const RunJobStep& s = job.steps[i];
+    steps.push_back({s.orientation, "step " + std::to_string(s.index), s.gcodePath});
+    estimates.push_back(s.estimateSeconds);
+  }
+  hardware::PrintRunOptions options;
+  options.settleTime = std::chrono::milliseconds(settleMs);
+  hardware::PrintRun run(*devices.positioner, steps, options, devices.printer.get());
+  run.setLogCallback([&](const hardware::PrintRunLogEntry& e) {
+    log.line(std::string(hardware::printRunStateName(e.state)) + ": " + e.message);
+  });
+  if (core::Status started = run.start(); !started) {
+    err << "multidir run: " << started.error().describe() << "\n";
+    return kExitRunStopped;
+  }
+
+  int handledInterrupts = 0;
+  std::string lastProgress;
+  auto nextProgress = Clock::now();
+  bool stoppedByOperator = false;
+  Clock::time_point stopDeadline = Clock::time_point::max();
+  Clock::time_point firstInterrupt{};
+  bool emergencySent = false;
+  constexpr auto kSameInterrupt = 300ms;
+  while (true) {
+    run.tick();
+    // One Ctrl-C may arrive twice (to the process and to its process group, as timeout(1) sends it): signals
+    // within kSameInterrupt of the first count as that one.
+    const int interrupts = g_interrupts.load();
+    if (interrupts > handledInterrupts) {
+      const bool first = handledInterrupts == 0;
+      const bool second = !first && Clock::now() - firstInterrupt > kSameInterrupt && !emergencySent;
+      handledInterrupts = interrupts;
+      if (first) {
+        stoppedByOperator = true;
+        firstInterrupt = Clock::now();
+        stopDeadline = firstInterrupt + 10s;
+        log.line("Ctrl-C: stopping both devices (press Ctrl-C again for their emergency stops)");
+        // abort() cancels the printer's job itself when the run was printing; otherwise the printer is asked
+        // here, in case it prints something the run did not start.
+        const bool runCancels = run.state() == hardware::PrintRunState::Printing ||
+                                (run.state() == hardware::PrintRunState::Paused && run.printInterrupted());
+        (void)run.abort();
+        if (!runCancels && devices.printer->status().busy()) (void)devices.printer->cancelPrint();
+        if (devices.positioner->snapshot().moving) (void)devices.positioner->stopMotion();
+      } else if (second) {
+        emergencySent = true;
+        stopDeadline = Clock::now() + 10s;
+        log.line("second Ctrl-C: emergency stop of both devices");
+        (void)run.emergencyStop();
+      }
+    }
+    const hardware::PrintRunState state = run.state();
+    if (state == hardware::PrintRunState::Completed) break;
+    if (state == hardware::PrintRunState::Aborted || state == hardware::PrintRunState::Paused ||
+        state == hardware::PrintRunState::Faulted) {
+      if (!stoppedByOperator) break;
+      // After Ctrl-C: wait for the platform's stop and the printer's cancel to take (below), then end.
+      if (!run.stopUnconfirmed() && !devices.printer->status().busy()) break;
+      if (Clock::now() > stopDeadline) break;
+    }
+    if (Clock::now() >= nextProgress && state == hardware::PrintRunState::Printing) {
+      nextProgress = Clock::now() + 1s;
+      const hardware::PrinterStatus p = devices.printer->status();
+      const double progress = p.state == hardware::PrinterJobState::Printing ? p.progress : 0.0;
+      double remaining = estimates[run.currentStep()] * (1.0 - progress);
+      for (std::size_t k = run.currentStep() + 1; k < estimates.size(); ++k) remaining += estimates[k];
+      char percent[16];
+      std::snprintf(percent, sizeof percent, "%.0f %%", progress * 100.0);
+      const std::string text = "progress: step " + std::to_string(from + static_cast<int>(run.currentStep())) + "/" +
+                               std::to_string(job.steps.size()) + " " + hardware::printerJobStateName(p.state) + " " +
+                               percent + ", extruder " + celsius(p.extruder) + ", bed " + celsius(p.bed) +
+                               ", job remaining about " + slicing::durationText(remaining);
+      if (text != lastProgress) log.line(lastProgress = text);
+    }
+    std::this_thread::sleep_for(50ms);
+  }
+  // Stops asked for are latched by the drivers: give them a bounded time to confirm before disconnecting.
+  for (int i = 0; i < 100 && run.stopUnconfirmed(); ++i) {
+    std::this_thread::sleep_for(50ms);
+    run.tick();
+  }
+  if (run.stopUnconfirmed()) log.line("warning: a device has not confirmed its stop: check it by hand");
+  if (run.state() == hardware::PrintRunState::Completed) {
+    log.line("done: " + std::to_string(steps.size()) + " steps printed");
+    return kExitOk;
+  }
+  const std::size_t step = static_cast<std::size_t>(from) + run.currentStep();
+  err << "multidir run: the run stopped at step " << step << " (" << hardware::printRunStateName(run.state())
+      << (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) << ")"
+      << (stoppedByOperator ? " by Ctrl-C" : "") << "; continue with --from " << step << " once it is fixed\n";
+  return kExitRunStopped;
+}
+
+}  // namespace multidir::cli

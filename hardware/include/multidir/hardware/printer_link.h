@@ -1,0 +1,103 @@
+#pragma once
+// The printer as the print run sees it: upload a G-code file, start, pause, resume and cancel its job, stop it
+// in an emergency, and read its state, progress, file and temperatures. One interface for every protocol
+// (Moonraker today: moonraker_link.h); protocols are documented in docs/hardware.md with their sources.
+//
+// Thread model: a link owns a worker thread that polls the printer every pollInterval and runs the queued
+// commands in order, and a second thread that only sends the emergency stop (so a slow status reply or an
+// upload in flight never holds it up). Every public method may be called from any thread.
+//
+// Emergency stop: latched like the platform's stop (stop_latch.h): it cancels every queued command, is sent at
+// once and resent (every stopRetryInterval) until the printer answered it, and every upload, start and resume
+// is refused until clearStop(), which is refused until the printer confirmed the stop.
+//
+// Errors: InvalidParameter for a refused command (nothing sent), DeviceUnreachable when the printer did not
+// answer (refused connection, timeout), DeviceFault when it answered with an error (the printer's own message
+// quoted), Cancelled for commands cancelled by the emergency stop or disconnect().
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <string>
+
+#include "multidir/core/common/result.h"
+#include "multidir/hardware/connection.h"
+#include "multidir/hardware/stop_latch.h"
+
+namespace multidir::hardware {
+
+// The printer's job, as Klipper's print_stats.state reports it. Unknown until the first good status read.
+enum class PrinterJobState { Unknown, Standby, Printing, Paused, Complete, Cancelled, Error };
+
+// "unknown", "standby", "printing", "paused", "complete", "cancelled", "error".
+const char* printerJobStateName(PrinterJobState state);
+
+struct HeaterReading {
+  double actualC = 0.0;  // degrees Celsius
+  double targetC = 0.0;  // 0: heater off
+};
+
+struct PrinterStatus {
+  LinkState link = LinkState::Disconnected;
+  // No good status read for PrinterLinkOptions::linkLostAfter (or none yet since connect()): every value below
+  // is the last one read and may be stale; the printer may still be printing on its own.
+  bool linkLost = true;
+  PrinterJobState state = PrinterJobState::Unknown;
+  std::string firmwareState;  // Klipper's webhooks.state: "ready", "startup", "shutdown", "error"
+  std::string message;        // the printer's own words: print_stats.message, or webhooks.state_message when
+                              // the firmware is not ready ("" when it says nothing)
+  double progress = 0.0;      // 0..1 of the current file (virtual_sdcard.progress: bytes read / file size)
+  std::string currentFile;    // print_stats.filename ("" when none)
+  HeaterReading extruder;
+  HeaterReading bed;
+  std::uint64_t polls = 0;                            // good status reads since connect()
+  std::chrono::steady_clock::time_point lastReply{};  // of the last good read (PrinterLinkOptions::steadyNow)
+  std::string lastError;                              // the latest link or printer problem ("" after a good read)
+  StopLatch stop;                                     // the emergency stop, when one is latched
+
+  [[nodiscard]] bool busy() const { return state == PrinterJobState::Printing || state == PrinterJobState::Paused; }
+};
+
+struct PrinterLinkOptions {
+  std::chrono::milliseconds pollInterval{250};
+  std::chrono::milliseconds requestTimeout{2000};  // connect, and each reply (uploads get uploadTimeout)
+  std::chrono::milliseconds uploadTimeout{120000};
+  std::chrono::milliseconds linkLostAfter{3000};     // no good status read this long: PrinterStatus::linkLost
+  std::chrono::milliseconds stopRetryInterval{100};  // an unanswered emergency stop is resent this often
+  // The clock of lastReply and linkLost; the system's steady clock unless a test injects one.
+  std::function<std::chrono::steady_clock::time_point()> steadyNow;
+};
+
+// Names the first option out of range (InvalidParameter).
+core::Status validate(const PrinterLinkOptions& options);
+
+class PrinterLink {
+ public:
+  virtual ~PrinterLink() = default;
+
+  // Starts the worker threads and waits for the first status read. Done once read; otherwise its error,
+  // and the worker keeps polling in the background (status().linkLost tells when it answers).
+  virtual core::Status connect() = 0;
+  // Stops the threads; queued commands end Cancelled. The printer is left as it is.
+  virtual void disconnect() = 0;
+
+  // Commands: each future ends once the printer answered (Done or its error). Refused at once while an
+  // emergency stop is latched (upload, start, resume).
+  // Sends `localPath` to the printer as `remoteName` (a plain file name, replaced when it exists).
+  virtual std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) = 0;
+  virtual std::future<core::Status> startPrint(const std::string& remoteName) = 0;
+  virtual std::future<core::Status> pausePrint() = 0;
+  virtual std::future<core::Status> resumePrint() = 0;
+  virtual std::future<core::Status> cancelPrint() = 0;
+  // Latched (see above); the future ends once the printer answered it.
+  virtual std::future<core::Status> emergencyStop() = 0;
+  // The operator allows uploads and starts again; refused until the printer confirmed the stop. A Klipper
+  // printer also needs a FIRMWARE_RESTART after its emergency stop (firmwareState "shutdown").
+  virtual core::Status clearStop() = 0;
+
+  [[nodiscard]] virtual PrinterStatus status() const = 0;
+  // "Moonraker printer at 127.0.0.1:7125".
+  [[nodiscard]] virtual std::string name() const = 0;
+};
+
+}  // namespace multidir::hardware

@@ -1,0 +1,28 @@
+#pragma once
+// A G-code file read as the printer simulator runs it: one entry per line with the time its move takes (path
+// length over the feed rate; G4 dwells; a fixed time for homing) and the heater commands (M104/M109 extruder,
+// M140/M190 bed; the 9 and 90 variants wait for the temperature). Not a checker: words it does not know are
+// skipped, as a printer's firmware would report and skip them.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace multidir::hardware::sim {
+
+struct TimelineLine {
+  std::size_t endByte = 0;   // file position after this line
+  double moveSeconds = 0.0;  // at the simulated printer's nominal speed
+  enum class Heater { None, Extruder, Bed } heater = Heater::None;
+  double targetC = 0.0;        // for heater commands
+  bool waitForHeater = false;  // M109 / M190
+};
+
+struct GcodeTimeline {
+  std::vector<TimelineLine> lines;
+  std::size_t bytes = 0;
+  double moveSeconds = 0.0;  // sum of the moves (heating not included)
+};
+
+GcodeTimeline readGcodeTimeline(const std::string& text);
+
+}  // namespace multidir::hardware::sim

@@ -1,0 +1,80 @@
+#pragma once
+// The printer behind the Moonraker simulator: Klipper's print_stats states, a virtual SD card that runs a
+// G-code file line by line (moves timed by their feed rates, heater waits by the heating rate), two heaters,
+// and Klipper's shutdown (emergency stop, or a heater beyond its maximal temperature). Time only moves in
+// advance(); not thread-safe (the simulator holds its lock around every call).
+#include <map>
+#include <string>
+
+#include "multidir/hardware/printer_link.h"
+#include "sim/gcode_timeline.h"
+
+namespace multidir::hardware::sim {
+
+struct SimulatedPrinterSettings {
+  double ambientC = 22.0;
+  double extruderRateCPerSecond = 10.0;  // heating and cooling
+  double bedRateCPerSecond = 2.0;
+  double runawayRateCPerSecond = 20.0;  // a stuck-on extruder heater climbs this fast
+  double extruderMaxC = 280.0;          // Klipper's max_temp: beyond it the firmware shuts down
+};
+
+class SimulatedPrinter {
+ public:
+  explicit SimulatedPrinter(SimulatedPrinterSettings settings = {});
+
+  void advance(double seconds);
+
+  void storeFile(const std::string& name, std::string content);
+  [[nodiscard]] bool hasFile(const std::string& name) const { return m_files.count(name) > 0; }
+  [[nodiscard]] std::size_t fileSize(const std::string& name) const;
+  [[nodiscard]] std::vector<std::string> fileNames() const;
+
+  // Klipper's commands; each returns "" when done, else Klipper's error text.
+  std::string start(const std::string& name);
+  std::string pause();
+  std::string resume();
+  std::string cancel();
+  void emergencyStop() { shutdown("Shutdown due to webhooks request"); }
+  void firmwareRestart();
+
+  // Faults.
+  void thermalRunaway() { m_runaway = true; }
+
+  [[nodiscard]] const std::string& jobState() const { return m_state; }  // print_stats.state
+  [[nodiscard]] const std::string& jobMessage() const { return m_message; }
+  [[nodiscard]] const std::string& firmwareState() const { return m_firmwareState; }  // webhooks.state
+  [[nodiscard]] const std::string& firmwareMessage() const { return m_firmwareMessage; }
+  [[nodiscard]] const std::string& currentFile() const { return m_file; }
+  [[nodiscard]] double progress() const;
+  [[nodiscard]] std::size_t filePosition() const { return m_bytesDone; }
+  [[nodiscard]] double printSeconds() const { return m_printSeconds; }
+  [[nodiscard]] HeaterReading extruder() const { return {m_extruder, m_extruderTarget}; }
+  [[nodiscard]] HeaterReading bed() const { return {m_bed, m_bedTarget}; }
+
+ private:
+  void heat(double seconds);
+  void shutdown(const std::string& why);
+  double secondsToReach(const TimelineLine& line) const;
+
+  SimulatedPrinterSettings m_settings;
+  std::map<std::string, std::string> m_files;
+  std::string m_state = "standby";
+  std::string m_message;
+  std::string m_firmwareState = "ready";
+  std::string m_firmwareMessage = "Printer is ready";
+  std::string m_file;
+  GcodeTimeline m_timeline;
+  std::size_t m_line = 0;
+  double m_lineElapsed = 0.0;
+  bool m_lineHeaterApplied = false;
+  std::size_t m_bytesDone = 0;
+  double m_printSeconds = 0.0;
+  double m_extruder;
+  double m_bed;
+  double m_extruderTarget = 0.0;
+  double m_bedTarget = 0.0;
+  bool m_runaway = false;
+};
+
+}  // namespace multidir::hardware::sim

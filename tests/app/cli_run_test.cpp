@@ -1,0 +1,198 @@
+// `multidir run` against the Modbus device simulator and the Moonraker printer simulator, both in this test
+// process on 127.0.0.1, and `multidir simulate --printer moonraker`.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "multidir/hardware/device_simulator.h"
+#include "multidir/hardware/moonraker_simulator.h"
+#include "support/cli_runner.h"
+#include "support/test_models.h"
+
+namespace {
+
+using multidir::test::CliRun;
+using multidir::test::runCli;
+namespace hw = multidir::hardware;
+
+// Heats (about 18 simulated seconds), then 20 moves of 10 mm at 1200 mm/min.
+std::string stepGcode() {
+  std::string text = "M104 S200\nM109 S200\nG90\nM83\nG1 X0 Y0 Z0.3 F1200\n";
+  for (int i = 0; i < 20; ++i) text += "G1 X" + std::to_string((i + 1) % 2 * 10) + " Y" + std::to_string(i) + " E0.5\n";
+  return text + "M104 S0\n";
+}
+
+// A sliced job of two steps as `multidir slice` writes it, G-code beside it: 4-DOF at 0 and 30 degrees, or
+// 5-DOF at tilt 0 and tilt 40 / azimuth 90.
+void writeJob(const std::string& dir, bool sliced = true, bool robot = false) {
+  std::filesystem::create_directories(dir);
+  std::string steps;
+  std::string slicing;
+  const double angles[2] = {0.0, 30.0};
+  for (int k = 1; k <= 2; ++k) {
+    const std::string gcode = "step-0" + std::to_string(k) + ".gcode";
+    std::ofstream(dir + "/" + gcode) << stepGcode();
+    const std::string stepAngles = robot ? (k == 1 ? "{\"tiltDegrees\": 0, \"azimuthDegrees\": 0}"
+                                                   : "{\"tiltDegrees\": 40, \"azimuthDegrees\": 90}")
+                                         : "{\"rotaryDegrees\": " + std::to_string(angles[k - 1]) + "}";
+    steps += std::string(k > 1 ? "," : "") + "{\"index\": " + std::to_string(k) + ", \"angles\": " + stepAngles + "}";
+    slicing += std::string(k > 1 ? "," : "") + "{\"index\": " + std::to_string(k) + ", \"gcode\": \"" + gcode +
+               "\", \"estimate\": {\"printSeconds\": 28, \"filamentMm\": 10, \"filamentCm3\": 0.02, "
+               "\"filamentGrams\": 0}}";
+  }
+  std::ofstream(dir + "/print-job.json")
+      << "{\"schema\": \"multidir-print-job\", \"version\": 1, "
+      << (robot ? "\"machine\": {\"kind\": \"5dof\", \"up\": [0, 0, 1], \"maxTiltDegrees\": 60}, "
+                : "\"machine\": {\"kind\": \"4dof\", \"up\": [0, 0, 1], \"rotationAxis\": [1, 0, 0], "
+                  "\"minAngleDegrees\": -90, \"maxAngleDegrees\": 90, \"angleStepDegrees\": 1}, ")
+      << "\"steps\": [" << steps << "]"
+      << (sliced ? ", \"slicing\": {\"printer\": {\"platform\": \"modbus\"}, \"steps\": [" + slicing + "]}" : "")
+      << "}\n";
+}
+
+class CliRunTest : public ::testing::Test {
+ protected:
+  void startSimulators(double printerSpeed, bool robot = false) {
+    hw::SimulatorOptions deviceOptions;
+    deviceOptions.robot = robot;
+    deviceOptions.rotary = !robot;
+    devices = std::make_unique<hw::DeviceSimulator>(deviceOptions);
+    ASSERT_TRUE(devices->start().ok());
+    hw::MoonrakerSimulatorOptions printerOptions;
+    printerOptions.speed = printerSpeed;
+    printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
+    ASSERT_TRUE(printer->start().ok());
+  }
+  std::string deviceArgs() const {
+    return "--printer http://127.0.0.1:" + std::to_string(printer->port()) +
+           " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --settle 20";
+  }
+  int printerRequests(const std::string& path) const {
+    int n = 0;
+    for (const auto& r : printer->requests()) n += r.path == path ? 1 : 0;
+    return n;
+  }
+
+  std::unique_ptr<hw::DeviceSimulator> devices;
+  std::unique_ptr<hw::MoonrakerSimulator> printer;
+};
+
+TEST_F(CliRunTest, RunsEveryStepHomingThePlatformAndLogsToAFile) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.Whole");
+  writeJob(dir + "/job");
+  startSimulators(200.0);
+  const CliRun run =
+      runCli("run '" + dir + "/job' " + deviceArgs() + " --log '" + dir + "/run.log'", dir, "timeout 60");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("homing rotary platform"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("all 2 regions printed"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("reports step-02.gcode complete"), std::string::npos) << run.out;
+  EXPECT_EQ(printerRequests("/printer/print/start"), 2);
+  EXPECT_EQ(printerRequests("/server/files/upload"), 2);
+  EXPECT_NEAR(devices->rotaryState().angleDegrees, 30.0, 0.05);
+  const std::string log = multidir::test::readAll(dir + "/run.log");
+  EXPECT_NE(log.find("all 2 regions printed"), std::string::npos) << log;
+}
+
+TEST_F(CliRunTest, Runs5DofJobsOnTheRobotArm) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.Robot");
+  writeJob(dir + "/job", true, true);
+  startSimulators(200.0, true);
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("robot arm"), std::string::npos) << run.out;
+  EXPECT_NEAR(devices->robotState().tiltDegrees, 40.0, 0.1);
+  EXPECT_NEAR(devices->robotState().azimuthDegrees, 90.0, 0.1);
+  EXPECT_EQ(printerRequests("/printer/print/start"), 2);
+}
+
+TEST_F(CliRunTest, APrinterFaultStopsTheRunWithItsReasonAndWhereToContinue) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.Fault");
+  writeJob(dir + "/job");
+  hw::SimulatorOptions deviceOptions;
+  deviceOptions.robot = false;
+  devices = std::make_unique<hw::DeviceSimulator>(deviceOptions);
+  ASSERT_TRUE(devices->start().ok());
+  hw::MoonrakerSimulatorOptions printerOptions;
+  printerOptions.speed = 50.0;
+  printerOptions.fault = hw::PrinterFault::CancelledOnPrinter;
+  printerOptions.faultAtProgress = 0.5;
+  printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
+  ASSERT_TRUE(printer->start().ok());
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("the run stopped at step 1"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("step-01.gcode was cancelled on the printer"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--from 1"), std::string::npos) << run.err;
+  EXPECT_EQ(printerRequests("/printer/print/start"), 1);
+}
+
+TEST_F(CliRunTest, CtrlCCancelsThePrintersJobAndEnds) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.CtrlC");
+  writeJob(dir + "/job");
+  startSimulators(1.0);  // the first step prints for about half a minute
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout --preserve-status -s INT 2");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.out.find("Ctrl-C: stopping both devices"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("by Ctrl-C"), std::string::npos) << run.err;
+  EXPECT_EQ(printerRequests("/printer/print/cancel"), 1);
+  EXPECT_EQ(printer->state().jobState, "cancelled");
+}
+
+TEST_F(CliRunTest, AJobWithoutGcodeSaysToSliceItFirst) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.NotSliced");
+  writeJob(dir + "/job", false);
+  const CliRun run = runCli("run '" + dir + "/job' --printer 127.0.0.1:1 --platform 127.0.0.1:1", dir);
+  EXPECT_EQ(run.exitCode, 1) << run.err;
+  EXPECT_NE(run.err.find("has no G-code"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("multidir slice"), std::string::npos) << run.err;
+}
+
+TEST_F(CliRunTest, AnUnreachablePrinterIsNamedAndNothingMoves) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.NoPrinter");
+  writeJob(dir + "/job");
+  startSimulators(1.0);
+  const int port = printer->port();
+  printer->stop();
+  const CliRun run = runCli("run '" + dir + "/job' --printer 127.0.0.1:" + std::to_string(port) +
+                                " --platform 127.0.0.1:" + std::to_string(devices->port()),
+                            dir, "timeout 60");
+  EXPECT_EQ(run.exitCode, 4) << run.err;
+  EXPECT_NE(run.err.find("Moonraker printer at 127.0.0.1"), std::string::npos) << run.err;
+  EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Rotary), 0u);
+}
+
+TEST(CliRun, MissingPrinterOrPlatformIsAUsageError) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.Usage");
+  const CliRun noPrinter = runCli("run job --platform 127.0.0.1:502", dir);
+  EXPECT_EQ(noPrinter.exitCode, 2);
+  EXPECT_NE(noPrinter.err.find("--printer URL is required"), std::string::npos) << noPrinter.err;
+  const CliRun badPlatform = runCli("run job --printer http://127.0.0.1:7125 --platform nowhere", dir);
+  EXPECT_EQ(badPlatform.exitCode, 2);
+  EXPECT_NE(badPlatform.err.find("--platform must be HOST:PORT"), std::string::npos) << badPlatform.err;
+}
+
+TEST(CliSimulatePrinter, ServesMoonrakerOnLoopbackAndStopsOnSigint) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.Sigint");
+  const CliRun run =
+      runCli("simulate --printer moonraker --port 0 --speed 10", dir, "timeout --preserve-status -s INT 1");
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("listening on http://127.0.0.1:"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("printer: ready, job standby"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
+}
+
+TEST(CliSimulatePrinter, UnknownPrinterOrFaultIsAUsageErrorNamingTheChoices) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.Usage");
+  const CliRun marlin = runCli("simulate --printer marlin", dir);
+  EXPECT_EQ(marlin.exitCode, 2);
+  EXPECT_NE(marlin.err.find("simulates 'moonraker'"), std::string::npos) << marlin.err;
+  const CliRun fault = runCli("simulate --printer moonraker --fault fire", dir);
+  EXPECT_EQ(fault.exitCode, 2);
+  EXPECT_NE(fault.err.find("thermal-runaway"), std::string::npos) << fault.err;
+}
+
+}  // namespace
