@@ -21,6 +21,7 @@
 #include <QToolBar>
 #include <QVector3D>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "multidir/core/analysis/overhang.h"
@@ -28,6 +29,7 @@
 #include "multidir/core/plan/checksum.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/samples/samples.h"
+#include "multidir/core/search/pose_search.h"
 #include "multidir/core/search/search_options.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/edit/plan_editor.h"
@@ -37,6 +39,7 @@
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/overhang_panel.h"
 #include "ui/panels/plan_panel.h"
+#include "ui/panels/pose_search_box.h"
 #include "ui/panels/search_panel.h"
 #include "ui/project/project_session.h"
 #include "ui/project/window_state.h"
@@ -55,6 +58,11 @@ QVector3D toQVector(const core::Vec3& v) {
 core::Vec3 toVec3(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
 
 QString formatNumber(double value, int decimals) { return QLocale().toString(value, 'f', decimals); }
+
+// The Up box: its first entries are the six axis directions; an entry's UpPose (when a pose search chose it)
+// is kept under this role.
+constexpr int kAxisEntries = 6;
+constexpr int kPoseRole = Qt::UserRole + 1;
 
 std::string localPath(const QString& path) { return QFile::encodeName(path).toStdString(); }
 
@@ -84,7 +92,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   m_regrowth = new SupportRegrowth(this);
   connect(m_regrowth, &SupportRegrowth::grown, this, &MainWindow::onSupportsRegrown);
 
+  m_poseSearch = new PoseSearchJob(this);
   buildDocks();
+  buildPoseSearch();
   m_project = new ProjectSession(*this);
   buildMenus();
   buildUpBox();
@@ -152,6 +162,8 @@ void MainWindow::buildMenus() {
   QAction* cancel = search->addAction(tr("&Cancel"), this, [this] {
     if (m_axisPicker->isActive()) {
       m_axisPicker->cancel();
+    } else if (isPoseSearching()) {
+      cancelPoseSearch();
     } else {
       cancelSearch();
     }
@@ -293,6 +305,7 @@ void MainWindow::buildUpBox() {
               {tr("+Y"), core::Vec3::UnitY()},  {tr("-Y"), -core::Vec3::UnitY()},
               {tr("+Z"), core::Vec3::UnitZ()},  {tr("-Z"), -core::Vec3::UnitZ()}};
   for (const auto& axis : axes) m_upBox->addItem(axis.text, toQVector(axis.direction));
+  static_assert(static_cast<int>(std::size(axes)) == kAxisEntries);
   m_upBox->setCurrentIndex(4);  // +Z, the samples' up
   m_upIndex = 4;
   m_upBox->setFocusPolicy(Qt::StrongFocus);  // a wheel over it neither gives it the focus ...
@@ -351,6 +364,12 @@ void MainWindow::openPlanFromUser(const QString& directory) {
 }
 
 void MainWindow::abandonSearch() {
+  if (m_poseSearch->isRunning()) {
+    m_dropPoseResult = true;
+    m_poseSearch->cancel();
+    m_machinePanel->poseBox()->clear();
+    statusBar()->showMessage(tr("The pose search was stopped; its result is dropped."));
+  }
   if (!m_search->isRunning()) return;
   m_dropSearchResult = true;
   m_search->cancel();
@@ -393,20 +412,29 @@ void MainWindow::setUpDirection(const core::Vec3& up) {
   onUpChanged();
 }
 
-int MainWindow::selectUpEntry(const core::Vec3& unit) {
+int MainWindow::selectUpEntry(const core::Vec3& unit, const std::optional<UpPose>& pose) {
   // The box's own signal is for the user's choices (onUpBoxChosen); the callers apply the entry themselves.
   const QSignalBlocker blocker(m_upBox);
-  for (int i = 0; i < m_upBox->count(); ++i) {
-    if ((toVec3(m_upBox->itemData(i).value<QVector3D>()) - unit).norm() < 1e-6) {
-      m_upBox->setCurrentIndex(i);
-      return i;
-    }
+  auto xyz = [&unit] {
+    return tr("%1, %2, %3").arg(formatNumber(unit.x(), 2), formatNumber(unit.y(), 2), formatNumber(unit.z(), 2));
+  };
+  int index = -1;
+  for (int i = 0; i < m_upBox->count() && index < 0; ++i) {
+    if ((toVec3(m_upBox->itemData(i).value<QVector3D>()) - unit).norm() < 1e-6) index = i;
   }
-  const QString text = tr("Custom (%1, %2, %3)")
-                           .arg(formatNumber(unit.x(), 3), formatNumber(unit.y(), 3), formatNumber(unit.z(), 3));
-  m_upBox->addItem(text, toQVector(unit));
-  m_upBox->setCurrentIndex(m_upBox->count() - 1);
-  return m_upBox->count() - 1;
+  if (index < 0) {
+    const QString text = pose ? tr("Pose: %1").arg(xyz())
+                              : tr("Custom (%1, %2, %3)")
+                                    .arg(formatNumber(unit.x(), 3), formatNumber(unit.y(), 3), formatNumber(unit.z(), 3));
+    m_upBox->addItem(text, toQVector(unit));
+    index = m_upBox->count() - 1;
+  } else if (pose && index >= kAxisEntries) {
+    m_upBox->setItemText(index, tr("Pose: %1").arg(xyz()));  // a custom entry becomes the pose's
+  }
+  // The pose stays with its entry: choosing the entry again later is choosing the pose again.
+  if (pose) m_upBox->setItemData(index, QVariant::fromValue(*pose), kPoseRole);
+  m_upBox->setCurrentIndex(index);
+  return index;
 }
 
 void MainWindow::onUpBoxChosen(int index) {
@@ -434,13 +462,37 @@ void MainWindow::onUpBoxChosen(int index) {
 }
 
 core::Vec3 MainWindow::upDirection() const {
+  // A pose's up is kept at full precision (the entry's own vector is a float one): saved and reopened, and
+  // compared with the pose search's trials, it stays bit for bit the same.
+  if (const std::optional<UpPose> pose = upPose()) return pose->up;
   return toVec3(m_upBox->itemData(m_upIndex).value<QVector3D>()).normalized();
+}
+
+std::optional<UpPose> MainWindow::upPose() const {
+  const QVariant pose = m_upBox->itemData(m_upIndex, kPoseRole);
+  if (!pose.isValid()) return std::nullopt;
+  return pose.value<UpPose>();
+}
+
+void MainWindow::setUpPose(const UpPose& pose) {
+  const double length = pose.up.norm();
+  if (!std::isfinite(length) || length == 0.0) return;
+  UpPose unit = pose;
+  // A unit vector is kept as it is: normalising it again could change its last bits.
+  if (std::abs(length - 1.0) > 1e-12) unit.up = pose.up / length;
+  const int index = selectUpEntry(unit.up, unit);
+  if (index == m_upIndex) return;
+  m_upIndex = index;
+  onUpChanged();
 }
 
 bool MainWindow::isLoading() const { return m_loader->isBusy(); }
 
 void MainWindow::showModel(const LoadedModel& model) {
   m_model = model;
+  m_previewUp.reset();  // setMesh below shows the model with its own up
+  m_poseRun.reset();    // the poses listed were another model's
+  m_machinePanel->poseBox()->clear();
   // The up direction the model comes with is selected without redrawing: it is drawn once below. Only here:
   // whoever answers modelShown (a project applying its own up direction) must redraw.
   auto selectUp = [this](const core::Vec3& up) {
@@ -488,6 +540,8 @@ void MainWindow::reportLoadError(const QString& source, const QString& headline,
 }
 
 void MainWindow::onUpChanged() {
+  m_previewUp.reset();  // setMesh below shows the new up
+  markPoseInUse();
   onMachineChanged();
   emit upDirectionChanged();
   if (!m_model) return;
@@ -553,9 +607,12 @@ void MainWindow::updateRunnable() {
     m_searchPanel->setRunnable(false, tr("Open a model first."));
   } else if (!m_machinePanel->errorText().isEmpty()) {
     m_searchPanel->setRunnable(false, tr("Fix the machine first: %1").arg(m_machinePanel->errorText()));
+  } else if (m_poseSearch->isRunning()) {
+    m_searchPanel->setRunnable(false, tr("A pose search is running: wait for it or cancel it."));
   } else {
     m_searchPanel->setRunnable(true, QString());
   }
+  updatePoseRunnable();
 }
 
 double MainWindow::modelSizeMm() const {
@@ -564,11 +621,12 @@ double MainWindow::modelSizeMm() const {
   return (box.max - box.min).norm();
 }
 
-bool MainWindow::isSearching() const { return m_search->isRunning(); }
+bool MainWindow::isSearching() const { return m_search->isRunning() || m_poseSearch->isRunning(); }
 
 bool MainWindow::runSearch() {
   QString problem;
   if (m_search->isRunning()) problem = tr("A search is already running.");
+  else if (m_poseSearch->isRunning()) problem = tr("A pose search is running: wait for it or cancel it.");
   else if (!m_model) problem = tr("Open a model first.");
   else if (!m_machinePanel->validateFor(upDirection())) problem = m_machinePanel->errorText();
   const core::SearchOptions options = m_searchPanel->searchOptions();
@@ -637,6 +695,7 @@ void MainWindow::onSearchFailed(const QString& headline, const QString& detail) 
 }
 
 void MainWindow::showPlan(const SearchRun& run, PlanChange change) {
+  endPreview();
   m_plan = run;
   using Camera = MeshViewerWidget::Camera;
   m_viewer->setPlan(run.plan, change == PlanChange::Edit ? Camera::Keep : Camera::Fit);
@@ -720,6 +779,18 @@ bool MainWindow::exportPlan(const QString& directory, QString* error, QString* w
   core::PlanMetadata metadata;
   metadata.up = m_plan->machine.up;
   metadata.machine = m_plan->machine;
+  // A plan for the pose a pose search chose records it as the CLI's --pose auto does: up is the platform's
+  // up the search started from, the machine the one turned to the pose.
+  if (const std::optional<UpPose> pose = upPose(); pose && (pose->up - m_plan->machine.up).norm() < 1e-9) {
+    core::PlanPose planPose;
+    planPose.up = pose->up;
+    planPose.rotation = core::poseRotation(pose->up, pose->pose.platformUp);
+    planPose.source = pose->pose.source;
+    planPose.contactAreaMm2 = pose->pose.contactAreaMm2;
+    planPose.runnersUp = pose->runnersUp;
+    metadata.up = pose->pose.platformUp;
+    metadata.pose = planPose;
+  }
   metadata.options = m_plan->options;
   metadata.axisSearchCount = m_plan->axisSearchCount;
   metadata.multidirVersion = studioVersion().toStdString();

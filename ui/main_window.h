@@ -25,8 +25,10 @@
 #include <cstddef>
 #include <optional>
 
+#include "ui/jobs/pose_search_job.h"
 #include "ui/jobs/search_job.h"
 #include "ui/loaded_model.h"
+#include "ui/up_pose.h"
 #include "ui/project/dialog_folders.h"
 
 class QCloseEvent;
@@ -68,8 +70,8 @@ class MainWindow : public QMainWindow {
   void openSampleFromUser(const QString& id);
   // File > Open plan with `directory` chosen: asks first like openSampleFromUser, then openPlan().
   void openPlanFromUser(const QString& directory);
-  // Stops the running search and drops its result (another model is about to replace the one searched):
-  // the Search panel then shows nothing of it.
+  // Stops the running search (or pose search) and drops its result (another model is about to replace the
+  // one searched): the Search panel (or the Best pose box) then shows nothing of it.
   void abandonSearch();
   // Where the file dialog for `kind` starts: the folder last used for that kind (models where models were
   // opened from, projects where projects were saved), else the project's folder, else the model's; empty when
@@ -82,6 +84,32 @@ class MainWindow : public QMainWindow {
   // matching entry of the Up box; any other direction adds a "custom" entry.
   void setUpDirection(const core::Vec3& up);
   [[nodiscard]] core::Vec3 upDirection() const;
+  // The up direction a pose search chose, as setUpDirection does it but with the Up box entry named "Pose: x,
+  // y, z" and the pose kept with it (upPose()). The program's own: it does not ask.
+  void setUpPose(const UpPose& pose);
+  // How the up in force was chosen by a pose search (nullopt: the user chose it).
+  [[nodiscard]] std::optional<UpPose> upPose() const;
+
+  // Best pose (the Machine panel's "Best pose" group; ui/main_window_pose.cpp). findBestPose() starts
+  // core::decomposeWithPoseSearch off the GUI thread with the Search panel's settings and the machine as
+  // entered; false (with the reason in the status bar and the box) when there is no model, the machine is
+  // invalid or a search runs. A finished search lists its poses and uses the chosen one (usePoseFromUser); a
+  // cancelled one lists the poses that finished and leaves the plan shown as it is.
+  bool findBestPose();
+  void cancelPoseSearch();
+  [[nodiscard]] bool isPoseSearching() const;
+  // The last pose search listed in the box (nullopt: none, or dropped with its model).
+  [[nodiscard]] const std::optional<PoseRun>& poseRun() const { return m_poseRun; }
+  // Shows the model standing on trial `trial`'s pose (platform below it, its up pointing up on screen, its
+  // overhangs) without changing the up, the plan or the project; showCurrentUp() ends it, and so does any
+  // new model, up or plan.
+  void previewPose(int trial);
+  void showCurrentUp();
+  [[nodiscard]] std::optional<core::Vec3> previewedUp() const { return m_previewUp; }
+  // Makes trial `trial`'s pose the model's up: its machine turned to it, and the chosen trial's plan shown
+  // (another trial is searched). Asks first like the Up box when that would drop a running search or an
+  // unsaved plan.
+  void usePoseFromUser(int trial);
 
   [[nodiscard]] bool isLoading() const;
   [[nodiscard]] bool hasModel() const { return m_model.has_value(); }
@@ -105,6 +133,7 @@ class MainWindow : public QMainWindow {
   bool runSearch();
   // Asks the running search to stop; it finishes with the best plan found so far.
   void cancelSearch();
+  // A search or a pose search is running.
   [[nodiscard]] bool isSearching() const;
   // The plan shown, with what it was computed with (nullopt: none).
   [[nodiscard]] const std::optional<SearchRun>& plan() const { return m_plan; }
@@ -144,6 +173,10 @@ class MainWindow : public QMainWindow {
   void loadingChanged(bool loading);
   // The user (or setUpDirection) chose another up direction.
   void upDirectionChanged();
+  // A pose search ended and its poses are listed (poseRun()); cancelled ones too.
+  void poseSearchFinished();
+  // A pose search could not run, failed or was cancelled before any pose finished.
+  void poseSearchFailed(const QString& message);
   // The plan shown was dropped (a new model or up direction, or View > Show the model).
   void planCleared();
   // Supports grown later for the plan shown were attached to it (plan()->supports), or could not be grown
@@ -186,8 +219,18 @@ class MainWindow : public QMainWindow {
   void onUpChanged();
   // The user picked entry `index` of the Up box: applied at once, or after asking when it would drop work.
   void onUpBoxChosen(int index);
-  // Selects the Up box entry for `unit` (adding a custom one) without applying it; returns its index.
-  int selectUpEntry(const core::Vec3& unit);
+  // Selects the Up box entry for `unit` (adding a custom one, or a pose one when `pose` is given) without
+  // applying it; returns its index.
+  int selectUpEntry(const core::Vec3& unit, const std::optional<UpPose>& pose = std::nullopt);
+  // Best pose (ui/main_window_pose.cpp).
+  void buildPoseSearch();
+  void onPoseSearchFinished(const PoseRun& run);
+  void onPoseSearchFailed(const QString& headline, const QString& detail, bool cancelled);
+  void applyPose(int trial);
+  void endPreview();
+  void updatePoseRunnable();
+  // Marks the listed trial whose up is the one in force (if any) as in use.
+  void markPoseInUse();
   void regrowSupportsIfMissing();
   void onSupportsRegrown(const std::shared_ptr<const core::Decomposition>& plan,
                          const std::shared_ptr<const std::vector<core::SupportSet>>& supports, const QString& note);
@@ -231,6 +274,10 @@ class MainWindow : public QMainWindow {
   SupportRegrowth* m_regrowth = nullptr;
   int m_upIndex = -1;               // the Up box entry applied (the box shows another one while asking)
   bool m_dropSearchResult = false;  // abandonSearch(): the running search's result is not shown
+  PoseSearchJob* m_poseSearch = nullptr;
+  std::optional<PoseRun> m_poseRun;
+  std::optional<core::Vec3> m_previewUp;
+  bool m_dropPoseResult = false;  // abandonSearch() during a pose search
 };
 
 }  // namespace multidir::ui

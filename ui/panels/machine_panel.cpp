@@ -14,6 +14,7 @@
 
 #include "multidir/core/analysis/overhang.h"
 #include "ui/error_text.h"
+#include "ui/panels/pose_search_box.h"
 
 namespace multidir::ui {
 namespace {
@@ -96,6 +97,8 @@ MachinePanel::MachinePanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_rotaryGroup);
   layout->addWidget(m_tiltGroup);
   layout->addWidget(m_error);
+  m_poseBox = new PoseSearchBox(this);
+  layout->addWidget(m_poseBox);
   layout->addStretch(1);
 
   connect(m_kind, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {

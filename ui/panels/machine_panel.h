@@ -3,7 +3,8 @@
 // as x,y,z, angle range, stepper step) or 5-DOF tilting arm (tilt limit), and the platform radius (0 = the
 // model's footprint). Every edit is checked with core::validate(MachineSpec); the first problem is shown in
 // the panel, in red, until it is fixed. The 4-DOF axis can also be picked in the 3D view ("Pick on
-// platform", checkable): the panel only asks for it (pickAxisToggled) and shows the axis picked.
+// platform", checkable): the panel only asks for it (pickAxisToggled) and shows the axis picked. Below the
+// machine, "Best pose" (PoseSearchBox) finds the pose to stand the model on.
 #include <QWidget>
 #include <optional>
 
@@ -17,6 +18,8 @@ class QPushButton;
 class QWidget;
 
 namespace multidir::ui {
+
+class PoseSearchBox;
 
 class MachinePanel : public QWidget {
   Q_OBJECT
@@ -49,6 +52,9 @@ class MachinePanel : public QWidget {
   void setPicking(bool picking);
   [[nodiscard]] bool isPicking() const;
 
+  // "Best pose": finding the pose the model stands on together with its plan (MainWindow runs it).
+  [[nodiscard]] PoseSearchBox* poseBox() const { return m_poseBox; }
+
  signals:
   // Any field changed.
   void machineChanged();
@@ -71,6 +77,7 @@ class MachinePanel : public QWidget {
   QWidget* m_rotaryGroup = nullptr;
   QWidget* m_tiltGroup = nullptr;
   QLabel* m_error = nullptr;
+  PoseSearchBox* m_poseBox = nullptr;
   std::vector<core::ForbiddenCone> m_cones;  // kept from a loaded profile; not edited here
   double m_marginMm = 5.0;
 };

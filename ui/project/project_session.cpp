@@ -118,6 +118,7 @@ std::optional<core::Project> ProjectSession::currentProject(QString* problem) co
            "open the model itself to save a project."));
   }
   project.model.up = m_window.upDirection();
+  if (const std::optional<UpPose> pose = m_window.upPose()) project.model.pose = pose->pose;
   project.machine = m_window.machinePanel()->machineSpec(project.model.up);
   project.options = m_window.searchPanel()->searchOptions();
   project.axisSearchCount = m_window.searchPanel()->axisSearchCount();
@@ -425,7 +426,14 @@ void ProjectSession::onModelShown() {
       opening.mesh = model->mesh;
       opening.modelChanged = !opening.project.model.checksum.empty() && !model->checksum.isEmpty() &&
                              model->checksum.toStdString() != opening.project.model.checksum;
-      m_window.setUpDirection(opening.project.model.up);
+      if (opening.project.model.pose) {
+        UpPose pose;
+        pose.up = opening.project.model.up;
+        pose.pose = *opening.project.model.pose;
+        m_window.setUpPose(pose);
+      } else {
+        m_window.setUpDirection(opening.project.model.up);
+      }
       m_window.machinePanel()->setMachineSpec(opening.project.machine);
       m_window.searchPanel()->setSearchOptions(opening.project.options);
       m_window.searchPanel()->setAxisSearchCount(opening.project.axisSearchCount);

@@ -74,20 +74,27 @@ ordered_json planToJson(const ProjectPlan& plan) {
           {"clippingPlanes", planes}};
 }
 
+ordered_json poseToJson(const ProjectPose& pose) {
+  return {{"source", pose.source}, {"contactAreaMm2", pose.contactAreaMm2}, {"platformUp", detail::toJson(pose.platformUp)}};
+}
+
 ordered_json projectToJson(const Project& project, const fs::path& folder) {
   const ProjectModel& model = project.model;
   const auto textOrNull = [](const std::string& text) {
     return text.empty() ? ordered_json(nullptr) : ordered_json(text);
   };
+  ordered_json modelJson = {
+      {"path", model.path.empty() ? ordered_json(nullptr) : ordered_json(storedModelPath(model.path, folder))},
+      {"checksum", textOrNull(model.checksum)},
+      {"sample", textOrNull(model.sampleId)},
+      {"up", detail::toJson(model.up)}};
+  // Written only when set: a project without a pose is the same file older versions wrote.
+  if (model.pose) modelJson["pose"] = poseToJson(*model.pose);
   return {{"schema", kProjectSchema},
           {"version", kProjectFormatVersion},
           {"multidirVersion", project.multidirVersion},
           {"units", {{"length", "mm"}, {"angle", "degrees"}}},
-          {"model",
-           {{"path", model.path.empty() ? ordered_json(nullptr) : ordered_json(storedModelPath(model.path, folder))},
-            {"checksum", textOrNull(model.checksum)},
-            {"sample", textOrNull(model.sampleId)},
-            {"up", detail::toJson(model.up)}}},
+          {"model", modelJson},
           {"machine", detail::machineToJson(project.machine)},
           {"search", searchToJson(project.options, project.axisSearchCount)},
           {"plan", project.plan ? planToJson(*project.plan) : ordered_json(nullptr)}};
@@ -130,6 +137,16 @@ ProjectModel modelFromJson(const JsonField& field, const fs::path& folder) {
     if (!isChecksumText(model.checksum)) checksum->fail("must be \"fnv1a64:\" followed by 16 hex digits, or null");
   }
   model.up = exactUnitVector(field["up"]);
+  if (const std::optional<JsonField> pose = field.optional("pose")) {
+    ProjectPose kept;
+    const JsonField source = (*pose)["source"];
+    kept.source = source.string();
+    if (kept.source != "given" && kept.source != "resting" && kept.source != "sampled")
+      source.fail("must be \"given\", \"resting\" or \"sampled\"");
+    kept.contactAreaMm2 = (*pose)["contactAreaMm2"].numberAtLeast(0.0);
+    kept.platformUp = exactUnitVector((*pose)["platformUp"]);
+    model.pose = kept;
+  }
   return model;
 }
 

@@ -184,6 +184,42 @@ TEST(ProjectFile, ProjectWithoutPlanHasNoneAfterLoading) {
   EXPECT_FALSE(loaded->plan.has_value());
 }
 
+TEST(ProjectFile, PoseChosenByAPoseSearchRoundTrips) {
+  const std::string dir = scratchDirectory("ProjectPose");
+  Project project = fullProject(dir + "/model.stl");
+  project.model.up = Vec3(0.12, 0.98, -0.1).normalized();
+  project.machine.up = project.model.up;
+  project.machine.rotationAxis = project.model.up.unitOrthogonal();
+  project.plan.reset();
+  project.model.pose = ProjectPose{"resting", 812.5, Vec3::UnitZ()};
+  ASSERT_TRUE(saveProject(project, dir + "/a.multidir").ok());
+  EXPECT_EQ(readJson(dir + "/a.multidir")["model"]["pose"]["source"], "resting");
+  const Result<Project> loaded = loadProject(dir + "/a.multidir");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->model.up, project.model.up) << "bit for bit";
+  ASSERT_TRUE(loaded->model.pose.has_value());
+  EXPECT_EQ(loaded->model.pose->source, "resting");
+  EXPECT_EQ(loaded->model.pose->contactAreaMm2, 812.5);
+  EXPECT_EQ(loaded->model.pose->platformUp, Vec3::UnitZ());
+}
+
+TEST(ProjectFile, ProjectWithoutAPoseWritesNoneAndReadsNone) {
+  const std::string dir = scratchDirectory("ProjectNoPose");
+  ASSERT_TRUE(saveProject(fullProject(dir + "/model.stl"), dir + "/a.multidir").ok());
+  EXPECT_FALSE(readJson(dir + "/a.multidir")["model"].contains("pose")) << "older readers see the file they knew";
+  const Result<Project> loaded = loadProject(dir + "/a.multidir");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_FALSE(loaded->model.pose.has_value());
+}
+
+TEST(ProjectFile, PoseWithAnUnknownSourceIsRefusedByName) {
+  const Error error = loadEdited("ProjectPoseSource", [](nlohmann::json& d) {
+    d["model"]["pose"] = {{"source", "guessed"}, {"contactAreaMm2", 0.0}, {"platformUp", {0, 0, 1}}};
+  });
+  EXPECT_EQ(error.code, ErrorCode::MalformedFile);
+  EXPECT_NE(error.describe().find("model.pose.source must be"), std::string::npos) << error.describe();
+}
+
 TEST(ProjectFile, ModelBelowTheProjectFolderIsStoredRelativeAndFollowsAMove) {
   const std::string dir = scratchDirectory("ProjectRelative");
   fs::create_directories(dir + "/old/meshes");

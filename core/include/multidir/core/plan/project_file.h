@@ -21,6 +21,14 @@ constexpr const char* kProjectFileExtension = ".multidir";
 // More clipping planes than this are refused: the search never makes more than a few dozen.
 constexpr std::size_t kMaxProjectPlanes = 10000;
 
+// How a pose search chose the model's up (the studio's "Find best pose"): kept so that a reopened project
+// says so and an exported plan records the pose. Absent when the user chose the up.
+struct ProjectPose {
+  std::string source;               // "given", "resting" or "sampled" (poseSourceName)
+  double contactAreaMm2 = 0.0;      // resting: area of the hull patch the model rests on; else 0
+  Vec3 platformUp = Vec3::UnitZ();  // unit; the up the search started from (poseRotation(up, platformUp) turns the model)
+};
+
 // The model a project is about: a mesh file, or a generated sample (which has no file). Exactly one of `path`
 // and `sampleId` is set.
 struct ProjectModel {
@@ -30,6 +38,7 @@ struct ProjectModel {
   std::string checksum;     // checksumText() of the file's bytes when the project was saved; empty: unknown
   std::string sampleId;     // a core::samples id
   Vec3 up = Vec3::UnitZ();  // unit; the direction the model is printed along
+  std::optional<ProjectPose> pose;  // set when a pose search chose `up`
 };
 
 // A plan, as the clipping planes that make it plus what they were computed with.
