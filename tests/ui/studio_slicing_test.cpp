@@ -13,6 +13,7 @@
 #include <QImage>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStringList>
@@ -214,9 +215,34 @@ TEST_F(StudioSlicedSnowman, ExportGcodeWritesTheStepProgramsAndTheJobIntoANewFol
   EXPECT_TRUE(error.contains(QStringLiteral("is a file, not a folder"))) << error.toStdString();
 }
 
-TEST(StudioSlicing, CancelStopsTheSlicerLeavesNoFilesAndKeepsThePlan) {
-  MainWindow window;
-  ASSERT_NO_FATAL_FAILURE(showSnowmanPlan(window));
+// One window shows the snowman's quick plan for the tests of slicing that goes wrong or is stopped: each
+// leaves the plan shown and no result, as it found them.
+class StudioSnowmanPlan : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    s_window = new MainWindow;
+    showSnowmanPlan(*s_window);
+    s_ready = !::testing::Test::HasFatalFailure();
+  }
+  static void TearDownTestSuite() {
+    delete s_window;
+    s_window = nullptr;
+    s_ready = false;
+  }
+  void SetUp() override {
+    ASSERT_TRUE(s_ready) << "the snowman's plan could not be shown";
+    ASSERT_FALSE(s_window->sliceSession()->isSlicing());
+  }
+
+  static MainWindow* s_window;
+  static bool s_ready;
+};
+
+MainWindow* StudioSnowmanPlan::s_window = nullptr;
+bool StudioSnowmanPlan::s_ready = false;
+
+TEST_F(StudioSnowmanPlan, CancelStopsTheSlicerLeavesNoFilesAndKeepsThePlan) {
+  MainWindow& window = *s_window;
   const auto planBefore = window.plan()->plan;
   // A slicer that never ends on its own: it writes its process id, then waits.
   QTemporaryDir scratch;
@@ -255,9 +281,8 @@ TEST(StudioSlicing, CancelStopsTheSlicerLeavesNoFilesAndKeepsThePlan) {
   EXPECT_TRUE(panel->sliceButton()->isEnabled());
 }
 
-TEST(StudioSlicing, MissingSlicerShowsTheDocumentedErrorAndKeepsThePlan) {
-  MainWindow window;
-  ASSERT_NO_FATAL_FAILURE(showSnowmanPlan(window));
+TEST_F(StudioSnowmanPlan, MissingSlicerShowsTheDocumentedErrorAndKeepsThePlan) {
+  MainWindow& window = *s_window;
   const auto planBefore = window.plan()->plan;
   SliceSession* session = window.sliceSession();
   QSignalSpy failed(session, &SliceSession::sliceFailed);
@@ -270,6 +295,35 @@ TEST(StudioSlicing, MissingSlicerShowsTheDocumentedErrorAndKeepsThePlan) {
   EXPECT_TRUE(shown.contains(QStringLiteral("/nonexistent/prusa-slicer --loglevel 1 --export-gcode"))) << shown.toStdString();
   EXPECT_FALSE(session->outcome().has_value());
   EXPECT_EQ(window.plan()->plan, planBefore);
+  EXPECT_TRUE(window.viewer()->hasPlan());
+}
+
+TEST_F(StudioSnowmanPlan, GcodeThatFailsACheckIsRefusedNamingStepLineAndReason) {
+  MainWindow& window = *s_window;
+  // A printer whose bed (30 x 30 mm) is smaller than the snowman: the bed check refuses the G-code.
+  QTemporaryDir scratch;
+  ASSERT_TRUE(scratch.isValid());
+  const QString ini = scratch.filePath(QStringLiteral("tiny-bed.ini"));
+  {
+    QFile file(ini);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("# multidir.platform = modbus\nbed_shape = 0x0,30x0,30x30,0x30\nmax_print_height = 1000\n"
+               "nozzle_diameter = 0.8\nskirts = 0\n");
+  }
+  const core::Result<slicing::PrinterProfile> profile = slicing::loadPrinterProfile(QFile::encodeName(ini).toStdString());
+  ASSERT_TRUE(profile.ok()) << profile.error().describe();
+  SliceChoice choice = robotChoice();
+  choice.profile = *profile;
+  SliceSession* session = window.sliceSession();
+  QSignalSpy failed(session, &SliceSession::sliceFailed);
+  ASSERT_TRUE(session->slice(choice));
+  ASSERT_TRUE(failed.wait(kSliceTimeoutMs));
+  const QString shown = slicePanelOf(window)->messageLabel()->text();
+  EXPECT_TRUE(shown.contains(QStringLiteral("failed MultiDir's checks"))) << shown.toStdString();
+  EXPECT_TRUE(shown.contains(QRegularExpression(QStringLiteral("step \\d+, line \\d+: extrusion at .* outside the "
+                                                               "printer's bed"))))
+      << shown.toStdString();
+  EXPECT_FALSE(session->outcome().has_value());
   EXPECT_TRUE(window.viewer()->hasPlan());
 }
 
