@@ -19,6 +19,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+#include <QVBoxLayout>
 #include <QVector3D>
 #include <cmath>
 #include <iterator>
@@ -41,8 +42,10 @@
 #include "ui/panels/plan_panel.h"
 #include "ui/panels/pose_search_box.h"
 #include "ui/panels/search_panel.h"
+#include "ui/panels/slice_panel.h"
 #include "ui/project/project_session.h"
 #include "ui/project/window_state.h"
+#include "ui/slicing/slice_session.h"
 #include "ui/picture_file.h"
 #include "ui/studio_startup.h"
 #include "ui/viewer/axis_picker.h"
@@ -134,6 +137,11 @@ void MainWindow::buildMenus() {
   m_exportPlanAction->setObjectName(QStringLiteral("exportPlan"));
   m_exportPlanAction->setStatusTip(tr("Save the plan shown: plan.json and one STL per region"));
   m_exportPlanAction->setEnabled(false);
+  QAction* exportGcode = file->addAction(tr("Export &G-code..."), m_slicing, &SliceSession::chooseExportGcode);
+  exportGcode->setObjectName(QStringLiteral("exportGcode"));
+  exportGcode->setStatusTip(tr("Save the sliced plan's G-code (step-NN.gcode, job.gcode) and its print job"));
+  exportGcode->setEnabled(false);
+  connect(m_slicing, &SliceSession::resultAvailable, exportGcode, &QAction::setEnabled);
   QAction* screenshot = file->addAction(tr("Export Screens&hot..."), this, &MainWindow::chooseExportScreenshot);
   screenshot->setObjectName(QStringLiteral("exportScreenshot"));
   screenshot->setStatusTip(tr("Save the 3D view as shown to a PNG or JPEG file"));
@@ -215,7 +223,15 @@ void MainWindow::buildDocks() {
   QDockWidget* overhangs = addDock(m_overhangPanel, tr("Overhangs"), QStringLiteral("overhangDock"));
   QDockWidget* machine = addDock(m_machinePanel, tr("Machine"), QStringLiteral("machineDock"));
   m_searchDock = addDock(m_searchPanel, tr("Search"), QStringLiteral("searchDock"));
-  m_planDock = addDock(m_planPanel, tr("Plan"), QStringLiteral("planDock"));
+  // The Plan dock holds the plan and, under it, its G-code (ui/slicing).
+  auto* planColumn = new QWidget(this);
+  auto* planLayout = new QVBoxLayout(planColumn);
+  planLayout->setContentsMargins(0, 0, 0, 0);
+  planLayout->addWidget(m_planPanel, 1);
+  auto* slicePanel = new SlicePanel(planColumn);
+  planLayout->addWidget(slicePanel);
+  m_slicing = new SliceSession(*this, slicePanel);
+  m_planDock = addDock(planColumn, tr("Plan"), QStringLiteral("planDock"));
   splitDockWidget(overhangs, machine, Qt::Vertical);
   tabifyDockWidget(machine, m_searchDock);
   tabifyDockWidget(m_searchDock, m_planDock);

@@ -51,6 +51,7 @@ class PlanPanel;
 class PlaneEditPanel;
 class ProjectSession;
 class SearchPanel;
+class SliceSession;
 class SupportRegrowth;
 
 class MainWindow : public QMainWindow {
@@ -127,6 +128,9 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] QUndoStack* undoStack() const { return m_undoStack; }
   [[nodiscard]] PlanEditor* planEditor() const { return m_planEditor; }
   [[nodiscard]] PlaneEditPanel* planeEditPanel() const { return m_planeEditPanel; }
+  // Slicing the plan shown into G-code (ui/slicing): the Slice button and estimates under the Plan dock,
+  // the G-code preview, File > Export G-code.
+  [[nodiscard]] SliceSession* sliceSession() const { return m_slicing; }
 
   // Starts a search of the model with the Machine and Search panels' settings; false (with the reason in
   // the status bar) when there is no model, the machine is invalid or a search is running.
@@ -272,6 +276,7 @@ class MainWindow : public QMainWindow {
   PlaneEditPanel* m_planeEditPanel = nullptr;
   ProjectSession* m_project = nullptr;
   SupportRegrowth* m_regrowth = nullptr;
+  SliceSession* m_slicing = nullptr;
   int m_upIndex = -1;               // the Up box entry applied (the box shows another one while asking)
   bool m_dropSearchResult = false;  // abandonSearch(): the running search's result is not shown
   PoseSearchJob* m_poseSearch = nullptr;

@@ -70,14 +70,10 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
     if (!d) throw UsageError(kCommand + ": --dialect: " + d.error().message);
     s.options.dialect = *d;
   }
-  std::istringstream settings(parsed.value("--set", ""));
-  std::string pair;
-  while (settings >> pair) {
-    const std::size_t eq = pair.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw UsageError(kCommand + ": --set: '" + pair + "' is not KEY=VALUE (layer_height=0.3)");
-    s.options.settings.emplace_back(pair.substr(0, eq), pair.substr(eq + 1));
-  }
+  const core::Result<std::vector<std::pair<std::string, std::string>>> settings =
+      slicing::parseSettingAssignments(parsed.value("--set", ""));
+  if (!settings) throw UsageError(kCommand + ": --set: " + settings.error().message);
+  s.options.settings = *settings;
   s.options.fixedDirection = !parsed.has("--no-comparison");
   s.options.slicerExecutable = parsed.value("--slicer", s.options.slicerExecutable);
   return s;
@@ -158,13 +154,6 @@ int runSlice(const std::vector<std::string>& args, std::ostream& out, std::ostre
   const std::string planDir = planFolderOf(s.input);
   const core::Result<core::LoadedPlan> plan = core::loadPlan(planDir);
   if (!plan) throw FileError(kCommand + ": cannot read the plan in '" + planDir + "': " + plan.error().describe());
-  core::PrintJobOptions jobOptions;
-  jobOptions.frame = core::PrintJobOptions::Frame::Machine;
-  const core::Result<core::PrintJob> job = core::buildPrintJob(*plan, jobOptions);
-  if (!job) {
-    err << kCommand << ": " << planDir << ": " << job.error().describe() << "\n";
-    return job.error().code == core::ErrorCode::Internal ? kExitInternal : kExitBadInput;
-  }
 
   std::mutex mutex;
   core::JobContext context([&err, &mutex](double fraction, const std::string& phase) {
@@ -174,7 +163,7 @@ int runSlice(const std::vector<std::string>& args, std::ostream& out, std::ostre
         << std::string(static_cast<std::size_t>(30 - filled), '.') << "] " << static_cast<int>(fraction * 100.0 + 0.5)
         << "% " << phase << std::flush;
   });
-  const core::Result<slicing::SlicedJob> sliced = slicing::sliceJob(*job, *profile, s.options, s.outDir, context);
+  const core::Result<slicing::SlicedJob> sliced = slicing::slicePlan(*plan, *profile, s.options, s.outDir, context);
   err << "\r\033[K" << std::flush;
   if (!sliced) {
     err << kCommand << ": " << sliced.error().describe() << "\n";

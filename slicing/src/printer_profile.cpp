@@ -242,4 +242,18 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
   return profile;
 }
 
+core::Result<std::vector<std::pair<std::string, std::string>>> parseSettingAssignments(const std::string& text) {
+  std::vector<std::pair<std::string, std::string>> settings;
+  std::istringstream words(text);
+  std::string pair;
+  while (words >> pair) {
+    const std::size_t eq = pair.find('=');
+    if (eq == std::string::npos || eq == 0)
+      return core::Error{core::ErrorCode::InvalidParameter, "'" + pair + "' is not KEY=VALUE (layer_height=0.3)",
+                         "slicer settings"};
+    settings.emplace_back(pair.substr(0, eq), pair.substr(eq + 1));
+  }
+  return settings;
+}
+
 }  // namespace multidir::slicing

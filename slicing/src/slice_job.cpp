@@ -323,6 +323,7 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile
     out.gcodeFile = stepName(step.index, ".gcode");
     out.baseZMm = step.lowestHeightMm + profile.platformZMm;
     out.zOffsetMm = lowestZ(solid);
+    out.modelToPrinter = toPrinter * step.modelToFile;
     SliceRequest request;
     request.meshFile = meshPath;
     request.configFiles = {profile.path, userOverlay, overlayPath};
@@ -410,6 +411,40 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile
   if (core::Status s = recordInJobFile(directory, sliced, sliced.engine); !s) return s.error();
   context.setProgress(1.0, "sliced");
   return sliced;
+}
+
+core::Result<SlicedJob> slicePlan(const core::LoadedPlan& plan, const PrinterProfile& profile,
+                                  const SliceJobOptions& options, const std::string& directory,
+                                  core::JobContext& context) {
+  core::PrintJobOptions jobOptions;
+  jobOptions.frame = core::PrintJobOptions::Frame::Machine;
+  const core::Result<core::PrintJob> job = core::buildPrintJob(plan, jobOptions);
+  if (!job) return job.error();
+  return sliceJob(*job, profile, options, directory, context);
+}
+
+SliceStage sliceStageAt(double fraction, int stepCount, bool fixedDirection) {
+  // The shares sliceJob reports: it starts step k (from 0) at k / shares, the comparison at n / shares and
+  // stitching at (shares - 1) / shares. The small bias keeps k / shares * shares from rounding below k.
+  const int n = std::max(0, stepCount);
+  const double shares = static_cast<double>(n) + (fixedDirection ? 1.0 : 0.0) + 1.0;
+  SliceStage stage;
+  if (fraction >= 1.0) {
+    stage.kind = SliceStage::Kind::Done;
+    stage.step = n;
+    return stage;
+  }
+  const int share = static_cast<int>(std::floor(std::max(0.0, fraction) * shares + 1e-6));
+  if (share < n) {
+    stage.step = share + 1;
+  } else if (fixedDirection && share == n) {
+    stage.kind = SliceStage::Kind::FixedDirection;
+    stage.step = n;
+  } else {
+    stage.kind = SliceStage::Kind::Stitching;
+    stage.step = n;
+  }
+  return stage;
 }
 
 }  // namespace multidir::slicing

@@ -71,3 +71,16 @@ TEST(PrinterProfile, DialectsParseByName) {
   EXPECT_EQ(*parseDialect("rrf"), Dialect::RepRapFirmware);
   EXPECT_FALSE(parseDialect("grbl").ok());
 }
+
+TEST(PrinterProfile, SettingAssignmentsParseInOrderAndRefuseAWordWithoutEquals) {
+  const auto settings = parseSettingAssignments("  layer_height=0.3\tfill_density=0% ");
+  ASSERT_TRUE(settings.ok());
+  ASSERT_EQ(settings->size(), 2u);
+  EXPECT_EQ((*settings)[0], std::make_pair(std::string("layer_height"), std::string("0.3")));
+  EXPECT_EQ((*settings)[1], std::make_pair(std::string("fill_density"), std::string("0%")));
+  EXPECT_TRUE(parseSettingAssignments("").ok());
+  const auto wrong = parseSettingAssignments("layer_height=0.3 perimeters");
+  ASSERT_FALSE(wrong.ok());
+  EXPECT_EQ(wrong.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_NE(wrong.error().message.find("'perimeters' is not KEY=VALUE"), std::string::npos);
+}

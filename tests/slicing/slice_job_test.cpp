@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "multidir/core/samples/samples.h"
 #include "multidir/slicing/gcode_program.h"
@@ -127,6 +131,89 @@ TEST(SliceJob, SnowmanOnAKlipperRotaryAxisGivesCheckedStepsAndOneStitchedProgram
   const std::string jobJson = test::readFile(dir + "/print-job.json");
   EXPECT_NE(jobJson.find("\"slicing\""), std::string::npos);
   EXPECT_NE(jobJson.find("\"printSeconds\""), std::string::npos);
+}
+
+TEST(SliceJob, EachStepsPoseTakesItsToolpathsBackOntoItsRegionInTheModel) {
+  // The inverse of modelToPrinter lays a step's extrusions over its region and supports where the plan has
+  // them (model coordinates): what the studio's G-code preview draws.
+  const core::Result<core::TriangleMesh> snowman = core::samples::makeSample("snowman");
+  ASSERT_TRUE(snowman.ok());
+  const core::LoadedPlan plan = test::plannedInMemory(*snowman, rotary(Vec3::UnitZ()), "snowman", 0.5);
+  SliceJobOptions options;
+  options.settings = test::coarseSettings(0.3);
+  options.settings.push_back({"skirts", "0"});  // step 1's skirt lies around the part, not over it
+  options.fixedDirection = false;
+  const std::string dir = scratch("snowman-pose");
+  core::JobContext context;
+  const core::Result<SlicedJob> sliced = slicePlan(plan, profileNamed("klipper-rotary"), options, dir, context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+  ASSERT_EQ(sliced->steps.size(), plan.decomposition.regions.size());
+  const double slack = 0.6;  // half an extrusion width plus the slicer's rounding
+  for (std::size_t k = 0; k < sliced->steps.size(); ++k) {
+    const SlicedStep& step = sliced->steps[k];
+    Eigen::AlignedBox3d box;
+    for (const Vec3& v : plan.decomposition.regions[k].mesh.vertices) box.extend(v);
+    if (k < plan.supports.size())
+      for (const Vec3& v : plan.supports[k].mesh.vertices) box.extend(v);
+    box.min() -= Vec3::Constant(slack);
+    box.max() += Vec3::Constant(slack);
+    const Eigen::Isometry3d printerToModel = step.modelToPrinter.inverse();
+    int checked = 0;
+    for (const GcodeMove& m : test::extrusionsOf(dir + "/" + step.gcodeFile)) {
+      if (m.step != step.index) continue;
+      ++checked;
+      const Vec3 p = printerToModel * m.to;
+      ASSERT_TRUE(box.contains(p)) << step.gcodeFile << " line " << m.line << ": (" << p.transpose()
+                                   << ") outside region " << k + 1 << "'s box";
+    }
+    EXPECT_GT(checked, 0) << step.gcodeFile;
+  }
+}
+
+TEST(SliceJob, CancellingWhileTheSlicerRunsStopsItAndKeepsNoGcode) {
+  core::PrintJob job;
+  job.machine.kind = core::MachineKind::ThreeAxis;
+  core::PrintJobStep step;
+  step.region = test::makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  step.regionFile = "step-01-region.stl";
+  job.steps = {step};
+  const std::string dir = scratch("cancel");
+  // A slicer that never ends on its own: it writes its process id, then waits (exec: the pid is the child's).
+  const std::string fake = dir + "/slow-slicer.sh";
+  const std::string pidFile = dir + "/slicer.pid";
+  std::ofstream(fake) << "#!/bin/sh\necho $$ > '" << pidFile << "'\nexec sleep 60\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  SliceJobOptions options;
+  options.slicerExecutable = fake;
+  options.fixedDirection = false;
+  core::JobContext context;
+  std::thread canceller([context, pidFile]() mutable {
+    for (int i = 0; i < 400 && !fs::exists(pidFile); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    context.cancel();
+  });
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  canceller.join();
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::Cancelled) << sliced.error().describe();
+  EXPECT_FALSE(fs::exists(dir + "/out/step-01.gcode"));
+  ASSERT_TRUE(fs::exists(pidFile)) << "the slicer never started";
+  const pid_t pid = static_cast<pid_t>(std::stol(test::readFile(pidFile)));
+  EXPECT_NE(::kill(pid, 0), 0) << "the slicer (pid " << pid << ") still runs";
+  // The work folder of the run is gone too.
+  for (const auto& entry : fs::directory_iterator(dir + "/out"))
+    EXPECT_EQ(entry.path().filename().string().rfind(".slicing-", 0), std::string::npos) << entry.path();
+}
+
+TEST(SliceJob, ProgressNamesTheStepBeingSliced) {
+  // Three steps, the comparison and stitching: five shares, as sliceJob reports them.
+  EXPECT_EQ(sliceStageAt(0.0, 3, true).kind, SliceStage::Kind::Step);
+  EXPECT_EQ(sliceStageAt(0.0, 3, true).step, 1);
+  EXPECT_EQ(sliceStageAt(1.0 / 5.0, 3, true).step, 2);
+  EXPECT_EQ(sliceStageAt(2.0 / 5.0, 3, true).step, 3);
+  EXPECT_EQ(sliceStageAt(3.0 / 5.0, 3, true).kind, SliceStage::Kind::FixedDirection);
+  EXPECT_EQ(sliceStageAt(4.0 / 5.0, 3, true).kind, SliceStage::Kind::Stitching);
+  EXPECT_EQ(sliceStageAt(3.0 / 4.0, 3, false).kind, SliceStage::Kind::Stitching);
+  EXPECT_EQ(sliceStageAt(1.0, 3, false).kind, SliceStage::Kind::Done);
 }
 
 TEST(SliceJob, BunnyPlanSlicesForTheRobotWithEstimatesAndTheFixedDirectionComparison) {

@@ -28,7 +28,7 @@ namespace multidir::test {
 
 void resetStudioSettings() {
   QSettings settings;
-  for (const char* group : {"recentFiles", "window", "autosave", "dialogFolders"}) settings.remove(QLatin1String(group));
+  for (const char* group : {"recentFiles", "window", "autosave", "dialogFolders", "slicing"}) settings.remove(QLatin1String(group));
   for (const QString& orphan : ui::Autosave::orphans()) ui::Autosave::removeOrphan(orphan);
 }
 

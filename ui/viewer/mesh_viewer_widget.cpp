@@ -31,6 +31,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "multidir/core/common/units.h"
+#include "ui/viewer/gcode_scene.h"
 #include "ui/viewer/mesh_to_polydata.h"
 #include "ui/viewer/plan_scene.h"
 #include "ui/viewer/platform_geometry.h"
@@ -47,6 +48,9 @@ constexpr double kPlatformRgb[3] = {0.60, 0.60, 0.61};
 constexpr unsigned char kRiskyRgb[3] = {236, 84, 40};
 constexpr double kAxisRgb[3] = {1.0, 0.80, 0.10};
 constexpr double kPickMarkerRgb[3] = {0.95, 0.25, 0.85};
+// G-code travel moves: a light azure, far in hue from every region colour, the support colour, the model's
+// grey-blue and the greys of the platform and background.
+constexpr unsigned char kTravelRgb[3] = {0, 150, 255};
 // A pick marker's radius as a fraction of the platform's.
 constexpr double kPickMarkerFraction = 0.025;
 // A press and release this close (logical pixels) are a click, which picks; farther apart they are a drag.
@@ -163,6 +167,7 @@ struct MeshViewerWidget::Impl {
   std::optional<core::Vec3> rotationAxis;
   std::unique_ptr<PlanScene> plan;
   std::unique_ptr<SupportScene> supports;
+  std::unique_ptr<GcodeScene> gcode;
   bool picking = false;
   std::optional<QPointF> clickPress;  // where the left button went down, until it moved away: a click
   std::vector<vtkSmartPointer<vtkActor>> pickMarkers;
@@ -182,6 +187,7 @@ struct MeshViewerWidget::Impl {
   Impl() {
     plan = std::make_unique<PlanScene>(renderer, overlay);
     supports = std::make_unique<SupportScene>(renderer);
+    gcode = std::make_unique<GcodeScene>(renderer);
     renderer->GradientBackgroundOn();
     renderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
     renderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
@@ -255,6 +261,13 @@ struct MeshViewerWidget::Impl {
     axesMarker->SetOrientationMarker(axes);
     axesMarker->SetViewport(0.0, 0.0, 0.18, 0.18);
     axesMarker->SetZoom(1.7);  // the axes actor's bounds are symmetric about its origin: fill the corner
+  }
+
+  // Back from the G-code preview: the plan's actors show again as they were set.
+  void endGcodePreview() {
+    gcode->clear();
+    plan->setHidden(false);
+    supports->setHidden(false);
   }
 
   // The model colour for every face; setRiskyFaces then paints the risky ones.
@@ -347,6 +360,7 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
   Impl& m = *m_impl;
   endPickingOnNewScene();
   m.up = unitOrZ(up);
+  m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
   m.modelData = toPolyData(mesh);
@@ -377,6 +391,7 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
 void MeshViewerWidget::clear() {
   Impl& m = *m_impl;
   endPickingOnNewScene();
+  m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
   m.modelData = vtkSmartPointer<vtkPolyData>::New();
@@ -522,6 +537,7 @@ void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan, 
     clearPlan();
     return;
   }
+  m.endGcodePreview();
   m.plan->setPlan(std::move(plan), m.platform.center, m.modelSizeMm);
   m.supports->clear();
   m.modelActor->VisibilityOff();
@@ -536,6 +552,7 @@ void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan, 
 void MeshViewerWidget::clearPlan() {
   Impl& m = *m_impl;
   if (!m.plan->hasPlan()) return;
+  m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
   m.modelActor->SetVisibility(m.hasMesh);
@@ -628,6 +645,40 @@ QColor MeshViewerWidget::platformColor() { return toQColor(kPlatformRgb); }
 QColor MeshViewerWidget::riskyColor() { return QColor(kRiskyRgb[0], kRiskyRgb[1], kRiskyRgb[2]); }
 QColor MeshViewerWidget::backgroundTopColor() { return toQColor(kBackgroundTopRgb); }
 QColor MeshViewerWidget::backgroundBottomColor() { return toQColor(kBackgroundBottomRgb); }
+QColor MeshViewerWidget::gcodeTravelColor() { return QColor(kTravelRgb[0], kTravelRgb[1], kTravelRgb[2]); }
+
+bool MeshViewerWidget::setGcodePreview(std::shared_ptr<const GcodePreview> preview) {
+  Impl& m = *m_impl;
+  if (!preview) {
+    if (!m.gcode->hasPreview()) return true;
+    m.endGcodePreview();
+    update();
+    return true;
+  }
+  if (!m.plan->hasPlan()) return false;
+  m.gcode->setPreview(std::move(preview));
+  m.plan->setHidden(true);
+  m.supports->setHidden(true);
+  update();
+  return true;
+}
+
+bool MeshViewerWidget::hasGcodePreview() const { return m_impl->gcode->hasPreview(); }
+
+void MeshViewerWidget::setGcodeLayerLimit(int layers) {
+  m_impl->gcode->setLayerLimit(layers);
+  update();
+}
+
+int MeshViewerWidget::gcodeLayerLimit() const { return m_impl->gcode->layerLimit(); }
+
+void MeshViewerWidget::setGcodeTravelVisible(bool visible) {
+  m_impl->gcode->setTravelVisible(visible);
+  update();
+}
+
+int MeshViewerWidget::gcodeExtrusionLinesShown() const { return m_impl->gcode->extrusionLinesShown(); }
+int MeshViewerWidget::gcodeTravelLinesShown() const { return m_impl->gcode->travelLinesShown(); }
 
 void MeshViewerWidget::initializeGL() {
   Impl& m = *m_impl;

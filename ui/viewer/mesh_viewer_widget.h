@@ -22,6 +22,8 @@
 
 namespace multidir::ui {
 
+struct GcodePreview;
+
 class MeshViewerWidget : public QOpenGLWidget {
   Q_OBJECT
 
@@ -103,6 +105,22 @@ class MeshViewerWidget : public QOpenGLWidget {
   // When on, the view turns as the machine turns the part: the printing direction of the last region shown
   // points up on screen.
   void setTurnWithMachine(bool turn);
+  // G-code preview (ui/viewer/gcode_toolpaths.h): the toolpaths of the sliced plan, in model coordinates so
+  // they lie where the plan view shows the regions, each step's extrusions in its region's colour; the plan's
+  // regions, arrows, discs and supports are hidden meanwhile (the platform stays). Travel moves are hidden
+  // until setGcodeTravelVisible(true); every layer is shown until setGcodeLayerLimit. Null ends the preview
+  // (back to the plan view as it was); so do setPlan, clearPlan, setMesh and clear. Returns false and shows
+  // nothing when no plan is shown.
+  bool setGcodePreview(std::shared_ptr<const GcodePreview> preview);
+  [[nodiscard]] bool hasGcodePreview() const;
+  // Layers 1..`layers` of the job (printing order over the steps) are drawn.
+  void setGcodeLayerLimit(int layers);
+  [[nodiscard]] int gcodeLayerLimit() const;
+  void setGcodeTravelVisible(bool visible);
+  // Line segments drawn now.
+  [[nodiscard]] int gcodeExtrusionLinesShown() const;
+  [[nodiscard]] int gcodeTravelLinesShown() const;
+
   // The direction pointing up on screen after the last fit.
   [[nodiscard]] core::Vec3 viewUp() const;
 
@@ -116,6 +134,8 @@ class MeshViewerWidget : public QOpenGLWidget {
   [[nodiscard]] static QColor riskyColor();
   [[nodiscard]] static QColor backgroundTopColor();
   [[nodiscard]] static QColor backgroundBottomColor();
+  // The G-code preview's travel moves (extrusions are in their step's region colour).
+  [[nodiscard]] static QColor gcodeTravelColor();
 
   QSize sizeHint() const override;
 

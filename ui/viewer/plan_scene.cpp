@@ -262,10 +262,15 @@ void PlanScene::applyPlacement() {
   }
 }
 
+void PlanScene::setHidden(bool hidden) {
+  m_hidden = hidden;
+  applyVisibility();
+}
+
 void PlanScene::applyVisibility() {
   if (!m_plan) return;
   for (std::size_t i = 0; i < m_regions.size(); ++i) {
-    const bool shown = static_cast<int>(i) < m_shown;
+    const bool shown = !m_hidden && static_cast<int>(i) < m_shown;
     m_regions[i]->SetVisibility(shown);
     m_arrows[i]->SetVisibility(shown && m_directionsVisible);
   }
@@ -278,7 +283,7 @@ void PlanScene::applyVisibility() {
     const std::int32_t plane = m_plan->regions[i].clippingIndex;
     if (plane < 0 || static_cast<std::size_t>(plane) >= m_discs.size() || !m_discs[static_cast<std::size_t>(plane)])
       continue;
-    const bool shown = static_cast<int>(i) < m_shown;
+    const bool shown = !m_hidden && static_cast<int>(i) < m_shown;
     const bool selected = plane == m_selectedPlane;
     m_discs[static_cast<std::size_t>(plane)]->SetVisibility((m_planesVisible || selected) && shown);
     m_outlines[static_cast<std::size_t>(plane)]->SetVisibility(selected && shown);

@@ -55,6 +55,10 @@ class PlanScene {
   // left), the disc nearest the camera where several overlap; -1 when no disc drawn now is there. Regions
   // do not hide a disc: every disc lies inside the part it cut.
   [[nodiscard]] int planeAt(double x, double y) const;
+  // Hides every actor of the plan while something else stands in its place (the G-code preview), keeping
+  // the settings above; false shows them again as they were.
+  void setHidden(bool hidden);
+  [[nodiscard]] bool isHidden() const { return m_hidden; }
 
  private:
   void applyVisibility();
@@ -75,6 +79,7 @@ class PlanScene {
   bool m_directionsVisible = true;
   bool m_planesVisible = false;
   int m_selectedPlane = -1;
+  bool m_hidden = false;
 };
 
 }  // namespace multidir::ui

@@ -85,9 +85,14 @@ int SupportScene::shownCount() const {
   return count;
 }
 
+void SupportScene::setHidden(bool hidden) {
+  m_hidden = hidden;
+  applyVisibility();
+}
+
 void SupportScene::applyVisibility() {
   for (std::size_t i = 0; i < m_actors.size(); ++i) {
-    if (m_actors[i]) m_actors[i]->SetVisibility(m_visible && static_cast<int>(i) < m_shownRegions);
+    if (m_actors[i]) m_actors[i]->SetVisibility(m_visible && !m_hidden && static_cast<int>(i) < m_shownRegions);
   }
 }
 

@@ -39,6 +39,9 @@ class SupportScene {
   void place(const std::vector<core::Vec3>& offsets, int shownRegions);
   // Support actors currently visible.
   [[nodiscard]] int shownCount() const;
+  // Hides every support while something else stands in the plan's place (the G-code preview), keeping
+  // setVisible's choice for when it ends.
+  void setHidden(bool hidden);
 
  private:
   void applyVisibility();
@@ -48,6 +51,7 @@ class SupportScene {
   std::vector<vtkSmartPointer<vtkActor>> m_actors;  // one per set, null for an empty set
   int m_shownRegions = 0;
   bool m_visible = true;
+  bool m_hidden = false;
 };
 
 }  // namespace multidir::ui

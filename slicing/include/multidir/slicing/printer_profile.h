@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "multidir/core/common/result.h"
@@ -80,5 +81,10 @@ std::vector<std::string> builtinPrinterNames();
 // Errors: FileNotFound (no such file or shipped name; the message lists the shipped names), MalformedFile
 // (a line or value that cannot be read), InvalidParameter (a value out of range).
 core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName);
+
+// Slicer settings typed as text, "KEY=VALUE KEY=VALUE" separated by white space ("layer_height=0.3
+// fill_density=0%"), in order: what `multidir slice --set` and the studio's Slice dialog take. Empty text: none.
+// Errors: InvalidParameter naming the first word that is not KEY=VALUE.
+core::Result<std::vector<std::pair<std::string, std::string>>> parseSettingAssignments(const std::string& text);
 
 }  // namespace multidir::slicing

@@ -39,6 +39,9 @@ struct SlicedStep {
   double baseZMm = 0.0;    // printer z of the step's base plane
   double zOffsetMm = 0.0;  // given to the slicer: where its layers start from
   double sliceSeconds = 0.0;
+  // Takes the plan's model coordinates to the printer's, as this step prints (the machine's pose of the part,
+  // then the profile's platform centre and height): its inverse lays the step's G-code over its region.
+  Eigen::Isometry3d modelToPrinter = Eigen::Isometry3d::Identity();
 };
 
 struct SlicedJob {
@@ -70,5 +73,20 @@ core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const P
 core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile& profile,
                                  const SliceJobOptions& options, const std::string& directory,
                                  core::JobContext& context);
+
+// A plan (read from its folder, or made in memory) sliced as `multidir slice` and the studio do: its print job
+// built in the machine frame with its supports (core::buildPrintJob), then sliceJob. Errors: those of both.
+core::Result<SlicedJob> slicePlan(const core::LoadedPlan& plan, const PrinterProfile& profile,
+                                  const SliceJobOptions& options, const std::string& directory,
+                                  core::JobContext& context);
+
+// What sliceJob is doing when its progress reads `fraction` (its shares: one per step, one for the
+// fixed-direction print when asked for, one for stitching), so a caller can say it in its own words.
+struct SliceStage {
+  enum class Kind { Step, FixedDirection, Stitching, Done };
+  Kind kind = Kind::Step;
+  int step = 1;  // Kind::Step: the step being sliced, from 1
+};
+SliceStage sliceStageAt(double fraction, int stepCount, bool fixedDirection);
 
 }  // namespace multidir::slicing

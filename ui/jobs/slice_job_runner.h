@@ -1,0 +1,75 @@
+#pragma once
+// Slices a plan off the GUI thread: slicing::slicePlan (the same code as `multidir slice`) on its own
+// QThread, into a private temporary folder, then reads every step's G-code back for the preview. Progress
+// arrives as queued signals saying which step is being sliced; the result comes back to the GUI thread as a
+// value holding the folder (removed when the last copy of the result goes).
+//
+// cancel() asks the library to stop (JobContext::cancel): the running prusa-slicer is terminated within a
+// moment and the job ends with cancelled(); its temporary folder is removed, nothing else was written.
+//
+// Thread: create and call from the GUI thread; the signals are emitted there too.
+#include <QMetaType>
+#include <QObject>
+#include <QString>
+#include <memory>
+
+#include "multidir/core/common/job_context.h"
+#include "multidir/core/plan/plan_file.h"
+#include "multidir/slicing/slice_job.h"
+
+class QTemporaryDir;
+class QThread;
+
+namespace multidir::ui {
+
+struct GcodePreview;
+
+// A finished slicing.
+struct SliceOutcome {
+  std::shared_ptr<const slicing::SlicedJob> job;
+  std::shared_ptr<const GcodePreview> preview;
+  // Where the job's files are (step-NN.gcode, job.gcode, print-job.json and the step meshes); removed with
+  // the last copy of the outcome.
+  std::shared_ptr<QTemporaryDir> folder;
+  [[nodiscard]] QString folderPath() const;
+};
+
+class SliceJobRunner : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit SliceJobRunner(QObject* parent = nullptr);
+  // Cancels a running job and waits for it (its result is dropped).
+  ~SliceJobRunner() override;
+  SliceJobRunner(const SliceJobRunner&) = delete;
+  SliceJobRunner& operator=(const SliceJobRunner&) = delete;
+
+  // Starts slicing `plan` for `profile`. False (nothing started, the reason in *error) while another job
+  // runs or when no temporary folder can be made.
+  bool start(const core::LoadedPlan& plan, const slicing::PrinterProfile& profile,
+             const slicing::SliceJobOptions& options, QString* error = nullptr);
+  void cancel();
+  [[nodiscard]] bool isRunning() const { return m_thread != nullptr; }
+  // The running job's temporary folder (empty when none runs).
+  [[nodiscard]] QString workFolder() const { return m_workFolder; }
+
+ signals:
+  // `fraction` in [0, 1]; `stage` says what is being done ("Slicing step 2 of 3"), translated.
+  void progressed(double fraction, const QString& stage);
+  void finished(const multidir::ui::SliceOutcome& outcome);
+  // The slicer is missing or failed, or a check refused the G-code: `headline` translated, `detail` the
+  // library's whole message (the command, the slicer's last lines; the step, line and reason of a check).
+  void failed(const QString& headline, const QString& detail);
+  void cancelled();
+  void runningChanged(bool running);
+
+ private:
+  QThread* m_thread = nullptr;
+  core::JobContext m_job;
+  QString m_workFolder;
+  int m_generation = 0;  // signals of an older job than the running one are dropped
+};
+
+}  // namespace multidir::ui
+
+Q_DECLARE_METATYPE(multidir::ui::SliceOutcome)
