@@ -18,6 +18,40 @@
     </message>
 </context>
 <context>
+    <name>GcodeExport</name>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="22"/>
+        <source>Could not write %1: %2. Check that the folder can be written and the disk is not full.</source>
+        <translation>%1 konnte nicht geschrieben werden: %2. Prüfen Sie, ob der Ordner beschreibbar und der Datenträger nicht voll ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="28"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="62"/>
+        <source>Could not replace %1: it is in use or read-only.</source>
+        <translation>%1 konnte nicht ersetzt werden: die Datei wird verwendet oder ist schreibgeschützt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="33"/>
+        <source>Could not move %1 into place.</source>
+        <translation>%1 konnte nicht an den Zielort verschoben werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="46"/>
+        <source>There is no sliced job to export: slice the plan first.</source>
+        <translation>Es gibt kein Slicing-Ergebnis zum Exportieren: slicen Sie zuerst den Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="51"/>
+        <source>%1 is a file, not a folder: choose a folder for the G-code.</source>
+        <translation>%1 ist eine Datei, kein Ordner: wählen Sie einen Ordner für den G-Code.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="56"/>
+        <source>Could not create the folder %1: check that its parent exists and can be written.</source>
+        <translation>Der Ordner %1 konnte nicht angelegt werden: prüfen Sie, ob der übergeordnete Ordner existiert und beschreibbar ist.</translation>
+    </message>
+</context>
+<context>
     <name>MovePlaneCommand</name>
     <message>
         <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
@@ -1109,117 +1143,117 @@
 <context>
     <name>multidir::ui::MachinePanel</name>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="27"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="28"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="43"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
         <source>3-DOF: fixed printing direction</source>
         <translation>3-DOF: feste Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
         <source>4-DOF: rotary platform</source>
         <translation>4-DOF: Drehplattform</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="46"/>
         <source>5-DOF: tilting robot arm</source>
         <translation>5-DOF: kippender Roboterarm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="48"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="49"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>Drehplattform (4-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="51"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="52"/>
         <source>The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform plane (perpendicular to up)</source>
         <translation>Die Achse, um die sich die Plattform dreht, als x,y,z oder x, -y, +z; sie muss in der Plattformebene liegen (senkrecht zu oben)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="53"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="54"/>
         <source>Pick on platform</source>
         <translation>Auf Plattform wählen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="56"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
         <source>Click two points on the platform in the 3D view: the axis runs from the first to the second. Esc or this button again cancels.</source>
         <translation>Klicken Sie in der 3D-Ansicht auf zwei Punkte der Plattform: die Achse verläuft vom ersten zum zweiten. Esc oder ein erneuter Klick auf diese Schaltfläche bricht ab.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="61"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
         <source>The stepper&apos;s resolution: only multiples of this angle can be reached</source>
         <translation>Auflösung des Schrittmotors: nur Vielfache dieses Winkels sind erreichbar</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="63"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="64"/>
         <source>Rotation axis:</source>
         <translation>Drehachse:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="65"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
         <source>Minimal angle:</source>
         <translation>Kleinster Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
         <source>Maximal angle:</source>
         <translation>Größter Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="68"/>
         <source>Angle step:</source>
         <translation>Winkelschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="69"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="70"/>
         <source>Tilting arm (5-DOF)</source>
         <translation>Kipparm (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="71"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
         <source>How far the arm can tilt the platform away from up</source>
         <translation>Wie weit der Arm die Plattform aus der Senkrechten kippen kann</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="73"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="74"/>
         <source>Tilt limit:</source>
         <translation>Kippgrenze:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="79"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="81"/>
         <source>model footprint</source>
         <translation>Modellgrundfläche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="82"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="83"/>
         <source>Radius of the platform disc that no clipping plane may cut; 0 uses the model&apos;s footprint plus a margin</source>
         <translation>Radius der Plattformscheibe, die keine Schnittebene schneiden darf; 0 nimmt die Grundfläche des Modells plus einen Rand</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="92"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
         <source>Machine:</source>
         <translation>Maschine:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="94"/>
         <source>Platform radius:</source>
         <translation>Plattformradius:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="159"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="162"/>
         <source>The rotation axis &quot;%1&quot; cannot be read: type three numbers x,y,z or an axis such as x or -y.</source>
         <translation>Die Drehachse „%1“ ist nicht lesbar: Geben Sie drei Zahlen x,y,z oder eine Achse wie x oder -y ein.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="164"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="167"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -1227,17 +1261,17 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="76"/>
+        <location filename="../ui/main_window.cpp" line="87"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="103"/>
+        <location filename="../ui/main_window.cpp" line="116"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="104"/>
+        <location filename="../ui/main_window.cpp" line="117"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
@@ -1254,22 +1288,22 @@
         <translation type="vanished">&amp;Plan öffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="122"/>
+        <location filename="../ui/main_window.cpp" line="135"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>Einen früher gespeicherten Plan anzeigen (ein Ordner mit plan.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="123"/>
+        <location filename="../ui/main_window.cpp" line="136"/>
         <source>&amp;Export plan...</source>
         <translation>Plan &amp;exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
+        <location filename="../ui/main_window.cpp" line="138"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>Den angezeigten Plan speichern: plan.json und eine STL-Datei je Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="131"/>
+        <location filename="../ui/main_window.cpp" line="149"/>
         <source>&amp;Load machine profile...</source>
         <translation>Maschinenprofil &amp;laden...</translation>
     </message>
@@ -1278,107 +1312,107 @@
         <translation type="vanished">Maschinenprofil &amp;speichern...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="136"/>
+        <location filename="../ui/main_window.cpp" line="154"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="140"/>
+        <location filename="../ui/main_window.cpp" line="158"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="141"/>
+        <location filename="../ui/main_window.cpp" line="159"/>
         <source>&amp;Fit to View</source>
         <translation>In Ansicht ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="143"/>
+        <location filename="../ui/main_window.cpp" line="161"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>&amp;Modell zeigen (Plan ausblenden)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="148"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>&amp;Search</source>
         <translation>&amp;Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="149"/>
+        <location filename="../ui/main_window.cpp" line="167"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="152"/>
+        <location filename="../ui/main_window.cpp" line="170"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="203"/>
+        <location filename="../ui/main_window.cpp" line="223"/>
         <source>Overhangs</source>
         <translation>Überhänge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="204"/>
+        <location filename="../ui/main_window.cpp" line="224"/>
         <source>Machine</source>
         <translation>Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="225"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="206"/>
+        <location filename="../ui/main_window.cpp" line="234"/>
         <source>Plan</source>
         <translation>Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
+        <location filename="../ui/main_window.cpp" line="282"/>
         <source>Hardware</source>
         <translation>Hardware</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="279"/>
+        <location filename="../ui/main_window.cpp" line="307"/>
         <source>Printing direction</source>
         <translation>Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="282"/>
+        <location filename="../ui/main_window.cpp" line="310"/>
         <source>Up:</source>
         <translation>Oben:</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="287"/>
+        <location filename="../ui/main_window.cpp" line="315"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>Die Richtung, in der das Modell gedruckt wird: die Plattform liegt darunter, Überhänge werden daran gemessen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="292"/>
+        <location filename="../ui/main_window.cpp" line="320"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="292"/>
+        <location filename="../ui/main_window.cpp" line="320"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
+        <location filename="../ui/main_window.cpp" line="321"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
+        <location filename="../ui/main_window.cpp" line="321"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="294"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="294"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
@@ -1391,7 +1425,7 @@
         <translation type="vanished">Netze (*.stl *.obj *.off *.ply);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="107"/>
+        <location filename="../ui/main_window.cpp" line="120"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>Eine Netzdatei (STL, OBJ, OFF oder PLY) oder ein MultiDir-Projekt öffnen</translation>
     </message>
@@ -1400,37 +1434,37 @@
         <translation type="vanished">Bildschirmfoto expo&amp;rtieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="129"/>
+        <location filename="../ui/main_window.cpp" line="147"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>Die 3D-Ansicht wie angezeigt als PNG- oder JPEG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="133"/>
+        <location filename="../ui/main_window.cpp" line="151"/>
         <source>Save machine pro&amp;file...</source>
         <translation>Maschinenprofil &amp;speichern...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="161"/>
+        <location filename="../ui/main_window.cpp" line="181"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="162"/>
+        <location filename="../ui/main_window.cpp" line="182"/>
         <source>&amp;About MultiDir Studio</source>
         <translation>Ü&amp;ber MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
+        <location filename="../ui/main_window.cpp" line="189"/>
         <source>About MultiDir Studio</source>
         <translation>Über MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="190"/>
         <source>MultiDir Studio %1</source>
         <translation>MultiDir Studio %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="172"/>
+        <location filename="../ui/main_window.cpp" line="192"/>
         <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
 
 Qt %1</source>
@@ -1439,298 +1473,334 @@ Qt %1</source>
 Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="259"/>
+        <location filename="../ui/main_window.cpp" line="287"/>
         <source>Emergency stop</source>
         <translation>Not-Halt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="358"/>
+        <location filename="../ui/main_window.cpp" line="387"/>
+        <source>The pose search was stopped; its result is dropped.</source>
+        <translation>Die Posensuche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="393"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>Die Suche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="380"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>Open Model or Project</source>
         <translation>Modell oder Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="381"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>Netze und Projekte (*.stl *.obj *.off *.ply *.multidir);;Netze (*.stl *.obj *.off *.ply);;MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="405"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
+        <source>%1, %2, %3</source>
+        <translation>%1; %2; %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Pose: %1</source>
+        <translation>Pose: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>Benutzerdefiniert (%1, %2, %3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="524"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
         <source>Repaired on load: %1</source>
         <translation>Beim Laden repariert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="542"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="546"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="550"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
-        <location filename="../ui/main_window.cpp" line="519"/>
+        <location filename="../ui/main_window.cpp" line="572"/>
+        <location filename="../ui/main_window.cpp" line="589"/>
         <source>No model</source>
         <translation>Kein Modell</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="582"/>
         <source>Triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
+        <location filename="../ui/main_window.cpp" line="583"/>
         <source>Volume: %1 mm³</source>
         <translation>Volumen: %1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="597"/>
         <source>Risky area unavailable</source>
         <translation>Risikofläche nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="535"/>
+        <location filename="../ui/main_window.cpp" line="605"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>Risikofläche (%1 oben): %2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
+        <location filename="../ui/main_window.cpp" line="607"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>Fläche der Dreiecke, die bei dieser Aufwärtsrichtung um mehr als %1° überhängen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="553"/>
-        <location filename="../ui/main_window.cpp" line="572"/>
+        <location filename="../ui/main_window.cpp" line="623"/>
+        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window_pose.cpp" line="56"/>
+        <location filename="../ui/main_window_pose.cpp" line="73"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="555"/>
+        <location filename="../ui/main_window.cpp" line="625"/>
+        <location filename="../ui/main_window_pose.cpp" line="58"/>
         <source>Fix the machine first: %1</source>
         <translation>Korrigieren Sie zuerst die Maschine: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="571"/>
+        <location filename="../ui/main_window.cpp" line="627"/>
+        <location filename="../ui/main_window.cpp" line="645"/>
+        <source>A pose search is running: wait for it or cancel it.</source>
+        <translation>Eine Posensuche läuft: warten Sie, bis sie fertig ist, oder brechen Sie sie ab.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="644"/>
         <source>A search is already running.</source>
         <translation>Eine Suche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="577"/>
+        <location filename="../ui/main_window.cpp" line="651"/>
+        <location filename="../ui/main_window_pose.cpp" line="81"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="581"/>
+        <location filename="../ui/main_window.cpp" line="655"/>
         <source>Cannot search: %1</source>
         <translation>Suche nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
+        <location filename="../ui/main_window.cpp" line="656"/>
         <source>Cannot search.</source>
         <translation>Suche nicht möglich.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="596"/>
+        <location filename="../ui/main_window.cpp" line="670"/>
         <source>Searching %1...</source>
         <translation>Durchsuche %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="604"/>
+        <location filename="../ui/main_window.cpp" line="678"/>
         <source>Cancelling the search...</source>
         <translation>Suche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="617"/>
+        <location filename="../ui/main_window.cpp" line="691"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>Das Suchergebnis wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="620"/>
+        <location filename="../ui/main_window.cpp" line="694"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>Suche abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="621"/>
+        <location filename="../ui/main_window.cpp" line="695"/>
         <source>Search finished.</source>
         <translation>Suche beendet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="634"/>
+        <location filename="../ui/main_window.cpp" line="708"/>
         <source>Search failed: %1</source>
         <translation>Suche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="665"/>
+        <location filename="../ui/main_window.cpp" line="740"/>
         <source>Growing supports for the plan...</source>
         <translation>Stützen für den Plan werden erzeugt...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="679"/>
+        <location filename="../ui/main_window.cpp" line="754"/>
         <source>Supports grown for the plan.</source>
         <translation>Stützen für den Plan erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="710"/>
+        <location filename="../ui/main_window.cpp" line="785"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>Es gibt keinen Plan zum Exportieren: starten Sie zuerst eine Suche.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="713"/>
+        <location filename="../ui/main_window.cpp" line="788"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>Die Stützen dieses Plans werden noch erzeugt: exportieren Sie ihn erneut, sobald die Statusleiste meldet, dass sie fertig sind.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="717"/>
+        <location filename="../ui/main_window.cpp" line="792"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>Der Ordner %1 konnte nicht angelegt werden: prüfen Sie, ob der übergeordnete Ordner existiert und beschreibbar ist.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="735"/>
+        <location filename="../ui/main_window.cpp" line="822"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>Der Plan konnte nicht nach %1 exportiert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="741"/>
+        <location filename="../ui/main_window.cpp" line="828"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>Plan ohne Stützen nach %1 exportiert, obwohl %2 mm² Risikofläche verbleiben: %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="743"/>
+        <location filename="../ui/main_window.cpp" line="830"/>
         <source>no supports were grown for it.</source>
         <translation>für ihn wurden keine Stützen erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="748"/>
+        <location filename="../ui/main_window.cpp" line="835"/>
         <source>Plan exported to %1.</source>
         <translation>Plan nach %1 exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="755"/>
+        <location filename="../ui/main_window.cpp" line="842"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>Der Plan %1 konnte nicht geöffnet werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="802"/>
+        <location filename="../ui/main_window.cpp" line="889"/>
         <source>Machine profile saved to %1.</source>
         <translation>Maschinenprofil unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="814"/>
+        <location filename="../ui/main_window.cpp" line="901"/>
         <source>Machine profile %1 loaded.</source>
         <translation>Maschinenprofil %1 geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="823"/>
+        <location filename="../ui/main_window.cpp" line="910"/>
         <source>Export Plan to Folder</source>
         <translation>Plan in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="823"/>
+        <location filename="../ui/main_window.cpp" line="910"/>
         <source>-plan</source>
         <translation>-Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="824"/>
+        <location filename="../ui/main_window.cpp" line="911"/>
         <source>Plan folders (*)</source>
         <translation>Planordner (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="830"/>
-        <location filename="../ui/main_window.cpp" line="832"/>
+        <location filename="../ui/main_window.cpp" line="917"/>
+        <location filename="../ui/main_window.cpp" line="919"/>
         <source>Export Plan</source>
         <translation>Plan exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="843"/>
+        <location filename="../ui/main_window.cpp" line="930"/>
         <source>Screenshot saved to %1.</source>
         <translation>Bildschirmfoto unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="848"/>
+        <location filename="../ui/main_window.cpp" line="935"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="849"/>
+        <location filename="../ui/main_window.cpp" line="936"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG-Bilder (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="852"/>
-        <location filename="../ui/main_window.cpp" line="860"/>
+        <location filename="../ui/main_window.cpp" line="939"/>
+        <location filename="../ui/main_window.cpp" line="947"/>
         <source>Export Screenshot</source>
         <translation>Bildschirmfoto exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="865"/>
+        <location filename="../ui/main_window.cpp" line="952"/>
         <source>Open Plan Folder</source>
         <translation>Planordner öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="349"/>
+        <location filename="../ui/main_window.cpp" line="378"/>
         <source>Open Plan</source>
         <translation>Plan öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="110"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
         <source>Sa&amp;mples</source>
         <translation>Beis&amp;piele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="120"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
         <source>Open pla&amp;n...</source>
         <translation>Pla&amp;n öffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="127"/>
+        <location filename="../ui/main_window.cpp" line="140"/>
+        <source>Export &amp;G-code...</source>
+        <translation>&amp;G-Code exportieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="142"/>
+        <source>Save the sliced plan&apos;s G-code (step-NN.gcode, job.gcode) and its print job</source>
+        <translation>Den beim Slicen erzeugten G-Code des Plans (step-NN.gcode, job.gcode) und seinen Druckauftrag speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="145"/>
         <source>Export Screens&amp;hot...</source>
         <translation>Bildschirmfoto expo&amp;rtieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="871"/>
-        <location filename="../ui/main_window.cpp" line="877"/>
+        <location filename="../ui/main_window.cpp" line="958"/>
+        <location filename="../ui/main_window.cpp" line="964"/>
         <source>Save Machine Profile</source>
         <translation>Maschinenprofil speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="873"/>
+        <location filename="../ui/main_window.cpp" line="960"/>
         <source>Machine profiles (*.json)</source>
         <translation>Maschinenprofile (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="881"/>
-        <location filename="../ui/main_window.cpp" line="888"/>
+        <location filename="../ui/main_window.cpp" line="968"/>
+        <location filename="../ui/main_window.cpp" line="975"/>
         <source>Load Machine Profile</source>
         <translation>Maschinenprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="883"/>
+        <location filename="../ui/main_window.cpp" line="970"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>Maschinenprofile (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="901"/>
+        <location filename="../ui/main_window.cpp" line="988"/>
         <source>Loading %1...</source>
         <translation>Lade %1...</translation>
     </message>
@@ -1753,6 +1823,87 @@ Qt %1</translation>
         <location filename="../ui/edit/main_window_editing.cpp" line="66"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="60"/>
+        <location filename="../ui/main_window_pose.cpp" line="72"/>
+        <source>A search is running: wait for it or cancel it.</source>
+        <translation>Eine Suche läuft: warten Sie, bis sie fertig ist, oder brechen Sie sie ab.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="71"/>
+        <source>A pose search is already running.</source>
+        <translation>Eine Posensuche läuft bereits.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="74"/>
+        <source>This plan was opened without its model: open the model.</source>
+        <translation>Dieser Plan wurde ohne sein Modell geöffnet: öffnen Sie das Modell.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="85"/>
+        <source>Cannot find the best pose: %1</source>
+        <translation>Die beste Pose kann nicht gesucht werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="86"/>
+        <source>Cannot find the best pose.</source>
+        <translation>Die beste Pose kann nicht gesucht werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="95"/>
+        <source>Finding the best pose for %1...</source>
+        <translation>Beste Pose für %1 wird gesucht...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="103"/>
+        <source>Cancelling the pose search...</source>
+        <translation>Posensuche wird abgebrochen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="116"/>
+        <source>The pose search result was dropped: the model or its up direction changed.</source>
+        <translation>Das Ergebnis der Posensuche wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="126"/>
+        <source>Pose search cancelled: the poses that finished are listed; the plan shown is unchanged.</source>
+        <translation>Posensuche abgebrochen: die fertigen Posen sind aufgelistet; der angezeigte Plan bleibt unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="130"/>
+        <source>Best pose found.</source>
+        <translation>Beste Pose gefunden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="140"/>
+        <source>Pose search cancelled before any pose finished: the plan shown is unchanged.</source>
+        <translation>Posensuche abgebrochen, bevor eine Pose fertig war: der angezeigte Plan bleibt unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="142"/>
+        <source>Pose search failed: %1</source>
+        <translation>Posensuche fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="158"/>
+        <source>Showing pose %1 (up %2, %3, %4): the project is unchanged. &quot;Use this pose&quot; makes it the model&apos;s up; &quot;Show current up&quot; goes back.</source>
+        <translation>Pose %1 wird angezeigt (Aufwärtsrichtung %2, %3, %4): das Projekt bleibt unverändert. „Diese Pose verwenden“ macht sie zur Aufwärtsrichtung des Modells; „Aktuelle Aufwärtsrichtung zeigen“ kehrt zurück.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="205"/>
+        <source>This pose belongs to another model: find the best pose again.</source>
+        <translation>Diese Pose gehört zu einem anderen Modell: suchen Sie die beste Pose erneut.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="221"/>
+        <source>The model now stands on the best pose; its plan is shown.</source>
+        <translation>Das Modell steht jetzt in der besten Pose; sein Plan wird angezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="224"/>
+        <source>The model now stands on pose %1; searching its plan...</source>
+        <translation>Das Modell steht jetzt in Pose %1; sein Plan wird gesucht...</translation>
     </message>
 </context>
 <context>
@@ -2098,6 +2249,209 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
 </context>
 <context>
+    <name>multidir::ui::PoseSearchBox</name>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="29"/>
+        <source>given up</source>
+        <translation>vorgegeben</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="30"/>
+        <source>resting</source>
+        <translation>Ruhelage</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="31"/>
+        <source>sampled</source>
+        <translation>abgetastet</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="38"/>
+        <source>Best pose</source>
+        <translation>Beste Pose</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
+        <source>Poses tried: the current up, the model&apos;s stable resting poses and sampled directions</source>
+        <translation>Probierte Posen: die aktuelle Aufwärtsrichtung, die stabilen Ruhelagen des Modells und abgetastete Richtungen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="50"/>
+        <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
+        <translation>Posen, die die volle Suche mit den Einstellungen der Registerkarte „Suche“ erhalten (die aktuelle Aufwärtsrichtung und die am besten bewerteten anderen); die übrigen werden mit einem schnellen gierigen Plan bewertet</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="55"/>
+        <source>Find best pose</source>
+        <translation>Beste Pose finden</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="57"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="133"/>
+        <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
+        <translation>Ausprobieren, wie das Modell auf der Plattform stehen könnte, jede Pose mit ihrer eigenen Zerlegung, und die mit der kleinsten verbleibenden Risikofläche behalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="59"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Up</source>
+        <translation>Oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Risky area (mm²)</source>
+        <translation>Risikofläche (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>J_G (mm²)</source>
+        <translation>J_G (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Regions</source>
+        <translation>Bereiche</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <source>Search</source>
+        <translation>Suche</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
+        <source>Risky area of the whole model printed along this up alone (J_G before)</source>
+        <translation>Risikofläche des ganzen Modells, allein in dieser Aufwärtsrichtung gedruckt (J_G vorher)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <source>J_G of the plan found for this pose</source>
+        <translation>J_G des für diese Pose gefundenen Plans</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="83"/>
+        <source>Use this pose</source>
+        <translation>Diese Pose verwenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="85"/>
+        <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
+        <translation>Die ausgewählte Pose zur Aufwärtsrichtung des Modells machen; für die gewählte Pose wird ihr Plan angezeigt, für eine andere Pose wird gesucht</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
+        <source>Show current up</source>
+        <translation>Aktuelle Aufwärtsrichtung zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <source>End the preview of a pose: show the model with its up again</source>
+        <translation>Die Vorschau einer Pose beenden: das Modell wieder mit seiner Aufwärtsrichtung zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="92"/>
+        <source>Poses to try:</source>
+        <translation>Zu probierende Posen:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <source>Full searches:</source>
+        <translation>Volle Suchen:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="144"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="152"/>
+        <source>Scoring poses with quick plans...</source>
+        <translation>Posen werden mit schnellen Plänen bewertet...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="153"/>
+        <source>Full searches of the best poses...</source>
+        <translation>Volle Suchen für die besten Posen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="154"/>
+        <source>Choosing the best pose...</source>
+        <translation>Beste Pose wird gewählt...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <source>Cancelling the pose search...</source>
+        <translation>Posensuche wird abgebrochen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <source>full search</source>
+        <translation>volle Suche</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <source>quick plan</source>
+        <translation>schneller Plan</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <source>not scored</source>
+        <translation>nicht bewertet</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="182"/>
+        <source>-</source>
+        <translation>-</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
+        <source>chosen</source>
+        <translation>gewählt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
+        <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
+        <translation>
+            <numerusform>Beste Pose: Aufwärtsrichtung %1 (%2), J_G %3 mm², %n Bereich.</numerusform>
+            <numerusform>Beste Pose: Aufwärtsrichtung %1 (%2), J_G %3 mm², %n Bereiche.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
+        <source>Cancelled: the poses that finished are listed. %1</source>
+        <translation>Abgebrochen: die fertigen Posen sind aufgelistet. %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="228"/>
+        <source>, in use</source>
+        <translation>, in Verwendung</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PoseSearchJob</name>
+    <message>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="82"/>
+        <source>Not enough memory for the pose search: lower the beam width, the number of normals or the number of poses.</source>
+        <translation>Nicht genug Speicher für die Posensuche: verringern Sie die Strahlbreite, die Zahl der Normalen oder die Zahl der Posen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="86"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="90"/>
+        <source>Unexpected error during the pose search.</source>
+        <translation>Unerwarteter Fehler während der Posensuche.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="114"/>
+        <source>The pose search was cancelled before any pose finished.</source>
+        <translation>Die Posensuche wurde abgebrochen, bevor eine Pose fertig war.</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::PrintRunDriver</name>
     <message>
         <location filename="../ui/device/print_run_driver.cpp" line="134"/>
@@ -2143,216 +2497,216 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Das angezeigte Modell hat keine Datei (es besteht aus den Bereichen eines ohne sein Modell geöffneten Plans): öffnen Sie das Modell selbst, um ein Projekt zu speichern.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="136"/>
+        <location filename="../ui/project/project_session.cpp" line="137"/>
         <source>Wait until the project has opened before saving.</source>
         <translation>Warten Sie mit dem Speichern, bis das Projekt geöffnet ist.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="139"/>
+        <location filename="../ui/project/project_session.cpp" line="140"/>
         <source>Cannot save the project: %1</source>
         <translation>Das Projekt kann nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="142"/>
+        <location filename="../ui/project/project_session.cpp" line="143"/>
         <source>Could not save the project %1: %2 (%3)</source>
         <translation>Das Projekt %1 konnte nicht gespeichert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="149"/>
+        <location filename="../ui/project/project_session.cpp" line="150"/>
         <source>Project saved to %1.</source>
         <translation>Projekt unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="161"/>
-        <location filename="../ui/project/project_session.cpp" line="175"/>
-        <location filename="../ui/project/project_session.cpp" line="180"/>
+        <location filename="../ui/project/project_session.cpp" line="162"/>
+        <location filename="../ui/project/project_session.cpp" line="176"/>
+        <location filename="../ui/project/project_session.cpp" line="181"/>
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="175"/>
+        <location filename="../ui/project/project_session.cpp" line="176"/>
         <source>MultiDir projects (*.multidir)</source>
         <translation>MultiDir-Projekte (*.multidir)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="185"/>
-        <location filename="../ui/project/project_session.cpp" line="571"/>
+        <location filename="../ui/project/project_session.cpp" line="186"/>
+        <location filename="../ui/project/project_session.cpp" line="579"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="186"/>
+        <location filename="../ui/project/project_session.cpp" line="187"/>
         <source>MultiDir projects (*.multidir);;All files (*)</source>
         <translation>MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="220"/>
+        <location filename="../ui/project/project_session.cpp" line="221"/>
         <source>Search Running</source>
         <translation>Suche läuft</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="221"/>
+        <location filename="../ui/project/project_session.cpp" line="222"/>
         <source>A search is running on %1.</source>
         <translation>Für %1 läuft gerade eine Suche.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="222"/>
+        <location filename="../ui/project/project_session.cpp" line="223"/>
         <source>the model shown</source>
         <translation>das angezeigte Modell</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="225"/>
+        <location filename="../ui/project/project_session.cpp" line="226"/>
         <source>Stop it? Its result is then dropped.</source>
         <translation>Anhalten? Ihr Ergebnis wird dann verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="226"/>
+        <location filename="../ui/project/project_session.cpp" line="227"/>
         <source>S&amp;top the Search</source>
         <translation>Suche an&amp;halten</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="250"/>
+        <location filename="../ui/project/project_session.cpp" line="251"/>
         <source>%1 is no longer there; it was taken off the recent files.</source>
         <translation>%1 ist nicht mehr vorhanden und wurde aus der Liste der zuletzt geöffneten Dateien entfernt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="270"/>
+        <location filename="../ui/project/project_session.cpp" line="271"/>
         <source>Cannot open %1: drop a mesh file (.stl, .obj, .off, .ply) or a MultiDir project (.multidir).</source>
         <translation>%1 kann nicht geöffnet werden: ziehen Sie eine Netzdatei (.stl, .obj, .off, .ply) oder ein MultiDir-Projekt (.multidir) hierher.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="283"/>
+        <location filename="../ui/project/project_session.cpp" line="284"/>
         <source>There is no autosaved project to recover.</source>
         <translation>Es gibt kein automatisch gespeichertes Projekt zum Wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="293"/>
+        <location filename="../ui/project/project_session.cpp" line="294"/>
         <source>Recover Unsaved Work</source>
         <translation>Nicht gespeicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="294"/>
+        <location filename="../ui/project/project_session.cpp" line="295"/>
         <source>MultiDir Studio did not close properly. Recover the project it autosaved on %1?</source>
         <translation>MultiDir Studio wurde nicht ordnungsgemäß beendet. Das am %1 automatisch gespeicherte Projekt wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="299"/>
+        <location filename="../ui/project/project_session.cpp" line="300"/>
         <source>It was an untitled project.</source>
         <translation>Es war ein unbenanntes Projekt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="300"/>
+        <location filename="../ui/project/project_session.cpp" line="301"/>
         <source>It holds unsaved changes to %1.</source>
         <translation>Es enthält nicht gespeicherte Änderungen an %1.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="301"/>
+        <location filename="../ui/project/project_session.cpp" line="302"/>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="302"/>
+        <location filename="../ui/project/project_session.cpp" line="303"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="303"/>
+        <location filename="../ui/project/project_session.cpp" line="304"/>
         <source>&amp;Later</source>
         <translation>&amp;Später</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="347"/>
+        <location filename="../ui/project/project_session.cpp" line="348"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="348"/>
+        <location filename="../ui/project/project_session.cpp" line="349"/>
         <source>Unsaved Changes</source>
         <translation>Nicht gespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="349"/>
+        <location filename="../ui/project/project_session.cpp" line="350"/>
         <source>The project %1 has changes that are not saved.</source>
         <translation>Das Projekt %1 enthält Änderungen, die nicht gespeichert sind.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="352"/>
+        <location filename="../ui/project/project_session.cpp" line="353"/>
         <source>Save them first?</source>
         <translation>Zuerst speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="442"/>
-        <location filename="../ui/project/project_session.cpp" line="480"/>
+        <location filename="../ui/project/project_session.cpp" line="450"/>
+        <location filename="../ui/project/project_session.cpp" line="488"/>
         <source>Opening %1 was interrupted: another model was opened.</source>
         <translation>Das Öffnen von %1 wurde unterbrochen: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="460"/>
+        <location filename="../ui/project/project_session.cpp" line="468"/>
         <source>Rebuilding the plan of %1...</source>
         <translation>Plan von %1 wird neu aufgebaut...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="487"/>
+        <location filename="../ui/project/project_session.cpp" line="495"/>
         <source>The model file %1 changed since the project was saved; the plan was recomputed on the changed file.</source>
         <translation>Die Modelldatei %1 hat sich seit dem Speichern des Projekts geändert; der Plan wurde für die geänderte Datei neu berechnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="501"/>
+        <location filename="../ui/project/project_session.cpp" line="509"/>
         <source>The rebuilt plan leaves %1 mm² of risky area; the project saved %2 mm².</source>
         <translation>Der neu aufgebaute Plan lässt %1 mm² Risikofläche übrig; im Projekt gespeichert waren %2 mm².</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="506"/>
+        <location filename="../ui/project/project_session.cpp" line="514"/>
         <source>The plan could not be rebuilt on this model (%1); the model is shown without it.</source>
         <translation>Der Plan konnte für dieses Modell nicht neu aufgebaut werden (%1); das Modell wird ohne ihn angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="522"/>
+        <location filename="../ui/project/project_session.cpp" line="530"/>
         <source>Recovered the autosaved project.</source>
         <translation>Das automatisch gespeicherte Projekt wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="523"/>
+        <location filename="../ui/project/project_session.cpp" line="531"/>
         <source>Project %1 opened.</source>
         <translation>Projekt %1 geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="526"/>
+        <location filename="../ui/project/project_session.cpp" line="534"/>
         <source>Project %1</source>
         <translation>Projekt %1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="536"/>
+        <location filename="../ui/project/project_session.cpp" line="544"/>
         <source>Could not open the project %1: %2</source>
         <translation>Das Projekt %1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="551"/>
+        <location filename="../ui/project/project_session.cpp" line="559"/>
         <source>Could not open the project %1: its model %2 is missing.</source>
         <translation>Das Projekt %1 konnte nicht geöffnet werden: sein Modell %2 fehlt.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="552"/>
+        <location filename="../ui/project/project_session.cpp" line="560"/>
         <source>Put the model back at %1, or open the model where it is now and save the project again.</source>
         <translation>Legen Sie das Modell wieder unter %1 ab, oder öffnen Sie das Modell an seinem jetzigen Ort und speichern Sie das Projekt erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="557"/>
+        <location filename="../ui/project/project_session.cpp" line="565"/>
         <source>Opening the project %1...</source>
         <translation>Projekt %1 wird geöffnet...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="570"/>
+        <location filename="../ui/project/project_session.cpp" line="578"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="600"/>
+        <location filename="../ui/project/project_session.cpp" line="608"/>
         <source>MultiDir Studio[*]</source>
         <translation>MultiDir Studio[*]</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="600"/>
+        <location filename="../ui/project/project_session.cpp" line="608"/>
         <source>%1[*] - MultiDir Studio</source>
         <translation>%1[*] - MultiDir Studio</translation>
     </message>
@@ -2694,6 +3048,407 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 %2</source>
         <translation>%1
 %2</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SliceDialog</name>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="39"/>
+        <source>The firmware turns the platform (axis %1): one program, job.gcode, with every step.</source>
+        <translation>Die Firmware dreht die Plattform (Achse %1): ein Programm, job.gcode, mit allen Schritten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="42"/>
+        <source>MultiDir turns the platform over Modbus (Hardware dock): one program per step.</source>
+        <translation>MultiDir dreht die Plattform über Modbus (Fenster „Hardware“): ein Programm je Schritt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="46"/>
+        <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
+        <translation>Ein gewöhnlicher Drucker: er kann das Teil nicht drehen und druckt daher nur Pläne mit einem Schritt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="53"/>
+        <source>Slice the Plan</source>
+        <translation>Plan slicen</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="61"/>
+        <source>Load a PrusaSlicer .ini...</source>
+        <translation>PrusaSlicer-.ini laden...</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="71"/>
+        <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
+        <translation>Wie die Firmware die Plattform dreht: MANUAL_STEPPER bei Klipper oder G1 A bei Marlin und RepRapFirmware</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="76"/>
+        <source>layer_height=0.3 fill_density=10%</source>
+        <translation>layer_height=0.3 fill_density=10%</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="77"/>
+        <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
+        <translation>PrusaSlicer-Einstellungen, die die des Profils überschreiben, als KEY=VALUE durch Leerzeichen getrennt</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="78"/>
+        <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
+        <translation>Zusätzlich das ganze Modell in Aufwärtsrichtung mit den Stützen des Slicers slicen (Vergleich)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
+        <source>The prusa-slicer program: a name found on PATH, or a full path</source>
+        <translation>Das Programm prusa-slicer: ein Name, der im PATH gefunden wird, oder ein vollständiger Pfad</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="90"/>
+        <source>Printer:</source>
+        <translation>Drucker:</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
+        <source>Dialect:</source>
+        <translation>Dialekt:</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="93"/>
+        <source>Slicer settings:</source>
+        <translation>Slicer-Einstellungen:</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="95"/>
+        <source>Slicer program:</source>
+        <translation>Slicer-Programm:</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
+        <source>Slice</source>
+        <translation>Slicen</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="123"/>
+        <source>Cannot use the printer profile: %1</source>
+        <translation>Das Druckerprofil kann nicht verwendet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="158"/>
+        <source>Load a PrusaSlicer Printer Profile</source>
+        <translation>PrusaSlicer-Druckerprofil laden</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="160"/>
+        <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
+        <translation>PrusaSlicer-Profile (*.ini);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="175"/>
+        <source>Choose a printer profile.</source>
+        <translation>Wählen Sie ein Druckerprofil.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
+        <source>Slicer settings: %1</source>
+        <translation>Slicer-Einstellungen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SliceJobRunner</name>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="55"/>
+        <source>Slicing step %1 of %2</source>
+        <translation>Slicen: Schritt %1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
+        <source>Slicing the whole model along up with the slicer&apos;s supports, for comparison</source>
+        <translation>Slicen des ganzen Modells in Aufwärtsrichtung mit den Stützen des Slicers, zum Vergleich</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
+        <source>Stitching the steps into one program</source>
+        <translation>Die Schritte werden zu einem Programm zusammengefügt</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="63"/>
+        <source>Reading the G-code for the preview</source>
+        <translation>G-Code wird für die Vorschau gelesen</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="69"/>
+        <source>The slicer &apos;%1&apos; was not found: install PrusaSlicer (scripts/install-deps.sh) or give the slicer program&apos;s full path in the Slice dialog.</source>
+        <translation>Der Slicer „%1“ wurde nicht gefunden: installieren Sie PrusaSlicer (scripts/install-deps.sh) oder geben Sie im Dialog „Plan slicen“ den vollständigen Pfad des Slicer-Programms an.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="73"/>
+        <source>The slicer failed: its command and last output lines are below.</source>
+        <translation>Der Slicer ist fehlgeschlagen: sein Befehl und die letzten Ausgabezeilen stehen unten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
+        <translation>Der G-Code hat die Prüfungen von MultiDir nicht bestanden und wurde verworfen: Schritt, Zeile und Grund stehen unten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="100"/>
+        <source>A slicing job is already running.</source>
+        <translation>Ein Slicing-Auftrag läuft bereits.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="105"/>
+        <source>Could not create a temporary folder for the G-code: %1</source>
+        <translation>Für den G-Code konnte kein temporärer Ordner angelegt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="138"/>
+        <source>Not enough memory to slice this plan.</source>
+        <translation>Nicht genug Speicher, um diesen Plan zu slicen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="141"/>
+        <source>Unexpected error while slicing.</source>
+        <translation>Unerwarteter Fehler beim Slicen.</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SlicePanel</name>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="43"/>
+        <source>Slice...</source>
+        <translation>Slicen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="45"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="133"/>
+        <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
+        <translation>Jeden Schritt des angezeigten Plans mit seinen Stützen zu G-Code slicen (PrusaSlicer)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="46"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Print time</source>
+        <translation>Druckzeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Filament (m)</source>
+        <translation>Filament (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Filament (g)</source>
+        <translation>Filament (g)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="71"/>
+        <source>Export G-code...</source>
+        <translation>G-Code exportieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="73"/>
+        <source>Write step-NN.gcode, job.gcode (when the firmware turns the platform) and the print job with its estimates into a folder</source>
+        <translation>step-NN.gcode, job.gcode (wenn die Firmware die Plattform dreht) und den Druckauftrag mit seinen Schätzungen in einen Ordner schreiben</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="75"/>
+        <source>Preview G-code</source>
+        <translation>G-Code-Vorschau</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="78"/>
+        <source>Show the toolpaths in place of the regions; click again for the plan view</source>
+        <translation>Die Werkzeugwege anstelle der Bereiche zeigen; erneut klicken für die Planansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
+        <source>Show the layers printed up to this one (all steps, in printing order)</source>
+        <translation>Die Schichten bis einschließlich dieser zeigen (alle Schritte, in Druckreihenfolge)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="84"/>
+        <source>Travel moves</source>
+        <translation>Leerfahrten</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="98"/>
+        <source>Layers:</source>
+        <translation>Schichten:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="102"/>
+        <source>G-code</source>
+        <translation>G-Code</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="127"/>
+        <source>Show a plan first: run a search or open a plan.</source>
+        <translation>Zeigen Sie zuerst einen Plan an: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="145"/>
+        <source>Starting the slicer...</source>
+        <translation>Slicer wird gestartet...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="168"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="176"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <source>Total</source>
+        <translation>Gesamt</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <source>Total (%1)</source>
+        <translation>Gesamt (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="181"/>
+        <source>Fixed direction, slicer supports</source>
+        <translation>Feste Richtung, Slicer-Stützen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
+        <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
+        <translation>Das ganze Modell in Aufwärtsrichtung mit den eigenen Stützen von PrusaSlicer gedruckt: der Vergleich</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SliceSession</name>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="45"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="46"/>
+        <source>Slicing failed: %1</source>
+        <translation>Slicen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="52"/>
+        <source>Slicing cancelled: nothing was written.</source>
+        <translation>Slicen abgebrochen: nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="53"/>
+        <source>Slicing cancelled.</source>
+        <translation>Slicen abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="62"/>
+        <source>Show a plan first: run a search or open a plan.</source>
+        <translation>Zeigen Sie zuerst einen Plan an: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="64"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="118"/>
+        <source>The plan&apos;s supports are still being grown: slice it when they are ready.</source>
+        <translation>Die Stützen des Plans werden noch erzeugt: slicen Sie ihn, sobald sie fertig sind.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="76"/>
+        <source>The plan changed: slicing was cancelled.</source>
+        <translation>Der Plan hat sich geändert: das Slicen wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="78"/>
+        <source>The plan changed: slice it again for its G-code.</source>
+        <translation>Der Plan hat sich geändert: slicen Sie ihn erneut, um seinen G-Code zu erhalten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="110"/>
+        <source>There is no plan to slice: run a search or open a plan.</source>
+        <translation>Es gibt keinen Plan zum Slicen: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="114"/>
+        <source>A slicing job is already running.</source>
+        <translation>Ein Slicing-Auftrag läuft bereits.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="142"/>
+        <source>Slicing without supports although the plan leaves risky area: %1</source>
+        <translation>Slicen ohne Stützen, obwohl der Plan Risikofläche übrig lässt: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="143"/>
+        <source>no supports were grown for it.</source>
+        <translation>für ihn wurden keine Stützen erzeugt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="148"/>
+        <source>Slicing the plan for %1...</source>
+        <translation>Slicen des Plans für %1...</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="155"/>
+        <source>Cancelling: stopping the slicer...</source>
+        <translation>Abbruch: Slicer wird angehalten...</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/slicing/slice_session.cpp" line="164"/>
+        <source>Sliced for %1: %n step(s), %2 of printing.</source>
+        <translation>
+            <numerusform>Slicen für %1 abgeschlossen: %n Schritt, %2 Druckzeit.</numerusform>
+            <numerusform>Slicen für %1 abgeschlossen: %n Schritte, %2 Druckzeit.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="168"/>
+        <source>Slicing finished.</source>
+        <translation>Slicen abgeschlossen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="201"/>
+        <source>Layer %1 of %2: step %3, its layer %4</source>
+        <translation>Schicht %1 von %2: Schritt %3, dessen Schicht %4</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="207"/>
+        <source>There is no G-code to export: slice the plan first.</source>
+        <translation>Es gibt keinen G-Code zum Exportieren: slicen Sie zuerst den Plan.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/slicing/slice_session.cpp" line="217"/>
+        <source>G-code exported to %1 (%n file(s)).</source>
+        <translation>
+            <numerusform>G-Code nach %1 exportiert (%n Datei).</numerusform>
+            <numerusform>G-Code nach %1 exportiert (%n Dateien).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <source>Export G-code to Folder</source>
+        <translation>G-Code in Ordner exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <source>-gcode</source>
+        <translation>-gcode</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="228"/>
+        <source>G-code folders (*)</source>
+        <translation>G-Code-Ordner (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="232"/>
+        <source>Export G-code</source>
+        <translation>G-Code exportieren</translation>
     </message>
 </context>
 <context>

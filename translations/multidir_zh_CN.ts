@@ -18,6 +18,40 @@
     </message>
 </context>
 <context>
+    <name>GcodeExport</name>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="22"/>
+        <source>Could not write %1: %2. Check that the folder can be written and the disk is not full.</source>
+        <translation>无法写入 %1：%2。请检查文件夹是否可写入以及磁盘是否已满。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="28"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="62"/>
+        <source>Could not replace %1: it is in use or read-only.</source>
+        <translation>无法替换 %1：该文件正在使用或为只读。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="33"/>
+        <source>Could not move %1 into place.</source>
+        <translation>无法将 %1 移动到目标位置。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="46"/>
+        <source>There is no sliced job to export: slice the plan first.</source>
+        <translation>没有可导出的切片作业：请先对方案切片。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="51"/>
+        <source>%1 is a file, not a folder: choose a folder for the G-code.</source>
+        <translation>%1 是文件而不是文件夹：请为 G 代码选择一个文件夹。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="56"/>
+        <source>Could not create the folder %1: check that its parent exists and can be written.</source>
+        <translation>无法创建文件夹 %1：请检查其上级文件夹是否存在且可写入。</translation>
+    </message>
+</context>
+<context>
     <name>MovePlaneCommand</name>
     <message>
         <location filename="../ui/edit/plan_edit_commands.cpp" line="39"/>
@@ -1106,117 +1140,117 @@
 <context>
     <name>multidir::ui::MachinePanel</name>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="27"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="28"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="43"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
         <source>3-DOF: fixed printing direction</source>
         <translation>3 自由度：固定打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
         <source>4-DOF: rotary platform</source>
         <translation>4 自由度：旋转平台</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="46"/>
         <source>5-DOF: tilting robot arm</source>
         <translation>5 自由度：倾斜机械臂</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="48"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="49"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>旋转平台（4 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="51"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="52"/>
         <source>The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform plane (perpendicular to up)</source>
         <translation>平台绕其旋转的轴，格式为 x,y,z 或 x、-y、+z；它必须位于平台平面内（垂直于向上方向）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="53"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="54"/>
         <source>Pick on platform</source>
         <translation>在平台上选取</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="56"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
         <source>Click two points on the platform in the 3D view: the axis runs from the first to the second. Esc or this button again cancels.</source>
         <translation>在 3D 视图中点击平台上的两个点：轴从第一个点指向第二个点。按 Esc 或再次点击此按钮可取消。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="61"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
         <source>The stepper&apos;s resolution: only multiples of this angle can be reached</source>
         <translation>步进电机的分辨率：只能到达该角度的整数倍</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="63"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="64"/>
         <source>Rotation axis:</source>
         <translation>旋转轴：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="65"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
         <source>Minimal angle:</source>
         <translation>最小角度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
         <source>Maximal angle:</source>
         <translation>最大角度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="68"/>
         <source>Angle step:</source>
         <translation>角度步长：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="69"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="70"/>
         <source>Tilting arm (5-DOF)</source>
         <translation>倾斜机械臂（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="71"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
         <source>How far the arm can tilt the platform away from up</source>
         <translation>机械臂能将平台从向上方向倾斜的最大角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="73"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="74"/>
         <source>Tilt limit:</source>
         <translation>倾斜极限：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="79"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="81"/>
         <source>model footprint</source>
         <translation>模型底面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="82"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="83"/>
         <source>Radius of the platform disc that no clipping plane may cut; 0 uses the model&apos;s footprint plus a margin</source>
         <translation>任何切割平面都不得穿过的平台圆盘半径；0 表示使用模型底面加上边距</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="92"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
         <source>Machine:</source>
         <translation>机器：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="94"/>
         <source>Platform radius:</source>
         <translation>平台半径：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="159"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="162"/>
         <source>The rotation axis &quot;%1&quot; cannot be read: type three numbers x,y,z or an axis such as x or -y.</source>
         <translation>无法识别旋转轴“%1”：请输入三个数 x,y,z，或 x、-y 这样的坐标轴。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="164"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="167"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
@@ -1224,17 +1258,17 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="76"/>
+        <location filename="../ui/main_window.cpp" line="87"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="103"/>
+        <location filename="../ui/main_window.cpp" line="116"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="104"/>
+        <location filename="../ui/main_window.cpp" line="117"/>
         <source>&amp;Open...</source>
         <translation>打开(&amp;O)...</translation>
     </message>
@@ -1251,22 +1285,22 @@
         <translation type="vanished">打开方案(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="122"/>
+        <location filename="../ui/main_window.cpp" line="135"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="123"/>
+        <location filename="../ui/main_window.cpp" line="136"/>
         <source>&amp;Export plan...</source>
         <translation>导出方案(&amp;E)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
+        <location filename="../ui/main_window.cpp" line="138"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>保存当前方案：plan.json 以及每个区域一个 STL 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="131"/>
+        <location filename="../ui/main_window.cpp" line="149"/>
         <source>&amp;Load machine profile...</source>
         <translation>加载机器配置(&amp;L)...</translation>
     </message>
@@ -1275,107 +1309,107 @@
         <translation type="vanished">保存机器配置(&amp;S)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="136"/>
+        <location filename="../ui/main_window.cpp" line="154"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="140"/>
+        <location filename="../ui/main_window.cpp" line="158"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="141"/>
+        <location filename="../ui/main_window.cpp" line="159"/>
         <source>&amp;Fit to View</source>
         <translation>适应视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="143"/>
+        <location filename="../ui/main_window.cpp" line="161"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>显示模型(&amp;M)（隐藏方案）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="148"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>&amp;Search</source>
         <translation>搜索(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="149"/>
+        <location filename="../ui/main_window.cpp" line="167"/>
         <source>&amp;Run</source>
         <translation>运行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="152"/>
+        <location filename="../ui/main_window.cpp" line="170"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="203"/>
+        <location filename="../ui/main_window.cpp" line="223"/>
         <source>Overhangs</source>
         <translation>悬垂</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="204"/>
+        <location filename="../ui/main_window.cpp" line="224"/>
         <source>Machine</source>
         <translation>机器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="225"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="206"/>
+        <location filename="../ui/main_window.cpp" line="234"/>
         <source>Plan</source>
         <translation>方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
+        <location filename="../ui/main_window.cpp" line="282"/>
         <source>Hardware</source>
         <translation>硬件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="279"/>
+        <location filename="../ui/main_window.cpp" line="307"/>
         <source>Printing direction</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="282"/>
+        <location filename="../ui/main_window.cpp" line="310"/>
         <source>Up:</source>
         <translation>向上：</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="287"/>
+        <location filename="../ui/main_window.cpp" line="315"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="292"/>
+        <location filename="../ui/main_window.cpp" line="320"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="292"/>
+        <location filename="../ui/main_window.cpp" line="320"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
+        <location filename="../ui/main_window.cpp" line="321"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
+        <location filename="../ui/main_window.cpp" line="321"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="294"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="294"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
@@ -1388,7 +1422,7 @@
         <translation type="vanished">网格 (*.stl *.obj *.off *.ply);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="107"/>
+        <location filename="../ui/main_window.cpp" line="120"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>打开网格文件（STL、OBJ、OFF 或 PLY）或 MultiDir 项目</translation>
     </message>
@@ -1397,37 +1431,37 @@
         <translation type="vanished">导出截图(&amp;R)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="129"/>
+        <location filename="../ui/main_window.cpp" line="147"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>将当前显示的 3D 视图保存为 PNG 或 JPEG 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="133"/>
+        <location filename="../ui/main_window.cpp" line="151"/>
         <source>Save machine pro&amp;file...</source>
         <translation>保存机器配置(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="161"/>
+        <location filename="../ui/main_window.cpp" line="181"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="162"/>
+        <location filename="../ui/main_window.cpp" line="182"/>
         <source>&amp;About MultiDir Studio</source>
         <translation>关于 MultiDir Studio(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
+        <location filename="../ui/main_window.cpp" line="189"/>
         <source>About MultiDir Studio</source>
         <translation>关于 MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="190"/>
         <source>MultiDir Studio %1</source>
         <translation>MultiDir Studio %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="172"/>
+        <location filename="../ui/main_window.cpp" line="192"/>
         <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
 
 Qt %1</source>
@@ -1436,298 +1470,334 @@ Qt %1</source>
 Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="259"/>
+        <location filename="../ui/main_window.cpp" line="287"/>
         <source>Emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="358"/>
+        <location filename="../ui/main_window.cpp" line="387"/>
+        <source>The pose search was stopped; its result is dropped.</source>
+        <translation>姿态搜索已停止；其结果已丢弃。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="393"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>搜索已停止；其结果已丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="380"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>Open Model or Project</source>
         <translation>打开模型或项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="381"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>网格和项目 (*.stl *.obj *.off *.ply *.multidir);;网格 (*.stl *.obj *.off *.ply);;MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="405"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
+        <source>%1, %2, %3</source>
+        <translation>%1, %2, %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Pose: %1</source>
+        <translation>姿态：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>自定义（%1, %2, %3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="524"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
         <source>Repaired on load: %1</source>
         <translation>加载时已修复：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="542"/>
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="546"/>
         <source>Could not open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="550"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
-        <location filename="../ui/main_window.cpp" line="519"/>
+        <location filename="../ui/main_window.cpp" line="572"/>
+        <location filename="../ui/main_window.cpp" line="589"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="582"/>
         <source>Triangles: %1</source>
         <translation>三角形：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
+        <location filename="../ui/main_window.cpp" line="583"/>
         <source>Volume: %1 mm³</source>
         <translation>体积：%1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="597"/>
         <source>Risky area unavailable</source>
         <translation>风险面积不可用</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="535"/>
+        <location filename="../ui/main_window.cpp" line="605"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>风险面积（%1 向上）：%2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
+        <location filename="../ui/main_window.cpp" line="607"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="553"/>
-        <location filename="../ui/main_window.cpp" line="572"/>
+        <location filename="../ui/main_window.cpp" line="623"/>
+        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window_pose.cpp" line="56"/>
+        <location filename="../ui/main_window_pose.cpp" line="73"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="555"/>
+        <location filename="../ui/main_window.cpp" line="625"/>
+        <location filename="../ui/main_window_pose.cpp" line="58"/>
         <source>Fix the machine first: %1</source>
         <translation>请先修正机器设置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="571"/>
+        <location filename="../ui/main_window.cpp" line="627"/>
+        <location filename="../ui/main_window.cpp" line="645"/>
+        <source>A pose search is running: wait for it or cancel it.</source>
+        <translation>姿态搜索正在运行：请等待其完成或将其取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="644"/>
         <source>A search is already running.</source>
         <translation>已有搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="577"/>
+        <location filename="../ui/main_window.cpp" line="651"/>
+        <location filename="../ui/main_window_pose.cpp" line="81"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="581"/>
+        <location filename="../ui/main_window.cpp" line="655"/>
         <source>Cannot search: %1</source>
         <translation>无法搜索：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
+        <location filename="../ui/main_window.cpp" line="656"/>
         <source>Cannot search.</source>
         <translation>无法搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="596"/>
+        <location filename="../ui/main_window.cpp" line="670"/>
         <source>Searching %1...</source>
         <translation>正在搜索 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="604"/>
+        <location filename="../ui/main_window.cpp" line="678"/>
         <source>Cancelling the search...</source>
         <translation>正在取消搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="617"/>
+        <location filename="../ui/main_window.cpp" line="691"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="620"/>
+        <location filename="../ui/main_window.cpp" line="694"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>搜索已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="621"/>
+        <location filename="../ui/main_window.cpp" line="695"/>
         <source>Search finished.</source>
         <translation>搜索完成。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="634"/>
+        <location filename="../ui/main_window.cpp" line="708"/>
         <source>Search failed: %1</source>
         <translation>搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="665"/>
+        <location filename="../ui/main_window.cpp" line="740"/>
         <source>Growing supports for the plan...</source>
         <translation>正在为方案生成支撑...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="679"/>
+        <location filename="../ui/main_window.cpp" line="754"/>
         <source>Supports grown for the plan.</source>
         <translation>已为方案生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="710"/>
+        <location filename="../ui/main_window.cpp" line="785"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>没有可导出的方案：请先运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="713"/>
+        <location filename="../ui/main_window.cpp" line="788"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>此方案的支撑仍在生成中：请在状态栏提示支撑已就绪后重新导出。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="717"/>
+        <location filename="../ui/main_window.cpp" line="792"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>无法创建文件夹 %1：请检查其上级文件夹是否存在且可写入。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="735"/>
+        <location filename="../ui/main_window.cpp" line="822"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>无法将方案导出到 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="741"/>
+        <location filename="../ui/main_window.cpp" line="828"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>方案已导出到 %1，但未包含支撑，尽管仍剩余 %2 mm² 风险面积：%3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="743"/>
+        <location filename="../ui/main_window.cpp" line="830"/>
         <source>no supports were grown for it.</source>
         <translation>未为其生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="748"/>
+        <location filename="../ui/main_window.cpp" line="835"/>
         <source>Plan exported to %1.</source>
         <translation>方案已导出到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="755"/>
+        <location filename="../ui/main_window.cpp" line="842"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>无法打开方案 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="802"/>
+        <location filename="../ui/main_window.cpp" line="889"/>
         <source>Machine profile saved to %1.</source>
         <translation>机器配置已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="814"/>
+        <location filename="../ui/main_window.cpp" line="901"/>
         <source>Machine profile %1 loaded.</source>
         <translation>已加载机器配置 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="823"/>
+        <location filename="../ui/main_window.cpp" line="910"/>
         <source>Export Plan to Folder</source>
         <translation>将方案导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="823"/>
+        <location filename="../ui/main_window.cpp" line="910"/>
         <source>-plan</source>
         <translation>-方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="824"/>
+        <location filename="../ui/main_window.cpp" line="911"/>
         <source>Plan folders (*)</source>
         <translation>方案文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="830"/>
-        <location filename="../ui/main_window.cpp" line="832"/>
+        <location filename="../ui/main_window.cpp" line="917"/>
+        <location filename="../ui/main_window.cpp" line="919"/>
         <source>Export Plan</source>
         <translation>导出方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="843"/>
+        <location filename="../ui/main_window.cpp" line="930"/>
         <source>Screenshot saved to %1.</source>
         <translation>截图已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="848"/>
+        <location filename="../ui/main_window.cpp" line="935"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="849"/>
+        <location filename="../ui/main_window.cpp" line="936"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG 图像 (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="852"/>
-        <location filename="../ui/main_window.cpp" line="860"/>
+        <location filename="../ui/main_window.cpp" line="939"/>
+        <location filename="../ui/main_window.cpp" line="947"/>
         <source>Export Screenshot</source>
         <translation>导出截图</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="865"/>
+        <location filename="../ui/main_window.cpp" line="952"/>
         <source>Open Plan Folder</source>
         <translation>打开方案文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="349"/>
+        <location filename="../ui/main_window.cpp" line="378"/>
         <source>Open Plan</source>
         <translation>打开方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="110"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
         <source>Sa&amp;mples</source>
         <translation>示例(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="120"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
         <source>Open pla&amp;n...</source>
         <translation>打开方案(&amp;N)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="127"/>
+        <location filename="../ui/main_window.cpp" line="140"/>
+        <source>Export &amp;G-code...</source>
+        <translation>导出 G 代码(&amp;G)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="142"/>
+        <source>Save the sliced plan&apos;s G-code (step-NN.gcode, job.gcode) and its print job</source>
+        <translation>保存已切片方案的 G 代码（step-NN.gcode、job.gcode）及其打印作业</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="145"/>
         <source>Export Screens&amp;hot...</source>
         <translation>导出截图(&amp;H)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="871"/>
-        <location filename="../ui/main_window.cpp" line="877"/>
+        <location filename="../ui/main_window.cpp" line="958"/>
+        <location filename="../ui/main_window.cpp" line="964"/>
         <source>Save Machine Profile</source>
         <translation>保存机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="873"/>
+        <location filename="../ui/main_window.cpp" line="960"/>
         <source>Machine profiles (*.json)</source>
         <translation>机器配置 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="881"/>
-        <location filename="../ui/main_window.cpp" line="888"/>
+        <location filename="../ui/main_window.cpp" line="968"/>
+        <location filename="../ui/main_window.cpp" line="975"/>
         <source>Load Machine Profile</source>
         <translation>加载机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="883"/>
+        <location filename="../ui/main_window.cpp" line="970"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>机器配置 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="901"/>
+        <location filename="../ui/main_window.cpp" line="988"/>
         <source>Loading %1...</source>
         <translation>正在加载 %1...</translation>
     </message>
@@ -1750,6 +1820,87 @@ Qt %1</translation>
         <location filename="../ui/edit/main_window_editing.cpp" line="66"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="60"/>
+        <location filename="../ui/main_window_pose.cpp" line="72"/>
+        <source>A search is running: wait for it or cancel it.</source>
+        <translation>搜索正在运行：请等待其完成或将其取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="71"/>
+        <source>A pose search is already running.</source>
+        <translation>已有姿态搜索正在运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="74"/>
+        <source>This plan was opened without its model: open the model.</source>
+        <translation>此方案是在没有其模型的情况下打开的：请打开模型。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="85"/>
+        <source>Cannot find the best pose: %1</source>
+        <translation>无法查找最佳姿态：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="86"/>
+        <source>Cannot find the best pose.</source>
+        <translation>无法查找最佳姿态。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="95"/>
+        <source>Finding the best pose for %1...</source>
+        <translation>正在为 %1 查找最佳姿态...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="103"/>
+        <source>Cancelling the pose search...</source>
+        <translation>正在取消姿态搜索...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="116"/>
+        <source>The pose search result was dropped: the model or its up direction changed.</source>
+        <translation>姿态搜索结果已丢弃：模型或其向上方向已改变。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="126"/>
+        <source>Pose search cancelled: the poses that finished are listed; the plan shown is unchanged.</source>
+        <translation>姿态搜索已取消：已完成的姿态已列出；当前显示的方案未改变。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="130"/>
+        <source>Best pose found.</source>
+        <translation>已找到最佳姿态。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="140"/>
+        <source>Pose search cancelled before any pose finished: the plan shown is unchanged.</source>
+        <translation>姿态搜索在任何姿态完成之前被取消：当前显示的方案未改变。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="142"/>
+        <source>Pose search failed: %1</source>
+        <translation>姿态搜索失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="158"/>
+        <source>Showing pose %1 (up %2, %3, %4): the project is unchanged. &quot;Use this pose&quot; makes it the model&apos;s up; &quot;Show current up&quot; goes back.</source>
+        <translation>正在显示姿态 %1（向上方向 %2, %3, %4）：项目未改变。“使用此姿态”将其设为模型的向上方向；“显示当前向上方向”可返回。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="205"/>
+        <source>This pose belongs to another model: find the best pose again.</source>
+        <translation>此姿态属于另一个模型：请重新查找最佳姿态。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="221"/>
+        <source>The model now stands on the best pose; its plan is shown.</source>
+        <translation>模型现已按最佳姿态摆放；显示其方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_pose.cpp" line="224"/>
+        <source>The model now stands on pose %1; searching its plan...</source>
+        <translation>模型现已按姿态 %1 摆放；正在搜索其方案...</translation>
     </message>
 </context>
 <context>
@@ -2094,6 +2245,208 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
 </context>
 <context>
+    <name>multidir::ui::PoseSearchBox</name>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="29"/>
+        <source>given up</source>
+        <translation>给定方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="30"/>
+        <source>resting</source>
+        <translation>稳定放置</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="31"/>
+        <source>sampled</source>
+        <translation>采样</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="38"/>
+        <source>Best pose</source>
+        <translation>最佳姿态</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
+        <source>Poses tried: the current up, the model&apos;s stable resting poses and sampled directions</source>
+        <translation>尝试的姿态：当前向上方向、模型的稳定放置姿态以及采样方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="50"/>
+        <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
+        <translation>以“搜索”选项卡的设置进行完整搜索的姿态（当前向上方向及评分最佳的其他姿态）；其余姿态用快速贪心方案评分</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="55"/>
+        <source>Find best pose</source>
+        <translation>查找最佳姿态</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="57"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="133"/>
+        <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
+        <translation>尝试模型在平台上的各种摆放方式，每个姿态各自分解，并保留剩余风险面积最小的姿态</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="59"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Up</source>
+        <translation>向上方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Risky area (mm²)</source>
+        <translation>风险面积 (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>J_G (mm²)</source>
+        <translation>J_G (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Regions</source>
+        <translation>区域</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <source>Search</source>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
+        <source>Risky area of the whole model printed along this up alone (J_G before)</source>
+        <translation>整个模型仅沿此向上方向打印时的风险面积（J_G 之前）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <source>J_G of the plan found for this pose</source>
+        <translation>为此姿态找到的方案的 J_G</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="83"/>
+        <source>Use this pose</source>
+        <translation>使用此姿态</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="85"/>
+        <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
+        <translation>将所选姿态设为模型的向上方向；选定的姿态直接显示其方案，其他姿态将重新搜索</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
+        <source>Show current up</source>
+        <translation>显示当前向上方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <source>End the preview of a pose: show the model with its up again</source>
+        <translation>结束姿态预览：重新按模型的向上方向显示模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="92"/>
+        <source>Poses to try:</source>
+        <translation>尝试的姿态数：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <source>Full searches:</source>
+        <translation>完整搜索数：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="144"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="152"/>
+        <source>Scoring poses with quick plans...</source>
+        <translation>正在用快速方案评估姿态...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="153"/>
+        <source>Full searches of the best poses...</source>
+        <translation>正在对最佳姿态进行完整搜索...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="154"/>
+        <source>Choosing the best pose...</source>
+        <translation>正在选择最佳姿态...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <source>Cancelling the pose search...</source>
+        <translation>正在取消姿态搜索...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <source>full search</source>
+        <translation>完整搜索</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <source>quick plan</source>
+        <translation>快速方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <source>not scored</source>
+        <translation>未评估</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="182"/>
+        <source>-</source>
+        <translation>-</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
+        <source>chosen</source>
+        <translation>选定</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
+        <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
+        <translation>
+            <numerusform>最佳姿态：向上方向 %1（%2），J_G %3 mm²，%n 个区域。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
+        <source>Cancelled: the poses that finished are listed. %1</source>
+        <translation>已取消：已完成的姿态已列出。%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="228"/>
+        <source>, in use</source>
+        <translation>，使用中</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PoseSearchJob</name>
+    <message>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="82"/>
+        <source>Not enough memory for the pose search: lower the beam width, the number of normals or the number of poses.</source>
+        <translation>内存不足，无法进行姿态搜索：请减小束宽、法向数量或姿态数量。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="86"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="90"/>
+        <source>Unexpected error during the pose search.</source>
+        <translation>姿态搜索过程中发生意外错误。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="114"/>
+        <source>The pose search was cancelled before any pose finished.</source>
+        <translation>姿态搜索在任何姿态完成之前被取消。</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::PrintRunDriver</name>
     <message>
         <location filename="../ui/device/print_run_driver.cpp" line="134"/>
@@ -2139,216 +2492,216 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>当前显示的模型没有对应的文件（它是一个在没有模型的情况下打开的方案的各个区域）：请打开模型本身以保存项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="136"/>
+        <location filename="../ui/project/project_session.cpp" line="137"/>
         <source>Wait until the project has opened before saving.</source>
         <translation>请等项目打开完成后再保存。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="139"/>
+        <location filename="../ui/project/project_session.cpp" line="140"/>
         <source>Cannot save the project: %1</source>
         <translation>无法保存项目：%1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="142"/>
+        <location filename="../ui/project/project_session.cpp" line="143"/>
         <source>Could not save the project %1: %2 (%3)</source>
         <translation>无法保存项目 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="149"/>
+        <location filename="../ui/project/project_session.cpp" line="150"/>
         <source>Project saved to %1.</source>
         <translation>项目已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="161"/>
-        <location filename="../ui/project/project_session.cpp" line="175"/>
-        <location filename="../ui/project/project_session.cpp" line="180"/>
+        <location filename="../ui/project/project_session.cpp" line="162"/>
+        <location filename="../ui/project/project_session.cpp" line="176"/>
+        <location filename="../ui/project/project_session.cpp" line="181"/>
         <source>Save Project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="175"/>
+        <location filename="../ui/project/project_session.cpp" line="176"/>
         <source>MultiDir projects (*.multidir)</source>
         <translation>MultiDir 项目 (*.multidir)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="185"/>
-        <location filename="../ui/project/project_session.cpp" line="571"/>
+        <location filename="../ui/project/project_session.cpp" line="186"/>
+        <location filename="../ui/project/project_session.cpp" line="579"/>
         <source>Open Project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="186"/>
+        <location filename="../ui/project/project_session.cpp" line="187"/>
         <source>MultiDir projects (*.multidir);;All files (*)</source>
         <translation>MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="220"/>
+        <location filename="../ui/project/project_session.cpp" line="221"/>
         <source>Search Running</source>
         <translation>搜索正在运行</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="221"/>
+        <location filename="../ui/project/project_session.cpp" line="222"/>
         <source>A search is running on %1.</source>
         <translation>正在对 %1 运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="222"/>
+        <location filename="../ui/project/project_session.cpp" line="223"/>
         <source>the model shown</source>
         <translation>当前显示的模型</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="225"/>
+        <location filename="../ui/project/project_session.cpp" line="226"/>
         <source>Stop it? Its result is then dropped.</source>
         <translation>是否停止？其结果将被丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="226"/>
+        <location filename="../ui/project/project_session.cpp" line="227"/>
         <source>S&amp;top the Search</source>
         <translation>停止搜索(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="250"/>
+        <location filename="../ui/project/project_session.cpp" line="251"/>
         <source>%1 is no longer there; it was taken off the recent files.</source>
         <translation>%1 已不存在，已将其从最近打开的文件中移除。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="270"/>
+        <location filename="../ui/project/project_session.cpp" line="271"/>
         <source>Cannot open %1: drop a mesh file (.stl, .obj, .off, .ply) or a MultiDir project (.multidir).</source>
         <translation>无法打开 %1：请拖放网格文件（.stl、.obj、.off、.ply）或 MultiDir 项目（.multidir）。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="283"/>
+        <location filename="../ui/project/project_session.cpp" line="284"/>
         <source>There is no autosaved project to recover.</source>
         <translation>没有可恢复的自动保存项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="293"/>
+        <location filename="../ui/project/project_session.cpp" line="294"/>
         <source>Recover Unsaved Work</source>
         <translation>恢复未保存的工作</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="294"/>
+        <location filename="../ui/project/project_session.cpp" line="295"/>
         <source>MultiDir Studio did not close properly. Recover the project it autosaved on %1?</source>
         <translation>MultiDir Studio 未正常关闭。是否恢复它在 %1 自动保存的项目？</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="299"/>
+        <location filename="../ui/project/project_session.cpp" line="300"/>
         <source>It was an untitled project.</source>
         <translation>这是一个未命名的项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="300"/>
+        <location filename="../ui/project/project_session.cpp" line="301"/>
         <source>It holds unsaved changes to %1.</source>
         <translation>其中包含对 %1 的未保存更改。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="301"/>
+        <location filename="../ui/project/project_session.cpp" line="302"/>
         <source>&amp;Recover</source>
         <translation>恢复(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="302"/>
+        <location filename="../ui/project/project_session.cpp" line="303"/>
         <source>&amp;Discard</source>
         <translation>丢弃(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="303"/>
+        <location filename="../ui/project/project_session.cpp" line="304"/>
         <source>&amp;Later</source>
         <translation>稍后(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="347"/>
+        <location filename="../ui/project/project_session.cpp" line="348"/>
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="348"/>
+        <location filename="../ui/project/project_session.cpp" line="349"/>
         <source>Unsaved Changes</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="349"/>
+        <location filename="../ui/project/project_session.cpp" line="350"/>
         <source>The project %1 has changes that are not saved.</source>
         <translation>项目 %1 有尚未保存的更改。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="352"/>
+        <location filename="../ui/project/project_session.cpp" line="353"/>
         <source>Save them first?</source>
         <translation>是否先保存？</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="442"/>
-        <location filename="../ui/project/project_session.cpp" line="480"/>
+        <location filename="../ui/project/project_session.cpp" line="450"/>
+        <location filename="../ui/project/project_session.cpp" line="488"/>
         <source>Opening %1 was interrupted: another model was opened.</source>
         <translation>打开 %1 时被中断：另一个模型已被打开。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="460"/>
+        <location filename="../ui/project/project_session.cpp" line="468"/>
         <source>Rebuilding the plan of %1...</source>
         <translation>正在重建 %1 的方案...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="487"/>
+        <location filename="../ui/project/project_session.cpp" line="495"/>
         <source>The model file %1 changed since the project was saved; the plan was recomputed on the changed file.</source>
         <translation>模型文件 %1 在项目保存后已发生变化；方案已根据变化后的文件重新计算。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="501"/>
+        <location filename="../ui/project/project_session.cpp" line="509"/>
         <source>The rebuilt plan leaves %1 mm² of risky area; the project saved %2 mm².</source>
         <translation>重建的方案剩余 %1 mm² 风险面积；项目中保存的是 %2 mm²。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="506"/>
+        <location filename="../ui/project/project_session.cpp" line="514"/>
         <source>The plan could not be rebuilt on this model (%1); the model is shown without it.</source>
         <translation>无法在此模型上重建方案（%1）；模型将不带方案显示。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="522"/>
+        <location filename="../ui/project/project_session.cpp" line="530"/>
         <source>Recovered the autosaved project.</source>
         <translation>已恢复自动保存的项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="523"/>
+        <location filename="../ui/project/project_session.cpp" line="531"/>
         <source>Project %1 opened.</source>
         <translation>已打开项目 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="526"/>
+        <location filename="../ui/project/project_session.cpp" line="534"/>
         <source>Project %1</source>
         <translation>项目 %1</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="536"/>
+        <location filename="../ui/project/project_session.cpp" line="544"/>
         <source>Could not open the project %1: %2</source>
         <translation>无法打开项目 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="551"/>
+        <location filename="../ui/project/project_session.cpp" line="559"/>
         <source>Could not open the project %1: its model %2 is missing.</source>
         <translation>无法打开项目 %1：缺少其模型 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="552"/>
+        <location filename="../ui/project/project_session.cpp" line="560"/>
         <source>Put the model back at %1, or open the model where it is now and save the project again.</source>
         <translation>请将模型放回 %1，或从模型现在所在的位置打开它，然后重新保存项目。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="557"/>
+        <location filename="../ui/project/project_session.cpp" line="565"/>
         <source>Opening the project %1...</source>
         <translation>正在打开项目 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="570"/>
+        <location filename="../ui/project/project_session.cpp" line="578"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="600"/>
+        <location filename="../ui/project/project_session.cpp" line="608"/>
         <source>MultiDir Studio[*]</source>
         <translation>MultiDir Studio[*]</translation>
     </message>
     <message>
-        <location filename="../ui/project/project_session.cpp" line="600"/>
+        <location filename="../ui/project/project_session.cpp" line="608"/>
         <source>%1[*] - MultiDir Studio</source>
         <translation>%1[*] - MultiDir Studio</translation>
     </message>
@@ -2688,6 +3041,405 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 %2</source>
         <translation>%1
 %2</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SliceDialog</name>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="39"/>
+        <source>The firmware turns the platform (axis %1): one program, job.gcode, with every step.</source>
+        <translation>由固件转动平台（轴 %1）：一个包含所有步骤的程序 job.gcode。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="42"/>
+        <source>MultiDir turns the platform over Modbus (Hardware dock): one program per step.</source>
+        <translation>由 MultiDir 通过 Modbus 转动平台（“硬件”停靠窗口）：每个步骤一个程序。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="46"/>
+        <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
+        <translation>普通打印机：无法转动零件，因此只能打印单步骤方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="53"/>
+        <source>Slice the Plan</source>
+        <translation>对方案切片</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="61"/>
+        <source>Load a PrusaSlicer .ini...</source>
+        <translation>加载 PrusaSlicer .ini...</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="71"/>
+        <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
+        <translation>固件转动平台的方式：Klipper 的 MANUAL_STEPPER，或 Marlin 和 RepRapFirmware 的 G1 A</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="76"/>
+        <source>layer_height=0.3 fill_density=10%</source>
+        <translation>layer_height=0.3 fill_density=10%</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="77"/>
+        <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
+        <translation>覆盖打印机配置的 PrusaSlicer 设置，格式为 KEY=VALUE，以空格分隔</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="78"/>
+        <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
+        <translation>同时沿向上方向用切片软件的支撑对整个模型切片（用于比较）</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
+        <source>The prusa-slicer program: a name found on PATH, or a full path</source>
+        <translation>prusa-slicer 程序：可在 PATH 中找到的名称，或完整路径</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="90"/>
+        <source>Printer:</source>
+        <translation>打印机：</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
+        <source>Dialect:</source>
+        <translation>固件方言：</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="93"/>
+        <source>Slicer settings:</source>
+        <translation>切片设置：</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="95"/>
+        <source>Slicer program:</source>
+        <translation>切片程序：</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
+        <source>Slice</source>
+        <translation>切片</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="123"/>
+        <source>Cannot use the printer profile: %1</source>
+        <translation>无法使用打印机配置：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="158"/>
+        <source>Load a PrusaSlicer Printer Profile</source>
+        <translation>加载 PrusaSlicer 打印机配置</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="160"/>
+        <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
+        <translation>PrusaSlicer 配置 (*.ini);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="175"/>
+        <source>Choose a printer profile.</source>
+        <translation>请选择打印机配置。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
+        <source>Slicer settings: %1</source>
+        <translation>切片设置：%1</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SliceJobRunner</name>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="55"/>
+        <source>Slicing step %1 of %2</source>
+        <translation>正在切片步骤 %1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
+        <source>Slicing the whole model along up with the slicer&apos;s supports, for comparison</source>
+        <translation>正在沿向上方向用切片软件的支撑对整个模型切片，用于比较</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
+        <source>Stitching the steps into one program</source>
+        <translation>正在将各步骤拼接为一个程序</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="63"/>
+        <source>Reading the G-code for the preview</source>
+        <translation>正在读取 G 代码以供预览</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="69"/>
+        <source>The slicer &apos;%1&apos; was not found: install PrusaSlicer (scripts/install-deps.sh) or give the slicer program&apos;s full path in the Slice dialog.</source>
+        <translation>未找到切片软件“%1”：请安装 PrusaSlicer（scripts/install-deps.sh），或在“对方案切片”对话框中填写切片程序的完整路径。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="73"/>
+        <source>The slicer failed: its command and last output lines are below.</source>
+        <translation>切片软件运行失败：其命令和最后几行输出见下方。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
+        <translation>G 代码未通过 MultiDir 的检查，未予保留：步骤、行号和原因见下方。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="100"/>
+        <source>A slicing job is already running.</source>
+        <translation>已有切片作业正在运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="105"/>
+        <source>Could not create a temporary folder for the G-code: %1</source>
+        <translation>无法为 G 代码创建临时文件夹：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="138"/>
+        <source>Not enough memory to slice this plan.</source>
+        <translation>内存不足，无法对此方案切片。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="141"/>
+        <source>Unexpected error while slicing.</source>
+        <translation>切片时发生意外错误。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SlicePanel</name>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="43"/>
+        <source>Slice...</source>
+        <translation>切片...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="45"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="133"/>
+        <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
+        <translation>将当前方案的每个步骤连同其支撑切片为 G 代码（PrusaSlicer）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="46"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Step</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Print time</source>
+        <translation>打印时间</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Filament (m)</source>
+        <translation>耗材 (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <source>Filament (g)</source>
+        <translation>耗材 (g)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="71"/>
+        <source>Export G-code...</source>
+        <translation>导出 G 代码...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="73"/>
+        <source>Write step-NN.gcode, job.gcode (when the firmware turns the platform) and the print job with its estimates into a folder</source>
+        <translation>将 step-NN.gcode、job.gcode（由固件转动平台时）以及带估算值的打印作业写入文件夹</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="75"/>
+        <source>Preview G-code</source>
+        <translation>预览 G 代码</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="78"/>
+        <source>Show the toolpaths in place of the regions; click again for the plan view</source>
+        <translation>显示打印路径而非区域；再次点击返回方案视图</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
+        <source>Show the layers printed up to this one (all steps, in printing order)</source>
+        <translation>显示截至此层已打印的各层（所有步骤，按打印顺序）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="84"/>
+        <source>Travel moves</source>
+        <translation>空驶移动</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="98"/>
+        <source>Layers:</source>
+        <translation>层：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="102"/>
+        <source>G-code</source>
+        <translation>G 代码</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="127"/>
+        <source>Show a plan first: run a search or open a plan.</source>
+        <translation>请先显示方案：运行搜索或打开方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="145"/>
+        <source>Starting the slicer...</source>
+        <translation>正在启动切片软件...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="168"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="176"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <source>Total</source>
+        <translation>合计</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <source>Total (%1)</source>
+        <translation>合计（%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="181"/>
+        <source>Fixed direction, slicer supports</source>
+        <translation>固定方向，切片软件支撑</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
+        <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
+        <translation>整个模型沿向上方向打印并使用 PrusaSlicer 自身的支撑：用于比较</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::SliceSession</name>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="45"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="46"/>
+        <source>Slicing failed: %1</source>
+        <translation>切片失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="52"/>
+        <source>Slicing cancelled: nothing was written.</source>
+        <translation>切片已取消：未写入任何内容。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="53"/>
+        <source>Slicing cancelled.</source>
+        <translation>切片已取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="62"/>
+        <source>Show a plan first: run a search or open a plan.</source>
+        <translation>请先显示方案：运行搜索或打开方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="64"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="118"/>
+        <source>The plan&apos;s supports are still being grown: slice it when they are ready.</source>
+        <translation>方案的支撑仍在生成中：请在支撑就绪后再切片。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="76"/>
+        <source>The plan changed: slicing was cancelled.</source>
+        <translation>方案已更改：切片已取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="78"/>
+        <source>The plan changed: slice it again for its G-code.</source>
+        <translation>方案已更改：请重新切片以获得其 G 代码。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="110"/>
+        <source>There is no plan to slice: run a search or open a plan.</source>
+        <translation>没有可切片的方案：请运行搜索或打开方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="114"/>
+        <source>A slicing job is already running.</source>
+        <translation>已有切片作业正在运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="142"/>
+        <source>Slicing without supports although the plan leaves risky area: %1</source>
+        <translation>方案仍剩余风险面积，但将不带支撑切片：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="143"/>
+        <source>no supports were grown for it.</source>
+        <translation>未为其生成支撑。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="148"/>
+        <source>Slicing the plan for %1...</source>
+        <translation>正在为 %1 对方案切片...</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="155"/>
+        <source>Cancelling: stopping the slicer...</source>
+        <translation>正在取消：正在停止切片软件...</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/slicing/slice_session.cpp" line="164"/>
+        <source>Sliced for %1: %n step(s), %2 of printing.</source>
+        <translation>
+            <numerusform>已为 %1 完成切片：%n 个步骤，打印用时 %2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="168"/>
+        <source>Slicing finished.</source>
+        <translation>切片完成。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="201"/>
+        <source>Layer %1 of %2: step %3, its layer %4</source>
+        <translation>第 %1 / %2 层：步骤 %3 的第 %4 层</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="207"/>
+        <source>There is no G-code to export: slice the plan first.</source>
+        <translation>没有可导出的 G 代码：请先对方案切片。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/slicing/slice_session.cpp" line="217"/>
+        <source>G-code exported to %1 (%n file(s)).</source>
+        <translation>
+            <numerusform>G 代码已导出到 %1（%n 个文件）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <source>Export G-code to Folder</source>
+        <translation>将 G 代码导出到文件夹</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <source>-gcode</source>
+        <translation>-gcode</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="228"/>
+        <source>G-code folders (*)</source>
+        <translation>G 代码文件夹 (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="232"/>
+        <source>Export G-code</source>
+        <translation>导出 G 代码</translation>
     </message>
 </context>
 <context>
