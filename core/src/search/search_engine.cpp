@@ -180,11 +180,13 @@ std::shared_ptr<SearchNode> SearchEngine::makeChild(const std::shared_ptr<const 
                                                   ClipResult clipped, double regionRiskyMm2) const {
   auto child = makeNode(std::make_shared<const TriangleMesh>(std::move(clipped.below)));
   // The parent's faces that the child keeps unchanged (same corners, same risky share); the rest differ.
+  // (Without both analyses every face counts as changed, which is still exact.)
+  const bool sharesKnown = child->riskyUpShare.size() == child->remaining->triangles.size() &&
+                           node->riskyUpShare.size() == node->remaining->triangles.size();
   std::vector<char> kept(node->remaining->triangles.size(), 0);
   for (std::size_t f = 0; f < child->remaining->triangles.size(); ++f) {
     const std::int32_t source = f < clipped.belowSourceFace.size() ? clipped.belowSourceFace[f] : -1;
-    if (source >= 0 && child->riskyUpShare.size() == child->remaining->triangles.size() &&
-        node->riskyUpShare.size() == node->remaining->triangles.size() &&
+    if (sharesKnown && source >= 0 &&
         child->riskyUpShare[f] == node->riskyUpShare[static_cast<std::size_t>(source)])
       kept[static_cast<std::size_t>(source)] = 1;
     else
@@ -260,11 +262,7 @@ OverhangOptions SearchEngine::overhangOptions(RegionBase base) const {
 namespace {
 
 // Height of a solid along a direction above a level: its top along d minus the level.
-double heightAbove(const TriangleMesh& solid, const Vec3& d, double level) {
-  double top = -INFINITY;
-  for (const Vec3& v : solid.vertices) top = std::max(top, d.dot(v));
-  return top - level;
-}
+double heightAbove(const TriangleMesh& solid, const Vec3& d, double level) { return topAlong(solid, d) - level; }
 
 std::string millimetres(double value) {
   char text[32];
