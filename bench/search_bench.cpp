@@ -4,6 +4,9 @@
 //   multidir_search_bench [--models kitten,bunny,...] [--machine 5dof|4dof] [--axes N] [--threads N]
 //                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--refine ROUNDS]
 //                         [--min-region-height MM] [--min-plane-gain PERCENT] [--pose auto] [--poses N]
+//                         [--subdivide K] [--proxy-faces N]
+// --subdivide K: each model subdivided K times first (4^K as many faces, the same surface): the scaling runs.
+// --proxy-faces N: search a decimated proxy of models above N faces (0: always the full mesh).
 // --pose auto: after each --up y search, also the pose search (decomposeWithPoseSearch), on one line below:
 // the chosen up, regions, J_G after as a share of the up-y J_G before, its seconds and its time over up y's.
 // The default runs all nine shared models. J_G is the one definition of docs/jg-definition.md.
@@ -20,6 +23,7 @@
 #include <filesystem>
 
 #include "multidir/core/mesh/mesh_io.h"
+#include "multidir/core/mesh/mesh_resolution.h"
 #include "multidir/core/search/pose_search.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
@@ -52,6 +56,7 @@ int main(int argc, char** argv) {
   int axes = 0;
   bool verbose = false;
   bool autoPose = false;
+  int subdivisions = 0;  // each multiplies the faces by 4 (the same surface): the scaling runs
   PoseOptions poseOptions;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
@@ -69,6 +74,8 @@ int main(int argc, char** argv) {
     else if (flag == "--min-region-height") options.minRegionHeightMm = std::atof(value.c_str());
     else if (flag == "--min-plane-gain") options.minPlaneGainPercent = std::atof(value.c_str());
     else if (flag == "--verbose") verbose = value == "1";
+    else if (flag == "--subdivide") subdivisions = std::atoi(value.c_str());
+    else if (flag == "--proxy-faces") options.proxyFaces = std::atoi(value.c_str());
     else if (flag == "--pose") autoPose = value == "auto";
     else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
     else {
@@ -88,10 +95,18 @@ int main(int argc, char** argv) {
   std::vector<double> shares;
   std::vector<double> autoShares;
   for (const std::string& name : models) {
-    const auto loaded = loadMesh(std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + name + ".off");
+    auto loaded = loadMesh(std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + name + ".off");
     if (!loaded.ok()) {
       std::fprintf(stderr, "%s\n", loaded.error().describe().c_str());
       return 1;
+    }
+    if (subdivisions > 0) {
+      auto fine = subdivided(loaded->mesh, subdivisions);
+      if (!fine.ok()) {
+        std::fprintf(stderr, "%s\n", fine.error().describe().c_str());
+        return 1;
+      }
+      loaded->mesh = std::move(*fine);
     }
     JobContext job;
     const auto plan = axes > 0 ? decomposeWithAxisSearch(loaded->mesh, machine, options, axes, job)
@@ -118,6 +133,8 @@ int main(int argc, char** argv) {
                 plan->statistics.candidatesPerLevel, plan->statistics.seconds, peakMemoryMiB(), plan->regions.size(),
                 plan->jgBeforeMm2, plan->jgAfterMm2, share, saved.ok() ? "yes" : "NO");
     if (!saved.ok()) std::printf("    not saved: %s\n", saved.error().describe().c_str());
+    if (verbose)
+      for (const std::string& note : plan->statistics.notes) std::printf("    %s\n", note.c_str());
     if (verbose)
       for (std::size_t r = 0; r < plan->regions.size(); ++r) {
         const Region& region = plan->regions[r];

@@ -1,4 +1,5 @@
 #include "multidir/core/geometry/clipping.h"
+#include "detail/edge_key.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,10 +19,6 @@ namespace {
 constexpr double kUnitLengthTolerance = 1e-9;
 // How close (relative to its heights) a vertex must be to be moved onto the plane: see PlaneSplitter::snapData.
 constexpr double kSnapRatio = 1e-3;
-
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
 
 Status checkPlane(const Plane& plane, const ClipOptions& options) {
   if (!plane.normal.allFinite() || std::abs(plane.normal.norm() - 1.0) > kUnitLengthTolerance)
@@ -206,12 +203,12 @@ class PlaneSplitter {
     std::vector<std::uint64_t> cut;
     for (const Triangle& t : m_below.triangles)
       for (int k = 0; k < 3; ++k)
-        if (onPlane(t[k]) && onPlane(t[(k + 1) % 3])) cut.push_back(edgeKey(t[k], t[(k + 1) % 3]));
+        if (onPlane(t[k]) && onPlane(t[(k + 1) % 3])) cut.push_back(detail::directedEdgeKey(t[k], t[(k + 1) % 3]));
     std::sort(cut.begin(), cut.end());
     for (std::uint64_t key : cut) {
       const auto a = static_cast<std::int32_t>(key >> 32);
       const auto b = static_cast<std::int32_t>(key & 0xffffffffu);
-      if (!std::binary_search(cut.begin(), cut.end(), edgeKey(b, a)))
+      if (!std::binary_search(cut.begin(), cut.end(), detail::directedEdgeKey(b, a)))
         capEdges.push_back({b, a});
       else if (a < b)
         meshEdges.push_back({a, b});
@@ -238,7 +235,7 @@ class PlaneSplitter {
   // sides share it; computed from the lower index so it does not depend on which face asks first.
   std::int32_t crossing(std::int32_t a, std::int32_t b) {
     if (a > b) std::swap(a, b);
-    auto [it, inserted] = m_crossings.emplace(edgeKey(a, b), static_cast<std::int32_t>(m_positions.size()));
+    auto [it, inserted] = m_crossings.emplace(detail::directedEdgeKey(a, b), static_cast<std::int32_t>(m_positions.size()));
     if (inserted) {
       const Vec3& pa = m_positions[a];
       const Vec3& pb = m_positions[b];

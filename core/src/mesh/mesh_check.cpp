@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "detail/union_find.h"
+#include "detail/edge_key.h"
 #include "mesh/mesh_formats.h"
 #include "mesh/mesh_shells.h"
 #include "multidir/core/mesh/mesh_io.h"
@@ -29,12 +30,6 @@ constexpr std::int32_t kMaxShellsForNesting = 64;
 // A shell whose volume is below this times its area^(3/2) is flat (a sphere has about 0.09, a 100 mm
 // square sheet 0.01 mm thick 4e-5): rounding leaves a flat shell at 1e-17 or so.
 constexpr double kFlatShellRatio = 1e-9;
-
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
 
 std::string edgeName(std::uint64_t key) {
   return std::to_string(key >> 32) + "-" + std::to_string(key & 0xffffffffu);
@@ -187,7 +182,7 @@ std::unordered_map<std::uint64_t, EdgeUse> edgeUses(const TriangleMesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const std::int32_t a = mesh.triangles[f][static_cast<std::size_t>(k)];
       const std::int32_t b = mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)];
-      EdgeUse& use = uses[edgeKey(a, b)];
+      EdgeUse& use = uses[detail::undirectedEdgeKey(a, b)];
       if (use.count < 2) {
         use.face[static_cast<std::size_t>(use.count)] = static_cast<std::int32_t>(f);
         use.forward[static_cast<std::size_t>(use.count)] = a < b;
@@ -205,7 +200,7 @@ std::vector<std::string> firstEdges(const TriangleMesh& mesh, const std::unorder
   std::unordered_set<std::uint64_t> seen;
   for (std::size_t f = 0; f < mesh.triangles.size() && out.size() < kFirstFew; ++f)
     for (int k = 0; k < 3 && out.size() < kFirstFew; ++k) {
-      const std::uint64_t key = edgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
+      const std::uint64_t key = detail::undirectedEdgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
                                         mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)]);
       if (pick(uses.at(key).count) && seen.insert(key).second) out.push_back(edgeName(key));
     }
@@ -374,7 +369,7 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   std::vector<std::array<bool, 3>> sameDirection(faceCount);
   for (std::size_t f = 0; f < faceCount; ++f)
     for (int k = 0; k < 3; ++k) {
-      const EdgeUse& use = uses.at(edgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
+      const EdgeUse& use = uses.at(detail::undirectedEdgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
                                            mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)]));
       const std::size_t self = use.face[0] == static_cast<std::int32_t>(f) ? 0 : 1;
       neighbour[f][static_cast<std::size_t>(k)] = use.face[1 - self];

@@ -1,4 +1,5 @@
 #include "multidir/core/mesh/mesh_measure.h"
+#include "detail/edge_key.h"
 
 #include <algorithm>
 #include <unordered_map>
@@ -9,12 +10,6 @@ namespace multidir::core {
 namespace {
 
 using detail::UnionFind;
-
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
 
 }  // namespace
 
@@ -62,7 +57,7 @@ EdgeCensus edgeCensus(const TriangleMesh& mesh) {
   for (const Triangle& t : mesh.triangles) {
     for (int k = 0; k < 3; ++k) {
       const std::int32_t a = t[k], b = t[(k + 1) % 3];
-      EdgeUse& use = uses[edgeKey(a, b)];
+      EdgeUse& use = uses[detail::undirectedEdgeKey(a, b)];
       ++use.count;
       if (a < b) ++use.forward;
     }
@@ -127,7 +122,7 @@ long long eulerCharacteristic(const TriangleMesh& mesh) {
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
       used[t[k]] = 1;
-      edges.emplace(edgeKey(t[k], t[(k + 1) % 3]), 0);
+      edges.emplace(detail::undirectedEdgeKey(t[k], t[(k + 1) % 3]), 0);
     }
   const long long v = std::count(used.begin(), used.end(), 1);
   return v - static_cast<long long>(edges.size()) + static_cast<long long>(mesh.triangles.size());

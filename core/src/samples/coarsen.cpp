@@ -7,7 +7,8 @@
 
 #include "multidir/core/samples/coarsen.h"
 
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include "detail/openmesh_bridge.h"
+
 #include <array>
 #include <cmath>
 #include <string>
@@ -19,13 +20,8 @@
 namespace multidir::core::samples {
 namespace {
 
-struct Traits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-};
-using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
-
-Vec3 toEigen(const OpenMesh::Vec3d& p) { return Vec3(p[0], p[1], p[2]); }
+using Mesh = detail::HalfEdgeMesh;
+using detail::toEigen;
 
 // 4 sqrt(3) area / (sum of squared edge lengths): 1 for an equilateral triangle, 0 for a degenerate one.
 double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -121,53 +117,13 @@ Result<TriangleMesh> collapseShortEdges(const TriangleMesh& input, const Coarsen
     return invalid("the face quality bound must be in [0, 1)");
   if (options.maxPasses < 0) return invalid("the number of passes must be >= 0");
 
-  for (std::size_t f = 0; f < input.triangles.size(); ++f)
-    for (std::int32_t v : input.triangles[f])
-      if (v < 0 || static_cast<std::size_t>(v) >= input.vertices.size())
-        return Error{ErrorCode::InvalidParameter, "a vertex index is out of range", "face " + std::to_string(f)};
-  // OpenMesh would refuse such faces one by one and complain on stderr; say what is wrong up front.
-  const EdgeCensus census = edgeCensus(input);
-  if (!census.closedOriented())
-    return Error{ErrorCode::NotManifold,
-                 "only a closed, consistently oriented 2-manifold can be coarsened (" +
-                     std::to_string(census.boundary) + " open, " + std::to_string(census.nonManifold) +
-                     " non-manifold, " + std::to_string(census.misoriented) + " misoriented edges, " +
-                     std::to_string(census.nonManifoldVertices) + " non-manifold vertices); repair the mesh first",
-                 "coarsen"};
-
   Mesh mesh;
-  mesh.request_vertex_status();
-  mesh.request_edge_status();
-  mesh.request_face_status();
-  mesh.reserve(input.vertices.size(), input.triangles.size() * 3 / 2, input.triangles.size());
-  std::vector<Mesh::VertexHandle> handles;
-  handles.reserve(input.vertices.size());
-  for (const Vec3& v : input.vertices) handles.push_back(mesh.add_vertex(OpenMesh::Vec3d(v.x(), v.y(), v.z())));
-  for (std::size_t f = 0; f < input.triangles.size(); ++f) {
-    const Triangle& t = input.triangles[f];
-    if (!mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid())
-      return Error{ErrorCode::NotManifold,
-                   "the face makes an edge or vertex non-manifold or flips orientation; repair the mesh first",
-                   "face " + std::to_string(f)};
-  }
+  if (Status s = detail::toHalfEdgeMesh(input, mesh, "coarsened"); !s) return s.error();
 
   EdgeCollapser collapser(mesh, options);
   for (int pass = 0; pass < options.maxPasses; ++pass)
     if (collapser.sweep() == 0) break;
-  mesh.garbage_collection();
-
-  TriangleMesh out;
-  out.vertices.reserve(mesh.n_vertices());
-  for (Mesh::VertexHandle v : mesh.vertices()) out.vertices.push_back(toEigen(mesh.point(v)));
-  out.triangles.reserve(mesh.n_faces());
-  for (Mesh::FaceHandle f : mesh.faces()) {
-    Triangle t{};
-    int k = 0;
-    for (Mesh::VertexHandle v : mesh.fv_range(f)) t[k++] = v.idx();
-    out.triangles.push_back(t);
-  }
-  out.resetOrigins();
-  return out;
+  return detail::fromHalfEdgeMesh(mesh);
 }
 
 }  // namespace multidir::core::samples

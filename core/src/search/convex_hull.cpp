@@ -1,4 +1,5 @@
 #include "multidir/core/search/convex_hull.h"
+#include "detail/edge_key.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,10 +19,6 @@ struct HullFace {
   bool alive = true;
   std::vector<std::int32_t> outside;  // points strictly above the face, not yet on the hull
 };
-
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
 
 class Quickhull {
  public:
@@ -109,9 +106,9 @@ class Quickhull {
     f.offset = f.normal.dot(m_p[a]);
     const auto id = static_cast<std::int32_t>(m_faces.size());
     m_faces.push_back(std::move(f));
-    m_edges[edgeKey(a, b)] = id;
-    m_edges[edgeKey(b, c)] = id;
-    m_edges[edgeKey(c, a)] = id;
+    m_edges[detail::directedEdgeKey(a, b)] = id;
+    m_edges[detail::directedEdgeKey(b, c)] = id;
+    m_edges[detail::directedEdgeKey(c, a)] = id;
     return id;
   }
 
@@ -139,7 +136,7 @@ class Quickhull {
     for (std::size_t i = 0; i < visible.size(); ++i) {
       const HullFace& f = m_faces[visible[i]];
       for (int k = 0; k < 3; ++k) {
-        const auto it = m_edges.find(edgeKey(f.v[(k + 1) % 3], f.v[k]));
+        const auto it = m_edges.find(detail::directedEdgeKey(f.v[(k + 1) % 3], f.v[k]));
         if (it == m_edges.end()) continue;
         const std::int32_t g = it->second;
         if (!isVisible[g] && m_faces[g].alive && distance(m_faces[g], apex) > m_eps) {
@@ -155,7 +152,7 @@ class Quickhull {
       HullFace& f = m_faces[id];
       for (int k = 0; k < 3; ++k) {
         const std::int32_t a = f.v[k], b = f.v[(k + 1) % 3];
-        const auto it = m_edges.find(edgeKey(b, a));
+        const auto it = m_edges.find(detail::directedEdgeKey(b, a));
         if (it == m_edges.end() || !isVisible[it->second]) horizon.emplace_back(a, b);
       }
       for (std::int32_t p : f.outside)
@@ -166,7 +163,7 @@ class Quickhull {
     for (std::int32_t id : visible) {
       const HullFace& f = m_faces[id];
       for (int k = 0; k < 3; ++k) {
-        const auto it = m_edges.find(edgeKey(f.v[k], f.v[(k + 1) % 3]));
+        const auto it = m_edges.find(detail::directedEdgeKey(f.v[k], f.v[(k + 1) % 3]));
         if (it != m_edges.end() && it->second == id) m_edges.erase(it);
       }
     }
@@ -227,7 +224,7 @@ std::vector<HullFacet> mergedFacets(const ConvexHull& hull, double mergeDegrees)
     const Vec3 an = (hull.vertices[t[1]] - hull.vertices[t[0]]).cross(hull.vertices[t[2]] - hull.vertices[t[0]]);
     areas[f] = 0.5 * an.norm();
     normals[f] = an.normalized();
-    for (int k = 0; k < 3; ++k) edges[edgeKey(t[k], t[(k + 1) % 3])] = static_cast<std::int32_t>(f);
+    for (int k = 0; k < 3; ++k) edges[detail::directedEdgeKey(t[k], t[(k + 1) % 3])] = static_cast<std::int32_t>(f);
   }
   // Largest triangles seed groups first, so a patch grows from its bulk, not from a sliver at its rim.
   std::vector<std::size_t> order(n);
@@ -243,7 +240,7 @@ std::vector<HullFacet> mergedFacets(const ConvexHull& hull, double mergeDegrees)
     for (std::size_t i = 0; i < group.size(); ++i) {
       const Triangle& t = hull.triangles[group[i]];
       for (int k = 0; k < 3; ++k) {
-        const auto it = edges.find(edgeKey(t[(k + 1) % 3], t[k]));
+        const auto it = edges.find(detail::directedEdgeKey(t[(k + 1) % 3], t[k]));
         if (it == edges.end()) continue;
         const auto g = static_cast<std::size_t>(it->second);
         if (!used[g] && normals[g].dot(normals[seed]) >= cosMerge) {

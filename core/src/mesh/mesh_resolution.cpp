@@ -1,0 +1,86 @@
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"  // see detail/openmesh_bridge.cpp
+#endif
+
+#include "multidir/core/mesh/mesh_resolution.h"
+
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <unordered_map>
+
+#include "detail/edge_key.h"
+#include "detail/openmesh_bridge.h"
+#include "multidir/core/mesh/mesh_measure.h"
+
+namespace multidir::core {
+
+Result<TriangleMesh> subdivided(const TriangleMesh& mesh, int levels) {
+  if (levels < 0 || levels > 6)
+    return Error{ErrorCode::InvalidParameter, "subdivide 0 to 6 times (each multiplies the faces by 4)", "subdivide"};
+  if (static_cast<double>(mesh.triangles.size()) * std::pow(4.0, levels) > 2147483647.0)
+    return Error{ErrorCode::InvalidParameter, "that many subdivisions would make more than 2^31 faces", "subdivide"};
+  TriangleMesh current = mesh;
+  for (int level = 0; level < levels; ++level) {
+    TriangleMesh next;
+    next.vertices = current.vertices;
+    next.triangles.reserve(current.triangles.size() * 4);
+    // Each edge's midpoint once, shared by the edge's two faces so the result stays closed.
+    std::unordered_map<std::uint64_t, std::int32_t> midpoints;
+    midpoints.reserve(current.triangles.size() * 2);
+    auto midpoint = [&](std::int32_t a, std::int32_t b) {
+      const std::uint64_t key = detail::undirectedEdgeKey(a, b);
+      auto [it, inserted] = midpoints.emplace(key, static_cast<std::int32_t>(next.vertices.size()));
+      if (inserted) next.vertices.push_back(0.5 * (current.vertices[a] + current.vertices[b]));
+      return it->second;
+    };
+    for (const Triangle& t : current.triangles) {
+      const std::int32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      next.triangles.push_back({t[0], ab, ca});
+      next.triangles.push_back({ab, t[1], bc});
+      next.triangles.push_back({ca, bc, t[2]});
+      next.triangles.push_back({ab, bc, ca});
+    }
+    next.resetOrigins();
+    current = std::move(next);
+  }
+  return current;
+}
+
+Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double maxVolumeChangePercent) {
+  if (targetFaces < 100)
+    return Error{ErrorCode::InvalidParameter, "decimate to at least 100 faces", "decimate"};
+  detail::HalfEdgeMesh halfEdges;
+  if (Status s = detail::toHalfEdgeMesh(mesh, halfEdges, "decimated"); !s) return s.error();
+  halfEdges.request_face_normals();
+  halfEdges.update_face_normals();
+  {
+    using Decimater = OpenMesh::Decimater::DecimaterT<detail::HalfEdgeMesh>;
+    Decimater decimater(halfEdges);
+    OpenMesh::Decimater::ModQuadricT<detail::HalfEdgeMesh>::Handle quadric;
+    OpenMesh::Decimater::ModNormalFlippingT<detail::HalfEdgeMesh>::Handle noFlips;
+    decimater.add(quadric);
+    decimater.add(noFlips);
+    decimater.module(quadric).unset_max_err();  // the face count decides; the checks below keep the shape
+    decimater.initialize();
+    decimater.decimate_to_faces(0, targetFaces);
+  }
+  DecimationResult out;
+  out.mesh = detail::fromHalfEdgeMesh(halfEdges);
+  const double before = signedVolume(mesh), after = signedVolume(out.mesh);
+  out.volumeChangePercent = before > 0 ? 100.0 * std::abs(after - before) / before : 100.0;
+  if (!edgeCensus(out.mesh).closedOriented())
+    return Error{ErrorCode::CheckFailed, "the decimated mesh is not closed any more", "decimate"};
+  if (!(out.volumeChangePercent <= maxVolumeChangePercent)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "decimating changed the volume by %.2f %% (at most %.2f %% allowed)",
+                  out.volumeChangePercent, maxVolumeChangePercent);
+    return Error{ErrorCode::CheckFailed, text, "decimate"};
+  }
+  return out;
+}
+
+}  // namespace multidir::core
