@@ -5,6 +5,7 @@
 #include "multidir/core/mesh/mesh_resolution.h"
 
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModAspectRatioT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <cmath>
@@ -62,8 +63,14 @@ Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetF
     Decimater decimater(halfEdges);
     OpenMesh::Decimater::ModQuadricT<detail::HalfEdgeMesh>::Handle quadric;
     OpenMesh::Decimater::ModNormalFlippingT<detail::HalfEdgeMesh>::Handle noFlips;
+    // No slivers: the search clips the proxy thousands of times, and a sliver's crossing points lie closer
+    // than a float can tell apart, so every cut through one would be re-placed and refused.
+    OpenMesh::Decimater::ModAspectRatioT<detail::HalfEdgeMesh>::Handle noSlivers;
     decimater.add(quadric);
     decimater.add(noFlips);
+    decimater.add(noSlivers);
+    decimater.module(noSlivers).set_aspect_ratio(8.0f);
+    decimater.module(noSlivers).set_binary(true);
     decimater.module(quadric).unset_max_err();  // the face count decides; the checks below keep the shape
     decimater.initialize();
     decimater.decimate_to_faces(0, targetFaces);
