@@ -4,8 +4,9 @@
 //   multidir_search_bench [--models kitten,bunny,...] [--machine 5dof|4dof] [--axes N] [--threads N]
 //                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--refine ROUNDS]
 //                         [--min-region-height MM] [--min-plane-gain PERCENT] [--pose auto] [--poses N]
-//                         [--subdivide K]
+//                         [--subdivide K] [--proxy-faces N]
 // --subdivide K: each model subdivided K times first (4^K as many faces, the same surface): the scaling runs.
+// --proxy-faces N: search a decimated proxy of models above N faces (0: always the full mesh).
 // --pose auto: after each --up y search, also the pose search (decomposeWithPoseSearch), on one line below:
 // the chosen up, regions, J_G after as a share of the up-y J_G before, its seconds and its time over up y's.
 // The default runs all nine shared models. J_G is the one definition of docs/jg-definition.md.
@@ -74,6 +75,7 @@ int main(int argc, char** argv) {
     else if (flag == "--min-plane-gain") options.minPlaneGainPercent = std::atof(value.c_str());
     else if (flag == "--verbose") verbose = value == "1";
     else if (flag == "--subdivide") subdivisions = std::atoi(value.c_str());
+    else if (flag == "--proxy-faces") options.proxyFaces = std::atoi(value.c_str());
     else if (flag == "--pose") autoPose = value == "auto";
     else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
     else {
@@ -131,6 +133,8 @@ int main(int argc, char** argv) {
                 plan->statistics.candidatesPerLevel, plan->statistics.seconds, peakMemoryMiB(), plan->regions.size(),
                 plan->jgBeforeMm2, plan->jgAfterMm2, share, saved.ok() ? "yes" : "NO");
     if (!saved.ok()) std::printf("    not saved: %s\n", saved.error().describe().c_str());
+    if (verbose)
+      for (const std::string& note : plan->statistics.notes) std::printf("    %s\n", note.c_str());
     if (verbose)
       for (std::size_t r = 0; r < plan->regions.size(); ++r) {
         const Region& region = plan->regions[r];

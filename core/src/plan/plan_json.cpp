@@ -42,7 +42,9 @@ ordered_json statisticsToJson(const SearchStatistics& s) {
           {"levels", s.levels},
           {"clipsPerformed", s.clipsPerformed},
           {"seconds", s.seconds},
-          {"threads", s.threads}};
+          {"threads", s.threads},
+          {"proxyFaces", s.proxyFaces},
+          {"notes", s.notes}};
 }
 
 SearchStatistics statisticsFromJson(const JsonField& field) {
@@ -54,6 +56,10 @@ SearchStatistics statisticsFromJson(const JsonField& field) {
   s.clipsPerformed = static_cast<int>(field["clipsPerformed"].integer(0, kMaxCount));
   s.seconds = field["seconds"].numberAtLeast(0.0);
   s.threads = static_cast<int>(field["threads"].integer(1, kMaxCount));
+  // Written since the proxy search; older plans have neither.
+  if (const auto proxy = field.optional("proxyFaces")) s.proxyFaces = static_cast<int>(proxy->integer(0, kMaxCount));
+  if (const auto notes = field.optional("notes"))
+    for (std::size_t i = 0; i < notes->arraySize(); ++i) s.notes.push_back(notes->element(i).string());
   return s;
 }
 

@@ -48,6 +48,7 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"minRegionHeightMm", o.minRegionHeightMm},
           {"minPlaneGainPercent", o.minPlaneGainPercent},
           {"minPlaneGainMm2", o.minPlaneGainMm2},
+          {"proxyFaces", o.proxyFaces},
           {"platformToleranceMm", o.platformToleranceMm},
           {"threads", o.threads}};
 }
@@ -108,6 +109,9 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   o.minPlaneGainPercent = gainPercent ? gainPercent->number() : 0.0;
   const auto gainArea = field.optional("minPlaneGainMm2");
   o.minPlaneGainMm2 = gainArea ? gainArea->number() : 0.0;
+  // Plans saved before the proxy search ran on the full mesh.
+  const auto proxy = field.optional("proxyFaces");
+  o.proxyFaces = proxy ? static_cast<int>(proxy->integer(0, 10000000)) : 0;
   o.platformToleranceMm = field["platformToleranceMm"].number();
   o.threads = smallInteger(field["threads"]);
   if (Status valid = validate(o); !valid) field.failInside(valid.error().message, ErrorCode::InvalidParameter);

@@ -278,10 +278,10 @@ NodePtr rebuild(SearchEngine& engine, NodePtr start, const std::vector<Plane>& p
   return node;
 }
 
-// A plane is kept only if it pays for itself: each region costs a platform move and a seam. Removes, one at a
-// time, the plane whose removal raises J_G least, while that rise stays below the threshold and the other
-// planes still make a valid plan.
-NodePtr withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOptions& o) {
+}  // namespace
+
+// A plane is kept only if it pays for itself: each region costs a platform move and a seam.
+NodePtr detail::withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOptions& o) {
   const double threshold = std::max(o.minPlaneGainMm2, o.minPlaneGainPercent / 100.0 * engine.root()->riskyUpAreaMm2);
   std::vector<Plane> planes = planesOf(node);
   while (!planes.empty()) {
@@ -303,8 +303,6 @@ NodePtr withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOpti
   }
   return node;
 }
-
-}  // namespace
 
 Status detail::checkSearchInputs(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options) {
   if (Status s = validate(options); !s) return s;
@@ -355,7 +353,9 @@ using detail::runDecomposition;
 Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                 JobContext& job, const SearchProgressSink& progress) {
   if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
-  Decomposition plan = runDecomposition(model, machine, options, job, progress);
+  const bool huge = options.proxyFaces > 0 && model.faceCount() > static_cast<std::size_t>(options.proxyFaces);
+  Decomposition plan = huge ? detail::runProxyDecomposition(model, machine, options, job, progress)
+                            : runDecomposition(model, machine, options, job, progress);
   job.setProgress(1.0, "search done");
   return plan;
 }

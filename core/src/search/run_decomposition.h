@@ -1,6 +1,8 @@
 #pragma once
 // The decomposition search without the public entry's bookkeeping, for searches that run many of them (4-DOF
 // axes, poses) and report their own progress.
+#include <memory>
+
 #include "multidir/core/common/job_context.h"
 #include "multidir/core/search/decomposition.h"
 
@@ -13,5 +15,18 @@ Status checkSearchInputs(const TriangleMesh& model, const MachineSpec& machine, 
 // returns a plan (the uncut model at least); `cancelled` is set when the job was cancelled.
 Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                JobContext& job, const SearchProgressSink& progress);
+
+// The same on a decimated proxy of a huge model (options.proxyFaces), its planes then applied to the full mesh
+// with their offsets polished there; every number of the plan is the full mesh's. Falls back to the full
+// search (and says why in statistics.notes) when the model cannot be decimated faithfully.
+Decomposition runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                                    JobContext& job, const SearchProgressSink& progress);
+
+class SearchEngine;
+struct SearchNode;
+// Removes, one at a time, the plane whose removal raises J_G least while that rise stays below the plane-gain
+// threshold (options.minPlaneGainPercent / minPlaneGainMm2) and the other planes still make a valid plan.
+std::shared_ptr<const SearchNode> withoutUnpaidPlanes(SearchEngine& engine, std::shared_ptr<const SearchNode> node,
+                                                      const SearchOptions& options);
 
 }  // namespace multidir::core::detail

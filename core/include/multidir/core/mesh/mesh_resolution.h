@@ -1,9 +1,11 @@
 #pragma once
-// The same solid with more triangles.
+// The same solid with more or fewer triangles.
 //
 // subdivided: every triangle split into four at its edge midpoints, `levels` times (4^levels as many faces);
 // the surface, volume and every overhang stay exactly the same. The bench uses it to make million-triangle
 // versions of the shared models.
+// decimated: OpenMesh's quadric-error decimation down to about `targetFaces` faces, refusing collapses that
+// flip a face; the search runs on such a proxy of a huge model and applies its planes to the full mesh.
 #include <cstddef>
 
 #include "multidir/core/common/result.h"
@@ -13,5 +15,15 @@ namespace multidir::core {
 
 // Errors: InvalidParameter (levels outside [0, 6], or more than 2^31 faces would result).
 Result<TriangleMesh> subdivided(const TriangleMesh& mesh, int levels);
+
+struct DecimationResult {
+  TriangleMesh mesh;
+  double volumeChangePercent = 0.0;  // |V_decimated - V| / V, in percent
+};
+
+// Errors: InvalidParameter (targetFaces < 100), NotManifold (not a closed oriented 2-manifold), CheckFailed
+// when the result is not closed any more or its volume differs by more than maxVolumeChangePercent: then
+// the model is not one to decimate, and the caller uses the full mesh.
+Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double maxVolumeChangePercent = 0.5);
 
 }  // namespace multidir::core

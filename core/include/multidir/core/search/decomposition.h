@@ -1,6 +1,7 @@
 #pragma once
 // The result of the search: regions in printing order, each with the direction it is printed along.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "multidir/core/geometry/plane.h"
@@ -27,6 +28,10 @@ struct SearchStatistics {
   int clipsPerformed = 0;
   double seconds = 0.0;
   int threads = 1;
+  int proxyFaces = 0;  // faces of the decimated proxy the search ran on (0: it ran on the full mesh)
+  // What happened between the proxy and the full mesh: planes polished, replaced or dropped, or why no proxy
+  // was used. One sentence each, for the log and the studio.
+  std::vector<std::string> notes;
 };
 
 struct Decomposition {

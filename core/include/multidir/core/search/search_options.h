@@ -48,6 +48,10 @@ struct SearchOptions {
   double minPlaneGainMm2 = 1.0;
   double platformToleranceMm = kDefaultPlatformToleranceMm;  // how close a solid must reach to touch the platform
   int threads = 0;                          // 0: all hardware threads
+  // Models with more faces than this are searched on a decimated proxy of about this many faces; the planes
+  // found are then applied to the full mesh, each offset polished there, and every number is measured on the
+  // full mesh (docs/search.md). 0: always search the full mesh. 0 or in [1000, 10^7].
+  int proxyFaces = 50000;
 };
 
 Status validate(const SearchOptions& options);
