@@ -13,6 +13,7 @@
 
 #include "detail/union_find.h"
 #include "detail/edge_key.h"
+#include "mesh/edge_groups.h"
 #include "mesh/mesh_formats.h"
 #include "mesh/mesh_shells.h"
 #include "multidir/core/mesh/mesh_io.h"
@@ -34,14 +35,6 @@ constexpr double kFlatShellRatio = 1e-9;
 std::string edgeName(std::uint64_t key) {
   return std::to_string(key >> 32) + "-" + std::to_string(key & 0xffffffffu);
 }
-
-struct TripleHash {
-  std::size_t operator()(const std::array<std::int32_t, 3>& t) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::int32_t v : t) h = (h ^ static_cast<std::uint32_t>(v)) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
 
 // Collects the defects and repairs of one check and turns an unrepairable one into an Error.
 class Checker {
@@ -76,64 +69,116 @@ std::string firstList(const std::string& what, const std::vector<std::int64_t>& 
   return " (first: " + what + " " + joinIndices(first) + (count > first.size() ? ", ..." : "") + ")";
 }
 
-// Welds vertices closer than `tolerance` (Euclidean) to the first such vertex in index order, through a
-// grid of cells of that size. Returns the new index of every vertex (-1 for vertices no face uses).
+// Open addressing over 64-bit hashes, for the welding below: an unordered_map allocates a node per entry, which
+// is most of the cost of loading a million-triangle STL.
+class FlatIndex {
+ public:
+  explicit FlatIndex(std::size_t entries) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * entries) capacity *= 2;
+    m_slots.assign(capacity, -1);
+    m_mask = capacity - 1;
+  }
+  // The slot where `matches` holds for the stored value, or the empty slot where it would go.
+  template <typename Matches>
+  std::int32_t& find(std::uint64_t hash, Matches matches) {
+    for (std::size_t i = mix(hash) & m_mask;; i = (i + 1) & m_mask)
+      if (m_slots[i] < 0 || matches(m_slots[i])) return m_slots[i];
+  }
+
+ private:
+  static std::size_t mix(std::uint64_t h) {
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    return static_cast<std::size_t>(h);
+  }
+  std::vector<std::int32_t> m_slots;
+  std::size_t m_mask = 0;
+};
+
+std::uint64_t hashOf(const std::array<std::int64_t, 3>& c) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+  return h;
+}
+
+// Welds vertices closer than `tolerance` (Euclidean) to the first such vertex found, through a grid of cells
+// of that size. Returns the new index of every vertex (-1 for vertices no face uses). A vertex equal to one
+// already kept (an STL repeats every corner) is found by its exact coordinates first: no kept vertex other than
+// that one can lie within the tolerance, since kept vertices are farther apart than it.
 std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const std::vector<char>& used,
                                        double tolerance, std::vector<Vec3>& welded, std::size_t& merged,
                                        std::vector<std::int64_t>& firstMerged) {
   std::vector<std::int32_t> map(points.size(), -1);
-  struct CellHash {
-    std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
-      std::uint64_t h = 1469598103934665603ull;
-      for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
-      return static_cast<std::size_t>(h);
-    }
-  };
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::int32_t>, CellHash> cells;
-  cells.reserve(points.size());
   // With a zero tolerance, or coordinates too large for integer cells, only identical points merge.
   double maxAbs = 0.0;
   for (std::size_t v = 0; v < points.size(); ++v)
     if (used[v]) maxAbs = std::max(maxAbs, points[v].cwiseAbs().maxCoeff());
   const bool exactOnly = !(tolerance > 0.0) || maxAbs / tolerance > 1e15;
-  auto cellOf = [&](const Vec3& p) -> std::array<std::int64_t, 3> {
-    if (exactOnly) {
-      std::array<std::int64_t, 3> bits{};
-      for (int i = 0; i < 3; ++i) {
-        const double c = p[i] == 0.0 ? 0.0 : p[i];  // -0 and +0 are one point
-        std::memcpy(&bits[static_cast<std::size_t>(i)], &c, sizeof(double));
-      }
-      return bits;
+  auto bitsOf = [](const Vec3& p) {
+    std::array<std::int64_t, 3> bits{};
+    for (int i = 0; i < 3; ++i) {
+      const double c = p[i] == 0.0 ? 0.0 : p[i];  // -0 and +0 are one point
+      std::memcpy(&bits[static_cast<std::size_t>(i)], &c, sizeof(double));
     }
+    return bits;
+  };
+  auto cellOf = [&](const Vec3& p) -> std::array<std::int64_t, 3> {
     return {static_cast<std::int64_t>(std::floor(p.x() / tolerance)),
             static_cast<std::int64_t>(std::floor(p.y() / tolerance)),
             static_cast<std::int64_t>(std::floor(p.z() / tolerance))};
   };
+  const auto usedCount = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
+  FlatIndex exact(usedCount);
+  // Kept vertices by cell: the first of each cell in the index, the rest chained in the order they came.
+  FlatIndex cells(exactOnly ? 0 : usedCount);
+  std::vector<std::array<std::int64_t, 3>> cellOfKept;
+  std::vector<std::int32_t> nextInCell, lastInCell;
   const double toleranceSquared = tolerance * tolerance;
   for (std::size_t v = 0; v < points.size(); ++v) {
     if (!used[v]) continue;
     const Vec3& p = points[v];
-    const auto cell = cellOf(p);
-    std::int32_t found = -1;
-    const int reach = exactOnly ? 0 : 1;
-    for (int dx = -reach; dx <= reach && found < 0; ++dx)
-      for (int dy = -reach; dy <= reach && found < 0; ++dy)
-        for (int dz = -reach; dz <= reach && found < 0; ++dz) {
-          auto it = cells.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
-          if (it == cells.end()) continue;
-          for (std::int32_t w : it->second)
-            if ((welded[static_cast<std::size_t>(w)] - p).squaredNorm() <= toleranceSquared) {
-              found = w;
-              break;
-            }
-        }
+    std::int32_t& same = exact.find(hashOf(bitsOf(p)), [&](std::int32_t w) {
+      const Vec3& q = welded[static_cast<std::size_t>(w)];
+      return q.x() == p.x() && q.y() == p.y() && q.z() == p.z();
+    });
+    std::int32_t found = same;
+    std::array<std::int64_t, 3> cell{};
+    if (found < 0 && !exactOnly) {
+      cell = cellOf(p);
+      for (int dx = -1; dx <= 1 && found < 0; ++dx)
+        for (int dy = -1; dy <= 1 && found < 0; ++dy)
+          for (int dz = -1; dz <= 1 && found < 0; ++dz) {
+            const std::array<std::int64_t, 3> near{cell[0] + dx, cell[1] + dy, cell[2] + dz};
+            const std::int32_t first =
+                cells.find(hashOf(near), [&](std::int32_t w) { return cellOfKept[static_cast<std::size_t>(w)] == near; });
+            for (std::int32_t w = first; w >= 0; w = nextInCell[static_cast<std::size_t>(w)])
+              if ((welded[static_cast<std::size_t>(w)] - p).squaredNorm() <= toleranceSquared) {
+                found = w;
+                break;
+              }
+          }
+    }
     if (found >= 0) {
       map[v] = found;
       if (merged++ < kFirstFew) firstMerged.push_back(static_cast<std::int64_t>(v));
+      continue;
+    }
+    const auto index = static_cast<std::int32_t>(welded.size());
+    map[v] = index;
+    same = index;
+    welded.push_back(p);
+    if (exactOnly) continue;
+    cellOfKept.push_back(cell);
+    nextInCell.push_back(-1);
+    lastInCell.push_back(index);
+    std::int32_t& first = cells.find(hashOf(cell), [&](std::int32_t w) { return cellOfKept[static_cast<std::size_t>(w)] == cell; });
+    if (first < 0) {
+      first = index;
     } else {
-      map[v] = static_cast<std::int32_t>(welded.size());
-      cells[cell].push_back(map[v]);
-      welded.push_back(p);
+      nextInCell[static_cast<std::size_t>(lastInCell[static_cast<std::size_t>(first)])] = index;
+      lastInCell[static_cast<std::size_t>(first)] = index;
     }
   }
   return map;
@@ -169,41 +214,16 @@ std::vector<std::int64_t> firstNonManifoldVertices(const TriangleMesh& mesh) {
   return out;
 }
 
-struct EdgeUse {
-  int count = 0;
-  std::array<std::int32_t, 2> face{-1, -1};
-  std::array<bool, 2> forward{false, false};  // the face traverses the edge from lower to higher index
-};
-
-std::unordered_map<std::uint64_t, EdgeUse> edgeUses(const TriangleMesh& mesh) {
-  std::unordered_map<std::uint64_t, EdgeUse> uses;
-  uses.reserve(mesh.triangles.size() * 2);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = mesh.triangles[f][static_cast<std::size_t>(k)];
-      const std::int32_t b = mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)];
-      EdgeUse& use = uses[detail::undirectedEdgeKey(a, b)];
-      if (use.count < 2) {
-        use.face[static_cast<std::size_t>(use.count)] = static_cast<std::int32_t>(f);
-        use.forward[static_cast<std::size_t>(use.count)] = a < b;
-      }
-      ++use.count;
-    }
-  return uses;
-}
-
 // Edges of faces, in face order, whose use count satisfies `pick`: the first few, for messages.
 template <typename Pick>
-std::vector<std::string> firstEdges(const TriangleMesh& mesh, const std::unordered_map<std::uint64_t, EdgeUse>& uses,
-                                    Pick pick) {
+std::vector<std::string> firstEdges(const TriangleMesh& mesh, const detail::EdgeGroups& groups, Pick pick) {
   std::vector<std::string> out;
-  std::unordered_set<std::uint64_t> seen;
-  for (std::size_t f = 0; f < mesh.triangles.size() && out.size() < kFirstFew; ++f)
-    for (int k = 0; k < 3 && out.size() < kFirstFew; ++k) {
-      const std::uint64_t key = detail::undirectedEdgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
-                                        mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)]);
-      if (pick(uses.at(key).count) && seen.insert(key).second) out.push_back(edgeName(key));
-    }
+  std::unordered_set<std::uint32_t> seen;
+  for (std::uint32_t h = 0; h < mesh.triangles.size() * 3 && out.size() < kFirstFew; ++h) {
+    const std::uint32_t g = groups.groupOfHalfEdge[h];
+    if (pick(groups.useCount(g)) && seen.insert(g).second)
+      out.push_back(edgeName(detail::undirectedEdgeKey(detail::halfEdgeFrom(mesh, h), detail::halfEdgeTo(mesh, h))));
+  }
   return out;
 }
 
@@ -307,8 +327,16 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
 
   // Duplicate faces: the same three corners, in any order.
   {
-    std::unordered_set<std::array<std::int32_t, 3>, TripleHash> seen;
-    seen.reserve(mesh.triangles.size());
+    // Sorted by corners, then by face: in each run of equal corners every face but the first repeats it.
+    std::vector<std::pair<std::array<std::int32_t, 3>, std::uint32_t>> byCorners(mesh.triangles.size());
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      byCorners[f] = {mesh.triangles[f], static_cast<std::uint32_t>(f)};
+      std::sort(byCorners[f].first.begin(), byCorners[f].first.end());
+    }
+    std::sort(byCorners.begin(), byCorners.end());
+    std::vector<char> repeats(mesh.triangles.size(), 0);
+    for (std::size_t i = 1; i < byCorners.size(); ++i)
+      if (byCorners[i].first == byCorners[i - 1].first) repeats[byCorners[i].second] = 1;
     std::size_t duplicates = 0;
     std::vector<std::int64_t> first;
     std::vector<Triangle> kept;
@@ -316,9 +344,7 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
     kept.reserve(mesh.triangles.size());
     keptSource.reserve(mesh.triangles.size());
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-      std::array<std::int32_t, 3> sorted = mesh.triangles[f];
-      std::sort(sorted.begin(), sorted.end());
-      if (!seen.insert(sorted).second) {
+      if (repeats[f]) {
         if (duplicates++ < kFirstFew) first.push_back(sourceFace[f]);
         continue;
       }
@@ -336,14 +362,14 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   }
 
   // Topology: every edge on exactly two faces, every vertex one fan. Not repairable automatically.
-  const EdgeCensus census = edgeCensus(mesh);
-  const auto uses = edgeUses(mesh);
+  const detail::EdgeGroups groups = detail::edgeGroups(mesh);
+  const EdgeCensus census = detail::edgeCensus(mesh, groups);
   std::vector<std::string> problems;
   ErrorCode firstCode = ErrorCode::NotManifold;
   if (census.nonManifold > 0)
     problems.push_back("not a 2-manifold: " + withThousands(census.nonManifold) +
                        " edges are shared by more than two faces" +
-                       edgeList(firstEdges(mesh, uses, [](int c) { return c > 2; }), census.nonManifold) +
+                       edgeList(firstEdges(mesh, groups, [](std::uint32_t c) { return c > 2; }), census.nonManifold) +
                        ". Separate the touching parts in a mesh editor (e.g. MeshLab's 'Repair non Manifold Edges')");
   if (census.nonManifoldVertices > 0)
     problems.push_back("not a 2-manifold: " + withThousands(census.nonManifoldVertices) +
@@ -353,7 +379,7 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   if (census.boundary > 0) {
     if (problems.empty()) firstCode = ErrorCode::OpenBoundary;
     problems.push_back("not a solid: " + withThousands(census.boundary) + " open boundary edges" +
-                       edgeList(firstEdges(mesh, uses, [](int c) { return c == 1; }), census.boundary) +
+                       edgeList(firstEdges(mesh, groups, [](std::uint32_t c) { return c == 1; }), census.boundary) +
                        ". Close the holes in a mesh editor (e.g. MeshLab's 'Close Holes') and load it again");
   }
   if (!problems.empty()) {
@@ -367,14 +393,13 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   const std::size_t faceCount = mesh.triangles.size();
   std::vector<std::array<std::int32_t, 3>> neighbour(faceCount);
   std::vector<std::array<bool, 3>> sameDirection(faceCount);
-  for (std::size_t f = 0; f < faceCount; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const EdgeUse& use = uses.at(detail::undirectedEdgeKey(mesh.triangles[f][static_cast<std::size_t>(k)],
-                                           mesh.triangles[f][static_cast<std::size_t>((k + 1) % 3)]));
-      const std::size_t self = use.face[0] == static_cast<std::int32_t>(f) ? 0 : 1;
-      neighbour[f][static_cast<std::size_t>(k)] = use.face[1 - self];
-      sameDirection[f][static_cast<std::size_t>(k)] = use.forward[0] == use.forward[1];
-    }
+  for (std::uint32_t h = 0; h < faceCount * 3; ++h) {
+    // Every edge has two faces here (checked above): the other half-edge of its group.
+    const std::uint32_t first = groups.groupStart[groups.groupOfHalfEdge[h]];
+    const std::uint32_t other = groups.halfEdges[first] == h ? groups.halfEdges[first + 1] : groups.halfEdges[first];
+    neighbour[h / 3][h % 3] = static_cast<std::int32_t>(other / 3);
+    sameDirection[h / 3][h % 3] = detail::halfEdgeFrom(mesh, h) == detail::halfEdgeFrom(mesh, other);
+  }
   const FaceComponents components = faceComponents(mesh);
   std::vector<char> flipped(faceCount, 0), visited(faceCount, 0);
   std::size_t flips = 0;
@@ -509,7 +534,7 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   out.mesh = std::move(mesh);
   out.mesh.resetOrigins();
   out.report = std::move(check.report());
-  out.report.statistics = computeStatistics(out.mesh);
+  out.report.statistics = detail::computeStatistics(out.mesh, true);  // closed and oriented: checked above
   return out;
 }
 

@@ -1,10 +1,10 @@
 #include "multidir/core/mesh/mesh_measure.h"
-#include "detail/edge_key.h"
 
 #include <algorithm>
 #include <unordered_map>
 
 #include "detail/union_find.h"
+#include "mesh/edge_groups.h"
 
 namespace multidir::core {
 namespace {
@@ -47,53 +47,36 @@ BoundingBox boundingBox(const TriangleMesh& mesh) {
   return box;
 }
 
-EdgeCensus edgeCensus(const TriangleMesh& mesh) {
-  struct EdgeUse {
-    int count = 0;
-    int forward = 0;  // uses from lower to higher vertex index
-  };
-  std::unordered_map<std::uint64_t, EdgeUse> uses;
-  uses.reserve(mesh.triangles.size() * 2);
-  for (const Triangle& t : mesh.triangles) {
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = t[k], b = t[(k + 1) % 3];
-      EdgeUse& use = uses[detail::undirectedEdgeKey(a, b)];
-      ++use.count;
-      if (a < b) ++use.forward;
-    }
-  }
-  EdgeCensus census;
-  census.edges = uses.size();
-  for (const auto& [key, use] : uses) {
-    if (use.count == 1) ++census.boundary;
-    else if (use.count > 2) ++census.nonManifold;
-    else if (use.forward != 1) ++census.misoriented;
-  }
+EdgeCensus edgeCensus(const TriangleMesh& mesh) { return detail::edgeCensus(mesh, detail::edgeGroups(mesh)); }
 
-  // A manifold vertex's faces form one fan: faces around it, joined through edges at it, are one group.
-  std::vector<std::vector<std::int32_t>> facesOfVertex(mesh.vertices.size());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (std::int32_t v : mesh.triangles[f]) facesOfVertex[v].push_back(static_cast<std::int32_t>(f));
-  for (std::size_t v = 0; v < facesOfVertex.size(); ++v) {
-    const auto& faces = facesOfVertex[v];
-    if (faces.size() < 2) continue;
-    UnionFind groups(faces.size());
-    std::unordered_map<std::int32_t, std::size_t> firstFaceWithOther;
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      for (std::int32_t w : mesh.triangles[faces[i]]) {
-        if (w == static_cast<std::int32_t>(v)) continue;
-        auto [it, inserted] = firstFaceWithOther.emplace(w, i);
-        if (!inserted) groups.unite(static_cast<std::int32_t>(it->second), static_cast<std::int32_t>(i));
-      }
+EdgeCensus detail::edgeCensus(const TriangleMesh& mesh, const EdgeGroups& groups) {
+  EdgeCensus census;
+  census.edges = groups.groupCount();
+  // A manifold vertex's faces form one fan: its corners, joined across each edge at it, make one set.
+  // Corner 3f + k is face f's corner at triangles[f][k]; half-edge h starts at corner h.
+  UnionFind corners(mesh.triangles.size() * 3);
+  auto cornerAt = [&](std::uint32_t h, std::int32_t vertex) {
+    return static_cast<std::int32_t>(detail::halfEdgeFrom(mesh, h) == vertex ? h : 3 * (h / 3) + (h % 3 + 1) % 3);
+  };
+  for (std::uint32_t g = 0; g < groups.groupCount(); ++g) {
+    const std::uint32_t first = groups.groupStart[g], uses = groups.useCount(g);
+    if (uses == 1) ++census.boundary;
+    else if (uses > 2) ++census.nonManifold;
+    else {
+      const std::uint32_t h0 = groups.halfEdges[first], h1 = groups.halfEdges[first + 1];
+      if (detail::halfEdgeFrom(mesh, h0) == detail::halfEdgeFrom(mesh, h1)) ++census.misoriented;
     }
-    std::int32_t root = groups.find(0);
-    for (std::size_t i = 1; i < faces.size(); ++i) {
-      if (groups.find(static_cast<std::int32_t>(i)) != root) {
-        ++census.nonManifoldVertices;
-        break;
-      }
-    }
+    const std::uint32_t h0 = groups.halfEdges[first];
+    for (const std::int32_t end : {detail::halfEdgeFrom(mesh, h0), detail::halfEdgeTo(mesh, h0)})
+      for (std::uint32_t i = first + 1; i < first + uses; ++i)
+        corners.unite(cornerAt(h0, end), cornerAt(groups.halfEdges[i], end));
   }
+  std::vector<std::uint8_t> fans(mesh.vertices.size(), 0);
+  for (std::size_t c = 0; c < mesh.triangles.size() * 3; ++c)
+    if (corners.find(static_cast<std::int32_t>(c)) == static_cast<std::int32_t>(c)) {
+      std::uint8_t& n = fans[static_cast<std::size_t>(mesh.triangles[c / 3][c % 3])];
+      if (n < 2 && ++n == 2) ++census.nonManifoldVertices;
+    }
   return census;
 }
 
@@ -117,15 +100,11 @@ FaceComponents faceComponents(const TriangleMesh& mesh) {
 
 long long eulerCharacteristic(const TriangleMesh& mesh) {
   std::vector<char> used(mesh.vertices.size(), 0);
-  std::unordered_map<std::uint64_t, char> edges;
-  edges.reserve(mesh.triangles.size() * 2);
   for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      used[t[k]] = 1;
-      edges.emplace(detail::undirectedEdgeKey(t[k], t[(k + 1) % 3]), 0);
-    }
+    for (std::int32_t v : t) used[static_cast<std::size_t>(v)] = 1;
   const long long v = std::count(used.begin(), used.end(), 1);
-  return v - static_cast<long long>(edges.size()) + static_cast<long long>(mesh.triangles.size());
+  const auto edges = static_cast<long long>(detail::edgeGroups(mesh).groupCount());
+  return v - edges + static_cast<long long>(mesh.triangles.size());
 }
 
 }  // namespace multidir::core

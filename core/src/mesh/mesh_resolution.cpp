@@ -1,20 +1,12 @@
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"  // see detail/openmesh_bridge.cpp
-#endif
-
 #include "multidir/core/mesh/mesh_resolution.h"
 
-#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
-#include <OpenMesh/Tools/Decimater/ModAspectRatioT.hh>
-#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
-#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <unordered_map>
 
 #include "detail/edge_key.h"
-#include "detail/openmesh_bridge.h"
+#include "mesh/quadric_decimation.h"
 #include "multidir/core/mesh/mesh_measure.h"
 
 namespace multidir::core {
@@ -54,29 +46,16 @@ Result<TriangleMesh> subdivided(const TriangleMesh& mesh, int levels) {
 Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double maxVolumeChangePercent) {
   if (targetFaces < 100)
     return Error{ErrorCode::InvalidParameter, "decimate to at least 100 faces", "decimate"};
-  detail::HalfEdgeMesh halfEdges;
-  if (Status s = detail::toHalfEdgeMesh(mesh, halfEdges, "decimated"); !s) return s.error();
-  halfEdges.request_face_normals();
-  halfEdges.update_face_normals();
-  {
-    using Decimater = OpenMesh::Decimater::DecimaterT<detail::HalfEdgeMesh>;
-    Decimater decimater(halfEdges);
-    OpenMesh::Decimater::ModQuadricT<detail::HalfEdgeMesh>::Handle quadric;
-    OpenMesh::Decimater::ModNormalFlippingT<detail::HalfEdgeMesh>::Handle noFlips;
-    // No slivers: the search clips the proxy thousands of times, and a sliver's crossing points lie closer
-    // than a float can tell apart, so every cut through one would be re-placed and refused.
-    OpenMesh::Decimater::ModAspectRatioT<detail::HalfEdgeMesh>::Handle noSlivers;
-    decimater.add(quadric);
-    decimater.add(noFlips);
-    decimater.add(noSlivers);
-    decimater.module(noSlivers).set_aspect_ratio(8.0f);
-    decimater.module(noSlivers).set_binary(true);
-    decimater.module(quadric).unset_max_err();  // the face count decides; the checks below keep the shape
-    decimater.initialize();
-    decimater.decimate_to_faces(0, targetFaces);
-  }
+  const EdgeCensus census = edgeCensus(mesh);
+  if (!census.closedOriented())
+    return Error{ErrorCode::NotManifold,
+                 "only a closed, consistently oriented 2-manifold can be decimated (" + std::to_string(census.boundary) +
+                     " open, " + std::to_string(census.nonManifold) + " non-manifold, " +
+                     std::to_string(census.misoriented) + " misoriented edges, " +
+                     std::to_string(census.nonManifoldVertices) + " non-manifold vertices); repair the mesh first",
+                 "decimate"};
   DecimationResult out;
-  out.mesh = detail::fromHalfEdgeMesh(halfEdges);
+  out.mesh = detail::quadricDecimation(mesh, targetFaces);
   const double before = signedVolume(mesh), after = signedVolume(out.mesh);
   out.volumeChangePercent = before > 0 ? 100.0 * std::abs(after - before) / before : 100.0;
   if (!edgeCensus(out.mesh).closedOriented())

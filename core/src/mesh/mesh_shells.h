@@ -2,9 +2,14 @@
 // Private to mesh checks and statistics: shells (connected components) as separate meshes.
 #include <vector>
 
+#include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_measure.h"
 
 namespace multidir::core::detail {
+
+// computeStatistics (mesh_io.h) when whether the mesh is closed and oriented is already known (as after
+// checkAndRepair, which made it so).
+MeshStatistics computeStatistics(const TriangleMesh& mesh, bool closedOriented);
 
 // The faces of each component, in face order.
 std::vector<std::vector<std::int32_t>> facesOfComponents(const FaceComponents& components);

@@ -3,9 +3,13 @@
 // A scan of a million triangles has the shape of a 50k-triangle version of itself to within a fraction of a
 // millimetre, and the search's candidates are a millimetre apart: the extra triangles change which plane
 // wins by nothing but cost time linearly (docs/search.md). So the search runs on a quadric-decimated proxy;
-// its planes are then cut through the full mesh one by one, each offset first polished on the full mesh (a
-// 1-D sweep around it), every criterion checked again there, and J_G, volumes and risky areas measured on the
-// full mesh's regions.
+// its planes are then cut through the full mesh one by one at the proxy's offsets, every criterion checked
+// again there (a plane that fails moves to the nearest offset within 0.3 mm that passes, or is dropped), and
+// J_G, volumes and risky areas measured on the full mesh's regions.
+//
+// Why not move each plane to the offset that scores best on the full mesh: the score of one level only sees
+// the region it cuts off, not the later planes chosen for the proxy's offset. Tried on the 16x kitten, it moved
+// the first plane 0.3 mm and raised J_G after from 11.55 to 12.51 mm^2.
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -17,12 +21,16 @@
 namespace multidir::core::detail {
 namespace {
 
-// How far and how finely a proxy plane's offset is polished on the full mesh: the proxy's surface lies
-// within a fraction of a millimetre of the full one, so a millimetre either way covers the shift.
+// How far and how finely a proxy plane's offset may move on the full mesh when the proxy's own offset fails a
+// criterion there: the proxy's surface lies within a fraction of a millimetre of the full one.
 constexpr double kPolishRangeMm = 0.3;
 constexpr double kPolishStepMm = 0.05;
 
 std::string planeName(std::size_t index) { return "plane " + std::to_string(index + 1); }
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 std::string millimetres(double value) {
   char text[32];
@@ -41,28 +49,37 @@ Decomposition runProxyDecomposition(const TriangleMesh& model, const MachineSpec
     plan.statistics.notes.push_back("searched the full mesh: no faithful proxy (" + proxy.error().message + ")");
     return plan;
   }
+  const double decimationSeconds = secondsSince(start);
   SearchOptions onProxy = options;
   onProxy.proxyFaces = 0;
   const Decomposition proxyPlan = runDecomposition(proxy->mesh, machine, onProxy, job, progress);
+  const auto cutsStart = std::chrono::steady_clock::now();
 
   SearchOptions evaluation = options;
   evaluation.candidates.normalSamples = 1;  // the engine only cuts given planes here
   SearchEngine engine(model, machine, evaluation, job);
   std::vector<std::string> notes;
-  char summary[160];
-  std::snprintf(summary, sizeof summary, "searched a proxy of %zu faces (volume within %.3f %%), cut the full mesh of %zu",
-                proxy->mesh.faceCount(), proxy->volumeChangePercent, model.faceCount());
-  notes.emplace_back(summary);
   std::shared_ptr<const SearchNode> node = engine.root();
   for (std::size_t k = 0; k < proxyPlan.clippingPlanes.size(); ++k) {
     const Plane& found = proxyPlan.clippingPlanes[k];
-    const Plane polished = engine.polished(*node, found, kPolishRangeMm, kPolishStepMm);
-    auto child = engine.cut(node, polished);
-    if (child.ok() && polished.offset != found.offset)
-      notes.push_back(planeName(k) + " moved " + millimetres(polished.offset - found.offset) + " on the full mesh");
-    if (!child.ok() && polished.offset != found.offset) child = engine.cut(node, found);
+    auto child = engine.cut(node, found);
+    const std::string refusal = child.ok() ? "" : child.error().message;
+    // The proxy's offset failed a criterion on the full mesh (a sliver left floating, a region a hair too
+    // thin): the nearest offset within kPolishRangeMm that passes them all stands in for it.
+    for (int step = 1; !child.ok() && step * kPolishStepMm <= kPolishRangeMm + 1e-9; ++step) {
+      for (const int sign : {-1, +1}) {
+        Plane moved = found;
+        moved.offset += sign * step * kPolishStepMm;
+        child = engine.cut(node, moved);
+        if (child.ok()) {
+          notes.push_back(planeName(k) + " moved " + millimetres(moved.offset - found.offset) +
+                          " on the full mesh: at the proxy's offset " + refusal);
+          break;
+        }
+      }
+    }
     if (!child.ok()) {
-      notes.push_back(planeName(k) + " of the proxy dropped on the full mesh: " + child.error().message);
+      notes.push_back(planeName(k) + " of the proxy dropped on the full mesh: " + refusal);
       continue;
     }
     node = *child;
@@ -75,6 +92,13 @@ Decomposition runProxyDecomposition(const TriangleMesh& model, const MachineSpec
   plan.statistics = proxyPlan.statistics;
   plan.statistics.clipsPerformed += engine.clipsPerformed();
   plan.statistics.proxyFaces = static_cast<int>(proxy->mesh.faceCount());
+  char summary[256];
+  std::snprintf(summary, sizeof summary,
+                "searched a proxy of %zu faces (volume within %.3f %%; made in %.2f s, searched in %.2f s), then cut "
+                "the full mesh of %zu faces (%.2f s)",
+                proxy->mesh.faceCount(), proxy->volumeChangePercent, decimationSeconds, proxyPlan.statistics.seconds,
+                model.faceCount(), secondsSince(cutsStart));
+  notes.insert(notes.begin(), summary);
   plan.statistics.notes = std::move(notes);
   plan.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return plan;

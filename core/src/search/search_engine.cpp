@@ -251,28 +251,6 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
   return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), regionRisky));
 }
 
-Plane SearchEngine::polished(const SearchNode& node, const Plane& plane, double rangeMm, double stepMm) const {
-  const int side = static_cast<int>(std::round(rangeMm / stepMm));
-  const OffsetGrid grid{plane.offset - side * stepMm, stepMm, 2 * side + 1};
-  const SweepProfile profile = PlaneSweeper(*node.remaining, node.riskyUpShare, m_sinAlpha).sweep(plane.normal, grid);
-  Plane best = plane;
-  double bestJg = INFINITY;
-  int bestDistance = 0;
-  for (int j = 0; j < grid.count; ++j) {
-    const double above = profile.volumeAboveMm3[j];
-    if (above < m_minRegionVolume || node.volumeMm3 - above <= 1e-9 * m_modelVolume) continue;
-    const double jg = node.prefixJgMm2 + std::max(0.0, profile.riskyAreaAlongNormalMm2[j]) +
-                      std::max(0.0, node.riskyUpAreaMm2 - std::max(0.0, profile.riskyAreaFlaggedMm2[j]));
-    const int distance = std::abs(j - side);
-    if (jg < bestJg - 1e-9 || (std::abs(jg - bestJg) <= 1e-9 && distance < bestDistance)) {
-      bestJg = jg;
-      bestDistance = distance;
-      best.offset = grid.offsetAt(j);
-    }
-  }
-  return best;
-}
-
 OverhangOptions SearchEngine::overhangOptions(RegionBase base) const {
   OverhangOptions overhang;
   overhang.alphaMaxDegrees = m_options.alphaMaxDegrees;

@@ -43,10 +43,6 @@ class SearchEngine {
   // The region's risky area is measured on its mesh. Errors name the plane as "plane K" (K = level + 1).
   Result<std::shared_ptr<const SearchNode>> cut(const std::shared_ptr<const SearchNode>& node, const Plane& plane);
 
-  // The plane moved along its normal, within +-rangeMm in steps of stepMm, to the offset whose cut of the node
-  // gives the least J_G (the sweep's estimate; admissible region volumes only); ties keep the nearest offset.
-  Plane polished(const SearchNode& node, const Plane& plane, double rangeMm, double stepMm) const;
-
   // Criterion II: whether every connected solid of `solid` touches the platform.
   bool standsOnPlatform(const TriangleMesh& solid) const;
 

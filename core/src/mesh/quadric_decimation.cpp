@@ -1,0 +1,256 @@
+#include "mesh/quadric_decimation.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace multidir::core::detail {
+namespace {
+
+// Cosine of the largest turn of a face's normal a collapse may cause.
+constexpr double kMinNormalCosine = 0.5;
+// Triangle quality 4 sqrt(3) area / (sum of squared edges): 1 equilateral, 0 degenerate. 0.1 is about a
+// 1:12 sliver.
+constexpr double kMinQuality = 0.1;
+// Each pass collapses only among the cheapest share of the edges it scored, so costly edges wait for a later
+// pass (scored again then) instead of going early because nothing cheaper was near.
+constexpr double kPassShare = 0.25;
+
+// The symmetric 4x4 matrix sum of area * (n.x + d)^2 over planes, as its ten distinct entries.
+struct Quadric {
+  double xx = 0, xy = 0, xz = 0, xw = 0, yy = 0, yz = 0, yw = 0, zz = 0, zw = 0, ww = 0;
+
+  static Quadric ofPlane(const Vec3& n, double d, double weight) {
+    Quadric q;
+    q.xx = weight * n.x() * n.x(), q.xy = weight * n.x() * n.y(), q.xz = weight * n.x() * n.z();
+    q.xw = weight * n.x() * d, q.yy = weight * n.y() * n.y(), q.yz = weight * n.y() * n.z();
+    q.yw = weight * n.y() * d, q.zz = weight * n.z() * n.z(), q.zw = weight * n.z() * d, q.ww = weight * d * d;
+    return q;
+  }
+  Quadric& operator+=(const Quadric& o) {
+    xx += o.xx, xy += o.xy, xz += o.xz, xw += o.xw, yy += o.yy, yz += o.yz, yw += o.yw, zz += o.zz, zw += o.zw;
+    ww += o.ww;
+    return *this;
+  }
+  [[nodiscard]] double error(const Vec3& p) const {
+    const double x = p.x(), y = p.y(), z = p.z();
+    return xx * x * x + 2 * xy * x * y + 2 * xz * x * z + 2 * xw * x + yy * y * y + 2 * yz * y * z + 2 * yw * y +
+           zz * z * z + 2 * zw * z + ww;
+  }
+};
+
+struct Candidate {
+  double cost;
+  double lengthSquared;  // ties (flat regions cost nothing) go to the shorter edge
+  std::int32_t a, b;
+  Vec3 target;
+};
+
+double quality(const Vec3& p0, const Vec3& p1, const Vec3& p2, double doubleArea) {
+  const double edges = (p1 - p0).squaredNorm() + (p2 - p1).squaredNorm() + (p0 - p2).squaredNorm();
+  return edges > 0 ? 2.0 * std::sqrt(3.0) * doubleArea / edges : 0.0;
+}
+
+// Where the merged vertex goes: the quadric's minimum when it is well defined and near the edge, otherwise
+// the best of the midpoint and the two ends.
+Vec3 bestPoint(const Quadric& q, const Vec3& a, const Vec3& b) {
+  Eigen::Matrix3d m;
+  m << q.xx, q.xy, q.xz, q.xy, q.yy, q.yz, q.xz, q.yz, q.zz;
+  const double scale = (q.xx + q.yy + q.zz) / 3.0;
+  const double det = m.determinant();
+  const Vec3 mid = 0.5 * (a + b);
+  if (scale > 0 && std::abs(det) > 1e-6 * scale * scale * scale) {
+    const Vec3 optimum = m.inverse() * Vec3(-q.xw, -q.yw, -q.zw);
+    if (optimum.allFinite() && (optimum - mid).squaredNorm() <= (b - a).squaredNorm()) return optimum;
+  }
+  Vec3 best = mid;
+  double bestError = q.error(mid);
+  for (const Vec3* p : {&a, &b})
+    if (const double e = q.error(*p); e < bestError) best = *p, bestError = e;
+  return best;
+}
+
+class Decimator {
+ public:
+  explicit Decimator(const TriangleMesh& mesh)
+      : m_points(mesh.vertices), m_triangles(mesh.triangles), m_quadrics(mesh.vertices.size()),
+        m_removed(mesh.triangles.size(), 0), m_stamp(mesh.vertices.size(), 0), m_touched(mesh.vertices.size(), 0) {
+    for (const Triangle& t : m_triangles) {
+      const Vec3 n = (m_points[t[1]] - m_points[t[0]]).cross(m_points[t[2]] - m_points[t[0]]);
+      const double doubleArea = n.norm();
+      if (!(doubleArea > 0)) continue;
+      const Vec3 unit = n / doubleArea;
+      const Quadric q = Quadric::ofPlane(unit, -unit.dot(m_points[t[0]]), 0.5 * doubleArea);
+      for (std::int32_t v : t) m_quadrics[v] += q;
+    }
+    m_faces = m_triangles.size();
+  }
+
+  void run(std::size_t targetFaces) {
+    while (m_faces > targetFaces) {
+      buildVertexFaces();
+      std::vector<Candidate> candidates = scoredEdges();
+      if (candidates.empty()) return;
+      const auto share = std::max<std::size_t>(1, static_cast<std::size_t>(kPassShare * candidates.size()));
+      const auto cheaper = [](const Candidate& x, const Candidate& y) {
+        if (x.cost != y.cost) return x.cost < y.cost;
+        if (x.lengthSquared != y.lengthSquared) return x.lengthSquared < y.lengthSquared;
+        return x.a != y.a ? x.a < y.a : x.b < y.b;
+      };
+      const auto shareEnd = candidates.begin() + static_cast<std::ptrdiff_t>(share);
+      std::nth_element(candidates.begin(), shareEnd - 1, candidates.end(), cheaper);
+      std::sort(candidates.begin(), shareEnd, cheaper);
+      std::fill(m_touched.begin(), m_touched.end(), 0);
+      std::size_t collapsed = 0;
+      for (std::size_t i = 0; i < share && m_faces > targetFaces; ++i) {
+        const Candidate& c = candidates[i];
+        if (m_touched[c.a] || m_touched[c.b] || !allowed(c)) continue;
+        collapse(c);
+        ++collapsed;
+      }
+      if (collapsed == 0) return;
+    }
+  }
+
+  TriangleMesh result() const {
+    TriangleMesh out;
+    std::vector<std::int32_t> index(m_points.size(), -1);
+    for (std::size_t f = 0; f < m_triangles.size(); ++f) {
+      if (m_removed[f]) continue;
+      Triangle t = m_triangles[f];
+      for (std::int32_t& v : t) {
+        if (index[v] < 0) {
+          index[v] = static_cast<std::int32_t>(out.vertices.size());
+          out.vertices.push_back(m_points[v]);
+        }
+        v = index[v];
+      }
+      out.triangles.push_back(t);
+    }
+    out.resetOrigins();
+    return out;
+  }
+
+ private:
+  // The faces around each vertex, as ranges of one flat array (rebuilt each pass: collapses only ever touch
+  // faces around vertices they mark, which the rest of the pass leaves alone).
+  void buildVertexFaces() {
+    m_firstFace.assign(m_points.size() + 1, 0);
+    for (std::size_t f = 0; f < m_triangles.size(); ++f)
+      if (!m_removed[f])
+        for (std::int32_t v : m_triangles[f]) ++m_firstFace[static_cast<std::size_t>(v) + 1];
+    for (std::size_t v = 0; v < m_points.size(); ++v) m_firstFace[v + 1] += m_firstFace[v];
+    m_faceOfVertex.resize(m_firstFace.back());
+    std::vector<std::int32_t> next(m_firstFace.begin(), m_firstFace.end() - 1);
+    for (std::size_t f = 0; f < m_triangles.size(); ++f)
+      if (!m_removed[f])
+        for (std::int32_t v : m_triangles[f]) m_faceOfVertex[next[v]++] = static_cast<std::int32_t>(f);
+  }
+
+  template <typename Visit>
+  void forFacesAround(std::int32_t v, Visit visit) const {
+    for (std::int32_t i = m_firstFace[v]; i < m_firstFace[v + 1]; ++i) visit(m_faceOfVertex[i]);
+  }
+
+  std::vector<Candidate> scoredEdges() const {
+    std::vector<Candidate> out;
+    out.reserve(m_faces * 3 / 2);
+    for (std::size_t f = 0; f < m_triangles.size(); ++f) {
+      if (m_removed[f]) continue;
+      const Triangle& t = m_triangles[f];
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t a = t[k], b = t[(k + 1) % 3];
+        if (a > b) continue;  // each edge of a closed mesh is seen once each way
+        Quadric q = m_quadrics[a];
+        q += m_quadrics[b];
+        const Vec3 target = bestPoint(q, m_points[a], m_points[b]);
+        out.push_back({std::max(0.0, q.error(target)), (m_points[a] - m_points[b]).squaredNorm(), a, b, target});
+      }
+    }
+    return out;
+  }
+
+  bool allowed(const Candidate& c) {
+    // Link condition: a and b share exactly the two vertices opposite their edge.
+    const int mark = ++m_stampCount;
+    forFacesAround(c.a, [&](std::int32_t f) {
+      for (std::int32_t v : m_triangles[f]) m_stamp[v] = mark;
+    });
+    const int seen = ++m_stampCount;
+    int common = 0;
+    forFacesAround(c.b, [&](std::int32_t f) {
+      for (std::int32_t v : m_triangles[f])
+        if (v != c.a && v != c.b && m_stamp[v] == mark) {
+          m_stamp[v] = seen;
+          ++common;
+        }
+    });
+    if (common != 2) return false;
+    // No face turns over or becomes a sliver.
+    bool ok = true;
+    auto check = [&](std::int32_t f) {
+      if (!ok) return;
+      const Triangle& t = m_triangles[f];
+      const bool hasA = t[0] == c.a || t[1] == c.a || t[2] == c.a;
+      const bool hasB = t[0] == c.b || t[1] == c.b || t[2] == c.b;
+      if (hasA && hasB) return;  // goes with the edge
+      std::array<Vec3, 3> before{m_points[t[0]], m_points[t[1]], m_points[t[2]]};
+      std::array<Vec3, 3> after = before;
+      for (int k = 0; k < 3; ++k)
+        if (t[k] == c.a || t[k] == c.b) after[k] = c.target;
+      const Vec3 n0 = (before[1] - before[0]).cross(before[2] - before[0]);
+      const Vec3 n1 = (after[1] - after[0]).cross(after[2] - after[0]);
+      const double area1 = n1.norm(), area0 = n0.norm();
+      if (!(area1 > 0) || n0.dot(n1) < kMinNormalCosine * area0 * area1) {
+        ok = false;
+        return;
+      }
+      const double q1 = quality(after[0], after[1], after[2], area1);
+      if (q1 < kMinQuality && q1 < quality(before[0], before[1], before[2], area0)) ok = false;
+    };
+    forFacesAround(c.a, check);
+    forFacesAround(c.b, check);
+    return ok;
+  }
+
+  void collapse(const Candidate& c) {
+    m_points[c.a] = c.target;
+    m_quadrics[c.a] += m_quadrics[c.b];
+    forFacesAround(c.b, [&](std::int32_t f) {
+      Triangle& t = m_triangles[f];
+      if (t[0] == c.a || t[1] == c.a || t[2] == c.a) {
+        m_removed[f] = 1;
+        --m_faces;
+        return;
+      }
+      for (std::int32_t& v : t)
+        if (v == c.b) v = c.a;
+    });
+    auto touch = [&](std::int32_t f) {
+      for (std::int32_t v : m_triangles[f]) m_touched[v] = 1;
+    };
+    forFacesAround(c.a, touch);
+    forFacesAround(c.b, touch);
+  }
+
+  std::vector<Vec3> m_points;
+  std::vector<Triangle> m_triangles;
+  std::vector<Quadric> m_quadrics;
+  std::vector<char> m_removed;
+  std::vector<int> m_stamp;
+  int m_stampCount = 0;
+  std::vector<char> m_touched;
+  std::vector<std::int32_t> m_firstFace, m_faceOfVertex;
+  std::size_t m_faces = 0;
+};
+
+}  // namespace
+
+TriangleMesh quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces) {
+  Decimator decimator(mesh);
+  decimator.run(targetFaces);
+  return decimator.result();
+}
+
+}  // namespace multidir::core::detail
