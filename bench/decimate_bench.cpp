@@ -1,6 +1,6 @@
 // Times the proxy's decimation on its own (the proxy search's first step):
 //
-//   multidir_decimate_bench MODEL FACES      e.g. multidir_decimate_bench /tmp/kitten-64x.stl 50000
+//   multidir_decimate_bench MODEL FACES [TOLERANCE_MM]   e.g. multidir_decimate_bench /tmp/kitten-64x.stl 50000 0.01
 //
 // MODEL is a name in ../shared/models (without .off) or a path. Prints the seconds to load, to decimate, the
 // faces left and the volume change.
@@ -21,8 +21,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: multidir_decimate_bench MODEL FACES\n");
+  if (argc != 3 && argc != 4) {
+    std::fprintf(stderr, "usage: multidir_decimate_bench MODEL FACES [TOLERANCE_MM]\n");
     return 2;
   }
   std::string path = argv[1];
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   }
   const double loadSeconds = secondsSince(loadStart);
   const auto start = std::chrono::steady_clock::now();
-  const auto proxy = decimated(loaded->mesh, static_cast<std::size_t>(std::atol(argv[2])));
+  const auto proxy = decimated(loaded->mesh, static_cast<std::size_t>(std::atol(argv[2])), argc == 4 ? std::atof(argv[3]) : 0.0);
   const double seconds = secondsSince(start);
   if (!proxy.ok()) {
     std::fprintf(stderr, "%s\n", proxy.error().describe().c_str());

@@ -1,8 +1,12 @@
 // Writes a shared model subdivided K times (4^K as many faces, the same surface) for the scaling runs:
 //
-//   multidir_subdivide_model MODEL K OUT.stl     e.g. multidir_subdivide_model fandisk 3 /tmp/fandisk-64x.stl
+//   multidir_subdivide_model MODEL K OUT.stl [NOISE_MM]   e.g. multidir_subdivide_model fandisk 3 /tmp/fandisk-64x.stl
 //
+// NOISE_MM moves every vertex along its normal by a pseudo-random amount in [-NOISE_MM, NOISE_MM] (the same
+// for every run), like a scan's measurement noise: then no collapse of the extra faces is free, and a
+// decimated proxy keeps as many faces as it is allowed.
 // MODEL is a name in ../shared/models (without .off) or a path.
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -12,9 +16,30 @@
 
 using namespace multidir::core;
 
+namespace {
+
+// A hash of the vertex index to [-1, 1]: deterministic, no state.
+double pseudoRandom(std::size_t index) {
+  std::uint64_t h = index * 0x9e3779b97f4a7c15ull;
+  h ^= h >> 31;
+  h *= 0xbf58476d1ce4e5b9ull;
+  h ^= h >> 29;
+  return static_cast<double>(h % 2000001) / 1000000.0 - 1.0;
+}
+
+void addNoise(TriangleMesh& mesh, double amplitudeMm) {
+  std::vector<Vec3> normals(mesh.vertices.size(), Vec3::Zero());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (std::int32_t v : mesh.triangles[f]) normals[static_cast<std::size_t>(v)] += mesh.areaNormal(f);
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    mesh.vertices[v] += amplitudeMm * pseudoRandom(v) * normals[v].normalized();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: multidir_subdivide_model MODEL LEVELS OUT\n");
+  if (argc != 4 && argc != 5) {
+    std::fprintf(stderr, "usage: multidir_subdivide_model MODEL LEVELS OUT [NOISE_MM]\n");
     return 2;
   }
   std::string path = argv[1];
@@ -24,11 +49,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", loaded.error().describe().c_str());
     return 1;
   }
-  const auto fine = subdivided(loaded->mesh, std::atoi(argv[2]));
+  auto fine = subdivided(loaded->mesh, std::atoi(argv[2]));
   if (!fine.ok()) {
     std::fprintf(stderr, "%s\n", fine.error().describe().c_str());
     return 1;
   }
+  if (argc == 5) addNoise(*fine, std::atof(argv[4]));
   if (const Status saved = saveMesh(*fine, argv[3]); !saved.ok()) {
     std::fprintf(stderr, "%s\n", saved.error().describe().c_str());
     return 1;

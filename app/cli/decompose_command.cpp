@@ -58,6 +58,11 @@ const char* const kDecomposeHelp =
     "  --min-plane-gain-area MM2\n"
     "                       ... and by at least this area (default: 1)\n"
     "  --threads N          worker threads, 0 = all (default: 0)\n"
+    "  --proxy-faces N      a model of more than N faces is searched on a simplified copy of at most N faces\n"
+    "                       (and fewer where that changes the surface by less than 0.01 mm); its planes then\n"
+    "                       cut the full model, and every number is the full model's. 1000 to 10000000\n"
+    "                       (default: 50000)\n"
+    "  --no-proxy           always search the full model (slow on models of a million faces)\n"
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
     "  --no-supports        do not generate supports\n"
     "  --support-spacing MM overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"
@@ -171,6 +176,12 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
   apply("--min-plane-gain-area",
         [&](const std::string& t) { options.minPlaneGainMm2 = parseNumber(t, "--min-plane-gain-area"); });
   apply("--threads", [&](const std::string& t) { options.threads = parseInteger(t, "--threads"); });
+  apply("--proxy-faces", [&](const std::string& t) { options.proxyFaces = parseInteger(t, "--proxy-faces"); });
+  if (parsed.has("--no-proxy")) {
+    if (parsed.has("--proxy-faces"))
+      throw UsageError(kCommand + ": --proxy-faces and --no-proxy contradict each other");
+    options.proxyFaces = 0;
+  }
   return options;
 }
 
@@ -180,8 +191,8 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
                 {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
                  "--refine", "--offset-step", "--w", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
                  "--threads", "--profile", "-o", "--summary", "--support-spacing", "--scale", "--pose", "--poses",
-                 "--pose-searches"},
-                {"--help", "--no-supports"}, "decompose");
+                 "--pose-searches", "--proxy-faces"},
+                {"--help", "--no-supports", "--no-proxy"}, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;

@@ -43,9 +43,12 @@ Result<TriangleMesh> subdivided(const TriangleMesh& mesh, int levels) {
   return current;
 }
 
-Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double maxVolumeChangePercent) {
+Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm,
+                                   double maxVolumeChangePercent) {
   if (targetFaces < 100)
     return Error{ErrorCode::InvalidParameter, "decimate to at least 100 faces", "decimate"};
+  if (!(freeToleranceMm >= 0.0 && std::isfinite(freeToleranceMm)))
+    return Error{ErrorCode::InvalidParameter, "the decimation tolerance must be a finite length >= 0 mm", "decimate"};
   const EdgeCensus census = edgeCensus(mesh);
   if (!census.closedOriented())
     return Error{ErrorCode::NotManifold,
@@ -55,7 +58,7 @@ Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetF
                      std::to_string(census.nonManifoldVertices) + " non-manifold vertices); repair the mesh first",
                  "decimate"};
   DecimationResult out;
-  out.mesh = detail::quadricDecimation(mesh, targetFaces);
+  out.mesh = detail::quadricDecimation(mesh, targetFaces, freeToleranceMm);
   const double before = signedVolume(mesh), after = signedVolume(out.mesh);
   out.volumeChangePercent = before > 0 ? 100.0 * std::abs(after - before) / before : 100.0;
   if (!edgeCensus(out.mesh).closedOriented())

@@ -16,21 +16,25 @@ constexpr double kMinQuality = 0.1;
 // Each pass collapses only among the cheapest share of the edges it scored, so costly edges wait for a later
 // pass (scored again then) instead of going early because nothing cheaper was near.
 constexpr double kPassShare = 0.25;
+// Never fewer faces than this, however flat the model.
+constexpr std::size_t kMinFaces = 100;
 
 // The symmetric 4x4 matrix sum of area * (n.x + d)^2 over planes, as its ten distinct entries.
 struct Quadric {
   double xx = 0, xy = 0, xz = 0, xw = 0, yy = 0, yz = 0, yw = 0, zz = 0, zw = 0, ww = 0;
+  double weight = 0;  // the sum of the weights: error / weight is a mean squared distance
 
   static Quadric ofPlane(const Vec3& n, double d, double weight) {
     Quadric q;
     q.xx = weight * n.x() * n.x(), q.xy = weight * n.x() * n.y(), q.xz = weight * n.x() * n.z();
     q.xw = weight * n.x() * d, q.yy = weight * n.y() * n.y(), q.yz = weight * n.y() * n.z();
     q.yw = weight * n.y() * d, q.zz = weight * n.z() * n.z(), q.zw = weight * n.z() * d, q.ww = weight * d * d;
+    q.weight = weight;
     return q;
   }
   Quadric& operator+=(const Quadric& o) {
     xx += o.xx, xy += o.xy, xz += o.xz, xw += o.xw, yy += o.yy, yz += o.yz, yw += o.yw, zz += o.zz, zw += o.zw;
-    ww += o.ww;
+    ww += o.ww, weight += o.weight;
     return *this;
   }
   [[nodiscard]] double error(const Vec3& p) const {
@@ -42,6 +46,7 @@ struct Quadric {
 
 struct Candidate {
   double cost;
+  double meanSquaredDistance;  // cost / the quadric's weight
   double lengthSquared;  // ties (flat regions cost nothing) go to the shorter edge
   std::int32_t a, b;
   Vec3 target;
@@ -87,10 +92,19 @@ class Decimator {
     m_faces = m_triangles.size();
   }
 
-  void run(std::size_t targetFaces) {
-    while (m_faces > targetFaces) {
+  void run(std::size_t targetFaces, double freeToleranceMm) {
+    const double freeMeanSquared = freeToleranceMm * freeToleranceMm;
+    std::vector<Candidate> candidates;
+    bool first = true;
+    while (m_faces > kMinFaces) {
       buildVertexFaces();
-      std::vector<Candidate> candidates = scoredEdges();
+      // Edges away from the last pass's collapses keep their scores: neither end moved or gained a quadric.
+      if (!first)
+        candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                        [&](const Candidate& c) { return m_touched[c.a] || m_touched[c.b]; }),
+                         candidates.end());
+      addScoredEdges(candidates, first);
+      first = false;
       if (candidates.empty()) return;
       const auto share = std::max<std::size_t>(1, static_cast<std::size_t>(kPassShare * candidates.size()));
       const auto cheaper = [](const Candidate& x, const Candidate& y) {
@@ -103,8 +117,9 @@ class Decimator {
       std::sort(candidates.begin(), shareEnd, cheaper);
       std::fill(m_touched.begin(), m_touched.end(), 0);
       std::size_t collapsed = 0;
-      for (std::size_t i = 0; i < share && m_faces > targetFaces; ++i) {
+      for (std::size_t i = 0; i < share && m_faces > kMinFaces; ++i) {
         const Candidate& c = candidates[i];
+        if (m_faces <= targetFaces && c.meanSquaredDistance > freeMeanSquared) continue;
         if (m_touched[c.a] || m_touched[c.b] || !allowed(c)) continue;
         collapse(c);
         ++collapsed;
@@ -153,22 +168,24 @@ class Decimator {
     for (std::int32_t i = m_firstFace[v]; i < m_firstFace[v + 1]; ++i) visit(m_faceOfVertex[i]);
   }
 
-  std::vector<Candidate> scoredEdges() const {
-    std::vector<Candidate> out;
-    out.reserve(m_faces * 3 / 2);
+  // Scores every edge (the first pass) or those with a touched end (later passes).
+  void addScoredEdges(std::vector<Candidate>& out, bool all) const {
+    if (all) out.reserve(m_faces * 3 / 2);
     for (std::size_t f = 0; f < m_triangles.size(); ++f) {
       if (m_removed[f]) continue;
       const Triangle& t = m_triangles[f];
       for (int k = 0; k < 3; ++k) {
         const std::int32_t a = t[k], b = t[(k + 1) % 3];
         if (a > b) continue;  // each edge of a closed mesh is seen once each way
+        if (!all && !m_touched[a] && !m_touched[b]) continue;
         Quadric q = m_quadrics[a];
         q += m_quadrics[b];
         const Vec3 target = bestPoint(q, m_points[a], m_points[b]);
-        out.push_back({std::max(0.0, q.error(target)), (m_points[a] - m_points[b]).squaredNorm(), a, b, target});
+        const double cost = std::max(0.0, q.error(target));
+        out.push_back({cost, q.weight > 0 ? cost / q.weight : INFINITY, (m_points[a] - m_points[b]).squaredNorm(), a,
+                       b, target});
       }
     }
-    return out;
   }
 
   bool allowed(const Candidate& c) {
@@ -247,9 +264,9 @@ class Decimator {
 
 }  // namespace
 
-TriangleMesh quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces) {
+TriangleMesh quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm) {
   Decimator decimator(mesh);
-  decimator.run(targetFaces);
+  decimator.run(targetFaces, freeToleranceMm);
   return decimator.result();
 }
 

@@ -16,7 +16,9 @@
 namespace multidir::core::detail {
 
 // `mesh` must be a closed, consistently oriented 2-manifold (not checked here). Returns the decimated mesh
-// (origins reset) with at most targetFaces faces, or as few as the rules above allow.
-TriangleMesh quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces);
+// (origins reset) with at most targetFaces faces, or as few as the rules above allow; below targetFaces it
+// goes on with the collapses that move the surface by at most freeToleranceMm (root mean square over the
+// faces around the edge), down to 100 faces.
+TriangleMesh quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm);
 
 }  // namespace multidir::core::detail

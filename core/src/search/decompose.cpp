@@ -316,9 +316,10 @@ Status detail::checkSearchInputs(const TriangleMesh& model, const MachineSpec& m
 }
 
 Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
-                               JobContext& job, const SearchProgressSink& progress) {
+                               JobContext& job, const SearchProgressSink& progress,
+                               const std::optional<PlatformRegion>& platform) {
   const auto start = std::chrono::steady_clock::now();
-  SearchEngine engine(model, machine, options, job);
+  SearchEngine engine(model, machine, options, job, platform);
   BestPlan best;
   int levels = 0;
   bool cancelled = false;

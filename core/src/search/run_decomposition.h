@@ -2,6 +2,7 @@
 // The decomposition search without the public entry's bookkeeping, for searches that run many of them (4-DOF
 // axes, poses) and report their own progress.
 #include <memory>
+#include <optional>
 
 #include "multidir/core/common/job_context.h"
 #include "multidir/core/search/decomposition.h"
@@ -13,8 +14,10 @@ Status checkSearchInputs(const TriangleMesh& model, const MachineSpec& machine, 
 
 // The search itself, for checked inputs; reports levels but leaves the job's overall progress alone. Always
 // returns a plan (the uncut model at least); `cancelled` is set when the job was cancelled.
+// `platform`: as for SearchEngine.
 Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
-                               JobContext& job, const SearchProgressSink& progress);
+                               JobContext& job, const SearchProgressSink& progress,
+                               const std::optional<PlatformRegion>& platform = std::nullopt);
 
 // The same on a decimated proxy of a huge model (options.proxyFaces), its planes then applied to the full mesh
 // with their offsets polished there; every number of the plan is the full mesh's. Falls back to the full

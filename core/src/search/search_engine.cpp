@@ -15,11 +15,11 @@
 namespace multidir::core::detail {
 
 SearchEngine::SearchEngine(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
-                           JobContext& job)
+                           JobContext& job, const std::optional<PlatformRegion>& platform)
     : m_machine(machine), m_options(options), m_job(job) {
   m_normals = candidateNormals(machine, options.candidates);
   m_latticeSize = static_cast<int>(m_normals.size());
-  m_platform = platformRegionFor(model, machine, options.platformToleranceMm);
+  m_platform = platform ? *platform : platformRegionFor(model, machine, options.platformToleranceMm);
   m_sinAlpha = std::sin(degToRad(options.alphaMaxDegrees));
   m_modelVolume = signedVolume(model);
   m_minRegionVolume = m_modelVolume / options.minVolumeDivisor;

@@ -17,7 +17,10 @@ namespace multidir::core::detail {
 
 class SearchEngine {
  public:
-  SearchEngine(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options, JobContext& job);
+  // `platform`: the platform region to use instead of the model's own (a proxy's search uses the full
+  // model's, so that Criterion III means the same on both).
+  SearchEngine(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options, JobContext& job,
+               const std::optional<PlatformRegion>& platform = std::nullopt);
 
   std::shared_ptr<const SearchNode> root() const { return m_root; }
 

@@ -4,8 +4,10 @@
 // subdivided: every triangle split into four at its edge midpoints, `levels` times (4^levels as many faces);
 // the surface, volume and every overhang stay exactly the same. The bench uses it to make million-triangle
 // versions of the shared models.
-// decimated: OpenMesh's quadric-error decimation down to about `targetFaces` faces, refusing collapses that
-// flip a face; the search runs on such a proxy of a huge model and applies its planes to the full mesh.
+// decimated: quadric-error edge collapses (Garland & Heckbert) down to `targetFaces` faces, and further while
+// a collapse moves the surface by at most `freeToleranceMm`, refusing collapses that break the manifold, turn
+// a face over or make a sliver; the search runs on such a proxy of a huge model and applies its planes to the
+// full mesh. A subdivided model (flat splits) goes back to about its original faces at any tolerance.
 #include <cstddef>
 
 #include "multidir/core/common/result.h"
@@ -24,6 +26,7 @@ struct DecimationResult {
 // Errors: InvalidParameter (targetFaces < 100), NotManifold (not a closed oriented 2-manifold), CheckFailed
 // when the result is not closed any more or its volume differs by more than maxVolumeChangePercent: then
 // the model is not one to decimate, and the caller uses the full mesh.
-Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double maxVolumeChangePercent = 0.5);
+Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm = 0.0,
+                                   double maxVolumeChangePercent = 0.5);
 
 }  // namespace multidir::core
