@@ -13,29 +13,10 @@
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_resolution.h"
+#include "noisy_surface.h"
 
 using namespace multidir::core;
 
-namespace {
-
-// A hash of the vertex index to [-1, 1]: deterministic, no state.
-double pseudoRandom(std::size_t index) {
-  std::uint64_t h = index * 0x9e3779b97f4a7c15ull;
-  h ^= h >> 31;
-  h *= 0xbf58476d1ce4e5b9ull;
-  h ^= h >> 29;
-  return static_cast<double>(h % 2000001) / 1000000.0 - 1.0;
-}
-
-void addNoise(TriangleMesh& mesh, double amplitudeMm) {
-  std::vector<Vec3> normals(mesh.vertices.size(), Vec3::Zero());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (std::int32_t v : mesh.triangles[f]) normals[static_cast<std::size_t>(v)] += mesh.areaNormal(f);
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-    mesh.vertices[v] += amplitudeMm * pseudoRandom(v) * normals[v].normalized();
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   if (argc != 4 && argc != 5) {
@@ -54,7 +35,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", fine.error().describe().c_str());
     return 1;
   }
-  if (argc == 5) addNoise(*fine, std::atof(argv[4]));
+  if (argc == 5) multidir::bench::addNoise(*fine, std::atof(argv[4]));
   if (const Status saved = saveMesh(*fine, argv[3]); !saved.ok()) {
     std::fprintf(stderr, "%s\n", saved.error().describe().c_str());
     return 1;

@@ -306,6 +306,8 @@ void printTable(std::ostream& out, const Settings& s, const core::Decomposition&
   const core::SearchStatistics& st = plan.statistics;
   out << "Search       " << formatNumber("%.2f", st.seconds) << " s, " << st.threads << " threads, "
       << withThousands(st.candidatesScored) << " candidates scored, " << st.levels << " levels\n";
+  // A proxy search says so, and what changed on the full mesh (planes moved or dropped).
+  for (const std::string& note : st.notes) out << "             " << note << "\n";
 }
 
 void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_t triangles,
@@ -334,6 +336,7 @@ void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_
                                   {"jg_after", plan.jgAfterMm2},
                                   {"seconds", st.seconds},
                                   {"threads", st.threads},
+                                  {"proxy_faces", st.proxyFaces},
                                   {"support_volume", supportVolume},
                                   {"support_struts", struts},
                                   {"plan", s.outDir}};

@@ -325,6 +325,13 @@ void SearchPanel::searchFinished(const core::Decomposition& plan) {
   } else {
     lines << tr("Support-free in %n region(s) (J_G was %1 mm²).", nullptr, regions).arg(area(plan.jgBeforeMm2));
   }
+  if (plan.statistics.proxyFaces > 0) {
+    lines << tr("The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every "
+                "number shown is the full model's.")
+                 .arg(QLocale().toString(plan.statistics.proxyFaces));
+    // What changed between the copy and the full model (a plane moved or dropped), in the search's words.
+    for (std::size_t i = 1; i < plan.statistics.notes.size(); ++i) lines << QString::fromStdString(plan.statistics.notes[i]);
+  }
   showNotice(lines.join(QLatin1Char('\n')), warning);
 }
 

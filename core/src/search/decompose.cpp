@@ -5,8 +5,10 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <tuple>
 #include <cmath>
 
+#include "detail/freed_memory.h"
 #include "detail/parallel.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "search/run_decomposition.h"
@@ -357,6 +359,7 @@ Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& ma
   const bool huge = options.proxyFaces > 0 && model.faceCount() > static_cast<std::size_t>(options.proxyFaces);
   Decomposition plan = huge ? detail::runProxyDecomposition(model, machine, options, job, progress)
                             : runDecomposition(model, machine, options, job, progress);
+  detail::returnFreedMemory();
   job.setProgress(1.0, "search done");
   return plan;
 }
@@ -397,48 +400,52 @@ Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const M
   const int threads = detail::resolveThreadCount(options.threads);
   SearchOptions perAxis = options;
   perAxis.threads = 1;  // parallel across axes instead
-  std::vector<std::optional<Decomposition>> results(axisCount);
+  // Only the best plan so far is kept (each axis's plan holds its regions' meshes, so keeping all would make
+  // memory grow with the number of axes). "Best": least J_G, then fewer regions, then the lower axis index,
+  // compared exactly, so the winner does not depend on the order the threads finish in.
+  std::optional<Decomposition> best;
+  int bestAxis = -1;
+  SearchStatistics total;
   const Vec3 first = machine.rotationAxis;
   const Vec3 second = machine.up.cross(first);
-  std::atomic<int> finished{0};
-  std::mutex progressMutex;
+  int finished = 0;
+  std::mutex resultMutex;
   detail::parallelFor(axisCount, threads, [&](int a) {
     if (job.isCancelled()) return;
     const double angle = kPi * a / axisCount;
     MachineSpec spec = machine;
     spec.rotationAxis = (std::cos(angle) * first + std::sin(angle) * second).normalized();
-    results[a] = runDecomposition(model, spec, perAxis, job, {});
+    Decomposition result = runDecomposition(model, spec, perAxis, job, {});
+    std::lock_guard<std::mutex> lock(resultMutex);
+    total.candidatesScored += result.statistics.candidatesScored;
+    total.clipsPerformed += result.statistics.clipsPerformed;
+    total.levels = std::max(total.levels, result.statistics.levels);
+    total.candidatesPerLevel = std::max(total.candidatesPerLevel, result.statistics.candidatesPerLevel);
+    total.normals = result.statistics.normals;
     const int done = ++finished;
     job.setProgress(static_cast<double>(done) / axisCount, "axis search");
     if (progress) {
-      std::lock_guard<std::mutex> lock(progressMutex);
       SearchProgress p;
       p.axisIndex = a;
       p.axisCount = axisCount;
-      p.bestJgMm2 = results[a]->jgAfterMm2;
-      p.candidatesScored = results[a]->statistics.candidatesScored;
+      p.bestJgMm2 = result.jgAfterMm2;
+      p.candidatesScored = result.statistics.candidatesScored;
       progress(p);
+    }
+    const auto key = [](const Decomposition& plan, int axis) {
+      return std::make_tuple(plan.jgAfterMm2, plan.regions.size(), axis);
+    };
+    if (!best || key(result, a) < key(*best, bestAxis)) {
+      best = std::move(result);
+      bestAxis = a;
     }
   });
 
-  std::optional<Decomposition> best;
-  SearchStatistics total;
-  for (auto& r : results) {
-    if (!r) continue;
-    total.candidatesScored += r->statistics.candidatesScored;
-    total.clipsPerformed += r->statistics.clipsPerformed;
-    total.levels = std::max(total.levels, r->statistics.levels);
-    total.candidatesPerLevel = std::max(total.candidatesPerLevel, r->statistics.candidatesPerLevel);
-    total.normals = r->statistics.normals;
-    constexpr double kTie = 1e-9;
-    if (!best || r->jgAfterMm2 < best->jgAfterMm2 - kTie ||
-        (std::abs(r->jgAfterMm2 - best->jgAfterMm2) <= kTie && r->regions.size() < best->regions.size()))
-      best = std::move(r);
-  }
   if (!best) {
     if (job.isCancelled()) return Error{ErrorCode::Cancelled, "the axis search was cancelled before any axis finished", "axis search"};
     return Error{ErrorCode::Internal, "no axis gave a plan", "axis search"};
   }
+  detail::returnFreedMemory();
   best->cancelled = job.isCancelled();
   total.threads = threads;
   total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

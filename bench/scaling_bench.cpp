@@ -1,0 +1,185 @@
+// The scaling run (issue 17): `multidir decompose` end to end (load, search, cuts, supports, save) on the shared
+// models subdivided 4^K times, and on a model of about a million faces, each in its own process so that its
+// peak memory is its own:
+//
+//   multidir_scaling_bench [--models kitten,bunny,fertility] [--levels 0,1,2,3] [--million] [--full]
+//                          [--noise MM] [--keep DIR]
+//
+// --levels: subdivision levels (0: the model as shared; 3: 64x the faces).
+// --million: also the knight subdivided 5 times (1,024,000 faces), smooth and with --noise (default 0.02 mm)
+//   along the normals, like a scan's measurement noise (then no face of the proxy comes for free).
+// --full: every run also with --no-proxy (the full mesh searched; slow: minutes at 64x).
+// Columns: faces, the proxy's faces (0: none), wall seconds of the whole command, the search's seconds, peak
+// resident MiB (getrusage of the child), regions, J_G after / before, and the wall time over the same model's
+// at level 0 in the same mode. The models are written to a temporary folder (or --keep DIR) as binary STL.
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "multidir/core/mesh/mesh_io.h"
+#include "multidir/core/mesh/mesh_resolution.h"
+#include "noisy_surface.h"
+
+using namespace multidir::core;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+struct Case {
+  std::string name;  // "kitten 16x"
+  std::string model;
+  int level = 0;
+  double noiseMm = 0.0;
+  std::string file;
+};
+
+struct Outcome {
+  bool ok = false;
+  double wallSeconds = 0, searchSeconds = 0, peakMiB = 0, jgBefore = 0, jgAfter = 0;
+  long long faces = 0, proxyFaces = 0, regions = 0;
+  std::string error;
+};
+
+bool writeCase(Case& c, const fs::path& folder) {
+  c.file = (folder / (c.model + "-" + std::to_string(c.level) + (c.noiseMm > 0 ? "-noisy" : "") + ".stl")).string();
+  if (fs::exists(c.file)) return true;
+  const auto loaded = loadMesh(std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + c.model + ".off");
+  if (!loaded.ok()) {
+    std::fprintf(stderr, "%s: %s\n", c.model.c_str(), loaded.error().describe().c_str());
+    return false;
+  }
+  auto fine = subdivided(loaded->mesh, c.level);
+  if (!fine.ok()) {
+    std::fprintf(stderr, "%s: %s\n", c.model.c_str(), fine.error().describe().c_str());
+    return false;
+  }
+  if (c.noiseMm > 0) multidir::bench::addNoise(*fine, c.noiseMm);
+  if (const Status saved = saveMesh(*fine, c.file); !saved.ok()) {
+    std::fprintf(stderr, "%s: %s\n", c.file.c_str(), saved.error().describe().c_str());
+    return false;
+  }
+  return true;
+}
+
+Outcome run(const Case& c, bool full, const fs::path& folder) {
+  Outcome out;
+  const fs::path plan = folder / ("plan-" + fs::path(c.file).stem().string() + (full ? "-full" : ""));
+  const fs::path summary = plan.string() + ".json";
+  std::vector<std::string> args{MULTIDIR_CLI, "decompose", c.file, "--up", "y", "-o", plan.string(), "--summary",
+                                summary.string()};
+  if (full) args.emplace_back("--no-proxy");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t child = fork();
+  if (child == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  wait4(child, &status, 0, &usage);
+  out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    out.error = "multidir decompose failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+    return out;
+  }
+  std::ifstream file(summary);
+  const nlohmann::json json = nlohmann::json::parse(file, nullptr, false);
+  if (json.is_discarded()) {
+    out.error = "unreadable summary " + summary.string();
+    return out;
+  }
+  out.ok = true;
+  out.faces = json.value("triangles", 0LL);
+  out.proxyFaces = json.value("proxy_faces", 0LL);
+  out.searchSeconds = json.value("seconds", 0.0);
+  out.regions = json.value("regions", 0LL);
+  out.jgBefore = json.value("jg_before", 0.0);
+  out.jgAfter = json.value("jg_after", 0.0);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> models{"kitten", "bunny", "fertility"};
+  std::vector<int> levels{0, 1, 2, 3};
+  bool million = false, full = false;
+  double noiseMm = 0.02;
+  std::string keep;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--million") million = true;
+    else if (flag == "--full") full = true;
+    else if (i + 1 < argc && flag == "--models") models = split(argv[++i]);
+    else if (i + 1 < argc && flag == "--noise") noiseMm = std::atof(argv[++i]);
+    else if (i + 1 < argc && flag == "--keep") keep = argv[++i];
+    else if (i + 1 < argc && flag == "--levels") {
+      levels.clear();
+      for (const std::string& l : split(argv[++i])) levels.push_back(std::atoi(l.c_str()));
+    } else {
+      std::fprintf(stderr, "unknown option %s (see the comment at the top of bench/scaling_bench.cpp)\n", flag.c_str());
+      return 2;
+    }
+  }
+  const fs::path folder = keep.empty() ? fs::temp_directory_path() / ("multidir-scaling-" + std::to_string(getpid()))
+                                       : fs::path(keep);
+  fs::create_directories(folder);
+
+  std::vector<Case> cases;
+  for (const std::string& model : models)
+    for (int level : levels) cases.push_back({model + " " + std::to_string(1 << (2 * level)) + "x", model, level, 0.0, ""});
+  if (million) {
+    cases.push_back({"knight 1024x", "knight", 5, 0.0, ""});
+    cases.push_back({"knight 1024x noisy", "knight", 5, noiseMm, ""});
+  }
+
+  std::printf("%-20s %5s %10s %8s %8s %8s %9s %7s %8s %9s\n", "model", "mode", "faces", "proxy", "wall s",
+              "search s", "peak MiB", "regions", "after %", "x of 1x");
+  std::map<std::string, double> baseline;  // model + mode -> wall seconds at level 0
+  for (Case& c : cases) {
+    if (!writeCase(c, folder)) return 1;
+    for (const bool fullSearch : full ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
+      const Outcome o = run(c, fullSearch, folder);
+      const char* mode = fullSearch ? "full" : "proxy";
+      if (!o.ok) {
+        std::printf("%-20s %5s %s\n", c.name.c_str(), mode, o.error.c_str());
+        continue;
+      }
+      const std::string key = c.model + mode + (c.noiseMm > 0 ? "noisy" : "");
+      if (c.level == 0) baseline[key] = o.wallSeconds;
+      char ratio[32] = "-";
+      if (baseline.count(key)) std::snprintf(ratio, sizeof ratio, "%.1f", o.wallSeconds / baseline[key]);
+      std::printf("%-20s %5s %10lld %8lld %8.2f %8.2f %9.0f %7lld %8.2f %9s\n", c.name.c_str(), mode, o.faces,
+                  o.proxyFaces, o.wallSeconds, o.searchSeconds, o.peakMiB, o.regions,
+                  o.jgBefore > 0 ? 100.0 * o.jgAfter / o.jgBefore : 0.0, ratio);
+      std::fflush(stdout);
+    }
+  }
+  if (keep.empty()) fs::remove_all(folder);
+  return 0;
+}
