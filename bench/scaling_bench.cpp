@@ -91,10 +91,13 @@ Outcome run(const Case& c, bool full, const fs::path& folder) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  const std::string log = plan.string() + ".log";
+  std::fflush(stdout);  // or the child's freopen would write the table's pending lines again
   const auto start = std::chrono::steady_clock::now();
   const pid_t child = fork();
   if (child == 0) {
     std::freopen("/dev/null", "w", stdout);
+    std::freopen(log.c_str(), "w", stderr);
     execv(argv[0], argv.data());
     _exit(127);
   }
@@ -104,7 +107,8 @@ Outcome run(const Case& c, bool full, const fs::path& folder) {
   out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    out.error = "multidir decompose failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")";
+    out.error = "multidir decompose failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                "): see " + log;
     return out;
   }
   std::ifstream file(summary);

@@ -80,7 +80,8 @@ class Decimator {
  public:
   explicit Decimator(const TriangleMesh& mesh)
       : m_points(mesh.vertices), m_triangles(mesh.triangles), m_quadrics(mesh.vertices.size()),
-        m_removed(mesh.triangles.size(), 0), m_stamp(mesh.vertices.size(), 0), m_touched(mesh.vertices.size(), 0) {
+        m_removed(mesh.triangles.size(), 0), m_stamp(mesh.vertices.size(), 0), m_touched(mesh.vertices.size(), 0),
+        m_absorbed(mesh.vertices.size(), -1) {
     for (const Triangle& t : m_triangles) {
       const Vec3 n = (m_points[t[1]] - m_points[t[0]]).cross(m_points[t[2]] - m_points[t[0]]);
       const double doubleArea = n.norm();
@@ -116,6 +117,7 @@ class Decimator {
       std::nth_element(candidates.begin(), shareEnd - 1, candidates.end(), cheaper);
       std::sort(candidates.begin(), shareEnd, cheaper);
       std::fill(m_touched.begin(), m_touched.end(), 0);
+      std::fill(m_absorbed.begin(), m_absorbed.end(), -1);
       std::size_t collapsed = 0;
       for (std::size_t i = 0; i < share && m_faces > kMinFaces; ++i) {
         const Candidate& c = candidates[i];
@@ -163,9 +165,13 @@ class Decimator {
         for (std::int32_t v : m_triangles[f]) m_faceOfVertex[next[v]++] = static_cast<std::int32_t>(f);
   }
 
+  // The live faces around v: its own list and, once it absorbed a vertex this pass, that vertex's list (whose
+  // faces now name v). A vertex absorbs at most one per pass: it is touched after.
   template <typename Visit>
   void forFacesAround(std::int32_t v, Visit visit) const {
-    for (std::int32_t i = m_firstFace[v]; i < m_firstFace[v + 1]; ++i) visit(m_faceOfVertex[i]);
+    for (std::int32_t u = v; u >= 0; u = u == v ? m_absorbed[v] : -1)
+      for (std::int32_t i = m_firstFace[u]; i < m_firstFace[u + 1]; ++i)
+        if (!m_removed[m_faceOfVertex[i]]) visit(m_faceOfVertex[i]);
   }
 
   // Scores every edge (the first pass) or those with a touched end (later passes).
@@ -244,11 +250,10 @@ class Decimator {
       for (std::int32_t& v : t)
         if (v == c.b) v = c.a;
     });
-    auto touch = [&](std::int32_t f) {
-      for (std::int32_t v : m_triangles[f]) m_touched[v] = 1;
-    };
-    forFacesAround(c.a, touch);
-    forFacesAround(c.b, touch);
+    m_absorbed[c.a] = c.b;
+    // Only edges at a changed (a moved and took b's quadric); every other edge keeps its score, and the live
+    // face lists keep every later check of this pass exact.
+    m_touched[c.a] = m_touched[c.b] = 1;
   }
 
   std::vector<Vec3> m_points;
@@ -257,7 +262,8 @@ class Decimator {
   std::vector<char> m_removed;
   std::vector<int> m_stamp;
   int m_stampCount = 0;
-  std::vector<char> m_touched;
+  std::vector<char> m_touched;         // moved or gone this pass
+  std::vector<std::int32_t> m_absorbed;  // the vertex each one absorbed this pass, or -1
   std::vector<std::int32_t> m_firstFace, m_faceOfVertex;
   std::size_t m_faces = 0;
 };

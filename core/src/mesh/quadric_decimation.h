@@ -1,9 +1,10 @@
 #pragma once
 // Quadric-error edge collapse (Garland & Heckbert 1997) for the proxy search's decimated model, written for
 // speed on a closed mesh of a million faces: flat arrays instead of a half-edge structure, and the collapses
-// taken in passes rather than through a priority queue. Each pass scores every edge once, sorts them, and
-// collapses the cheapest ones whose neighbourhoods no other collapse of the pass touched (an independent set),
-// so no score is ever stale. About one vertex in eight goes per pass; the cost is a few passes over the mesh.
+// taken in passes rather than through a priority queue. Each pass sorts the cheapest quarter of the edges
+// and collapses them in that order, skipping edges at a vertex an earlier collapse of the pass moved (their
+// scores are stale until the next pass scores them again); every other edge keeps its score from pass to
+// pass. The checks below read the live faces, so they are exact however many collapses a pass takes.
 //
 // A collapse keeps the surface a closed, consistently oriented 2-manifold: it is taken only when the link
 // condition holds (the edge's two endpoints share exactly the two neighbours opposite it), no face around it
