@@ -1,0 +1,89 @@
+#include <gtest/gtest.h>
+
+#include "multidir/core/analysis/overhang.h"
+#include "multidir/core/mesh/mesh_measure.h"
+#include "multidir/core/mesh/mesh_resolution.h"
+#include "multidir/core/search/decompose.h"
+#include "multidir/core/search/plan_from_planes.h"
+#include "support/test_models.h"
+
+using namespace multidir::core;
+
+namespace {
+
+MachineSpec upY() {
+  MachineSpec machine;
+  machine.up = Vec3::UnitY();
+  return machine;
+}
+
+Decomposition run(const TriangleMesh& model, const SearchOptions& options) {
+  JobContext job;
+  auto plan = decompose(model, upY(), options, job);
+  if (!plan.ok()) throw std::runtime_error(plan.error().describe());
+  return std::move(plan).value();
+}
+
+// The kitten with four times its faces (the same surface), searched on a proxy of at most 20,000 faces.
+struct ProxySearch : ::testing::Test {
+  static void SetUpTestSuite() {
+    kitten = new TriangleMesh(multidir::test::loadSharedModel("kitten.off"));
+    fine = new TriangleMesh(subdivided(*kitten, 1).value());
+    SearchOptions options;
+    options.proxyFaces = 20000;
+    proxyPlan = new Decomposition(run(*fine, options));
+  }
+  static void TearDownTestSuite() {
+    delete kitten;
+    delete fine;
+    delete proxyPlan;
+  }
+  static TriangleMesh* kitten;
+  static TriangleMesh* fine;
+  static Decomposition* proxyPlan;
+};
+TriangleMesh* ProxySearch::kitten = nullptr;
+TriangleMesh* ProxySearch::fine = nullptr;
+Decomposition* ProxySearch::proxyPlan = nullptr;
+
+}  // namespace
+
+TEST_F(ProxySearch, AModelAboveTheFaceCountIsSearchedOnAProxyAndTheLogSaysSo) {
+  EXPECT_GT(proxyPlan->statistics.proxyFaces, 0);
+  EXPECT_LE(proxyPlan->statistics.proxyFaces, 20000);
+  ASSERT_FALSE(proxyPlan->statistics.notes.empty());
+  EXPECT_NE(proxyPlan->statistics.notes.front().find("proxy"), std::string::npos);
+}
+
+TEST_F(ProxySearch, EveryNumberIsTheFullMeshs) {
+  // The same planes cut through the full mesh by the plain evaluator give the same plan.
+  const auto again = planFromClippingPlanes(*fine, upY(), SearchOptions{}, proxyPlan->clippingPlanes);
+  ASSERT_TRUE(again.ok()) << again.error().describe();
+  EXPECT_NEAR(again->jgAfterMm2, proxyPlan->jgAfterMm2, 1e-9 * proxyPlan->jgBeforeMm2);
+  EXPECT_NEAR(proxyPlan->jgBeforeMm2, again->jgBeforeMm2, 1e-9 * proxyPlan->jgBeforeMm2);
+  double volume = 0;
+  std::size_t faces = 0;
+  for (const Region& region : proxyPlan->regions) {
+    volume += region.volumeMm3;
+    faces += region.mesh.faceCount();
+  }
+  EXPECT_NEAR(volume, signedVolume(*fine), 1e-9 * volume);
+  EXPECT_GT(faces, fine->faceCount());  // the regions are pieces of the full mesh, not of the proxy
+}
+
+TEST_F(ProxySearch, ThePlanIsWithinATenthOfTheOriginalModelsPlan) {
+  const Decomposition original = run(*kitten, SearchOptions{});
+  const double proxyShare = proxyPlan->jgAfterMm2 / proxyPlan->jgBeforeMm2;
+  const double originalShare = original.jgAfterMm2 / original.jgBeforeMm2;
+  EXPECT_LE(proxyShare, 1.1 * originalShare + 1e-4) << proxyPlan->jgAfterMm2 << " vs " << original.jgAfterMm2;
+}
+
+TEST_F(ProxySearch, AModelAtOrBelowTheFaceCountIsSearchedInFull) {
+  SearchOptions options;
+  options.proxyFaces = 50000;
+  options.beamWidth = 2;
+  const Decomposition plan = run(*fine, options);
+  EXPECT_EQ(plan.statistics.proxyFaces, 0);
+  options.proxyFaces = 0;  // --no-proxy
+  EXPECT_EQ(run(*fine, options).statistics.proxyFaces, 0);
+}
