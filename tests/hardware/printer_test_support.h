@@ -1,12 +1,15 @@
 #pragma once
-// Shared by the printer tests: a short G-code program and a fast Moonraker simulator and link on 127.0.0.1.
+// Shared by the printer tests: a short G-code program, fast Moonraker and Marlin links (the simulators on
+// 127.0.0.1 and on a pseudo-terminal).
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "hardware_test_support.h"
+#include "multidir/hardware/marlin_link.h"
 #include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/moonraker_simulator.h"
 
@@ -44,6 +47,32 @@ inline std::unique_ptr<PrinterLink> moonrakerLinkTo(int port, PrinterLinkOptions
   auto link = makeMoonrakerLink(settings, options);
   EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
   return link.ok() ? std::move(link.value()) : nullptr;
+}
+
+inline std::unique_ptr<PrinterLink> marlinLinkTo(const std::string& devicePath,
+                                                 PrinterLinkOptions options = fastPrinterOptions(), int window = 1) {
+  MarlinSettings settings;
+  settings.devicePath = devicePath;
+  settings.maxUnacknowledgedLines = window;
+  auto link = makeMarlinLink(settings, options);
+  EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
+  return link.ok() ? std::move(link.value()) : nullptr;
+}
+
+// The commands of a G-code text as a printer receives them (comments and blank lines dropped).
+inline std::vector<std::string> gcodeCommands(const std::string& text) {
+  std::vector<std::string> commands;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(begin, end - begin);
+    begin = end + 1;
+    if (const std::size_t semicolon = line.find(';'); semicolon != std::string::npos) line.resize(semicolon);
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (!line.empty()) commands.push_back(line);
+  }
+  return commands;
 }
 
 }  // namespace multidir::hardware::test
