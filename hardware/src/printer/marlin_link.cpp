@@ -30,6 +30,7 @@ using namespace std::chrono_literals;
 // Sent when a job is cancelled: heaters and part fan off. No motion: the platform may be about to turn, and
 // where the head may park is the operator's decision.
 const char* const kCancelLines[] = {"M104 S0", "M140 S0", "M107"};
+constexpr std::size_t kRenumberAfterLines = 10000;
 
 core::Error invalid(const std::string& what, const std::string& where) {
   return core::Error{core::ErrorCode::InvalidParameter, what, where};
@@ -606,9 +607,9 @@ class MarlinLink : public PrinterLink {
         if (busy || m_job)
           return invalid("the printer is busy with " + m_status.currentFile + ": " + pending.what + " was refused",
                          m_name);
-        if (!m_numberingReady) return core::Error{core::ErrorCode::DeviceUnreachable,
-                                                  "the printer has not answered yet: " + pending.what + " was not sent",
-                                                  m_name};
+        if (m_status.polls == 0)
+          return core::Error{core::ErrorCode::DeviceUnreachable,
+                             "the printer has not answered yet: " + pending.what + " was not sent", m_name};
         return core::Done{};
       case Command::Pause:
         if (!m_job || m_status.state != PrinterJobState::Printing)
@@ -686,6 +687,8 @@ class MarlinLink : public PrinterLink {
   // m_mutex held: numbers the next line to send, if any is due. Never while the job's reset waits.
   bool appendNextLine() {
     if (!m_numberingReady) return false;  // N0 M110 is in flight: wait for its ok
+    // Idle polls number lines too: start again from N0 now and then, so the history kept for resends stays small.
+    if (!m_job && m_lines.size() > kRenumberAfterLines) m_resetDue = true;
     if (m_resetDue) {
       if (m_sentUpTo != m_ackedUpTo) return false;
       m_resetDue = false;
@@ -750,7 +753,8 @@ class MarlinLink : public PrinterLink {
         m_stopDue = false;
       }
       // Outside the numbering: Marlin's emergency parser acts on M112 as it arrives, even with a full buffer.
-      const core::Status sent = sendRaw("M112\n");
+      // The leading line end ends a line a failed write may have cut short (the parser skips to the next line).
+      const core::Status sent = sendRaw("\nM112\n");
       std::unique_lock<std::mutex> lock(m_mutex);
       if (!sent.ok()) {
         m_status.stop.problem = "M112 not written: " + sent.error().message;
