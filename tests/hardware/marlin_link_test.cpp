@@ -104,6 +104,16 @@ TEST_F(MarlinLinkTest, ConnectToAMissingDeviceSaysWhatToCheck) {
   EXPECT_TRUE(link->status().linkLost);
 }
 
+TEST_F(MarlinLinkTest, ConnectToAPrinterThatNeverAnswersSaysToCheckTheBaudRate) {
+  sim->dropLink();  // what a wrong baud rate looks like: nothing that reads as a line comes back
+  auto link = marlinLinkTo(sim->devicePath());
+  const core::Status status = link->connect();
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().code, core::ErrorCode::DeviceUnreachable);
+  EXPECT_NE(messageOf(status).find("check the baud rate"), std::string::npos) << messageOf(status);
+  EXPECT_TRUE(link->status().linkLost);
+}
+
 TEST_F(MarlinLinkTest, StreamsTheFileWithLineNumbersAndChecksumsToCompletion) {
   auto link = connected();
   ASSERT_TRUE(printing(*link));
