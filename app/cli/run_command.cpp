@@ -11,8 +11,8 @@
 #include <thread>
 
 #include "cli_args.h"
-#include "multidir/hardware/printer_url.h"
 #include "multidir/hardware/print_run.h"
+#include "multidir/hardware/printer_url.h"
 #include "multidir/hardware/robot_arm.h"
 #include "multidir/hardware/rotary_platform.h"
 #include "multidir/slicing/estimates.h"

@@ -232,9 +232,9 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at",
-                                             "--fault-at-line"},
-                                      {"--rotary", "--robot", "--help"}, "simulate");
+  const ParsedArgs parsed = parseArgs(
+      args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line"},
+      {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
     return kExitOk;

@@ -117,7 +117,8 @@ TEST_F(MarlinLinkTest, ConnectToAPrinterThatNeverAnswersSaysToCheckTheBaudRate) 
 TEST_F(MarlinLinkTest, StreamsTheFileWithLineNumbersAndChecksumsToCompletion) {
   auto link = connected();
   ASSERT_TRUE(printing(*link));
-  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; })) << link->status().lastError;
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }))
+      << link->status().lastError;
   EXPECT_DOUBLE_EQ(link->status().progress, 1.0);
   EXPECT_EQ(link->status().currentFile, "step-01.gcode");
   // Every line reached the printer numbered in order from the job's M110, each with its right checksum.
@@ -151,7 +152,8 @@ TEST_F(MarlinLinkTest, RecoversFromAResendWithoutLosingOrRepeatingALine) {
   ASSERT_TRUE(outcome(link->upload(gcode, "step-01.gcode")).ok());
   sim->corruptNextLines(1);  // the job's M110 goes through; its first numbered line does not
   ASSERT_TRUE(outcome(link->startPrint("step-01.gcode")).ok());
-  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; })) << link->status().lastError;
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }))
+      << link->status().lastError;
   const auto received = sim->received();
   const auto bad = std::find_if(received.begin(), received.end(),
                                 [](const MarlinLineRecord& r) { return r.outcome == Outcome::ChecksumMismatch; });
@@ -170,7 +172,8 @@ TEST_F(MarlinLinkTest, RecoversFromResendsWithSeveralLinesInFlight) {
   ASSERT_TRUE(outcome(link->upload(gcode, "step-01.gcode")).ok());
   sim->corruptNextLines(3);
   ASSERT_TRUE(outcome(link->startPrint("step-01.gcode")).ok());
-  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; })) << link->status().lastError;
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }))
+      << link->status().lastError;
   EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
 }
 
@@ -218,7 +221,8 @@ TEST_F(MarlinLinkTest, CancelStopsStreamingAndSwitchesTheHeatersOff) {
   EXPECT_EQ(link->status().state, PrinterJobState::Cancelled);
   const auto executed = sim->executed();
   const auto at = [&](const std::string& c) {
-    return std::find_if(executed.begin(), executed.end(), [&](const MarlinExecutedRecord& e) { return e.command == c; });
+    return std::find_if(executed.begin(), executed.end(),
+                        [&](const MarlinExecutedRecord& e) { return e.command == c; });
   };
   EXPECT_NE(at("M104 S0"), executed.end());
   EXPECT_NE(at("M140 S0"), executed.end());
@@ -371,8 +375,7 @@ TEST(PrinterUrl, AnUnknownSchemeNamesTheOnesThereAre) {
   EXPECT_NE(unknown.error().message.find("moonraker://"), std::string::npos);
   // Each protocol's own parser says what is wrong with its kind of address.
   EXPECT_NE(makePrinterLinkFromUrl("https://p", "").error().message.find("https is not supported"), std::string::npos);
-  EXPECT_NE(makePrinterLinkFromUrl("serial://dev", "").error().message.find("absolute device path"),
-            std::string::npos);
+  EXPECT_NE(makePrinterLinkFromUrl("serial://dev", "").error().message.find("absolute device path"), std::string::npos);
 }
 
 }  // namespace

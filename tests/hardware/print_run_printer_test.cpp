@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <iostream>
+#include <stdexcept>
 #include <thread>
 
 #include "multidir/core/search/decompose.h"

@@ -191,9 +191,7 @@ class SimulatedMarlin : public SimulatedPrinterUnderTest {
   }
   int completedJobs() const override { return static_cast<int>(executedTimes("M400").size()); }
   // M109's record is written when the wait ends: past the heating once it has more than the finished jobs.
-  bool printingPastHeating() const override {
-    return executedTimes("M109 S200").size() > executedTimes("M400").size();
-  }
+  bool printingPastHeating() const override { return executedTimes("M109 S200").size() > executedTimes("M400").size(); }
   bool halted() const override { return m_sim.state().halted; }
 
  private:

@@ -185,9 +185,9 @@ class MarlinLink : public PrinterLink {
         return future;
       }
       if (refusedWhileStopped && m_status.stop.latched()) {
-        promise.set_value(invalid("the emergency stop is latched: " + what +
-                                      " was not sent; clear the stop (and reset the printer) first",
-                                  m_name));
+        promise.set_value(invalid(
+            "the emergency stop is latched: " + what + " was not sent; clear the stop (and reset the printer) first",
+            m_name));
         return future;
       }
       m_queue.push_back(Pending{command, what, std::move(localPath), std::move(remoteName), std::move(promise)});
@@ -696,7 +696,8 @@ class MarlinLink : public PrinterLink {
       return true;
     }
     const auto now = Clock::now();
-    const bool pollDue = now - m_lastTemperature >= m_options.pollInterval && now - m_lastPollSent >= m_options.pollInterval;
+    const bool pollDue =
+        now - m_lastTemperature >= m_options.pollInterval && now - m_lastPollSent >= m_options.pollInterval;
     if (m_job && m_status.state == PrinterJobState::Printing && !m_status.stop.latched()) {
       if (pollDue) return appendPoll(now);
       Job& job = *m_job;
@@ -824,8 +825,8 @@ class MarlinLink : public PrinterLink {
 }  // namespace
 
 const std::vector<int>& marlinBaudRates() {
-  static const std::vector<int> rates = {9600, 19200, 38400, 57600, 115200, 230400, 250000,
-                                         460800, 500000, 576000, 921600, 1000000};
+  static const std::vector<int> rates = {9600,   19200,  38400,  57600,  115200, 230400,
+                                         250000, 460800, 500000, 576000, 921600, 1000000};
   return rates;
 }
 
@@ -857,8 +858,9 @@ core::Result<MarlinSettings> parseMarlinUrl(const std::string& url) {
                         std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (key == "baud") {
       if (!digits || !serial::supportedRate(std::stoi(value)))
-        return invalid("'" + url + "': baud must be one of 9600, 19200, 38400, 57600, 115200, 230400, 250000, "
-                       "460800, 500000, 576000, 921600, 1000000 (Marlin's BAUDRATE)",
+        return invalid("'" + url +
+                           "': baud must be one of 9600, 19200, 38400, 57600, 115200, 230400, 250000, "
+                           "460800, 500000, 576000, 921600, 1000000 (Marlin's BAUDRATE)",
                        "--printer");
       settings.baud = std::stoi(value);
     } else if (key == "window") {

@@ -16,9 +16,9 @@ struct Rate {
   speed_t constant;
 };
 
-constexpr Rate kRates[] = {{9600, B9600},     {19200, B19200},     {38400, B38400},     {57600, B57600},
-                           {115200, B115200}, {230400, B230400},   {460800, B460800},   {500000, B500000},
-                           {576000, B576000}, {921600, B921600},   {1000000, B1000000}};
+constexpr Rate kRates[] = {{9600, B9600},     {19200, B19200},   {38400, B38400},    {57600, B57600},
+                           {115200, B115200}, {230400, B230400}, {460800, B460800},  {500000, B500000},
+                           {576000, B576000}, {921600, B921600}, {1000000, B1000000}};
 constexpr int kMarlinCustomRate = 250000;  // Marlin's usual BAUDRATE besides 115200; no termios constant
 
 core::Error unreachable(const std::string& what, const std::string& path) {
@@ -90,7 +90,8 @@ core::Status writeAll(int fd, const std::string& text, std::chrono::milliseconds
                          "writing to the printer failed (" + std::string(std::strerror(errno)) +
                              "): was it unplugged or switched off?",
                          "serial"};
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0)
       return core::Error{core::ErrorCode::DeviceUnreachable,
                          "the printer took no data for " + std::to_string(timeout.count()) + " ms", "serial"};

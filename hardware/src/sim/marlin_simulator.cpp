@@ -83,10 +83,10 @@ class MarlinSimulator::Impl {
     int master = -1;
     int slave = -1;
     if (openpty(&master, &slave, nullptr, nullptr, nullptr) != 0)
-      return core::Error{core::ErrorCode::DeviceUnreachable,
-                         "cannot open a pseudo-terminal (" + std::string(std::strerror(errno)) +
-                             "): is /dev/pts mounted?",
-                         "printer simulator"};
+      return core::Error{
+          core::ErrorCode::DeviceUnreachable,
+          "cannot open a pseudo-terminal (" + std::string(std::strerror(errno)) + "): is /dev/pts mounted?",
+          "printer simulator"};
     // The printer's side is raw from the start, so nothing is echoed or translated before the link opens it.
     termios tio{};
     tcgetattr(slave, &tio);
@@ -273,7 +273,7 @@ class MarlinSimulator::Impl {
       record.lineNumber = std::strtol(text.c_str() + 1, &end, 10);
       const std::size_t after = static_cast<std::size_t>(end - text.c_str());
       command = marlin::commandOf(star == std::string::npos || star < after ? text.substr(after)
-                                                                             : text.substr(after, star - after));
+                                                                            : text.substr(after, star - after));
       record.command = command;
       if (command == "M112") return emergency(record);
       if (star == std::string::npos) return refuse(record, Outcome::NoChecksum, "No Checksum with line number");
@@ -283,8 +283,8 @@ class MarlinSimulator::Impl {
       const bool m110 = command.rfind("M110", 0) == 0;
       if (!m110 && record.lineNumber != m_lastLine + 1)
         return refuse(record, Outcome::WrongLineNumber, "Line Number is not Last Line Number+1");
-      m_lastLine = m110 ? static_cast<long>(parameter(command, 'N', static_cast<double>(record.lineNumber)))
-                        : record.lineNumber;
+      m_lastLine =
+          m110 ? static_cast<long>(parameter(command, 'N', static_cast<double>(record.lineNumber))) : record.lineNumber;
     } else {
       command = marlin::commandOf(star == std::string::npos ? text : text.substr(0, star));
       record.command = command;
@@ -463,8 +463,8 @@ class MarlinSimulator::Impl {
   bool m_halted = false;
   std::string m_haltReason;
   long m_lastLine = 0;
-  std::deque<Queued> m_inbox;  // Marlin's command queue
-  bool m_blocked = false;      // the front command waits for the printer
+  std::deque<Queued> m_inbox;            // Marlin's command queue
+  bool m_blocked = false;                // the front command waits for the printer
   bool m_blockedOutsidePrinter = false;  // ... and is not one of its lines (M400): recorded when it ends
   std::deque<Execution> m_pendingExecution;
   Clock::time_point m_lastBusy{};

@@ -21,7 +21,7 @@ namespace multidir::hardware {
 
 struct MarlinSettings {
   std::string devicePath = "/dev/ttyACM0";  // the printer's USB serial device (or a pseudo-terminal)
-  int baud = 115200;                         // one of marlinBaudRates(); Marlin's BAUDRATE
+  int baud = 115200;                        // one of marlinBaudRates(); Marlin's BAUDRATE
   // Lines sent ahead of the printer's oks. 1 (the default) is what every host does safely; Marlin's command
   // buffer (BUFSIZE) holds 4.
   int maxUnacknowledgedLines = 1;

@@ -23,9 +23,9 @@
 namespace multidir::hardware {
 
 struct MarlinSimulatorOptions {
-  double speed = 1.0;  // simulated seconds per real second, (0, 100000]
-  int plannerMoves = 16;                           // Marlin's BLOCK_BUFFER_SIZE
-  std::chrono::milliseconds busyInterval{2000};    // "echo:busy: processing" while blocked (Marlin's default)
+  double speed = 1.0;                                   // simulated seconds per real second, (0, 100000]
+  int plannerMoves = 16;                                // Marlin's BLOCK_BUFFER_SIZE
+  std::chrono::milliseconds busyInterval{2000};         // "echo:busy: processing" while blocked (Marlin's default)
   std::chrono::milliseconds temperatureInterval{1000};  // "T:..." lines while M109/M190 wait
   // The clock of the records and of the simulated time; the system's steady clock unless a test injects one.
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
@@ -41,9 +41,9 @@ struct MarlinLineRecord {
     Ignored,           // received after the halt: nothing is answered
   };
   std::chrono::steady_clock::time_point at;
-  std::string text;         // as received, without the line end
-  long lineNumber = -1;     // N; -1 when unnumbered
-  std::string command;      // without number and checksum
+  std::string text;      // as received, without the line end
+  long lineNumber = -1;  // N; -1 when unnumbered
+  std::string command;   // without number and checksum
   Outcome outcome = Outcome::Accepted;
 };
 
@@ -58,7 +58,7 @@ struct MarlinSimulatorState {
   std::string haltReason;  // Marlin's words, "" while running
   HeaterReading extruder;
   HeaterReading bed;
-  long lastLineNumber = 0;    // Marlin's "Last Line"
+  long lastLineNumber = 0;      // Marlin's "Last Line"
   std::size_t queuedMoves = 0;  // in the planner, not finished
 };
 
@@ -71,7 +71,7 @@ class MarlinSimulator {
 
   // Opens the pseudo-terminal. InvalidParameter for bad options; DeviceUnreachable when no pty can be opened.
   core::Status start();
-  void stop();  // idempotent; the device path disappears
+  void stop();                                   // idempotent; the device path disappears
   [[nodiscard]] std::string devicePath() const;  // "/dev/pts/5"
 
   // Faults, now.
@@ -79,10 +79,10 @@ class MarlinSimulator {
   void cancelJobOnPrinter();    // the LCD's "Stop print": the planner is emptied, heaters off, "//action:cancel"
   void dropLink();              // the printer stops hearing and answering (a cable fault) until restoreLink()
   void restoreLink();
-  void closePort();             // the device disappears (unplugged): the link's reads fail
+  void closePort();                                     // the device disappears (unplugged): the link's reads fail
   void setReplyDelay(std::chrono::milliseconds delay);  // every line the printer writes is held this long
-  void corruptNextLines(int count);  // the next `count` numbered lines arrive with one byte changed
-  void resetPrinter();          // the reset button: a halted printer restarts ("start") with line number 0
+  void corruptNextLines(int count);                     // the next `count` numbered lines arrive with one byte changed
+  void resetPrinter();  // the reset button: a halted printer restarts ("start") with line number 0
 
   // Observation.
   [[nodiscard]] std::vector<MarlinLineRecord> received() const;
