@@ -29,7 +29,7 @@ const char* const kUsage =
     "  slice PLAN_OR_JOB --printer PROFILE -o OUTDIR   G-code for every step (PrusaSlicer), checked\n"
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
-    "  simulate --printer moonraker   run the simulator of a Klipper printer behind Moonraker\n"
+    "  simulate --printer moonraker|marlin   printer simulator: Klipper behind Moonraker, or Marlin on a pty\n"
     "  run JOB --printer URL --platform HOST:PORT   print a sliced job: platform and printer in the loop\n"
     "  help [COMMAND]              show this help, or a command's help\n"
     "\n"

@@ -11,8 +11,8 @@
 #include <thread>
 
 #include "cli_args.h"
-#include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/print_run.h"
+#include "multidir/hardware/printer_url.h"
 #include "multidir/hardware/robot_arm.h"
 #include "multidir/hardware/rotary_platform.h"
 #include "multidir/slicing/estimates.h"
@@ -26,9 +26,10 @@ const char* const kRunHelp =
     "Runs a sliced print job headless (JOB: the folder written by 'multidir slice' for a profile whose platform\n"
     "is driven over Modbus, or its print-job.json). For each step: turns the platform (4-DOF rotary controller\n"
     "or 5-DOF robot arm, as the job's machine says) to the step's orientation, waits until it has settled,\n"
-    "uploads the step's G-code to the printer (Klipper through Moonraker), starts it, follows it until the\n"
-    "printer reports it complete, and goes on. The platform never moves while the printer prints, and the\n"
-    "printer never starts while the platform is not at rest at the step's orientation.\n"
+    "sends the step's G-code to the printer (Klipper through Moonraker: uploaded and started; Marlin over USB:\n"
+    "streamed line by line), follows it until the printer reports it complete, and goes on. The platform\n"
+    "never moves while the printer prints, and the printer never starts while the platform is not at rest at\n"
+    "the step's orientation.\n"
     "\n"
     "Every event is logged with its time; a progress line (step, printer progress, temperatures, the job's\n"
     "remaining time from the slicer's estimates) follows the printer. When the printer reports an error, a\n"
@@ -36,11 +37,13 @@ const char* const kRunHelp =
     "stays where it is) and says why; fix it and continue with --from STEP.\n"
     "\n"
     "Ctrl-C stops both devices: the platform's motion and the printer's job (cancelled). A second Ctrl-C sends\n"
-    "both emergency stops (Klipper then needs a FIRMWARE_RESTART, the platform a clear fault and homing).\n"
+    "both emergency stops (Klipper then needs a FIRMWARE_RESTART, Marlin a reset, the platform a clear fault and\n"
+    "homing).\n"
     "\n"
     "Options:\n"
-    "  --printer URL        Moonraker's address: http://HOST:PORT (default port 80) or HOST:PORT (7125 when\n"
-    "                       absent)\n"
+    "  --printer URL        the printer: http://HOST:PORT (Moonraker; default port 80), HOST:PORT or\n"
+    "                       moonraker://HOST[:PORT] (Moonraker; 7125 when absent), or\n"
+    "                       serial:///dev/ttyACM0[?baud=115200] (Marlin over USB serial)\n"
     "  --api-key KEY        Moonraker's API key, when its [authorization] asks for one\n"
     "  --platform HOST:PORT the platform's Modbus TCP address (rotary controller or robot)\n"
     "  --unit ID            Modbus unit id, 0..255 (default: 1 for the rotary controller, 255 for the robot)\n"
@@ -197,17 +200,16 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
       onlyPositional(parsed, "run", "job", "multidir run JOB --printer URL --platform HOST:PORT");
   if (!parsed.has("--printer"))
     throw UsageError(
-        "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125). "
+        "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125, or a "
+        "Marlin printer's serial port, such as serial:///dev/ttyACM0). "
         "Run 'multidir help run'.");
   if (!parsed.has("--platform"))
     throw UsageError(
         "multidir run: --platform HOST:PORT is required (the platform's Modbus TCP address, such as "
         "192.168.0.30:502). Run 'multidir help run'.");
-  core::Result<hardware::MoonrakerSettings> printerSettings =
-      hardware::parseMoonrakerUrl(parsed.value("--printer", ""));
-  if (!printerSettings)
-    throw UsageError("multidir run: " + printerSettings.error().describe() + ". Run 'multidir help run'.");
-  printerSettings->apiKey = parsed.value("--api-key", "");
+  core::Result<std::unique_ptr<hardware::PrinterLink>> link =
+      hardware::makePrinterLinkFromUrl(parsed.value("--printer", ""), parsed.value("--api-key", ""));
+  if (!link) throw UsageError("multidir run: " + link.error().describe() + ". Run 'multidir help run'.");
   const std::string platformText = parsed.value("--platform", "");
   const std::size_t colon = platformText.rfind(':');
   if (colon == std::string::npos || colon == 0)
@@ -224,8 +226,6 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   SignalScope signals;
 
   Devices devices;
-  core::Result<std::unique_ptr<hardware::PrinterLink>> link = hardware::makeMoonrakerLink(*printerSettings);
-  if (!link) throw UsageError("multidir run: " + link.error().describe());
   devices.printer = std::move(*link);
   log.line("job " + job.jobFile + ": " + std::to_string(job.steps.size()) + " steps, " +
            core::machineKindName(job.machine.kind) + (from > 1 ? ", starting at step " + std::to_string(from) : ""));

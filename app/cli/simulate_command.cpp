@@ -9,6 +9,7 @@
 
 #include "cli_args.h"
 #include "multidir/hardware/device_simulator.h"
+#include "multidir/hardware/marlin_simulator.h"
 #include "multidir/hardware/moonraker_simulator.h"
 
 namespace multidir::cli {
@@ -17,6 +18,7 @@ const char* const kSimulateHelp =
     "Usage: multidir simulate [--rotary] [--robot] [--listen ADDRESS] [--port PORT] [--unit ID]\n"
     "       multidir simulate --printer moonraker [--listen ADDRESS] [--port PORT] [--speed X]\n"
     "                         [--fault NAME [--fault-at FRACTION]]\n"
+    "       multidir simulate --printer marlin [--speed X] [--fault NAME [--fault-at-line N]]\n"
     "\n"
     "Runs a Modbus TCP simulator of MultiDir's devices until Ctrl-C: the rotary platform controller and the\n"
     "Universal Robots arm's registers 128-255 with the behaviour of multidir_platform.script (register maps:\n"
@@ -39,6 +41,13 @@ const char* const kSimulateHelp =
     "  --fault NAME      inject once, when a job first reaches --fault-at: thermal-runaway, link-drop (3 s),\n"
     "                    cancelled-on-printer, slow-replies (3 s each)\n"
     "  --fault-at FRACTION  the job's progress for --fault, 0..1 (default: 0.5)\n"
+    "\n"
+    "With --printer marlin it runs a Marlin printer on a pseudo-terminal instead and prints its device path:\n"
+    "give it to 'multidir run' as --printer serial:///dev/pts/N. It checks line numbers and checksums (asking\n"
+    "for a resend), answers M105 with temperatures, says busy while M109 or M400 wait, and halts on M112.\n"
+    "  --printer marlin  simulate a Marlin printer over USB serial\n"
+    "  --fault NAME      as above, or serial-resend (one line arrives damaged: the printer asks for it again);\n"
+    "                    injected once, when the printer has received --fault-at-line lines (default: 100)\n"
     "  -h, --help        show this help\n"
     "\n"
     "Exit codes: 0 stopped by Ctrl-C, 1 cannot listen on the address and port, 2 usage error.\n";
@@ -80,11 +89,88 @@ std::string robotLine(const hardware::SimulatedRobotState& s) {
 
 namespace {
 
+int simulateMarlin(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
+  for (const char* networkOnly : {"--listen", "--port", "--fault-at"})
+    if (parsed.has(networkOnly))
+      throw UsageError(std::string("multidir simulate: ") + networkOnly +
+                       " is not for --printer marlin (it is on a pseudo-terminal). Run 'multidir help simulate'.");
+  hardware::MarlinSimulatorOptions options;
+  options.speed = parseNumber(parsed.value("--speed", "1"), "--speed");
+  if (!(options.speed > 0.0) || options.speed > 100000.0)
+    throw UsageError("multidir simulate: --speed must be above 0 and at most 100000. Run 'multidir help simulate'.");
+  const std::string faultName = parsed.value("--fault", "none");
+  const bool serialResend = faultName == "serial-resend";
+  hardware::PrinterFault fault = hardware::PrinterFault::None;
+  if (!serialResend) {
+    core::Result<hardware::PrinterFault> parsedFault = hardware::parsePrinterFault(faultName);
+    if (!parsedFault)
+      throw UsageError("multidir simulate: " + parsedFault.error().describe() +
+                       " (or serial-resend). Run 'multidir help simulate'.");
+    fault = *parsedFault;
+  }
+  const int faultAtLine = wholeNumber(parsed.value("--fault-at-line", "100"), "--fault-at-line", 0, 100000000);
+  const bool faulting = serialResend || fault != hardware::PrinterFault::None;
+
+  g_stopRequested = false;
+  auto previousInt = std::signal(SIGINT, onStopSignal);
+  auto previousTerm = std::signal(SIGTERM, onStopSignal);
+  hardware::MarlinSimulator simulator(options);
+  const core::Status started = simulator.start();
+  if (!started.ok()) {
+    std::signal(SIGINT, previousInt);
+    std::signal(SIGTERM, previousTerm);
+    err << "multidir simulate: " << started.error().describe() << "\n";
+    return kExitBadInput;
+  }
+  out << "Printer simulator (Marlin) on " << simulator.devicePath() << " at speed " << options.speed
+      << (faulting ? ", fault " + faultName + " at line " + std::to_string(faultAtLine) : std::string())
+      << ". Use --printer serial://" << simulator.devicePath() << ". Ctrl-C stops it.\n"
+      << std::flush;
+  std::string last;
+  bool injected = false;
+  auto restoreAt = std::chrono::steady_clock::time_point::max();
+  while (!g_stopRequested) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    const std::size_t lines = simulator.received().size();
+    if (faulting && !injected && lines >= static_cast<std::size_t>(faultAtLine)) {
+      injected = true;
+      out << "injecting " << faultName << "\n";
+      if (serialResend) simulator.corruptNextLines(1);
+      if (fault == hardware::PrinterFault::ThermalRunaway) simulator.injectThermalRunaway();
+      if (fault == hardware::PrinterFault::CancelledOnPrinter) simulator.cancelJobOnPrinter();
+      if (fault == hardware::PrinterFault::SlowReplies) simulator.setReplyDelay(std::chrono::milliseconds(3000));
+      if (fault == hardware::PrinterFault::LinkDrop) {
+        simulator.dropLink();
+        restoreAt = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+      }
+    }
+    if (std::chrono::steady_clock::now() >= restoreAt) {
+      simulator.restoreLink();
+      restoreAt = std::chrono::steady_clock::time_point::max();
+    }
+    const hardware::MarlinSimulatorState s = simulator.state();
+    char text[256];
+    std::snprintf(text, sizeof text, "printer: %s, line %ld, %zu moves queued, extruder %.0f/%.0f C, bed %.0f/%.0f C",
+                  s.halted ? ("halted: " + s.haltReason).c_str() : "running", s.lastLineNumber, s.queuedMoves,
+                  s.extruder.actualC, s.extruder.targetC, s.bed.actualC, s.bed.targetC);
+    if (text != last) out << (last = text) << "\n" << std::flush;
+  }
+  std::signal(SIGINT, previousInt);
+  std::signal(SIGTERM, previousTerm);
+  simulator.stop();
+  out << "Simulator stopped.\n";
+  return kExitOk;
+}
+
 int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
   const std::string kind = parsed.value("--printer", "");
+  if (kind == "marlin") return simulateMarlin(parsed, out, err);
+  if (parsed.has("--fault-at-line"))
+    throw UsageError("multidir simulate: --fault-at-line is for --printer marlin. Run 'multidir help simulate'.");
   if (kind != "moonraker")
     throw UsageError("multidir simulate: --printer '" + kind +
-                     "' is not simulated: this version simulates 'moonraker' (Klipper). Run 'multidir help simulate'.");
+                     "' is not simulated: this version simulates 'moonraker' (Klipper) and 'marlin'. Run 'multidir "
+                     "help simulate'.");
   for (const char* modbusOnly : {"--rotary", "--robot", "--unit"})
     if (parsed.has(modbusOnly))
       throw UsageError(std::string("multidir simulate: ") + modbusOnly +
@@ -146,8 +232,9 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at"},
-                                      {"--rotary", "--robot", "--help"}, "simulate");
+  const ParsedArgs parsed = parseArgs(
+      args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line"},
+      {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
     return kExitOk;
@@ -156,7 +243,7 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
     throw UsageError("multidir simulate: unexpected argument '" + parsed.positionals[0] +
                      "'. Run 'multidir help simulate'.");
   if (parsed.has("--printer")) return simulatePrinter(parsed, out, err);
-  for (const char* printerOnly : {"--speed", "--fault", "--fault-at"})
+  for (const char* printerOnly : {"--speed", "--fault", "--fault-at", "--fault-at-line"})
     if (parsed.has(printerOnly))
       throw UsageError(std::string("multidir simulate: ") + printerOnly +
                        " is for the printer simulator: add --printer moonraker. Run 'multidir help simulate'.");

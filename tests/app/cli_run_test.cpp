@@ -1,5 +1,5 @@
-// `multidir run` against the Modbus device simulator and the Moonraker printer simulator, both in this test
-// process on 127.0.0.1, and `multidir simulate --printer moonraker`.
+// `multidir run` against the Modbus device simulator and the Moonraker (127.0.0.1) or Marlin (pseudo-terminal)
+// printer simulator, all in this test process, and `multidir simulate --printer moonraker|marlin`.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "multidir/hardware/device_simulator.h"
+#include "multidir/hardware/marlin_simulator.h"
 #include "multidir/hardware/moonraker_simulator.h"
 #include "support/cli_runner.h"
 #include "support/test_models.h"
@@ -187,12 +188,52 @@ TEST(CliSimulatePrinter, ServesMoonrakerOnLoopbackAndStopsOnSigint) {
 
 TEST(CliSimulatePrinter, UnknownPrinterOrFaultIsAUsageErrorNamingTheChoices) {
   const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.Usage");
-  const CliRun marlin = runCli("simulate --printer marlin", dir);
-  EXPECT_EQ(marlin.exitCode, 2);
-  EXPECT_NE(marlin.err.find("simulates 'moonraker'"), std::string::npos) << marlin.err;
+  const CliRun unknown = runCli("simulate --printer repetier", dir);
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.err.find("simulates 'moonraker'"), std::string::npos) << unknown.err;
   const CliRun fault = runCli("simulate --printer moonraker --fault fire", dir);
   EXPECT_EQ(fault.exitCode, 2);
   EXPECT_NE(fault.err.find("thermal-runaway"), std::string::npos) << fault.err;
+}
+
+TEST(CliSimulatePrinter, ServesMarlinOnAPseudoTerminalAndStopsOnSigint) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.Marlin");
+  const CliRun run = runCli("simulate --printer marlin --speed 10", dir, "timeout --preserve-status -s INT 1");
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("Use --printer serial:///dev/pts/"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("printer: running, line 0"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
+}
+
+TEST(CliRun, AnUnknownPrinterSchemeIsAUsageErrorNamingTheKnownOnes) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.Scheme");
+  const CliRun run = runCli("run job --printer ftp://printer --platform 127.0.0.1:502", dir);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find("unknown scheme 'ftp://'"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("serial:///dev/ttyACM0"), std::string::npos) << run.err;
+}
+
+TEST(CliRunMarlin, StreamsEveryStepToAMarlinPrinterOverSerial) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.Marlin");
+  writeJob(dir + "/job");
+  hw::SimulatorOptions deviceOptions;
+  deviceOptions.robot = false;
+  hw::DeviceSimulator devices(deviceOptions);
+  ASSERT_TRUE(devices.start().ok());
+  hw::MarlinSimulatorOptions printerOptions;
+  printerOptions.speed = 200.0;
+  hw::MarlinSimulator printer(printerOptions);
+  ASSERT_TRUE(printer.start().ok());
+  const CliRun run = runCli("run '" + dir + "/job' --printer serial://" + printer.devicePath() +
+                                " --platform 127.0.0.1:" + std::to_string(devices.port()) + " --settle 20",
+                            dir, "timeout 60");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("Marlin printer at " + printer.devicePath()), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("reports step-02.gcode complete"), std::string::npos) << run.out;
+  int jobEnds = 0;
+  for (const auto& e : printer.executed()) jobEnds += e.command == "M400" ? 1 : 0;
+  EXPECT_EQ(jobEnds, 2);
+  EXPECT_NEAR(devices.rotaryState().angleDegrees, 30.0, 0.05);
 }
 
 }  // namespace

@@ -1,12 +1,17 @@
 #pragma once
-// Shared by the printer tests: a short G-code program and a fast Moonraker simulator and link on 127.0.0.1.
+// Shared by the printer tests: a short G-code program, fast Moonraker and Marlin links (the simulators on
+// 127.0.0.1 and on a pseudo-terminal).
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "hardware_test_support.h"
+#include "multidir/hardware/marlin_link.h"
+#include "multidir/hardware/marlin_simulator.h"
 #include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/moonraker_simulator.h"
 
@@ -44,6 +49,175 @@ inline std::unique_ptr<PrinterLink> moonrakerLinkTo(int port, PrinterLinkOptions
   auto link = makeMoonrakerLink(settings, options);
   EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
   return link.ok() ? std::move(link.value()) : nullptr;
+}
+
+inline std::unique_ptr<PrinterLink> marlinLinkTo(const std::string& devicePath,
+                                                 PrinterLinkOptions options = fastPrinterOptions(), int window = 1) {
+  MarlinSettings settings;
+  settings.devicePath = devicePath;
+  settings.maxUnacknowledgedLines = window;
+  auto link = makeMarlinLink(settings, options);
+  EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
+  return link.ok() ? std::move(link.value()) : nullptr;
+}
+
+// The commands of a G-code text as a printer receives them (comments and blank lines dropped).
+inline std::vector<std::string> gcodeCommands(const std::string& text) {
+  std::vector<std::string> commands;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(begin, end - begin);
+    begin = end + 1;
+    if (const std::size_t semicolon = line.find(';'); semicolon != std::string::npos) line.resize(semicolon);
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (!line.empty()) commands.push_back(line);
+  }
+  return commands;
+}
+
+// A printer simulator and its link, whatever the protocol, for tests that hold for every printer: the faults
+// each simulator injects, and its records read as job intervals, starts and emergency stops on the test's clock.
+class SimulatedPrinterUnderTest {
+ public:
+  using Clock = std::chrono::steady_clock;
+  struct JobInterval {
+    Clock::time_point from;  // the job began printing
+    Clock::time_point to;    // it ended (Clock::time_point::max() while it still prints)
+  };
+  virtual ~SimulatedPrinterUnderTest() = default;
+  [[nodiscard]] virtual std::unique_ptr<PrinterLink> link(PrinterLinkOptions options) const = 0;
+  virtual void injectThermalRunaway() = 0;
+  virtual void cancelJobOnPrinter() = 0;
+  virtual void dropLink() = 0;
+  virtual void restoreLink() = 0;
+  virtual void setReplyDelay(std::chrono::milliseconds delay) = 0;
+  [[nodiscard]] virtual std::vector<JobInterval> jobs() const = 0;
+  [[nodiscard]] virtual std::vector<Clock::time_point> starts() const = 0;  // each job's start reached the printer
+  [[nodiscard]] virtual std::vector<Clock::time_point> emergencyStops() const = 0;
+  [[nodiscard]] virtual int completedJobs() const = 0;
+  [[nodiscard]] virtual bool printingPastHeating() const = 0;  // the current job's moves have begun
+  [[nodiscard]] virtual bool halted() const = 0;               // by its emergency stop (or a fault)
+};
+
+class SimulatedMoonraker : public SimulatedPrinterUnderTest {
+ public:
+  explicit SimulatedMoonraker(MoonrakerSimulatorOptions options) : m_sim(std::move(options)) {
+    EXPECT_TRUE(m_sim.start().ok());
+  }
+  std::unique_ptr<PrinterLink> link(PrinterLinkOptions options) const override {
+    return moonrakerLinkTo(m_sim.port(), std::move(options));
+  }
+  void injectThermalRunaway() override { m_sim.injectThermalRunaway(); }
+  void cancelJobOnPrinter() override { m_sim.cancelJobOnPrinter(); }
+  void dropLink() override { m_sim.dropLink(); }
+  void restoreLink() override { m_sim.restoreLink(); }
+  void setReplyDelay(std::chrono::milliseconds delay) override { m_sim.setReplyDelay(delay); }
+  std::vector<JobInterval> jobs() const override {
+    const auto events = m_sim.jobEvents();
+    std::vector<JobInterval> out;
+    for (std::size_t i = 0; i < events.size(); ++i)
+      if (events[i].state == "printing")
+        out.push_back({events[i].at, i + 1 < events.size() ? events[i + 1].at : Clock::time_point::max()});
+    return out;
+  }
+  std::vector<Clock::time_point> starts() const override { return requestTimes("/printer/print/start"); }
+  std::vector<Clock::time_point> emergencyStops() const override { return requestTimes("/printer/emergency_stop"); }
+  int completedJobs() const override {
+    const auto events = m_sim.jobEvents();
+    return static_cast<int>(
+        std::count_if(events.begin(), events.end(), [](const PrinterJobEvent& e) { return e.state == "complete"; }));
+  }
+  bool printingPastHeating() const override {
+    const SimulatedPrinterState s = m_sim.state();
+    return s.jobState == "printing" && s.progress > 0.1;
+  }
+  bool halted() const override { return m_sim.state().firmwareState == "shutdown"; }
+
+ private:
+  std::vector<Clock::time_point> requestTimes(const std::string& path) const {
+    std::vector<Clock::time_point> out;
+    for (const auto& r : m_sim.requests())
+      if (r.path == path) out.push_back(r.at);
+    return out;
+  }
+  MoonrakerSimulator m_sim;
+};
+
+// Marlin has no jobs of its own: a job is the stream from the link's "N0 M110 N0" that begins it to the
+// execution of the M400 that ends it (every move done).
+class SimulatedMarlin : public SimulatedPrinterUnderTest {
+ public:
+  explicit SimulatedMarlin(MarlinSimulatorOptions options) : m_sim(std::move(options)) {
+    EXPECT_TRUE(m_sim.start().ok());
+  }
+  MarlinSimulator& simulator() { return m_sim; }
+  std::unique_ptr<PrinterLink> link(PrinterLinkOptions options) const override {
+    return marlinLinkTo(m_sim.devicePath(), std::move(options));
+  }
+  void injectThermalRunaway() override { m_sim.injectThermalRunaway(); }
+  void cancelJobOnPrinter() override { m_sim.cancelJobOnPrinter(); }
+  void dropLink() override { m_sim.dropLink(); }
+  void restoreLink() override { m_sim.restoreLink(); }
+  void setReplyDelay(std::chrono::milliseconds delay) override { m_sim.setReplyDelay(delay); }
+  std::vector<JobInterval> jobs() const override {
+    std::vector<JobInterval> out;
+    const auto ends = executedTimes("M400");
+    const auto begins = starts();
+    for (std::size_t k = 0; k < begins.size(); ++k)
+      out.push_back({begins[k], k < ends.size() ? ends[k] : Clock::time_point::max()});
+    return out;
+  }
+  // The M110 that a file line follows (connect's own M110 is followed by temperature polls only).
+  std::vector<Clock::time_point> starts() const override {
+    std::vector<Clock::time_point> out;
+    const auto received = m_sim.received();
+    for (std::size_t i = 0; i < received.size(); ++i) {
+      if (received[i].command != "M110 N0" || received[i].outcome != MarlinLineRecord::Outcome::Accepted) continue;
+      for (std::size_t j = i + 1; j < received.size() && received[j].command != "M110 N0"; ++j) {
+        if (received[j].command == "M105") continue;
+        out.push_back(received[i].at);
+        break;
+      }
+    }
+    return out;
+  }
+  std::vector<Clock::time_point> emergencyStops() const override {
+    std::vector<Clock::time_point> out;
+    for (const auto& r : m_sim.received())
+      if (r.outcome == MarlinLineRecord::Outcome::EmergencyStop) out.push_back(r.at);
+    return out;
+  }
+  int completedJobs() const override { return static_cast<int>(executedTimes("M400").size()); }
+  // M109's record is written when the wait ends: past the heating once it has more than the finished jobs.
+  bool printingPastHeating() const override { return executedTimes("M109 S200").size() > executedTimes("M400").size(); }
+  bool halted() const override { return m_sim.state().halted; }
+
+ private:
+  std::vector<Clock::time_point> executedTimes(const std::string& command) const {
+    std::vector<Clock::time_point> out;
+    for (const auto& e : m_sim.executed())
+      if (e.command == command) out.push_back(e.at);
+    return out;
+  }
+  MarlinSimulator m_sim;
+};
+
+// "moonraker" or "marlin", at `speed` simulated seconds per real second, records on `clock`.
+inline std::unique_ptr<SimulatedPrinterUnderTest> simulatedPrinter(
+    const std::string& protocol, double speed, std::function<std::chrono::steady_clock::time_point()> clock) {
+  if (protocol == "marlin") {
+    MarlinSimulatorOptions options;
+    options.speed = speed;
+    options.steadyNow = std::move(clock);
+    options.busyInterval = 50ms;  // the links' linkLostAfter is 400 ms in tests
+    return std::make_unique<SimulatedMarlin>(options);
+  }
+  MoonrakerSimulatorOptions options;
+  options.speed = speed;
+  options.steadyNow = std::move(clock);
+  return std::make_unique<SimulatedMoonraker>(options);
 }
 
 }  // namespace multidir::hardware::test

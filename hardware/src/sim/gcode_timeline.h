@@ -23,6 +23,20 @@ struct GcodeTimeline {
   double moveSeconds = 0.0;  // sum of the moves (heating not included)
 };
 
+// Reads one line at a time, keeping the modal state (position, absolute/relative, feed rate) between lines:
+// readGcodeTimeline for a whole file, the Marlin simulator for lines as they arrive over the serial link.
+class GcodeTimelineReader {
+ public:
+  // `line` without its end of line; `endByte` is stored as the line's TimelineLine::endByte.
+  TimelineLine read(const std::string& line, std::size_t endByte);
+
+ private:
+  double m_position[4] = {0, 0, 0, 0};  // X Y Z E
+  bool m_relative = false;
+  bool m_relativeE = false;
+  double m_feedMmPerMin = 1500.0;  // until the first F word
+};
+
 GcodeTimeline readGcodeTimeline(const std::string& text);
 
 }  // namespace multidir::hardware::sim

@@ -53,6 +53,38 @@ std::string SimulatedPrinter::start(const std::string& name) {
   return {};
 }
 
+void SimulatedPrinter::startStream(const std::string& name) {
+  m_streaming = true;
+  m_file = name;
+  m_timeline = GcodeTimeline{};
+  m_line = 0;
+  m_lineElapsed = 0.0;
+  m_lineHeaterApplied = false;
+  m_bytesDone = 0;
+  m_printSeconds = 0.0;
+  m_message.clear();
+  m_state = "printing";
+}
+
+void SimulatedPrinter::enqueue(const TimelineLine& line) {
+  m_timeline.lines.push_back(line);
+  m_timeline.bytes = line.endByte;
+  m_timeline.moveSeconds += line.moveSeconds;
+}
+
+bool SimulatedPrinter::waitingForHeater() const {
+  return m_state == "printing" && m_line < m_timeline.lines.size() && m_timeline.lines[m_line].waitForHeater &&
+         secondsToReach(m_timeline.lines[m_line]) > 0.0;
+}
+
+void SimulatedPrinter::dropQueued() {
+  m_timeline.lines.resize(m_line);
+  m_lineElapsed = 0.0;
+  m_lineHeaterApplied = false;
+  m_extruderTarget = 0.0;
+  m_bedTarget = 0.0;
+}
+
 std::string SimulatedPrinter::pause() {
   if (m_state == "paused") return "Print already paused";
   if (m_state != "printing") return "Print is not in progress";
@@ -140,7 +172,7 @@ void SimulatedPrinter::advance(double seconds) {
       m_lineHeaterApplied = false;
     }
   }
-  if (m_state == "printing" && m_line >= m_timeline.lines.size()) {
+  if (m_state == "printing" && m_line >= m_timeline.lines.size() && !m_streaming) {
     m_state = "complete";
     m_bytesDone = m_timeline.bytes;
   }

@@ -41,6 +41,16 @@ class SimulatedPrinter {
   // Faults.
   void thermalRunaway() { m_runaway = true; }
 
+  // Streaming (a host sends the file line by line, as to Marlin over USB): the job stays "printing" with lines
+  // appended as they arrive; running out of lines means waiting for the host, not complete.
+  void startStream(const std::string& name);
+  void enqueue(const TimelineLine& line);
+  [[nodiscard]] std::size_t linesQueued() const { return m_timeline.lines.size() - m_line; }  // not finished yet
+  [[nodiscard]] std::size_t linesDone() const { return m_line; }
+  [[nodiscard]] bool waitingForHeater() const;  // the current line is an M109/M190 not reached yet
+  // Drops the lines not finished yet and switches the heaters off (a print stopped at the printer).
+  void dropQueued();
+
   [[nodiscard]] const std::string& jobState() const { return m_state; }  // print_stats.state
   [[nodiscard]] const std::string& jobMessage() const { return m_message; }
   [[nodiscard]] const std::string& firmwareState() const { return m_firmwareState; }  // webhooks.state
@@ -75,6 +85,7 @@ class SimulatedPrinter {
   double m_extruderTarget = 0.0;
   double m_bedTarget = 0.0;
   bool m_runaway = false;
+  bool m_streaming = false;
 };
 
 }  // namespace multidir::hardware::sim

@@ -1,7 +1,8 @@
 #pragma once
 // The printer as the print run sees it: upload a G-code file, start, pause, resume and cancel its job, stop it
 // in an emergency, and read its state, progress, file and temperatures. One interface for every protocol
-// (Moonraker today: moonraker_link.h); protocols are documented in docs/hardware.md with their sources.
+// (moonraker_link.h, marlin_link.h; printer_url.h picks one from a URL); protocols are documented in
+// docs/hardware.md with their sources.
 //
 // Thread model: a link owns a worker thread that polls the printer every pollInterval and runs the queued
 // commands in order, and a second thread that only sends the emergency stop (so a slow status reply or an
@@ -43,7 +44,8 @@ struct PrinterStatus {
   // is the last one read and may be stale; the printer may still be printing on its own.
   bool linkLost = true;
   PrinterJobState state = PrinterJobState::Unknown;
-  std::string firmwareState;  // Klipper's webhooks.state: "ready", "startup", "shutdown", "error"
+  std::string firmwareState;  // Klipper's webhooks.state: "ready", "startup", "shutdown", "error"; Marlin's
+                              // link: "ready", or "halted" once Marlin stopped (kill, M112)
   std::string message;        // the printer's own words: print_stats.message, or webhooks.state_message when
                               // the firmware is not ready ("" when it says nothing)
   double progress = 0.0;      // 0..1 of the current file (virtual_sdcard.progress: bytes read / file size)

@@ -1,0 +1,888 @@
+// Marlin over a serial device: one worker thread owns the port's reading and the line-numbered stream (it
+// runs the queued commands in order between lines), one thread only writes the latched M112.
+#include "multidir/hardware/marlin_link.h"
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <condition_variable>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "printer/marlin_protocol.h"
+#include "printer/serial_port.h"
+
+namespace multidir::hardware {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using namespace std::chrono_literals;
+
+// Sent when a job is cancelled: heaters and part fan off. No motion: the platform may be about to turn, and
+// where the head may park is the operator's decision.
+const char* const kCancelLines[] = {"M104 S0", "M140 S0", "M107"};
+constexpr std::size_t kRenumberAfterLines = 10000;
+
+core::Error invalid(const std::string& what, const std::string& where) {
+  return core::Error{core::ErrorCode::InvalidParameter, what, where};
+}
+
+template <typename T>
+std::future<T> readyFuture(T value) {
+  std::promise<T> promise;
+  promise.set_value(std::move(value));
+  return promise.get_future();
+}
+
+class MarlinLink : public PrinterLink {
+ public:
+  MarlinLink(MarlinSettings settings, PrinterLinkOptions options)
+      : m_settings(std::move(settings)), m_options(std::move(options)) {
+    if (!m_options.steadyNow) m_options.steadyNow = [] { return Clock::now(); };
+    m_name = "Marlin printer at " + m_settings.devicePath;
+  }
+  ~MarlinLink() override { disconnect(); }
+
+  core::Status connect() override {
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if (m_running) return invalid("already connected", m_name);
+      m_quit = false;
+      m_running = true;
+      m_firstDone = false;
+      m_status.link = LinkState::Connecting;
+      m_status.polls = 0;
+    }
+    m_worker = std::thread([this] { runWorker(); });
+    m_stopper = std::thread([this] { runStopper(); });
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_firstCondition.wait(lock, [this] { return m_firstDone; });
+    return m_first;
+  }
+
+  void disconnect() override {
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if (!m_running) return;
+      m_quit = true;
+    }
+    m_wake.notify_all();
+    m_stopWake.notify_all();
+    if (m_worker.joinable()) m_worker.join();
+    if (m_stopper.joinable()) m_stopper.join();
+    closePort();
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_running = false;
+    m_status.link = LinkState::Disconnected;
+    const core::Error cancelled{core::ErrorCode::Cancelled, "the link was disconnected before the printer answered",
+                                m_name};
+    failQueued(cancelled);
+    failJobPromises(cancelled);
+    for (auto& waiter : m_stopWaiters)
+      waiter.second.set_value(core::Error{core::ErrorCode::Cancelled,
+                                          "disconnected before the printer confirmed the emergency stop (it stays "
+                                          "latched and is sent first on the next connect)",
+                                          m_name});
+    m_stopWaiters.clear();
+  }
+
+  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override {
+    if (remoteName.empty() || remoteName.find('/') != std::string::npos || remoteName.find("..") != std::string::npos)
+      return readyFuture<core::Status>(
+          invalid("the printer's file name '" + remoteName + "' must be a plain file name", m_name));
+    return submit(Command::Upload, "loading " + remoteName, true, localPath, remoteName);
+  }
+  std::future<core::Status> startPrint(const std::string& remoteName) override {
+    return submit(Command::Start, "starting " + remoteName, true, {}, remoteName);
+  }
+  std::future<core::Status> pausePrint() override { return submit(Command::Pause, "pausing the print", false); }
+  std::future<core::Status> resumePrint() override { return submit(Command::Resume, "resuming the print", true); }
+  std::future<core::Status> cancelPrint() override { return submit(Command::Cancel, "cancelling the print", false); }
+
+  std::future<core::Status> emergencyStop() override {
+    std::promise<core::Status> promise;
+    std::future<core::Status> future = promise.get_future();
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_status.stop.kind = StopKind::EmergencyStop;
+      m_status.stop.confirmed = false;
+      m_status.stop.problem = "not sent yet";
+      ++m_stopGeneration;
+      m_stopDue = true;
+      m_haltedBeforeStop = m_status.firmwareState == "halted";
+      m_stopWaiters.emplace_back(m_stopGeneration, std::move(promise));
+      failQueued(core::Error{core::ErrorCode::Cancelled, "cancelled by the emergency stop", m_name});
+      m_dropJob = true;  // the worker stops streaming at once
+    }
+    m_stopWake.notify_all();
+    m_wake.notify_all();
+    return future;
+  }
+
+  core::Status clearStop() override {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (!m_status.stop.latched()) return core::Done{};
+    if (!m_status.stop.confirmed)
+      return invalid("the printer has not confirmed the emergency stop yet (" + m_status.stop.problem +
+                         "): it cannot be cleared before it took effect",
+                     m_name);
+    m_status.stop = StopLatch{};
+    return core::Done{};
+  }
+
+  PrinterStatus status() const override {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    PrinterStatus s = m_status;
+    s.linkLost = s.polls == 0 || m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter;
+    return s;
+  }
+
+  std::string name() const override { return m_name; }
+
+ private:
+  enum class Command { Upload, Start, Pause, Resume, Cancel };
+  struct Pending {
+    Command command = Command::Upload;
+    std::string what;
+    std::string localPath;
+    std::string remoteName;
+    std::promise<core::Status> promise;
+  };
+  // What a numbered line is for, so its ok can be acted on.
+  enum class Role { Reset, Poll, File, JobEnd, CoolDown, CoolDownEnd };
+  struct Line {
+    std::string command;
+    Role role = Role::Poll;
+    std::size_t fileLine = 0;  // Role::File: index in the job's lines
+  };
+  struct Job {
+    std::string name;
+    std::vector<std::string> lines;
+    std::size_t nextFileLine = 0;  // the next file line to number and send
+    std::size_t acknowledged = 0;  // file lines the printer took
+    bool endQueued = false;        // M400 numbered
+    bool cancelling = false;
+    std::size_t coolDownQueued = 0;
+  };
+
+  std::future<core::Status> submit(Command command, const std::string& what, bool refusedWhileStopped,
+                                   std::string localPath = {}, std::string remoteName = {}) {
+    std::promise<core::Status> promise;
+    std::future<core::Status> future = promise.get_future();
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if (!m_running) {
+        promise.set_value(invalid("not connected: " + what + " was not sent", m_name));
+        return future;
+      }
+      if (refusedWhileStopped && m_status.stop.latched()) {
+        promise.set_value(invalid(
+            "the emergency stop is latched: " + what + " was not sent; clear the stop (and reset the printer) first",
+            m_name));
+        return future;
+      }
+      m_queue.push_back(Pending{command, what, std::move(localPath), std::move(remoteName), std::move(promise)});
+    }
+    m_wake.notify_all();
+    return future;
+  }
+
+  // Requires m_mutex.
+  void failQueued(const core::Error& error) {
+    for (Pending& pending : m_queue) pending.promise.set_value(error);
+    m_queue.clear();
+  }
+  // Requires m_mutex.
+  void failJobPromises(const core::Error& error) {
+    if (m_startPromise) m_startPromise->set_value(error);
+    if (m_cancelPromise) m_cancelPromise->set_value(error);
+    m_startPromise.reset();
+    m_cancelPromise.reset();
+  }
+
+  void finishFirst(core::Status outcome) {
+    if (m_firstDone) return;
+    m_first = std::move(outcome);
+    m_firstDone = true;
+    m_firstCondition.notify_all();
+  }
+
+  // --- the port -------------------------------------------------------------------------------------------
+
+  void closePort() {
+    std::lock_guard<std::mutex> writeLock(m_writeMutex);
+    if (m_fd >= 0) ::close(m_fd);
+    m_fd = -1;
+  }
+
+  // Worker: opens the device, or notes why not. True once open.
+  bool openPort() {
+    core::Result<int> opened = serial::openRaw(m_settings.devicePath, m_settings.baud);
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (!opened) {
+      m_status.link = m_status.polls == 0 ? LinkState::Connecting : LinkState::Reconnecting;
+      m_status.lastError = opened.error().describe();
+      finishFirst(opened.error());
+      return false;
+    }
+    {
+      std::lock_guard<std::mutex> writeLock(m_writeMutex);
+      m_fd = *opened;
+    }
+    m_openedAt = Clock::now();
+    m_rx.clear();
+    resetNumbering();
+    // A stop latched before (or while) the port was closed is written again first: the printer may have
+    // restarted meanwhile.
+    if (m_status.stop.latched()) {
+      m_stopDue = true;
+      m_stopWake.notify_all();
+    }
+    return true;
+  }
+
+  // Worker, m_mutex held: the next line is N0 M110 N0 (Marlin's "set the current line number").
+  void resetNumbering() {
+    m_lines.clear();
+    m_lines.push_back(Line{"M110 N0", Role::Reset, 0});
+    m_sentUpTo = -1;
+    m_ackedUpTo = -1;
+    m_oksToSkip = 0;
+    m_numberingReady = false;
+  }
+
+  // Never called with m_mutex held (the lock order is m_mutex, then m_writeMutex).
+  core::Status sendRaw(const std::string& text) {
+    std::lock_guard<std::mutex> writeLock(m_writeMutex);
+    if (m_fd < 0)
+      return core::Error{core::ErrorCode::DeviceUnreachable, "the serial port is not open (reconnecting)", m_name};
+    return serial::writeAll(m_fd, text, m_options.requestTimeout);
+  }
+
+  // --- the worker -----------------------------------------------------------------------------------------
+
+  void runWorker() {
+    auto nextOpen = Clock::now();
+    const auto reopenEvery = std::max<std::chrono::milliseconds>(m_options.pollInterval, 50ms);
+    while (true) {
+      {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        if (m_quit) return;
+      }
+      int fd = -1;
+      {
+        std::lock_guard<std::mutex> writeLock(m_writeMutex);
+        fd = m_fd;
+      }
+      if (fd < 0) {
+        if (Clock::now() < nextOpen) {
+          std::unique_lock<std::mutex> lock(m_mutex);
+          m_wake.wait_until(lock, nextOpen, [this] { return m_quit; });
+          continue;
+        }
+        nextOpen = Clock::now() + reopenEvery;
+        if (!openPort()) continue;
+        std::lock_guard<std::mutex> writeLock(m_writeMutex);
+        fd = m_fd;
+      }
+      pollfd p{fd, POLLIN, 0};
+      const int ready = ::poll(&p, 1, 2);
+      if (ready > 0 && (p.revents & POLLIN) != 0) {
+        if (!readAvailable(fd)) {
+          lose("the serial device stopped answering reads");
+          continue;
+        }
+      } else if (ready > 0 && (p.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) {
+        lose("the serial device went away (unplugged or switched off?)");
+        continue;
+      }
+      runCommands();
+      checkSilence();
+      pump();
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if (!m_firstDone && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter)
+        finishFirst(core::Error{core::ErrorCode::DeviceUnreachable,
+                                "no answer from the printer within " +
+                                    std::to_string(2 * m_options.linkLostAfter.count()) + " ms of opening " +
+                                    m_settings.devicePath + " at " + std::to_string(m_settings.baud) +
+                                    " baud: check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
+                                    "the printer is on, and that no other program uses the port",
+                                m_name});
+    }
+  }
+
+  void lose(const std::string& why) {
+    closePort();
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_status.link = LinkState::Reconnecting;
+    m_status.lastError = why + ": " + m_settings.devicePath;
+    if (m_job) {
+      // The stream is cut: Marlin empties its buffer and stops; most boards restart when the port reopens.
+      m_status.state = PrinterJobState::Error;
+      m_status.message = "the serial link was lost while " + m_job->name + " streamed (" + why +
+                         "): the printer stopped after the lines it had";
+      m_job.reset();
+      failJobPromises(core::Error{core::ErrorCode::DeviceUnreachable, m_status.message, m_name});
+    }
+    finishFirst(core::Error{core::ErrorCode::DeviceUnreachable, m_status.lastError, m_name});
+  }
+
+  // False on a read error (the device is gone).
+  bool readAvailable(int fd) {
+    char buffer[512];
+    while (true) {
+      const ssize_t n = ::read(fd, buffer, sizeof buffer);
+      if (n > 0) {
+        m_rx.append(buffer, static_cast<std::size_t>(n));
+        continue;
+      }
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) break;
+      return false;  // 0 (hang-up) or an error such as EIO
+    }
+    std::size_t end = 0;
+    while ((end = m_rx.find_first_of("\r\n")) != std::string::npos) {
+      const std::string line = m_rx.substr(0, end);
+      m_rx.erase(0, end + 1);
+      if (!line.empty()) onLine(line);
+    }
+    if (m_rx.size() > 4096) m_rx.clear();  // noise without line ends (a wrong baud rate)
+    return true;
+  }
+
+  void onLine(const std::string& text) {
+    const marlin::Reply reply = marlin::parseReply(text);
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_lastRx = Clock::now();
+    m_status.lastReply = m_options.steadyNow();
+    m_status.link = LinkState::Connected;
+    if (reply.extruder || reply.bed) {
+      if (reply.extruder) m_status.extruder = *reply.extruder;
+      if (reply.bed) m_status.bed = *reply.bed;
+      m_lastTemperature = Clock::now();
+      ++m_status.polls;
+      if (m_status.firmwareState.empty()) m_status.firmwareState = "ready";
+      if (m_status.state == PrinterJobState::Unknown) m_status.state = PrinterJobState::Standby;
+      m_status.lastError.clear();
+      finishFirst(core::Done{});
+    }
+    switch (reply.kind) {
+      case marlin::Reply::Kind::Ok:
+        onOk();
+        break;
+      case marlin::Reply::Kind::Resend:
+        onResend(reply.resendLine);
+        break;
+      case marlin::Reply::Kind::LineError:
+        m_status.lastError = "the printer asked for a line again: " + reply.text;
+        ++m_resends;
+        break;
+      case marlin::Reply::Kind::Fault:
+        onFault(reply.text, reply.killed);
+        break;
+      case marlin::Reply::Kind::Action:
+        onAction(reply.text);
+        break;
+      case marlin::Reply::Kind::Busy:
+      case marlin::Reply::Kind::Other:
+        if (text == "start" && m_numberingReady) onRestart();
+        break;
+    }
+  }
+
+  // m_mutex held.
+  void onOk() {
+    if (m_oksToSkip > 0) {  // the ok that follows a Resend answers the refused line, not a new one
+      --m_oksToSkip;
+      return;
+    }
+    m_resentAfterSilence = false;
+    if (m_ackedUpTo >= m_sentUpTo) return;  // a stray ok (the printer's start-up, a line sent before a reset)
+    acknowledgeNext();
+  }
+
+  // m_mutex held: the printer took the oldest line in flight.
+  void acknowledgeNext() {
+    ++m_ackedUpTo;
+    const Line& line = m_lines[static_cast<std::size_t>(m_ackedUpTo)];
+    switch (line.role) {
+      case Role::Reset:
+        m_numberingReady = true;
+        if (m_job && m_startPromise) {
+          m_status.state = PrinterJobState::Printing;
+          m_status.currentFile = m_job->name;
+          m_status.progress = 0.0;
+          m_status.message.clear();
+          ++m_status.polls;  // the start's answer is a status read of its own
+          m_startPromise->set_value(core::Done{});
+          m_startPromise.reset();
+        }
+        break;
+      case Role::Poll:
+        break;
+      case Role::File:
+        if (m_job) {
+          m_job->acknowledged = std::max(m_job->acknowledged, line.fileLine + 1);
+          m_status.progress = m_job->lines.empty()
+                                  ? 1.0
+                                  : static_cast<double>(m_job->acknowledged) / static_cast<double>(m_job->lines.size());
+        }
+        break;
+      case Role::JobEnd:
+        if (m_job) {
+          m_status.state = PrinterJobState::Complete;
+          m_status.progress = 1.0;
+          ++m_status.polls;
+          m_job.reset();
+        }
+        break;
+      case Role::CoolDown:
+        break;
+      case Role::CoolDownEnd:
+        m_status.state = PrinterJobState::Cancelled;
+        ++m_status.polls;
+        m_job.reset();
+        if (m_cancelPromise) m_cancelPromise->set_value(core::Done{});
+        m_cancelPromise.reset();
+        break;
+    }
+  }
+
+  // m_mutex held: the printer refused line n (bad checksum, wrong number) and every line after it.
+  void onResend(long n) {
+    ++m_oksToSkip;
+    if (n < 0 || n > static_cast<long>(m_lines.size()) || n <= m_ackedUpTo) {
+      m_status.lastError = "the printer asked for line " + std::to_string(n) + ", which this link did not send";
+      return;
+    }
+    // After a silence the oks of the lines in flight may be lost, not the lines: the printer naming the line it
+    // wants says which it had.
+    if (m_resentAfterSilence)
+      while (m_ackedUpTo < n - 1 && m_ackedUpTo + 1 < static_cast<long>(m_lines.size())) acknowledgeNext();
+    m_resentAfterSilence = false;
+    m_sentUpTo = std::max(m_ackedUpTo, std::min(m_sentUpTo, n - 1));
+  }
+
+  // m_mutex held: Marlin stopped (its own words), or halted after an M112.
+  void onFault(const std::string& text, bool killed) {
+    if (m_status.firmwareState != "halted") {
+      m_status.firmwareState = "halted";
+      m_status.message = text;
+    } else if (m_status.message.find(text) == std::string::npos) {
+      m_status.message += "; " + text;
+    }
+    m_status.state = PrinterJobState::Error;
+    m_status.lastError = "the printer reports: " + text;
+    m_job.reset();
+    failJobPromises(core::Error{core::ErrorCode::DeviceFault, "the printer stopped: " + m_status.message, m_name});
+    if (killed && m_status.stop.latched() && !m_status.stop.confirmed) confirmStop(m_stopGeneration);
+  }
+
+  // m_mutex held: host action commands Marlin sends when the job is handled at the printer.
+  void onAction(const std::string& action) {
+    if (action == "cancel" && m_job) {
+      m_job.reset();
+      m_status.state = PrinterJobState::Cancelled;
+      failJobPromises(core::Error{core::ErrorCode::DeviceFault, "the job was cancelled at the printer", m_name});
+    } else if (action == "pause" && m_status.state == PrinterJobState::Printing) {
+      m_status.state = PrinterJobState::Paused;
+    } else if (action == "resume" && m_status.state == PrinterJobState::Paused && m_job) {
+      m_status.state = PrinterJobState::Printing;
+    }
+  }
+
+  // m_mutex held: the printer printed "start" again: it restarted (reset button, power, watchdog).
+  void onRestart() {
+    if (m_job) {
+      m_status.state = PrinterJobState::Error;
+      m_status.message = "the printer restarted while " + m_job->name + " streamed";
+      m_job.reset();
+      failJobPromises(core::Error{core::ErrorCode::DeviceFault, m_status.message, m_name});
+    } else if (m_status.firmwareState == "halted") {
+      m_status.firmwareState = "ready";
+      m_status.state = PrinterJobState::Standby;
+      m_status.message.clear();
+    }
+    resetNumbering();
+  }
+
+  // m_mutex held.
+  void confirmStop(std::uint64_t generation) {
+    ++m_status.stop.writes;
+    if (generation == m_stopGeneration) {
+      m_status.stop.confirmed = true;
+      m_status.stop.problem.clear();
+    }
+    for (auto it = m_stopWaiters.begin(); it != m_stopWaiters.end();) {
+      if (it->first <= generation) {
+        it->second.set_value(core::Done{});
+        it = m_stopWaiters.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    m_stopWake.notify_all();
+  }
+
+  // The queued commands, in order; start and cancel finish later, when the printer answered their lines.
+  void runCommands() {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    if (m_dropJob) {
+      m_dropJob = false;
+      m_job.reset();
+      failJobPromises(core::Error{core::ErrorCode::Cancelled, "cancelled by the emergency stop", m_name});
+    }
+    while (!m_queue.empty()) {
+      // A start or cancel in progress holds later commands back.
+      if (m_startPromise || m_cancelPromise) return;
+      Pending pending = std::move(m_queue.front());
+      m_queue.pop_front();
+      if (pending.command == Command::Upload) {
+        lock.unlock();  // reading a large file does not hold the status
+        core::Result<std::vector<std::string>> lines = readJobFile(pending.localPath);
+        lock.lock();
+        if (!lines) {
+          pending.promise.set_value(lines.error());
+          continue;
+        }
+        m_files[pending.remoteName] = std::move(*lines);
+        pending.promise.set_value(core::Done{});
+        continue;
+      }
+      const core::Status refusal = refusalOf(pending);
+      if (!refusal.ok()) {
+        m_status.lastError = refusal.error().describe();
+        pending.promise.set_value(refusal);
+        continue;
+      }
+      switch (pending.command) {
+        case Command::Start: {
+          Job job;
+          job.name = pending.remoteName;
+          job.lines = m_files[pending.remoteName];
+          m_job = std::move(job);
+          m_startPromise = std::move(pending.promise);
+          m_resetDue = true;  // number the job from N0 once the window is empty
+          break;
+        }
+        case Command::Pause:
+          m_status.state = PrinterJobState::Paused;
+          pending.promise.set_value(core::Done{});
+          break;
+        case Command::Resume:
+          m_status.state = PrinterJobState::Printing;
+          pending.promise.set_value(core::Done{});
+          break;
+        case Command::Cancel:
+          m_job->cancelling = true;
+          m_cancelPromise = std::move(pending.promise);
+          break;
+        case Command::Upload:
+          break;
+      }
+    }
+  }
+
+  // m_mutex held: why the printer cannot take the command now ("" status: it can).
+  core::Status refusalOf(const Pending& pending) const {
+    const bool halted = m_status.firmwareState == "halted";
+    if (halted && pending.command != Command::Cancel && pending.command != Command::Pause)
+      return core::Error{core::ErrorCode::DeviceFault,
+                         "the printer is halted (" + m_status.message +
+                             "): reset it (its reset button, or switch it off and on) and reconnect",
+                         m_name};
+    const bool busy = m_status.state == PrinterJobState::Printing || m_status.state == PrinterJobState::Paused;
+    switch (pending.command) {
+      case Command::Start:
+        if (m_files.count(pending.remoteName) == 0)
+          return invalid("no G-code named " + pending.remoteName + " was loaded: upload it first", m_name);
+        if (busy || m_job)
+          return invalid("the printer is busy with " + m_status.currentFile + ": " + pending.what + " was refused",
+                         m_name);
+        if (m_status.polls == 0)
+          return core::Error{core::ErrorCode::DeviceUnreachable,
+                             "the printer has not answered yet: " + pending.what + " was not sent", m_name};
+        return core::Done{};
+      case Command::Pause:
+        if (!m_job || m_status.state != PrinterJobState::Printing)
+          return invalid("no job is printing: nothing to pause", m_name);
+        return core::Done{};
+      case Command::Resume:
+        if (!m_job || m_status.state != PrinterJobState::Paused)
+          return invalid("no job is paused: nothing to resume", m_name);
+        return core::Done{};
+      case Command::Cancel:
+        if (!m_job || m_job->cancelling) return invalid("no job is printing: nothing to cancel", m_name);
+        return core::Done{};
+      case Command::Upload:
+        return core::Done{};
+    }
+    return core::Done{};
+  }
+
+  core::Result<std::vector<std::string>> readJobFile(const std::string& path) const {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      return core::Error{core::ErrorCode::FileNotFound,
+                         "cannot read the G-code file to stream: check that it exists (slice the job first)", path};
+    std::vector<std::string> lines;
+    std::string raw;
+    while (std::getline(in, raw)) {
+      std::string command = marlin::commandOf(raw);
+      if (command.empty()) continue;
+      // A '*' inside a command would be taken for the checksum; Marlin reads up to the last '*'.
+      if (command.find('*') != std::string::npos)
+        return core::Error{core::ErrorCode::InvalidParameter,
+                           "line '" + raw + "' contains '*', which Marlin's line checksum forbids: remove it", path};
+      lines.push_back(std::move(command));
+    }
+    return lines;
+  }
+
+  // No answer at all for linkLostAfter while lines are in flight: their oks (or the lines) were lost: send
+  // them again. Marlin answers a line it had with "Resend: <next>", so nothing is done twice.
+  void checkSilence() {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    const auto now = Clock::now();
+    if (m_sentUpTo <= m_ackedUpTo) return;
+    const auto since = std::max(m_lastRx, std::max(m_lastSend, m_lastSilenceResend));
+    if (now - since < m_options.linkLostAfter) return;
+    m_lastSilenceResend = now;
+    m_resentAfterSilence = true;
+    m_sentUpTo = m_ackedUpTo;
+    m_status.lastError = "no answer from the printer for " + std::to_string(m_options.linkLostAfter.count()) +
+                         " ms: sending line " + std::to_string(m_ackedUpTo + 1) + " again";
+  }
+
+  // Sends what the window allows: lines to resend, then the job's next line or a temperature poll.
+  void pump() {
+    while (true) {
+      std::string text;
+      {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        if (m_status.firmwareState == "halted") return;
+        const long inFlight = m_sentUpTo - m_ackedUpTo;
+        if (inFlight >= m_settings.maxUnacknowledgedLines) return;
+        if (m_sentUpTo + 1 >= static_cast<long>(m_lines.size()) && !appendNextLine()) return;
+        ++m_sentUpTo;
+        text = marlinNumberedLine(m_sentUpTo, m_lines[static_cast<std::size_t>(m_sentUpTo)].command) + "\n";
+        m_lastSend = Clock::now();
+      }
+      if (const core::Status sent = sendRaw(text); !sent.ok()) {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_status.lastError = sent.error().describe();
+        return;
+      }
+    }
+  }
+
+  // m_mutex held: numbers the next line to send, if any is due. Never while the job's reset waits.
+  bool appendNextLine() {
+    if (!m_numberingReady) return false;  // N0 M110 is in flight: wait for its ok
+    // Idle polls number lines too: start again from N0 now and then, so the history kept for resends stays small.
+    if (!m_job && m_lines.size() > kRenumberAfterLines) m_resetDue = true;
+    if (m_resetDue) {
+      if (m_sentUpTo != m_ackedUpTo) return false;
+      m_resetDue = false;
+      resetNumbering();
+      return true;
+    }
+    const auto now = Clock::now();
+    const bool pollDue =
+        now - m_lastTemperature >= m_options.pollInterval && now - m_lastPollSent >= m_options.pollInterval;
+    if (m_job && m_status.state == PrinterJobState::Printing && !m_status.stop.latched()) {
+      if (pollDue) return appendPoll(now);
+      Job& job = *m_job;
+      if (job.cancelling) {
+        const std::size_t count = sizeof kCancelLines / sizeof kCancelLines[0];
+        if (job.coolDownQueued >= count) return false;
+        const Role role = job.coolDownQueued + 1 == count ? Role::CoolDownEnd : Role::CoolDown;
+        m_lines.push_back(Line{kCancelLines[job.coolDownQueued++], role, 0});
+        return true;
+      }
+      if (job.nextFileLine < job.lines.size()) {
+        m_lines.push_back(Line{job.lines[job.nextFileLine], Role::File, job.nextFileLine});
+        ++job.nextFileLine;
+        return true;
+      }
+      if (!job.endQueued) {
+        job.endQueued = true;
+        m_lines.push_back(Line{"M400", Role::JobEnd, 0});  // its ok: every move done
+        return true;
+      }
+      return false;
+    }
+    if (m_job && m_job->cancelling) {
+      // Cancelling a paused job: the cool-down lines go out although no file line does.
+      const std::size_t count = sizeof kCancelLines / sizeof kCancelLines[0];
+      if (m_job->coolDownQueued < count) {
+        const Role role = m_job->coolDownQueued + 1 == count ? Role::CoolDownEnd : Role::CoolDown;
+        m_lines.push_back(Line{kCancelLines[m_job->coolDownQueued++], role, 0});
+        return true;
+      }
+    }
+    if (pollDue) return appendPoll(now);
+    return false;
+  }
+
+  bool appendPoll(Clock::time_point now) {
+    m_lastPollSent = now;
+    m_lines.push_back(Line{"M105", Role::Poll, 0});
+    return true;
+  }
+
+  // --- the stop thread ------------------------------------------------------------------------------------
+
+  void runStopper() {
+    while (true) {
+      std::uint64_t generation = 0;
+      bool haltedBefore = false;
+      {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_stopWake.wait(lock, [this] { return m_quit || m_stopDue; });
+        if (m_quit) return;
+        generation = m_stopGeneration;
+        haltedBefore = m_haltedBeforeStop;
+        m_stopDue = false;
+      }
+      // Outside the numbering: Marlin's emergency parser acts on M112 as it arrives, even with a full buffer.
+      // The leading line end ends a line a failed write may have cut short (the parser skips to the next line).
+      const core::Status sent = sendRaw("\nM112\n");
+      std::unique_lock<std::mutex> lock(m_mutex);
+      if (!sent.ok()) {
+        m_status.stop.problem = "M112 not written: " + sent.error().message;
+      } else if (haltedBefore) {
+        // Marlin was already halted (a kill before this stop) and answers nothing more: the state shows it.
+        confirmStop(generation);
+      } else if (!m_status.stop.confirmed) {
+        m_status.stop.problem = "M112 sent; waiting for the printer to report its halt";
+      }
+      const bool answered = m_stopWake.wait_for(lock, m_options.stopRetryInterval, [&] {
+        return m_quit || (m_status.stop.confirmed && generation == m_stopGeneration) || generation != m_stopGeneration;
+      });
+      if (m_quit) return;
+      (void)answered;
+      if (m_status.stop.latched() && !m_status.stop.confirmed) m_stopDue = true;  // resend until the printer answers
+    }
+  }
+
+  MarlinSettings m_settings;
+  PrinterLinkOptions m_options;
+  std::string m_name;
+
+  mutable std::mutex m_mutex;  // everything below but the port
+  std::condition_variable m_wake;
+  std::condition_variable m_stopWake;
+  std::condition_variable m_firstCondition;
+  std::deque<Pending> m_queue;
+  bool m_quit = false;
+  bool m_running = false;
+  bool m_firstDone = false;
+  core::Status m_first = core::Done{};
+  PrinterStatus m_status;
+  std::uint64_t m_stopGeneration = 0;
+  bool m_stopDue = false;
+  bool m_haltedBeforeStop = false;
+  bool m_dropJob = false;
+  std::vector<std::pair<std::uint64_t, std::promise<core::Status>>> m_stopWaiters;
+
+  // The stream (worker, under m_mutex): every line numbered since the last M110, for resends.
+  std::vector<Line> m_lines;
+  long m_sentUpTo = -1;
+  long m_ackedUpTo = -1;
+  int m_oksToSkip = 0;
+  bool m_numberingReady = false;
+  bool m_resetDue = false;
+  bool m_resentAfterSilence = false;
+  std::uint64_t m_resends = 0;
+  std::map<std::string, std::vector<std::string>> m_files;
+  std::optional<Job> m_job;
+  std::optional<std::promise<core::Status>> m_startPromise;
+  std::optional<std::promise<core::Status>> m_cancelPromise;
+  Clock::time_point m_openedAt{};
+  Clock::time_point m_lastRx{};
+  Clock::time_point m_lastSend{};
+  Clock::time_point m_lastSilenceResend{};
+  Clock::time_point m_lastTemperature{};
+  Clock::time_point m_lastPollSent{};
+  std::string m_rx;  // worker only: bytes after the last line end
+
+  std::mutex m_writeMutex;  // the descriptor and every write: whole lines never interleave
+  int m_fd = -1;
+
+  std::thread m_worker;
+  std::thread m_stopper;
+};
+
+}  // namespace
+
+const std::vector<int>& marlinBaudRates() {
+  static const std::vector<int> rates = {9600,   19200,  38400,  57600,  115200, 230400,
+                                         250000, 460800, 500000, 576000, 921600, 1000000};
+  return rates;
+}
+
+core::Result<MarlinSettings> parseMarlinUrl(const std::string& url) {
+  const std::string scheme = "serial://";
+  if (url.rfind(scheme, 0) != 0)
+    return invalid("'" + url + "' is not a serial address: use serial:///dev/ttyACM0[?baud=115200]", "--printer");
+  std::string rest = url.substr(scheme.size());
+  MarlinSettings settings;
+  std::string query;
+  if (const std::size_t q = rest.find('?'); q != std::string::npos) {
+    query = rest.substr(q + 1);
+    rest.resize(q);
+  }
+  if (rest.empty() || rest[0] != '/')
+    return invalid("'" + url + "' names no absolute device path: use serial:///dev/ttyACM0 (three slashes)",
+                   "--printer");
+  settings.devicePath = rest;
+  std::size_t begin = 0;
+  while (begin < query.size()) {
+    std::size_t end = query.find('&', begin);
+    if (end == std::string::npos) end = query.size();
+    const std::string pair = query.substr(begin, end - begin);
+    begin = end + 1;
+    const std::size_t eq = pair.find('=');
+    const std::string key = pair.substr(0, eq);
+    const std::string value = eq == std::string::npos ? "" : pair.substr(eq + 1);
+    const bool digits = !value.empty() && value.size() <= 8 &&
+                        std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (key == "baud") {
+      if (!digits || !serial::supportedRate(std::stoi(value)))
+        return invalid("'" + url +
+                           "': baud must be one of 9600, 19200, 38400, 57600, 115200, 230400, 250000, "
+                           "460800, 500000, 576000, 921600, 1000000 (Marlin's BAUDRATE)",
+                       "--printer");
+      settings.baud = std::stoi(value);
+    } else if (key == "window") {
+      if (!digits || std::stoi(value) < 1 || std::stoi(value) > 4)
+        return invalid("'" + url + "': window must be 1 to 4 lines (Marlin's command buffer)", "--printer");
+      settings.maxUnacknowledgedLines = std::stoi(value);
+    } else {
+      return invalid("'" + url + "': unknown option '" + key + "' (known: baud, window)", "--printer");
+    }
+  }
+  return settings;
+}
+
+core::Result<std::unique_ptr<PrinterLink>> makeMarlinLink(const MarlinSettings& settings,
+                                                          const PrinterLinkOptions& options) {
+  if (settings.devicePath.empty()) return invalid("the printer's serial device path is empty", "printer");
+  if (!serial::supportedRate(settings.baud))
+    return invalid(std::to_string(settings.baud) + " baud is not a rate the serial port can be set to", "printer");
+  if (settings.maxUnacknowledgedLines < 1 || settings.maxUnacknowledgedLines > 4)
+    return invalid("the window of unacknowledged lines must be 1 to 4 (Marlin's command buffer)", "printer");
+  if (core::Status valid = validate(options); !valid) return valid.error();
+  return std::unique_ptr<PrinterLink>(std::make_unique<MarlinLink>(settings, options));
+}
+
+}  // namespace multidir::hardware

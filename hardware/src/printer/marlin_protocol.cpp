@@ -1,0 +1,95 @@
+#include "printer/marlin_protocol.h"
+
+#include <cstdlib>
+#include <cstring>
+
+#include "multidir/hardware/marlin_link.h"
+
+namespace multidir::hardware {
+
+int marlinChecksum(const std::string& text) {
+  unsigned char sum = 0;
+  for (const char c : text) sum ^= static_cast<unsigned char>(c);
+  return sum;
+}
+
+std::string marlinNumberedLine(long number, const std::string& command) {
+  const std::string body = "N" + std::to_string(number) + " " + command;
+  return body + "*" + std::to_string(marlinChecksum(body));
+}
+
+namespace marlin {
+namespace {
+
+bool startsWith(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
+
+// "T:210.0 /215.0" at `key` ("T:" or "B:") as a word of its own (not "T0:" nor "B@:").
+std::optional<HeaterReading> heater(const std::string& line, const char* key) {
+  std::size_t at = 0;
+  while ((at = line.find(key, at)) != std::string::npos) {
+    if (at == 0 || line[at - 1] == ' ') break;
+    ++at;
+  }
+  if (at == std::string::npos) return std::nullopt;
+  const char* start = line.c_str() + at + std::strlen(key);
+  char* end = nullptr;
+  const double actual = std::strtod(start, &end);
+  if (end == start) return std::nullopt;
+  HeaterReading reading;
+  reading.actualC = actual;
+  const char* slash = end;
+  while (*slash == ' ') ++slash;
+  if (*slash == '/') {
+    const double target = std::strtod(slash + 1, &end);
+    if (end != slash + 1) reading.targetC = target;
+  }
+  return reading;
+}
+
+}  // namespace
+
+std::string commandOf(const std::string& fileLine) {
+  std::string code = fileLine;
+  if (const std::size_t semicolon = code.find(';'); semicolon != std::string::npos) code.resize(semicolon);
+  const std::size_t first = code.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return {};
+  const std::size_t last = code.find_last_not_of(" \t\r");
+  return code.substr(first, last - first + 1);
+}
+
+Reply parseReply(const std::string& rawLine) {
+  std::string line = rawLine;
+  while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+  Reply reply;
+  reply.extruder = heater(line, "T:");
+  reply.bed = heater(line, "B:");
+  reply.killed = line.find("kill() called") != std::string::npos || line.find("Printer halted") != std::string::npos;
+  if (line == "ok" || startsWith(line, "ok ")) {
+    reply.kind = Reply::Kind::Ok;
+  } else if (startsWith(line, "Resend:") || startsWith(line, "rs ")) {
+    reply.kind = Reply::Kind::Resend;
+    const char* start = line.c_str() + (line[0] == 'R' ? 7 : 3);
+    while (*start == ' ' || *start == 'N') ++start;
+    char* end = nullptr;
+    const long number = std::strtol(start, &end, 10);
+    reply.resendLine = end == start ? -1 : number;
+  } else if (startsWith(line, "Error:") || startsWith(line, "!!")) {
+    reply.text = line.substr(line[0] == 'E' ? 6 : 2);
+    while (!reply.text.empty() && reply.text.front() == ' ') reply.text.erase(0, 1);
+    // Transmission errors: Marlin asks for the line again (a Resend and an ok follow).
+    const bool lineError = reply.text.find("Last Line") != std::string::npos ||
+                           startsWith(reply.text, "checksum mismatch") || startsWith(reply.text, "No Checksum") ||
+                           startsWith(reply.text, "No Line Number") || startsWith(reply.text, "Line Number");
+    reply.kind = lineError ? Reply::Kind::LineError : Reply::Kind::Fault;
+  } else if (line.find("busy:") != std::string::npos) {
+    reply.kind = Reply::Kind::Busy;
+  } else if (startsWith(line, "//action:")) {
+    reply.kind = Reply::Kind::Action;
+    reply.text = line.substr(9);
+    if (const std::size_t space = reply.text.find(' '); space != std::string::npos) reply.text.resize(space);
+  }
+  return reply;
+}
+
+}  // namespace marlin
+}  // namespace multidir::hardware

@@ -1,0 +1,382 @@
+// The Marlin serial link against the Marlin simulator on a pseudo-terminal, and the printer-URL dispatch.
+#include "multidir/hardware/marlin_link.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+
+#include "multidir/hardware/marlin_simulator.h"
+#include "multidir/hardware/printer_url.h"
+#include "printer_test_support.h"
+
+namespace multidir::hardware {
+namespace {
+
+using namespace test;
+using Outcome = MarlinLineRecord::Outcome;
+
+class MarlinLinkTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    startSimulator(400.0);  // the short program takes about 70 ms
+    gcode = writeFile(std::filesystem::path(testing::TempDir()) / "marlin-link" / "step-01.gcode", shortGcode());
+  }
+
+  void startSimulator(double speed) {
+    MarlinSimulatorOptions options;
+    options.speed = speed;
+    options.busyInterval = 50ms;  // keeps the link (400 ms) alive through long heater waits
+    sim = std::make_unique<MarlinSimulator>(options);
+    ASSERT_TRUE(sim->start().ok());
+  }
+
+  std::unique_ptr<PrinterLink> connected(int window = 1) {
+    auto link = marlinLinkTo(sim->devicePath(), fastPrinterOptions(), window);
+    const core::Status status = link->connect();
+    EXPECT_TRUE(status.ok()) << messageOf(status);
+    return link;
+  }
+
+  bool printing(PrinterLink& link) {
+    return outcome(link.upload(gcode, "step-01.gcode")).ok() && outcome(link.startPrint("step-01.gcode")).ok();
+  }
+
+  // The file's commands the printer executed, in order.
+  std::vector<std::string> executedFileCommands() const {
+    const std::vector<std::string> file = gcodeCommands(shortGcode());
+    std::vector<std::string> out;
+    for (const auto& e : sim->executed())
+      if (std::find(file.begin(), file.end(), e.command) != file.end()) out.push_back(e.command);
+    return out;
+  }
+
+  std::unique_ptr<MarlinSimulator> sim;
+  std::string gcode;
+};
+
+TEST(MarlinProtocol, ChecksumIsTheXorOfTheLinesBytes) {
+  // Lines a host sent to Marlin, with the checksums Marlin accepted (a public OctoPrint log).
+  EXPECT_EQ(marlinNumberedLine(65048, "G1 X136.689 Y160.389 E6563.257"), "N65048 G1 X136.689 Y160.389 E6563.257*93");
+  EXPECT_EQ(marlinNumberedLine(3186, "M105"), "N3186 M105*27");
+}
+
+TEST(MarlinUrl, TakesTheDevicePathAndTheBaudRate) {
+  auto a = parseMarlinUrl("serial:///dev/ttyACM0?baud=250000");
+  ASSERT_TRUE(a.ok()) << a.error().describe();
+  EXPECT_EQ(a->devicePath, "/dev/ttyACM0");
+  EXPECT_EQ(a->baud, 250000);
+  auto b = parseMarlinUrl("serial:///dev/ttyUSB1");
+  ASSERT_TRUE(b.ok());
+  EXPECT_EQ(b->baud, 115200);
+  EXPECT_EQ(b->maxUnacknowledgedLines, 1);
+}
+
+TEST(MarlinUrl, RefusesRatesTheTermiosCannotSetRelativePathsAndUnknownOptionsSayingWhy) {
+  EXPECT_NE(parseMarlinUrl("serial:///dev/ttyACM0?baud=123").error().message.find("baud must be one of"),
+            std::string::npos);
+  EXPECT_NE(parseMarlinUrl("serial://ttyACM0").error().message.find("absolute device path"), std::string::npos);
+  EXPECT_NE(parseMarlinUrl("serial:///dev/ttyACM0?speed=1").error().message.find("unknown option 'speed'"),
+            std::string::npos);
+  EXPECT_FALSE(parseMarlinUrl("serial:///dev/ttyACM0?window=9").ok());
+}
+
+TEST_F(MarlinLinkTest, ConnectNumbersFromZeroAndReadsTheTemperatures) {
+  auto link = connected();
+  const PrinterStatus s = link->status();
+  EXPECT_EQ(s.link, LinkState::Connected);
+  EXPECT_FALSE(s.linkLost);
+  EXPECT_EQ(s.state, PrinterJobState::Standby);
+  EXPECT_EQ(s.firmwareState, "ready");
+  EXPECT_NEAR(s.extruder.actualC, 22.0, 1e-9);
+  const auto received = sim->received();
+  ASSERT_FALSE(received.empty());
+  EXPECT_EQ(received.front().text, marlinNumberedLine(0, "M110 N0"));
+  EXPECT_EQ(received.front().outcome, Outcome::Accepted);
+}
+
+TEST_F(MarlinLinkTest, ConnectToAMissingDeviceSaysWhatToCheck) {
+  auto link = marlinLinkTo("/dev/nonexistent-printer");
+  const core::Status status = link->connect();
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().code, core::ErrorCode::DeviceUnreachable);
+  EXPECT_NE(messageOf(status).find("plugged in"), std::string::npos) << messageOf(status);
+  EXPECT_TRUE(link->status().linkLost);
+}
+
+TEST_F(MarlinLinkTest, ConnectToAPrinterThatNeverAnswersSaysToCheckTheBaudRate) {
+  sim->dropLink();  // what a wrong baud rate looks like: nothing that reads as a line comes back
+  auto link = marlinLinkTo(sim->devicePath());
+  const core::Status status = link->connect();
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().code, core::ErrorCode::DeviceUnreachable);
+  EXPECT_NE(messageOf(status).find("check the baud rate"), std::string::npos) << messageOf(status);
+  EXPECT_TRUE(link->status().linkLost);
+}
+
+TEST_F(MarlinLinkTest, StreamsTheFileWithLineNumbersAndChecksumsToCompletion) {
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }))
+      << link->status().lastError;
+  EXPECT_DOUBLE_EQ(link->status().progress, 1.0);
+  EXPECT_EQ(link->status().currentFile, "step-01.gcode");
+  // Every line reached the printer numbered in order from the job's M110, each with its right checksum.
+  const auto received = sim->received();
+  long expected = -1;
+  bool inJob = false;
+  for (const auto& r : received) {
+    EXPECT_EQ(r.outcome, Outcome::Accepted) << r.text;
+    if (r.command == "M110 N0") {
+      expected = 1;
+      inJob = true;
+      continue;
+    }
+    if (!inJob) continue;
+    EXPECT_EQ(r.lineNumber, expected) << r.text;
+    EXPECT_EQ(r.text, marlinNumberedLine(r.lineNumber, r.command));
+    ++expected;
+  }
+  EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
+  // The job ended with M400: complete means every move was done.
+  const auto executed = sim->executed();
+  const auto last = std::find_if(executed.rbegin(), executed.rend(),
+                                 [](const MarlinExecutedRecord& e) { return e.command != "M105"; });
+  ASSERT_NE(last, executed.rend());
+  EXPECT_EQ(last->command, "M400");
+  EXPECT_EQ(sim->state().queuedMoves, 0u);
+}
+
+TEST_F(MarlinLinkTest, RecoversFromAResendWithoutLosingOrRepeatingALine) {
+  auto link = connected();
+  ASSERT_TRUE(outcome(link->upload(gcode, "step-01.gcode")).ok());
+  sim->corruptNextLines(1);  // the job's M110 goes through; its first numbered line does not
+  ASSERT_TRUE(outcome(link->startPrint("step-01.gcode")).ok());
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }))
+      << link->status().lastError;
+  const auto received = sim->received();
+  const auto bad = std::find_if(received.begin(), received.end(),
+                                [](const MarlinLineRecord& r) { return r.outcome == Outcome::ChecksumMismatch; });
+  ASSERT_NE(bad, received.end());
+  // The same line number came again, right, next.
+  const auto again = std::next(bad);
+  ASSERT_NE(again, received.end());
+  EXPECT_EQ(again->lineNumber, bad->lineNumber);
+  EXPECT_EQ(again->outcome, Outcome::Accepted);
+  EXPECT_EQ(again->text, marlinNumberedLine(again->lineNumber, again->command));
+  EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
+}
+
+TEST_F(MarlinLinkTest, RecoversFromResendsWithSeveralLinesInFlight) {
+  auto link = connected(4);
+  ASSERT_TRUE(outcome(link->upload(gcode, "step-01.gcode")).ok());
+  sim->corruptNextLines(3);
+  ASSERT_TRUE(outcome(link->startPrint("step-01.gcode")).ok());
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }))
+      << link->status().lastError;
+  EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
+}
+
+TEST_F(MarlinLinkTest, ReadsTheHeatersWhileThePrinterWaitsForThem) {
+  startSimulator(5.0);  // 18 simulated seconds of heating take 3.6 s: the test sees it on the way
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  ASSERT_TRUE(eventually([&] {
+    const PrinterStatus s = link->status();
+    return s.state == PrinterJobState::Printing && s.extruder.targetC == 200.0 && s.extruder.actualC > 23.0;
+  }));
+  EXPECT_LT(link->status().extruder.actualC, 200.0);
+  EXPECT_FALSE(link->status().linkLost);  // busy and temperature lines keep it alive while M109 blocks
+}
+
+TEST_F(MarlinLinkTest, ThermalRunawayEndsInErrorWithMarlinsOwnWords) {
+  startSimulator(20.0);
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  sim->injectThermalRunaway();
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Error; }, 5000ms));
+  const PrinterStatus s = link->status();
+  EXPECT_EQ(s.firmwareState, "halted");
+  EXPECT_NE(s.message.find("Thermal Runaway, system stopped! Heater_ID: 0"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("kill() called"), std::string::npos) << s.message;
+  // A halted printer takes nothing more.
+  const core::Status started = outcome(link->startPrint("step-01.gcode"));
+  ASSERT_FALSE(started.ok());
+  EXPECT_NE(messageOf(started).find("reset it"), std::string::npos) << messageOf(started);
+}
+
+TEST_F(MarlinLinkTest, AJobStoppedAtThePrintersScreenIsReportedCancelled) {
+  startSimulator(1.0);
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  sim->cancelJobOnPrinter();
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Cancelled; }));
+}
+
+TEST_F(MarlinLinkTest, CancelStopsStreamingAndSwitchesTheHeatersOff) {
+  startSimulator(1.0);
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  ASSERT_TRUE(outcome(link->cancelPrint()).ok());
+  EXPECT_EQ(link->status().state, PrinterJobState::Cancelled);
+  const auto executed = sim->executed();
+  const auto at = [&](const std::string& c) {
+    return std::find_if(executed.begin(), executed.end(),
+                        [&](const MarlinExecutedRecord& e) { return e.command == c; });
+  };
+  EXPECT_NE(at("M104 S0"), executed.end());
+  EXPECT_NE(at("M140 S0"), executed.end());
+  EXPECT_LT(executedFileCommands().size(), gcodeCommands(shortGcode()).size());
+}
+
+TEST_F(MarlinLinkTest, APrinterThatStopsAnsweringIsLostAfterItsTimeAndComesBack) {
+  auto link = connected();
+  sim->dropLink();
+  ASSERT_TRUE(eventually([&] { return link->status().linkLost; }));
+  sim->restoreLink();
+  ASSERT_TRUE(eventually([&] { return !link->status().linkLost; }));
+  EXPECT_EQ(link->status().link, LinkState::Connected);
+}
+
+TEST_F(MarlinLinkTest, AStreamCutByASilenceGoesOnWithoutLosingALine) {
+  startSimulator(20.0);
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  sim->dropLink();
+  ASSERT_TRUE(eventually([&] { return link->status().linkLost; }));
+  sim->restoreLink();
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }, 5000ms))
+      << link->status().lastError;
+  EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
+}
+
+TEST_F(MarlinLinkTest, AnUnpluggedPrinterEndsTheJobInErrorAndTheLinkIsLost) {
+  startSimulator(5.0);
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  sim->closePort();
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Error; }));
+  EXPECT_EQ(link->status().link, LinkState::Reconnecting);
+  EXPECT_NE(link->status().message.find("serial link was lost"), std::string::npos) << link->status().message;
+  ASSERT_TRUE(eventually([&] { return link->status().linkLost; }));
+}
+
+TEST_F(MarlinLinkTest, EmergencyStopReachesThePrinterWhilePrintingAndIsConfirmedByItsHalt) {
+  startSimulator(5.0);
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  auto stopped = link->emergencyStop();
+  ASSERT_TRUE(outcome(std::move(stopped)).ok());
+  EXPECT_TRUE(link->status().stop.confirmed);
+  const auto received = sim->received();
+  EXPECT_TRUE(std::any_of(received.begin(), received.end(),
+                          [](const MarlinLineRecord& r) { return r.outcome == Outcome::EmergencyStop; }));
+  EXPECT_TRUE(sim->state().halted);
+  EXPECT_EQ(link->status().state, PrinterJobState::Error);
+  EXPECT_TRUE(link->clearStop().ok());
+}
+
+TEST_F(MarlinLinkTest, EmergencyStopIsResentUntilThePrinterHearsItAndRefusesStartsUntilCleared) {
+  auto link = connected();
+  ASSERT_TRUE(outcome(link->upload(gcode, "step-01.gcode")).ok());
+  sim->dropLink();
+  auto stopped = link->emergencyStop();
+  EXPECT_EQ(stopped.wait_for(100ms), std::future_status::timeout);  // not heard: not confirmed
+  EXPECT_TRUE(link->status().stop.latched());
+  EXPECT_FALSE(link->status().stop.confirmed);
+  EXPECT_FALSE(link->clearStop().ok());
+  auto refused = link->startPrint("step-01.gcode");
+  ASSERT_TRUE(readyAtOnce(refused));
+  EXPECT_EQ(refused.get().error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_FALSE(sim->state().halted);
+  sim->restoreLink();
+  EXPECT_TRUE(outcome(std::move(stopped)).ok());
+  EXPECT_TRUE(link->status().stop.confirmed);
+  EXPECT_TRUE(sim->state().halted);
+  EXPECT_TRUE(link->clearStop().ok());
+}
+
+}  // namespace
+}  // namespace multidir::hardware
+
+namespace multidir::hardware {
+namespace {
+
+// The simulator's own clock, set by the test: the streamed moves take what their feed rates say.
+TEST(MarlinSimulatorTiming, ExecutesStreamedMovesInTheTimeTheirHeatingAndFeedRatesTake) {
+  static std::atomic<long long> elapsedMs{0};
+  elapsedMs = 0;
+  const auto origin = std::chrono::steady_clock::now();
+  MarlinSimulatorOptions options;
+  options.busyInterval = 50ms;  // real time: keeps the link alive while the test holds the clock
+  options.plannerMoves = 32;    // the whole program fits: its timing does not depend on when lines arrive
+  options.steadyNow = [origin] { return origin + std::chrono::milliseconds(elapsedMs.load()); };
+  MarlinSimulator sim(options);
+  ASSERT_TRUE(sim.start().ok());
+  const std::string gcode = test::writeFile(
+      std::filesystem::path(testing::TempDir()) / "marlin-timing" / "step-01.gcode", test::shortGcode());
+  auto link = test::marlinLinkTo(sim.devicePath());
+  ASSERT_TRUE(link->connect().ok());
+  ASSERT_TRUE(test::outcome(link->upload(gcode, "step-01.gcode")).ok());
+  ASSERT_TRUE(test::outcome(link->startPrint("step-01.gcode")).ok());
+  // M109 S200 blocks: nothing after it runs until the heater is within 1 C of 200 C (17.7 s at 10 C/s).
+  ASSERT_TRUE(test::eventually([&] {
+    const auto received = sim.received();
+    return !received.empty() && received.back().command == "M109 S200";
+  }));
+  elapsedMs = 17600;
+  EXPECT_NEAR(sim.state().extruder.actualC, 198.0, 1e-6);
+  EXPECT_EQ(sim.received().back().command, "M109 S200");
+  // At 17.8 s the rest is streamed at once (the planner holds it all); the moves take 0.015 s to the first
+  // layer's height and 20 moves of 10 mm or sqrt(101) mm at 1200 mm/min: 10.062 s, done at 27.862 s.
+  elapsedMs = 17800;
+  ASSERT_TRUE(test::eventually([&] {
+    const auto received = sim.received();
+    return !received.empty() && received.back().command == "M400";
+  }));
+  elapsedMs = 27800;
+  EXPECT_GT(sim.state().queuedMoves, 0u);
+  EXPECT_EQ(link->status().state, PrinterJobState::Printing);
+  elapsedMs = 27900;
+  EXPECT_EQ(sim.state().queuedMoves, 0u);
+  ASSERT_TRUE(test::eventually([&] { return link->status().state == PrinterJobState::Complete; }));
+}
+
+}  // namespace
+}  // namespace multidir::hardware
+
+namespace multidir::hardware {
+namespace {
+
+TEST(PrinterUrl, HttpAndBareAddressesAreMoonrakerAsBefore) {
+  auto http = makePrinterLinkFromUrl("http://192.168.0.20:7125", "key");
+  ASSERT_TRUE(http.ok()) << http.error().describe();
+  EXPECT_EQ((*http)->name(), "Moonraker printer at 192.168.0.20:7125");
+  auto bare = makePrinterLinkFromUrl("printer.local", "");
+  ASSERT_TRUE(bare.ok());
+  EXPECT_EQ((*bare)->name(), "Moonraker printer at printer.local:7125");
+  auto scheme = makePrinterLinkFromUrl("moonraker://printer.local", "");
+  ASSERT_TRUE(scheme.ok());
+  EXPECT_EQ((*scheme)->name(), "Moonraker printer at printer.local:7125");
+}
+
+TEST(PrinterUrl, SerialIsMarlin) {
+  auto serial = makePrinterLinkFromUrl("serial:///dev/ttyACM0?baud=250000", "");
+  ASSERT_TRUE(serial.ok()) << serial.error().describe();
+  EXPECT_EQ((*serial)->name(), "Marlin printer at /dev/ttyACM0");
+}
+
+TEST(PrinterUrl, AnUnknownSchemeNamesTheOnesThereAre) {
+  auto unknown = makePrinterLinkFromUrl("ftp://printer", "");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_NE(unknown.error().message.find("unknown scheme 'ftp://'"), std::string::npos) << unknown.error().message;
+  EXPECT_NE(unknown.error().message.find("serial://"), std::string::npos);
+  EXPECT_NE(unknown.error().message.find("moonraker://"), std::string::npos);
+  // Each protocol's own parser says what is wrong with its kind of address.
+  EXPECT_NE(makePrinterLinkFromUrl("https://p", "").error().message.find("https is not supported"), std::string::npos);
+  EXPECT_NE(makePrinterLinkFromUrl("serial://dev", "").error().message.find("absolute device path"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace multidir::hardware
