@@ -356,9 +356,17 @@ using detail::runDecomposition;
 Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                 JobContext& job, const SearchProgressSink& progress) {
   if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
-  const bool huge = options.proxyFaces > 0 && model.faceCount() > static_cast<std::size_t>(options.proxyFaces);
-  Decomposition plan = huge ? detail::runProxyDecomposition(model, machine, options, job, progress)
-                            : runDecomposition(model, machine, options, job, progress);
+  Decomposition plan;
+  if (detail::needsProxy(model, options)) {
+    auto searched = detail::runProxyDecomposition(
+        model, machine, options, job, [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
+          return Result<Decomposition>(runDecomposition(mesh, machine, o, job, progress, p));
+        });
+    if (!searched.ok()) return searched.error();
+    plan = std::move(*searched);
+  } else {
+    plan = runDecomposition(model, machine, options, job, progress);
+  }
   detail::returnFreedMemory();
   job.setProgress(1.0, "search done");
   return plan;
@@ -388,18 +396,15 @@ Result<Decomposition> planFromClippingPlanes(const TriangleMesh& model, const Ma
 }
 
 namespace {
+
 // The axis search's second stage: the full beam search on this many axes (the given one and the best-scored).
 constexpr int kAxesSearchedInFull = 8;
-}  // namespace
 
-Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const MachineSpec& machine,
-                                              const SearchOptions& options, int axisCount, JobContext& job,
-                                              const SearchProgressSink& progress) {
-  if (machine.kind != MachineKind::RotaryPlatform)
-    return Error{ErrorCode::InvalidParameter, "the axis search needs a 4-DOF machine (--machine 4dof)", "axis search"};
-  if (axisCount < 1 || axisCount > 3600)
-    return Error{ErrorCode::InvalidParameter, "the number of axes must be between 1 and 3600", "axis search"};
-  if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
+// The axis search proper, on `model` (the model itself or its proxy) with `platform` as the platform region
+// when given.
+Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                                 int axisCount, JobContext& job, const SearchProgressSink& progress,
+                                 const std::optional<PlatformRegion>& platform) {
   const auto start = std::chrono::steady_clock::now();
 
   const int threads = detail::resolveThreadCount(options.threads);
@@ -462,7 +467,7 @@ Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const M
   int finished = 0;
   detail::parallelFor(axisCount, threads, [&](int a) {
     if (job.isCancelled()) return;
-    Decomposition result = runDecomposition(model, machineFor(a), screening, job, {});
+    Decomposition result = runDecomposition(model, machineFor(a), screening, job, {}, platform);
     std::lock_guard<std::mutex> lock(resultMutex);
     account(result);
     job.setProgress(++finished / steps, "axis search");
@@ -479,7 +484,7 @@ Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const M
         chosen.push_back(std::get<2>(score));
     detail::parallelFor(static_cast<int>(chosen.size()), threads, [&](int k) {
       if (job.isCancelled()) return;
-      Decomposition result = runDecomposition(model, machineFor(chosen[k]), perAxis, job, {});
+      Decomposition result = runDecomposition(model, machineFor(chosen[k]), perAxis, job, {}, platform);
       if (result.cancelled) return;  // the finished greedy plan stands
       std::lock_guard<std::mutex> lock(resultMutex);
       account(result);
@@ -500,6 +505,26 @@ Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const M
   total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   best->statistics = total;
   return std::move(*best);
+}
+
+}  // namespace
+
+Result<Decomposition> decomposeWithAxisSearch(const TriangleMesh& model, const MachineSpec& machine,
+                                              const SearchOptions& options, int axisCount, JobContext& job,
+                                              const SearchProgressSink& progress) {
+  if (machine.kind != MachineKind::RotaryPlatform)
+    return Error{ErrorCode::InvalidParameter, "the axis search needs a 4-DOF machine (--machine 4dof)", "axis search"};
+  if (axisCount < 1 || axisCount > 3600)
+    return Error{ErrorCode::InvalidParameter, "the number of axes must be between 1 and 3600", "axis search"};
+  if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
+  if (!detail::needsProxy(model, options)) return searchAxes(model, machine, options, axisCount, job, progress, std::nullopt);
+  // The platform region depends on up alone, so one serves every axis.
+  auto plan = detail::runProxyDecomposition(
+      model, machine, options, job, [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
+        return searchAxes(mesh, machine, o, axisCount, job, progress, p);
+      });
+  detail::returnFreedMemory();
+  return plan;
 }
 
 }  // namespace multidir::core

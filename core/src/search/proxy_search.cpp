@@ -46,13 +46,16 @@ std::string millimetres(double value) {
 
 }  // namespace
 
-Decomposition runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
-                                    JobContext& job, const SearchProgressSink& progress) {
+Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
+                                            const SearchOptions& options, JobContext& job, const ProxySearchRun& search) {
   const auto start = std::chrono::steady_clock::now();
   const auto proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kProxyToleranceMm);
   if (!proxy.ok()) {
-    Decomposition plan = runDecomposition(model, machine, options, job, progress);
-    plan.statistics.notes.push_back("searched the full mesh: no faithful proxy (" + proxy.error().message + ")");
+    SearchOptions full = options;
+    full.proxyFaces = 0;
+    auto plan = search(model, full, platformRegionFor(model, machine, options.platformToleranceMm));
+    if (plan.ok())
+      plan->statistics.notes.push_back("searched the full mesh: no faithful proxy (" + proxy.error().message + ")");
     return plan;
   }
   const double decimationSeconds = secondsSince(start);
@@ -65,12 +68,16 @@ Decomposition runProxyDecomposition(const TriangleMesh& model, const MachineSpec
   SearchOptions onProxy = options;
   onProxy.proxyFaces = 0;
   onProxy.platformToleranceMm += std::max(0.0, proxyLowest - platform.heightMm);
-  const Decomposition proxyPlan = runDecomposition(proxy->mesh, machine, onProxy, job, progress, platform);
+  const Result<Decomposition> searched = search(proxy->mesh, onProxy, platform);
+  if (!searched.ok()) return searched.error();
+  const Decomposition& proxyPlan = *searched;
   const auto cutsStart = std::chrono::steady_clock::now();
 
   SearchOptions evaluation = options;
   evaluation.candidates.normalSamples = 1;  // the engine only cuts given planes here
-  SearchEngine engine(model, machine, evaluation, job, platform);
+  MachineSpec chosen = machine;
+  chosen.rotationAxis = proxyPlan.rotationAxis;  // an axis search's choice
+  SearchEngine engine(model, chosen, evaluation, job, platform);
   std::vector<std::string> notes;
   bool dropped = false;
   std::shared_ptr<const SearchNode> node = engine.root();
@@ -105,7 +112,7 @@ Decomposition runProxyDecomposition(const TriangleMesh& model, const MachineSpec
 
   Decomposition plan = engine.planOf(*node);
   plan.cancelled = proxyPlan.cancelled;
-  plan.rotationAxis = machine.rotationAxis;
+  plan.rotationAxis = chosen.rotationAxis;
   plan.statistics = proxyPlan.statistics;
   plan.statistics.clipsPerformed += engine.clipsPerformed();
   plan.statistics.proxyFaces = static_cast<int>(proxy->mesh.faceCount());

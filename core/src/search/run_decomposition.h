@@ -1,6 +1,7 @@
 #pragma once
 // The decomposition search without the public entry's bookkeeping, for searches that run many of them (4-DOF
 // axes, poses) and report their own progress.
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -22,8 +23,17 @@ Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& mac
 // The same on a decimated proxy of a huge model (options.proxyFaces), its planes then applied to the full mesh
 // with their offsets polished there; every number of the plan is the full mesh's. Falls back to the full
 // search (and says why in statistics.notes) when the model cannot be decimated faithfully.
-Decomposition runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
-                                    JobContext& job, const SearchProgressSink& progress);
+// `search` runs on the proxy (or, without a faithful proxy, on the model itself), with the options and the
+// platform region to use there; the rotation axis of the plan it returns is the one cut on the full mesh.
+using ProxySearchRun = std::function<Result<Decomposition>(const TriangleMesh& mesh, const SearchOptions& options,
+                                                           const PlatformRegion& platform)>;
+Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
+                                            const SearchOptions& options, JobContext& job, const ProxySearchRun& search);
+
+// Whether `model` is searched on a proxy (options.proxyFaces).
+inline bool needsProxy(const TriangleMesh& model, const SearchOptions& options) {
+  return options.proxyFaces > 0 && model.faceCount() > static_cast<std::size_t>(options.proxyFaces);
+}
 
 class SearchEngine;
 struct SearchNode;

@@ -87,3 +87,20 @@ TEST_F(ProxySearch, AModelAtOrBelowTheFaceCountIsSearchedInFull) {
   options.proxyFaces = 0;  // --no-proxy
   EXPECT_EQ(run(*fine, options).statistics.proxyFaces, 0);
 }
+
+TEST_F(ProxySearch, AnAxisSearchOfAHugeModelRunsOnTheProxyAndCutsTheFullMesh) {
+  MachineSpec rotary = upY();
+  rotary.kind = MachineKind::RotaryPlatform;
+  rotary.rotationAxis = platformFrameX(rotary.up);
+  SearchOptions options;
+  options.proxyFaces = 20000;
+  JobContext job;
+  const auto plan = decomposeWithAxisSearch(*fine, rotary, options, 12, job);
+  ASSERT_TRUE(plan.ok()) << plan.error().describe();
+  EXPECT_GT(plan->statistics.proxyFaces, 0);
+  MachineSpec chosen = rotary;
+  chosen.rotationAxis = plan->rotationAxis;
+  const auto again = planFromClippingPlanes(*fine, chosen, SearchOptions{}, plan->clippingPlanes);
+  ASSERT_TRUE(again.ok()) << again.error().describe();
+  EXPECT_NEAR(again->jgAfterMm2, plan->jgAfterMm2, 1e-9 * plan->jgBeforeMm2);
+}
