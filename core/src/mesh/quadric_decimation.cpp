@@ -44,12 +44,19 @@ struct Quadric {
   }
 };
 
+// An edge as the passes sort it: small, since each pass partitions all of them (the merged point is found
+// again, identically, for the few the pass considers).
 struct Candidate {
   double cost;
-  double meanSquaredDistance;  // cost / the quadric's weight
   double lengthSquared;  // ties (flat regions cost nothing) go to the shorter edge
   std::int32_t a, b;
+};
+
+// A candidate about to be checked and taken: b merges into a, which moves to target.
+struct Collapse {
+  std::int32_t a, b;
   Vec3 target;
+  double meanSquaredDistance;  // the error over the quadric's weight
 };
 
 double quality(const Vec3& p0, const Vec3& p1, const Vec3& p2, double doubleArea) {
@@ -120,9 +127,10 @@ class Decimator {
       std::fill(m_absorbed.begin(), m_absorbed.end(), -1);
       std::size_t collapsed = 0;
       for (std::size_t i = 0; i < share && m_faces > kMinFaces; ++i) {
-        const Candidate& c = candidates[i];
+        if (m_touched[candidates[i].a] || m_touched[candidates[i].b]) continue;
+        const Collapse c = planned(candidates[i].a, candidates[i].b);
         if (m_faces <= targetFaces && c.meanSquaredDistance > freeMeanSquared) continue;
-        if (m_touched[c.a] || m_touched[c.b] || !allowed(c)) continue;
+        if (!allowed(c)) continue;
         collapse(c);
         ++collapsed;
       }
@@ -186,15 +194,21 @@ class Decimator {
         if (!all && !m_touched[a] && !m_touched[b]) continue;
         Quadric q = m_quadrics[a];
         q += m_quadrics[b];
-        const Vec3 target = bestPoint(q, m_points[a], m_points[b]);
-        const double cost = std::max(0.0, q.error(target));
-        out.push_back({cost, q.weight > 0 ? cost / q.weight : INFINITY, (m_points[a] - m_points[b]).squaredNorm(), a,
-                       b, target});
+        const double cost = std::max(0.0, q.error(bestPoint(q, m_points[a], m_points[b])));
+        out.push_back({cost, (m_points[a] - m_points[b]).squaredNorm(), a, b});
       }
     }
   }
 
-  bool allowed(const Candidate& c) {
+  Collapse planned(std::int32_t a, std::int32_t b) const {
+    Quadric q = m_quadrics[a];
+    q += m_quadrics[b];
+    const Vec3 target = bestPoint(q, m_points[a], m_points[b]);
+    const double cost = std::max(0.0, q.error(target));
+    return {a, b, target, q.weight > 0 ? cost / q.weight : INFINITY};
+  }
+
+  bool allowed(const Collapse& c) {
     // Link condition: a and b share exactly the two vertices opposite their edge.
     const int mark = ++m_stampCount;
     forFacesAround(c.a, [&](std::int32_t f) {
@@ -237,7 +251,7 @@ class Decimator {
     return ok;
   }
 
-  void collapse(const Candidate& c) {
+  void collapse(const Collapse& c) {
     m_points[c.a] = c.target;
     m_quadrics[c.a] += m_quadrics[c.b];
     forFacesAround(c.b, [&](std::int32_t f) {
