@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "multidir/core/analysis/overhang.h"
+#include "mesh/edge_groups.h"
 #include "supports/direction_frame.h"
 
 namespace multidir::core {
@@ -14,31 +15,22 @@ namespace {
 
 using detail::DirectionFrame;
 
-// Faces around each undirected edge, keyed by (smaller, larger) vertex index.
-std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::int32_t>> edgeFaces(const TriangleMesh& mesh) {
-  std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::int32_t>> edges;
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      std::int32_t a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-      if (a > b) std::swap(a, b);
-      edges[{a, b}].push_back(static_cast<std::int32_t>(f));
-    }
-  return edges;
-}
-
 // Connected patches of risky faces (through shared edges).
 std::vector<std::int32_t> riskyPatches(const TriangleMesh& mesh, const std::vector<char>& risky,
-                                       const std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::int32_t>>& edges,
-                                       int& count) {
+                                       const detail::EdgeGroups& edges, int& count) {
   std::vector<std::int32_t> parent(mesh.triangles.size());
   for (std::size_t f = 0; f < parent.size(); ++f) parent[f] = static_cast<std::int32_t>(f);
   auto find = [&](std::int32_t f) {
     while (parent[f] != f) f = parent[f] = parent[parent[f]];
     return f;
   };
-  for (const auto& [edge, faces] : edges)
-    for (std::size_t i = 1; i < faces.size(); ++i)
-      if (risky[faces[0]] && risky[faces[i]]) parent[find(faces[0])] = find(faces[i]);
+  for (std::uint32_t g = 0; g < edges.groupCount(); ++g) {
+    const auto first = static_cast<std::int32_t>(edges.halfEdges[edges.groupStart[g]] / 3);
+    for (std::uint32_t i = edges.groupStart[g] + 1; i < edges.groupStart[g + 1]; ++i) {
+      const auto other = static_cast<std::int32_t>(edges.halfEdges[i] / 3);
+      if (risky[first] && risky[other]) parent[find(first)] = find(other);
+    }
+  }
   std::vector<std::int32_t> patch(mesh.triangles.size(), -1);
   std::unordered_map<std::int32_t, std::int32_t> ids;
   for (std::size_t f = 0; f < patch.size(); ++f) {
@@ -132,7 +124,7 @@ Result<std::vector<OverhangSample>> sampleOverhangs(const TriangleMesh& mesh, co
   removeDuplicates(samples, 1e-6 * spacing);
 
   // Risky patches smaller than a grid cell still need one contact.
-  const auto edges = edgeFaces(mesh);
+  const detail::EdgeGroups edges = detail::edgeGroups(mesh);
   int patchCount = 0;
   const std::vector<std::int32_t> patch = riskyPatches(mesh, analysis->risky, edges, patchCount);
   std::vector<char> patchSampled(static_cast<std::size_t>(patchCount), 0);
@@ -153,8 +145,13 @@ Result<std::vector<OverhangSample>> sampleOverhangs(const TriangleMesh& mesh, co
   const double sinAlpha = std::sin(degToRad(options.alphaMaxDegrees));
   const double cosAlpha = std::cos(degToRad(options.alphaMaxDegrees));
   const Vec3 d = frame.up();
-  for (const auto& [edge, faces] : edges) {
-    if (faces.size() != 2 || analysis->risky[faces[0]] || analysis->risky[faces[1]]) continue;
+  for (std::uint32_t g = 0; g < edges.groupCount(); ++g) {
+    if (edges.useCount(g) != 2) continue;
+    const std::uint32_t h = edges.halfEdges[edges.groupStart[g]];
+    const std::array<std::int32_t, 2> faces{static_cast<std::int32_t>(h / 3),
+                                            static_cast<std::int32_t>(edges.halfEdges[edges.groupStart[g] + 1] / 3)};
+    const std::pair<std::int32_t, std::int32_t> edge = std::minmax(detail::halfEdgeFrom(mesh, h), detail::halfEdgeTo(mesh, h));
+    if (analysis->risky[faces[0]] || analysis->risky[faces[1]]) continue;
     // A cap is a cut where a later region is printed on this one: what hangs at its rim lies in the later
     // region's sub-space, where this region's supports cannot go.
     if (!mesh.origins.empty() && (mesh.origins[faces[0]].isCap() || mesh.origins[faces[1]].isCap())) continue;
