@@ -3,70 +3,84 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <set>
-#include <unordered_map>
+#include <cstdint>
+#include <vector>
 
 namespace multidir::core::detail {
 namespace {
 
-struct FloatCorner {
-  std::array<float, 3> xyz;
-  bool operator==(const FloatCorner& o) const { return std::memcmp(xyz.data(), o.xyz.data(), sizeof xyz) == 0; }
-};
+// A vertex rounded to float, as its bits (so -0 and +0 compare after toFloat made them one).
+using FloatBits = std::array<std::uint32_t, 3>;
 
-struct FloatCornerHash {
-  std::size_t operator()(const FloatCorner& c) const {
-    std::array<std::uint32_t, 3> bits{};
-    std::memcpy(bits.data(), c.xyz.data(), sizeof bits);
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::uint32_t b : bits) h = (h ^ b) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
-
-FloatCorner toFloat(const Vec3& p) {
-  FloatCorner c{{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())}};
-  for (float& v : c.xyz)
+FloatBits toFloat(const Vec3& p) {
+  std::array<float, 3> xyz{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())};
+  for (float& v : xyz)
     if (v == 0.0f) v = 0.0f;  // -0 and +0 are one corner, as the loader's weld sees them
-  return c;
+  FloatBits bits{};
+  std::memcpy(bits.data(), xyz.data(), sizeof bits);
+  return bits;
+}
+
+// For every vertex, the first vertex (lowest index) with the same float corner. Sorting, not hashing: a
+// million-face region has half a million vertices, and a node per entry cost more than the sort.
+std::vector<std::int32_t> firstWithSameFloatCorner(const TriangleMesh& mesh) {
+  std::vector<std::pair<FloatBits, std::int32_t>> corners(mesh.vertices.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    corners[v] = {toFloat(mesh.vertices[v]), static_cast<std::int32_t>(v)};
+  std::sort(corners.begin(), corners.end());
+  std::vector<std::int32_t> first(mesh.vertices.size());
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    first[static_cast<std::size_t>(corners[i].second)] =
+        i > 0 && corners[i].first == corners[i - 1].first ? first[static_cast<std::size_t>(corners[i - 1].second)]
+                                                           : corners[i].second;
+  return first;
 }
 
 }  // namespace
 
 std::size_t cornersMergedAtFloatPrecision(const TriangleMesh& mesh) {
   // Vertices already at the same point (a pinch split in two by the clip) are one corner either way.
-  std::unordered_map<FloatCorner, Vec3, FloatCornerHash> seen;
-  seen.reserve(mesh.vertices.size());
+  const std::vector<std::int32_t> first = firstWithSameFloatCorner(mesh);
   std::size_t merged = 0;
-  for (const Vec3& v : mesh.vertices) {
-    const auto [it, inserted] = seen.emplace(toFloat(v), v);
-    if (!inserted && it->second != v) ++merged;
-  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    if (mesh.vertices[v] != mesh.vertices[static_cast<std::size_t>(first[v])]) ++merged;
   return merged;
 }
 
 StlImage stlImage(const TriangleMesh& mesh) {
   StlImage image;
-  std::unordered_map<FloatCorner, std::int32_t, FloatCornerHash> index;
+  const std::vector<std::int32_t> first = firstWithSameFloatCorner(mesh);
   std::vector<std::int32_t> map(mesh.vertices.size());
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const FloatCorner c = toFloat(mesh.vertices[v]);
-    const auto [it, inserted] = index.emplace(c, static_cast<std::int32_t>(image.mesh.vertices.size()));
-    if (inserted)
-      image.mesh.vertices.emplace_back(c.xyz[0], c.xyz[1], c.xyz[2]);
-    else
+    const auto representative = static_cast<std::size_t>(first[v]);
+    if (representative == v) {
+      map[v] = static_cast<std::int32_t>(image.mesh.vertices.size());
+      const FloatBits bits = toFloat(mesh.vertices[v]);
+      std::array<float, 3> xyz{};
+      std::memcpy(xyz.data(), bits.data(), sizeof xyz);
+      image.mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+    } else {
+      map[v] = map[representative];  // a lower index, so already numbered
       ++image.mergedCorners;
-    map[v] = it->second;
+    }
   }
   // The loader drops faces with a repeated corner, then every repeat of a face already kept.
-  std::set<std::array<std::int32_t, 3>> seen;
+  std::vector<std::pair<std::array<std::int32_t, 3>, std::uint32_t>> byCorners(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    std::array<std::int32_t, 3> sorted{};
+    for (int k = 0; k < 3; ++k) sorted[k] = map[static_cast<std::size_t>(mesh.triangles[f][k])];
+    std::sort(sorted.begin(), sorted.end());
+    byCorners[f] = {sorted, static_cast<std::uint32_t>(f)};
+  }
+  std::sort(byCorners.begin(), byCorners.end());
+  std::vector<char> repeats(mesh.triangles.size(), 0);
+  for (std::size_t i = 1; i < byCorners.size(); ++i)
+    if (byCorners[i].first == byCorners[i - 1].first) repeats[byCorners[i].second] = 1;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle t = {map[static_cast<std::size_t>(mesh.triangles[f][0])],
                         map[static_cast<std::size_t>(mesh.triangles[f][1])],
                         map[static_cast<std::size_t>(mesh.triangles[f][2])]};
-    std::array<std::int32_t, 3> sorted = t;
-    std::sort(sorted.begin(), sorted.end());
-    if (sorted[0] == sorted[1] || sorted[1] == sorted[2] || !seen.insert(sorted).second) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || repeats[f]) {
       ++image.droppedFaces;
       continue;
     }
