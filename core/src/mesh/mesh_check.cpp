@@ -135,6 +135,13 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
   FlatIndex cells(exactOnly ? 0 : usedCount);
   std::vector<std::array<std::int64_t, 3>> cellOfKept;
   std::vector<std::int32_t> nextInCell, lastInCell;
+  // An STL repeats each corner about six times: a sixth is a good first guess of the kept vertices.
+  welded.reserve(usedCount / 6 + 16);
+  if (!exactOnly) {
+    cellOfKept.reserve(usedCount / 6 + 16);
+    nextInCell.reserve(usedCount / 6 + 16);
+    lastInCell.reserve(usedCount / 6 + 16);
+  }
   const double toleranceSquared = tolerance * tolerance;
   for (std::size_t v = 0; v < points.size(); ++v) {
     if (!used[v]) continue;
@@ -450,14 +457,19 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   // other shells) negative.
   {
     const auto shellFaces = detail::facesOfComponents(components);
+    // One shell (the usual model) is the mesh itself: no copy of a million faces to measure it.
+    const std::size_t shellCount = shellFaces.size();
     std::vector<TriangleMesh> shells;
-    shells.reserve(shellFaces.size());
-    for (const auto& faces : shellFaces) shells.push_back(detail::extractFaces(mesh, faces));
+    if (shellCount > 1) {
+      shells.reserve(shellCount);
+      for (const auto& faces : shellFaces) shells.push_back(detail::extractFaces(mesh, faces));
+    }
+    auto shellMesh = [&](std::size_t s) -> const TriangleMesh& { return shellCount > 1 ? shells[s] : mesh; };
     // Nesting: shell s lies inside shell o when its probes say so; shells whose surfaces cross are two
     // overlapping parts, and neither a part nor a cavity can be told apart there, so they are refused
     // rather than one of them turned inside out on the word of a single vertex.
-    std::vector<int> depth(shells.size(), 0);
-    if (components.count <= kMaxShellsForNesting && shells.size() > 1) {
+    std::vector<int> depth(shellCount, 0);
+    if (components.count <= kMaxShellsForNesting && shellCount > 1) {
       std::vector<BoundingBox> boxes;
       boxes.reserve(shells.size());
       for (const TriangleMesh& shell : shells) boxes.push_back(boundingBox(shell));
@@ -479,11 +491,11 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
     }
     std::size_t inverted = 0;
     std::vector<std::int64_t> first;
-    for (std::size_t s = 0; s < shells.size(); ++s) {
-      const double volume = signedVolume(shells[s]);
+    for (std::size_t s = 0; s < shellCount; ++s) {
+      const double volume = signedVolume(shellMesh(s));
       // A closed shell that encloses no volume (a flat tetrahedron, a surface folded onto itself) is no
       // solid. Relative to the shell's area, so that the test does not depend on the model's units.
-      const double area = surfaceArea(shells[s]);
+      const double area = surfaceArea(shellMesh(s));
       if (!(std::abs(volume) > kFlatShellRatio * area * std::sqrt(area)))
         return check.fatal(ErrorCode::EmptyMesh,
                            "shell " + std::to_string(s) + " (with face " +
@@ -499,14 +511,14 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
     }
     if (inverted > 0)
       if (auto e = check.repairable("inverted-shells", inverted, first,
-                                    withThousands(inverted) + " of " + withThousands(shells.size()) +
+                                    withThousands(inverted) + " of " + withThousands(shellCount) +
                                         " shells face inward (inside out)" + firstList("shells", first, inverted),
                                     "turned " + withThousands(inverted) + " inside-out shells the right way out",
                                     ErrorCode::InconsistentOrientation))
         return *e;
-    if (shells.size() > 1)
-      check.info("several-shells", shells.size(), {},
-                 "the model is made of " + withThousands(shells.size()) +
+    if (shellCount > 1)
+      check.info("several-shells", shellCount, {},
+                 "the model is made of " + withThousands(shellCount) +
                      " separate shells (parts or cavities); each is kept");
   }
 
