@@ -1,8 +1,9 @@
 // Search on a proxy, cut the full mesh exactly.
 //
 // A scan of a million triangles has the shape of a 50k-triangle version of itself to within a fraction of a
-// millimetre, and the search's candidates are a millimetre apart: the extra triangles change which plane
-// wins by nothing but cost time linearly (docs/search.md). So the search runs on a quadric-decimated proxy;
+// millimetre, and the search's candidates are a millimetre apart: the extra triangles add no shape the search
+// could use, but cost time linearly (docs/architecture.md, "Million-triangle models"). So the search runs on a
+// quadric-decimated proxy;
 // its planes are then cut through the full mesh one by one at the proxy's offsets, every criterion checked
 // again there (a plane that fails moves to the nearest offset within 0.3 mm that passes, or is dropped), and
 // J_G, volumes and risky areas measured on the full mesh's regions.
@@ -25,8 +26,8 @@ namespace {
 
 // How far and how finely a proxy plane's offset may move on the full mesh when the proxy's own offset fails a
 // criterion there: the proxy's surface lies within a fraction of a millimetre of the full one.
-constexpr double kPolishRangeMm = 0.3;
-constexpr double kPolishStepMm = 0.05;
+constexpr double kSettleRangeMm = 0.3;
+constexpr double kSettleStepMm = 0.05;
 // Below the proxy's face count, collapses that move the surface by at most this much are still taken: a
 // scan's or subdivided model's redundant faces go (the search's planes are a millimetre apart, its volumes
 // and areas are measured on the full mesh in the end), its real detail stays.
@@ -86,11 +87,11 @@ Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const Mac
     auto child = engine.cut(node, found);
     const std::string refusal = child.ok() ? "" : child.error().message;
     // The proxy's offset failed a criterion on the full mesh (a sliver left floating, a region a hair too
-    // thin): the nearest offset within kPolishRangeMm that passes them all stands in for it.
-    for (int step = 1; !child.ok() && step * kPolishStepMm <= kPolishRangeMm + 1e-9; ++step) {
+    // thin): the nearest offset within kSettleRangeMm that passes them all stands in for it.
+    for (int step = 1; !child.ok() && step * kSettleStepMm <= kSettleRangeMm + 1e-9; ++step) {
       for (const int sign : {-1, +1}) {
         Plane moved = found;
-        moved.offset += sign * step * kPolishStepMm;
+        moved.offset += sign * step * kSettleStepMm;
         child = engine.cut(node, moved);
         if (child.ok()) {
           notes.push_back(planeName(k) + " moved " + millimetres(moved.offset - found.offset) +
