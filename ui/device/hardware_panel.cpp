@@ -822,7 +822,7 @@ void HardwarePanel::updateRunTexts() {
   const int regions = planRegionCount();
   QString summary = regions == 0 ? tr("No plan: run a search or open a plan first.")
                                  : tr("Plan with %n region(s).", nullptr, regions);
-  if (regions > 0 && jobGcodeCount() == regions)
+  if (regions > 0 && static_cast<int>(m_jobGcode.size()) == regions)
     summary += QLatin1Char(' ') + tr("Sliced: a connected printer prints each region's G-code.");
   m_planSummary->setText(summary);
   if (!m_run->hasRun()) {

@@ -88,7 +88,7 @@ class HardwarePanel : public QWidget {
   // The G-code of every region of the plan, in printing order, from the sliced job; `files` keeps them on disk
   // while held (a run holds it until the next one). Empty: no G-code (the operator prints each region).
   void setJobGcode(std::vector<StepGcode> steps, std::shared_ptr<const void> files = nullptr);
-  [[nodiscard]] int jobGcodeCount() const { return static_cast<int>(m_jobGcode.size()); }
+  [[nodiscard]] const std::vector<StepGcode>& jobGcode() const { return m_jobGcode; }
   // Each device's stop under the E-STOP ("Platform: E-STOP confirmed. Printer: E-STOP being resent…"); empty
   // when no stop is latched.
   [[nodiscard]] QString stopsText() const;
