@@ -225,5 +225,48 @@ TEST_F(PrinterSectionTest, EmergencyStopWithoutARunStillStopsBothDevices) {
   EXPECT_FALSE(panel.stopsText().contains(QStringLiteral("Printer:"))) << panel.stopsText().toStdString();
 }
 
+TEST_F(PrinterSectionTest, AnEmergencyStopThePrinterCannotHearIsShownAsBeingResentUntilItArrives) {
+  startPrinter(1.0);
+  connectPrinter();
+  printer->dropLink();
+  press("estopButton");  // enabled for the printer alone
+  ASSERT_TRUE(QTest::qWaitFor(
+      [&] { return panel.stopsText().contains(QStringLiteral("Printer: emergency stop not confirmed yet")); }, kWaitMs))
+      << panel.stopsText().toStdString();
+  EXPECT_TRUE(panel.stopsText().contains(QStringLiteral("keeps resending"))) << panel.stopsText().toStdString();
+  press("printerClearStopButton");  // not before the printer has it
+  EXPECT_TRUE(panel.printerSection()->messageText().startsWith(QStringLiteral("Clear printer E-STOP refused")))
+      << panel.printerSection()->messageText().toStdString();
+  printer->restoreLink();
+  ASSERT_TRUE(QTest::qWaitFor(
+      [&] { return panel.stopsText().contains(QStringLiteral("Printer: emergency stop confirmed")); }, kWaitMs))
+      << panel.stopsText().toStdString();
+  const auto requests = printer->requests();
+  EXPECT_TRUE(std::any_of(requests.begin(), requests.end(), [](const hardware::PrinterRequestRecord& r) {
+    return r.path == "/printer/emergency_stop";
+  }));
+  EXPECT_EQ(printer->state().firmwareState, "shutdown");
+}
+
+TEST_F(PrinterSectionTest, ALostPrinterLinkDuringARunPausesItAndTheTimelineSaysWhy) {
+  startPrinter(20.0);
+  givePlanWithGcode(2);
+  ASSERT_NO_FATAL_FAILURE(runUntilPrinting());
+  printer->dropLink();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.printRunDriver()->state() == hardware::PrintRunState::Paused; },
+                              kWaitMs))
+      << runLog();
+  // The run reads the link itself; the section's next status read marks the values.
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.printerLink()->staleSince().has_value(); }, kWaitMs));
+  EXPECT_TRUE(label("printerExtruderValue").startsWith(QStringLiteral("unknown since")));
+  EXPECT_EQ(timeline()[0].phase, StepPhase::Paused);
+  EXPECT_TRUE(timeline()[0].reason.contains(QStringLiteral("is lost"))) << timeline()[0].reason.toStdString();
+  EXPECT_EQ(timeline()[1].phase, StepPhase::Waiting);
+  EXPECT_TRUE(panel.printerSection()->bannerText().contains(QStringLiteral("The print run is paused")))
+      << panel.printerSection()->bannerText().toStdString();
+  printer->restoreLink();
+  press("abortButton");
+}
+
 }  // namespace
 }  // namespace multidir::ui
