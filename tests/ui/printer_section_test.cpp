@@ -4,8 +4,10 @@
 // link marked stale, and E-STOP reaching both devices.
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QToolBar>
 #include <algorithm>
 
 #include "ui/device/print_run_driver.h"
@@ -25,7 +27,11 @@ class PrinterSectionTest : public PrinterPanelTest {};
 
 TEST_F(PrinterSectionTest, ConnectShowsThePrintersTemperaturesAndRemembersTheAddress) {
   startPrinter(1.0);
+  QAction* windowEstop = panel.addEmergencyStopTo(new QToolBar(&panel));
+  EXPECT_FALSE(windowEstop->isVisible());
   connectPrinter();
+  // The platform is not connected, yet both E-STOPs are there for the printer.
+  EXPECT_TRUE(windowEstop->isVisible());
   const hardware::SimulatedPrinterState s = printer->state();
   const QString ambient = QLocale().toString(s.extruder.actualC, 'f', 1);
   ASSERT_TRUE(QTest::qWaitFor([&] { return label("printerExtruderValue").startsWith(ambient); }, kWaitMs))
@@ -38,7 +44,6 @@ TEST_F(PrinterSectionTest, ConnectShowsThePrintersTemperaturesAndRemembersTheAdd
       << label("printerStateValue").toStdString();
   EXPECT_TRUE(panel.printerSection()->bannerText().isEmpty());
   EXPECT_EQ(QSettings().value(QStringLiteral("printer/url")).toString(), QString::fromStdString(printer->address()));
-  // The platform is not connected, yet E-STOP is there for the printer.
   EXPECT_TRUE(buttonNamed("estopButton")->isEnabled());
   press("printerDisconnectButton");
   EXPECT_EQ(label("printerExtruderValue"), QStringLiteral("—"));
@@ -176,8 +181,8 @@ TEST_F(PrinterSectionTest, TheLinkLostBannerIsDrawnInAlarmRedAcrossThePrinterSec
   QTest::qWait(50);  // laid out
   const QImage picture = section->grab().toImage();
   // A band as wide as most of the section, at least two text lines high, where there was none.
-  const int red_pixels = pixelsNear(picture, red) - before;
-  EXPECT_GT(red_pixels, picture.width() * 8 / 10 * 30) << "red pixels: " << red_pixels;
+  const int redPixels = pixelsNear(picture, red) - before;
+  EXPECT_GT(redPixels, picture.width() * 8 / 10 * 30) << "red pixels: " << redPixels;
   const QImage bannerPicture = banner->grab().toImage();
   EXPECT_GT(pixelsNear(bannerPicture, red), bannerPicture.width() * bannerPicture.height() / 2);
 }
