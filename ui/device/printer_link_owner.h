@@ -12,6 +12,9 @@
 #include <QObject>
 #include <QString>
 #include <QTimer>
+#include <chrono>
+#include <cstdint>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
