@@ -295,6 +295,19 @@ void MainWindow::buildDocks() {
   connect(this, &MainWindow::planShown, hardwarePanel, [this, hardwarePanel] {
     if (m_plan && m_plan->plan) hardwarePanel->setPlan(*m_plan->plan);
   });
+  // The sliced job's G-code and estimates go with the plan to the printer; dropped with the slicing result.
+  connect(m_slicing, &SliceSession::sliced, hardwarePanel, [this, hardwarePanel] {
+    const std::optional<SliceOutcome>& outcome = m_slicing->outcome();
+    if (!outcome || !outcome->job) return;
+    std::vector<StepGcode> steps;
+    for (const slicing::SlicedStep& step : outcome->job->steps)
+      steps.push_back({QDir(outcome->folderPath()).filePath(QString::fromStdString(step.gcodeFile)).toStdString(),
+                       step.estimate.printSeconds});
+    hardwarePanel->setJobGcode(std::move(steps), outcome->folder);
+  });
+  connect(m_slicing, &SliceSession::resultAvailable, hardwarePanel, [hardwarePanel](bool available) {
+    if (!available) hardwarePanel->setJobGcode({});
+  });
   // During a run the view shows what is on the platform: the regions printed so far and the one being
   // printed; all of them again when the run ends. Through the Plan panel, so its stepper agrees (and clamps).
   connect(hardwarePanel, &HardwarePanel::currentRegionChanged, m_planPanel, [this](int region) {

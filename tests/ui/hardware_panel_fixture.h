@@ -4,14 +4,20 @@
 // simulator's own state. Every wait has a deadline (kWaitMs).
 #include <gtest/gtest.h>
 
+#include <QColor>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
 #include <QTest>
 #include <chrono>
+#include <cmath>
+#include <vector>
 
 #include "hardware/hardware_test_support.h"
+#include "multidir/core/common/units.h"
+#include "multidir/core/search/decomposition.h"
 #include "multidir/hardware/device_simulator.h"
 #include "ui/device/connection_form.h"
 #include "ui/device/device_link.h"
@@ -26,6 +32,30 @@ inline constexpr int kWaitMs = 5000;  // generous: the simulator answers within 
 inline hardware::ConnectionSettings fastSettings(int port) { return hardware::test::fastSettings(port, 1); }
 
 inline QString degreesText(double value) { return QLocale().toString(value, 'f', 2) + QStringLiteral("°"); }
+
+// Pixels of `image` within a small distance of `color`.
+inline int pixelsNear(const QImage& image, const QColor& color) {
+  int count = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      if (std::abs(c.red() - color.red()) + std::abs(c.green() - color.green()) + std::abs(c.blue() - color.blue()) < 30)
+        ++count;
+    }
+  return count;
+}
+
+// A 4-DOF plan with one region per angle (degrees about the platform's axis, in printing order).
+inline core::Decomposition planWithAngles(const std::vector<double>& anglesDegrees) {
+  core::Decomposition plan;
+  for (double angle : anglesDegrees) {
+    core::Region region;
+    region.angles.rotaryDegrees = angle;
+    region.printingDirection = core::Vec3(0.0, -std::sin(core::degToRad(angle)), std::cos(core::degToRad(angle)));
+    plan.regions.push_back(region);
+  }
+  return plan;
+}
 
 class HardwarePanelTest : public ::testing::Test {
  protected:

@@ -3,8 +3,6 @@
 // plan refused for its real reason.
 #include <gtest/gtest.h>
 
-#include <QColor>
-#include <QImage>
 #include <QRegularExpression>
 #include <QSignalSpy>
 
@@ -17,29 +15,6 @@ namespace {
 // The device fields of the Status group (State and Last problem describe the link, not the device).
 const char* const kDeviceFields[] = {"enabledValue", "positionValue", "movingValue", "homedValue", "faultValue",
                                      "heartbeatValue"};
-
-// Pixels of `image` within a small distance of `color`.
-int pixelsNear(const QImage& image, const QColor& color) {
-  int count = 0;
-  for (int y = 0; y < image.height(); ++y)
-    for (int x = 0; x < image.width(); ++x) {
-      const QColor c = image.pixelColor(x, y);
-      if (std::abs(c.red() - color.red()) + std::abs(c.green() - color.green()) + std::abs(c.blue() - color.blue()) < 30)
-        ++count;
-    }
-  return count;
-}
-
-core::Decomposition planWithAngles(std::initializer_list<double> anglesDegrees) {
-  core::Decomposition plan;
-  for (double angle : anglesDegrees) {
-    core::Region region;
-    region.angles.rotaryDegrees = angle;
-    region.printingDirection = core::Vec3(0.0, -std::sin(core::degToRad(angle)), std::cos(core::degToRad(angle)));
-    plan.regions.push_back(region);
-  }
-  return plan;
-}
 
 class HardwarePanelTruth : public HardwarePanelTest {
  protected:

@@ -22,6 +22,7 @@
 #include <QTest>
 
 #include "multidir/slicing/printer_profile.h"
+#include "ui/device/hardware_panel.h"
 #include "ui/jobs/slice_job_runner.h"
 #include "ui/main_window.h"
 #include "ui/panels/slice_panel.h"
@@ -226,6 +227,21 @@ TEST_F(StudioSlicedSnowman, ExportGcodeWritesTheStepProgramsAndTheJobIntoANewFol
   EXPECT_TRUE(error.contains(QStringLiteral("is a file, not a folder"))) << error.toStdString();
 }
 
+TEST_F(StudioSlicedSnowman, TheHardwarePanelGetsEveryStepsGcodeAndEstimateForThePrinter) {
+  MainWindow& window = *s_window;
+  auto* hardware = window.findChild<HardwarePanel*>();
+  ASSERT_NE(hardware, nullptr);
+  const auto& job = *window.sliceSession()->outcome()->job;
+  ASSERT_EQ(hardware->jobGcode().size(), job.steps.size());
+  for (std::size_t k = 0; k < job.steps.size(); ++k) {
+    const StepGcode& step = hardware->jobGcode()[k];
+    EXPECT_EQ(QFileInfo(QString::fromStdString(step.path)).fileName().toStdString(), job.steps[k].gcodeFile);
+    EXPECT_TRUE(QFileInfo::exists(QString::fromStdString(step.path))) << step.path;
+    EXPECT_DOUBLE_EQ(step.estimateSeconds, job.steps[k].estimate.printSeconds);
+  }
+  EXPECT_TRUE(hardware->findChild<QLabel*>(QStringLiteral("planSummaryText"))->text().contains(QStringLiteral("Sliced")));
+}
+
 // One window shows the snowman's quick plan for the tests of slicing that goes wrong or is stopped: each
 // leaves the plan shown and no result, as it found them.
 class StudioSnowmanPlan : public ::testing::Test {
@@ -290,6 +306,7 @@ TEST_F(StudioSnowmanPlan, CancelStopsTheSlicerLeavesNoFilesAndKeepsThePlan) {
   EXPECT_FALSE(QFileInfo::exists(work)) << "the job's folder is still there";
   EXPECT_FALSE(session->outcome().has_value());
   EXPECT_EQ(panel->estimatesTable()->rowCount(), 0);
+  EXPECT_TRUE(window.findChild<HardwarePanel*>()->jobGcode().empty());
   EXPECT_FALSE(panel->exportButton()->isEnabled());
   EXPECT_FALSE(window.findChild<QAction*>(QStringLiteral("exportGcode"))->isEnabled());
   ASSERT_TRUE(window.plan().has_value());

@@ -16,12 +16,16 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <chrono>
+#include <filesystem>
 #include <utility>
 
 #include "ui/device/connection_form.h"
 #include "ui/device/device_link.h"
+#include "ui/device/job_timeline.h"
 #include "ui/device/plan_steps.h"
 #include "ui/device/print_run_driver.h"
+#include "ui/device/printer_link_owner.h"
+#include "ui/device/printer_section.h"
 
 namespace multidir::ui {
 namespace {
@@ -127,6 +131,7 @@ HardwarePanel::HardwarePanel(QWidget* parent) : QWidget(parent) {
   setObjectName(QStringLiteral("hardwarePanel"));
   m_link = new DeviceLink(this);
   m_run = new PrintRunDriver(this);
+  m_printerLink = new PrinterLinkOwner(this);
 
   auto* content = new QWidget;
   auto* layout = new QVBoxLayout(content);
@@ -135,6 +140,8 @@ HardwarePanel::HardwarePanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(buildControlsGroup());
   m_message = valueLabel(content, QStringLiteral("hardwareMessage"));
   layout->addWidget(m_message);
+  m_printerSection = new PrinterSection(m_printerLink, m_run, content);
+  layout->addWidget(m_printerSection);
   layout->addWidget(buildRunGroup());
   layout->addStretch(1);
 
@@ -150,6 +157,10 @@ HardwarePanel::HardwarePanel(QWidget* parent) : QWidget(parent) {
   outer->setContentsMargins(0, 0, 0, 0);
   outer->addWidget(m_banner);
   outer->addWidget(buildSafetyBar());
+  m_stops = valueLabel(this, QStringLiteral("stopsText"));  // shown by updateStops() while a stop is latched
+  m_stops->setContentsMargins(9, 0, 9, 0);
+  m_stops->hide();
+  outer->addWidget(m_stops);
   outer->addWidget(scroll, 1);
 
   connect(m_link, &DeviceLink::snapshotChanged, this, &HardwarePanel::onSnapshot);
@@ -164,6 +175,14 @@ HardwarePanel::HardwarePanel(QWidget* parent) : QWidget(parent) {
     updateBanner();
     updateRunTexts();
     updateControls();
+  });
+  connect(m_run, &PrintRunDriver::runStarting, m_timeline, &JobTimeline::reset);
+  connect(m_run, &PrintRunDriver::runEvent, m_timeline, &JobTimeline::apply);
+  connect(m_run, &PrintRunDriver::stateChanged, m_printerSection, &PrinterSection::refresh);
+  connect(m_printerLink, &PrinterLinkOwner::statusChanged, this, [this] {
+    updateBanner();
+    updateControls();
+    updateStops();
   });
   connect(m_form, &ConnectionForm::kindChanged, this, [this] {
     updateKindWidgets();
@@ -183,10 +202,12 @@ HardwarePanel::~HardwarePanel() {
   // The run and the link report while they shut down; as children they would outlive this panel's members
   // (QWidget deletes children last), so they go first, without reporting to it. The run first: it holds
   // the link's positioner.
-  QObject::disconnect(m_run, nullptr, this, nullptr);
+  QObject::disconnect(m_run, nullptr, nullptr, nullptr);
   QObject::disconnect(m_link, nullptr, this, nullptr);
+  QObject::disconnect(m_printerLink, nullptr, nullptr, nullptr);
   delete m_run;
   delete m_link;
+  delete m_printerLink;
 }
 
 QGroupBox* HardwarePanel::buildConnectionGroup() {
@@ -292,7 +313,7 @@ QWidget* HardwarePanel::buildSafetyBar() {
   layout->addWidget(m_stop, 1);
   layout->addWidget(m_estop, 2);
   connect(m_stop, &QPushButton::clicked, m_link, &DeviceLink::stop);
-  connect(m_estop, &QPushButton::clicked, m_link, &DeviceLink::emergencyStop);
+  connect(m_estop, &QPushButton::clicked, this, &HardwarePanel::emergencyStopAll);
   return bar;
 }
 
@@ -306,7 +327,7 @@ void HardwarePanel::styleEmergencyStop(QPushButton* estop) const {
 QAction* HardwarePanel::addEmergencyStopTo(QToolBar* bar) {
   m_windowEstop = button(bar, QStringLiteral("windowEstopButton"), tr("E-STOP"));
   styleEmergencyStop(m_windowEstop);
-  connect(m_windowEstop, &QPushButton::clicked, m_link, &DeviceLink::emergencyStop);
+  connect(m_windowEstop, &QPushButton::clicked, this, &HardwarePanel::emergencyStopAll);
   m_windowEstopAction = bar->addWidget(m_windowEstop);
   updateKindWidgets();
   updateControls();
@@ -327,11 +348,13 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   bold.setPointSizeF(bold.pointSizeF() * 1.2);
   m_prompt->setFont(bold);
   m_regionDone = button(group, QStringLiteral("regionDoneButton"), tr("Region done"),
-                        tr("Press when the region asked for has been printed."));
+                        tr("Press when the region asked for has been printed (by hand: a region the connected "
+                           "printer prints goes on by itself)."));
   m_pause = button(group, QStringLiteral("pauseButton"), tr("Pause"));
   m_resume = button(group, QStringLiteral("resumeButton"), tr("Resume"),
                     tr("Continues a paused run, or retries the current step after a device problem."));
   m_abort = button(group, QStringLiteral("abortButton"), tr("Abort"));
+  m_timeline = new JobTimeline(group);
   m_runLog = new QPlainTextEdit(group);
   m_runLog->setObjectName(QStringLiteral("runLog"));
   m_runLog->setReadOnly(true);
@@ -352,6 +375,7 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   layout->addLayout(form);
   layout->addWidget(m_prompt);
   layout->addLayout(buttons);
+  layout->addWidget(m_timeline);
   layout->addWidget(m_runLog);
 
   connect(m_startRun, &QPushButton::clicked, this, &HardwarePanel::startRun);
@@ -388,6 +412,10 @@ void HardwarePanel::updateBanner() {
     text = tr("The link is back. The print run is still paused since the link was lost: check the platform, "
               "then press Resume.");
   }
+  if (const QString printerLost = m_printerSection->linkLostText(); !printerLost.isEmpty()) {
+    text = text.isEmpty() ? printerLost : text + QLatin1Char('\n') + printerLost;
+    alarm = true;
+  }
   m_banner->setText(text);
   m_banner->setStyleSheet(QStringLiteral("QLabel#linkBanner { background-color: %1; color: %2; font-weight: bold; "
                                          "padding: 8px; }")
@@ -398,6 +426,61 @@ void HardwarePanel::updateBanner() {
 
 core::MachineSpec HardwarePanel::machineForNextConnection() const {
   return machineForDevice(m_form->kind(), m_profile);
+}
+
+void HardwarePanel::setPrinterLinkOptions(const hardware::PrinterLinkOptions& options) {
+  m_printerLink->setLinkOptions(options);
+}
+
+void HardwarePanel::setJobGcode(std::vector<StepGcode> steps, std::shared_ptr<const void> files) {
+  m_jobGcode = std::move(steps);
+  m_jobFiles = std::move(files);
+  updateRunTexts();
+}
+
+void HardwarePanel::emergencyStopAll() {
+  // Both devices first, before anything else: through the run when one is under way (it sends both stops at
+  // once and ends Aborted), else each device's own emergency stop.
+  const bool active = m_run->isActive();
+  const bool runStopsPrinter = active && m_run->hasPrinter();
+  if (active)
+    (void)m_run->emergencyStop();
+  else if (m_link->isOpen())
+    m_link->emergencyStop();
+  if (!runStopsPrinter && m_printerLink->isOpen()) m_printerLink->emergencyStop();
+  QStringList devices;
+  if (m_link->isOpen() || active) devices << tr("the platform");
+  if (m_printerLink->isOpen()) devices << tr("the printer");
+  if (!devices.isEmpty())
+    setMessage(tr("E-STOP sent to %1. To go on: %2%3.")
+                   .arg(devices.join(tr(" and ")), recoveryText(m_link->settings().kind),
+                        m_printerLink->isOpen() ? tr("; for the printer, Clear printer E-STOP and restart its firmware")
+                                                : QString()),
+               false);
+  updateStops();
+  updateRunTexts();
+  updateControls();
+}
+
+QString HardwarePanel::stopsText() const { return m_stops->isHidden() ? QString() : m_stops->text(); }
+
+void HardwarePanel::updateStops() {
+  QStringList lines;
+  if (const std::shared_ptr<hardware::Positioner> positioner = m_link->positioner()) {
+    const hardware::PositionerSnapshot p = positioner->snapshot();
+    if (p.stopLatched)
+      lines << (p.stopConfirmed ? tr("Platform: stop confirmed by the device.")
+                                : tr("Platform: stop not confirmed yet; MultiDir keeps resending it."));
+  }
+  if (m_printerLink->isOpen()) {
+    const hardware::StopLatch& stop = m_printerLink->status().stop;
+    if (stop.latched())
+      lines << (stop.confirmed ? tr("Printer: emergency stop confirmed by the printer.")
+                               : tr("Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.")
+                                     .arg(QString::fromStdString(stop.problem)));
+  }
+  m_stops->setText(lines.join(QLatin1Char('\n')));
+  m_stops->setVisible(!lines.isEmpty());
 }
 
 void HardwarePanel::setMachineProfile(const core::MachineSpec& profile) {
@@ -542,7 +625,13 @@ void HardwarePanel::onRunStateChanged(hardware::PrintRunState state) {
 }
 
 void HardwarePanel::onPrintRequested(int region, const QString& regionFile) {
-  m_prompt->setText(tr("Print region %1 (file %2), then press Region done.").arg(region + 1).arg(regionFile));
+  if (m_run->currentStepUsesPrinter())
+    m_prompt->setText(tr("Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.")
+                          .arg(region + 1)
+                          .arg(m_printerLink->printerName(),
+                               QString::fromStdString(m_run->currentPrintStep()->gcodePath)));
+  else
+    m_prompt->setText(tr("Print region %1 (file %2), then press Region done.").arg(region + 1).arg(regionFile));
   updateRunTexts();
   updateControls();
 }
@@ -579,11 +668,34 @@ void HardwarePanel::startRun() {
     setMessage(tr("Start run refused: %1").arg(QString::fromStdString(steps.error().message)), true);
     return;
   }
+  // The printer prints the regions when it is connected and the sliced job has G-code for every region.
+  std::shared_ptr<hardware::PrinterLink> printer = m_printerLink->link();
+  const bool gcodeFits = !m_jobGcode.empty() && m_jobGcode.size() == steps->size();
+  std::vector<double> estimates;
+  if (gcodeFits) {
+    for (std::size_t k = 0; k < steps->size(); ++k) {
+      (*steps)[k].gcodePath = m_jobGcode[k].path;
+      (*steps)[k].regionFile = std::filesystem::path(m_jobGcode[k].path).filename().string();
+      estimates.push_back(m_jobGcode[k].estimateSeconds);
+    }
+  }
   m_runLog->clear();
   m_prompt->clear();
   if (m_messageTopic == MessageTopic::Run) m_message->clear();
-  const core::Status started = m_run->start(m_link->positioner(), std::move(steps.value()), m_runOptions);
+  m_printerSection->setRunEstimates(estimates);
+  m_runFiles = gcodeFits ? m_jobFiles : nullptr;
+  const core::Status started = m_run->start(m_link->positioner(), std::move(steps.value()), m_runOptions,
+                                            gcodeFits ? printer : nullptr);
   runEvent(tr("Start run"), started);
+  if (started.ok() && printer && !gcodeFits)
+    setMessage(m_jobGcode.empty()
+                   ? tr("The plan is not sliced: each region is printed by hand (Region done). Slice the plan "
+                        "to have the printer print them.")
+                   : tr("The sliced job has %1 steps, the plan %2 regions: each region is printed by hand "
+                        "(Region done). Slice the plan again.")
+                         .arg(m_jobGcode.size())
+                         .arg(m_planTargets.size()),
+               false, MessageTopic::Run);
 }
 
 void HardwarePanel::runEvent(const QString& event, const core::Status& status) {
@@ -670,12 +782,16 @@ void HardwarePanel::updateControls() {
   m_goTo->setEnabled(manual);
   m_clearFault->setEnabled(linkUp && !runHoldsDevice);
   m_stop->setEnabled(open);
-  m_estop->setEnabled(open);  // whenever there is a session, even while reconnecting
-  if (m_windowEstop) m_windowEstop->setEnabled(open);
-  if (m_windowEstopAction) m_windowEstopAction->setVisible(open);
+  // Whenever either device has a session, even while reconnecting.
+  const bool anyOpen = open || m_printerLink->isOpen();
+  m_estop->setEnabled(anyOpen);
+  if (m_windowEstop) m_windowEstop->setEnabled(anyOpen);
+  if (m_windowEstopAction) m_windowEstopAction->setVisible(anyOpen);
 
   m_startRun->setEnabled(connected && !m_planTargets.empty() && !m_run->isActive());
-  m_regionDone->setEnabled(runState == hardware::PrintRunState::Printing);
+  // By hand: a region without a printer, or one whose print the printer interrupted (finished by hand).
+  m_regionDone->setEnabled((runState == hardware::PrintRunState::Printing && !m_run->currentStepUsesPrinter()) ||
+                           (runState == hardware::PrintRunState::Paused && m_run->printInterrupted()));
   const bool pausable = runState == hardware::PrintRunState::Moving || runState == hardware::PrintRunState::Settling ||
                         runState == hardware::PrintRunState::Printing;
   m_pause->setEnabled(pausable);
@@ -698,13 +814,17 @@ void HardwarePanel::updateClockTexts() {
     m_heartbeat->setText(tr("%1 s ago").arg(QLocale().toString(age.count() / 1000.0, 'f', 1)));
   }
   m_runElapsed->setText(m_run->hasRun() ? clockText(m_run->elapsed()) : QStringLiteral("—"));
+  updateStops();
   if (!m_link->isOpen() && !m_run->isActive()) m_clockTimer.stop();
 }
 
 void HardwarePanel::updateRunTexts() {
   const int regions = planRegionCount();
-  m_planSummary->setText(regions == 0 ? tr("No plan: run a search or open a plan first.")
-                                      : tr("Plan with %n region(s).", nullptr, regions));
+  QString summary = regions == 0 ? tr("No plan: run a search or open a plan first.")
+                                 : tr("Plan with %n region(s).", nullptr, regions);
+  if (regions > 0 && static_cast<int>(m_jobGcode.size()) == regions)
+    summary += QLatin1Char(' ') + tr("Sliced: a connected printer prints each region's G-code.");
+  m_planSummary->setText(summary);
   if (!m_run->hasRun()) {
     m_runStep->setText(QStringLiteral("—"));
   } else {

@@ -11,13 +11,21 @@
 // Stop and E-STOP sit above the scrolled part, so they stay in view at any dock height; the main window
 // can put a second E-STOP in a toolbar (addEmergencyStopTo) that shows while a device is connected.
 //
+// The printer (PrinterSection, PrinterLinkOwner): when one is connected, a print run has it print every step
+// the sliced job gave G-code for (setJobGcode) and follows its job; without a printer or G-code the operator
+// prints each region and presses Region done. The job timeline lists every step with its state and times.
+// E-STOP covers both devices: it sends the platform's and the printer's emergency stops at once, and the
+// line under it shows each device's stop confirmed or still being resent.
+//
 // Limits: commands are checked by the driver against the machine profile given with setMachineProfile()
 // when it fits the device (a rotary platform profile for the platform, a tilt-rotate one for the arm),
 // otherwise against a default profile of the device's kind; the choice is made at Connect.
 #include <QString>
 #include <QTimer>
 #include <QWidget>
+#include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "multidir/core/search/decomposition.h"
@@ -39,7 +47,16 @@ namespace multidir::ui {
 
 class ConnectionForm;
 class DeviceLink;
+class JobTimeline;
 class PrintRunDriver;
+class PrinterLinkOwner;
+class PrinterSection;
+
+// One step's G-code of the sliced job, and the slicer's estimate of its printing time.
+struct StepGcode {
+  std::string path;
+  double estimateSeconds = 0.0;
+};
 
 class HardwarePanel : public QWidget {
   Q_OBJECT
@@ -53,6 +70,9 @@ class HardwarePanel : public QWidget {
   [[nodiscard]] DeviceLink* deviceLink() const { return m_link; }
   [[nodiscard]] PrintRunDriver* printRunDriver() const { return m_run; }
   [[nodiscard]] ConnectionForm* connectionForm() const { return m_form; }
+  [[nodiscard]] PrinterLinkOwner* printerLink() const { return m_printerLink; }
+  [[nodiscard]] PrinterSection* printerSection() const { return m_printerSection; }
+  [[nodiscard]] JobTimeline* jobTimeline() const { return m_timeline; }
   // The latest outcome or problem shown under the controls.
   [[nodiscard]] QString messageText() const;
   [[nodiscard]] bool messageIsError() const { return m_messageIsError; }
@@ -63,6 +83,15 @@ class HardwarePanel : public QWidget {
   [[nodiscard]] int planRegionCount() const { return static_cast<int>(m_planTargets.size()); }
   // Options of the next print run (settle time, move timeout, clocks).
   void setPrintRunOptions(const hardware::PrintRunOptions& options) { m_runOptions = options; }
+  // Options of the next printer link (poll interval, timeouts).
+  void setPrinterLinkOptions(const hardware::PrinterLinkOptions& options);
+  // The G-code of every region of the plan, in printing order, from the sliced job; `files` keeps them on disk
+  // while held (a run holds it until the next one). Empty: no G-code (the operator prints each region).
+  void setJobGcode(std::vector<StepGcode> steps, std::shared_ptr<const void> files = nullptr);
+  [[nodiscard]] const std::vector<StepGcode>& jobGcode() const { return m_jobGcode; }
+  // Each device's stop under the E-STOP ("Platform: E-STOP confirmed. Printer: E-STOP being resent…"); empty
+  // when no stop is latched.
+  [[nodiscard]] QString stopsText() const;
   // The banner above the panel (link lost, device not reachable, run held); empty when hidden.
   [[nodiscard]] QString bannerText() const;
   // Adds an E-STOP button to `bar` that is shown while a device is connected; returns its action.
@@ -76,6 +105,9 @@ class HardwarePanel : public QWidget {
   // The Connect and Disconnect buttons.
   void connectDevice();
   void disconnectDevice();
+  // The E-STOP buttons: the platform's and the printer's emergency stops at once (through the print run when
+  // one is under way, so that it ends Aborted).
+  void emergencyStopAll();
 
  signals:
   // The region (index from 0) the run is at, for the viewer to highlight; -1 when no run is under way.
@@ -111,9 +143,17 @@ class HardwarePanel : public QWidget {
   void updateControls();
   void updateClockTexts();
   void updateRunTexts();
+  void updateStops();
 
   DeviceLink* m_link = nullptr;
   PrintRunDriver* m_run = nullptr;
+  PrinterLinkOwner* m_printerLink = nullptr;
+  PrinterSection* m_printerSection = nullptr;
+  JobTimeline* m_timeline = nullptr;
+  QLabel* m_stops = nullptr;
+  std::vector<StepGcode> m_jobGcode;
+  std::shared_ptr<const void> m_jobFiles;
+  std::shared_ptr<const void> m_runFiles;  // the G-code of the last run started
   ConnectionForm* m_form = nullptr;
   QLabel* m_limits = nullptr;
   QPushButton* m_connect = nullptr;

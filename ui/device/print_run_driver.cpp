@@ -9,6 +9,19 @@ bool isFinal(hardware::PrintRunState state) {
   return state == hardware::PrintRunState::Completed || state == hardware::PrintRunState::Aborted;
 }
 
+// Why the run paused, failed or stopped at `entry`: the printer's interruption or the device's fault as the
+// sequencer states it, else what the entry itself says after its step label.
+QString eventReason(const hardware::PrintRun& run, const hardware::PrintRunLogEntry& entry) {
+  using hardware::PrintRunState;
+  if (entry.state != PrintRunState::Paused && entry.state != PrintRunState::Faulted &&
+      entry.state != PrintRunState::Aborted)
+    return {};
+  if ((entry.state == PrintRunState::Paused && run.printInterrupted()) || entry.state == PrintRunState::Faulted)
+    return QString::fromStdString(run.lastProblem());
+  const std::string::size_type colon = entry.message.find("): ");
+  return QString::fromStdString(colon == std::string::npos ? entry.message : entry.message.substr(colon + 3));
+}
+
 core::Error noRun() {
   return core::Error{core::ErrorCode::InvalidParameter, "no print run has been started", "print run"};
 }
@@ -26,30 +39,34 @@ PrintRunDriver::~PrintRunDriver() {
 }
 
 core::Status PrintRunDriver::start(std::shared_ptr<hardware::Positioner> positioner,
-                                   std::vector<hardware::PrintStep> steps, hardware::PrintRunOptions options) {
+                                   std::vector<hardware::PrintStep> steps, hardware::PrintRunOptions options,
+                                   std::shared_ptr<hardware::PrinterLink> printer) {
   if (isActive())
     return core::Error{core::ErrorCode::InvalidParameter, "a print run is under way: abort it first", "print run"};
   if (!positioner) return core::Error{core::ErrorCode::InvalidParameter, "no device is connected", "print run"};
   if (steps.empty()) return core::Error{core::ErrorCode::InvalidParameter, "the plan has no regions", "print run"};
-  auto run = std::make_unique<hardware::PrintRun>(*positioner, std::move(steps), std::move(options));
-  run->setLogCallback([this](const hardware::PrintRunLogEntry& entry) {
+  auto run = std::make_unique<hardware::PrintRun>(*positioner, std::move(steps), std::move(options), printer.get());
+  run->setLogCallback([this, sequencer = run.get()](const hardware::PrintRunLogEntry& entry) {
     const long long seconds = entry.elapsed.count() / 1000;
     emit logged(QStringLiteral("%1:%2 %3")
                     .arg(seconds / 60, 2, 10, QLatin1Char('0'))
                     .arg(seconds % 60, 2, 10, QLatin1Char('0'))
                     .arg(QString::fromStdString(entry.message)));
+    emit runEvent(entry, eventReason(*sequencer, entry));
   });
   run->setPrintRequestCallback([this](std::size_t step, const hardware::PrintStep& printStep) {
     emit printRequested(static_cast<int>(step), QString::fromStdString(printStep.regionFile));
   });
-  // The old run (if any) ended; it still refers to its positioner, so it goes first.
+  // The old run (if any) ended; it still refers to its positioner and printer, so it goes first.
   m_run.reset();
   m_positioner = std::move(positioner);
+  m_printer = std::move(printer);
   m_run = std::move(run);
   m_lastState = hardware::PrintRunState::Idle;
   m_frozenElapsed = std::chrono::milliseconds(0);
   m_heldForLostLink = false;
   m_clock.start();
+  emit runStarting(m_run->steps());
   const core::Status started = m_run->start();
   afterEvent();
   return started;
@@ -83,6 +100,19 @@ core::Status PrintRunDriver::abort() {
   if (status.ok()) m_heldForLostLink = false;
   afterEvent();
   return status;
+}
+
+core::Status PrintRunDriver::emergencyStop() {
+  if (!m_run) return noRun();
+  const core::Status status = m_run->emergencyStop();
+  m_heldForLostLink = false;
+  afterEvent();
+  return status;
+}
+
+bool PrintRunDriver::currentStepUsesPrinter() const {
+  const hardware::PrintStep* step = currentPrintStep();
+  return hasPrinter() && step != nullptr && !step->gcodePath.empty();
 }
 
 bool PrintRunDriver::isActive() const { return m_run && !isFinal(m_run->state()); }

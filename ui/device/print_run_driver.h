@@ -8,6 +8,9 @@
 // region being printed may finish, and no next step starts until the operator presses Resume once the link
 // is back. Without it the sequencer would stay "printing" with the device out of reach.
 //
+// With a printer link the sequencer uploads and starts each step's G-code and follows the printer's job (the
+// link is held, shared, for the run's lifetime); steps without G-code stay with the operator's Region done.
+//
 // Thread: GUI thread only, like PrintRun itself.
 #include <QElapsedTimer>
 #include <QObject>
@@ -32,15 +35,18 @@ class PrintRunDriver : public QObject {
   PrintRunDriver(const PrintRunDriver&) = delete;
   PrintRunDriver& operator=(const PrintRunDriver&) = delete;
 
-  // Starts a new run of `steps` on `positioner` (a finished run is replaced). InvalidParameter when a run is
-  // still under way, there is no positioner or no step; the sequencer's own refusal otherwise.
+  // Starts a new run of `steps` on `positioner`, printing the steps with G-code on `printer` when given (a
+  // finished run is replaced). InvalidParameter when a run is still under way, there is no positioner or no
+  // step; the sequencer's own refusal otherwise.
   core::Status start(std::shared_ptr<hardware::Positioner> positioner, std::vector<hardware::PrintStep> steps,
-                     hardware::PrintRunOptions options = {});
+                     hardware::PrintRunOptions options = {}, std::shared_ptr<hardware::PrinterLink> printer = nullptr);
   // Operator events, forwarded to the sequencer (see the transition table in hardware/print_run.h).
   core::Status regionDone();  // for the current step
   core::Status pause();
   core::Status resume();
   core::Status abort();
+  // The positioner's and the printer's emergency stops at once (PrintRun::emergencyStop); the run ends.
+  core::Status emergencyStop();
 
   [[nodiscard]] bool hasRun() const { return m_run != nullptr; }
   // Under way: started and neither Completed nor Aborted.
@@ -51,6 +57,14 @@ class PrintRunDriver : public QObject {
   // A pause was asked for while printing: the run stops before the next move.
   [[nodiscard]] bool pausePending() const { return m_run && m_run->pausePending(); }
   [[nodiscard]] const hardware::PrintStep* currentPrintStep() const;
+  // The run has a printer link, and the current step is printed by it (it has G-code).
+  [[nodiscard]] bool hasPrinter() const { return m_run && m_run->hasPrinter(); }
+  [[nodiscard]] bool currentStepUsesPrinter() const;
+  // The run is paused because the printer's job for the current step was interrupted (lastProblem says why):
+  // Resume follows the printer again, or the operator finishes the region by hand and presses Region done.
+  [[nodiscard]] bool printInterrupted() const { return m_run && m_run->printInterrupted(); }
+  // A stop or emergency stop was asked for and a device has not confirmed it yet.
+  [[nodiscard]] bool stopUnconfirmed() const { return m_run && m_run->stopUnconfirmed(); }
   // Since start(), frozen once the run ended.
   [[nodiscard]] std::chrono::milliseconds elapsed() const;
   [[nodiscard]] QString lastProblem() const;
@@ -68,6 +82,10 @@ class PrintRunDriver : public QObject {
   void printRequested(int region, const QString& regionFile);
   // One line per sequencer transition, "00:12 step 2/3 (region-02.stl): ... reached".
   void logged(const QString& line);
+  // A run of `steps` is about to start (before its first event).
+  void runStarting(const std::vector<hardware::PrintStep>& steps);
+  // Every sequencer event as it happens; `reason` says why the run paused, failed or stopped (else empty).
+  void runEvent(const hardware::PrintRunLogEntry& entry, const QString& reason);
   // The link to the device went down while the run was under way: the run is paused (see the header).
   void pausedForLostLink();
 
@@ -77,6 +95,7 @@ class PrintRunDriver : public QObject {
   void holdIfLinkLost();
 
   std::shared_ptr<hardware::Positioner> m_positioner;
+  std::shared_ptr<hardware::PrinterLink> m_printer;
   std::unique_ptr<hardware::PrintRun> m_run;
   QTimer m_timer;
   QElapsedTimer m_clock;
