@@ -431,7 +431,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="512"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="595"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
@@ -552,249 +552,299 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="61"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="65"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="63"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="67"/>
         <source>Reconnecting…</source>
         <translation>Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="64"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
         <source>Connecting…</source>
         <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="70"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
         <source>Fault</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
         <source>idle</source>
         <translation>im Leerlauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
         <source>turning the platform</source>
         <translation>Plattform wird gedreht</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
         <source>settling</source>
         <translation>Beruhigungszeit</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>finished</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
         <source>stopped by a device problem</source>
         <translation>durch ein Geräteproblem angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="97"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="101"/>
         <source>angle %1</source>
         <translation>Winkel %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
         <source>tilt %1, azimuth %2</source>
         <translation>Neigung %1, Azimut %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="107"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="111"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>„Fehler löschen“, dann „Aktivieren“ und „Referenzfahrt“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="108"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>„Fehler löschen“; danach nimmt das Roboterprogramm wieder Fahrbefehle an</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="193"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="196"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="217"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="197"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="218"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="198"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>Schließt die Verbindung, ohne dem Gerät einen Befehl zu senden; sein Heartbeat-Watchdog hält es an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="212"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="233"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="225"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
         <source>Enabled:</source>
         <translation>Aktiviert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="226"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
         <source>Position:</source>
         <translation>Position:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="227"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
         <source>Moving:</source>
         <translation>In Bewegung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="228"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
         <source>Homed:</source>
         <translation>Referenziert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="250"/>
         <source>Fault:</source>
         <translation>Fehler:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="230"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
         <source>Heartbeat:</source>
         <translation>Heartbeat:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="231"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
         <source>Last problem:</source>
         <translation>Letztes Problem:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="236"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
         <source>Controls</source>
         <translation>Steuerung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
         <source>Enable</source>
         <translation>Aktivieren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>Schaltet den Antrieb der Plattform ein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="259"/>
         <source>Home</source>
         <translation>Referenzfahrt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="239"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>Drehplattform: sucht den Referenzschalter (0°). Roboterarm: richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="261"/>
         <source>Clear fault</source>
         <translation>Fehler löschen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="241"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>Setzt das Gerät nach einem Fehler oder NOT-HALT zurück; danach erneut aktivieren und referenzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
         <source>Tilt</source>
         <translation>Neigung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
         <source>Azimuth</source>
         <translation>Azimut</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="268"/>
         <source>Jog −</source>
         <translation>Tippen −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
         <source>Jog +</source>
         <translation>Tippen +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
         <source>Angle:</source>
         <translation>Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
         <source>Tilt:</source>
         <translation>Neigung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="275"/>
         <source>Azimuth:</source>
         <translation>Azimut:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="276"/>
         <source>Go to</source>
         <translation>Anfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>Bremst ab und hält an; verwirft wartende Befehle.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
         <location filename="../ui/device/hardware_panel.cpp" line="307"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="328"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="530"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
+        <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
+        <source>the platform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
+        <source>the printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="455"/>
+        <source>E-STOP sent to %1. To go on: %2%3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="456"/>
+        <source> and </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="457"/>
+        <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <source>Platform: stop confirmed by the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="478"/>
+        <source>Printer: emergency stop confirmed by the printer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="613"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (%2) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
     </message>
@@ -803,178 +853,177 @@
         <translation type="vanished">Not-Halt: unterbricht die Bewegung sofort. Danach den Fehler löschen, erneut aktivieren und referenzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
         <source>Jog step:</source>
         <translation>Tippschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="317"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="338"/>
         <source>Print run</source>
         <translation>Drucklauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="319"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="586"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="340"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="689"/>
         <source>Start run</source>
         <translation>Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="320"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="341"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>Dreht die Plattform in Druckreihenfolge in die Ausrichtung jedes Bereichs und fordert dazu auf, jeden Bereich zu drucken.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="329"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
         <source>Region done</source>
         <translation>Bereich fertig</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="330"/>
         <source>Press when the region asked for has been printed.</source>
-        <translation>Drücken, sobald der angeforderte Bereich gedruckt ist.</translation>
+        <translation type="vanished">Drücken, sobald der angeforderte Bereich gedruckt ist.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="331"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="353"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="383"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="332"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="354"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="384"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>Setzt einen pausierten Lauf fort oder wiederholt nach einem Geräteproblem den aktuellen Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
         <source>Abort</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
         <source>Step:</source>
         <translation>Schritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="348"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
         <source>Elapsed:</source>
         <translation>Verstrichen:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>Die Verbindung zu %1 ist um %2 abgerissen. Die Werte unten stammen nicht mehr vom Gerät; MultiDir versucht weiter, die Verbindung wiederherzustellen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="406"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>Der Drucklauf ist pausiert: ein Bereich, der gerade gedruckt wird, darf fertig werden, aber kein neuer Bereich beginnt. Drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="409"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 antwortet nicht: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>Die Verbindung steht wieder. Der Drucklauf ist seit dem Verbindungsabbruch weiterhin pausiert: prüfen Sie die Plattform und drücken Sie dann „Fortsetzen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="435"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>Mit diesen Einstellungen ist keine Verbindung möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="439"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="522"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="531"/>
         <source>Disconnected.</source>
         <translation>Getrennt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="458"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="543"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>Verbindung um %1 abgerissen; Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
         <source>no: press Enable</source>
         <translation>nein: drücken Sie „Aktivieren“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="471"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
         <source>%1 (target %2)</source>
         <translation>%1 (Ziel %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
         <source>homing</source>
         <translation>Referenzfahrt läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="477"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
         <source>not needed (robot arm)</source>
         <translation>nicht nötig (Roboterarm)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="499"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="562"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="582"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="488"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="571"/>
         <source>unknown: not read yet</source>
         <translation>unbekannt: noch nicht gelesen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="491"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="574"/>
         <source>unknown since %1 (last read: %2)</source>
         <translation>unbekannt seit %1 (zuletzt gelesen: %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="513"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1: an das Gerät gesendet. Zum Weitermachen: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
         <source>%1: sent to the device.</source>
         <translation>%1: an das Gerät gesendet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="521"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="604"/>
         <source>Connected to %1.</source>
         <translation>Verbunden mit %1.</translation>
     </message>
@@ -983,42 +1032,57 @@
         <translation type="vanished">Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (Fehler löschen, Aktivieren, Referenzfahrt) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="534"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="617"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>Der Drucklauf ist abgeschlossen: jeder Bereich wurde gedruckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="536"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
         <source>The print run was aborted.</source>
         <translation>Der Drucklauf wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="545"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="629"/>
+        <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="634"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>Drucken Sie Bereich %1 (Datei %2) und drücken Sie dann „Bereich fertig“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="572"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>„Lauf starten“ abgelehnt: nicht verbunden; verbinden Sie zuerst das Gerät.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="668"/>
         <source>Start run refused: %1</source>
         <translation>„Lauf starten“ abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="590"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="694"/>
+        <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
         <source>%1 refused: %2</source>
         <translation>%1 abgelehnt: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="609"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>Grenzen: %1 bis %2 in Schritten von %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="611"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>Grenzen: Neigung bis %1, %n verbotener Kegel</numerusform>
@@ -1026,85 +1090,90 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="726"/>
         <source> (machine profile)</source>
         <translation> (Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="616"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="728"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation> (Standardwerte: das Maschinenprofil gilt für eine %1-Maschine)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
         <source> (defaults: no machine profile)</source>
         <translation> (Standardwerte: kein Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="620"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="732"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>; ein geändertes Profil gilt ab dem nächsten Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="638"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>Not-Halt: schaltet die Endstufe der Plattform sofort ab. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="640"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>Not-Halt: hält das Roboterprogramm mit größter Verzögerung an. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="645"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="757"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>Setzt die Plattform nach einem Fehler oder NOT-HALT zurück; danach erneut „Aktivieren“ und „Referenzfahrt“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>Setzt das Roboterprogramm nach einem Fehler oder NOT-HALT zurück; danach nimmt es wieder Fahrbefehle an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="648"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="760"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>Sucht den Referenzschalter (0°); der Antrieb muss aktiviert sein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="761"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>Richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="693"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="809"/>
         <source>unknown since %1</source>
         <translation>unbekannt seit %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="695"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="811"/>
         <source>not seen yet</source>
         <translation>noch nicht empfangen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="814"/>
         <source>%1 s ago</source>
         <translation>vor %1 s</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="823"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>Kein Plan: starten Sie zuerst eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="824"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>Plan mit %n Bereich.</numerusform>
             <numerusform>Plan mit %n Bereichen.</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="826"/>
+        <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="714"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="834"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>%n Bereich gedruckt: abgeschlossen</numerusform>
@@ -1112,17 +1181,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="836"/>
         <source>%1 of %2: %3</source>
         <translation>%1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="838"/>
         <source> (%1, %2)</source>
         <translation> (%1, %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="719"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="839"/>
         <source>; pausing after this region</source>
         <translation>; Pause nach diesem Bereich</translation>
     </message>
@@ -1138,6 +1207,79 @@
         <location filename="../ui/panels/jg_chart.cpp" line="32"/>
         <source>Best J_G (mm²)</source>
         <translation>Bestes J_G (mm²)</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::JobTimeline</name>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Step</source>
+        <translation type="unfinished">Schritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Region</source>
+        <translation type="unfinished">Bereich</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Ended</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="131"/>
+        <source>waiting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="133"/>
+        <source>moving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="135"/>
+        <source>settling</source>
+        <translation type="unfinished">Beruhigungszeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="137"/>
+        <source>printing</source>
+        <translation type="unfinished">Druck läuft</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="139"/>
+        <source>done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="141"/>
+        <source>paused</source>
+        <translation type="unfinished">pausiert</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="143"/>
+        <source>failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="145"/>
+        <source>aborted</source>
+        <translation type="unfinished">abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="155"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1372,47 +1514,47 @@
         <translation>Hardware</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="307"/>
+        <location filename="../ui/main_window.cpp" line="320"/>
         <source>Printing direction</source>
         <translation>Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="310"/>
+        <location filename="../ui/main_window.cpp" line="323"/>
         <source>Up:</source>
         <translation>Oben:</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="315"/>
+        <location filename="../ui/main_window.cpp" line="328"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>Die Richtung, in der das Modell gedruckt wird: die Plattform liegt darunter, Überhänge werden daran gemessen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="333"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="333"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="321"/>
+        <location filename="../ui/main_window.cpp" line="334"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="321"/>
+        <location filename="../ui/main_window.cpp" line="334"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="322"/>
+        <location filename="../ui/main_window.cpp" line="335"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="322"/>
+        <location filename="../ui/main_window.cpp" line="335"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
@@ -1478,277 +1620,277 @@ Qt %1</translation>
         <translation>Not-Halt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="387"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>The pose search was stopped; its result is dropped.</source>
         <translation>Die Posensuche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="393"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>Die Suche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Open Model or Project</source>
         <translation>Modell oder Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>Netze und Projekte (*.stl *.obj *.off *.ply *.multidir);;Netze (*.stl *.obj *.off *.ply);;MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>%1, %2, %3</source>
         <translation>%1; %2; %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Pose: %1</source>
         <translation>Pose: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>Benutzerdefiniert (%1, %2, %3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="524"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="541"/>
         <source>Repaired on load: %1</source>
         <translation>Beim Laden repariert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="542"/>
+        <location filename="../ui/main_window.cpp" line="555"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="546"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="550"/>
+        <location filename="../ui/main_window.cpp" line="563"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="572"/>
-        <location filename="../ui/main_window.cpp" line="589"/>
+        <location filename="../ui/main_window.cpp" line="585"/>
+        <location filename="../ui/main_window.cpp" line="602"/>
         <source>No model</source>
         <translation>Kein Modell</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
+        <location filename="../ui/main_window.cpp" line="595"/>
         <source>Triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="583"/>
+        <location filename="../ui/main_window.cpp" line="596"/>
         <source>Volume: %1 mm³</source>
         <translation>Volumen: %1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="597"/>
+        <location filename="../ui/main_window.cpp" line="610"/>
         <source>Risky area unavailable</source>
         <translation>Risikofläche nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="605"/>
+        <location filename="../ui/main_window.cpp" line="618"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>Risikofläche (%1 oben): %2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
+        <location filename="../ui/main_window.cpp" line="620"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>Fläche der Dreiecke, die bei dieser Aufwärtsrichtung um mehr als %1° überhängen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="623"/>
-        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window.cpp" line="636"/>
+        <location filename="../ui/main_window.cpp" line="659"/>
         <location filename="../ui/main_window_pose.cpp" line="56"/>
         <location filename="../ui/main_window_pose.cpp" line="73"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="625"/>
+        <location filename="../ui/main_window.cpp" line="638"/>
         <location filename="../ui/main_window_pose.cpp" line="58"/>
         <source>Fix the machine first: %1</source>
         <translation>Korrigieren Sie zuerst die Maschine: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="627"/>
-        <location filename="../ui/main_window.cpp" line="645"/>
+        <location filename="../ui/main_window.cpp" line="640"/>
+        <location filename="../ui/main_window.cpp" line="658"/>
         <source>A pose search is running: wait for it or cancel it.</source>
         <translation>Eine Posensuche läuft: warten Sie, bis sie fertig ist, oder brechen Sie sie ab.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="644"/>
+        <location filename="../ui/main_window.cpp" line="657"/>
         <source>A search is already running.</source>
         <translation>Eine Suche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="651"/>
+        <location filename="../ui/main_window.cpp" line="664"/>
         <location filename="../ui/main_window_pose.cpp" line="81"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="655"/>
+        <location filename="../ui/main_window.cpp" line="668"/>
         <source>Cannot search: %1</source>
         <translation>Suche nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="656"/>
+        <location filename="../ui/main_window.cpp" line="669"/>
         <source>Cannot search.</source>
         <translation>Suche nicht möglich.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="670"/>
+        <location filename="../ui/main_window.cpp" line="683"/>
         <source>Searching %1...</source>
         <translation>Durchsuche %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="678"/>
+        <location filename="../ui/main_window.cpp" line="691"/>
         <source>Cancelling the search...</source>
         <translation>Suche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="691"/>
+        <location filename="../ui/main_window.cpp" line="704"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>Das Suchergebnis wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="694"/>
+        <location filename="../ui/main_window.cpp" line="707"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>Suche abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="695"/>
+        <location filename="../ui/main_window.cpp" line="708"/>
         <source>Search finished.</source>
         <translation>Suche beendet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="708"/>
+        <location filename="../ui/main_window.cpp" line="721"/>
         <source>Search failed: %1</source>
         <translation>Suche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="740"/>
+        <location filename="../ui/main_window.cpp" line="753"/>
         <source>Growing supports for the plan...</source>
         <translation>Stützen für den Plan werden erzeugt...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="754"/>
+        <location filename="../ui/main_window.cpp" line="767"/>
         <source>Supports grown for the plan.</source>
         <translation>Stützen für den Plan erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="785"/>
+        <location filename="../ui/main_window.cpp" line="798"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>Es gibt keinen Plan zum Exportieren: starten Sie zuerst eine Suche.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="788"/>
+        <location filename="../ui/main_window.cpp" line="801"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>Die Stützen dieses Plans werden noch erzeugt: exportieren Sie ihn erneut, sobald die Statusleiste meldet, dass sie fertig sind.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="792"/>
+        <location filename="../ui/main_window.cpp" line="805"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>Der Ordner %1 konnte nicht angelegt werden: prüfen Sie, ob der übergeordnete Ordner existiert und beschreibbar ist.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="822"/>
+        <location filename="../ui/main_window.cpp" line="835"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>Der Plan konnte nicht nach %1 exportiert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="828"/>
+        <location filename="../ui/main_window.cpp" line="841"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>Plan ohne Stützen nach %1 exportiert, obwohl %2 mm² Risikofläche verbleiben: %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="830"/>
+        <location filename="../ui/main_window.cpp" line="843"/>
         <source>no supports were grown for it.</source>
         <translation>für ihn wurden keine Stützen erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="835"/>
+        <location filename="../ui/main_window.cpp" line="848"/>
         <source>Plan exported to %1.</source>
         <translation>Plan nach %1 exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="842"/>
+        <location filename="../ui/main_window.cpp" line="855"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>Der Plan %1 konnte nicht geöffnet werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="889"/>
+        <location filename="../ui/main_window.cpp" line="902"/>
         <source>Machine profile saved to %1.</source>
         <translation>Maschinenprofil unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="901"/>
+        <location filename="../ui/main_window.cpp" line="914"/>
         <source>Machine profile %1 loaded.</source>
         <translation>Maschinenprofil %1 geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="910"/>
+        <location filename="../ui/main_window.cpp" line="923"/>
         <source>Export Plan to Folder</source>
         <translation>Plan in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="910"/>
+        <location filename="../ui/main_window.cpp" line="923"/>
         <source>-plan</source>
         <translation>-Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="911"/>
+        <location filename="../ui/main_window.cpp" line="924"/>
         <source>Plan folders (*)</source>
         <translation>Planordner (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="917"/>
-        <location filename="../ui/main_window.cpp" line="919"/>
+        <location filename="../ui/main_window.cpp" line="930"/>
+        <location filename="../ui/main_window.cpp" line="932"/>
         <source>Export Plan</source>
         <translation>Plan exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="930"/>
+        <location filename="../ui/main_window.cpp" line="943"/>
         <source>Screenshot saved to %1.</source>
         <translation>Bildschirmfoto unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="935"/>
+        <location filename="../ui/main_window.cpp" line="948"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="936"/>
+        <location filename="../ui/main_window.cpp" line="949"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG-Bilder (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="939"/>
-        <location filename="../ui/main_window.cpp" line="947"/>
+        <location filename="../ui/main_window.cpp" line="952"/>
+        <location filename="../ui/main_window.cpp" line="960"/>
         <source>Export Screenshot</source>
         <translation>Bildschirmfoto exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="952"/>
+        <location filename="../ui/main_window.cpp" line="965"/>
         <source>Open Plan Folder</source>
         <translation>Planordner öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="378"/>
+        <location filename="../ui/main_window.cpp" line="391"/>
         <source>Open Plan</source>
         <translation>Plan öffnen</translation>
     </message>
@@ -1778,29 +1920,29 @@ Qt %1</translation>
         <translation>Bildschirmfoto expo&amp;rtieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="958"/>
-        <location filename="../ui/main_window.cpp" line="964"/>
+        <location filename="../ui/main_window.cpp" line="971"/>
+        <location filename="../ui/main_window.cpp" line="977"/>
         <source>Save Machine Profile</source>
         <translation>Maschinenprofil speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="960"/>
+        <location filename="../ui/main_window.cpp" line="973"/>
         <source>Machine profiles (*.json)</source>
         <translation>Maschinenprofile (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="968"/>
-        <location filename="../ui/main_window.cpp" line="975"/>
+        <location filename="../ui/main_window.cpp" line="981"/>
+        <location filename="../ui/main_window.cpp" line="988"/>
         <source>Load Machine Profile</source>
         <translation>Maschinenprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="970"/>
+        <location filename="../ui/main_window.cpp" line="983"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>Maschinenprofile (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="988"/>
+        <location filename="../ui/main_window.cpp" line="1001"/>
         <source>Loading %1...</source>
         <translation>Lade %1...</translation>
     </message>
@@ -2454,9 +2596,319 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::PrintRunDriver</name>
     <message>
-        <location filename="../ui/device/print_run_driver.cpp" line="134"/>
+        <location filename="../ui/device/print_run_driver.cpp" line="164"/>
         <source>the link to %1 was lost: the run is paused; press Resume once the link is back</source>
         <translation>die Verbindung zu %1 ist abgerissen: der Lauf ist pausiert; drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PrinterLinkOwner</name>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="90"/>
+        <source>The printer does not answer yet; MultiDir keeps trying. %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="119"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="156"/>
+        <source>Printer E-STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="121"/>
+        <source>%1 refused: no printer is connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PrinterSection</name>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="47"/>
+        <source>%1 °C (off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="48"/>
+        <source>%1 / %2 °C</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="55"/>
+        <location filename="../ui/device/printer_section.cpp" line="253"/>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="57"/>
+        <source>standby (no job)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="59"/>
+        <source>printing</source>
+        <translation type="unfinished">Druck läuft</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="61"/>
+        <source>paused</source>
+        <translation type="unfinished">pausiert</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="63"/>
+        <source>complete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="65"/>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="67"/>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="77"/>
+        <source>Printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="81"/>
+        <source>http://192.168.0.20:7125</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="82"/>
+        <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="86"/>
+        <location filename="../ui/device/printer_section.cpp" line="257"/>
+        <location filename="../ui/device/printer_section.cpp" line="280"/>
+        <source>none</source>
+        <translation type="unfinished">keine</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="87"/>
+        <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="88"/>
+        <source>Connect printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="89"/>
+        <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="90"/>
+        <source>Disconnect printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="91"/>
+        <source>Closes the link without commanding the printer: a job on it goes on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="92"/>
+        <source>Clear printer E-STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="93"/>
+        <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="110"/>
+        <source>Address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="111"/>
+        <source>API key:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="116"/>
+        <source>State:</source>
+        <translation type="unfinished">Zustand:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="117"/>
+        <source>Job:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="118"/>
+        <source>Firmware:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="119"/>
+        <source>Printer says:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="120"/>
+        <source>Extruder:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="121"/>
+        <source>Bed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="122"/>
+        <source>File:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="123"/>
+        <source>Progress:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="124"/>
+        <source>Job time left:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="125"/>
+        <source>Last problem:</source>
+        <translation type="unfinished">Letztes Problem:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="140"/>
+        <source>Connected to %1.</source>
+        <translation type="unfinished">Verbunden mit %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="158"/>
+        <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="174"/>
+        <source>Cannot connect to the printer: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="178"/>
+        <source>Connecting to %1…</source>
+        <translation type="unfinished">Verbindung mit %1 wird hergestellt…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="183"/>
+        <source>Printer disconnected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="189"/>
+        <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="191"/>
+        <source>Clear printer E-STOP refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="210"/>
+        <source>step %1 of %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="213"/>
+        <source>not started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="216"/>
+        <source>%1 of %2 (not a step of this run)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="222"/>
+        <source>none: every step is printed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="225"/>
+        <source>no estimate: slice the plan before starting the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="227"/>
+        <source>%1 of printing (done about %2; platform moves not counted)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="238"/>
+        <source>Disconnected</source>
+        <translation type="unfinished">Getrennt</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="240"/>
+        <source>Not reachable; MultiDir keeps trying…</source>
+        <translation type="unfinished">Nicht erreichbar; MultiDir versucht es weiter…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="242"/>
+        <source>Connecting…</source>
+        <translation type="unfinished">Verbindung wird hergestellt…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="244"/>
+        <source>Link lost at %1; MultiDir keeps trying…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="246"/>
+        <source>Connected to %1</source>
+        <translation type="unfinished">Verbunden mit %1. {1?}</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="254"/>
+        <source>nothing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="264"/>
+        <source>unknown: not read yet</source>
+        <translation type="unfinished">unbekannt: noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="267"/>
+        <source>unknown since %1 (last read: %2)</source>
+        <translation type="unfinished">unbekannt seit %1 (zuletzt gelesen: %2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="300"/>
+        <source>%1 does not answer: %2</source>
+        <translation type="unfinished">%1 antwortet nicht: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="302"/>
+        <source>The printer&apos;s firmware is %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="304"/>
+        <source>it says nothing more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="306"/>
+        <source>The print run is paused: %1.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2977,7 +3429,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>%1 · aktive Strahlen: %2 · bestes J_G %3 mm² · %4 Kandidaten · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <location filename="../ui/panels/search_panel.cpp" line="329"/>
+        <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>Stopped</source>
         <translation>Angehalten</translation>
     </message>
@@ -3038,12 +3495,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="335"/>
+        <location filename="../ui/panels/search_panel.cpp" line="342"/>
         <source>Failed</source>
         <translation>Fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="336"/>
+        <location filename="../ui/panels/search_panel.cpp" line="343"/>
         <source>%1
 %2</source>
         <translation>%1

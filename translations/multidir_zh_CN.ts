@@ -431,7 +431,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="512"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="595"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
@@ -552,249 +552,299 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="61"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="65"/>
         <source>Disconnected</source>
         <translation>已断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="63"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="67"/>
         <source>Reconnecting…</source>
         <translation>正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="64"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="70"/>
         <source>Connected</source>
         <translation>已连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
         <source>turning the platform</source>
         <translation>正在转动平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
         <source>settling</source>
         <translation>正在稳定</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>finished</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
         <source>stopped by a device problem</source>
         <translation>因设备问题而停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="97"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="101"/>
         <source>angle %1</source>
         <translation>角度 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
         <source>tilt %1, azimuth %2</source>
         <translation>倾斜 %1，方位角 %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="107"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="111"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>按“清除故障”，然后按“使能”和“回零”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="108"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>按“清除故障”；之后机器人程序将重新接受运动指令</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="193"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="196"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="217"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="197"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="218"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="198"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>关闭链路而不向设备发送命令；设备的心跳看门狗会使其停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="212"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="233"/>
         <source>Status</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="225"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
         <source>Enabled:</source>
         <translation>已使能：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="226"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="227"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
         <source>Moving:</source>
         <translation>运动中：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="228"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
         <source>Homed:</source>
         <translation>已回零：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="250"/>
         <source>Fault:</source>
         <translation>故障：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="230"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
         <source>Heartbeat:</source>
         <translation>心跳：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="231"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
         <source>Last problem:</source>
         <translation>最近的问题：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="236"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
         <source>Controls</source>
         <translation>控制</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
         <source>Enable</source>
         <translation>使能</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>接通平台的驱动。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="259"/>
         <source>Home</source>
         <translation>回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="239"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>旋转平台：寻找原点开关（0°）。机械臂：将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="261"/>
         <source>Clear fault</source>
         <translation>清除故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="241"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>在故障或急停后复位设备；之后请重新使能并回零。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
         <source>Tilt</source>
         <translation>倾斜</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
         <source>Azimuth</source>
         <translation>方位角</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="268"/>
         <source>Jog −</source>
         <translation>点动 −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
         <source>Jog +</source>
         <translation>点动 +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
         <source>Angle:</source>
         <translation>角度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
         <source>Tilt:</source>
         <translation>倾斜：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="275"/>
         <source>Azimuth:</source>
         <translation>方位角：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="276"/>
         <source>Go to</source>
         <translation>前往</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="285"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>减速并停止；取消排队中的命令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
         <location filename="../ui/device/hardware_panel.cpp" line="307"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="328"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="530"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
+        <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
+        <source>the platform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
+        <source>the printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="455"/>
+        <source>E-STOP sent to %1. To go on: %2%3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="456"/>
+        <source> and </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="457"/>
+        <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <source>Platform: stop confirmed by the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="478"/>
+        <source>Printer: emergency stop confirmed by the printer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="613"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>打印运行已停止：%1。请修复设备（%2），然后按“继续”重试此步骤，或按“中止”。</translation>
     </message>
@@ -803,178 +853,177 @@
         <translation type="vanished">急停：立即切断运动。之后请清除故障、重新使能并回零。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
         <source>Jog step:</source>
         <translation>点动步长：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="317"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="338"/>
         <source>Print run</source>
         <translation>打印运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="319"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="586"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="340"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="689"/>
         <source>Start run</source>
         <translation>开始运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="320"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="341"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>按打印顺序将平台转到每个区域的方向，并提示打印每个区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="329"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
         <source>Region done</source>
         <translation>区域完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="330"/>
         <source>Press when the region asked for has been printed.</source>
-        <translation>所要求的区域打印完成后按此按钮。</translation>
+        <translation type="vanished">所要求的区域打印完成后按此按钮。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="331"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="353"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="383"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="332"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="354"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="384"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>继续已暂停的运行，或在设备出现问题后重试当前步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="348"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
         <source>Elapsed:</source>
         <translation>已用时间：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>与 %1 的链路于 %2 中断。下方数值已不再反映设备的状态；MultiDir 会继续尝试重新连接。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="406"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>打印运行已暂停：正在打印的区域可以完成，但不会开始新的区域。链路恢复后请按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="409"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 没有应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>链路已恢复。由于链路曾中断，打印运行仍处于暂停状态：请检查平台，然后按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="435"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>无法用这些设置连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="439"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="522"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="531"/>
         <source>Disconnected.</source>
         <translation>已断开。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="458"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>无法访问；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="543"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>链路于 %1 中断；正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
         <source>no: press Enable</source>
         <translation>否：请按“使能”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="471"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
         <source>%1 (target %2)</source>
         <translation>%1（目标 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
         <source>homing</source>
         <translation>正在回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="470"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="476"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="477"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
         <source>not needed (robot arm)</source>
         <translation>不需要（机械臂）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="499"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="562"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="582"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="488"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="571"/>
         <source>unknown: not read yet</source>
         <translation>未知：尚未读取</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="491"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="574"/>
         <source>unknown since %1 (last read: %2)</source>
         <translation>自 %1 起未知（上次读取：%2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="513"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1：已发送到设备。如需继续：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
         <source>%1: sent to the device.</source>
         <translation>%1：已发送到设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="521"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="604"/>
         <source>Connected to %1.</source>
         <translation>已连接到 %1。</translation>
     </message>
@@ -983,143 +1032,163 @@
         <translation type="vanished">打印运行已停止：%1。请修复设备（清除故障、使能、回零），然后按“继续”重试此步骤，或按“中止”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="534"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="617"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>打印运行已完成：所有区域均已打印。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="536"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
         <source>The print run was aborted.</source>
         <translation>打印运行已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="545"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="629"/>
+        <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="634"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>请打印区域 %1（文件 %2），然后按“区域完成”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="572"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>开始运行被拒绝：未连接；请先连接设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="668"/>
         <source>Start run refused: %1</source>
         <translation>开始运行被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="590"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="694"/>
+        <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="609"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>限制：%1 至 %2，步长 %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="611"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>限制：倾斜最多 %1，%n 个禁止锥</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="726"/>
         <source> (machine profile)</source>
         <translation>（机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="616"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="728"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation>（默认值：该机器配置适用于 %1 机器）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
         <source> (defaults: no machine profile)</source>
         <translation>（默认值：无机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="620"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="732"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>；更改后的配置在下次连接时生效</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="638"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>急停：立即切断平台的功率级。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="640"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>急停：以最大减速度停止机器人程序。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="645"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="757"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>在故障或急停后复位平台；之后请重新“使能”并“回零”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>在故障或急停后复位机器人程序；之后它将重新接受运动指令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="648"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="760"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>寻找原点开关（0°）；驱动必须已使能。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="761"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="693"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="809"/>
         <source>unknown since %1</source>
         <translation>自 %1 起未知</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="695"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="811"/>
         <source>not seen yet</source>
         <translation>尚未收到</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="814"/>
         <source>%1 s ago</source>
         <translation>%1 秒前</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="823"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>无方案：请先运行搜索或打开方案。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="824"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>方案包含 %n 个区域。</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="826"/>
+        <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="714"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="834"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>全部 %n 个区域已打印：完成</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="836"/>
         <source>%1 of %2: %3</source>
         <translation>%1 / %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="838"/>
         <source> (%1, %2)</source>
         <translation>（%1，%2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="719"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="839"/>
         <source>; pausing after this region</source>
         <translation>；此区域完成后暂停</translation>
     </message>
@@ -1135,6 +1204,79 @@
         <location filename="../ui/panels/jg_chart.cpp" line="32"/>
         <source>Best J_G (mm²)</source>
         <translation>最佳 J_G (mm²)</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::JobTimeline</name>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Step</source>
+        <translation type="unfinished">步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Region</source>
+        <translation type="unfinished">区域</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <source>Ended</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="131"/>
+        <source>waiting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="133"/>
+        <source>moving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="135"/>
+        <source>settling</source>
+        <translation type="unfinished">正在稳定</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="137"/>
+        <source>printing</source>
+        <translation type="unfinished">正在打印</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="139"/>
+        <source>done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="141"/>
+        <source>paused</source>
+        <translation type="unfinished">已暂停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="143"/>
+        <source>failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="145"/>
+        <source>aborted</source>
+        <translation type="unfinished">已中止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/job_timeline.cpp" line="155"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1369,47 +1511,47 @@
         <translation>硬件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="307"/>
+        <location filename="../ui/main_window.cpp" line="320"/>
         <source>Printing direction</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="310"/>
+        <location filename="../ui/main_window.cpp" line="323"/>
         <source>Up:</source>
         <translation>向上：</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="315"/>
+        <location filename="../ui/main_window.cpp" line="328"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="333"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="333"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="321"/>
+        <location filename="../ui/main_window.cpp" line="334"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="321"/>
+        <location filename="../ui/main_window.cpp" line="334"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="322"/>
+        <location filename="../ui/main_window.cpp" line="335"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="322"/>
+        <location filename="../ui/main_window.cpp" line="335"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
@@ -1475,277 +1617,277 @@ Qt %1</translation>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="387"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>The pose search was stopped; its result is dropped.</source>
         <translation>姿态搜索已停止；其结果已丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="393"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>搜索已停止；其结果已丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Open Model or Project</source>
         <translation>打开模型或项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>网格和项目 (*.stl *.obj *.off *.ply *.multidir);;网格 (*.stl *.obj *.off *.ply);;MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>%1, %2, %3</source>
         <translation>%1, %2, %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Pose: %1</source>
         <translation>姿态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>自定义（%1, %2, %3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="524"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="541"/>
         <source>Repaired on load: %1</source>
         <translation>加载时已修复：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="542"/>
+        <location filename="../ui/main_window.cpp" line="555"/>
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="546"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>Could not open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="550"/>
+        <location filename="../ui/main_window.cpp" line="563"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="572"/>
-        <location filename="../ui/main_window.cpp" line="589"/>
+        <location filename="../ui/main_window.cpp" line="585"/>
+        <location filename="../ui/main_window.cpp" line="602"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
+        <location filename="../ui/main_window.cpp" line="595"/>
         <source>Triangles: %1</source>
         <translation>三角形：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="583"/>
+        <location filename="../ui/main_window.cpp" line="596"/>
         <source>Volume: %1 mm³</source>
         <translation>体积：%1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="597"/>
+        <location filename="../ui/main_window.cpp" line="610"/>
         <source>Risky area unavailable</source>
         <translation>风险面积不可用</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="605"/>
+        <location filename="../ui/main_window.cpp" line="618"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>风险面积（%1 向上）：%2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
+        <location filename="../ui/main_window.cpp" line="620"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="623"/>
-        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window.cpp" line="636"/>
+        <location filename="../ui/main_window.cpp" line="659"/>
         <location filename="../ui/main_window_pose.cpp" line="56"/>
         <location filename="../ui/main_window_pose.cpp" line="73"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="625"/>
+        <location filename="../ui/main_window.cpp" line="638"/>
         <location filename="../ui/main_window_pose.cpp" line="58"/>
         <source>Fix the machine first: %1</source>
         <translation>请先修正机器设置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="627"/>
-        <location filename="../ui/main_window.cpp" line="645"/>
+        <location filename="../ui/main_window.cpp" line="640"/>
+        <location filename="../ui/main_window.cpp" line="658"/>
         <source>A pose search is running: wait for it or cancel it.</source>
         <translation>姿态搜索正在运行：请等待其完成或将其取消。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="644"/>
+        <location filename="../ui/main_window.cpp" line="657"/>
         <source>A search is already running.</source>
         <translation>已有搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="651"/>
+        <location filename="../ui/main_window.cpp" line="664"/>
         <location filename="../ui/main_window_pose.cpp" line="81"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="655"/>
+        <location filename="../ui/main_window.cpp" line="668"/>
         <source>Cannot search: %1</source>
         <translation>无法搜索：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="656"/>
+        <location filename="../ui/main_window.cpp" line="669"/>
         <source>Cannot search.</source>
         <translation>无法搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="670"/>
+        <location filename="../ui/main_window.cpp" line="683"/>
         <source>Searching %1...</source>
         <translation>正在搜索 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="678"/>
+        <location filename="../ui/main_window.cpp" line="691"/>
         <source>Cancelling the search...</source>
         <translation>正在取消搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="691"/>
+        <location filename="../ui/main_window.cpp" line="704"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="694"/>
+        <location filename="../ui/main_window.cpp" line="707"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>搜索已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="695"/>
+        <location filename="../ui/main_window.cpp" line="708"/>
         <source>Search finished.</source>
         <translation>搜索完成。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="708"/>
+        <location filename="../ui/main_window.cpp" line="721"/>
         <source>Search failed: %1</source>
         <translation>搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="740"/>
+        <location filename="../ui/main_window.cpp" line="753"/>
         <source>Growing supports for the plan...</source>
         <translation>正在为方案生成支撑...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="754"/>
+        <location filename="../ui/main_window.cpp" line="767"/>
         <source>Supports grown for the plan.</source>
         <translation>已为方案生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="785"/>
+        <location filename="../ui/main_window.cpp" line="798"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>没有可导出的方案：请先运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="788"/>
+        <location filename="../ui/main_window.cpp" line="801"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>此方案的支撑仍在生成中：请在状态栏提示支撑已就绪后重新导出。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="792"/>
+        <location filename="../ui/main_window.cpp" line="805"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>无法创建文件夹 %1：请检查其上级文件夹是否存在且可写入。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="822"/>
+        <location filename="../ui/main_window.cpp" line="835"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>无法将方案导出到 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="828"/>
+        <location filename="../ui/main_window.cpp" line="841"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>方案已导出到 %1，但未包含支撑，尽管仍剩余 %2 mm² 风险面积：%3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="830"/>
+        <location filename="../ui/main_window.cpp" line="843"/>
         <source>no supports were grown for it.</source>
         <translation>未为其生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="835"/>
+        <location filename="../ui/main_window.cpp" line="848"/>
         <source>Plan exported to %1.</source>
         <translation>方案已导出到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="842"/>
+        <location filename="../ui/main_window.cpp" line="855"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>无法打开方案 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="889"/>
+        <location filename="../ui/main_window.cpp" line="902"/>
         <source>Machine profile saved to %1.</source>
         <translation>机器配置已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="901"/>
+        <location filename="../ui/main_window.cpp" line="914"/>
         <source>Machine profile %1 loaded.</source>
         <translation>已加载机器配置 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="910"/>
+        <location filename="../ui/main_window.cpp" line="923"/>
         <source>Export Plan to Folder</source>
         <translation>将方案导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="910"/>
+        <location filename="../ui/main_window.cpp" line="923"/>
         <source>-plan</source>
         <translation>-方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="911"/>
+        <location filename="../ui/main_window.cpp" line="924"/>
         <source>Plan folders (*)</source>
         <translation>方案文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="917"/>
-        <location filename="../ui/main_window.cpp" line="919"/>
+        <location filename="../ui/main_window.cpp" line="930"/>
+        <location filename="../ui/main_window.cpp" line="932"/>
         <source>Export Plan</source>
         <translation>导出方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="930"/>
+        <location filename="../ui/main_window.cpp" line="943"/>
         <source>Screenshot saved to %1.</source>
         <translation>截图已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="935"/>
+        <location filename="../ui/main_window.cpp" line="948"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="936"/>
+        <location filename="../ui/main_window.cpp" line="949"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG 图像 (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="939"/>
-        <location filename="../ui/main_window.cpp" line="947"/>
+        <location filename="../ui/main_window.cpp" line="952"/>
+        <location filename="../ui/main_window.cpp" line="960"/>
         <source>Export Screenshot</source>
         <translation>导出截图</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="952"/>
+        <location filename="../ui/main_window.cpp" line="965"/>
         <source>Open Plan Folder</source>
         <translation>打开方案文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="378"/>
+        <location filename="../ui/main_window.cpp" line="391"/>
         <source>Open Plan</source>
         <translation>打开方案</translation>
     </message>
@@ -1775,29 +1917,29 @@ Qt %1</translation>
         <translation>导出截图(&amp;H)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="958"/>
-        <location filename="../ui/main_window.cpp" line="964"/>
+        <location filename="../ui/main_window.cpp" line="971"/>
+        <location filename="../ui/main_window.cpp" line="977"/>
         <source>Save Machine Profile</source>
         <translation>保存机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="960"/>
+        <location filename="../ui/main_window.cpp" line="973"/>
         <source>Machine profiles (*.json)</source>
         <translation>机器配置 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="968"/>
-        <location filename="../ui/main_window.cpp" line="975"/>
+        <location filename="../ui/main_window.cpp" line="981"/>
+        <location filename="../ui/main_window.cpp" line="988"/>
         <source>Load Machine Profile</source>
         <translation>加载机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="970"/>
+        <location filename="../ui/main_window.cpp" line="983"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>机器配置 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="988"/>
+        <location filename="../ui/main_window.cpp" line="1001"/>
         <source>Loading %1...</source>
         <translation>正在加载 %1...</translation>
     </message>
@@ -2449,9 +2591,319 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::PrintRunDriver</name>
     <message>
-        <location filename="../ui/device/print_run_driver.cpp" line="134"/>
+        <location filename="../ui/device/print_run_driver.cpp" line="164"/>
         <source>the link to %1 was lost: the run is paused; press Resume once the link is back</source>
         <translation>与 %1 的链路已中断：运行已暂停；链路恢复后请按“继续”</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PrinterLinkOwner</name>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="90"/>
+        <source>The printer does not answer yet; MultiDir keeps trying. %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="119"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="156"/>
+        <source>Printer E-STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="121"/>
+        <source>%1 refused: no printer is connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::PrinterSection</name>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="47"/>
+        <source>%1 °C (off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="48"/>
+        <source>%1 / %2 °C</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="55"/>
+        <location filename="../ui/device/printer_section.cpp" line="253"/>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="57"/>
+        <source>standby (no job)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="59"/>
+        <source>printing</source>
+        <translation type="unfinished">正在打印</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="61"/>
+        <source>paused</source>
+        <translation type="unfinished">已暂停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="63"/>
+        <source>complete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="65"/>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="67"/>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="77"/>
+        <source>Printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="81"/>
+        <source>http://192.168.0.20:7125</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="82"/>
+        <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="86"/>
+        <location filename="../ui/device/printer_section.cpp" line="257"/>
+        <location filename="../ui/device/printer_section.cpp" line="280"/>
+        <source>none</source>
+        <translation type="unfinished">无</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="87"/>
+        <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="88"/>
+        <source>Connect printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="89"/>
+        <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="90"/>
+        <source>Disconnect printer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="91"/>
+        <source>Closes the link without commanding the printer: a job on it goes on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="92"/>
+        <source>Clear printer E-STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="93"/>
+        <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="110"/>
+        <source>Address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="111"/>
+        <source>API key:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="116"/>
+        <source>State:</source>
+        <translation type="unfinished">状态：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="117"/>
+        <source>Job:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="118"/>
+        <source>Firmware:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="119"/>
+        <source>Printer says:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="120"/>
+        <source>Extruder:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="121"/>
+        <source>Bed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="122"/>
+        <source>File:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="123"/>
+        <source>Progress:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="124"/>
+        <source>Job time left:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="125"/>
+        <source>Last problem:</source>
+        <translation type="unfinished">最近的问题：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="140"/>
+        <source>Connected to %1.</source>
+        <translation type="unfinished">已连接到 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="158"/>
+        <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="174"/>
+        <source>Cannot connect to the printer: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="178"/>
+        <source>Connecting to %1…</source>
+        <translation type="unfinished">正在连接 %1…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="183"/>
+        <source>Printer disconnected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="189"/>
+        <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="191"/>
+        <source>Clear printer E-STOP refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="210"/>
+        <source>step %1 of %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="213"/>
+        <source>not started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="216"/>
+        <source>%1 of %2 (not a step of this run)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="222"/>
+        <source>none: every step is printed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="225"/>
+        <source>no estimate: slice the plan before starting the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="227"/>
+        <source>%1 of printing (done about %2; platform moves not counted)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="238"/>
+        <source>Disconnected</source>
+        <translation type="unfinished">已断开</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="240"/>
+        <source>Not reachable; MultiDir keeps trying…</source>
+        <translation type="unfinished">无法访问；MultiDir 会继续尝试…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="242"/>
+        <source>Connecting…</source>
+        <translation type="unfinished">正在连接…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="244"/>
+        <source>Link lost at %1; MultiDir keeps trying…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="246"/>
+        <source>Connected to %1</source>
+        <translation type="unfinished">已连接到 %1。 {1?}</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="254"/>
+        <source>nothing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="264"/>
+        <source>unknown: not read yet</source>
+        <translation type="unfinished">未知：尚未读取</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="267"/>
+        <source>unknown since %1 (last read: %2)</source>
+        <translation type="unfinished">自 %1 起未知（上次读取：%2）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="300"/>
+        <source>%1 does not answer: %2</source>
+        <translation type="unfinished">%1 没有应答：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="302"/>
+        <source>The printer&apos;s firmware is %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="304"/>
+        <source>it says nothing more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="306"/>
+        <source>The print run is paused: %1.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2972,7 +3424,12 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>%1 · 存活束：%2 · 最佳 J_G %3 mm² · %4 个候选 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <location filename="../ui/panels/search_panel.cpp" line="329"/>
+        <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>Stopped</source>
         <translation>已停止</translation>
     </message>
@@ -3031,12 +3488,12 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="335"/>
+        <location filename="../ui/panels/search_panel.cpp" line="342"/>
         <source>Failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="336"/>
+        <location filename="../ui/panels/search_panel.cpp" line="343"/>
         <source>%1
 %2</source>
         <translation>%1
