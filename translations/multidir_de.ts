@@ -796,52 +796,52 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="351"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
-        <translation type="unfinished"></translation>
+        <translation>Drücken, sobald der angeforderte Bereich gedruckt ist (nur beim Drucken von Hand: bei einem Bereich, den der verbundene Drucker druckt, geht es von selbst weiter).</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="452"/>
         <source>the platform</source>
-        <translation type="unfinished"></translation>
+        <translation>die Plattform</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="453"/>
         <source>the printer</source>
-        <translation type="unfinished"></translation>
+        <translation>den Drucker</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="455"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
-        <translation type="unfinished"></translation>
+        <translation>NOT-HALT an %1 gesendet. Zum Fortfahren: %2%3.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="456"/>
         <source> and </source>
-        <translation type="unfinished"></translation>
+        <translation> und </translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="457"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
-        <translation type="unfinished"></translation>
+        <translation>; beim Drucker „Drucker-NOT-HALT aufheben“ und seine Firmware neu starten</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="472"/>
         <source>Platform: stop confirmed by the device.</source>
-        <translation type="unfinished"></translation>
+        <translation>Plattform: Halt vom Gerät bestätigt.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="473"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Plattform: Halt noch nicht bestätigt; MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="478"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker: Not-Halt vom Drucker bestätigt.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="479"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker: Not-Halt noch nicht bestätigt (%1); MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="613"/>
@@ -1044,7 +1044,7 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="629"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bereich %1 wird von %2 gedruckt (%3); der Lauf geht weiter, sobald der Drucker ihn als fertig meldet.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="634"/>
@@ -1064,12 +1064,12 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="692"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Für den Plan gibt es kein Slicing-Ergebnis: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan, damit der Drucker die Bereiche druckt.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="694"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Slicing-Ergebnis hat %1 Schritte, der Plan %2 Bereiche: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan erneut.</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="702"/>
@@ -1170,7 +1170,7 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="826"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
-        <translation type="unfinished"></translation>
+        <translation>Slicing-Ergebnis vorhanden: ein verbundener Drucker druckt den G-Code jedes Bereichs.</translation>
     </message>
     <message numerus="yes">
         <location filename="../ui/device/hardware_panel.cpp" line="834"/>
@@ -1214,72 +1214,72 @@
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Step</source>
-        <translation type="unfinished">Schritt</translation>
+        <translation>Schritt</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Region</source>
-        <translation type="unfinished">Bereich</translation>
+        <translation>Bereich</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>State</source>
-        <translation type="unfinished"></translation>
+        <translation>Zustand</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Started</source>
-        <translation type="unfinished"></translation>
+        <translation>Beginn</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Ended</source>
-        <translation type="unfinished"></translation>
+        <translation>Ende</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="131"/>
         <source>waiting</source>
-        <translation type="unfinished"></translation>
+        <translation>wartend</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="133"/>
         <source>moving</source>
-        <translation type="unfinished"></translation>
+        <translation>in Bewegung</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="135"/>
         <source>settling</source>
-        <translation type="unfinished">Beruhigungszeit</translation>
+        <translation>Beruhigungszeit</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="137"/>
         <source>printing</source>
-        <translation type="unfinished">Druck läuft</translation>
+        <translation>Druck läuft</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="139"/>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>fertig</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="141"/>
         <source>paused</source>
-        <translation type="unfinished">pausiert</translation>
+        <translation>pausiert</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="143"/>
         <source>failed</source>
-        <translation type="unfinished"></translation>
+        <translation>fehlgeschlagen</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="145"/>
         <source>aborted</source>
-        <translation type="unfinished">abgebrochen</translation>
+        <translation>abgebrochen</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="155"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2606,18 +2606,18 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     <message>
         <location filename="../ui/device/printer_link_owner.cpp" line="90"/>
         <source>The printer does not answer yet; MultiDir keeps trying. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Drucker antwortet noch nicht; MultiDir versucht es weiter. %1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_link_owner.cpp" line="119"/>
         <location filename="../ui/device/printer_link_owner.cpp" line="156"/>
         <source>Printer E-STOP</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker-NOT-HALT</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_link_owner.cpp" line="121"/>
         <source>%1 refused: no printer is connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 abgelehnt: kein Drucker verbunden.</translation>
     </message>
 </context>
 <context>
@@ -2625,290 +2625,290 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="47"/>
         <source>%1 °C (off)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 °C (aus)</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="48"/>
         <source>%1 / %2 °C</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 °C</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="55"/>
         <location filename="../ui/device/printer_section.cpp" line="253"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannt</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="57"/>
         <source>standby (no job)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bereitschaft (kein Auftrag)</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="59"/>
         <source>printing</source>
-        <translation type="unfinished">Druck läuft</translation>
+        <translation>Druck läuft</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="61"/>
         <source>paused</source>
-        <translation type="unfinished">pausiert</translation>
+        <translation>pausiert</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="63"/>
         <source>complete</source>
-        <translation type="unfinished"></translation>
+        <translation>abgeschlossen</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="65"/>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>abgebrochen</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="67"/>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="77"/>
         <source>Printer</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="81"/>
         <source>http://192.168.0.20:7125</source>
-        <translation type="unfinished"></translation>
+        <translation>http://192.168.0.20:7125</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="82"/>
         <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Adresse des Druckers: Moonraker (Klipper) als http://HOST:PORT oder HOST:PORT (Port 7125).</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="86"/>
         <location filename="../ui/device/printer_section.cpp" line="257"/>
         <location filename="../ui/device/printer_section.cpp" line="280"/>
         <source>none</source>
-        <translation type="unfinished">keine</translation>
+        <translation>keine</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="87"/>
         <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur, wenn der Drucker einen verlangt (Moonraker-Abschnitt [authorization]). Wird nicht gespeichert.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="88"/>
         <source>Connect printer</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker verbinden</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="89"/>
         <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbindet mit dem Drucker; ein Drucklauf sendet ihm dann den G-Code jedes Bereichs.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Disconnect printer</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker trennen</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="91"/>
         <source>Closes the link without commanding the printer: a job on it goes on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließt die Verbindung, ohne dem Drucker einen Befehl zu senden: ein Auftrag auf ihm läuft weiter.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="92"/>
         <source>Clear printer E-STOP</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker-NOT-HALT aufheben</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="93"/>
         <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lässt wieder Aufträge zu, sobald der Drucker den Not-Halt bestätigt hat. Ein Klipper-Drucker braucht zusätzlich FIRMWARE_RESTART auf seiner Konsole.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="110"/>
         <source>Address:</source>
-        <translation type="unfinished"></translation>
+        <translation>Adresse:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="111"/>
         <source>API key:</source>
-        <translation type="unfinished"></translation>
+        <translation>API-Schlüssel:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="116"/>
         <source>State:</source>
-        <translation type="unfinished">Zustand:</translation>
+        <translation>Zustand:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="117"/>
         <source>Job:</source>
-        <translation type="unfinished"></translation>
+        <translation>Auftrag:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="118"/>
         <source>Firmware:</source>
-        <translation type="unfinished"></translation>
+        <translation>Firmware:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="119"/>
         <source>Printer says:</source>
-        <translation type="unfinished"></translation>
+        <translation>Meldung des Druckers:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="120"/>
         <source>Extruder:</source>
-        <translation type="unfinished"></translation>
+        <translation>Extruder:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="121"/>
         <source>Bed:</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckbett:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="122"/>
         <source>File:</source>
-        <translation type="unfinished"></translation>
+        <translation>Datei:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="123"/>
         <source>Progress:</source>
-        <translation type="unfinished"></translation>
+        <translation>Fortschritt:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="124"/>
         <source>Job time left:</source>
-        <translation type="unfinished"></translation>
+        <translation>Restzeit des Auftrags:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="125"/>
         <source>Last problem:</source>
-        <translation type="unfinished">Letztes Problem:</translation>
+        <translation>Letztes Problem:</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="140"/>
         <source>Connected to %1.</source>
-        <translation type="unfinished">Verbunden mit %1.</translation>
+        <translation>Verbunden mit %1.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="158"/>
         <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Verbindung zu %1 ist um %2 abgerissen: die Werte stammen nicht mehr vom Drucker, und er druckt möglicherweise noch. MultiDir versucht es weiter.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="174"/>
         <source>Cannot connect to the printer: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Verbindung zum Drucker möglich: %1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="178"/>
         <source>Connecting to %1…</source>
-        <translation type="unfinished">Verbindung mit %1 wird hergestellt…</translation>
+        <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="183"/>
         <source>Printer disconnected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker getrennt.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="189"/>
         <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
-        <translation type="unfinished"></translation>
+        <translation>Drucker-NOT-HALT aufgehoben. Ein Klipper-Drucker braucht vor seinem nächsten Auftrag FIRMWARE_RESTART.</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="191"/>
         <source>Clear printer E-STOP refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>„Drucker-NOT-HALT aufheben“ abgelehnt: %1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="210"/>
         <source>step %1 of %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1 von %2: %3</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="213"/>
         <source>not started</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht begonnen</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="216"/>
         <source>%1 of %2 (not a step of this run)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von %2 (kein Schritt dieses Laufs)</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="222"/>
         <source>none: every step is printed</source>
-        <translation type="unfinished"></translation>
+        <translation>keine: alle Schritte sind gedruckt</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="225"/>
         <source>no estimate: slice the plan before starting the run</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Schätzung: slicen Sie den Plan, bevor Sie den Lauf starten</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="227"/>
         <source>%1 of printing (done about %2; platform moves not counted)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Druckzeit (fertig gegen %2; Plattformbewegungen nicht mitgerechnet)</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="238"/>
         <source>Disconnected</source>
-        <translation type="unfinished">Getrennt</translation>
+        <translation>Getrennt</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="240"/>
         <source>Not reachable; MultiDir keeps trying…</source>
-        <translation type="unfinished">Nicht erreichbar; MultiDir versucht es weiter…</translation>
+        <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="242"/>
         <source>Connecting…</source>
-        <translation type="unfinished">Verbindung wird hergestellt…</translation>
+        <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="244"/>
         <source>Link lost at %1; MultiDir keeps trying…</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbindung um %1 abgerissen; MultiDir versucht es weiter…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="246"/>
         <source>Connected to %1</source>
-        <translation type="unfinished">Verbunden mit %1. {1?}</translation>
+        <translation>Verbunden mit %1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="254"/>
         <source>nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>nichts</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="264"/>
         <source>unknown: not read yet</source>
-        <translation type="unfinished">unbekannt: noch nicht gelesen</translation>
+        <translation>unbekannt: noch nicht gelesen</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="267"/>
         <source>unknown since %1 (last read: %2)</source>
-        <translation type="unfinished">unbekannt seit %1 (zuletzt gelesen: %2)</translation>
+        <translation>unbekannt seit %1 (zuletzt gelesen: %2)</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="300"/>
         <source>%1 does not answer: %2</source>
-        <translation type="unfinished">%1 antwortet nicht: %2</translation>
+        <translation>%1 antwortet nicht: %2</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="302"/>
         <source>The printer&apos;s firmware is %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Firmware des Druckers ist im Zustand %1: %2</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="304"/>
         <source>it says nothing more</source>
-        <translation type="unfinished"></translation>
+        <translation>weitere Angaben macht sie nicht</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="306"/>
         <source>The print run is paused: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Drucklauf ist pausiert: %1.</translation>
     </message>
 </context>
 <context>
@@ -3431,7 +3431,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="329"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Suche lief auf einer vereinfachten Kopie mit %1 Flächen; ihre Ebenen schneiden danach das vollständige Modell, und alle angezeigten Zahlen beziehen sich auf das vollständige Modell.</translation>
     </message>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="350"/>

@@ -796,52 +796,52 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="351"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
-        <translation type="unfinished"></translation>
+        <translation>所要求的区域打印完成后按此按钮（仅用于手动打印：由已连接的打印机打印的区域会自动继续）。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="452"/>
         <source>the platform</source>
-        <translation type="unfinished"></translation>
+        <translation>平台</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="453"/>
         <source>the printer</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="455"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
-        <translation type="unfinished"></translation>
+        <translation>已向%1发送急停。如需继续：%2%3。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="456"/>
         <source> and </source>
-        <translation type="unfinished"></translation>
+        <translation>和</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="457"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
-        <translation type="unfinished"></translation>
+        <translation>；对于打印机，请按“清除打印机急停”并重启其固件</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="472"/>
         <source>Platform: stop confirmed by the device.</source>
-        <translation type="unfinished"></translation>
+        <translation>平台：设备已确认停止。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="473"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
-        <translation type="unfinished"></translation>
+        <translation>平台：尚未确认停止；MultiDir 会持续重发。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="478"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机：打印机已确认急停。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="479"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机：尚未确认急停（%1）；MultiDir 会持续重发。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="613"/>
@@ -1044,7 +1044,7 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="629"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
-        <translation type="unfinished"></translation>
+        <translation>区域 %1 正由 %2 打印（%3）；打印机报告完成后运行将继续。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="634"/>
@@ -1064,12 +1064,12 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="692"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
-        <translation type="unfinished"></translation>
+        <translation>方案尚未切片：每个区域需手动打印（“区域完成”）。请对方案切片，以便由打印机打印各区域。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="694"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
-        <translation type="unfinished"></translation>
+        <translation>切片作业有 %1 个步骤，方案有 %2 个区域：每个区域需手动打印（“区域完成”）。请重新对方案切片。</translation>
     </message>
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="702"/>
@@ -1168,7 +1168,7 @@
     <message>
         <location filename="../ui/device/hardware_panel.cpp" line="826"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
-        <translation type="unfinished"></translation>
+        <translation>已切片：已连接的打印机将打印每个区域的 G 代码。</translation>
     </message>
     <message numerus="yes">
         <location filename="../ui/device/hardware_panel.cpp" line="834"/>
@@ -1211,72 +1211,72 @@
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Step</source>
-        <translation type="unfinished">步骤</translation>
+        <translation>步骤</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Region</source>
-        <translation type="unfinished">区域</translation>
+        <translation>区域</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>State</source>
-        <translation type="unfinished"></translation>
+        <translation>状态</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Started</source>
-        <translation type="unfinished"></translation>
+        <translation>开始时间</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="104"/>
         <source>Ended</source>
-        <translation type="unfinished"></translation>
+        <translation>结束时间</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="131"/>
         <source>waiting</source>
-        <translation type="unfinished"></translation>
+        <translation>等待中</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="133"/>
         <source>moving</source>
-        <translation type="unfinished"></translation>
+        <translation>正在移动</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="135"/>
         <source>settling</source>
-        <translation type="unfinished">正在稳定</translation>
+        <translation>正在稳定</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="137"/>
         <source>printing</source>
-        <translation type="unfinished">正在打印</translation>
+        <translation>正在打印</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="139"/>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>已完成</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="141"/>
         <source>paused</source>
-        <translation type="unfinished">已暂停</translation>
+        <translation>已暂停</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="143"/>
         <source>failed</source>
-        <translation type="unfinished"></translation>
+        <translation>失败</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="145"/>
         <source>aborted</source>
-        <translation type="unfinished">已中止</translation>
+        <translation>已中止</translation>
     </message>
     <message>
         <location filename="../ui/device/job_timeline.cpp" line="155"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
@@ -2601,18 +2601,18 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     <message>
         <location filename="../ui/device/printer_link_owner.cpp" line="90"/>
         <source>The printer does not answer yet; MultiDir keeps trying. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机尚未应答；MultiDir 会继续尝试。%1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_link_owner.cpp" line="119"/>
         <location filename="../ui/device/printer_link_owner.cpp" line="156"/>
         <source>Printer E-STOP</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机急停</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_link_owner.cpp" line="121"/>
         <source>%1 refused: no printer is connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 被拒绝：未连接打印机。</translation>
     </message>
 </context>
 <context>
@@ -2620,290 +2620,290 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="47"/>
         <source>%1 °C (off)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 °C（关闭）</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="48"/>
         <source>%1 / %2 °C</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 °C</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="55"/>
         <location filename="../ui/device/printer_section.cpp" line="253"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>未知</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="57"/>
         <source>standby (no job)</source>
-        <translation type="unfinished"></translation>
+        <translation>待机（无作业）</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="59"/>
         <source>printing</source>
-        <translation type="unfinished">正在打印</translation>
+        <translation>正在打印</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="61"/>
         <source>paused</source>
-        <translation type="unfinished">已暂停</translation>
+        <translation>已暂停</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="63"/>
         <source>complete</source>
-        <translation type="unfinished"></translation>
+        <translation>已完成</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="65"/>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>已取消</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="67"/>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>错误</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="77"/>
         <source>Printer</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="81"/>
         <source>http://192.168.0.20:7125</source>
-        <translation type="unfinished"></translation>
+        <translation>http://192.168.0.20:7125</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="82"/>
         <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机地址：Moonraker（Klipper），格式为 http://HOST:PORT 或 HOST:PORT（端口 7125）。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="86"/>
         <location filename="../ui/device/printer_section.cpp" line="257"/>
         <location filename="../ui/device/printer_section.cpp" line="280"/>
         <source>none</source>
-        <translation type="unfinished">无</translation>
+        <translation>无</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="87"/>
         <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
-        <translation type="unfinished"></translation>
+        <translation>仅在打印机要求时填写（Moonraker 的 [authorization]）。不会被保存。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="88"/>
         <source>Connect printer</source>
-        <translation type="unfinished"></translation>
+        <translation>连接打印机</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="89"/>
         <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
-        <translation type="unfinished"></translation>
+        <translation>连接打印机；之后打印运行会将每个区域的 G 代码发送给它。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Disconnect printer</source>
-        <translation type="unfinished"></translation>
+        <translation>断开打印机</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="91"/>
         <source>Closes the link without commanding the printer: a job on it goes on.</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭链路而不向打印机发送命令：打印机上的作业会继续进行。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="92"/>
         <source>Clear printer E-STOP</source>
-        <translation type="unfinished"></translation>
+        <translation>清除打印机急停</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="93"/>
         <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机确认急停后，重新允许作业。Klipper 打印机还需在其控制台上执行 FIRMWARE_RESTART。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="110"/>
         <source>Address:</source>
-        <translation type="unfinished"></translation>
+        <translation>地址：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="111"/>
         <source>API key:</source>
-        <translation type="unfinished"></translation>
+        <translation>API 密钥：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="116"/>
         <source>State:</source>
-        <translation type="unfinished">状态：</translation>
+        <translation>状态：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="117"/>
         <source>Job:</source>
-        <translation type="unfinished"></translation>
+        <translation>作业：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="118"/>
         <source>Firmware:</source>
-        <translation type="unfinished"></translation>
+        <translation>固件：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="119"/>
         <source>Printer says:</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机消息：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="120"/>
         <source>Extruder:</source>
-        <translation type="unfinished"></translation>
+        <translation>挤出机：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="121"/>
         <source>Bed:</source>
-        <translation type="unfinished"></translation>
+        <translation>热床：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="122"/>
         <source>File:</source>
-        <translation type="unfinished"></translation>
+        <translation>文件：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="123"/>
         <source>Progress:</source>
-        <translation type="unfinished"></translation>
+        <translation>进度：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="124"/>
         <source>Job time left:</source>
-        <translation type="unfinished"></translation>
+        <translation>作业剩余时间：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="125"/>
         <source>Last problem:</source>
-        <translation type="unfinished">最近的问题：</translation>
+        <translation>最近的问题：</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="140"/>
         <source>Connected to %1.</source>
-        <translation type="unfinished">已连接到 %1。</translation>
+        <translation>已连接到 %1。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="158"/>
         <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
-        <translation type="unfinished"></translation>
+        <translation>与 %1 的链路于 %2 中断：这些数值已不再反映打印机的状态，且它可能仍在打印。MultiDir 会继续尝试。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="174"/>
         <source>Cannot connect to the printer: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法连接打印机：%1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="178"/>
         <source>Connecting to %1…</source>
-        <translation type="unfinished">正在连接 %1…</translation>
+        <translation>正在连接 %1…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="183"/>
         <source>Printer disconnected.</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机已断开。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="189"/>
         <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机急停已清除。Klipper 打印机在下一个作业前需要执行 FIRMWARE_RESTART。</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="191"/>
         <source>Clear printer E-STOP refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>清除打印机急停被拒绝：%1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="210"/>
         <source>step %1 of %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>步骤 %1 / %2：%3</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="213"/>
         <source>not started</source>
-        <translation type="unfinished"></translation>
+        <translation>未开始</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="216"/>
         <source>%1 of %2 (not a step of this run)</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 已完成 %1（不属于本次运行的步骤）</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="222"/>
         <source>none: every step is printed</source>
-        <translation type="unfinished"></translation>
+        <translation>无：所有步骤均已打印</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="225"/>
         <source>no estimate: slice the plan before starting the run</source>
-        <translation type="unfinished"></translation>
+        <translation>无估算：请在开始运行前对方案切片</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="227"/>
         <source>%1 of printing (done about %2; platform moves not counted)</source>
-        <translation type="unfinished"></translation>
+        <translation>打印用时 %1（约 %2 完成；不含平台移动）</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="238"/>
         <source>Disconnected</source>
-        <translation type="unfinished">已断开</translation>
+        <translation>已断开</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="240"/>
         <source>Not reachable; MultiDir keeps trying…</source>
-        <translation type="unfinished">无法访问；MultiDir 会继续尝试…</translation>
+        <translation>无法访问；MultiDir 会继续尝试…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="242"/>
         <source>Connecting…</source>
-        <translation type="unfinished">正在连接…</translation>
+        <translation>正在连接…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="244"/>
         <source>Link lost at %1; MultiDir keeps trying…</source>
-        <translation type="unfinished"></translation>
+        <translation>链路于 %1 中断；MultiDir 会继续尝试…</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="246"/>
         <source>Connected to %1</source>
-        <translation type="unfinished">已连接到 %1。 {1?}</translation>
+        <translation>已连接到 %1</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="254"/>
         <source>nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>无</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="264"/>
         <source>unknown: not read yet</source>
-        <translation type="unfinished">未知：尚未读取</translation>
+        <translation>未知：尚未读取</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="267"/>
         <source>unknown since %1 (last read: %2)</source>
-        <translation type="unfinished">自 %1 起未知（上次读取：%2）</translation>
+        <translation>自 %1 起未知（上次读取：%2）</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="300"/>
         <source>%1 does not answer: %2</source>
-        <translation type="unfinished">%1 没有应答：%2</translation>
+        <translation>%1 没有应答：%2</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="302"/>
         <source>The printer&apos;s firmware is %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>打印机固件处于 %1 状态：%2</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="304"/>
         <source>it says nothing more</source>
-        <translation type="unfinished"></translation>
+        <translation>无更多信息</translation>
     </message>
     <message>
         <location filename="../ui/device/printer_section.cpp" line="306"/>
         <source>The print run is paused: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>打印运行已暂停：%1。</translation>
     </message>
 </context>
 <context>
@@ -3426,7 +3426,7 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="329"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>搜索在有 %1 个面的简化副本上进行；随后用其平面切割完整模型，显示的所有数值均针对完整模型。</translation>
     </message>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="350"/>
