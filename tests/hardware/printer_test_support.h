@@ -1,5 +1,7 @@
 #pragma once
-// Shared by the printer tests: a short G-code program and a fast Moonraker simulator and link on 127.0.0.1.
+// Shared by the printer tests: a short G-code program, and a fast simulator and link on 127.0.0.1 for each
+// protocol, so that one test runs against every protocol (TEST_P over PrinterProtocol).
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +11,8 @@
 #include "hardware_test_support.h"
 #include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/moonraker_simulator.h"
+#include "multidir/hardware/octoprint_link.h"
+#include "multidir/hardware/octoprint_simulator.h"
 
 namespace multidir::hardware::test {
 
@@ -44,6 +48,54 @@ inline std::unique_ptr<PrinterLink> moonrakerLinkTo(int port, PrinterLinkOptions
   auto link = makeMoonrakerLink(settings, options);
   EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
   return link.ok() ? std::move(link.value()) : nullptr;
+}
+
+inline std::unique_ptr<PrinterLink> octoPrintLinkTo(int port, const std::string& apiKey = kOctoPrintSimulatorApiKey,
+                                                   PrinterLinkOptions options = fastPrinterOptions()) {
+  OctoPrintSettings settings;
+  settings.host = "127.0.0.1";
+  settings.port = port;
+  settings.apiKey = apiKey;
+  auto link = makeOctoPrintLink(settings, options);
+  EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
+  return link.ok() ? std::move(link.value()) : nullptr;
+}
+
+enum class PrinterProtocol { Moonraker, OctoPrint };
+
+inline std::string protocolName(const testing::TestParamInfo<PrinterProtocol>& info) {
+  return info.param == PrinterProtocol::Moonraker ? "Moonraker" : "OctoPrint";
+}
+
+inline std::unique_ptr<PrinterSimulator> printerSimulator(PrinterProtocol protocol, PrinterSimulatorOptions options) {
+  if (protocol == PrinterProtocol::Moonraker) return std::make_unique<MoonrakerSimulator>(options);
+  OctoPrintSimulatorOptions octoPrint;
+  static_cast<PrinterSimulatorOptions&>(octoPrint) = options;
+  return std::make_unique<OctoPrintSimulator>(octoPrint);
+}
+
+inline std::unique_ptr<PrinterLink> printerLinkTo(PrinterProtocol protocol, int port,
+                                                  PrinterLinkOptions options = fastPrinterOptions()) {
+  return protocol == PrinterProtocol::Moonraker ? moonrakerLinkTo(port, options)
+                                                : octoPrintLinkTo(port, kOctoPrintSimulatorApiKey, options);
+}
+
+// The protocol's requests as the simulators record them.
+inline bool isUpload(PrinterProtocol protocol, const PrinterRequestRecord& r) {
+  return r.method == "POST" &&
+         r.path == (protocol == PrinterProtocol::Moonraker ? "/server/files/upload" : "/api/files/local");
+}
+inline bool isStart(PrinterProtocol protocol, const PrinterRequestRecord& r) {
+  if (protocol == PrinterProtocol::Moonraker) return r.path == "/printer/print/start";
+  return r.method == "POST" && r.path.rfind("/api/files/local/", 0) == 0;
+}
+inline bool isEmergencyStop(PrinterProtocol protocol, const PrinterRequestRecord& r) {
+  if (protocol == PrinterProtocol::Moonraker) return r.path == "/printer/emergency_stop";
+  return r.path == "/api/printer/command" && r.detail.find("M112") != std::string::npos;
+}
+inline int countRequests(const std::vector<PrinterRequestRecord>& records,
+                         const std::function<bool(const PrinterRequestRecord&)>& which) {
+  return static_cast<int>(std::count_if(records.begin(), records.end(), which));
 }
 
 }  // namespace multidir::hardware::test
