@@ -11,8 +11,8 @@
 #include <thread>
 
 #include "cli_args.h"
-#include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/print_run.h"
+#include "multidir/hardware/printer_url.h"
 #include "multidir/hardware/robot_arm.h"
 #include "multidir/hardware/rotary_platform.h"
 #include "multidir/slicing/estimates.h"
@@ -26,9 +26,9 @@ const char* const kRunHelp =
     "Runs a sliced print job headless (JOB: the folder written by 'multidir slice' for a profile whose platform\n"
     "is driven over Modbus, or its print-job.json). For each step: turns the platform (4-DOF rotary controller\n"
     "or 5-DOF robot arm, as the job's machine says) to the step's orientation, waits until it has settled,\n"
-    "uploads the step's G-code to the printer (Klipper through Moonraker), starts it, follows it until the\n"
-    "printer reports it complete, and goes on. The platform never moves while the printer prints, and the\n"
-    "printer never starts while the platform is not at rest at the step's orientation.\n"
+    "uploads the step's G-code to the printer (Klipper through Moonraker, or OctoPrint), starts it, follows it\n"
+    "until the printer reports it complete, and goes on. The platform never moves while the printer prints,\n"
+    "and the printer never starts while the platform is not at rest at the step's orientation.\n"
     "\n"
     "Every event is logged with its time; a progress line (step, printer progress, temperatures, the job's\n"
     "remaining time from the slicer's estimates) follows the printer. When the printer reports an error, a\n"
@@ -36,12 +36,16 @@ const char* const kRunHelp =
     "stays where it is) and says why; fix it and continue with --from STEP.\n"
     "\n"
     "Ctrl-C stops both devices: the platform's motion and the printer's job (cancelled). A second Ctrl-C sends\n"
-    "both emergency stops (Klipper then needs a FIRMWARE_RESTART, the platform a clear fault and homing).\n"
+    "both emergency stops (Klipper then needs a FIRMWARE_RESTART; OctoPrint sends M112 and disconnects from the\n"
+    "printer, which needs a reset and a Connect in OctoPrint's Connection panel; the platform a clear fault and\n"
+    "homing).\n"
     "\n"
     "Options:\n"
-    "  --printer URL        Moonraker's address: http://HOST:PORT (default port 80) or HOST:PORT (7125 when\n"
-    "                       absent)\n"
-    "  --api-key KEY        Moonraker's API key, when its [authorization] asks for one\n"
+    "  --printer URL        the printer: Klipper through Moonraker at http://HOST:PORT (default port 80),\n"
+    "                       moonraker://HOST:PORT or HOST:PORT (7125 when absent); OctoPrint at\n"
+    "                       octoprint://HOST:PORT (default port 80; OctoPrint's own server uses 5000)\n"
+    "  --api-key KEY        OctoPrint's API key (required: Settings > Application Keys), or Moonraker's when\n"
+    "                       its [authorization] asks for one\n"
     "  --platform HOST:PORT the platform's Modbus TCP address (rotary controller or robot)\n"
     "  --unit ID            Modbus unit id, 0..255 (default: 1 for the rotary controller, 255 for the robot)\n"
     "  --from STEP          start at this step, 1..the number of steps (default: 1)\n"
@@ -197,17 +201,15 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
       onlyPositional(parsed, "run", "job", "multidir run JOB --printer URL --platform HOST:PORT");
   if (!parsed.has("--printer"))
     throw UsageError(
-        "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125). "
-        "Run 'multidir help run'.");
+        "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125, or "
+        "OctoPrint's, such as octoprint://192.168.0.21:80). Run 'multidir help run'.");
   if (!parsed.has("--platform"))
     throw UsageError(
         "multidir run: --platform HOST:PORT is required (the platform's Modbus TCP address, such as "
         "192.168.0.30:502). Run 'multidir help run'.");
-  core::Result<hardware::MoonrakerSettings> printerSettings =
-      hardware::parseMoonrakerUrl(parsed.value("--printer", ""));
-  if (!printerSettings)
-    throw UsageError("multidir run: " + printerSettings.error().describe() + ". Run 'multidir help run'.");
-  printerSettings->apiKey = parsed.value("--api-key", "");
+  core::Result<std::unique_ptr<hardware::PrinterLink>> link =
+      hardware::makePrinterLinkFromUrl(parsed.value("--printer", ""), parsed.value("--api-key", ""));
+  if (!link) throw UsageError("multidir run: " + link.error().describe() + ". Run 'multidir help run'.");
   const std::string platformText = parsed.value("--platform", "");
   const std::size_t colon = platformText.rfind(':');
   if (colon == std::string::npos || colon == 0)
@@ -224,8 +226,6 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   SignalScope signals;
 
   Devices devices;
-  core::Result<std::unique_ptr<hardware::PrinterLink>> link = hardware::makeMoonrakerLink(*printerSettings);
-  if (!link) throw UsageError("multidir run: " + link.error().describe());
   devices.printer = std::move(*link);
   log.line("job " + job.jobFile + ": " + std::to_string(job.steps.size()) + " steps, " +
            core::machineKindName(job.machine.kind) + (from > 1 ? ", starting at step " + std::to_string(from) : ""));

@@ -1,4 +1,4 @@
-// Moonraker only: its addresses and the simulator's timing. The behaviour every link shares is in
+// Moonraker only: the simulator's timing (addresses: printer_url_test.cpp). The behaviour every link shares is in
 // printer_link_test.cpp.
 #include "multidir/hardware/moonraker_link.h"
 
@@ -8,41 +8,6 @@
 
 #include "multidir/hardware/moonraker_simulator.h"
 #include "printer_test_support.h"
-
-namespace multidir::hardware {
-namespace {
-
-using namespace test;
-
-TEST(MoonrakerUrl, TakesHostAndPortWithOrWithoutTheScheme) {
-  auto a = parseMoonrakerUrl("http://192.168.0.20:7125");
-  ASSERT_TRUE(a.ok());
-  EXPECT_EQ(a->host, "192.168.0.20");
-  EXPECT_EQ(a->port, 7125);
-  auto b = parseMoonrakerUrl("http://printer.local/");
-  ASSERT_TRUE(b.ok());
-  EXPECT_EQ(b->port, 80);
-  auto c = parseMoonrakerUrl("127.0.0.1");
-  ASSERT_TRUE(c.ok());
-  EXPECT_EQ(c->port, 7125);
-}
-
-TEST(MoonrakerUrl, RefusesHttpsPathsAndBadPortsSayingWhy) {
-  EXPECT_NE(parseMoonrakerUrl("https://p:7125").error().message.find("https is not supported"), std::string::npos);
-  EXPECT_NE(parseMoonrakerUrl("http://p:7125/api").error().message.find("without a path"), std::string::npos);
-  EXPECT_NE(parseMoonrakerUrl("p:99999").error().message.find("1 to 65535"), std::string::npos);
-  EXPECT_FALSE(parseMoonrakerUrl("http://:80").ok());
-}
-
-TEST(MoonrakerUrl, TakesItsOwnScheme) {
-  auto a = parseMoonrakerUrl("moonraker://printer.local");
-  ASSERT_TRUE(a.ok());
-  EXPECT_EQ(a->host, "printer.local");
-  EXPECT_EQ(a->port, 7125);
-}
-
-}  // namespace
-}  // namespace multidir::hardware
 
 namespace multidir::hardware {
 namespace {

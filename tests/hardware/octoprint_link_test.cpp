@@ -1,4 +1,4 @@
-// OctoPrint only: its API key, its addresses, and what follows its emergency stop (OctoPrint closes its
+// OctoPrint only: its API key and what follows its emergency stop (OctoPrint closes its
 // connection to the printer; /api/printer then answers 409). The behaviour every link shares is in
 // printer_link_test.cpp.
 #include "multidir/hardware/octoprint_link.h"
@@ -74,7 +74,8 @@ TEST_F(OctoPrintLinkTest, EmergencyStopSendsM112AndOctoPrintsClosedConnectionRea
   ASSERT_TRUE(outcome(link->startPrint("step-01.gcode")).ok());
   ASSERT_TRUE(outcome(link->emergencyStop()).ok());
   const auto stops = sim->requests();
-  ASSERT_EQ(countRequests(stops, [](const PrinterRequestRecord& r) { return isEmergencyStop(PrinterProtocol::OctoPrint, r); }),
+  ASSERT_EQ(countRequests(stops,
+                          [](const PrinterRequestRecord& r) { return isEmergencyStop(PrinterProtocol::OctoPrint, r); }),
             1);
   ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Error; }));
   const PrinterStatus s = link->status();
@@ -113,30 +114,6 @@ TEST_F(OctoPrintLinkTest, ASecondEmergencyStopWhileOctoPrintIsOfflineCountsAsAns
     conflicts += isEmergencyStop(PrinterProtocol::OctoPrint, r) && r.httpStatus == 409 ? 1 : 0;
   EXPECT_EQ(conflicts, 1);
   EXPECT_TRUE(link->status().stop.confirmed);
-}
-
-TEST(OctoPrintUrl, TakesItsSchemeHttpOrABareHostWithPort80ByDefault) {
-  auto a = parseOctoPrintUrl("octoprint://192.168.0.21:5000");
-  ASSERT_TRUE(a.ok());
-  EXPECT_EQ(a->host, "192.168.0.21");
-  EXPECT_EQ(a->port, 5000);
-  auto b = parseOctoPrintUrl("octoprint://octopi.local/");
-  ASSERT_TRUE(b.ok());
-  EXPECT_EQ(b->host, "octopi.local");
-  EXPECT_EQ(b->port, 80);
-  auto c = parseOctoPrintUrl("http://octopi.local");
-  ASSERT_TRUE(c.ok());
-  EXPECT_EQ(c->port, 80);
-  auto d = parseOctoPrintUrl("octopi.local");
-  ASSERT_TRUE(d.ok());
-  EXPECT_EQ(d->port, 80);
-}
-
-TEST(OctoPrintUrl, RefusesHttpsPathsAndBadPortsSayingWhy) {
-  EXPECT_NE(parseOctoPrintUrl("https://octopi").error().message.find("https is not supported"), std::string::npos);
-  EXPECT_NE(parseOctoPrintUrl("octoprint://octopi/api").error().message.find("without a path"), std::string::npos);
-  EXPECT_NE(parseOctoPrintUrl("octoprint://octopi:0").error().message.find("1 to 65535"), std::string::npos);
-  EXPECT_FALSE(parseOctoPrintUrl("octoprint://:80").ok());
 }
 
 }  // namespace

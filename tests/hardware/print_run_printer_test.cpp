@@ -1,5 +1,6 @@
-// The print run with a printer: against the Moonraker simulator and the Modbus device simulator on 127.0.0.1
-// (both record every command with the clock the test injects), plus interlock cases with test doubles.
+// The print run with a printer: against each printer simulator (Moonraker, OctoPrint) and the Modbus device
+// simulator on 127.0.0.1 (both record every command with the clock the test injects), plus interlock cases
+// with test doubles.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +8,6 @@
 #include <thread>
 
 #include "multidir/hardware/device_simulator.h"
-#include "multidir/hardware/moonraker_simulator.h"
 #include "multidir/hardware/print_run.h"
 #include "multidir/hardware/rotary_platform.h"
 #include "printer_test_support.h"
@@ -32,7 +32,7 @@ std::string wholeLog(const PrintRun& run) {
   return text;
 }
 
-class PrintRunWithPrinterTest : public ::testing::Test {
+class PrintRunWithPrinterTest : public ::testing::TestWithParam<PrinterProtocol> {
  protected:
   // One clock for both simulators' records, the links and the run.
   std::function<Clock::time_point()> clock = [] { return Clock::now(); };
@@ -63,14 +63,14 @@ class PrintRunWithPrinterTest : public ::testing::Test {
   }
 
   void startPrinter(double speed) {
-    MoonrakerSimulatorOptions options;
+    PrinterSimulatorOptions options;
     options.speed = speed;
     options.steadyNow = clock;
-    printerSim = std::make_unique<MoonrakerSimulator>(options);
+    printerSim = printerSimulator(GetParam(), options);
     ASSERT_TRUE(printerSim->start().ok());
     PrinterLinkOptions linkOptions = fastPrinterOptions();
     linkOptions.steadyNow = clock;
-    printer = moonrakerLinkTo(printerSim->port(), linkOptions);
+    printer = printerLinkTo(GetParam(), printerSim->port(), linkOptions);
     ASSERT_TRUE(printer->connect().ok());
   }
 
@@ -129,12 +129,15 @@ class PrintRunWithPrinterTest : public ::testing::Test {
   std::unique_ptr<DeviceSimulator> devices;
   std::unique_ptr<RotaryPlatform> platform;
   std::unique_ptr<Positioner> positioner;
-  std::unique_ptr<MoonrakerSimulator> printerSim;
+  std::unique_ptr<PrinterSimulator> printerSim;
   std::unique_ptr<PrinterLink> printer;
   std::vector<std::string> gcodes;
 };
 
-TEST_F(PrintRunWithPrinterTest, RunsEveryStepOnThePlatformAndThePrinterToCompletion) {
+INSTANTIATE_TEST_SUITE_P(Protocols, PrintRunWithPrinterTest,
+                         ::testing::Values(PrinterProtocol::Moonraker, PrinterProtocol::OctoPrint), protocolName);
+
+TEST_P(PrintRunWithPrinterTest, RunsEveryStepOnThePlatformAndThePrinterToCompletion) {
   startPrinter(400.0);
   PrintRun run(*positioner, steps(), runOptions(), printer.get());
   ASSERT_TRUE(run.start().ok());
@@ -145,13 +148,12 @@ TEST_F(PrintRunWithPrinterTest, RunsEveryStepOnThePlatformAndThePrinterToComplet
   for (const auto& e : printerSim->jobEvents())
     if (e.state == "complete") completed.push_back(e.file);
   EXPECT_EQ(completed, (std::vector<std::string>{"step-01.gcode", "step-02.gcode", "step-03.gcode"}));
-  int starts = 0;
-  for (const auto& r : printerSim->requests()) starts += r.path == "/printer/print/start" ? 1 : 0;
-  EXPECT_EQ(starts, 3);
+  EXPECT_EQ(
+      countRequests(printerSim->requests(), [&](const PrinterRequestRecord& r) { return isStart(GetParam(), r); }), 3);
   EXPECT_NEAR(devices->rotaryState().angleDegrees, -45.0, 0.05);
 }
 
-TEST_F(PrintRunWithPrinterTest, NoPlatformCommandReachesTheDeviceWhileThePrinterPrints) {
+TEST_P(PrintRunWithPrinterTest, NoPlatformCommandReachesTheDeviceWhileThePrinterPrints) {
   startPrinter(400.0);
   PrintRun run(*positioner, steps(), runOptions(), printer.get());
   ASSERT_TRUE(run.start().ok());
@@ -177,14 +179,14 @@ TEST_F(PrintRunWithPrinterTest, NoPlatformCommandReachesTheDeviceWhileThePrinter
     if (command.command == kRotaryMove) moves.push_back(command.at);
   std::vector<Clock::time_point> starts;
   for (const auto& r : printerSim->requests())
-    if (r.path == "/printer/print/start") starts.push_back(r.at);
+    if (isStart(GetParam(), r)) starts.push_back(r.at);
   ASSERT_EQ(moves.size(), 3u);
   ASSERT_EQ(starts.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) EXPECT_GT(starts[k], moves[k]);
   for (std::size_t k = 0; k + 1 < 3; ++k) EXPECT_LT(starts[k], moves[k + 1]);
 }
 
-TEST_F(PrintRunWithPrinterTest, ThermalRunawayPausesTheRunWithTheTemperatureAndNothingMoves) {
+TEST_P(PrintRunWithPrinterTest, ThermalRunawayPausesTheRunWithTheTemperatureAndNothingMoves) {
   startPrinter(20.0);
   PrintRun run(*positioner, steps(), runOptions(), printer.get());
   ASSERT_TRUE(run.start().ok());
@@ -195,7 +197,7 @@ TEST_F(PrintRunWithPrinterTest, ThermalRunawayPausesTheRunWithTheTemperatureAndN
   EXPECT_EQ(run.currentStep(), 0u);
 }
 
-TEST_F(PrintRunWithPrinterTest, ALostLinkPausesTheRunAndResumeFollowsThePrinterAgain) {
+TEST_P(PrintRunWithPrinterTest, ALostLinkPausesTheRunAndResumeFollowsThePrinterAgain) {
   startPrinter(20.0);
   PrintRun run(*positioner, steps(), runOptions(), printer.get());
   ASSERT_TRUE(run.start().ok());
@@ -211,7 +213,7 @@ TEST_F(PrintRunWithPrinterTest, ALostLinkPausesTheRunAndResumeFollowsThePrinterA
   ASSERT_TRUE(tickUntil(run, [&] { return run.currentStep() == 1; })) << wholeLog(run);
 }
 
-TEST_F(PrintRunWithPrinterTest, AJobCancelledOnThePrinterPausesTheRunAndNothingMoves) {
+TEST_P(PrintRunWithPrinterTest, AJobCancelledOnThePrinterPausesTheRunAndNothingMoves) {
   startPrinter(20.0);
   PrintRun run(*positioner, steps(), runOptions(), printer.get());
   ASSERT_TRUE(run.start().ok());
@@ -227,7 +229,7 @@ TEST_F(PrintRunWithPrinterTest, AJobCancelledOnThePrinterPausesTheRunAndNothingM
   EXPECT_EQ(run.state(), PrintRunState::Moving);
 }
 
-TEST_F(PrintRunWithPrinterTest, RepliesSlowerThanTheLinksTimeoutPauseTheRunAndNothingMoves) {
+TEST_P(PrintRunWithPrinterTest, RepliesSlowerThanTheLinksTimeoutPauseTheRunAndNothingMoves) {
   startPrinter(20.0);
   PrintRun run(*positioner, steps(), runOptions(), printer.get());
   ASSERT_TRUE(run.start().ok());
@@ -238,7 +240,7 @@ TEST_F(PrintRunWithPrinterTest, RepliesSlowerThanTheLinksTimeoutPauseTheRunAndNo
   printerSim->setReplyDelay(0ms);
 }
 
-TEST_F(PrintRunWithPrinterTest, EmergencyStopDuringPrintingReachesBothDevicesWithin200Ms) {
+TEST_P(PrintRunWithPrinterTest, EmergencyStopDuringPrintingReachesBothDevicesWithin200Ms) {
   startPrinter(20.0);
   PrintRun run(*positioner, steps(), runOptions(), printer.get());
   ASSERT_TRUE(run.start().ok());
@@ -252,7 +254,7 @@ TEST_F(PrintRunWithPrinterTest, EmergencyStopDuringPrintingReachesBothDevicesWit
     if (command.command == kRotaryEmergencyStop && command.at >= called) platformAt = std::min(platformAt, command.at);
   Clock::time_point printerAt = Clock::time_point::max();
   for (const auto& r : printerSim->requests())
-    if (r.path == "/printer/emergency_stop" && r.at >= called) printerAt = std::min(printerAt, r.at);
+    if (isEmergencyStop(GetParam(), r) && r.at >= called) printerAt = std::min(printerAt, r.at);
   ASSERT_NE(platformAt, Clock::time_point::max());
   ASSERT_NE(printerAt, Clock::time_point::max());
   EXPECT_LE(platformAt - called, 200ms);

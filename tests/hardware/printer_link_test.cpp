@@ -187,14 +187,14 @@ TEST_P(PrinterLinkTest, EmergencyStopWaitsForTheLinkIsResentAndRefusesStartsUnti
   auto refused = link->startPrint("step-01.gcode");
   ASSERT_TRUE(readyAtOnce(refused));
   EXPECT_EQ(refused.get().error().code, core::ErrorCode::InvalidParameter);
-  EXPECT_EQ(countRequests(sim->requests(), [&](const PrinterRequestRecord& r) { return isEmergencyStop(GetParam(), r); }),
-            0);
+  EXPECT_EQ(
+      countRequests(sim->requests(), [&](const PrinterRequestRecord& r) { return isEmergencyStop(GetParam(), r); }), 0);
   sim->restoreLink();
   EXPECT_TRUE(outcome(std::move(stopped)).ok());
   EXPECT_TRUE(link->status().stop.confirmed);
   EXPECT_GE(link->status().stop.writes, 1u);
-  EXPECT_GE(countRequests(sim->requests(), [&](const PrinterRequestRecord& r) { return isEmergencyStop(GetParam(), r); }),
-            1);
+  EXPECT_GE(
+      countRequests(sim->requests(), [&](const PrinterRequestRecord& r) { return isEmergencyStop(GetParam(), r); }), 1);
   EXPECT_EQ(sim->state().firmwareState, "shutdown");
   EXPECT_TRUE(link->clearStop().ok());
 }

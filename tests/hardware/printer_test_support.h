@@ -51,7 +51,7 @@ inline std::unique_ptr<PrinterLink> moonrakerLinkTo(int port, PrinterLinkOptions
 }
 
 inline std::unique_ptr<PrinterLink> octoPrintLinkTo(int port, const std::string& apiKey = kOctoPrintSimulatorApiKey,
-                                                   PrinterLinkOptions options = fastPrinterOptions()) {
+                                                    PrinterLinkOptions options = fastPrinterOptions()) {
   OctoPrintSettings settings;
   settings.host = "127.0.0.1";
   settings.port = port;

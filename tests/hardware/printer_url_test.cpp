@@ -1,35 +1,77 @@
+// Printer addresses: which protocol a URL names (makePrinterLinkFromUrl), and how each protocol reads its host
+// and port (parseMoonrakerUrl, parseOctoPrintUrl), with their refusals.
 #include "multidir/hardware/printer_url.h"
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
+#include "multidir/hardware/moonraker_link.h"
+#include "multidir/hardware/octoprint_link.h"
+
 namespace multidir::hardware {
 namespace {
 
-TEST(PrinterUrl, HttpAndBareAddressesStayMoonraker) {
-  EXPECT_EQ(printerUrlScheme("http://192.168.0.20:7125").value(), "moonraker");
-  EXPECT_EQ(printerUrlScheme("192.168.0.20:7125").value(), "moonraker");
-  EXPECT_EQ(printerUrlScheme("moonraker://192.168.0.20").value(), "moonraker");
-  const auto link = makePrinterLinkFromUrl("192.168.0.20", "");
-  ASSERT_TRUE(link.ok()) << link.error().describe();
-  EXPECT_EQ((*link)->name(), "Moonraker printer at 192.168.0.20:7125");
+struct UrlCase {
+  std::string url;
+  std::string linkName;  // the link's name(): protocol, host and port as read
+};
+
+TEST(PrinterUrl, EachSchemeNamesItsProtocolHostAndDefaultPort) {
+  const std::vector<UrlCase> cases = {
+      {"http://192.168.0.20:7125", "Moonraker printer at 192.168.0.20:7125"},
+      {"http://printer.local/", "Moonraker printer at printer.local:80"},
+      {"127.0.0.1", "Moonraker printer at 127.0.0.1:7125"},
+      {"moonraker://printer.local", "Moonraker printer at printer.local:7125"},
+      {"octoprint://192.168.0.21:5000", "OctoPrint printer at 192.168.0.21:5000"},
+      {"octoprint://octopi.local/", "OctoPrint printer at octopi.local:80"},
+  };
+  for (const UrlCase& c : cases) {
+    const auto link = makePrinterLinkFromUrl(c.url, "KEY");
+    ASSERT_TRUE(link.ok()) << c.url << ": " << link.error().describe();
+    EXPECT_EQ((*link)->name(), c.linkName) << c.url;
+  }
+  ASSERT_TRUE(parseOctoPrintUrl("http://octopi.local").ok());
+  EXPECT_EQ(parseOctoPrintUrl("http://octopi.local")->port, 80);
+  EXPECT_EQ(parseOctoPrintUrl("octopi.local")->port, 80);
 }
 
-TEST(PrinterUrl, OctoPrintSchemeMakesAnOctoPrintLinkWithTheKey) {
-  const auto link = makePrinterLinkFromUrl("octoprint://octopi.local:5000", "KEY");
-  ASSERT_TRUE(link.ok()) << link.error().describe();
-  EXPECT_EQ((*link)->name(), "OctoPrint printer at octopi.local:5000");
-  const auto keyless = makePrinterLinkFromUrl("octoprint://octopi.local", "");
-  ASSERT_FALSE(keyless.ok());
-  EXPECT_NE(keyless.error().message.find("API key"), std::string::npos);
+struct RefusedCase {
+  std::string url;
+  std::string says;
+};
+
+TEST(PrinterUrl, RefusesHttpsPathsNoHostAndBadPortsSayingWhy) {
+  const std::vector<RefusedCase> cases = {
+      {"https://p:7125", "https is not supported"},
+      {"http://p:7125/api", "without a path"},
+      {"p:99999", "1 to 65535"},
+      {"http://:80", "names no host"},
+      {"octoprint://octopi/api", "without a path"},
+      {"octoprint://octopi:0", "1 to 65535"},
+      {"octoprint://:80", "names no host"},
+      {"prusalink://10.0.0.5", "unknown printer scheme 'prusalink://'"},
+  };
+  for (const RefusedCase& c : cases) {
+    const auto link = makePrinterLinkFromUrl(c.url, "KEY");
+    ASSERT_FALSE(link.ok()) << c.url;
+    EXPECT_EQ(link.error().code, core::ErrorCode::InvalidParameter) << c.url;
+    EXPECT_NE(link.error().message.find(c.says), std::string::npos) << c.url << ": " << link.error().message;
+  }
 }
 
 TEST(PrinterUrl, AnUnknownSchemeNamesTheOnesThereAre) {
-  const auto link = makePrinterLinkFromUrl("prusalink://10.0.0.5", "");
+  const auto link = makePrinterLinkFromUrl("ftp://10.0.0.5", "");
   ASSERT_FALSE(link.ok());
-  EXPECT_EQ(link.error().code, core::ErrorCode::InvalidParameter);
-  EXPECT_NE(link.error().message.find("unknown printer scheme 'prusalink://'"), std::string::npos);
   EXPECT_NE(link.error().message.find("octoprint://HOST:PORT"), std::string::npos);
   EXPECT_NE(link.error().message.find("moonraker://HOST:PORT"), std::string::npos);
+}
+
+TEST(PrinterUrl, OctoPrintNeedsItsApiKeyMoonrakerDoesNot) {
+  EXPECT_TRUE(makePrinterLinkFromUrl("192.168.0.20", "").ok());
+  const auto keyless = makePrinterLinkFromUrl("octoprint://octopi.local", "");
+  ASSERT_FALSE(keyless.ok());
+  EXPECT_NE(keyless.error().message.find("OctoPrint needs an API key"), std::string::npos);
 }
 
 }  // namespace

@@ -84,8 +84,16 @@ core::Result<HostPort> parseHostPortUrl(const std::string& url, const std::strin
   return out;
 }
 
-HttpPrinterLink::HttpPrinterLink(HttpEndpoint endpoint, PrinterLinkOptions options, std::string name)
-    : m_endpoint(std::move(endpoint)), m_options(std::move(options)), m_name(std::move(name)) {
+core::Status validateEndpoint(const std::string& host, int port, const PrinterLinkOptions& options) {
+  if (host.empty()) return invalidParameter("the printer's host is empty", "printer");
+  if (port < 1 || port > 65535) return invalidParameter("the printer's port must be 1..65535", "printer");
+  return validate(options);
+}
+
+HttpPrinterLink::HttpPrinterLink(const std::string& protocol, HttpEndpoint endpoint, PrinterLinkOptions options)
+    : m_endpoint(std::move(endpoint)),
+      m_options(std::move(options)),
+      m_name(protocol + " printer at " + m_endpoint.host + ":" + std::to_string(m_endpoint.port)) {
   if (!m_options.steadyNow) m_options.steadyNow = [] { return Clock::now(); };
 }
 
@@ -130,6 +138,17 @@ void HttpPrinterLink::disconnect() {
   m_stopWaiters.clear();
 }
 
+std::future<core::Status> HttpPrinterLink::upload(const std::string& localPath, const std::string& remoteName) {
+  if (const std::string problem = plainFileNameProblem(remoteName); !problem.empty())
+    return readyStatus(invalidParameter(problem, m_name));
+  return submit("uploading " + remoteName, true, [this, localPath, remoteName](httplib::Client&) {
+    const core::Result<std::string> content = readFileToUpload(localPath);
+    if (!content) return core::Status(content.error());
+    auto uploader = client(m_options.uploadTimeout);
+    return postFile(*uploader, *content, remoteName);
+  });
+}
+
 std::future<core::Status> HttpPrinterLink::emergencyStop() {
   std::promise<core::Status> promise;
   std::future<core::Status> future = promise.get_future();
@@ -161,8 +180,8 @@ core::Status HttpPrinterLink::clearStop() {
 PrinterStatus HttpPrinterLink::status() const {
   std::lock_guard<std::mutex> lock(m_mutex);
   PrinterStatus s = m_status;
-  s.linkLost =
-      s.polls == 0 || (s.link != LinkState::Connected && m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter);
+  s.linkLost = s.polls == 0 ||
+               (s.link != LinkState::Connected && m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter);
   return s;
 }
 
@@ -192,9 +211,9 @@ std::future<core::Status> HttpPrinterLink::submit(const std::string& what, bool 
       return future;
     }
     if (refusedWhileStopped && m_status.stop.latched()) {
-      promise.set_value(invalidParameter("the emergency stop is latched: " + what +
-                                             " was not sent; clear the stop (and restart the printer) first",
-                                         m_name));
+      promise.set_value(invalidParameter(
+          "the emergency stop is latched: " + what + " was not sent; clear the stop (and restart the printer) first",
+          m_name));
       return future;
     }
     m_queue.push_back(Pending{std::move(command), std::move(promise), what});
@@ -213,8 +232,8 @@ void HttpPrinterLink::poll() {
   const core::Result<PrinterReading> reading = readStatus(*c);
   std::lock_guard<std::mutex> lock(m_mutex);
   if (!reading) {
-    m_status.link = m_status.polls == 0 && m_status.link == LinkState::Connecting ? LinkState::Connecting
-                                                                                  : LinkState::Reconnecting;
+    m_status.link =
+        m_status.polls == 0 && m_status.link == LinkState::Connecting ? LinkState::Connecting : LinkState::Reconnecting;
     m_status.lastError = reading.error().describe();
     m_lastPollFailed = true;
     if (!m_firstDone) finishFirst(reading.error());

@@ -41,6 +41,8 @@ class HttpPrinterLink : public PrinterLink {
 
   core::Status connect() override;
   void disconnect() override;
+  // Refuses a name that is not a plain file name, reads the file (FileNotFound), and queues postFile().
+  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override;
   std::future<core::Status> emergencyStop() override;
   core::Status clearStop() override;
   PrinterStatus status() const override;
@@ -49,7 +51,8 @@ class HttpPrinterLink : public PrinterLink {
  protected:
   using Command = std::function<core::Status(httplib::Client&)>;
 
-  HttpPrinterLink(HttpEndpoint endpoint, PrinterLinkOptions options, std::string name);
+  // name(): "<protocol> printer at HOST:PORT".
+  HttpPrinterLink(const std::string& protocol, HttpEndpoint endpoint, PrinterLinkOptions options);
 
   // Queues `command` for the worker (it gets a client with the request timeout). `what` names it in errors
   // ("uploading step-01.gcode"); refusedWhileStopped: refused at once while an emergency stop is latched.
@@ -62,6 +65,9 @@ class HttpPrinterLink : public PrinterLink {
   // disconnect() in its destructor, so that no thread calls them while it is destroyed.
   virtual core::Result<PrinterReading> readStatus(httplib::Client& client) = 0;
   virtual core::Status sendEmergencyStop(httplib::Client& client) = 0;
+  // Sends the file's bytes as `remoteName` (`uploader` waits uploadTimeout for the reply).
+  virtual core::Status postFile(httplib::Client& uploader, const std::string& content,
+                                const std::string& remoteName) = 0;
 
  private:
   struct Pending {
@@ -117,5 +123,20 @@ struct HostPort {
 };
 core::Result<HostPort> parseHostPortUrl(const std::string& url, const std::string& scheme, int defaultPortWithScheme,
                                         int defaultPort, const std::string& example);
+
+// A protocol's settings (host and port filled in) from its URL, as parseHostPortUrl reads it.
+template <typename Settings>
+core::Result<Settings> settingsFromUrl(const std::string& url, const std::string& scheme, int defaultPortWithHttp,
+                                       int defaultPort, const std::string& example) {
+  const core::Result<HostPort> parsed = parseHostPortUrl(url, scheme, defaultPortWithHttp, defaultPort, example);
+  if (!parsed) return parsed.error();
+  Settings settings;
+  settings.host = parsed->host;
+  settings.port = parsed->port;
+  return settings;
+}
+
+// InvalidParameter for an empty host, a port out of 1..65535, or options out of range.
+core::Status validateEndpoint(const std::string& host, int port, const PrinterLinkOptions& options);
 
 }  // namespace multidir::hardware

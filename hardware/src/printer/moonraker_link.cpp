@@ -16,16 +16,9 @@ using Json = nlohmann::json;
 class MoonrakerLink : public HttpPrinterLink {
  public:
   MoonrakerLink(const MoonrakerSettings& settings, PrinterLinkOptions options)
-      : HttpPrinterLink(HttpEndpoint{settings.host, settings.port, settings.apiKey}, std::move(options),
-                        "Moonraker printer at " + settings.host + ":" + std::to_string(settings.port)) {}
+      : HttpPrinterLink("Moonraker", HttpEndpoint{settings.host, settings.port, settings.apiKey}, std::move(options)) {}
   ~MoonrakerLink() override { disconnect(); }
 
-  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override {
-    if (const std::string problem = plainFileNameProblem(remoteName); !problem.empty())
-      return readyStatus(invalidParameter(problem, name()));
-    return submit("uploading " + remoteName, true,
-                  [this, localPath, remoteName](httplib::Client&) { return doUpload(localPath, remoteName); });
-  }
   std::future<core::Status> startPrint(const std::string& remoteName) override {
     return submit("starting " + remoteName, true, [this, remoteName](httplib::Client& client) {
       return post(client, "/printer/print/start?filename=" + percentEncode(remoteName));
@@ -82,14 +75,11 @@ class MoonrakerLink : public HttpPrinterLink {
     return core::Done{};
   }
 
-  core::Status doUpload(const std::string& localPath, const std::string& remoteName) const {
-    const core::Result<std::string> content = readFileToUpload(localPath);
-    if (!content) return content.error();
-    auto uploader = client(options().uploadTimeout);
-    const httplib::MultipartFormDataItems items = {{"file", *content, remoteName, "application/octet-stream"},
+  core::Status postFile(httplib::Client& uploader, const std::string& content, const std::string& remoteName) override {
+    const httplib::MultipartFormDataItems items = {{"file", content, remoteName, "application/octet-stream"},
                                                    {"root", "gcodes", "", ""}};
     const core::Result<Json> answered =
-        reply(uploader->Post("/server/files/upload", items), "POST /server/files/upload (" + remoteName + ")");
+        reply(uploader.Post("/server/files/upload", items), "POST /server/files/upload (" + remoteName + ")");
     if (!answered) return answered.error();
     const Json& result = *answered;
     if (!result.is_object() || !result.contains("item") || !result["item"].is_object())
@@ -103,19 +93,12 @@ class MoonrakerLink : public HttpPrinterLink {
 }  // namespace
 
 core::Result<MoonrakerSettings> parseMoonrakerUrl(const std::string& url) {
-  const core::Result<HostPort> parsed = parseHostPortUrl(url, "moonraker", 80, 7125, "http://192.168.0.20:7125");
-  if (!parsed) return parsed.error();
-  MoonrakerSettings settings;
-  settings.host = parsed->host;
-  settings.port = parsed->port;
-  return settings;
+  return settingsFromUrl<MoonrakerSettings>(url, "moonraker", 80, 7125, "http://192.168.0.20:7125");
 }
 
 core::Result<std::unique_ptr<PrinterLink>> makeMoonrakerLink(const MoonrakerSettings& settings,
                                                              const PrinterLinkOptions& options) {
-  if (settings.host.empty()) return invalidParameter("the printer's host is empty", "printer");
-  if (settings.port < 1 || settings.port > 65535) return invalidParameter("the printer's port must be 1..65535", "printer");
-  if (core::Status valid = validate(options); !valid) return valid.error();
+  if (core::Status valid = validateEndpoint(settings.host, settings.port, options); !valid) return valid.error();
   return std::unique_ptr<PrinterLink>(std::make_unique<MoonrakerLink>(settings, options));
 }
 

@@ -27,19 +27,13 @@ std::string octoPrintWords(const httplib::Response& res) {
 class OctoPrintLink : public HttpPrinterLink {
  public:
   OctoPrintLink(const OctoPrintSettings& settings, PrinterLinkOptions options)
-      : HttpPrinterLink(HttpEndpoint{settings.host, settings.port, settings.apiKey}, std::move(options),
-                        "OctoPrint printer at " + settings.host + ":" + std::to_string(settings.port)) {}
+      : HttpPrinterLink("OctoPrint", HttpEndpoint{settings.host, settings.port, settings.apiKey}, std::move(options)) {}
   ~OctoPrintLink() override { disconnect(); }
 
-  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override {
-    if (const std::string problem = plainFileNameProblem(remoteName); !problem.empty())
-      return readyStatus(invalidParameter(problem, name()));
-    return submit("uploading " + remoteName, true,
-                  [this, localPath, remoteName](httplib::Client&) { return doUpload(localPath, remoteName); });
-  }
   std::future<core::Status> startPrint(const std::string& remoteName) override {
     return submit("starting " + remoteName, true, [this, remoteName](httplib::Client& client) {
-      return postJson(client, "/api/files/local/" + percentEncode(remoteName), {{"command", "select"}, {"print", true}});
+      return postJson(client, "/api/files/local/" + percentEncode(remoteName),
+                      {{"command", "select"}, {"print", true}});
     });
   }
   std::future<core::Status> pausePrint() override {
@@ -53,8 +47,9 @@ class OctoPrintLink : public HttpPrinterLink {
     });
   }
   std::future<core::Status> cancelPrint() override {
-    return submit("cancelling the print", false,
-                  [this](httplib::Client& client) { return postJson(client, "/api/job", {{"command", "cancel"}}); });
+    return submit("cancelling the print", false, [this](httplib::Client& client) {
+      return postJson(client, "/api/job", {{"command", "cancel"}});
+    });
   }
 
  protected:
@@ -76,8 +71,8 @@ class OctoPrintLink : public HttpPrinterLink {
   // connection to the printer (it already closed it, after an error or an earlier M112): nothing prints
   // through it, so the stop counts as answered.
   core::Status sendEmergencyStop(httplib::Client& client) override {
-    const httplib::Result res = client.Post("/api/printer/command", Json{{"commands", {"M112"}}}.dump(),
-                                            "application/json");
+    const httplib::Result res =
+        client.Post("/api/printer/command", Json{{"commands", {"M112"}}}.dump(), "application/json");
     if (res && res->status == kConflict) return core::Done{};
     const core::Result<Json> answered = reply(res, "POST /api/printer/command (M112)");
     if (!answered) return answered.error();
@@ -128,22 +123,19 @@ class OctoPrintLink : public HttpPrinterLink {
     return core::Done{};
   }
 
-  core::Status doUpload(const std::string& localPath, const std::string& remoteName) const {
-    const core::Result<std::string> content = readFileToUpload(localPath);
-    if (!content) return content.error();
-    auto uploader = client(options().uploadTimeout);
-    const httplib::MultipartFormDataItems items = {{"file", *content, remoteName, "application/octet-stream"},
+  core::Status postFile(httplib::Client& uploader, const std::string& content, const std::string& remoteName) override {
+    const httplib::MultipartFormDataItems items = {{"file", content, remoteName, "application/octet-stream"},
                                                    {"select", "false", "", ""},
                                                    {"print", "false", "", ""}};
     const core::Result<Json> answered =
-        reply(uploader->Post("/api/files/local", items), "POST /api/files/local (" + remoteName + ")");
+        reply(uploader.Post("/api/files/local", items), "POST /api/files/local (" + remoteName + ")");
     if (!answered) return answered.error();
     const Json& result = *answered;
     if (!result.is_object() || !result.contains("files") || !result["files"].is_object() ||
         !result["files"].contains("local"))
-      return core::Error{core::ErrorCode::DeviceFault,
-                         "the upload of " + remoteName + " was answered without \"files\".\"local\": is this OctoPrint?",
-                         name()};
+      return core::Error{
+          core::ErrorCode::DeviceFault,
+          "the upload of " + remoteName + " was answered without \"files\".\"local\": is this OctoPrint?", name()};
     return core::Done{};
   }
 
@@ -153,24 +145,17 @@ class OctoPrintLink : public HttpPrinterLink {
 }  // namespace
 
 core::Result<OctoPrintSettings> parseOctoPrintUrl(const std::string& url) {
-  const core::Result<HostPort> parsed = parseHostPortUrl(url, "octoprint", 80, 80, "octoprint://192.168.0.21:80");
-  if (!parsed) return parsed.error();
-  OctoPrintSettings settings;
-  settings.host = parsed->host;
-  settings.port = parsed->port;
-  return settings;
+  return settingsFromUrl<OctoPrintSettings>(url, "octoprint", 80, 80, "octoprint://192.168.0.21:80");
 }
 
 core::Result<std::unique_ptr<PrinterLink>> makeOctoPrintLink(const OctoPrintSettings& settings,
                                                              const PrinterLinkOptions& options) {
-  if (settings.host.empty()) return invalidParameter("the printer's host is empty", "printer");
-  if (settings.port < 1 || settings.port > 65535) return invalidParameter("the printer's port must be 1..65535", "printer");
+  if (core::Status valid = validateEndpoint(settings.host, settings.port, options); !valid) return valid.error();
   if (settings.apiKey.empty())
     return invalidParameter(
         "OctoPrint needs an API key: create one in OctoPrint's Settings > Application Keys (or User Settings > "
         "Application Keys) and pass it with --api-key",
         "--api-key");
-  if (core::Status valid = validate(options); !valid) return valid.error();
   return std::unique_ptr<PrinterLink>(std::make_unique<OctoPrintLink>(settings, options));
 }
 

@@ -39,8 +39,8 @@ Kind kindOf(const std::string& state) {
   if (state == "Offline" || state == "Closed" || state == "Unknown") return Kind::Offline;
   if (startsWith(state, "Opening") || startsWith(state, "Detecting") || startsWith(state, "Connecting"))
     return Kind::Connecting;
-  static const char* const kActive[] = {"Printing", "Pausing", "Resuming", "Finishing", "Cancelling", "Starting",
-                                        "Sending file to SD", "Transferring file to SD"};
+  static const char* const kActive[] = {"Printing",   "Pausing",  "Resuming",           "Finishing",
+                                        "Cancelling", "Starting", "Sending file to SD", "Transferring file to SD"};
   for (const char* active : kActive)
     if (startsWith(state, active)) return Kind::Active;
   return Kind::Offline;  // an unknown word: not connected as far as MultiDir can tell (nothing is started)

@@ -11,10 +11,10 @@
 namespace multidir::hardware {
 
 struct OctoPrintJobReading {
-  std::string stateText;              // "Operational", "Printing", "Paused", "Offline after error", ...
-  std::string error;                  // the reply's "error" ("" when absent or empty)
-  std::string file;                   // job.file.name ("" when no file is selected)
-  std::optional<double> completion;   // progress.completion, percent (none when null)
+  std::string stateText;             // "Operational", "Printing", "Paused", "Offline after error", ...
+  std::string error;                 // the reply's "error" ("" when absent or empty)
+  std::string file;                  // job.file.name ("" when no file is selected)
+  std::optional<double> completion;  // progress.completion, percent (none when null)
 };
 
 struct OctoPrintPrinterReading {

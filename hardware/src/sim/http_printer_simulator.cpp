@@ -35,8 +35,7 @@ core::Status HttpPrinterSimulator::start() {
   if (!(m_options.speed > 0.0) || m_options.speed > 100000.0)
     return core::Error{core::ErrorCode::InvalidParameter, "the speed must be above 0 and at most 100000", "--speed"};
   if (!(m_options.faultAtProgress >= 0.0) || m_options.faultAtProgress > 1.0)
-    return core::Error{core::ErrorCode::InvalidParameter, "the fault's progress must be between 0 and 1",
-                       "--fault-at"};
+    return core::Error{core::ErrorCode::InvalidParameter, "the fault's progress must be between 0 and 1", "--fault-at"};
   if (core::Status own = validateOwnOptions(); !own) return own;
   std::lock_guard<std::mutex> serverLock(m_serverMutex);
   if (m_server) return core::Done{};

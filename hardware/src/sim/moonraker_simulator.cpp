@@ -72,7 +72,6 @@ class MoonrakerServer : public sim::HttpPrinterSimulator {
                                                                std::string& detail) { upload(req, res, detail); }));
   }
 
-
  private:
   void command(httplib::Response& res, const std::string& error) {
     if (!error.empty()) return replyError(res, 400, error);
@@ -139,7 +138,6 @@ class MoonrakerServer : public sim::HttpPrinterSimulator {
                      {"print_queued", false},
                      {"action", "create_file"}}}});
   }
-
 };
 
 }  // namespace

@@ -70,15 +70,18 @@ class OctoPrintServer : public sim::HttpPrinterSimulator {
                  replyJson(res, 200, Json{{"api", "0.1"}, {"server", "1.10.2"}, {"text", "OctoPrint (simulated)"}});
                }));
     server.Get("/api/job", handled("GET", [this](const Request&, Response& res, std::string&) { job(res); }));
-    server.Post("/api/job",
-                handled("POST", [this](const Request& req, Response& res, std::string& detail) { jobCommand(req, res, detail); }));
+    server.Post("/api/job", handled("POST", [this](const Request& req, Response& res, std::string& detail) {
+                  jobCommand(req, res, detail);
+                }));
     server.Get("/api/printer", handled("GET", [this](const Request&, Response& res, std::string&) { printer(res); }));
     server.Post("/api/printer/command", handled("POST", [this](const Request& req, Response& res, std::string& detail) {
                   printerCommand(req, res, detail);
                 }));
-    server.Post("/api/files/local",
-                handled("POST", [this](const Request& req, Response& res, std::string& detail) { upload(req, res, detail); }));
-    server.Post(R"(/api/files/local/([^/]+))", handled("POST", [this](const Request& req, Response& res, std::string& detail) {
+    server.Post("/api/files/local", handled("POST", [this](const Request& req, Response& res, std::string& detail) {
+                  upload(req, res, detail);
+                }));
+    server.Post(R"(/api/files/local/([^/]+))",
+                handled("POST", [this](const Request& req, Response& res, std::string& detail) {
                   fileCommand(req, res, detail);
                 }));
     server.Get("/api/connection", handled("GET", [this](const Request&, Response& res, std::string&) {
@@ -126,7 +129,8 @@ class OctoPrintServer : public sim::HttpPrinterSimulator {
     // OctoPrint sets the completion to 100 % when a job is done and clears the progress when it is cancelled.
     Json completion = nullptr;
     if (ran && state == "complete") completion = 100.0;
-    if (ran && (state == "printing" || state == "paused" || state == "error")) completion = m_printer.progress() * 100.0;
+    if (ran && (state == "printing" || state == "paused" || state == "error"))
+      completion = m_printer.progress() * 100.0;
     const bool active = ran && (state == "printing" || state == "paused");
     replyJson(res, 200,
               Json{{"job",
@@ -186,20 +190,21 @@ class OctoPrintServer : public sim::HttpPrinterSimulator {
     Json parsed;
     if (body(req, parsed) == nullptr) return replyError(res, 400, "Expected content-type JSON with a command");
     const std::string command = parsed["command"].get<std::string>();
-    const std::string action = parsed.contains("action") && parsed["action"].is_string()
-                                   ? parsed["action"].get<std::string>()
-                                   : "toggle";
+    const std::string action =
+        parsed.contains("action") && parsed["action"].is_string() ? parsed["action"].get<std::string>() : "toggle";
     detail = command == "pause" ? command + " " + action : command;
     if (!operational()) return replyError(res, 409, "Printer is not operational");
     const std::string& state = m_printer.jobState();
     const bool active = state == "printing" || state == "paused";
     if (command == "cancel") {
-      if (!active) return replyError(res, 409, "Printer is neither printing nor paused, 'cancel' command cannot be performed");
+      if (!active)
+        return replyError(res, 409, "Printer is neither printing nor paused, 'cancel' command cannot be performed");
       m_printer.cancel();
       return noContent(res);
     }
     if (command == "pause") {
-      if (!active) return replyError(res, 409, "Printer is neither printing nor paused, 'pause' command cannot be performed");
+      if (!active)
+        return replyError(res, 409, "Printer is neither printing nor paused, 'pause' command cannot be performed");
       if (action == "pause" || (action == "toggle" && state == "printing")) {
         if (state == "printing") m_printer.pause();
         return noContent(res);
@@ -250,8 +255,7 @@ class OctoPrintServer : public sim::HttpPrinterSimulator {
   }
 
   void upload(const httplib::Request& req, httplib::Response& res, std::string& detail) {
-    if (!req.is_multipart_form_data() || !req.has_file("file"))
-      return replyError(res, 400, "No file included");
+    if (!req.is_multipart_form_data() || !req.has_file("file")) return replyError(res, 400, "No file included");
     const httplib::MultipartFormData file = req.get_file_value("file");
     detail = file.filename;
     if (file.filename.empty() || file.filename.find('/') != std::string::npos ||
@@ -263,7 +267,9 @@ class OctoPrintServer : public sim::HttpPrinterSimulator {
     if (file.filename == m_printer.currentFile() && (state == "printing" || state == "paused"))
       return replyError(res, 409, "Trying to overwrite file that is currently being printed: " + file.filename);
     m_printer.storeFile(file.filename, file.content);
-    const auto flag = [&](const char* name) { return req.has_file(name) && req.get_file_value(name).content == "true"; };
+    const auto flag = [&](const char* name) {
+      return req.has_file(name) && req.get_file_value(name).content == "true";
+    };
     if (flag("select") || flag("print")) m_selected = file.filename;
     if (flag("print") && operational() && state != "printing" && state != "paused") (void)startSelected(res);
     res.set_header("Location", "/api/files/local/" + file.filename);
