@@ -63,9 +63,14 @@ inline std::unique_ptr<PrinterLink> octoPrintLinkTo(int port, const std::string&
 
 enum class PrinterProtocol { Moonraker, OctoPrint };
 
-inline std::string protocolName(const testing::TestParamInfo<PrinterProtocol>& info) {
-  return info.param == PrinterProtocol::Moonraker ? "Moonraker" : "OctoPrint";
+inline const char* protocolText(PrinterProtocol protocol) {
+  return protocol == PrinterProtocol::Moonraker ? "Moonraker" : "OctoPrint";
 }
+inline std::string protocolName(const testing::TestParamInfo<PrinterProtocol>& info) {
+  return protocolText(info.param);
+}
+// How GoogleTest prints the parameter (test lists, ctest names).
+inline void PrintTo(PrinterProtocol protocol, std::ostream* out) { *out << protocolText(protocol); }
 
 inline std::unique_ptr<PrinterSimulator> printerSimulator(PrinterProtocol protocol, PrinterSimulatorOptions options) {
   if (protocol == PrinterProtocol::Moonraker) return std::make_unique<MoonrakerSimulator>(options);
