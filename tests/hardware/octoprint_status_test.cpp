@@ -46,6 +46,8 @@ TEST(OctoPrintStatus, EachStateStringMapsAsTheTableSays) {
       {"Closed", PrinterJobState::Standby, "offline"},
       {"Opening serial connection", PrinterJobState::Standby, "connecting"},
       {"Detecting baudrate", PrinterJobState::Standby, "connecting"},
+      {"Reconnecting", PrinterJobState::Standby, "connecting"},
+      {"Unknown State (42)", PrinterJobState::Standby, "offline"},
   };
   for (const MappingCase& c : cases) {
     OctoPrintJobTracker tracker;  // fresh: no job seen before

@@ -37,7 +37,8 @@ Kind kindOf(const std::string& state) {
   if (startsWith(state, "Error") || startsWith(state, "Offline after error") || startsWith(state, "Offline (Error"))
     return Kind::Error;
   if (state == "Offline" || state == "Closed" || state == "Unknown") return Kind::Offline;
-  if (startsWith(state, "Opening") || startsWith(state, "Detecting") || startsWith(state, "Connecting"))
+  if (startsWith(state, "Opening") || startsWith(state, "Detecting") || startsWith(state, "Connecting") ||
+      state == "Reconnecting")
     return Kind::Connecting;
   static const char* const kActive[] = {"Printing",   "Pausing",  "Resuming",           "Finishing",
                                         "Cancelling", "Starting", "Sending file to SD", "Transferring file to SD"};
