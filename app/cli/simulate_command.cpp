@@ -166,8 +166,9 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--api-key"},
-                                      {"--rotary", "--robot", "--help"}, "simulate");
+  const ParsedArgs parsed =
+      parseArgs(args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--api-key"},
+                {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
     return kExitOk;
@@ -179,7 +180,8 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
   for (const char* printerOnly : {"--speed", "--fault", "--fault-at", "--api-key"})
     if (parsed.has(printerOnly))
       throw UsageError(std::string("multidir simulate: ") + printerOnly +
-                       " is for the printer simulator: add --printer moonraker or --printer octoprint. Run 'multidir help simulate'.");
+                       " is for the printer simulator: add --printer moonraker or --printer octoprint. Run "
+                       "'multidir help simulate'.");
   hardware::SimulatorOptions options;
   const bool rotary = parsed.has("--rotary");
   const bool robot = parsed.has("--robot");
