@@ -66,8 +66,8 @@ extern "C" void onStopSignal(int) { g_stopRequested = true; }
 int wholeNumber(const std::string& text, const std::string& option, int low, int high) {
   const double value = parseNumber(text, option);
   if (value != std::floor(value) || value < low || value > high)
-    throw UsageError("multidir simulate: " + option + " must be a whole number from " + std::to_string(low) +
-                     " to " + std::to_string(high) + ", not '" + text + "'. Run 'multidir help simulate'.");
+    throw UsageError("multidir simulate: " + option + " must be a whole number from " + std::to_string(low) + " to " +
+                     std::to_string(high) + ", not '" + text + "'. Run 'multidir help simulate'.");
   return static_cast<int>(value);
 }
 
@@ -252,10 +252,10 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(args,
-                                      {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at",
-                                       "--fault-at-line", "--api-key"},
-                                      {"--rotary", "--robot", "--help"}, "simulate");
+  const ParsedArgs parsed = parseArgs(
+      args,
+      {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key"},
+      {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
     return kExitOk;

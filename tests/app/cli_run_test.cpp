@@ -213,9 +213,9 @@ TEST(CliRun, OctoPrintWithoutAnApiKeyOrAnUnknownSchemeIsAUsageError) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.PrinterUrl");
   expectRunUsageError("--printer octoprint://127.0.0.1:5000 --platform 127.0.0.1:502", dir,
                       {"OctoPrint needs an API key"});
-  expectRunUsageError("--printer ftp://127.0.0.1 --platform 127.0.0.1:502", dir,
-                      {"unknown printer scheme 'ftp://'", "moonraker://HOST:PORT", "octoprint://HOST:PORT",
-                       "serial:///dev/ttyACM0"});
+  expectRunUsageError(
+      "--printer ftp://127.0.0.1 --platform 127.0.0.1:502", dir,
+      {"unknown printer scheme 'ftp://'", "moonraker://HOST:PORT", "octoprint://HOST:PORT", "serial:///dev/ttyACM0"});
 }
 
 TEST(CliRun, MissingPrinterOrPlatformIsAUsageError) {

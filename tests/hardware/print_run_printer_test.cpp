@@ -61,7 +61,8 @@ class PrintRunWithPrinterTest : public ::testing::TestWithParam<PrinterProtocol>
     ASSERT_TRUE(outcome(platform->home()).ok());
     ASSERT_TRUE(eventually([&] { return platform->status().homed && !platform->status().homing; }));
     positioner = makePositioner(*platform);
-    const auto dir = std::filesystem::path(testing::TempDir()) / (std::string("print-run-printer-") + protocolText(GetParam()));
+    const auto dir =
+        std::filesystem::path(testing::TempDir()) / (std::string("print-run-printer-") + protocolText(GetParam()));
     for (int i = 1; i <= 3; ++i)
       gcodes.push_back(writeFile(dir / ("step-0" + std::to_string(i) + ".gcode"), shortGcode()));
   }
@@ -256,8 +257,8 @@ TEST_P(PrintRunWithPrinterTest, EmergencyStopDuringPrintingReachesBothDevicesWit
   const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
   RecordProperty("platformEmergencyStopMs", std::to_string(ms(platformAt - called)));
   RecordProperty("printerEmergencyStopMs", std::to_string(ms(printerAt - called)));
-  std::cout << "[ measured ] " << protocolText(GetParam()) << ": e-stop reached the platform after " << ms(platformAt - called)
-            << " ms, the printer after " << ms(printerAt - called) << " ms\n";
+  std::cout << "[ measured ] " << protocolText(GetParam()) << ": e-stop reached the platform after "
+            << ms(platformAt - called) << " ms, the printer after " << ms(printerAt - called) << " ms\n";
   EXPECT_TRUE(printerSim->halted());
   EXPECT_TRUE(logMentions(run, "confirmed the emergency stop"));
 }

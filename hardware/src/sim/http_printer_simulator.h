@@ -66,11 +66,11 @@ class HttpPrinterSimulator {
   SimulatedPrinter m_printer;
 
  private:
-  core::Status listen();  // requires m_serverMutex
-  void closeServer();     // requires m_serverMutex
-  void advanceLocked();   // requires m_mutex: runs the printer up to now
-  [[nodiscard]] bool faultArmed() const;  // requires m_mutex: options.fault not injected yet
-  void injectFault(Clock::time_point at);     // requires m_mutex: options.fault, now
+  core::Status listen();                   // requires m_serverMutex
+  void closeServer();                      // requires m_serverMutex
+  void advanceLocked();                    // requires m_mutex: runs the printer up to now
+  [[nodiscard]] bool faultArmed() const;   // requires m_mutex: options.fault not injected yet
+  void injectFault(Clock::time_point at);  // requires m_mutex: options.fault, now
   void tickLoop();
 
   mutable std::mutex m_serverMutex;  // the HTTP server's lifetime; never taken while holding m_mutex
