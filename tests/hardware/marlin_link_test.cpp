@@ -174,7 +174,7 @@ TEST_F(MarlinLinkTest, RecoversFromResendsWithSeveralLinesInFlight) {
 }
 
 TEST_F(MarlinLinkTest, ReadsTheHeatersWhileThePrinterWaitsForThem) {
-  startSimulator(2.0);  // 18 simulated seconds of heating take 9 s: the test sees it on the way, even when loaded
+  startSimulator(2.0);  // 18 simulated seconds of heating take 9 s: the test sees them on the way, even when loaded
   auto link = connected();
   ASSERT_TRUE(printing(*link));
   ASSERT_TRUE(eventually(

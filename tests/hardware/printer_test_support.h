@@ -62,13 +62,12 @@ inline PrinterLinkOptions fastPrinterOptions() {
   return options;
 }
 
-// The Marlin simulator's options for tests: its busy keepalive and its temperature lines often enough to keep a
-// fast link (400 ms) alive and its heaters read through long heater waits.
+// The Marlin simulator's options for tests: its busy keepalive often enough to keep a fast link (400 ms)
+// alive through long heater waits.
 inline MarlinSimulatorOptions fastMarlinSimulatorOptions(double speed) {
   MarlinSimulatorOptions options;
   options.speed = speed;
   options.busyInterval = 50ms;
-  options.temperatureInterval = 100ms;
   return options;
 }
 
