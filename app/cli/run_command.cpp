@@ -26,10 +26,10 @@ const char* const kRunHelp =
     "Runs a sliced print job headless (JOB: the folder written by 'multidir slice' for a profile whose platform\n"
     "is driven over Modbus, or its print-job.json). For each step: turns the platform (4-DOF rotary controller\n"
     "or 5-DOF robot arm, as the job's machine says) to the step's orientation, waits until it has settled,\n"
-    "sends the step's G-code to the printer (Klipper through Moonraker: uploaded and started; Marlin over USB:\n"
-    "streamed line by line), follows it until the printer reports it complete, and goes on. The platform\n"
-    "never moves while the printer prints, and the printer never starts while the platform is not at rest at\n"
-    "the step's orientation.\n"
+    "sends the step's G-code to the printer (Klipper through Moonraker, or OctoPrint: uploaded and started;\n"
+    "Marlin over USB: streamed line by line), follows it until the printer reports it complete, and goes on.\n"
+    "The platform never moves while the printer prints, and the printer never starts while the platform is not\n"
+    "at rest at the step's orientation.\n"
     "\n"
     "Every event is logged with its time; a progress line (step, printer progress, temperatures, the job's\n"
     "remaining time from the slicer's estimates) follows the printer. When the printer reports an error, a\n"
@@ -37,14 +37,17 @@ const char* const kRunHelp =
     "stays where it is) and says why; fix it and continue with --from STEP.\n"
     "\n"
     "Ctrl-C stops both devices: the platform's motion and the printer's job (cancelled). A second Ctrl-C sends\n"
-    "both emergency stops (Klipper then needs a FIRMWARE_RESTART, Marlin a reset, the platform a clear fault and\n"
-    "homing).\n"
+    "both emergency stops (Klipper then needs a FIRMWARE_RESTART; OctoPrint sends M112 and disconnects from the\n"
+    "printer, which needs a reset and a Connect in OctoPrint's Connection panel; Marlin a reset; the platform a\n"
+    "clear fault and homing).\n"
     "\n"
     "Options:\n"
-    "  --printer URL        the printer: http://HOST:PORT (Moonraker; default port 80), HOST:PORT or\n"
-    "                       moonraker://HOST[:PORT] (Moonraker; 7125 when absent), or\n"
-    "                       serial:///dev/ttyACM0[?baud=115200] (Marlin over USB serial)\n"
-    "  --api-key KEY        Moonraker's API key, when its [authorization] asks for one\n"
+    "  --printer URL        the printer: Klipper through Moonraker at http://HOST:PORT (default port 80),\n"
+    "                       moonraker://HOST:PORT or HOST:PORT (7125 when absent); OctoPrint at\n"
+    "                       octoprint://HOST:PORT (default port 80; OctoPrint's own server uses 5000); Marlin\n"
+    "                       over USB serial at serial:///dev/ttyACM0[?baud=115200]\n"
+    "  --api-key KEY        OctoPrint's API key (required: Settings > Application Keys), or Moonraker's when\n"
+    "                       its [authorization] asks for one\n"
     "  --platform HOST:PORT the platform's Modbus TCP address (rotary controller or robot)\n"
     "  --unit ID            Modbus unit id, 0..255 (default: 1 for the rotary controller, 255 for the robot)\n"
     "  --from STEP          start at this step, 1..the number of steps (default: 1)\n"
@@ -200,9 +203,9 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
       onlyPositional(parsed, "run", "job", "multidir run JOB --printer URL --platform HOST:PORT");
   if (!parsed.has("--printer"))
     throw UsageError(
-        "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125, or a "
-        "Marlin printer's serial port, such as serial:///dev/ttyACM0). "
-        "Run 'multidir help run'.");
+        "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125, "
+        "OctoPrint's, such as octoprint://192.168.0.21:80, or a Marlin printer's serial port, such as "
+        "serial:///dev/ttyACM0). Run 'multidir help run'.");
   if (!parsed.has("--platform"))
     throw UsageError(
         "multidir run: --platform HOST:PORT is required (the platform's Modbus TCP address, such as "

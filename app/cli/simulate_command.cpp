@@ -5,19 +5,21 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <thread>
 
 #include "cli_args.h"
 #include "multidir/hardware/device_simulator.h"
 #include "multidir/hardware/marlin_simulator.h"
 #include "multidir/hardware/moonraker_simulator.h"
+#include "multidir/hardware/octoprint_simulator.h"
 
 namespace multidir::cli {
 
 const char* const kSimulateHelp =
     "Usage: multidir simulate [--rotary] [--robot] [--listen ADDRESS] [--port PORT] [--unit ID]\n"
-    "       multidir simulate --printer moonraker [--listen ADDRESS] [--port PORT] [--speed X]\n"
-    "                         [--fault NAME [--fault-at FRACTION]]\n"
+    "       multidir simulate --printer moonraker|octoprint [--listen ADDRESS] [--port PORT] [--speed X]\n"
+    "                         [--fault NAME [--fault-at FRACTION]] [--api-key KEY]\n"
     "       multidir simulate --printer marlin [--speed X] [--fault NAME [--fault-at-line N]]\n"
     "\n"
     "Runs a Modbus TCP simulator of MultiDir's devices until Ctrl-C: the rotary platform controller and the\n"
@@ -35,8 +37,11 @@ const char* const kSimulateHelp =
     "\n"
     "With --printer moonraker it runs a Klipper printer behind Moonraker's HTTP API instead (the endpoints\n"
     "'multidir run' uses, with Moonraker's reply shapes; docs/hardware.md): uploaded G-code is printed line by\n"
-    "line, moves timed by their feed rates and heater waits by the heating rate.\n"
+    "line, moves timed by their feed rates and heater waits by the heating rate. With --printer octoprint it\n"
+    "runs OctoPrint's REST API in front of a Marlin printer instead; every request needs the API key it prints.\n"
     "  --printer moonraker  simulate a Moonraker printer (default port 7125)\n"
+    "  --printer octoprint  simulate an OctoPrint server (default port 5000, OctoPrint's own)\n"
+    "  --api-key KEY     the key the OctoPrint simulator expects (default: MULTIDIR-SIMULATED-OCTOPRINT-KEY)\n"
     "  --speed X         simulated seconds per real second, above 0 and at most 100000 (default: 1)\n"
     "  --fault NAME      inject once, when a job first reaches --fault-at: thermal-runaway, link-drop (3 s),\n"
     "                    cancelled-on-printer, slow-replies (3 s each)\n"
@@ -61,8 +66,8 @@ extern "C" void onStopSignal(int) { g_stopRequested = true; }
 int wholeNumber(const std::string& text, const std::string& option, int low, int high) {
   const double value = parseNumber(text, option);
   if (value != std::floor(value) || value < low || value > high)
-    throw UsageError("multidir simulate: " + option + " must be a whole number from " + std::to_string(low) +
-                     " to " + std::to_string(high) + ", not '" + text + "'. Run 'multidir help simulate'.");
+    throw UsageError("multidir simulate: " + option + " must be a whole number from " + std::to_string(low) + " to " +
+                     std::to_string(high) + ", not '" + text + "'. Run 'multidir help simulate'.");
   return static_cast<int>(value);
 }
 
@@ -90,10 +95,11 @@ std::string robotLine(const hardware::SimulatedRobotState& s) {
 namespace {
 
 int simulateMarlin(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
-  for (const char* networkOnly : {"--listen", "--port", "--fault-at"})
+  for (const char* networkOnly : {"--listen", "--port", "--fault-at", "--api-key"})
     if (parsed.has(networkOnly))
       throw UsageError(std::string("multidir simulate: ") + networkOnly +
-                       " is not for --printer marlin (it is on a pseudo-terminal). Run 'multidir help simulate'.");
+                       " is not for --printer marlin (a serial printer on a pseudo-terminal). Run 'multidir help "
+                       "simulate'.");
   hardware::MarlinSimulatorOptions options;
   options.speed = parseNumber(parsed.value("--speed", "1"), "--speed");
   if (!(options.speed > 0.0) || options.speed > 100000.0)
@@ -167,17 +173,20 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
   if (kind == "marlin") return simulateMarlin(parsed, out, err);
   if (parsed.has("--fault-at-line"))
     throw UsageError("multidir simulate: --fault-at-line is for --printer marlin. Run 'multidir help simulate'.");
-  if (kind != "moonraker")
+  const bool octoPrint = kind == "octoprint";
+  if (kind != "moonraker" && !octoPrint)
     throw UsageError("multidir simulate: --printer '" + kind +
-                     "' is not simulated: this version simulates 'moonraker' (Klipper) and 'marlin'. Run 'multidir "
-                     "help simulate'.");
+                     "' is not simulated: this version simulates 'moonraker' (Klipper), 'octoprint' and 'marlin'. "
+                     "Run 'multidir help simulate'.");
   for (const char* modbusOnly : {"--rotary", "--robot", "--unit"})
     if (parsed.has(modbusOnly))
       throw UsageError(std::string("multidir simulate: ") + modbusOnly +
                        " is for the Modbus simulator, not with --printer. Run 'multidir help simulate'.");
-  hardware::MoonrakerSimulatorOptions options;
+  if (parsed.has("--api-key") && !octoPrint)
+    throw UsageError("multidir simulate: --api-key is for --printer octoprint. Run 'multidir help simulate'.");
+  hardware::OctoPrintSimulatorOptions options;  // Moonraker's are the shared part
   options.listenAddress = parsed.value("--listen", "127.0.0.1");
-  options.port = wholeNumber(parsed.value("--port", "7125"), "--port", 0, 65535);
+  options.port = wholeNumber(parsed.value("--port", octoPrint ? "5000" : "7125"), "--port", 0, 65535);
   options.speed = parseNumber(parsed.value("--speed", "1"), "--speed");
   if (!(options.speed > 0.0) || options.speed > 100000.0)
     throw UsageError("multidir simulate: --speed must be above 0 and at most 100000. Run 'multidir help simulate'.");
@@ -189,12 +198,19 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
   options.faultAtProgress = parseNumber(parsed.value("--fault-at", "0.5"), "--fault-at");
   if (!(options.faultAtProgress >= 0.0) || options.faultAtProgress > 1.0)
     throw UsageError("multidir simulate: --fault-at must be between 0 and 1. Run 'multidir help simulate'.");
+  options.apiKey = parsed.value("--api-key", hardware::kOctoPrintSimulatorApiKey);
+  if (options.apiKey.empty())
+    throw UsageError("multidir simulate: --api-key must not be empty. Run 'multidir help simulate'.");
 
   g_stopRequested = false;
   auto previousInt = std::signal(SIGINT, onStopSignal);
   auto previousTerm = std::signal(SIGTERM, onStopSignal);
-  hardware::MoonrakerSimulator simulator(options);
-  const core::Status started = simulator.start();
+  std::unique_ptr<hardware::PrinterSimulator> simulator;
+  if (octoPrint)
+    simulator = std::make_unique<hardware::OctoPrintSimulator>(options);
+  else
+    simulator = std::make_unique<hardware::MoonrakerSimulator>(options);
+  const core::Status started = simulator->start();
   if (!started.ok()) {
     std::signal(SIGINT, previousInt);
     std::signal(SIGTERM, previousTerm);
@@ -204,17 +220,21 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
   if (!isLoopback(options.listenAddress))
     err << "multidir simulate: warning: listening on " << options.listenAddress
         << ", reachable from other machines on that network\n";
-  out << "Printer simulator (Moonraker, Klipper) listening on http://" << simulator.address() << " at speed "
-      << options.speed << (options.fault != hardware::PrinterFault::None
-                               ? std::string(", fault ") + hardware::printerFaultName(options.fault) + " at " +
-                                     std::to_string(static_cast<int>(options.faultAtProgress * 100)) + " %"
-                               : std::string())
-      << ". Ctrl-C stops it.\n"
-      << std::flush;
+  out << "Printer simulator (" << (octoPrint ? "OctoPrint, Marlin" : "Moonraker, Klipper") << ") listening on http://"
+      << simulator->address() << " at speed " << options.speed
+      << (options.fault != hardware::PrinterFault::None
+              ? std::string(", fault ") + hardware::printerFaultName(options.fault) + " at " +
+                    std::to_string(static_cast<int>(options.faultAtProgress * 100)) + " %"
+              : std::string())
+      << ". Ctrl-C stops it.\n";
+  if (octoPrint)
+    out << "API key: " << options.apiKey << " (multidir run JOB --printer octoprint://" << simulator->address()
+        << " --api-key " << options.apiKey << " ...)\n";
+  out << std::flush;
   std::string last;
   while (!g_stopRequested) {
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
-    const hardware::SimulatedPrinterState s = simulator.state();
+    const hardware::SimulatedPrinterState s = simulator->state();
     char text[256];
     std::snprintf(text, sizeof text, "printer: %s, job %s%s%s, %d %%, extruder %.0f/%.0f C, bed %.0f/%.0f C",
                   s.firmwareState.c_str(), s.jobState.c_str(), s.file.empty() ? "" : " ", s.file.c_str(),
@@ -224,7 +244,7 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
   }
   std::signal(SIGINT, previousInt);
   std::signal(SIGTERM, previousTerm);
-  simulator.stop();
+  simulator->stop();
   out << "Simulator stopped.\n";
   return kExitOk;
 }
@@ -233,7 +253,8 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
 
 int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const ParsedArgs parsed = parseArgs(
-      args, {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line"},
+      args,
+      {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key"},
       {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
@@ -243,10 +264,11 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
     throw UsageError("multidir simulate: unexpected argument '" + parsed.positionals[0] +
                      "'. Run 'multidir help simulate'.");
   if (parsed.has("--printer")) return simulatePrinter(parsed, out, err);
-  for (const char* printerOnly : {"--speed", "--fault", "--fault-at", "--fault-at-line"})
+  for (const char* printerOnly : {"--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key"})
     if (parsed.has(printerOnly))
       throw UsageError(std::string("multidir simulate: ") + printerOnly +
-                       " is for the printer simulator: add --printer moonraker. Run 'multidir help simulate'.");
+                       " is for the printer simulator: add --printer moonraker, octoprint or marlin. Run "
+                       "'multidir help simulate'.");
   hardware::SimulatorOptions options;
   const bool rotary = parsed.has("--rotary");
   const bool robot = parsed.has("--robot");

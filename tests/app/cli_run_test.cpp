@@ -1,15 +1,18 @@
-// `multidir run` against the Modbus device simulator and the Moonraker (127.0.0.1) or Marlin (pseudo-terminal)
-// printer simulator, all in this test process, and `multidir simulate --printer moonraker|marlin`.
+// `multidir run` against the Modbus device simulator and a printer simulator (Moonraker or OctoPrint on
+// 127.0.0.1, Marlin on a pseudo-terminal), all in this test process, and
+// `multidir simulate --printer moonraker|octoprint|marlin`.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "multidir/hardware/device_simulator.h"
 #include "multidir/hardware/marlin_simulator.h"
 #include "multidir/hardware/moonraker_simulator.h"
+#include "multidir/hardware/octoprint_simulator.h"
 #include "support/cli_runner.h"
 #include "support/test_models.h"
 
@@ -56,20 +59,24 @@ void writeJob(const std::string& dir, bool sliced = true, bool robot = false) {
 
 class CliRunTest : public ::testing::Test {
  protected:
-  void startSimulators(double printerSpeed, bool robot = false) {
+  void startSimulators(double printerSpeed, bool robot = false, bool octoPrint = false) {
     hw::SimulatorOptions deviceOptions;
     deviceOptions.robot = robot;
     deviceOptions.rotary = !robot;
     devices = std::make_unique<hw::DeviceSimulator>(deviceOptions);
     ASSERT_TRUE(devices->start().ok());
-    hw::MoonrakerSimulatorOptions printerOptions;
+    hw::OctoPrintSimulatorOptions printerOptions;
     printerOptions.speed = printerSpeed;
-    printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
+    if (octoPrint)
+      printer = std::make_unique<hw::OctoPrintSimulator>(printerOptions);
+    else
+      printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
     ASSERT_TRUE(printer->start().ok());
+    printerUrl = (octoPrint ? "octoprint://127.0.0.1:" : "http://127.0.0.1:") + std::to_string(printer->port()) +
+                 (octoPrint ? std::string(" --api-key ") + hw::kOctoPrintSimulatorApiKey : std::string());
   }
   std::string deviceArgs() const {
-    return "--printer http://127.0.0.1:" + std::to_string(printer->port()) +
-           " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --settle 20";
+    return "--printer " + printerUrl + " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --settle 20";
   }
   int printerRequests(const std::string& path) const {
     int n = 0;
@@ -78,7 +85,8 @@ class CliRunTest : public ::testing::Test {
   }
 
   std::unique_ptr<hw::DeviceSimulator> devices;
-  std::unique_ptr<hw::MoonrakerSimulator> printer;
+  std::unique_ptr<hw::PrinterSimulator> printer;
+  std::string printerUrl;
 };
 
 TEST_F(CliRunTest, RunsEveryStepHomingThePlatformAndLogsToAFile) {
@@ -123,6 +131,7 @@ TEST_F(CliRunTest, APrinterFaultStopsTheRunWithItsReasonAndWhereToContinue) {
   printerOptions.faultAtProgress = 0.5;
   printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
   ASSERT_TRUE(printer->start().ok());
+  printerUrl = "http://127.0.0.1:" + std::to_string(printer->port());
   const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.err.find("the run stopped at step 1"), std::string::npos) << run.err;
@@ -166,14 +175,53 @@ TEST_F(CliRunTest, AnUnreachablePrinterIsNamedAndNothingMoves) {
   EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Rotary), 0u);
 }
 
+TEST_F(CliRunTest, RunsEveryStepOnOctoPrint) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.OctoPrint");
+  writeJob(dir + "/job");
+  startSimulators(200.0, false, true);
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("connected to OctoPrint printer at 127.0.0.1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("reports step-02.gcode complete"), std::string::npos) << run.out;
+  EXPECT_EQ(printerRequests("/api/files/local"), 2);
+  EXPECT_EQ(printerRequests("/api/files/local/step-01.gcode"), 1);
+  EXPECT_EQ(printerRequests("/api/files/local/step-02.gcode"), 1);
+  EXPECT_NEAR(devices->rotaryState().angleDegrees, 30.0, 0.05);
+}
+
+TEST_F(CliRunTest, AWrongOctoPrintApiKeyIsNamedWithWhereToFindTheKeyAndNothingMoves) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.OctoPrintKey");
+  writeJob(dir + "/job");
+  startSimulators(1.0, false, true);
+  const CliRun run = runCli("run '" + dir + "/job' --printer octoprint://127.0.0.1:" + std::to_string(printer->port()) +
+                                " --api-key wrong --platform 127.0.0.1:" + std::to_string(devices->port()),
+                            dir, "timeout 60");
+  EXPECT_EQ(run.exitCode, 4) << run.err;
+  EXPECT_NE(run.err.find("the API key is wrong"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("Application Keys"), std::string::npos) << run.err;
+  EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Rotary), 0u);
+}
+
+// `multidir run ARGS` ends with exit code 2 and says each of `words` on stderr.
+void expectRunUsageError(const std::string& args, const std::string& dir, const std::vector<std::string>& words) {
+  const CliRun run = runCli("run job " + args, dir);
+  EXPECT_EQ(run.exitCode, 2) << args;
+  for (const std::string& word : words) EXPECT_NE(run.err.find(word), std::string::npos) << run.err;
+}
+
+TEST(CliRun, OctoPrintWithoutAnApiKeyOrAnUnknownSchemeIsAUsageError) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.PrinterUrl");
+  expectRunUsageError("--printer octoprint://127.0.0.1:5000 --platform 127.0.0.1:502", dir,
+                      {"OctoPrint needs an API key"});
+  expectRunUsageError(
+      "--printer ftp://127.0.0.1 --platform 127.0.0.1:502", dir,
+      {"unknown printer scheme 'ftp://'", "moonraker://HOST:PORT", "octoprint://HOST:PORT", "serial:///dev/ttyACM0"});
+}
+
 TEST(CliRun, MissingPrinterOrPlatformIsAUsageError) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.Usage");
-  const CliRun noPrinter = runCli("run job --platform 127.0.0.1:502", dir);
-  EXPECT_EQ(noPrinter.exitCode, 2);
-  EXPECT_NE(noPrinter.err.find("--printer URL is required"), std::string::npos) << noPrinter.err;
-  const CliRun badPlatform = runCli("run job --printer http://127.0.0.1:7125 --platform nowhere", dir);
-  EXPECT_EQ(badPlatform.exitCode, 2);
-  EXPECT_NE(badPlatform.err.find("--platform must be HOST:PORT"), std::string::npos) << badPlatform.err;
+  expectRunUsageError("--platform 127.0.0.1:502", dir, {"--printer URL is required"});
+  expectRunUsageError("--printer http://127.0.0.1:7125 --platform nowhere", dir, {"--platform must be HOST:PORT"});
 }
 
 TEST(CliSimulatePrinter, ServesMoonrakerOnLoopbackAndStopsOnSigint) {
@@ -186,11 +234,24 @@ TEST(CliSimulatePrinter, ServesMoonrakerOnLoopbackAndStopsOnSigint) {
   EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
 }
 
+TEST(CliSimulatePrinter, ServesOctoPrintOnLoopbackAndPrintsTheApiKeyItExpects) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.OctoPrint");
+  const CliRun run =
+      runCli("simulate --printer octoprint --port 0 --api-key LAB-KEY", dir, "timeout --preserve-status -s INT 1");
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("Printer simulator (OctoPrint, Marlin) listening on http://127.0.0.1:"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("API key: LAB-KEY"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("--printer octoprint://127.0.0.1:"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
+}
+
 TEST(CliSimulatePrinter, UnknownPrinterOrFaultIsAUsageErrorNamingTheChoices) {
   const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.Usage");
   const CliRun unknown = runCli("simulate --printer repetier", dir);
   EXPECT_EQ(unknown.exitCode, 2);
-  EXPECT_NE(unknown.err.find("simulates 'moonraker'"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("simulates 'moonraker' (Klipper), 'octoprint' and 'marlin'"), std::string::npos)
+      << unknown.err;
   const CliRun fault = runCli("simulate --printer moonraker --fault fire", dir);
   EXPECT_EQ(fault.exitCode, 2);
   EXPECT_NE(fault.err.find("thermal-runaway"), std::string::npos) << fault.err;
@@ -203,14 +264,6 @@ TEST(CliSimulatePrinter, ServesMarlinOnAPseudoTerminalAndStopsOnSigint) {
   EXPECT_NE(run.out.find("Use --printer serial:///dev/pts/"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("printer: running, line 0"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
-}
-
-TEST(CliRun, AnUnknownPrinterSchemeIsAUsageErrorNamingTheKnownOnes) {
-  const std::string dir = multidir::test::scratchDirectory("CliRun.Scheme");
-  const CliRun run = runCli("run job --printer ftp://printer --platform 127.0.0.1:502", dir);
-  EXPECT_EQ(run.exitCode, 2);
-  EXPECT_NE(run.err.find("unknown scheme 'ftp://'"), std::string::npos) << run.err;
-  EXPECT_NE(run.err.find("serial:///dev/ttyACM0"), std::string::npos) << run.err;
 }
 
 TEST(CliRunMarlin, StreamsEveryStepToAMarlinPrinterOverSerial) {

@@ -1,4 +1,4 @@
-// The Marlin serial link against the Marlin simulator on a pseudo-terminal, and the printer-URL dispatch.
+// The Marlin serial link against the Marlin simulator on a pseudo-terminal (serial:// URLs: printer_url_test.cpp).
 #include "multidir/hardware/marlin_link.h"
 
 #include <gtest/gtest.h>
@@ -7,7 +7,6 @@
 #include <atomic>
 
 #include "multidir/hardware/marlin_simulator.h"
-#include "multidir/hardware/printer_url.h"
 #include "printer_test_support.h"
 
 namespace multidir::hardware {
@@ -24,10 +23,7 @@ class MarlinLinkTest : public ::testing::Test {
   }
 
   void startSimulator(double speed) {
-    MarlinSimulatorOptions options;
-    options.speed = speed;
-    options.busyInterval = 50ms;  // keeps the link (400 ms) alive through long heater waits
-    sim = std::make_unique<MarlinSimulator>(options);
+    sim = std::make_unique<MarlinSimulator>(fastMarlinSimulatorOptions(speed));
     ASSERT_TRUE(sim->start().ok());
   }
 
@@ -178,13 +174,15 @@ TEST_F(MarlinLinkTest, RecoversFromResendsWithSeveralLinesInFlight) {
 }
 
 TEST_F(MarlinLinkTest, ReadsTheHeatersWhileThePrinterWaitsForThem) {
-  startSimulator(5.0);  // 18 simulated seconds of heating take 3.6 s: the test sees it on the way
+  startSimulator(2.0);  // 18 simulated seconds of heating take 9 s: the test sees them on the way, even when loaded
   auto link = connected();
   ASSERT_TRUE(printing(*link));
-  ASSERT_TRUE(eventually([&] {
-    const PrinterStatus s = link->status();
-    return s.state == PrinterJobState::Printing && s.extruder.targetC == 200.0 && s.extruder.actualC > 23.0;
-  }));
+  ASSERT_TRUE(eventually(
+      [&] {
+        const PrinterStatus s = link->status();
+        return s.state == PrinterJobState::Printing && s.extruder.targetC == 200.0 && s.extruder.actualC > 23.0;
+      },
+      6000ms));
   EXPECT_LT(link->status().extruder.actualC, 200.0);
   EXPECT_FALSE(link->status().linkLost);  // busy and temperature lines keep it alive while M109 blocks
 }
@@ -214,10 +212,17 @@ TEST_F(MarlinLinkTest, AJobStoppedAtThePrintersScreenIsReportedCancelled) {
 }
 
 TEST_F(MarlinLinkTest, CancelStopsStreamingAndSwitchesTheHeatersOff) {
-  startSimulator(1.0);
+  // Cancelled once the printer waits in M109 (18 simulated seconds, 0.9 s here): a cancel during a heater wait
+  // takes effect when the wait ends, so the test cancels in that state every time, however loaded the machine.
+  startSimulator(20.0);
   auto link = connected();
   ASSERT_TRUE(printing(*link));
-  ASSERT_TRUE(outcome(link->cancelPrint()).ok());
+  ASSERT_TRUE(eventually([&] {
+    const auto received = sim->received();
+    return std::any_of(received.begin(), received.end(),
+                       [](const MarlinLineRecord& r) { return r.command == "M109 S200"; });
+  }));
+  ASSERT_TRUE(outcome(link->cancelPrint(), 10000ms).ok());
   EXPECT_EQ(link->status().state, PrinterJobState::Cancelled);
   const auto executed = sim->executed();
   const auto at = [&](const std::string& c) {
@@ -258,7 +263,7 @@ TEST_F(MarlinLinkTest, AnUnpluggedPrinterEndsTheJobInErrorAndTheLinkIsLost) {
   ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Error; }));
   EXPECT_EQ(link->status().link, LinkState::Reconnecting);
   EXPECT_NE(link->status().message.find("serial link was lost"), std::string::npos) << link->status().message;
-  ASSERT_TRUE(eventually([&] { return link->status().linkLost; }));
+  ASSERT_TRUE(eventually([&] { return link->status().linkLost; }, 10000ms));  // bounded; long only when loaded
 }
 
 TEST_F(MarlinLinkTest, EmergencyStopReachesThePrinterWhilePrintingAndIsConfirmedByItsHalt) {
@@ -340,42 +345,6 @@ TEST(MarlinSimulatorTiming, ExecutesStreamedMovesInTheTimeTheirHeatingAndFeedRat
   elapsedMs = 27900;
   EXPECT_EQ(sim.state().queuedMoves, 0u);
   ASSERT_TRUE(test::eventually([&] { return link->status().state == PrinterJobState::Complete; }));
-}
-
-}  // namespace
-}  // namespace multidir::hardware
-
-namespace multidir::hardware {
-namespace {
-
-TEST(PrinterUrl, HttpAndBareAddressesAreMoonrakerAsBefore) {
-  auto http = makePrinterLinkFromUrl("http://192.168.0.20:7125", "key");
-  ASSERT_TRUE(http.ok()) << http.error().describe();
-  EXPECT_EQ((*http)->name(), "Moonraker printer at 192.168.0.20:7125");
-  auto bare = makePrinterLinkFromUrl("printer.local", "");
-  ASSERT_TRUE(bare.ok());
-  EXPECT_EQ((*bare)->name(), "Moonraker printer at printer.local:7125");
-  auto scheme = makePrinterLinkFromUrl("moonraker://printer.local", "");
-  ASSERT_TRUE(scheme.ok());
-  EXPECT_EQ((*scheme)->name(), "Moonraker printer at printer.local:7125");
-}
-
-TEST(PrinterUrl, SerialIsMarlin) {
-  auto serial = makePrinterLinkFromUrl("serial:///dev/ttyACM0?baud=250000", "");
-  ASSERT_TRUE(serial.ok()) << serial.error().describe();
-  EXPECT_EQ((*serial)->name(), "Marlin printer at /dev/ttyACM0");
-}
-
-TEST(PrinterUrl, AnUnknownSchemeNamesTheOnesThereAre) {
-  auto unknown = makePrinterLinkFromUrl("ftp://printer", "");
-  ASSERT_FALSE(unknown.ok());
-  EXPECT_EQ(unknown.error().code, core::ErrorCode::InvalidParameter);
-  EXPECT_NE(unknown.error().message.find("unknown scheme 'ftp://'"), std::string::npos) << unknown.error().message;
-  EXPECT_NE(unknown.error().message.find("serial://"), std::string::npos);
-  EXPECT_NE(unknown.error().message.find("moonraker://"), std::string::npos);
-  // Each protocol's own parser says what is wrong with its kind of address.
-  EXPECT_NE(makePrinterLinkFromUrl("https://p", "").error().message.find("https is not supported"), std::string::npos);
-  EXPECT_NE(makePrinterLinkFromUrl("serial://dev", "").error().message.find("absolute device path"), std::string::npos);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 #pragma once
-// Shared by the printer tests: a short G-code program, fast Moonraker and Marlin links (the simulators on
-// 127.0.0.1 and on a pseudo-terminal).
+// Shared by the printer tests: a short G-code program, fast links to each protocol's simulator (Moonraker and
+// OctoPrint on 127.0.0.1, Marlin on a pseudo-terminal), and one interface over all three simulators
+// (SimulatedPrinterUnderTest), so that one test runs against every protocol (TEST_P over PrinterProtocol).
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +16,8 @@
 #include "multidir/hardware/marlin_simulator.h"
 #include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/moonraker_simulator.h"
+#include "multidir/hardware/octoprint_link.h"
+#include "multidir/hardware/octoprint_simulator.h"
 
 namespace multidir::hardware::test {
 
@@ -32,35 +36,6 @@ inline std::string writeFile(const std::filesystem::path& path, const std::strin
   return path.string();
 }
 
-inline PrinterLinkOptions fastPrinterOptions() {
-  PrinterLinkOptions options;
-  options.pollInterval = 10ms;
-  options.requestTimeout = 1000ms;
-  options.uploadTimeout = 2000ms;
-  options.linkLostAfter = 400ms;
-  options.stopRetryInterval = 20ms;
-  return options;
-}
-
-inline std::unique_ptr<PrinterLink> moonrakerLinkTo(int port, PrinterLinkOptions options = fastPrinterOptions()) {
-  MoonrakerSettings settings;
-  settings.host = "127.0.0.1";
-  settings.port = port;
-  auto link = makeMoonrakerLink(settings, options);
-  EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
-  return link.ok() ? std::move(link.value()) : nullptr;
-}
-
-inline std::unique_ptr<PrinterLink> marlinLinkTo(const std::string& devicePath,
-                                                 PrinterLinkOptions options = fastPrinterOptions(), int window = 1) {
-  MarlinSettings settings;
-  settings.devicePath = devicePath;
-  settings.maxUnacknowledgedLines = window;
-  auto link = makeMarlinLink(settings, options);
-  EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
-  return link.ok() ? std::move(link.value()) : nullptr;
-}
-
 // The commands of a G-code text as a printer receives them (comments and blank lines dropped).
 inline std::vector<std::string> gcodeCommands(const std::string& text) {
   std::vector<std::string> commands;
@@ -75,6 +50,114 @@ inline std::vector<std::string> gcodeCommands(const std::string& text) {
     if (!line.empty()) commands.push_back(line);
   }
   return commands;
+}
+
+inline PrinterLinkOptions fastPrinterOptions() {
+  PrinterLinkOptions options;
+  options.pollInterval = 10ms;
+  options.requestTimeout = 1000ms;
+  options.uploadTimeout = 2000ms;
+  options.linkLostAfter = 400ms;
+  options.stopRetryInterval = 20ms;
+  return options;
+}
+
+// The Marlin simulator's options for tests: its busy keepalive often enough to keep a fast link (400 ms)
+// alive through long heater waits.
+inline MarlinSimulatorOptions fastMarlinSimulatorOptions(double speed) {
+  MarlinSimulatorOptions options;
+  options.speed = speed;
+  options.busyInterval = 50ms;
+  return options;
+}
+
+// The links, with the test's checks that they could be made.
+inline std::unique_ptr<PrinterLink> checkedLink(core::Result<std::unique_ptr<PrinterLink>> link) {
+  EXPECT_TRUE(link.ok()) << (link.ok() ? "" : link.error().describe());
+  return link.ok() ? std::move(link.value()) : nullptr;
+}
+
+inline std::unique_ptr<PrinterLink> moonrakerLinkTo(int port, PrinterLinkOptions options = fastPrinterOptions()) {
+  MoonrakerSettings settings;
+  settings.host = "127.0.0.1";
+  settings.port = port;
+  return checkedLink(makeMoonrakerLink(settings, options));
+}
+
+inline std::unique_ptr<PrinterLink> octoPrintLinkTo(int port, const std::string& apiKey = kOctoPrintSimulatorApiKey,
+                                                    PrinterLinkOptions options = fastPrinterOptions()) {
+  OctoPrintSettings settings;
+  settings.host = "127.0.0.1";
+  settings.port = port;
+  settings.apiKey = apiKey;
+  return checkedLink(makeOctoPrintLink(settings, options));
+}
+
+inline std::unique_ptr<PrinterLink> marlinLinkTo(const std::string& devicePath,
+                                                 PrinterLinkOptions options = fastPrinterOptions(), int window = 1) {
+  MarlinSettings settings;
+  settings.devicePath = devicePath;
+  settings.maxUnacknowledgedLines = window;
+  return checkedLink(makeMarlinLink(settings, options));
+}
+
+enum class PrinterProtocol { Moonraker, OctoPrint, Marlin };
+
+inline const char* protocolText(PrinterProtocol protocol) {
+  switch (protocol) {
+    case PrinterProtocol::Moonraker:
+      return "Moonraker";
+    case PrinterProtocol::OctoPrint:
+      return "OctoPrint";
+    case PrinterProtocol::Marlin:
+      return "Marlin";
+  }
+  return "?";
+}
+inline std::string protocolName(const testing::TestParamInfo<PrinterProtocol>& info) {
+  return protocolText(info.param);
+}
+// How GoogleTest prints the parameter (test lists, ctest names).
+inline void PrintTo(PrinterProtocol protocol, std::ostream* out) { *out << protocolText(protocol); }
+
+// The protocols behind an HTTP server (PrinterSimulator: uploads, requests), and all of them.
+inline auto httpProtocols() { return ::testing::Values(PrinterProtocol::Moonraker, PrinterProtocol::OctoPrint); }
+inline auto allProtocols() {
+  return ::testing::Values(PrinterProtocol::Moonraker, PrinterProtocol::OctoPrint, PrinterProtocol::Marlin);
+}
+
+// An HTTP protocol's simulator (Marlin has no HTTP server: see SimulatedMarlin).
+inline std::unique_ptr<PrinterSimulator> printerSimulator(PrinterProtocol protocol, PrinterSimulatorOptions options) {
+  EXPECT_NE(protocol, PrinterProtocol::Marlin) << "Marlin's simulator is not an HTTP PrinterSimulator";
+  if (protocol == PrinterProtocol::Moonraker) return std::make_unique<MoonrakerSimulator>(options);
+  OctoPrintSimulatorOptions octoPrint;
+  static_cast<PrinterSimulatorOptions&>(octoPrint) = options;
+  return std::make_unique<OctoPrintSimulator>(octoPrint);
+}
+
+inline std::unique_ptr<PrinterLink> printerLinkTo(PrinterProtocol protocol, int port,
+                                                  PrinterLinkOptions options = fastPrinterOptions()) {
+  EXPECT_NE(protocol, PrinterProtocol::Marlin) << "Marlin's link takes a device path: marlinLinkTo";
+  return protocol == PrinterProtocol::Moonraker ? moonrakerLinkTo(port, options)
+                                                : octoPrintLinkTo(port, kOctoPrintSimulatorApiKey, options);
+}
+
+// An HTTP protocol's requests as the simulators record them.
+inline bool isUpload(PrinterProtocol protocol, const PrinterRequestRecord& r) {
+  return r.method == "POST" &&
+         r.path == (protocol == PrinterProtocol::Moonraker ? "/server/files/upload" : "/api/files/local");
+}
+inline bool isStart(PrinterProtocol protocol, const PrinterRequestRecord& r) {
+  if (protocol == PrinterProtocol::Moonraker) return r.path == "/printer/print/start";
+  return r.method == "POST" && r.path.rfind("/api/files/local/", 0) == 0;
+}
+inline bool isEmergencyStop(PrinterProtocol protocol, const PrinterRequestRecord& r) {
+  if (protocol == PrinterProtocol::Moonraker) return r.path == "/printer/emergency_stop";
+  return r.path == "/api/printer/command" && r.detail.find("M112") != std::string::npos;
+}
+inline int countRequests(const std::vector<PrinterRequestRecord>& records,
+                         const std::function<bool(const PrinterRequestRecord&)>& which) {
+  return static_cast<int>(std::count_if(records.begin(), records.end(), which));
 }
 
 // A printer simulator and its link, whatever the protocol, for tests that hold for every printer: the faults
@@ -101,48 +184,55 @@ class SimulatedPrinterUnderTest {
   [[nodiscard]] virtual bool halted() const = 0;               // by its emergency stop (or a fault)
 };
 
-class SimulatedMoonraker : public SimulatedPrinterUnderTest {
+// Moonraker and OctoPrint: one HTTP PrinterSimulator each, the same records; only their paths differ.
+class SimulatedHttpPrinter : public SimulatedPrinterUnderTest {
  public:
-  explicit SimulatedMoonraker(MoonrakerSimulatorOptions options) : m_sim(std::move(options)) {
-    EXPECT_TRUE(m_sim.start().ok());
+  SimulatedHttpPrinter(PrinterProtocol protocol, PrinterSimulatorOptions options)
+      : m_protocol(protocol), m_sim(printerSimulator(protocol, std::move(options))) {
+    EXPECT_TRUE(m_sim->start().ok());
   }
   std::unique_ptr<PrinterLink> link(PrinterLinkOptions options) const override {
-    return moonrakerLinkTo(m_sim.port(), std::move(options));
+    return printerLinkTo(m_protocol, m_sim->port(), std::move(options));
   }
-  void injectThermalRunaway() override { m_sim.injectThermalRunaway(); }
-  void cancelJobOnPrinter() override { m_sim.cancelJobOnPrinter(); }
-  void dropLink() override { m_sim.dropLink(); }
-  void restoreLink() override { m_sim.restoreLink(); }
-  void setReplyDelay(std::chrono::milliseconds delay) override { m_sim.setReplyDelay(delay); }
+  void injectThermalRunaway() override { m_sim->injectThermalRunaway(); }
+  void cancelJobOnPrinter() override { m_sim->cancelJobOnPrinter(); }
+  void dropLink() override { m_sim->dropLink(); }
+  void restoreLink() override { m_sim->restoreLink(); }
+  void setReplyDelay(std::chrono::milliseconds delay) override { m_sim->setReplyDelay(delay); }
   std::vector<JobInterval> jobs() const override {
-    const auto events = m_sim.jobEvents();
+    const auto events = m_sim->jobEvents();
     std::vector<JobInterval> out;
     for (std::size_t i = 0; i < events.size(); ++i)
       if (events[i].state == "printing")
         out.push_back({events[i].at, i + 1 < events.size() ? events[i + 1].at : Clock::time_point::max()});
     return out;
   }
-  std::vector<Clock::time_point> starts() const override { return requestTimes("/printer/print/start"); }
-  std::vector<Clock::time_point> emergencyStops() const override { return requestTimes("/printer/emergency_stop"); }
+  std::vector<Clock::time_point> starts() const override {
+    return requestTimes([&](const PrinterRequestRecord& r) { return isStart(m_protocol, r); });
+  }
+  std::vector<Clock::time_point> emergencyStops() const override {
+    return requestTimes([&](const PrinterRequestRecord& r) { return isEmergencyStop(m_protocol, r); });
+  }
   int completedJobs() const override {
-    const auto events = m_sim.jobEvents();
+    const auto events = m_sim->jobEvents();
     return static_cast<int>(
         std::count_if(events.begin(), events.end(), [](const PrinterJobEvent& e) { return e.state == "complete"; }));
   }
   bool printingPastHeating() const override {
-    const SimulatedPrinterState s = m_sim.state();
+    const SimulatedPrinterState s = m_sim->state();
     return s.jobState == "printing" && s.progress > 0.1;
   }
-  bool halted() const override { return m_sim.state().firmwareState == "shutdown"; }
+  bool halted() const override { return m_sim->state().firmwareState == "shutdown"; }
 
  private:
-  std::vector<Clock::time_point> requestTimes(const std::string& path) const {
+  std::vector<Clock::time_point> requestTimes(const std::function<bool(const PrinterRequestRecord&)>& which) const {
     std::vector<Clock::time_point> out;
-    for (const auto& r : m_sim.requests())
-      if (r.path == path) out.push_back(r.at);
+    for (const auto& r : m_sim->requests())
+      if (which(r)) out.push_back(r.at);
     return out;
   }
-  MoonrakerSimulator m_sim;
+  PrinterProtocol m_protocol;
+  std::unique_ptr<PrinterSimulator> m_sim;
 };
 
 // Marlin has no jobs of its own: a job is the stream from the link's "N0 M110 N0" that begins it to the
@@ -204,20 +294,26 @@ class SimulatedMarlin : public SimulatedPrinterUnderTest {
   MarlinSimulator m_sim;
 };
 
-// "moonraker" or "marlin", at `speed` simulated seconds per real second, records on `clock`.
+// `protocol`'s simulator, started, at `speed` simulated seconds per real second, records on `clock`. `midJobFault`
+// (thermal-runaway or cancelled-on-printer) is injected by the simulator itself once, half-way through the
+// moves of the first job that gets there (HTTP: at progress 0.5; Marlin: on its 10th move of shortGcode()'s
+// 21): on that event, however late the test's thread runs.
 inline std::unique_ptr<SimulatedPrinterUnderTest> simulatedPrinter(
-    const std::string& protocol, double speed, std::function<std::chrono::steady_clock::time_point()> clock) {
-  if (protocol == "marlin") {
-    MarlinSimulatorOptions options;
-    options.speed = speed;
+    PrinterProtocol protocol, double speed, std::function<std::chrono::steady_clock::time_point()> clock,
+    PrinterFault midJobFault = PrinterFault::None) {
+  if (protocol == PrinterProtocol::Marlin) {
+    MarlinSimulatorOptions options = fastMarlinSimulatorOptions(speed);
     options.steadyNow = std::move(clock);
-    options.busyInterval = 50ms;  // the links' linkLostAfter is 400 ms in tests
+    options.fault = midJobFault;
+    options.faultAtMove = 10;
     return std::make_unique<SimulatedMarlin>(options);
   }
-  MoonrakerSimulatorOptions options;
+  PrinterSimulatorOptions options;
   options.speed = speed;
   options.steadyNow = std::move(clock);
-  return std::make_unique<SimulatedMoonraker>(options);
+  options.fault = midJobFault;
+  options.faultAtProgress = 0.5;
+  return std::make_unique<SimulatedHttpPrinter>(protocol, options);
 }
 
 }  // namespace multidir::hardware::test

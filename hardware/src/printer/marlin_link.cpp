@@ -699,7 +699,10 @@ class MarlinLink : public PrinterLink {
     const bool pollDue =
         now - m_lastTemperature >= m_options.pollInterval && now - m_lastPollSent >= m_options.pollInterval;
     if (m_job && m_status.state == PrinterJobState::Printing && !m_status.stop.latched()) {
-      if (pollDue) return appendPoll(now);
+      // At most one poll between two job lines: when a round trip takes longer than pollInterval (a loaded
+      // machine, a slow printer) a poll is always due, and polls alone would hold the job (and a cancel) up.
+      if (pollDue && !m_pollSentLast) return appendPoll(now);
+      m_pollSentLast = false;
       Job& job = *m_job;
       if (job.cancelling) {
         const std::size_t count = sizeof kCancelLines / sizeof kCancelLines[0];
@@ -735,6 +738,7 @@ class MarlinLink : public PrinterLink {
 
   bool appendPoll(Clock::time_point now) {
     m_lastPollSent = now;
+    m_pollSentLast = true;
     m_lines.push_back(Line{"M105", Role::Poll, 0});
     return true;
   }
@@ -813,7 +817,8 @@ class MarlinLink : public PrinterLink {
   Clock::time_point m_lastSilenceResend{};
   Clock::time_point m_lastTemperature{};
   Clock::time_point m_lastPollSent{};
-  std::string m_rx;  // worker only: bytes after the last line end
+  bool m_pollSentLast = false;  // the last line appended while printing was a poll
+  std::string m_rx;             // worker only: bytes after the last line end
 
   std::mutex m_writeMutex;  // the descriptor and every write: whole lines never interleave
   int m_fd = -1;

@@ -33,7 +33,7 @@ PrinterJobState parsePrinterJobState(const std::string& t) {
   return PrinterJobState::Unknown;
 }
 
-core::Result<MoonrakerReading> readMoonrakerStatus(const nlohmann::json& result, const std::string& printer) {
+core::Result<PrinterReading> readMoonrakerStatus(const nlohmann::json& result, const std::string& printer) {
   if (!result.is_object() || !result.contains("status") || !result["status"].is_object() ||
       !result["status"].contains("print_stats") || text(result["status"]["print_stats"], "state").empty())
     return core::Error{core::ErrorCode::DeviceFault,
@@ -41,7 +41,7 @@ core::Result<MoonrakerReading> readMoonrakerStatus(const nlohmann::json& result,
                        "[virtual_sdcard] in printer.cfg?",
                        printer};
   const nlohmann::json& status = result["status"];
-  MoonrakerReading r;
+  PrinterReading r;
   r.state = parsePrinterJobState(text(status["print_stats"], "state"));
   r.currentFile = text(status["print_stats"], "filename");
   r.message = text(status["print_stats"], "message");

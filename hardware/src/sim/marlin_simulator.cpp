@@ -75,6 +75,15 @@ class MarlinSimulator::Impl {
       return core::Error{core::ErrorCode::InvalidParameter, "the speed must be above 0 and at most 100000", "--speed"};
     if (m_options.plannerMoves < 1 || m_options.plannerMoves > 256)
       return core::Error{core::ErrorCode::InvalidParameter, "the planner must hold 1 to 256 moves", "plannerMoves"};
+    if (m_options.fault != PrinterFault::None && m_options.fault != PrinterFault::ThermalRunaway &&
+        m_options.fault != PrinterFault::CancelledOnPrinter)
+      return core::Error{core::ErrorCode::InvalidParameter,
+                         std::string("the Marlin simulator injects thermal-runaway and cancelled-on-printer itself, "
+                                     "not ") +
+                             printerFaultName(m_options.fault),
+                         "fault"};
+    if (m_options.faultAtMove < 1)
+      return core::Error{core::ErrorCode::InvalidParameter, "the fault's move must be 1 or later", "faultAtMove"};
     if (m_options.busyInterval.count() < 1 || m_options.temperatureInterval.count() < 1)
       return core::Error{core::ErrorCode::InvalidParameter, "the busy and temperature intervals must be at least 1 ms",
                          "busyInterval"};
@@ -129,9 +138,7 @@ class MarlinSimulator::Impl {
   void cancelJobOnPrinter() {
     std::lock_guard<std::mutex> lock(m_mutex);
     advanceLocked();
-    m_printer.dropQueued();
-    m_pendingExecution.clear();
-    send("//action:cancel");
+    cancelLocked();
   }
   void dropLink() {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -238,6 +245,19 @@ class MarlinSimulator::Impl {
     }
     // The heater ran away past its limit: Marlin's thermal protection halts the printer.
     if (!m_halted && m_printer.firmwareState() == "shutdown") kill(kThermalRunaway);
+  }
+
+  // m_mutex held: the LCD's "Stop print".
+  void cancelLocked() {
+    m_printer.dropQueued();
+    m_pendingExecution.clear();
+    send("//action:cancel");
+  }
+
+  // m_mutex held: options.fault, once its move was taken.
+  void injectFaultLocked() {
+    if (m_options.fault == PrinterFault::ThermalRunaway) m_printer.thermalRunaway();
+    if (m_options.fault == PrinterFault::CancelledOnPrinter) cancelLocked();
   }
 
   // m_mutex held.
@@ -347,6 +367,7 @@ class MarlinSimulator::Impl {
                                        number == 140 || number == 190)));
       const bool blocking = known && ((letter == 'G' && (number == 4 || number == 28)) ||
                                       (letter == 'M' && (number == 109 || number == 190 || number == 400)));
+      const bool move = known && letter == 'G' && number <= 1;
       if (toPrinter) {
         if (!blocking && m_printer.linesQueued() >= static_cast<std::size_t>(m_options.plannerMoves)) return;
         m_pendingExecution.push_back(
@@ -363,6 +384,7 @@ class MarlinSimulator::Impl {
         continue;  // answered once the printer has done it
       }
       finish(q);
+      if (move && ++m_movesTaken == m_options.faultAtMove) injectFaultLocked();
     }
   }
 
@@ -475,6 +497,7 @@ class MarlinSimulator::Impl {
 
   bool m_silent = false;
   int m_corruptions = 0;
+  long m_movesTaken = 0;  // G0/G1 taken into the planner since start(), for options.faultAtMove
   std::chrono::milliseconds m_replyDelay{0};
   std::deque<Outgoing> m_outbox;
 

@@ -119,6 +119,7 @@ void SimulatedPrinter::firmwareRestart() {
 
 void SimulatedPrinter::shutdown(const std::string& why) {
   m_firmwareState = "shutdown";
+  m_shutdownReason = why;
   m_firmwareMessage = why +
                       "\nOnce the underlying issue is corrected, use the \"FIRMWARE_RESTART\" command to reset "
                       "the firmware, reload the config, and restart the host software.";
@@ -138,7 +139,7 @@ void SimulatedPrinter::heat(double seconds) {
     m_extruder = toward(m_extruder, std::max(m_extruderTarget, m_settings.ambientC),
                         m_settings.extruderRateCPerSecond * seconds);
   m_bed = toward(m_bed, std::max(m_bedTarget, m_settings.ambientC), m_settings.bedRateCPerSecond * seconds);
-  if (m_extruder > m_settings.extruderMaxC) shutdown("MCU 'mcu' shutdown: ADC out of range");
+  if (m_extruder > m_settings.extruderMaxC) shutdown(m_settings.overTemperatureShutdown);
 }
 
 double SimulatedPrinter::secondsToReach(const TimelineLine& line) const {

@@ -1,5 +1,5 @@
 #pragma once
-// The printer behind the Moonraker simulator: Klipper's print_stats states, a virtual SD card that runs a
+// The printer behind the printer simulators: Klipper's print_stats states, a virtual SD card that runs a
 // G-code file line by line (moves timed by their feed rates, heater waits by the heating rate), two heaters,
 // and Klipper's shutdown (emergency stop, or a heater beyond its maximal temperature). Time only moves in
 // advance(); not thread-safe (the simulator holds its lock around every call).
@@ -17,6 +17,8 @@ struct SimulatedPrinterSettings {
   double bedRateCPerSecond = 2.0;
   double runawayRateCPerSecond = 20.0;  // a stuck-on extruder heater climbs this fast
   double extruderMaxC = 280.0;          // Klipper's max_temp: beyond it the firmware shuts down
+  // The firmware's words when a heater passes its maximum (Klipper's; Marlin says "MAXTEMP triggered").
+  std::string overTemperatureShutdown = "MCU 'mcu' shutdown: ADC out of range";
 };
 
 class SimulatedPrinter {
@@ -55,6 +57,8 @@ class SimulatedPrinter {
   [[nodiscard]] const std::string& jobMessage() const { return m_message; }
   [[nodiscard]] const std::string& firmwareState() const { return m_firmwareState; }  // webhooks.state
   [[nodiscard]] const std::string& firmwareMessage() const { return m_firmwareMessage; }
+  // Why the firmware last shut down, without Klipper's advice on restarting ("" when it never did).
+  [[nodiscard]] const std::string& shutdownReason() const { return m_shutdownReason; }
   [[nodiscard]] const std::string& currentFile() const { return m_file; }
   [[nodiscard]] double progress() const;
   [[nodiscard]] std::size_t filePosition() const { return m_bytesDone; }
@@ -73,6 +77,7 @@ class SimulatedPrinter {
   std::string m_message;
   std::string m_firmwareState = "ready";
   std::string m_firmwareMessage = "Printer is ready";
+  std::string m_shutdownReason;
   std::string m_file;
   GcodeTimeline m_timeline;
   std::size_t m_line = 0;

@@ -19,6 +19,7 @@
 
 #include "multidir/core/common/result.h"
 #include "multidir/hardware/printer_link.h"
+#include "multidir/hardware/printer_simulator.h"
 
 namespace multidir::hardware {
 
@@ -29,6 +30,10 @@ struct MarlinSimulatorOptions {
   std::chrono::milliseconds temperatureInterval{1000};  // "T:..." lines while M109/M190 wait
   // The clock of the records and of the simulated time; the system's steady clock unless a test injects one.
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
+  // ThermalRunaway or CancelledOnPrinter, injected by the printer itself once it has taken its faultAtMove-th
+  // move (G0/G1) into the planner: on that event, not on a timer, so a late test thread cannot miss the job.
+  PrinterFault fault = PrinterFault::None;
+  long faultAtMove = 10;
 };
 
 struct MarlinLineRecord {

@@ -1,8 +1,8 @@
 #pragma once
 // The printer as the print run sees it: upload a G-code file, start, pause, resume and cancel its job, stop it
 // in an emergency, and read its state, progress, file and temperatures. One interface for every protocol
-// (moonraker_link.h, marlin_link.h; printer_url.h picks one from a URL); protocols are documented in
-// docs/hardware.md with their sources.
+// (Moonraker: moonraker_link.h, OctoPrint: octoprint_link.h, Marlin: marlin_link.h; printer_url.h picks one
+// from a URL); protocols are documented in docs/hardware.md with their sources.
 //
 // Thread model: a link owns a worker thread that polls the printer every pollInterval and runs the queued
 // commands in order, and a second thread that only sends the emergency stop (so a slow status reply or an
@@ -27,7 +27,8 @@
 
 namespace multidir::hardware {
 
-// The printer's job, as Klipper's print_stats.state reports it. Unknown until the first good status read.
+// The printer's job, in Klipper's print_stats.state words (OctoPrint's states are mapped onto them: see
+// docs/hardware.md, "OctoPrint"). Unknown until the first good status read.
 enum class PrinterJobState { Unknown, Standby, Printing, Paused, Complete, Cancelled, Error };
 
 // "unknown", "standby", "printing", "paused", "complete", "cancelled", "error".
@@ -44,12 +45,14 @@ struct PrinterStatus {
   // is the last one read and may be stale; the printer may still be printing on its own.
   bool linkLost = true;
   PrinterJobState state = PrinterJobState::Unknown;
-  std::string firmwareState;  // Klipper's webhooks.state: "ready", "startup", "shutdown", "error"; Marlin's
-                              // link: "ready", or "halted" once Marlin stopped (kill, M112)
-  std::string message;        // the printer's own words: print_stats.message, or webhooks.state_message when
-                              // the firmware is not ready ("" when it says nothing)
-  double progress = 0.0;      // 0..1 of the current file (virtual_sdcard.progress: bytes read / file size)
-  std::string currentFile;    // print_stats.filename ("" when none)
+  // "ready" when the printer takes jobs; else Klipper's webhooks.state ("startup", "shutdown", "error"),
+  // OctoPrint's connection to the printer ("offline", "connecting", "error"), or Marlin's link "halted" once
+  // Marlin stopped (kill, M112).
+  std::string firmwareState;
+  std::string message;      // the printer's own words: print_stats.message, or webhooks.state_message when the
+                            // firmware is not ready; OctoPrint's error ("" when it says nothing)
+  double progress = 0.0;    // 0..1 of the current file (virtual_sdcard.progress: bytes read / file size)
+  std::string currentFile;  // print_stats.filename ("" when none)
   HeaterReading extruder;
   HeaterReading bed;
   std::uint64_t polls = 0;                            // good status reads since connect()
@@ -94,11 +97,12 @@ class PrinterLink {
   // Latched (see above); the future ends once the printer answered it.
   virtual std::future<core::Status> emergencyStop() = 0;
   // The operator allows uploads and starts again; refused until the printer confirmed the stop. A Klipper
-  // printer also needs a FIRMWARE_RESTART after its emergency stop (firmwareState "shutdown").
+  // printer also needs a FIRMWARE_RESTART after its emergency stop (firmwareState "shutdown"); behind
+  // OctoPrint, a reset of the printer and a Connect in OctoPrint (firmwareState "error").
   virtual core::Status clearStop() = 0;
 
   [[nodiscard]] virtual PrinterStatus status() const = 0;
-  // "Moonraker printer at 127.0.0.1:7125".
+  // "Moonraker printer at 127.0.0.1:7125", "OctoPrint printer at 192.168.0.21:80".
   [[nodiscard]] virtual std::string name() const = 0;
 };
 

@@ -1,8 +1,8 @@
 #pragma once
-// One --printer URL to the printer link it names (docs/hardware.md, "Printer link"):
-//   http://HOST[:PORT], HOST[:PORT]    Moonraker (Klipper): port 80 with http://, else 7125
-//   moonraker://HOST[:PORT]            Moonraker, port 7125 unless given
-//   serial:///dev/ttyACM0[?baud=N]     Marlin over USB serial (baud 115200 unless given)
+// One printer address for every protocol, as `multidir run --printer URL` takes it (docs/hardware.md):
+//   http://HOST[:PORT], HOST[:PORT], moonraker://HOST[:PORT]   Klipper through Moonraker (moonraker_link.h)
+//   octoprint://HOST[:PORT]                                    OctoPrint (octoprint_link.h; needs the API key)
+//   serial:///dev/ttyACM0[?baud=N]                             Marlin over USB serial (marlin_link.h)
 #include <memory>
 #include <string>
 
@@ -11,11 +11,12 @@
 
 namespace multidir::hardware {
 
-// The scheme of `url` ("http", "serial", ...), "" when it has none (a bare HOST:PORT).
-std::string printerUrlScheme(const std::string& url);
+// The URL's protocol: "moonraker" (http://, moonraker:// and a bare HOST:PORT), "octoprint" or "serial".
+// Errors: InvalidParameter for an unknown scheme, naming the ones there are.
+core::Result<std::string> printerUrlScheme(const std::string& url);
 
-// `apiKey` is used by the protocols that have one (Moonraker's X-Api-Key). Errors: InvalidParameter naming
-// what is wrong, or an unknown scheme with the ones this version knows.
+// The link the URL names (not connected yet). `apiKey`: Moonraker's (optional) or OctoPrint's (required);
+// a serial printer has none. Errors: InvalidParameter naming what is wrong with the URL, the key or the options.
 core::Result<std::unique_ptr<PrinterLink>> makePrinterLinkFromUrl(const std::string& url, const std::string& apiKey,
                                                                   const PrinterLinkOptions& options = {});
 

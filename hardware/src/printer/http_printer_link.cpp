@@ -1,0 +1,337 @@
+// The threads, queue and latch every HTTP printer link shares (see http_printer_link.h).
+#include "printer/http_printer_link.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace multidir::hardware {
+
+using Clock = std::chrono::steady_clock;
+
+core::Error invalidParameter(const std::string& what, const std::string& where) {
+  return core::Error{core::ErrorCode::InvalidParameter, what, where};
+}
+
+std::future<core::Status> readyStatus(core::Status status) {
+  std::promise<core::Status> promise;
+  promise.set_value(std::move(status));
+  return promise.get_future();
+}
+
+std::string percentEncode(const std::string& text) {
+  static const char* const kHex = "0123456789ABCDEF";
+  std::string out;
+  for (const unsigned char c : text) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~' || c == '/') {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
+core::Result<std::string> readFileToUpload(const std::string& localPath) {
+  std::ifstream in(localPath, std::ios::binary);
+  if (!in)
+    return core::Error{core::ErrorCode::FileNotFound,
+                       "cannot read the G-code file to upload: check that it exists (slice the job first)", localPath};
+  std::ostringstream content;
+  content << in.rdbuf();
+  return content.str();
+}
+
+std::string plainFileNameProblem(const std::string& remoteName) {
+  if (remoteName.empty() || remoteName.find('/') != std::string::npos || remoteName.find("..") != std::string::npos)
+    return "the printer's file name '" + remoteName + "' must be a plain file name";
+  return {};
+}
+
+core::Result<HostPort> parseHostPortUrl(const std::string& url, const std::string& scheme, int defaultPortWithHttp,
+                                        int defaultPort, const std::string& example) {
+  std::string rest = url;
+  int port = defaultPort;
+  if (rest.rfind("https://", 0) == 0)
+    return invalidParameter("'" + url + "': https is not supported; use http:// on the lab network (or a tunnel)",
+                            "--printer");
+  if (rest.rfind("http://", 0) == 0) {
+    rest = rest.substr(7);
+    port = defaultPortWithHttp;
+  } else if (rest.rfind(scheme + "://", 0) == 0) {
+    rest = rest.substr(scheme.size() + 3);
+  }
+  if (!rest.empty() && rest.back() == '/') rest.pop_back();
+  if (rest.find('/') != std::string::npos)
+    return invalidParameter("'" + url + "': give the printer's address without a path, such as " + example,
+                            "--printer");
+  const std::size_t colon = rest.rfind(':');
+  HostPort out;
+  out.host = colon == std::string::npos ? rest : rest.substr(0, colon);
+  if (out.host.empty()) return invalidParameter("'" + url + "' names no host, such as " + example, "--printer");
+  out.port = port;
+  if (colon != std::string::npos) {
+    const std::string portText = rest.substr(colon + 1);
+    const bool digits = !portText.empty() && portText.size() <= 5 &&
+                        std::all_of(portText.begin(), portText.end(), [](char c) { return c >= '0' && c <= '9'; });
+    out.port = digits ? std::stoi(portText) : 0;
+    if (out.port < 1 || out.port > 65535)
+      return invalidParameter("'" + url + "': the port must be a number from 1 to 65535", "--printer");
+  }
+  return out;
+}
+
+core::Status validateEndpoint(const std::string& host, int port, const PrinterLinkOptions& options) {
+  if (host.empty()) return invalidParameter("the printer's host is empty", "printer");
+  if (port < 1 || port > 65535) return invalidParameter("the printer's port must be 1..65535", "printer");
+  return validate(options);
+}
+
+HttpPrinterLink::HttpPrinterLink(const std::string& protocol, HttpEndpoint endpoint, PrinterLinkOptions options)
+    : m_endpoint(std::move(endpoint)),
+      m_options(std::move(options)),
+      m_name(protocol + " printer at " + m_endpoint.host + ":" + std::to_string(m_endpoint.port)) {
+  if (!m_options.steadyNow) m_options.steadyNow = [] { return Clock::now(); };
+}
+
+HttpPrinterLink::~HttpPrinterLink() { disconnect(); }
+
+core::Status HttpPrinterLink::connect() {
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_running) return invalidParameter("already connected", m_name);
+    m_quit = false;
+    m_running = true;
+    m_firstDone = false;
+    m_status.link = LinkState::Connecting;
+    m_status.polls = 0;
+  }
+  m_worker = std::thread([this] { runWorker(); });
+  m_stopper = std::thread([this] { runStopper(); });
+  std::unique_lock<std::mutex> lock(m_mutex);
+  m_firstCondition.wait(lock, [this] { return m_firstDone; });
+  return m_first;
+}
+
+void HttpPrinterLink::disconnect() {
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (!m_running) return;
+    m_quit = true;
+  }
+  m_wake.notify_all();
+  m_stopWake.notify_all();
+  if (m_worker.joinable()) m_worker.join();
+  if (m_stopper.joinable()) m_stopper.join();
+  std::lock_guard<std::mutex> lock(m_mutex);
+  m_running = false;
+  m_status.link = LinkState::Disconnected;
+  failQueued(core::Error{core::ErrorCode::Cancelled, "the link was disconnected before the command was sent", m_name});
+  for (auto& waiter : m_stopWaiters)
+    waiter.second.set_value(core::Error{core::ErrorCode::Cancelled,
+                                        "disconnected before the printer confirmed the emergency stop (it stays "
+                                        "latched and is sent first on the next connect)",
+                                        m_name});
+  m_stopWaiters.clear();
+}
+
+std::future<core::Status> HttpPrinterLink::upload(const std::string& localPath, const std::string& remoteName) {
+  if (const std::string problem = plainFileNameProblem(remoteName); !problem.empty())
+    return readyStatus(invalidParameter(problem, m_name));
+  return submit("uploading " + remoteName, true, [this, localPath, remoteName](httplib::Client&) {
+    const core::Result<std::string> content = readFileToUpload(localPath);
+    if (!content) return core::Status(content.error());
+    auto uploader = client(m_options.uploadTimeout);
+    return postFile(*uploader, *content, remoteName);
+  });
+}
+
+std::future<core::Status> HttpPrinterLink::emergencyStop() {
+  std::promise<core::Status> promise;
+  std::future<core::Status> future = promise.get_future();
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_status.stop.kind = StopKind::EmergencyStop;
+    m_status.stop.confirmed = false;
+    m_status.stop.problem = "not sent yet";
+    ++m_stopGeneration;
+    m_stopDue = true;
+    m_stopWaiters.emplace_back(m_stopGeneration, std::move(promise));
+    failQueued(core::Error{core::ErrorCode::Cancelled, "cancelled by the emergency stop", m_name});
+  }
+  m_stopWake.notify_all();
+  return future;
+}
+
+core::Status HttpPrinterLink::clearStop() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  if (!m_status.stop.latched()) return core::Done{};
+  if (!m_status.stop.confirmed)
+    return invalidParameter("the printer has not confirmed the emergency stop yet (" + m_status.stop.problem +
+                                "): it cannot be cleared before it took effect",
+                            m_name);
+  m_status.stop = StopLatch{};
+  return core::Done{};
+}
+
+PrinterStatus HttpPrinterLink::status() const {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  PrinterStatus s = m_status;
+  s.linkLost = s.polls == 0 ||
+               (s.link != LinkState::Connected && m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter);
+  return s;
+}
+
+std::unique_ptr<httplib::Client> HttpPrinterLink::client(std::chrono::milliseconds replyTimeout) const {
+  auto c = std::make_unique<httplib::Client>(m_endpoint.host, m_endpoint.port);
+  const auto parts = [](std::chrono::milliseconds t) {
+    return std::pair<time_t, time_t>(static_cast<time_t>(t.count() / 1000),
+                                     static_cast<time_t>(t.count() % 1000) * 1000);
+  };
+  const auto connectTimeout = parts(m_options.requestTimeout);
+  const auto reply = parts(replyTimeout);
+  c->set_connection_timeout(connectTimeout.first, connectTimeout.second);
+  c->set_read_timeout(reply.first, reply.second);
+  c->set_write_timeout(reply.first, reply.second);
+  c->set_keep_alive(false);
+  if (!m_endpoint.apiKey.empty()) c->set_default_headers({{"X-Api-Key", m_endpoint.apiKey}});
+  return c;
+}
+
+std::future<core::Status> HttpPrinterLink::submit(const std::string& what, bool refusedWhileStopped, Command command) {
+  std::promise<core::Status> promise;
+  std::future<core::Status> future = promise.get_future();
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (!m_running) {
+      promise.set_value(invalidParameter("not connected: " + what + " was not sent", m_name));
+      return future;
+    }
+    if (refusedWhileStopped && m_status.stop.latched()) {
+      promise.set_value(invalidParameter(
+          "the emergency stop is latched: " + what + " was not sent; clear the stop (and restart the printer) first",
+          m_name));
+      return future;
+    }
+    m_queue.push_back(Pending{std::move(command), std::move(promise), what});
+  }
+  m_wake.notify_all();
+  return future;
+}
+
+void HttpPrinterLink::failQueued(const core::Error& error) {
+  for (Pending& pending : m_queue) pending.promise.set_value(error);
+  m_queue.clear();
+}
+
+void HttpPrinterLink::poll() {
+  auto c = client(m_options.requestTimeout);
+  const core::Result<PrinterReading> reading = readStatus(*c);
+  std::lock_guard<std::mutex> lock(m_mutex);
+  if (!reading) {
+    m_status.link =
+        m_status.polls == 0 && m_status.link == LinkState::Connecting ? LinkState::Connecting : LinkState::Reconnecting;
+    m_status.lastError = reading.error().describe();
+    m_lastPollFailed = true;
+    if (!m_firstDone) finishFirst(reading.error());
+    return;
+  }
+  const PrinterReading& r = *reading;
+  m_status.link = LinkState::Connected;
+  m_status.state = r.state;
+  m_status.firmwareState = r.firmwareState;
+  m_status.message = r.message;
+  m_status.progress = r.progress;
+  m_status.currentFile = r.currentFile;
+  m_status.extruder = r.extruder;
+  m_status.bed = r.bed;
+  ++m_status.polls;
+  m_status.lastReply = m_options.steadyNow();
+  m_status.lastError.clear();
+  // Back after a failure with a stop latched: send it again (the printer may have restarted meanwhile).
+  if (m_lastPollFailed && m_status.stop.latched()) {
+    m_stopDue = true;
+    m_stopWake.notify_all();
+  }
+  m_lastPollFailed = false;
+  if (!m_firstDone) finishFirst(core::Done{});
+}
+
+void HttpPrinterLink::finishFirst(core::Status outcome) {
+  m_first = std::move(outcome);
+  m_firstDone = true;
+  m_firstCondition.notify_all();
+}
+
+void HttpPrinterLink::runWorker() {
+  auto nextPoll = Clock::now();
+  while (true) {
+    Pending pending;
+    bool havePending = false;
+    {
+      std::unique_lock<std::mutex> lock(m_mutex);
+      m_wake.wait_until(lock, nextPoll, [this] { return m_quit || !m_queue.empty(); });
+      if (m_quit) return;
+      if (!m_queue.empty()) {
+        pending = std::move(m_queue.front());
+        m_queue.pop_front();
+        havePending = true;
+      }
+    }
+    if (havePending) {
+      auto c = client(m_options.requestTimeout);
+      core::Status outcome = pending.command(*c);
+      if (!outcome.ok()) {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_status.lastError = outcome.error().describe();
+      }
+      pending.promise.set_value(std::move(outcome));
+      nextPoll = Clock::now();  // read the effect at once
+      continue;
+    }
+    if (Clock::now() >= nextPoll) {
+      poll();
+      nextPoll = Clock::now() + m_options.pollInterval;
+    }
+  }
+}
+
+void HttpPrinterLink::runStopper() {
+  while (true) {
+    std::uint64_t generation = 0;
+    {
+      std::unique_lock<std::mutex> lock(m_mutex);
+      m_stopWake.wait(lock, [this] { return m_quit || m_stopDue; });
+      if (m_quit) return;
+      generation = m_stopGeneration;
+      m_stopDue = false;
+    }
+    auto c = client(m_options.requestTimeout);
+    const core::Status sent = sendEmergencyStop(*c);
+    std::unique_lock<std::mutex> lock(m_mutex);
+    if (sent.ok()) {
+      ++m_status.stop.writes;
+      if (generation == m_stopGeneration) {
+        m_status.stop.confirmed = true;
+        m_status.stop.problem.clear();
+      }
+      for (auto it = m_stopWaiters.begin(); it != m_stopWaiters.end();) {
+        if (it->first <= generation) {
+          it->second.set_value(core::Done{});
+          it = m_stopWaiters.erase(it);
+        } else {
+          ++it;
+        }
+      }
+      continue;
+    }
+    m_status.stop.problem = sent.error().describe();
+    m_stopDue = true;  // resend until the printer answers
+    m_stopWake.wait_for(lock, m_options.stopRetryInterval, [this] { return m_quit; });
+  }
+}
+
+}  // namespace multidir::hardware
