@@ -459,6 +459,12 @@ class MarlinLink : public PrinterLink {
   // m_mutex held: the printer refused line n (bad checksum, wrong number) and every line after it.
   void onResend(long n) {
     ++m_oksToSkip;
+    // A damaged "N0 M110 N0" never reset the printer's numbering, so it asks for the next line of the old one:
+    // the reset goes again (Marlin takes an M110 whatever its number).
+    if (m_ackedUpTo < m_sentUpTo && m_lines[static_cast<std::size_t>(m_ackedUpTo + 1)].role == Role::Reset) {
+      m_sentUpTo = m_ackedUpTo;
+      return;
+    }
     if (n < 0 || n > static_cast<long>(m_lines.size()) || n <= m_ackedUpTo) {
       m_status.lastError = "the printer asked for line " + std::to_string(n) + ", which this link did not send";
       return;
