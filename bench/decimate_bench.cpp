@@ -11,6 +11,7 @@
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_resolution.h"
+#include "shared_model_path.h"
 
 using namespace multidir::core;
 
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::string path = argv[1];
-  if (path.find('/') == std::string::npos) path = std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + path + ".off";
+  path = multidir::bench::sharedModelPath(path);
   const auto loadStart = std::chrono::steady_clock::now();
   const auto loaded = loadMesh(path);
   if (!loaded.ok()) {

@@ -31,6 +31,7 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_resolution.h"
 #include "noisy_surface.h"
+#include "shared_model_path.h"
 
 using namespace multidir::core;
 namespace fs = std::filesystem;
@@ -63,7 +64,7 @@ struct Outcome {
 bool writeCase(Case& c, const fs::path& folder) {
   c.file = (folder / (c.model + "-" + std::to_string(c.level) + (c.noiseMm > 0 ? "-noisy" : "") + ".stl")).string();
   if (fs::exists(c.file)) return true;
-  const auto loaded = loadMesh(std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + c.model + ".off");
+  const auto loaded = loadMesh(multidir::bench::sharedModelPath(c.model));
   if (!loaded.ok()) {
     std::fprintf(stderr, "%s: %s\n", c.model.c_str(), loaded.error().describe().c_str());
     return false;

@@ -27,6 +27,7 @@
 #include "multidir/core/search/pose_search.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
+#include "shared_model_path.h"
 
 using namespace multidir::core;
 
@@ -95,7 +96,7 @@ int main(int argc, char** argv) {
   std::vector<double> shares;
   std::vector<double> autoShares;
   for (const std::string& name : models) {
-    auto loaded = loadMesh(std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + name + ".off");
+    auto loaded = loadMesh(multidir::bench::sharedModelPath(name));
     if (!loaded.ok()) {
       std::fprintf(stderr, "%s\n", loaded.error().describe().c_str());
       return 1;

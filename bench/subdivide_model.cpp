@@ -14,6 +14,7 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_resolution.h"
 #include "noisy_surface.h"
+#include "shared_model_path.h"
 
 using namespace multidir::core;
 
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::string path = argv[1];
-  if (path.find('/') == std::string::npos) path = std::string(MULTIDIR_SHARED_MODELS_DIR) + "/" + path + ".off";
+  path = multidir::bench::sharedModelPath(path);
   const auto loaded = loadMesh(path);
   if (!loaded.ok()) {
     std::fprintf(stderr, "%s\n", loaded.error().describe().c_str());

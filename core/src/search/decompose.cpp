@@ -2,7 +2,6 @@
 #include "multidir/core/search/plan_from_planes.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <mutex>
 #include <tuple>
