@@ -2,7 +2,7 @@
 // triangles, candidates, wall seconds, peak memory, regions, J_G before and after.
 //
 //   multidir_search_bench [--models kitten,bunny,...] [--machine 5dof|4dof] [--axes N] [--threads N]
-//                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--refine ROUNDS]
+//                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--w W] [--scales S] [--refine ROUNDS]
 //                         [--min-region-height MM] [--min-plane-gain PERCENT] [--pose auto] [--poses N]
 //                         [--subdivide K] [--proxy-faces N]
 // --subdivide K: each model subdivided K times first (4^K as many faces, the same surface): the scaling runs.
@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
     else if (flag == "--scheme") options.scheme = parseScheme(value).value();
     else if (flag == "--beam-width") options.beamWidth = std::atoi(value.c_str());
     else if (flag == "--w") options.minVolumeDivisor = std::atof(value.c_str());
+    else if (flag == "--scales") options.volumeScales = std::atoi(value.c_str());
     else if (flag == "--diversity-offset") options.diversityOffsetMm = std::atof(value.c_str());
     else if (flag == "--diversity-cosine") options.diversityCosine = std::atof(value.c_str());
     else if (flag == "--normals") options.candidates.normalSamples = std::atoi(value.c_str());
@@ -87,10 +88,10 @@ int main(int argc, char** argv) {
   if (machine.kind == MachineKind::RotaryPlatform) machine.rotationAxis = Vec3::UnitX();
 
   std::printf("machine %s, scheme %s, beam width %d, alpha %.0f, normals %d, refinement rounds %d, offset step %.1f mm, "
-              "w %.0f%s\n",
+              "w %.0f, scales %d%s\n",
               machineKindName(machine.kind), schemeName(options.scheme), options.beamWidth, options.alphaMaxDegrees,
               options.candidates.normalSamples, options.refinementRounds, options.candidates.offsetStepMm, options.minVolumeDivisor,
-              axes ? (", axis search over " + std::to_string(axes) + " axes").c_str() : "");
+              options.volumeScales, axes ? (", axis search over " + std::to_string(axes) + " axes").c_str() : "");
   std::printf("%-12s %9s %11s %9s %9s %7s %12s %12s %8s %6s\n", "model", "triangles", "candidates", "seconds", "peak MiB",
               "regions", "J_G before", "J_G after", "after %", "saved");
   std::vector<double> shares;

@@ -50,6 +50,8 @@ const char* const kDecomposeHelp =
     "                       (default: 3)\n"
     "  --offset-step MM     spacing of candidate planes along a normal, 0.01 to 1000 (default: 1)\n"
     "  --w W                every region keeps at least 1/W of the model's volume, 1 to 1000 (default: 40)\n"
+    "  --scales S           beam: search at S region scales, W, 2W, ..., side by side, the beams shared\n"
+    "                       among them, 1 to 4 (default: 2)\n"
     "  --min-region-height MM\n"
     "                       no region is thinner than this along its printing direction (default: 2)\n"
     "  --min-plane-gain PERCENT\n"
@@ -169,6 +171,7 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
   apply("--offset-step",
         [&](const std::string& t) { options.candidates.offsetStepMm = parseNumber(t, "--offset-step"); });
   apply("--w", [&](const std::string& t) { options.minVolumeDivisor = parseNumber(t, "--w"); });
+  apply("--scales", [&](const std::string& t) { options.volumeScales = parseInteger(t, "--scales"); });
   apply("--min-region-height",
         [&](const std::string& t) { options.minRegionHeightMm = parseNumber(t, "--min-region-height"); });
   apply("--min-plane-gain",
@@ -189,7 +192,7 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   const ParsedArgs parsed =
       parseArgs(args,
                 {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
-                 "--refine", "--offset-step", "--w", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
+                 "--refine", "--offset-step", "--w", "--scales", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
                  "--threads", "--profile", "-o", "--summary", "--support-spacing", "--scale", "--pose", "--poses",
                  "--pose-searches", "--proxy-faces"},
                 {"--help", "--no-supports", "--no-proxy"}, "decompose");

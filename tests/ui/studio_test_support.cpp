@@ -53,6 +53,7 @@ core::SearchOptions quickSearchOptions() {
   options.candidates.normalSamples = 60;
   options.candidates.offsetStepMm = 2.0;
   options.minVolumeDivisor = 10.0;  // a few large regions keep the scenes the tests look at readable
+  options.volumeScales = 1;         // ... and so does one scale (w = 20 would add small ones)
   return options;
 }
 

@@ -205,6 +205,97 @@ void flipSlivers(const std::vector<Vec2>& points, std::vector<Triangle>& triangl
   }
 }
 
+// Whether d lies inside the circle through a, b, c (counter-clockwise), by more than rounding: coordinates are
+// taken relative to d, and the determinant must exceed a small fraction of its terms' size.
+bool insideCircumcircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const Vec2 pa = a - d, pb = b - d, pc = c - d;
+  const double la = pa.squaredNorm(), lb = pb.squaredNorm(), lc = pc.squaredNorm();
+  const double t1 = la * (pb.x() * pc.y() - pb.y() * pc.x());
+  const double t2 = lb * (pc.x() * pa.y() - pc.y() * pa.x());
+  const double t3 = lc * (pa.x() * pb.y() - pa.y() * pb.x());
+  return t1 + t2 + t3 > 1e-9 * (std::abs(t1) + std::abs(t2) + std::abs(t3));
+}
+
+// Lawson's flips to the constrained Delaunay triangulation of the cap (its loops' edges are the constraints).
+// Ear clipping of a loop of many close points (a cut through a dense mesh) leaves fans of long thin triangles
+// meeting at a few corners; a later plane crossing such a cap cuts those thin triangles at points that crowd
+// together near the corners, closer than a binary STL's floats can tell apart, at any offset (a million-face
+// knight lost a plane to this). Delaunay triangles are as round as the loop allows, and the points a later cut
+// makes on them are spread as the loop's own points are. Diagonals in `avoid` or already in the cap are never
+// made; each flip must leave two triangles of positive area; a budget ends the loop whatever rounding does.
+void flipToDelaunay(const std::vector<Vec2>& points, std::vector<Triangle>& triangles,
+                    const std::vector<std::array<std::int32_t, 2>>& avoid) {
+  const std::size_t n = triangles.size();
+  if (n < 2) return;
+  // Each directed edge 3f + k (from corner k of face f) and the one across it (-1 on the boundary, and where an
+  // edge is repeated because loops touch: nothing is flipped there).
+  std::vector<std::pair<std::uint64_t, std::int32_t>> sorted(3 * n);
+  auto key = [](std::int32_t a, std::int32_t b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  for (std::size_t f = 0; f < n; ++f)
+    for (int k = 0; k < 3; ++k)
+      sorted[3 * f + k] = {key(triangles[f][k], triangles[f][(k + 1) % 3]), static_cast<std::int32_t>(3 * f + k)};
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::int32_t> across(3 * n, -1);
+  auto single = [&](std::uint64_t edge) -> std::int32_t {
+    auto it = std::lower_bound(sorted.begin(), sorted.end(), std::make_pair(edge, std::int32_t{-1}));
+    if (it == sorted.end() || it->first != edge) return -1;
+    if (it + 1 != sorted.end() && (it + 1)->first == edge) return -1;
+    return it->second;
+  };
+  // A corner that starts more than one boundary edge is where loops touch: no diagonal is made to it, since
+  // the fans around it are not one and the same diagonal might exist in the other.
+  std::vector<char> touching(points.size(), 0), startsBoundary(points.size(), 0);
+  for (std::size_t e = 0; e < 3 * n; ++e) {
+    const Triangle& t = triangles[e / 3];
+    const std::int32_t a = t[e % 3], b = t[(e % 3 + 1) % 3];
+    if (single(key(a, b)) < 0) continue;
+    across[e] = single(key(b, a));
+    if (across[e] < 0) {
+      if (startsBoundary[a]) touching[a] = 1;
+      startsBoundary[a] = 1;
+    }
+  }
+  std::unordered_set<std::uint64_t> forbidden;
+  for (const auto& pair : avoid) forbidden.insert(undirected(pair[0], pair[1]));
+  auto area = [&](std::int32_t a, std::int32_t b, std::int32_t c) {
+    const Vec2 &pa = points[a], &pb = points[b], &pc = points[c];
+    return (pb - pa).x() * (pc - pa).y() - (pb - pa).y() * (pc - pa).x();
+  };
+  auto link = [&](std::int32_t e, std::int32_t twin) {
+    across[e] = twin;
+    if (twin >= 0) across[twin] = e;
+  };
+  std::vector<std::int32_t> work;
+  for (std::size_t e = 0; e < 3 * n; ++e)
+    if (across[e] > static_cast<std::int32_t>(e)) work.push_back(static_cast<std::int32_t>(e));
+  std::size_t budget = 16 * n + 16;
+  while (!work.empty() && budget > 0) {
+    const std::int32_t e = work.back();
+    work.pop_back();
+    const std::int32_t twin = across[e];
+    if (twin < 0) continue;
+    const std::int32_t f = e / 3, k = e % 3, g = twin / 3, j = twin % 3;
+    const Triangle t = triangles[f], u = triangles[g];
+    const std::int32_t p = t[k], q = t[(k + 1) % 3], r = t[(k + 2) % 3], s = u[(j + 2) % 3];
+    if (r == s || touching[r] || touching[s] || !insideCircumcircle(points[p], points[q], points[r], points[s])) continue;
+    if (!forbidden.empty() && forbidden.count(undirected(r, s))) continue;
+    if (!(area(p, s, r) > 0.0) || !(area(s, q, r) > 0.0)) continue;  // the quadrilateral is not convex
+    --budget;
+    const std::int32_t rp = across[3 * f + (k + 2) % 3], qr = across[3 * f + (k + 1) % 3];
+    const std::int32_t ps = across[3 * g + (j + 1) % 3], sq = across[3 * g + (j + 2) % 3];
+    triangles[f] = {p, s, r};  // edges p->s, s->r, r->p
+    triangles[g] = {s, q, r};  // edges s->q, q->r, r->s
+    link(3 * f, ps);
+    link(3 * f + 2, rp);
+    link(3 * g, sq);
+    link(3 * g + 1, qr);
+    link(3 * f + 1, 3 * g + 2);
+    for (std::int32_t outer : {3 * f, 3 * f + 2, 3 * g, 3 * g + 1}) work.push_back(outer);
+  }
+}
+
 }  // namespace
 
 Result<std::vector<Triangle>> triangulateCap(const std::vector<CapEdge>& edges, const std::vector<CapEdge>& meshEdges,
@@ -289,6 +380,7 @@ Result<std::vector<Triangle>> triangulateCap(const std::vector<CapEdge>& edges, 
     if (!part)
       return Error{ErrorCode::Internal, "cap triangulation failed: " + part.error().describe(), "clipping cap"};
     flipSlivers(points, part.value(), avoid);
+    flipToDelaunay(points, part.value(), avoid);
     for (const Triangle& t : part.value()) triangles.push_back({globalOf[t[0]], globalOf[t[1]], globalOf[t[2]]});
   }
   return triangles;

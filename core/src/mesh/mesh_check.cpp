@@ -103,8 +103,8 @@ std::uint64_t hashOf(const std::array<std::int64_t, 3>& c) {
   return h;
 }
 
-// Welds vertices closer than `tolerance` (Euclidean) to the first such vertex found, through a grid of cells
-// of that size. Returns the new index of every vertex (-1 for vertices no face uses). A vertex equal to one
+// Welds vertices closer than `tolerance` (Euclidean) to the earliest kept vertex that close, through a grid
+// of cells. Returns the new index of every vertex (-1 for vertices no face uses). A vertex equal to one
 // already kept (an STL repeats every corner) is found by its exact coordinates first: no kept vertex other than
 // that one can lie within the tolerance, since kept vertices are farther apart than it.
 std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const std::vector<char>& used,
@@ -124,10 +124,13 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
     }
     return bits;
   };
+  // Cells twice the tolerance wide: a point lies within the tolerance of at most one side of its cell along
+  // each axis, so whatever is that close to it lies in its cell or the next one on that side (8 cells, not 27).
+  const double cellSize = 2.0 * tolerance;
   auto cellOf = [&](const Vec3& p) -> std::array<std::int64_t, 3> {
-    return {static_cast<std::int64_t>(std::floor(p.x() / tolerance)),
-            static_cast<std::int64_t>(std::floor(p.y() / tolerance)),
-            static_cast<std::int64_t>(std::floor(p.z() / tolerance))};
+    return {static_cast<std::int64_t>(std::floor(p.x() / cellSize)),
+            static_cast<std::int64_t>(std::floor(p.y() / cellSize)),
+            static_cast<std::int64_t>(std::floor(p.z() / cellSize))};
   };
   const auto usedCount = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
   FlatIndex exact(usedCount);
@@ -154,18 +157,18 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
     std::array<std::int64_t, 3> cell{};
     if (found < 0 && !exactOnly) {
       cell = cellOf(p);
-      for (int dx = -1; dx <= 1 && found < 0; ++dx)
-        for (int dy = -1; dy <= 1 && found < 0; ++dy)
-          for (int dz = -1; dz <= 1 && found < 0; ++dz) {
-            const std::array<std::int64_t, 3> near{cell[0] + dx, cell[1] + dy, cell[2] + dz};
-            const std::int32_t first =
-                cells.find(hashOf(near), [&](std::int32_t w) { return cellOfKept[static_cast<std::size_t>(w)] == near; });
-            for (std::int32_t w = first; w >= 0; w = nextInCell[static_cast<std::size_t>(w)])
-              if ((welded[static_cast<std::size_t>(w)] - p).squaredNorm() <= toleranceSquared) {
-                found = w;
-                break;
-              }
-          }
+      std::array<std::int64_t, 3> side{};
+      for (int i = 0; i < 3; ++i)
+        side[static_cast<std::size_t>(i)] = p[i] / cellSize - static_cast<double>(cell[static_cast<std::size_t>(i)]) < 0.5 ? -1 : 1;
+      // The earliest kept vertex within the tolerance, whatever order the cells are visited in.
+      for (int corner = 0; corner < 8; ++corner) {
+        const std::array<std::int64_t, 3> near{cell[0] + ((corner & 1) ? side[0] : 0), cell[1] + ((corner & 2) ? side[1] : 0),
+                                               cell[2] + ((corner & 4) ? side[2] : 0)};
+        const std::int32_t first =
+            cells.find(hashOf(near), [&](std::int32_t w) { return cellOfKept[static_cast<std::size_t>(w)] == near; });
+        for (std::int32_t w = first; w >= 0 && (found < 0 || w < found); w = nextInCell[static_cast<std::size_t>(w)])
+          if ((welded[static_cast<std::size_t>(w)] - p).squaredNorm() <= toleranceSquared) found = w;
+      }
     }
     if (found >= 0) {
       map[v] = found;

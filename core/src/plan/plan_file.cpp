@@ -4,7 +4,10 @@
 #include <set>
 #include <filesystem>
 #include <new>
+#include <optional>
+#include <utility>
 
+#include "detail/parallel.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "plan/json_field.h"
@@ -39,49 +42,67 @@ bool everyFaceHasArea(const TriangleMesh& mesh) {
 
 Error invalid(const std::string& what) { return Error{ErrorCode::InvalidParameter, what, "plan"}; }
 
-// The plan as the files will hold it: region meshes replaced by their STL images, each checked to load back
-// face for face.
+// Region i's mesh as its file will hold it: its STL image, checked to load back face for face.
+Result<TriangleMesh> regionOnDisk(const Decomposition& plan, std::size_t i) {
+  const TriangleMesh& mesh = plan.regions[i].mesh;
+  const std::string region = "region " + std::to_string(i);
+  if (mesh.empty()) return invalid(region + " has no faces");
+  if (mesh.origins.size() != mesh.triangles.size())
+    return invalid(region + " has " + std::to_string(mesh.triangles.size()) + " faces but " +
+                   std::to_string(mesh.origins.size()) + " face origins");
+  detail::StlImage image = detail::stlImage(mesh);
+  const std::string name = detail::regionFileName(i);
+  // When rounding to float merged no corners and left no face without area, the file loads back as the
+  // same vertices and faces, so a closure check of the image is enough; otherwise it is loaded back through
+  // every check of loadMesh.
+  if (image.mergedCorners == 0 && image.droppedFaces == 0 && everyFaceHasArea(image.mesh) &&
+      edgeCensus(image.mesh).closedOriented())
+    return std::move(image.mesh);
+  const Result<LoadedMesh> reloaded =
+      checkAndRepair(RawSoup{image.mesh.vertices, image.mesh.triangles, 0}, regionLoadOptions(), name);
+  if (!reloaded || reloaded->mesh.triangles.size() != image.mesh.triangles.size()) {
+    // Say what really happened: the input was closed; rounding the cut to float broke it.
+    std::string what = "writing region " + std::to_string(i) + " as binary STL (float) ";
+    if (image.mergedCorners > 0)
+      what += "would merge " + std::to_string(image.mergedCorners) +
+              " of its corners that lie closer together than float precision can tell apart";
+    else
+      what += "would change its faces";
+    what += ", and the region read back would not be the region cut (" +
+            (reloaded ? std::to_string(image.mesh.triangles.size() - reloaded->mesh.triangles.size()) + " faces lost"
+                      : reloaded.error().message) +
+            "). This comes from a clipping plane passing within rounding distance of the model's vertices, not "
+            "from the model: move that plane slightly (or use another --offset-step) and save again";
+    return Error{ErrorCode::WriteFailed, what, name};
+  }
+  return std::move(image.mesh);
+}
+
+// The plan as the files will hold it: region meshes replaced by their STL images, made side by side (a
+// million-face plan's images take a good part of its saving time). The first region that fails is named.
 Result<Decomposition> planOnDisk(const Decomposition& plan) {
   if (plan.regions.empty()) return invalid("the decomposition has no regions: there is nothing to save");
+  std::vector<std::optional<Result<TriangleMesh>>> images(plan.regions.size());
+  detail::parallelFor(static_cast<int>(plan.regions.size()), detail::resolveThreadCount(0),
+                      [&](int i) { images[static_cast<std::size_t>(i)] = regionOnDisk(plan, static_cast<std::size_t>(i)); });
   Decomposition onDisk = plan;
   for (std::size_t i = 0; i < plan.regions.size(); ++i) {
-    const TriangleMesh& mesh = plan.regions[i].mesh;
-    const std::string region = "region " + std::to_string(i);
-    if (mesh.empty()) return invalid(region + " has no faces");
-    if (mesh.origins.size() != mesh.triangles.size())
-      return invalid(region + " has " + std::to_string(mesh.triangles.size()) + " faces but " +
-                     std::to_string(mesh.origins.size()) + " face origins");
-    detail::StlImage image = detail::stlImage(mesh);
-    const std::string name = detail::regionFileName(i);
-    // When rounding to float merged no corners and left no face without area, the file loads back as the
-    // same vertices and faces, so a closure check of the image is enough; otherwise it is loaded back through
-    // every check of loadMesh.
-    if (image.mergedCorners == 0 && image.droppedFaces == 0 && everyFaceHasArea(image.mesh) &&
-        edgeCensus(image.mesh).closedOriented()) {
-      onDisk.regions[i].mesh = std::move(image.mesh);
-      continue;
-    }
-    const Result<LoadedMesh> reloaded =
-        checkAndRepair(RawSoup{image.mesh.vertices, image.mesh.triangles, 0}, regionLoadOptions(), name);
-    if (!reloaded || reloaded->mesh.triangles.size() != image.mesh.triangles.size()) {
-      // Say what really happened: the input was closed; rounding the cut to float broke it.
-      std::string what = "writing region " + std::to_string(i) + " as binary STL (float) ";
-      if (image.mergedCorners > 0)
-        what += "would merge " + std::to_string(image.mergedCorners) +
-                " of its corners that lie closer together than float precision can tell apart";
-      else
-        what += "would change its faces";
-      what += ", and the region read back would not be the region cut (" +
-              (reloaded ? std::to_string(image.mesh.triangles.size() - reloaded->mesh.triangles.size()) +
-                              " faces lost"
-                        : reloaded.error().message) +
-              "). This comes from a clipping plane passing within rounding distance of the model's vertices, not "
-              "from the model: move that plane slightly (or use another --offset-step) and save again";
-      return Error{ErrorCode::WriteFailed, what, name};
-    }
-    onDisk.regions[i].mesh = std::move(image.mesh);
+    if (!*images[i]) return images[i]->error();
+    onDisk.regions[i].mesh = std::move(**images[i]);
   }
   return onDisk;
+}
+
+// Writes each mesh to its path, side by side; the first failure in the given order is returned.
+Status saveMeshes(const std::vector<std::pair<const TriangleMesh*, std::string>>& files) {
+  std::vector<std::optional<Error>> failures(files.size());
+  detail::parallelFor(static_cast<int>(files.size()), detail::resolveThreadCount(0), [&](int i) {
+    const auto& [mesh, path] = files[static_cast<std::size_t>(i)];
+    if (Status saved = saveMesh(*mesh, path); !saved) failures[static_cast<std::size_t>(i)] = saved.error();
+  });
+  for (const std::optional<Error>& failure : failures)
+    if (failure) return *failure;
+  return Done{};
 }
 
 // plan.json's text, read back through loadPlan's checks: what loadPlan would refuse is refused now, before
@@ -213,13 +234,12 @@ Status savePlan(const Decomposition& plan, const PlanMetadata& metadata, const s
     if (!text) return text.error();
     const fs::path folder(directory);
     if (Status made = detail::makeOutputFolder(folder, "plan folder"); !made) return made;
+    std::vector<std::pair<const TriangleMesh*, std::string>> files;
     for (std::size_t i = 0; i < onDisk->regions.size(); ++i)
-      if (Status saved = saveMesh(onDisk->regions[i].mesh, (folder / detail::regionFileName(i)).string()); !saved)
-        return saved;
+      files.emplace_back(&onDisk->regions[i].mesh, (folder / detail::regionFileName(i)).string());
     for (std::size_t i = 0; i < supports.size(); ++i)
-      if (!supports[i].empty())
-        if (Status saved = saveMesh(supports[i].mesh, (folder / detail::supportFileName(i)).string()); !saved)
-          return saved;
+      if (!supports[i].empty()) files.emplace_back(&supports[i].mesh, (folder / detail::supportFileName(i)).string());
+    if (Status saved = saveMeshes(files); !saved) return saved;
     return detail::writeTextFile((folder / kPlanFileName).string(), *text, kPlanFileName);
   } catch (const std::bad_alloc&) {
     return Error{ErrorCode::WriteFailed, "there is not enough memory to write the plan", directory};

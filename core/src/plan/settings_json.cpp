@@ -39,6 +39,7 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"offsetStepMm", o.candidates.offsetStepMm},
           {"platformClearanceMm", o.candidates.platformClearanceMm},
           {"minVolumeDivisor", o.minVolumeDivisor},
+          {"volumeScales", o.volumeScales},
           {"initialDeltaMm2", o.initialDeltaMm2},
           {"deltaGrowth", o.deltaGrowth},
           {"diversityCosine", o.diversityCosine},
@@ -93,6 +94,9 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   o.candidates.offsetStepMm = field["offsetStepMm"].number();
   o.candidates.platformClearanceMm = field["platformClearanceMm"].number();
   o.minVolumeDivisor = field["minVolumeDivisor"].number();
+  // Plans written before the beam ran at several scales ran it at w alone.
+  const auto scales = field.optional("volumeScales");
+  o.volumeScales = scales ? smallInteger(*scales) : 1;
   o.initialDeltaMm2 = field["initialDeltaMm2"].number();
   o.deltaGrowth = field["deltaGrowth"].number();
   o.diversityCosine = field["diversityCosine"].number();

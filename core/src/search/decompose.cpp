@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <mutex>
 #include <tuple>
 #include <cmath>
@@ -30,7 +31,7 @@ class BestPlan {
         (std::abs(node->jg() - m_node->jg()) <= kTie && node->level < m_node->level))
       m_node = node;
   }
-  const NodePtr& node() const { return m_node; }
+  const NodePtr& node() const { return m_node; }  // null before anything was offered
 
  private:
   NodePtr m_node;
@@ -48,6 +49,20 @@ bool tooClose(const ScoredCandidate& a, const ScoredCandidate& b, const std::vec
               const SearchOptions& o) {
   return a.beam == b.beam && std::abs(normals[a.normal].dot(normals[b.normal])) > o.diversityCosine &&
          std::abs(a.offsetMm - b.offsetMm) < o.diversityOffsetMm;
+}
+
+// One scale of the beam search: the smallest region it may cut off, its beams and its levels.
+struct BeamScale {
+  double minRegionVolume = 0.0;
+  int beamWidth = 1;
+  int maxLevels = 1;
+};
+
+// Candidates whose region is below the scale's smallest are not this scale's to take.
+void dropSmallerThan(std::vector<ScoredCandidate>& candidates, double minRegionVolume) {
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                  [&](const ScoredCandidate& c) { return c.volumeAboveMm3 < minRegionVolume; }),
+                   candidates.end());
 }
 
 void report(const SearchProgressSink& sink, int level, int alive, const BestPlan& best, const SearchEngine& engine) {
@@ -114,14 +129,14 @@ std::vector<std::optional<NodePtr>> extendAll(SearchEngine& engine, const std::v
 // normal falls on decides whether a region comes out risk-free; the bunny's plan swung between 3 % and 15 %
 // of J_G with the number of normals before this. Returns true when cancelled.
 bool refineCandidates(SearchEngine& engine, const std::vector<NodePtr>& beams, const SearchOptions& o,
-                      std::vector<ScoredCandidate>& pool) {
+                      const BeamScale& scale, std::vector<ScoredCandidate>& pool) {
   if (o.refinementRounds == 0) return false;
   const double spacing = normalSpacingRadians(engine.machine(), o.candidates);
   if (spacing <= 0) return false;
   // Seeds: the first beamWidth distinct (beam, normal) pairs in Algorithm 1's order.
   std::vector<ScoredCandidate> seeds;
   for (std::size_t index : beamOrder(pool, o)) {
-    if (static_cast<int>(seeds.size()) >= o.beamWidth) break;
+    if (static_cast<int>(seeds.size()) >= scale.beamWidth) break;
     const ScoredCandidate& c = pool[index];
     const bool seen = std::any_of(seeds.begin(), seeds.end(),
                                   [&](const ScoredCandidate& s) { return s.beam == c.beam && s.normal == c.normal; });
@@ -137,8 +152,9 @@ bool refineCandidates(SearchEngine& engine, const std::vector<NodePtr>& beams, c
         indices.push_back(engine.addNormal(n));
       if (indices.empty()) break;
       bool cancelled = false;
-      const std::vector<ScoredCandidate> scored = engine.scoreNormals(*beams[seed.beam], seed.beam, indices, cancelled);
+      std::vector<ScoredCandidate> scored = engine.scoreNormals(*beams[seed.beam], seed.beam, indices, cancelled);
       if (cancelled) return true;
+      dropSmallerThan(scored, scale.minRegionVolume);
       for (const ScoredCandidate& c : scored) {
         if (keyOf(c, o) < best) {
           best = keyOf(c, o);
@@ -153,22 +169,22 @@ bool refineCandidates(SearchEngine& engine, const std::vector<NodePtr>& beams, c
 }
 
 // Algorithm 1 of the paper.
-bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best, const SearchProgressSink& sink,
-                   int& levels) {
+bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, const BeamScale& scale, BestPlan& best,
+                   const SearchProgressSink& sink, int& levels) {
   std::vector<NodePtr> beams = {engine.root()};
   best.offer(engine.root());
-  if (engine.isTerminal(*engine.root())) return false;
-  const int maxLevels = maxSearchLevels(o);
-  for (int level = 0; !beams.empty() && level < maxLevels; ++level) {
-    levels = level + 1;
+  if (engine.isTerminal(*engine.root(), scale.minRegionVolume)) return false;
+  for (int level = 0; !beams.empty() && level < scale.maxLevels; ++level) {
+    levels = std::max(levels, level + 1);
     std::vector<ScoredCandidate> pool;
     for (int b = 0; b < static_cast<int>(beams.size()); ++b) {
       bool cancelled = false;
       std::vector<ScoredCandidate> scored = engine.score(*beams[b], b, cancelled);
       if (cancelled) return true;
+      dropSmallerThan(scored, scale.minRegionVolume);
       pool.insert(pool.end(), scored.begin(), scored.end());
     }
-    if (refineCandidates(engine, beams, o, pool)) return true;
+    if (refineCandidates(engine, beams, o, scale, pool)) return true;
     for (const NodePtr& beam : beams) releaseParentSweeps(engine, *beam);
     const std::vector<std::size_t> order = beamOrder(pool, o);
     std::vector<NodePtr> next;
@@ -179,15 +195,15 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
     };
     // Candidates in Algorithm 1's order, clipped a batch at a time on the engine's threads; a batch holds
     // as many as beams are still missing (at most the thread count), and its children are taken in order.
-    for (std::size_t position = 0; static_cast<int>(next.size()) < o.beamWidth && position < order.size();) {
+    for (std::size_t position = 0; static_cast<int>(next.size()) < scale.beamWidth && position < order.size();) {
       if (engine.job().isCancelled()) return true;
       const std::size_t wanted =
-          static_cast<std::size_t>(std::min(engine.threads(), o.beamWidth - static_cast<int>(next.size())));
+          static_cast<std::size_t>(std::min(engine.threads(), scale.beamWidth - static_cast<int>(next.size())));
       std::vector<std::size_t> batch;
       for (; batch.size() < wanted && position < order.size(); ++position)
         if (!closeToChosen(pool[order[position]])) batch.push_back(order[position]);
       const std::vector<std::optional<NodePtr>> children = extendAll(engine, beams, pool, batch);
-      for (std::size_t i = 0; i < batch.size() && static_cast<int>(next.size()) < o.beamWidth; ++i) {
+      for (std::size_t i = 0; i < batch.size() && static_cast<int>(next.size()) < scale.beamWidth; ++i) {
         const ScoredCandidate& c = pool[batch[i]];
         if (closeToChosen(c)) continue;  // close to one chosen earlier in this batch
         const std::optional<NodePtr>& child = children[i];
@@ -203,21 +219,23 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
     }
     beams.clear();
     for (const NodePtr& node : next)
-      if (!engine.isTerminal(*node)) beams.push_back(node);
+      if (!engine.isTerminal(*node, scale.minRegionVolume)) beams.push_back(node);
     report(sink, level + 1, static_cast<int>(beams.size()), best, engine);
   }
   return false;
 }
 
 // Paper Eq. 7 (unconstrained) and Eq. 8 (constrained): one beam, the cut with the largest J_L.
-bool runGreedy(SearchEngine& engine, bool constrained, BestPlan& best, const SearchProgressSink& sink, int& levels) {
+bool runGreedy(SearchEngine& engine, bool constrained, double minRegionVolume, BestPlan& best,
+               const SearchProgressSink& sink, int& levels) {
   NodePtr node = engine.root();
   best.offer(node);
   constexpr double kRiskFree = 1e-6;  // mm^2: what counts as R = 0 after floating-point sums
-  while (!engine.isTerminal(*node)) {
+  while (!engine.isTerminal(*node, minRegionVolume)) {
     bool cancelled = false;
     std::vector<ScoredCandidate> pool = engine.score(*node, 0, cancelled);
     if (cancelled) return true;
+    dropSmallerThan(pool, minRegionVolume);
     releaseParentSweeps(engine, *node);
     levels = node->level + 1;
     const bool anyRiskFree = constrained && std::any_of(pool.begin(), pool.end(), [&](const ScoredCandidate& c) {
@@ -250,6 +268,116 @@ bool runGreedy(SearchEngine& engine, bool constrained, BestPlan& best, const Sea
     report(sink, node->level, 1, best, engine);
   }
   return false;
+}
+
+// What the scales' own engines did, for the plan's statistics.
+struct BeamWork {
+  long long candidatesScored = 0;
+  int clipsPerformed = 0;
+};
+
+// The beam scheme: both greedy chains at w, then the beam search at every scale, w, 2w, ..., each on an engine
+// of its own that shares `engine`'s scored root. They run side by side with the threads divided among them
+// (independent searches use two cores better than one search's short parallel loops do), and a search that
+// finishes gives its threads to the finest still running. Each search is deterministic whatever its thread
+// count, and their plans are offered to `best` in that order (the greedy chains seed the result, so the beam
+// plan is never worse than either greedy scheme, as the paper observes), so the result does not depend on
+// which finishes first.
+bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best, const SearchProgressSink& sink,
+                   int& levels, BeamWork& work) {
+  best.offer(engine.root());
+  bool rootCancelled = false;
+  engine.score(*engine.root(), 0, rootCancelled);  // once, with every thread: the forks share it
+  if (rootCancelled) return true;
+  const int scales = o.volumeScales;
+  constexpr int kGreedyChains = 2;
+  const int searches = kGreedyChains + scales;
+  const int threads = engine.threads();
+  SearchOptions perScale = o;
+  perScale.threads = std::max(1, threads / std::min(threads, searches));
+  perScale.beamWidth = (o.beamWidth + scales - 1) / scales;
+
+  // Progress: the levels of all scales added up (maxSearchLevels counts them so), the best plan of any.
+  std::mutex progressMutex;
+  std::vector<int> scaleLevels(static_cast<std::size_t>(scales), 0), scaleBeams(static_cast<std::size_t>(scales), 0);
+  double bestJg = engine.root()->jg();
+  long long scoredBefore = engine.candidatesScored();
+  std::vector<long long> scaleScored(static_cast<std::size_t>(scales), 0);
+
+  std::vector<BestPlan> found(static_cast<std::size_t>(searches));
+  std::vector<int> reached(static_cast<std::size_t>(searches), 0);
+  std::vector<char> stopped(static_cast<std::size_t>(searches), 0);
+  std::vector<BeamWork> done(static_cast<std::size_t>(searches));
+  std::vector<std::unique_ptr<SearchEngine>> engines;
+  for (int k = 0; k < searches; ++k) engines.push_back(std::make_unique<SearchEngine>(engine, perScale));
+  enum State : char { Waiting, Running, Finished };
+  std::vector<State> state(static_cast<std::size_t>(searches), Waiting);
+  detail::parallelFor(searches, std::min(threads, searches), [&](int task) {
+    SearchEngine& own = *engines[static_cast<std::size_t>(task)];
+    {
+      std::lock_guard<std::mutex> lock(progressMutex);
+      state[static_cast<std::size_t>(task)] = Running;
+    }
+    // A search that finishes gives its threads to the finest one running, unless one still waits (the thread
+    // that ran this one takes it next).
+    auto finished = [&] {
+      done[static_cast<std::size_t>(task)] = {own.candidatesScored(), own.clipsPerformed()};
+      std::lock_guard<std::mutex> lock(progressMutex);
+      state[static_cast<std::size_t>(task)] = Finished;
+      if (std::find(state.begin(), state.end(), Waiting) != state.end()) return;
+      for (int k = searches - 1; k >= 0; --k)
+        if (state[static_cast<std::size_t>(k)] == Running) {
+          engines[static_cast<std::size_t>(k)]->addThreads(own.threads());
+          break;
+        }
+    };
+    if (task < kGreedyChains) {
+      stopped[static_cast<std::size_t>(task)] =
+          runGreedy(own, task == 1, own.minRegionVolume(o.minVolumeDivisor), found[static_cast<std::size_t>(task)], {},
+                    reached[static_cast<std::size_t>(task)]);
+      reached[static_cast<std::size_t>(task)] = 0;  // the levels reported are the beam's
+      finished();
+      return;
+    }
+    const int s = task - kGreedyChains;
+    const double divisor = std::ldexp(o.minVolumeDivisor, s);
+    BeamScale scale;
+    scale.minRegionVolume = own.minRegionVolume(divisor);
+    scale.maxLevels = static_cast<int>(std::ceil(divisor)) + 1;
+    scale.beamWidth = perScale.beamWidth;
+    const SearchProgressSink scaleSink = [&, s](const SearchProgress& p) {
+      if (!sink) return;
+      std::lock_guard<std::mutex> lock(progressMutex);
+      scaleLevels[static_cast<std::size_t>(s)] = p.level;
+      scaleBeams[static_cast<std::size_t>(s)] = p.beamsAlive;
+      scaleScored[static_cast<std::size_t>(s)] = p.candidatesScored;
+      bestJg = std::min(bestJg, p.bestJgMm2);
+      SearchProgress total = p;
+      total.level = 0;
+      total.beamsAlive = 0;
+      total.candidatesScored = scoredBefore;
+      for (int k = 0; k < scales; ++k) {
+        total.level += scaleLevels[static_cast<std::size_t>(k)];
+        total.beamsAlive += scaleBeams[static_cast<std::size_t>(k)];
+        total.candidatesScored += scaleScored[static_cast<std::size_t>(k)];
+      }
+      total.bestJgMm2 = bestJg;
+      sink(total);
+    };
+    stopped[static_cast<std::size_t>(task)] = runBeamSearch(own, perScale, scale, found[static_cast<std::size_t>(task)],
+                                                            scaleSink, reached[static_cast<std::size_t>(task)]);
+    finished();
+  });
+  bool cancelled = false;
+  for (int task = 0; task < searches; ++task) {
+    const auto k = static_cast<std::size_t>(task);
+    if (found[k].node()) best.offer(found[k].node());
+    levels = std::max(levels, reached[k]);
+    cancelled = cancelled || stopped[k];
+    work.candidatesScored += done[k].candidatesScored;
+    work.clipsPerformed += done[k].clipsPerformed;
+  }
+  return cancelled;
 }
 
 // The planes of a node's chain, in clipping order.
@@ -324,26 +452,24 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
   BestPlan best;
   int levels = 0;
   bool cancelled = false;
+  BeamWork scaleWork;
   switch (options.scheme) {
-    case SearchScheme::Beam: {
-      // Both greedy chains seed the result, so the beam-guided plan is never worse than either greedy
-      // scheme (the paper observes this; progressive relaxation alone does not guarantee it).
-      int greedyLevels = 0;
-      cancelled = runGreedy(engine, false, best, {}, greedyLevels) || runGreedy(engine, true, best, {}, greedyLevels) ||
-                  runBeamSearch(engine, options, best, progress, levels);
+    case SearchScheme::Beam: cancelled = runBeamScheme(engine, options, best, progress, levels, scaleWork); break;
+    case SearchScheme::Greedy:
+      cancelled = runGreedy(engine, false, engine.minRegionVolume(options.minVolumeDivisor), best, progress, levels);
       break;
-    }
-    case SearchScheme::Greedy: cancelled = runGreedy(engine, false, best, progress, levels); break;
-    case SearchScheme::ConstrainedGreedy: cancelled = runGreedy(engine, true, best, progress, levels); break;
+    case SearchScheme::ConstrainedGreedy:
+      cancelled = runGreedy(engine, true, engine.minRegionVolume(options.minVolumeDivisor), best, progress, levels);
+      break;
   }
   Decomposition plan = engine.planOf(*withoutUnpaidPlanes(engine, best.node(), options));
   plan.cancelled = cancelled;
   plan.rotationAxis = machine.rotationAxis;
-  plan.statistics.candidatesScored = engine.candidatesScored();
+  plan.statistics.candidatesScored = engine.candidatesScored() + scaleWork.candidatesScored;
   plan.statistics.candidatesPerLevel = std::max(0, engine.firstLevelCandidates());
   plan.statistics.normals = engine.latticeSize();
   plan.statistics.levels = levels;
-  plan.statistics.clipsPerformed = engine.clipsPerformed();
+  plan.statistics.clipsPerformed = engine.clipsPerformed() + scaleWork.clipsPerformed;
   plan.statistics.threads = engine.threads();
   plan.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return plan;

@@ -22,7 +22,7 @@ SearchEngine::SearchEngine(const TriangleMesh& model, const MachineSpec& machine
   m_platform = platform ? *platform : platformRegionFor(model, machine, options.platformToleranceMm);
   m_sinAlpha = std::sin(degToRad(options.alphaMaxDegrees));
   m_modelVolume = signedVolume(model);
-  m_minRegionVolume = m_modelVolume / options.minVolumeDivisor;
+  m_minRegionVolume = m_modelVolume / finestVolumeDivisor(options);
   m_threads = resolveThreadCount(options.threads);
   // Several times the tolerance within which a region's corners count as lying in its base plane, so that a
   // region read back from its STL still tells its cap from its other faces.
@@ -31,6 +31,25 @@ SearchEngine::SearchEngine(const TriangleMesh& model, const MachineSpec& machine
   m_clipMarginMm = clipMarginMm(model);
   m_root = makeNode(std::make_shared<const TriangleMesh>(model));
 }
+
+SearchEngine::SearchEngine(const SearchEngine& base, const SearchOptions& options)
+    : m_machine(base.m_machine),
+      m_options(options),
+      m_job(base.m_job),
+      m_normals(base.m_normals.begin(), base.m_normals.begin() + base.m_latticeSize),
+      m_latticeSize(base.m_latticeSize),
+      m_platform(base.m_platform),
+      m_sinAlpha(base.m_sinAlpha),
+      m_modelVolume(base.m_modelVolume),
+      m_minRegionVolume(base.m_minRegionVolume),
+      m_vertexClearanceMm(base.m_vertexClearanceMm),
+      m_clipMarginMm(base.m_clipMarginMm),
+      m_checkFloatPrecision(base.m_checkFloatPrecision),
+      m_threads(resolveThreadCount(options.threads)),
+      m_root(base.m_root),
+      m_rootScored(base.m_rootScored),
+      m_modelChecked(base.m_modelChecked.load()),
+      m_firstLevelCandidates(base.m_firstLevelCandidates) {}
 
 std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const TriangleMesh> remaining) const {
   auto node = std::make_shared<SearchNode>();
@@ -128,7 +147,7 @@ std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, 
   if (parentSweeps) parentSweeper.emplace(*node.parent->remaining, node.parent->riskyUpShare, m_sinAlpha);
   if (sweeps) sweeps->assign(count, NormalSweep{});
 
-  parallelFor(count, m_threads, [&](int k) {
+  parallelFor(count, threads(), [&](int k) {
     if (m_job.isCancelled()) return;
     const int i = normalIndices[k];
     const Vec3& n = m_normals[i];
@@ -366,8 +385,8 @@ bool SearchEngine::standsOnPlatform(const TriangleMesh& solid) const {
   return true;
 }
 
-bool SearchEngine::isTerminal(const SearchNode& node) const {
-  return node.volumeMm3 < m_minRegionVolume || node.riskyUpAreaMm2 <= 0.0;
+bool SearchEngine::isTerminal(const SearchNode& node, double minRegionVolume) const {
+  return node.volumeMm3 < minRegionVolume || node.riskyUpAreaMm2 <= 0.0;
 }
 
 Decomposition SearchEngine::planOf(const SearchNode& node) const {

@@ -22,6 +22,12 @@ class SearchEngine {
   SearchEngine(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options, JobContext& job,
                const std::optional<PlatformRegion>& platform = std::nullopt);
 
+  // Another engine on the same model and platform, with other options (another thread count or beam width;
+  // the same model-dependent ones): it shares `base`'s root and the root's scored candidates and sweeps, so
+  // several searches can start from one scoring of the uncut model and run side by side. `base` must have
+  // scored its root (or the fork scores it again) and outlive the fork.
+  SearchEngine(const SearchEngine& base, const SearchOptions& options);
+
   std::shared_ptr<const SearchNode> root() const { return m_root; }
 
   // Every admissible candidate of a node (Criterion III by construction, minimal volume above), in a
@@ -54,15 +60,22 @@ class SearchEngine {
   // STL can keep apart, and model faces lying in the plane that no cap supports (docs/jg-definition.md).
   Plane keptOffVertices(const Plane& plane, const TriangleMesh& solid) const;
 
-  // Whether a node needs no further cut: too small to cut again, or self-supported along up.
-  bool isTerminal(const SearchNode& node) const;
+  // Whether a node needs no further cut at the scale whose smallest region is `minRegionVolume`: too small
+  // to cut again, or self-supported along up.
+  bool isTerminal(const SearchNode& node, double minRegionVolume) const;
+  // The smallest region a search at volume divisor w may cut off: V/w. Candidates are offered down to the
+  // finest scale's; a search at a coarser scale skips the smaller ones.
+  double minRegionVolume(double divisor) const { return m_modelVolume / divisor; }
 
   // The plan of a node: regions in printing order, risky areas recomputed from the region meshes.
   Decomposition planOf(const SearchNode& node) const;
 
   const std::vector<Vec3>& normals() const { return m_normals; }
   int latticeSize() const { return m_latticeSize; }
-  int threads() const { return m_threads; }
+  int threads() const { return m_threads.load(std::memory_order_relaxed); }
+  // More threads for the engine's next parallel steps (a search beside it finished). Results do not depend on
+  // the thread count, only the time does.
+  void addThreads(int more) { m_threads.fetch_add(more, std::memory_order_relaxed); }
   long long candidatesScored() const { return m_candidatesScored; }
   int clipsPerformed() const { return m_clips; }
   int firstLevelCandidates() const { return m_firstLevelCandidates; }
@@ -92,7 +105,7 @@ class SearchEngine {
   double m_vertexClearanceMm = 0.0;  // how far planes stay from vertices
   double m_clipMarginMm = 0.0;       // how far a clip may move vertices and the plane
   bool m_checkFloatPrecision = true;  // false when the model itself has vertices float cannot tell apart
-  int m_threads = 1;
+  std::atomic<int> m_threads{1};
   std::shared_ptr<const SearchNode> m_root;
   std::optional<std::vector<ScoredCandidate>> m_rootScored;  // the lattice's candidates on the uncut model
   long long m_candidatesScored = 0;

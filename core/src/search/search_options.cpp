@@ -1,5 +1,6 @@
 #include "multidir/core/search/search_options.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace multidir::core {
@@ -28,6 +29,7 @@ Status validate(const SearchOptions& o) {
   if (!(o.alphaMaxDegrees >= 0 && o.alphaMaxDegrees < 90)) return bad("alpha", "must be at least 0 and below 90 degrees");
   if (!(o.minVolumeDivisor >= 1 && o.minVolumeDivisor <= 1000))
     return bad("w", "(the minimal region volume is V/w) must be between 1 and 1000");
+  if (o.volumeScales < 1 || o.volumeScales > 4) return bad("volume scales", "must be between 1 and 4");
   if (!(o.initialDeltaMm2 > 0 && std::isfinite(o.initialDeltaMm2))) return bad("delta", "must be a positive area in mm^2");
   if (!(o.deltaGrowth > 1 && o.deltaGrowth < 1000)) return bad("delta growth", "must be above 1 and below 1000");
   if (!(o.diversityCosine >= 0 && o.diversityCosine <= 1)) return bad("diversity cosine", "must be between 0 and 1");
@@ -47,8 +49,16 @@ Status validate(const SearchOptions& o) {
   return validate(o.candidates);
 }
 
+double finestVolumeDivisor(const SearchOptions& options) {
+  if (options.scheme != SearchScheme::Beam) return options.minVolumeDivisor;
+  return std::ldexp(options.minVolumeDivisor, std::clamp(options.volumeScales, 1, 4) - 1);
+}
+
 int maxSearchLevels(const SearchOptions& options) {
-  return static_cast<int>(std::ceil(options.minVolumeDivisor)) + 1;
+  const int scales = options.scheme == SearchScheme::Beam ? std::clamp(options.volumeScales, 1, 4) : 1;
+  int levels = 0;
+  for (int s = 0; s < scales; ++s) levels += static_cast<int>(std::ceil(std::ldexp(options.minVolumeDivisor, s))) + 1;
+  return levels;
 }
 
 }  // namespace multidir::core

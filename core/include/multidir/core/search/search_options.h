@@ -28,6 +28,12 @@ struct SearchOptions {
   // own, and 40 took the median of the nine shared models from 4.4 % to 1.8 % of J_G before (bench/). Regions
   // that do not pay for themselves are removed after the search (minPlaneGain*).
   double minVolumeDivisor = 40.0;
+  // The beam search runs at this many region scales, w, 2w, 4w, ..., one after the other, each with
+  // beamWidth / volumeScales beams (rounded up), and keeps the best plan of all. No single w suits every
+  // model: a knight's mane and ears are printed risk-free only from regions near V/80, while at V/80 a
+  // bunny's beam spends its levels on small cuts and ends worse than at V/40 (bench/, docs/search.md).
+  // 1: the paper's single beam at w. 1 to 4.
+  int volumeScales = 2;
   double initialDeltaMm2 = 0.1;             // progressive relaxation starts at R < delta ...
   double deltaGrowth = 5.0;                 // ... and multiplies delta by this until the beams are full
   double diversityCosine = 0.95;            // two children of one parent are too close when |n.n'| > this
@@ -56,8 +62,11 @@ struct SearchOptions {
 
 Status validate(const SearchOptions& options);
 
-// How many levels (clipping planes in one plan) the search explores at most: every region cut off keeps at
-// least V/w, so no plan has more than ceil(w) + 1 of them.
+// The volume divisor of the beam search's finest scale: w * 2^(volumeScales - 1) (w for the greedy schemes).
+[[nodiscard]] double finestVolumeDivisor(const SearchOptions& options);
+
+// How many levels the search explores at most, its scales one after the other (progress says "level k of
+// this"): every region cut off at scale w keeps at least V/w, so no plan has more than ceil(w) + 1 cuts.
 [[nodiscard]] int maxSearchLevels(const SearchOptions& options);
 
 // What the search reports while it runs (on the thread that runs it).
