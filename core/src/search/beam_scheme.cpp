@@ -1,0 +1,109 @@
+// The beam scheme: greedy chains and the beam at every region scale, side by side.
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+
+#include "detail/parallel.h"
+#include "search/search_schemes.h"
+
+namespace multidir::core::detail {
+
+bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best, const SearchProgressSink& sink,
+                   int& levels, BeamWork& work) {
+  best.offer(engine.root());
+  bool rootCancelled = false;
+  engine.score(*engine.root(), 0, rootCancelled);  // once, with every thread: the forks share it
+  if (rootCancelled) return true;
+  const int scales = o.volumeScales;
+  constexpr int kGreedyChains = 2;
+  const int searches = kGreedyChains + scales;
+  const int threads = engine.threads();
+  SearchOptions perScale = o;
+  perScale.threads = std::max(1, threads / std::min(threads, searches));
+  perScale.beamWidth = (o.beamWidth + scales - 1) / scales;
+
+  // Progress: the levels of all scales added up (maxSearchLevels counts them so), the best plan of any.
+  std::mutex progressMutex;
+  std::vector<int> scaleLevels(static_cast<std::size_t>(scales), 0), scaleBeams(static_cast<std::size_t>(scales), 0);
+  double bestJg = engine.root()->jg();
+  long long scoredBefore = engine.candidatesScored();
+  std::vector<long long> scaleScored(static_cast<std::size_t>(scales), 0);
+
+  std::vector<BestPlan> found(static_cast<std::size_t>(searches));
+  std::vector<int> reached(static_cast<std::size_t>(searches), 0);
+  std::vector<char> stopped(static_cast<std::size_t>(searches), 0);
+  std::vector<BeamWork> done(static_cast<std::size_t>(searches));
+  std::vector<std::unique_ptr<SearchEngine>> engines;
+  for (int k = 0; k < searches; ++k) engines.push_back(std::make_unique<SearchEngine>(engine, perScale));
+  enum State : char { Waiting, Running, Finished };
+  std::vector<State> state(static_cast<std::size_t>(searches), Waiting);
+  detail::parallelFor(searches, std::min(threads, searches), [&](int task) {
+    SearchEngine& own = *engines[static_cast<std::size_t>(task)];
+    {
+      std::lock_guard<std::mutex> lock(progressMutex);
+      state[static_cast<std::size_t>(task)] = Running;
+    }
+    // A search that finishes gives its threads to the finest one running, unless one still waits (the thread
+    // that ran this one takes it next).
+    auto finished = [&] {
+      done[static_cast<std::size_t>(task)] = {own.candidatesScored(), own.clipsPerformed()};
+      std::lock_guard<std::mutex> lock(progressMutex);
+      state[static_cast<std::size_t>(task)] = Finished;
+      if (std::find(state.begin(), state.end(), Waiting) != state.end()) return;
+      for (int k = searches - 1; k >= 0; --k)
+        if (state[static_cast<std::size_t>(k)] == Running) {
+          engines[static_cast<std::size_t>(k)]->addThreads(own.threads());
+          break;
+        }
+    };
+    if (task < kGreedyChains) {
+      stopped[static_cast<std::size_t>(task)] =
+          runGreedy(own, task == 1, own.minRegionVolume(o.minVolumeDivisor), found[static_cast<std::size_t>(task)], {},
+                    reached[static_cast<std::size_t>(task)]);
+      reached[static_cast<std::size_t>(task)] = 0;  // the levels reported are the beam's
+      finished();
+      return;
+    }
+    const int s = task - kGreedyChains;
+    const double divisor = std::ldexp(o.minVolumeDivisor, s);
+    BeamScale scale;
+    scale.minRegionVolume = own.minRegionVolume(divisor);
+    scale.maxLevels = static_cast<int>(std::ceil(divisor)) + 1;
+    scale.beamWidth = perScale.beamWidth;
+    const SearchProgressSink scaleSink = [&, s](const SearchProgress& p) {
+      if (!sink) return;
+      std::lock_guard<std::mutex> lock(progressMutex);
+      scaleLevels[static_cast<std::size_t>(s)] = p.level;
+      scaleBeams[static_cast<std::size_t>(s)] = p.beamsAlive;
+      scaleScored[static_cast<std::size_t>(s)] = p.candidatesScored;
+      bestJg = std::min(bestJg, p.bestJgMm2);
+      SearchProgress total = p;
+      total.level = 0;
+      total.beamsAlive = 0;
+      total.candidatesScored = scoredBefore;
+      for (int k = 0; k < scales; ++k) {
+        total.level += scaleLevels[static_cast<std::size_t>(k)];
+        total.beamsAlive += scaleBeams[static_cast<std::size_t>(k)];
+        total.candidatesScored += scaleScored[static_cast<std::size_t>(k)];
+      }
+      total.bestJgMm2 = bestJg;
+      sink(total);
+    };
+    stopped[static_cast<std::size_t>(task)] = runBeamSearch(own, perScale, scale, found[static_cast<std::size_t>(task)],
+                                                            scaleSink, reached[static_cast<std::size_t>(task)]);
+    finished();
+  });
+  bool cancelled = false;
+  for (int task = 0; task < searches; ++task) {
+    const auto k = static_cast<std::size_t>(task);
+    if (found[k].node()) best.offer(found[k].node());
+    levels = std::max(levels, reached[k]);
+    cancelled = cancelled || stopped[k];
+    work.candidatesScored += done[k].candidatesScored;
+    work.clipsPerformed += done[k].clipsPerformed;
+  }
+  return cancelled;
+}
+
+}  // namespace multidir::core::detail

@@ -1,0 +1,78 @@
+#pragma once
+// The search schemes run on one SearchEngine (greedy chains, Algorithm 1's beam) and the beam scheme that runs
+// them side by side; decompose.cpp picks one. Internal to core.
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "multidir/core/search/search_options.h"
+#include "search/search_engine.h"
+
+namespace multidir::core::detail {
+
+using NodePtr = std::shared_ptr<const SearchNode>;
+
+// Keeps the best plan seen: least J_G, then fewer regions (Criterion IV), then first found.
+class BestPlan {
+ public:
+  void offer(const NodePtr& node) {
+    constexpr double kTie = 1e-9;
+    if (!m_node || node->jg() < m_node->jg() - kTie ||
+        (std::abs(node->jg() - m_node->jg()) <= kTie && node->level < m_node->level))
+      m_node = node;
+  }
+  const NodePtr& node() const { return m_node; }  // null before anything was offered
+
+ private:
+  NodePtr m_node;
+};
+
+// One scale of the beam search: the smallest region it may cut off, its beams and its levels.
+struct BeamScale {
+  double minRegionVolume = 0.0;
+  int beamWidth = 1;
+  int maxLevels = 1;
+};
+
+// What the scales' own engines did, for the plan's statistics.
+struct BeamWork {
+  long long candidatesScored = 0;
+  int clipsPerformed = 0;
+};
+
+// Candidates whose region is below `minRegionVolume` are not the scheme's to take.
+void dropSmallerThan(std::vector<ScoredCandidate>& candidates, double minRegionVolume);
+
+// Once every child of a node was scored, its sweeps are no longer needed (the root's serve all schemes).
+void releaseParentSweeps(const SearchEngine& engine, const SearchNode& scored);
+
+// Extends beams by the pool's candidates at `indices`, on the engine's threads; results in the order given.
+// The callers take these in order as if made one by one, so only the wasted work depends on the threads.
+std::vector<std::optional<NodePtr>> extendAll(SearchEngine& engine, const std::vector<NodePtr>& beams,
+                                              const std::vector<ScoredCandidate>& pool,
+                                              const std::vector<std::size_t>& indices);
+
+// Tells `sink` (when set) where a scheme is: its level, beams alive and best plan so far.
+void report(const SearchProgressSink& sink, int level, int alive, const BestPlan& best, const SearchEngine& engine);
+
+// Paper Eq. 7 (unconstrained) and Eq. 8 (constrained): one beam, the cut with the largest J_L, among regions
+// of at least `minRegionVolume`. Returns true when cancelled; `levels` is the chain's length.
+bool runGreedy(SearchEngine& engine, bool constrained, double minRegionVolume, BestPlan& best,
+               const SearchProgressSink& sink, int& levels);
+
+// Algorithm 1 of the paper at one scale. Returns true when cancelled; `levels` is the deepest level reached.
+bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, const BeamScale& scale, BestPlan& best,
+                   const SearchProgressSink& sink, int& levels);
+
+// The beam scheme: both greedy chains at w, then the beam search at every scale, w, 2w, ..., each on an engine
+// of its own that shares `engine`'s scored root. They run side by side with the threads divided among them
+// (independent searches use two cores better than one search's short parallel loops do), and a search that
+// finishes gives its threads to the finest still running. Each search is deterministic whatever its thread
+// count, and their plans are offered to `best` in that order (the greedy chains seed the result, so the beam
+// plan is never worse than either greedy scheme, as the paper observes), so the result does not depend on
+// which finishes first.
+bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best, const SearchProgressSink& sink,
+                   int& levels, BeamWork& work);
+
+}  // namespace multidir::core::detail
