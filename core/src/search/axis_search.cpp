@@ -80,6 +80,7 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
   SearchOptions screening = perAxis;
   if (twoStages) {
     screening.beamWidth = 1;
+    screening.volumeScales = 1;
     screening.refinementRounds = 0;
   }
   std::vector<std::tuple<double, std::size_t, int>> scores(static_cast<std::size_t>(axisCount),
