@@ -274,13 +274,13 @@ class MarlinLink : public PrinterLink {
       pump();
       std::lock_guard<std::mutex> lock(m_mutex);
       if (!m_threads.firstReported() && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter)
-        m_threads.reportFirst(core::Error{core::ErrorCode::DeviceUnreachable,
-                                "no answer from the printer within " +
-                                    std::to_string(2 * m_options.linkLostAfter.count()) + " ms of opening " +
-                                    m_settings.devicePath + " at " + std::to_string(m_settings.baud) +
-                                    " baud: check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
-                                    "the printer is on, and that no other program uses the port",
-                                m_name});
+        m_threads.reportFirst(
+            core::Error{core::ErrorCode::DeviceUnreachable,
+                        "no answer from the printer within " + std::to_string(2 * m_options.linkLostAfter.count()) +
+                            " ms of opening " + m_settings.devicePath + " at " + std::to_string(m_settings.baud) +
+                            " baud: check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
+                            "the printer is on, and that no other program uses the port",
+                        m_name});
     }
   }
 
