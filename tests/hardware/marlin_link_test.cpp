@@ -19,7 +19,7 @@ class MarlinLinkTest : public ::testing::Test {
  protected:
   void SetUp() override {
     startSimulator(400.0);  // the short program takes about 70 ms
-    gcode = writeFile(std::filesystem::path(testing::TempDir()) / "marlin-link" / "step-01.gcode", shortGcode());
+    gcode = shortGcodeFile("marlin-link");
   }
 
   void startSimulator(double speed) {
@@ -28,15 +28,11 @@ class MarlinLinkTest : public ::testing::Test {
   }
 
   std::unique_ptr<PrinterLink> connected(int window = 1) {
-    auto link = marlinLinkTo(sim->devicePath(), fastPrinterOptions(), window);
-    const core::Status status = link->connect();
-    EXPECT_TRUE(status.ok()) << messageOf(status);
-    return link;
+    return connectedLink(marlinLinkTo(sim->devicePath(), fastPrinterOptions(), window));
   }
 
-  bool printing(PrinterLink& link) {
-    return outcome(link.upload(gcode, "step-01.gcode")).ok() && outcome(link.startPrint("step-01.gcode")).ok();
-  }
+  // Uploads and starts the short program; true once the printer accepted both.
+  bool printing(PrinterLink& link) { return uploadedAndStarted(link, gcode); }
 
   // The file's commands the printer executed, in order.
   std::vector<std::string> executedFileCommands() const {
@@ -79,12 +75,7 @@ TEST(MarlinUrl, RefusesRatesTheTermiosCannotSetRelativePathsAndUnknownOptionsSay
 
 TEST_F(MarlinLinkTest, ConnectNumbersFromZeroAndReadsTheTemperatures) {
   auto link = connected();
-  const PrinterStatus s = link->status();
-  EXPECT_EQ(s.link, LinkState::Connected);
-  EXPECT_FALSE(s.linkLost);
-  EXPECT_EQ(s.state, PrinterJobState::Standby);
-  EXPECT_EQ(s.firmwareState, "ready");
-  EXPECT_NEAR(s.extruder.actualC, 22.0, 1e-9);
+  expectConnectedAndIdle(link->status());
   const auto received = sim->received();
   ASSERT_FALSE(received.empty());
   EXPECT_EQ(received.front().text, marlinNumberedLine(0, "M110 N0"));
@@ -318,8 +309,7 @@ TEST(MarlinSimulatorTiming, ExecutesStreamedMovesInTheTimeTheirHeatingAndFeedRat
   options.steadyNow = [origin] { return origin + std::chrono::milliseconds(elapsedMs.load()); };
   MarlinSimulator sim(options);
   ASSERT_TRUE(sim.start().ok());
-  const std::string gcode = test::writeFile(
-      std::filesystem::path(testing::TempDir()) / "marlin-timing" / "step-01.gcode", test::shortGcode());
+  const std::string gcode = test::shortGcodeFile("marlin-timing");
   auto link = test::marlinLinkTo(sim.devicePath());
   ASSERT_TRUE(link->connect().ok());
   ASSERT_TRUE(test::outcome(link->upload(gcode, "step-01.gcode")).ok());

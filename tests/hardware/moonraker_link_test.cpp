@@ -22,8 +22,7 @@ TEST(MoonrakerSimulatorTiming, PrintsTheFileInTheTimeItsHeatingAndFeedRatesTake)
   options.steadyNow = [origin] { return origin + std::chrono::milliseconds(elapsedMs.load()); };
   MoonrakerSimulator sim(options);
   ASSERT_TRUE(sim.start().ok());
-  const std::string gcode = test::writeFile(
-      std::filesystem::path(testing::TempDir()) / "simulator-timing" / "step-01.gcode", test::shortGcode());
+  const std::string gcode = test::shortGcodeFile("simulator-timing");
   auto link = test::moonrakerLinkTo(sim.port());
   ASSERT_TRUE(link->connect().ok());
   ASSERT_TRUE(test::outcome(link->upload(gcode, "step-01.gcode")).ok());

@@ -20,7 +20,7 @@ class OctoPrintLinkTest : public ::testing::Test {
     options.speed = 5.0;
     sim = std::make_unique<OctoPrintSimulator>(options);
     ASSERT_TRUE(sim->start().ok());
-    gcode = writeFile(std::filesystem::path(testing::TempDir()) / "octoprint-link" / "step-01.gcode", shortGcode());
+    gcode = shortGcodeFile("octoprint-link");
   }
 
   std::unique_ptr<OctoPrintSimulator> sim;

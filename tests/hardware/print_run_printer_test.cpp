@@ -75,6 +75,12 @@ class PrintRunWithPrinterTest : public ::testing::TestWithParam<PrinterProtocol>
     ASSERT_TRUE(printer->connect().ok());
   }
 
+  // The printer started at `speed` (startPrinter) and a run of steps() with it, not started yet.
+  PrintRun runWithPrinter(double speed, PrinterFault midJobFault = PrinterFault::None) {
+    startPrinter(speed, midJobFault);
+    return PrintRun(*positioner, steps(), runOptions(), printer.get());
+  }
+
   std::vector<PrintStep> steps() const {
     return {{PlatformOrientation::rotary(0.0), "region 1", gcodes[0]},
             {PlatformOrientation::rotary(30.0), "region 2", gcodes[1]},
@@ -97,6 +103,11 @@ class PrintRunWithPrinterTest : public ::testing::TestWithParam<PrinterProtocol>
       std::this_thread::sleep_for(2ms);
     }
     return condition();
+  }
+
+  bool tickUntilCompleted(PrintRun& run, int ticks) {
+    return tickUntil(
+        run, [&] { return run.state() == PrintRunState::Completed; }, ticks);
   }
 
   // Ticks until the printer simulator is printing the run's current step (past its heating).
@@ -151,24 +162,18 @@ class PrintRunWithPrinterTest : public ::testing::TestWithParam<PrinterProtocol>
 INSTANTIATE_TEST_SUITE_P(Protocols, PrintRunWithPrinterTest, allProtocols(), protocolName);
 
 TEST_P(PrintRunWithPrinterTest, RunsEveryStepOnThePlatformAndThePrinterToCompletion) {
-  startPrinter(400.0);
-  PrintRun run(*positioner, steps(), runOptions(), printer.get());
+  PrintRun run = runWithPrinter(400.0);
   ASSERT_TRUE(run.start().ok());
-  ASSERT_TRUE(tickUntil(
-      run, [&] { return run.state() == PrintRunState::Completed; }, 4000))
-      << wholeLog(run);
+  ASSERT_TRUE(tickUntilCompleted(run, 4000)) << wholeLog(run);
   EXPECT_EQ(printerSim->completedJobs(), 3);
   EXPECT_EQ(printerSim->starts().size(), 3u);
   EXPECT_NEAR(devices->rotaryState().angleDegrees, -45.0, 0.05);
 }
 
 TEST_P(PrintRunWithPrinterTest, NoPlatformCommandReachesTheDeviceWhileThePrinterPrints) {
-  startPrinter(400.0);
-  PrintRun run(*positioner, steps(), runOptions(), printer.get());
+  PrintRun run = runWithPrinter(400.0);
   ASSERT_TRUE(run.start().ok());
-  ASSERT_TRUE(tickUntil(
-      run, [&] { return run.state() == PrintRunState::Completed; }, 4000))
-      << wholeLog(run);
+  ASSERT_TRUE(tickUntilCompleted(run, 4000)) << wholeLog(run);
   expectNoPlatformCommandWhileAJobPrinted(3);
   // And every start reached the printer after the platform's move of its step.
   std::vector<Clock::time_point> moves;
@@ -185,8 +190,7 @@ TEST_P(PrintRunWithPrinterTest, NoPlatformCommandReachesTheDeviceWhileThePrinter
 // that injected them once it saw the job printing could, on a loaded machine, see the first job only after it
 // had ended, and fault the second.
 TEST_P(PrintRunWithPrinterTest, ThermalRunawayPausesTheRunWithTheTemperatureAndNothingMoves) {
-  startPrinter(20.0, PrinterFault::ThermalRunaway);
-  PrintRun run(*positioner, steps(), runOptions(), printer.get());
+  PrintRun run = runWithPrinter(20.0, PrinterFault::ThermalRunaway);
   ASSERT_TRUE(run.start().ok());
   const Clock::time_point printing = untilFirstStart(run);
   // The run's own check (15 C above the target) sees the climb before either firmware gives up.
@@ -195,8 +199,7 @@ TEST_P(PrintRunWithPrinterTest, ThermalRunawayPausesTheRunWithTheTemperatureAndN
 }
 
 TEST_P(PrintRunWithPrinterTest, ALostLinkPausesTheRunAndResumeFollowsThePrinterAgain) {
-  startPrinter(20.0);
-  PrintRun run(*positioner, steps(), runOptions(), printer.get());
+  PrintRun run = runWithPrinter(20.0);
   ASSERT_TRUE(run.start().ok());
   ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
   const Clock::time_point printing = clock();
@@ -211,8 +214,7 @@ TEST_P(PrintRunWithPrinterTest, ALostLinkPausesTheRunAndResumeFollowsThePrinterA
 }
 
 TEST_P(PrintRunWithPrinterTest, AJobCancelledOnThePrinterPausesTheRunAndNothingMoves) {
-  startPrinter(20.0, PrinterFault::CancelledOnPrinter);
-  PrintRun run(*positioner, steps(), runOptions(), printer.get());
+  PrintRun run = runWithPrinter(20.0, PrinterFault::CancelledOnPrinter);
   ASSERT_TRUE(run.start().ok());
   const Clock::time_point printing = untilFirstStart(run);
   expectPausedWithoutMotion(run, printing, "step-01.gcode was cancelled on the printer");
@@ -225,8 +227,7 @@ TEST_P(PrintRunWithPrinterTest, AJobCancelledOnThePrinterPausesTheRunAndNothingM
 }
 
 TEST_P(PrintRunWithPrinterTest, RepliesSlowerThanTheLinksTimeoutPauseTheRunAndNothingMoves) {
-  startPrinter(20.0);
-  PrintRun run(*positioner, steps(), runOptions(), printer.get());
+  PrintRun run = runWithPrinter(20.0);
   ASSERT_TRUE(run.start().ok());
   ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
   const Clock::time_point printing = clock();
@@ -236,8 +237,7 @@ TEST_P(PrintRunWithPrinterTest, RepliesSlowerThanTheLinksTimeoutPauseTheRunAndNo
 }
 
 TEST_P(PrintRunWithPrinterTest, EmergencyStopDuringPrintingReachesBothDevicesWithin200Ms) {
-  startPrinter(20.0);
-  PrintRun run(*positioner, steps(), runOptions(), printer.get());
+  PrintRun run = runWithPrinter(20.0);
   ASSERT_TRUE(run.start().ok());
   ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
   const Clock::time_point called = clock();
@@ -327,9 +327,7 @@ TEST_P(PrintRunWithPrinterTest, AWholeKittenJobRunsEveryStepAndThePlatformNeverM
   PrintRun run(*positioner, kittenSteps, runOptions(), printer.get());
   const Clock::time_point began = Clock::now();
   ASSERT_TRUE(run.start().ok());
-  ASSERT_TRUE(tickUntil(
-      run, [&] { return run.state() == PrintRunState::Completed; }, 10000))
-      << wholeLog(run);
+  ASSERT_TRUE(tickUntilCompleted(run, 10000)) << wholeLog(run);
   const double seconds = std::chrono::duration<double>(Clock::now() - began).count();
   EXPECT_EQ(printerSim->completedJobs(), static_cast<int>(plan.regions.size()));
   expectNoPlatformCommandWhileAJobPrinted(plan.regions.size());
@@ -411,12 +409,18 @@ PrintRunOptions immediate() {
   return o;
 }
 
+// One step at 0 degrees, printed from `gcodePath` ("": the operator prints it), without settling.
+PrintRun oneStepRun(StillPositioner& platform, ScriptedPrinter& printer,
+                    const std::string& gcodePath = "/tmp/step-01.gcode") {
+  return PrintRun(platform, {{PlatformOrientation::rotary(0.0), "r1", gcodePath}}, immediate(), &printer);
+}
+
 TEST(PrintRunInterlock, ThePlatformIsNotCommandedWhileThePrinterReportsAJobPrinting) {
   StillPositioner platform;
   ScriptedPrinter printer;
   printer.state.state = PrinterJobState::Printing;
   printer.state.currentFile = "someone-elses.gcode";
-  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, immediate(), &printer);
+  PrintRun run = oneStepRun(platform, printer);
   ASSERT_TRUE(run.start().ok());
   EXPECT_EQ(run.state(), PrintRunState::Faulted);
   EXPECT_EQ(platform.moves, 0);
@@ -428,7 +432,7 @@ TEST(PrintRunInterlock, ThePlatformIsNotCommandedWhileThePrintersStateIsUnknown)
   StillPositioner platform;
   ScriptedPrinter printer;
   printer.state.linkLost = true;
-  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, immediate(), &printer);
+  PrintRun run = oneStepRun(platform, printer);
   ASSERT_TRUE(run.start().ok());
   EXPECT_EQ(run.state(), PrintRunState::Faulted);
   EXPECT_EQ(platform.moves, 0);
@@ -437,7 +441,7 @@ TEST(PrintRunInterlock, ThePlatformIsNotCommandedWhileThePrintersStateIsUnknown)
 TEST(PrintRunInterlock, ThePrinterIsNotStartedWhileThePlatformReportsMotion) {
   StillPositioner platform;
   ScriptedPrinter printer;
-  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, immediate(), &printer);
+  PrintRun run = oneStepRun(platform, printer);
   ASSERT_TRUE(run.start().ok());
   run.tick();  // reached: settling
   ASSERT_EQ(run.state(), PrintRunState::Settling);
@@ -451,7 +455,7 @@ TEST(PrintRunInterlock, ThePrinterIsNotStartedWhileThePlatformReportsMotion) {
 TEST(PrintRunInterlock, AStepWithoutGcodeStaysWithTheOperatorsRegionDone) {
   StillPositioner platform;
   ScriptedPrinter printer;
-  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1"}}, immediate(), &printer);
+  PrintRun run = oneStepRun(platform, printer, "");
   ASSERT_TRUE(run.start().ok());
   run.tick();
   run.tick();
@@ -464,7 +468,7 @@ TEST(PrintRunInterlock, AStepWithoutGcodeStaysWithTheOperatorsRegionDone) {
 TEST(PrintRunInterlock, ARegionThePrinterPrintsCannotBeDeclaredDoneByHand) {
   StillPositioner platform;
   ScriptedPrinter printer;
-  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, immediate(), &printer);
+  PrintRun run = oneStepRun(platform, printer);
   ASSERT_TRUE(run.start().ok());
   run.tick();
   run.tick();

@@ -13,7 +13,7 @@ class PrinterLinkTest : public ::testing::TestWithParam<PrinterProtocol> {
  protected:
   void SetUp() override {
     startSimulator(400.0);  // the short program takes about 70 ms
-    gcode = writeFile(std::filesystem::path(testing::TempDir()) / "printer-link" / "step-01.gcode", shortGcode());
+    gcode = shortGcodeFile("printer-link");
   }
 
   void startSimulator(double speed) {
@@ -23,17 +23,10 @@ class PrinterLinkTest : public ::testing::TestWithParam<PrinterProtocol> {
     ASSERT_TRUE(sim->start().ok());
   }
 
-  std::unique_ptr<PrinterLink> connected() {
-    auto link = printerLinkTo(GetParam(), sim->port());
-    const core::Status status = link->connect();
-    EXPECT_TRUE(status.ok()) << messageOf(status);
-    return link;
-  }
+  std::unique_ptr<PrinterLink> connected() { return connectedLink(printerLinkTo(GetParam(), sim->port())); }
 
   // Uploads and starts the short program; true once the printer accepted both.
-  bool printing(PrinterLink& link) {
-    return outcome(link.upload(gcode, "step-01.gcode")).ok() && outcome(link.startPrint("step-01.gcode")).ok();
-  }
+  bool printing(PrinterLink& link) { return uploadedAndStarted(link, gcode); }
 
   bool moonraker() const { return GetParam() == PrinterProtocol::Moonraker; }
 
@@ -47,11 +40,7 @@ INSTANTIATE_TEST_SUITE_P(Protocols, PrinterLinkTest,
 TEST_P(PrinterLinkTest, ConnectReadsTheIdlePrintersStatus) {
   auto link = connected();
   const PrinterStatus s = link->status();
-  EXPECT_EQ(s.link, LinkState::Connected);
-  EXPECT_FALSE(s.linkLost);
-  EXPECT_EQ(s.state, PrinterJobState::Standby);
-  EXPECT_EQ(s.firmwareState, "ready");
-  EXPECT_NEAR(s.extruder.actualC, 22.0, 1e-9);
+  expectConnectedAndIdle(s);
   EXPECT_EQ(s.currentFile, "");
 }
 

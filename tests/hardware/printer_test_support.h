@@ -36,6 +36,11 @@ inline std::string writeFile(const std::filesystem::path& path, const std::strin
   return path.string();
 }
 
+// shortGcode() written as `folder`/step-01.gcode in the test's temporary directory; its path.
+inline std::string shortGcodeFile(const std::string& folder) {
+  return writeFile(std::filesystem::path(testing::TempDir()) / folder / "step-01.gcode", shortGcode());
+}
+
 // The commands of a G-code text as a printer receives them (comments and blank lines dropped).
 inline std::vector<std::string> gcodeCommands(const std::string& text) {
   std::vector<std::string> commands;
@@ -99,6 +104,27 @@ inline std::unique_ptr<PrinterLink> marlinLinkTo(const std::string& devicePath,
   settings.devicePath = devicePath;
   settings.maxUnacknowledgedLines = window;
   return checkedLink(makeMarlinLink(settings, options));
+}
+
+// `link`, connected (the test fails, and goes on, when it could not be).
+inline std::unique_ptr<PrinterLink> connectedLink(std::unique_ptr<PrinterLink> link) {
+  const core::Status status = link->connect();
+  EXPECT_TRUE(status.ok()) << messageOf(status);
+  return link;
+}
+
+// Uploads `gcodePath` as step-01.gcode and starts it; true once the printer accepted both.
+inline bool uploadedAndStarted(PrinterLink& link, const std::string& gcodePath) {
+  return outcome(link.upload(gcodePath, "step-01.gcode")).ok() && outcome(link.startPrint("step-01.gcode")).ok();
+}
+
+// What connect() reads from an idle simulator, whatever the protocol.
+inline void expectConnectedAndIdle(const PrinterStatus& s) {
+  EXPECT_EQ(s.link, LinkState::Connected);
+  EXPECT_FALSE(s.linkLost);
+  EXPECT_EQ(s.state, PrinterJobState::Standby);
+  EXPECT_EQ(s.firmwareState, "ready");
+  EXPECT_NEAR(s.extruder.actualC, 22.0, 1e-9);
 }
 
 enum class PrinterProtocol { Moonraker, OctoPrint, Marlin };

@@ -76,6 +76,32 @@ double windingNumber(const core::TriangleMesh& mesh, const Vec3& p) {
   return total / (4.0 * M_PI);
 }
 
+// A plain printer's job of one step: the box from `lo` to `hi`.
+core::PrintJob oneBoxJob(const Vec3& lo, const Vec3& hi) {
+  core::PrintJob job;
+  job.machine.kind = core::MachineKind::ThreeAxis;
+  core::PrintJobStep step;
+  step.region = test::makeBox(lo, hi);
+  step.regionFile = "step-01-region.stl";
+  job.steps = {step};
+  return job;
+}
+
+// A stand-in slicer: a shell script with `body`, executable; its path.
+std::string fakeSlicer(const std::string& path, const std::string& body) {
+  std::ofstream(path) << "#!/bin/sh\n" << body;
+  fs::permissions(path, fs::perms::owner_all);
+  return path;
+}
+
+// The coarse settings at `layerHeightMm`, without the fixed-direction comparison (one slicing per step).
+SliceJobOptions coarseOptions(double layerHeightMm) {
+  SliceJobOptions options;
+  options.settings = test::coarseSettings(layerHeightMm);
+  options.fixedDirection = false;
+  return options;
+}
+
 core::MachineSpec rotary(const Vec3& up) {
   core::MachineSpec m;
   m.kind = core::MachineKind::RotaryPlatform;
@@ -91,9 +117,7 @@ TEST(SliceJob, SnowmanOnAKlipperRotaryAxisGivesCheckedStepsAndOneStitchedProgram
   ASSERT_TRUE(snowman.ok());
   const core::LoadedPlan plan = test::plannedInMemory(*snowman, rotary(Vec3::UnitZ()), "snowman", 0.5);
   const core::PrintJob job = test::machineJob(plan);
-  SliceJobOptions options;
-  options.settings = test::coarseSettings(0.3);
-  options.fixedDirection = false;
+  SliceJobOptions options = coarseOptions(0.3);
   const std::string dir = scratch("snowman");
   core::JobContext context;
   const core::Result<SlicedJob> sliced = sliceJob(job, profileNamed("klipper-rotary"), options, dir, context);
@@ -139,10 +163,8 @@ TEST(SliceJob, EachStepsPoseTakesItsToolpathsBackOntoItsRegionInTheModel) {
   const core::Result<core::TriangleMesh> snowman = core::samples::makeSample("snowman");
   ASSERT_TRUE(snowman.ok());
   const core::LoadedPlan plan = test::plannedInMemory(*snowman, rotary(Vec3::UnitZ()), "snowman", 0.5);
-  SliceJobOptions options;
-  options.settings = test::coarseSettings(0.3);
+  SliceJobOptions options = coarseOptions(0.3);
   options.settings.push_back({"skirts", "0"});  // step 1's skirt lies around the part, not over it
-  options.fixedDirection = false;
   const std::string dir = scratch("snowman-pose");
   core::JobContext context;
   const core::Result<SlicedJob> sliced = slicePlan(plan, profileNamed("klipper-rotary"), options, dir, context);
@@ -171,18 +193,11 @@ TEST(SliceJob, EachStepsPoseTakesItsToolpathsBackOntoItsRegionInTheModel) {
 }
 
 TEST(SliceJob, CancellingWhileTheSlicerRunsStopsItAndKeepsNoGcode) {
-  core::PrintJob job;
-  job.machine.kind = core::MachineKind::ThreeAxis;
-  core::PrintJobStep step;
-  step.region = test::makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 10));
-  step.regionFile = "step-01-region.stl";
-  job.steps = {step};
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
   const std::string dir = scratch("cancel");
   // A slicer that never ends on its own: it writes its process id, then waits (exec: the pid is the child's).
-  const std::string fake = dir + "/slow-slicer.sh";
   const std::string pidFile = dir + "/slicer.pid";
-  std::ofstream(fake) << "#!/bin/sh\necho $$ > '" << pidFile << "'\nexec sleep 60\n";
-  fs::permissions(fake, fs::perms::owner_all);
+  const std::string fake = fakeSlicer(dir + "/slow-slicer.sh", "echo $$ > '" + pidFile + "'\nexec sleep 60\n");
   SliceJobOptions options;
   options.slicerExecutable = fake;
   options.fixedDirection = false;
@@ -248,9 +263,7 @@ TEST(SliceJob, KittenPlanSlicesOnARotaryPlatformIntoOneStitchedProgram) {
   const core::LoadedPlan plan =
       test::plannedInMemory(test::loadSharedModel("kitten.off"), rotary(Vec3::UnitY()), "kitten", 0.4);
   const core::PrintJob job = test::machineJob(plan);
-  SliceJobOptions options;
-  options.settings = test::coarseSettings(0.3);
-  options.fixedDirection = false;
+  SliceJobOptions options = coarseOptions(0.3);
   const std::string dir = scratch("kitten");
   core::JobContext context;
   const core::Result<SlicedJob> sliced = sliceJob(job, profileNamed("klipper-rotary"), options, dir, context);
@@ -271,9 +284,7 @@ TEST(SliceJob, PlanWithSupportsExtrudesInsideTheSupportMeshes) {
   std::size_t withSupports = 0;
   while (withSupports < job.steps.size() && job.steps[withSupports].supports.empty()) ++withSupports;
   ASSERT_LT(withSupports, job.steps.size()) << "the T-bar's plan was expected to keep supports";
-  SliceJobOptions options;
-  options.settings = test::coarseSettings(0.3);
-  options.fixedDirection = false;
+  SliceJobOptions options = coarseOptions(0.3);
   const std::string dir = scratch("tbar");
   core::JobContext context;
   const PrinterProfile profile = profileNamed("marlin-220");
@@ -299,14 +310,7 @@ TEST(SliceJob, PlanWithSupportsExtrudesInsideTheSupportMeshes) {
 }
 
 TEST(SliceJob, MissingSlicerNamesTheCommand) {
-  core::MachineSpec machine;
-  machine.kind = core::MachineKind::ThreeAxis;
-  core::PrintJob job;
-  job.machine = machine;
-  core::PrintJobStep step;
-  step.region = test::makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 10));
-  step.regionFile = "step-01-region.stl";
-  job.steps = {step};
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
   SliceJobOptions options;
   options.slicerExecutable = "no-such-prusa-slicer";
   core::JobContext context;
@@ -318,16 +322,10 @@ TEST(SliceJob, MissingSlicerNamesTheCommand) {
 }
 
 TEST(SliceJob, FailingSlicerGivesItsExitCodeAndLastOutput) {
-  core::PrintJob job;
-  job.machine.kind = core::MachineKind::ThreeAxis;
-  core::PrintJobStep step;
-  step.region = test::makeBox(Vec3(-5, -5, 0), Vec3(5, 5, 10));
-  step.regionFile = "step-01-region.stl";
-  job.steps = {step};
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
   const std::string dir = scratch("failing");
-  const std::string fake = dir + "/fake-slicer.sh";
-  std::ofstream(fake) << "#!/bin/sh\necho 'Error: the slicer could not do it' >&2\nexit 4\n";
-  fs::permissions(fake, fs::perms::owner_all);
+  const std::string fake =
+      fakeSlicer(dir + "/fake-slicer.sh", "echo 'Error: the slicer could not do it' >&2\nexit 4\n");
   SliceJobOptions options;
   options.slicerExecutable = fake;
   core::JobContext context;
@@ -339,18 +337,11 @@ TEST(SliceJob, FailingSlicerGivesItsExitCodeAndLastOutput) {
 }
 
 TEST(SliceJob, BedTooSmallForThePartIsRefusedNamingStepAndLine) {
-  core::PrintJob job;
-  job.machine.kind = core::MachineKind::ThreeAxis;
-  core::PrintJobStep step;
-  step.region = test::makeBox(Vec3(-20, -20, 0), Vec3(20, 20, 3));
-  step.regionFile = "step-01-region.stl";
-  job.steps = {step};
+  const core::PrintJob job = oneBoxJob(Vec3(-20, -20, 0), Vec3(20, 20, 3));
   const std::string dir = scratch("smallbed");
   const std::string ini = dir + "/small.ini";
   std::ofstream(ini) << "bed_shape = 0x0,30x0,30x30,0x30\nmax_print_height = 100\nskirts = 0\n";
-  SliceJobOptions options;
-  options.settings = test::coarseSettings(0.3);
-  options.fixedDirection = false;
+  SliceJobOptions options = coarseOptions(0.3);
   core::JobContext context;
   const auto sliced = sliceJob(job, profileNamed(ini), options, dir + "/out", context);
   ASSERT_FALSE(sliced.ok());

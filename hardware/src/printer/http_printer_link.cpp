@@ -1,4 +1,5 @@
-// The threads, queue and latch every HTTP printer link shares (see http_printer_link.h).
+// The worker, queue and stop thread every HTTP printer link shares (see http_printer_link.h); the threads'
+// start and stop are PrinterLinkThreads', the latch a LatchedEmergencyStop, as in the Marlin link.
 #include "printer/http_printer_link.h"
 
 #include <algorithm>
@@ -102,40 +103,21 @@ HttpPrinterLink::~HttpPrinterLink() { disconnect(); }
 core::Status HttpPrinterLink::connect() {
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    if (m_running) return invalidParameter("already connected", m_name);
-    m_quit = false;
-    m_running = true;
-    m_firstDone = false;
+    if (m_threads.running()) return invalidParameter("already connected", m_name);
+    m_threads.begin();
     m_status.link = LinkState::Connecting;
     m_status.polls = 0;
   }
-  m_worker = std::thread([this] { runWorker(); });
-  m_stopper = std::thread([this] { runStopper(); });
-  std::unique_lock<std::mutex> lock(m_mutex);
-  m_firstCondition.wait(lock, [this] { return m_firstDone; });
-  return m_first;
+  return m_threads.start([this] { runWorker(); }, [this] { runStopper(); });
 }
 
 void HttpPrinterLink::disconnect() {
-  {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    if (!m_running) return;
-    m_quit = true;
-  }
-  m_wake.notify_all();
-  m_stopWake.notify_all();
-  if (m_worker.joinable()) m_worker.join();
-  if (m_stopper.joinable()) m_stopper.join();
+  if (!m_threads.stop()) return;
   std::lock_guard<std::mutex> lock(m_mutex);
-  m_running = false;
+  m_threads.finish();
   m_status.link = LinkState::Disconnected;
   failQueued(core::Error{core::ErrorCode::Cancelled, "the link was disconnected before the command was sent", m_name});
-  for (auto& waiter : m_stopWaiters)
-    waiter.second.set_value(core::Error{core::ErrorCode::Cancelled,
-                                        "disconnected before the printer confirmed the emergency stop (it stays "
-                                        "latched and is sent first on the next connect)",
-                                        m_name});
-  m_stopWaiters.clear();
+  m_stop.cancelWaiters(m_name);
 }
 
 std::future<core::Status> HttpPrinterLink::upload(const std::string& localPath, const std::string& remoteName) {
@@ -150,36 +132,25 @@ std::future<core::Status> HttpPrinterLink::upload(const std::string& localPath, 
 }
 
 std::future<core::Status> HttpPrinterLink::emergencyStop() {
-  std::promise<core::Status> promise;
-  std::future<core::Status> future = promise.get_future();
+  std::future<core::Status> future;
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_status.stop.kind = StopKind::EmergencyStop;
-    m_status.stop.confirmed = false;
-    m_status.stop.problem = "not sent yet";
-    ++m_stopGeneration;
-    m_stopDue = true;
-    m_stopWaiters.emplace_back(m_stopGeneration, std::move(promise));
+    future = m_stop.latch();
     failQueued(core::Error{core::ErrorCode::Cancelled, "cancelled by the emergency stop", m_name});
   }
-  m_stopWake.notify_all();
+  m_threads.stopWake().notify_all();
   return future;
 }
 
 core::Status HttpPrinterLink::clearStop() {
   std::lock_guard<std::mutex> lock(m_mutex);
-  if (!m_status.stop.latched()) return core::Done{};
-  if (!m_status.stop.confirmed)
-    return invalidParameter("the printer has not confirmed the emergency stop yet (" + m_status.stop.problem +
-                                "): it cannot be cleared before it took effect",
-                            m_name);
-  m_status.stop = StopLatch{};
-  return core::Done{};
+  return m_stop.clear(m_name);
 }
 
 PrinterStatus HttpPrinterLink::status() const {
   std::lock_guard<std::mutex> lock(m_mutex);
   PrinterStatus s = m_status;
+  s.stop = m_stop.state();
   s.linkLost = s.polls == 0 ||
                (s.link != LinkState::Connected && m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter);
   return s;
@@ -206,11 +177,11 @@ std::future<core::Status> HttpPrinterLink::submit(const std::string& what, bool 
   std::future<core::Status> future = promise.get_future();
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    if (!m_running) {
+    if (!m_threads.running()) {
       promise.set_value(invalidParameter("not connected: " + what + " was not sent", m_name));
       return future;
     }
-    if (refusedWhileStopped && m_status.stop.latched()) {
+    if (refusedWhileStopped && m_stop.latched()) {
       promise.set_value(invalidParameter(
           "the emergency stop is latched: " + what + " was not sent; clear the stop (and restart the printer) first",
           m_name));
@@ -218,7 +189,7 @@ std::future<core::Status> HttpPrinterLink::submit(const std::string& what, bool 
     }
     m_queue.push_back(Pending{std::move(command), std::move(promise), what});
   }
-  m_wake.notify_all();
+  m_threads.workerWake().notify_all();
   return future;
 }
 
@@ -236,7 +207,7 @@ void HttpPrinterLink::poll() {
         m_status.polls == 0 && m_status.link == LinkState::Connecting ? LinkState::Connecting : LinkState::Reconnecting;
     m_status.lastError = reading.error().describe();
     m_lastPollFailed = true;
-    if (!m_firstDone) finishFirst(reading.error());
+    m_threads.reportFirst(reading.error());
     return;
   }
   const PrinterReading& r = *reading;
@@ -252,18 +223,12 @@ void HttpPrinterLink::poll() {
   m_status.lastReply = m_options.steadyNow();
   m_status.lastError.clear();
   // Back after a failure with a stop latched: send it again (the printer may have restarted meanwhile).
-  if (m_lastPollFailed && m_status.stop.latched()) {
-    m_stopDue = true;
-    m_stopWake.notify_all();
+  if (m_lastPollFailed && m_stop.latched()) {
+    m_stop.markDue();
+    m_threads.stopWake().notify_all();
   }
   m_lastPollFailed = false;
-  if (!m_firstDone) finishFirst(core::Done{});
-}
-
-void HttpPrinterLink::finishFirst(core::Status outcome) {
-  m_first = std::move(outcome);
-  m_firstDone = true;
-  m_firstCondition.notify_all();
+  m_threads.reportFirst(core::Done{});
 }
 
 void HttpPrinterLink::runWorker() {
@@ -273,8 +238,8 @@ void HttpPrinterLink::runWorker() {
     bool havePending = false;
     {
       std::unique_lock<std::mutex> lock(m_mutex);
-      m_wake.wait_until(lock, nextPoll, [this] { return m_quit || !m_queue.empty(); });
-      if (m_quit) return;
+      m_threads.workerWake().wait_until(lock, nextPoll, [this] { return m_threads.quitting() || !m_queue.empty(); });
+      if (m_threads.quitting()) return;
       if (!m_queue.empty()) {
         pending = std::move(m_queue.front());
         m_queue.pop_front();
@@ -304,33 +269,20 @@ void HttpPrinterLink::runStopper() {
     std::uint64_t generation = 0;
     {
       std::unique_lock<std::mutex> lock(m_mutex);
-      m_stopWake.wait(lock, [this] { return m_quit || m_stopDue; });
-      if (m_quit) return;
-      generation = m_stopGeneration;
-      m_stopDue = false;
+      m_threads.stopWake().wait(lock, [this] { return m_threads.quitting() || m_stop.due(); });
+      if (m_threads.quitting()) return;
+      generation = m_stop.take();
     }
     auto c = client(m_options.requestTimeout);
     const core::Status sent = sendEmergencyStop(*c);
     std::unique_lock<std::mutex> lock(m_mutex);
-    if (sent.ok()) {
-      ++m_status.stop.writes;
-      if (generation == m_stopGeneration) {
-        m_status.stop.confirmed = true;
-        m_status.stop.problem.clear();
-      }
-      for (auto it = m_stopWaiters.begin(); it != m_stopWaiters.end();) {
-        if (it->first <= generation) {
-          it->second.set_value(core::Done{});
-          it = m_stopWaiters.erase(it);
-        } else {
-          ++it;
-        }
-      }
+    if (sent.ok()) {  // its reply is the printer's confirmation
+      m_stop.confirm(generation);
       continue;
     }
-    m_status.stop.problem = sent.error().describe();
-    m_stopDue = true;  // resend until the printer answers
-    m_stopWake.wait_for(lock, m_options.stopRetryInterval, [this] { return m_quit; });
+    m_stop.setProblem(sent.error().describe());
+    m_stop.markDue();  // until the printer answers
+    m_threads.stopWake().wait_for(lock, m_options.stopRetryInterval, [this] { return m_threads.quitting(); });
   }
 }
 

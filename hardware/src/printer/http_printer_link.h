@@ -5,16 +5,14 @@
 // commands (through submit()). cpp-httplib stays in hardware/src/printer.
 #include <httplib.h>
 
-#include <condition_variable>
 #include <deque>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
-#include <utility>
-#include <vector>
 
 #include "multidir/hardware/printer_link.h"
+#include "printer/latched_emergency_stop.h"
+#include "printer/printer_link_threads.h"
 
 namespace multidir::hardware {
 
@@ -78,7 +76,6 @@ class HttpPrinterLink : public PrinterLink {
 
   void failQueued(const core::Error& error);
   void poll();
-  void finishFirst(core::Status outcome);
   void runWorker();
   void runStopper();
 
@@ -86,22 +83,12 @@ class HttpPrinterLink : public PrinterLink {
   PrinterLinkOptions m_options;
   std::string m_name;
 
-  mutable std::mutex m_mutex;
-  std::condition_variable m_wake;
-  std::condition_variable m_stopWake;
-  std::condition_variable m_firstCondition;
+  mutable std::mutex m_mutex;  // everything below
+  PrinterLinkThreads m_threads{m_mutex};
   std::deque<Pending> m_queue;
-  bool m_quit = false;
-  bool m_running = false;
-  bool m_firstDone = false;
-  core::Status m_first = core::Done{};
   bool m_lastPollFailed = false;
-  PrinterStatus m_status;
-  std::uint64_t m_stopGeneration = 0;
-  bool m_stopDue = false;
-  std::vector<std::pair<std::uint64_t, std::promise<core::Status>>> m_stopWaiters;
-  std::thread m_worker;
-  std::thread m_stopper;
+  PrinterStatus m_status;  // but its stop, which is m_stop's
+  LatchedEmergencyStop m_stop;
 };
 
 // Helpers the protocols share.

@@ -1,5 +1,6 @@
 // Marlin over a serial device: one worker thread owns the port's reading and the line-numbered stream (it
-// runs the queued commands in order between lines), one thread only writes the latched M112.
+// runs the queued commands in order between lines), one thread only writes the latched M112 (both started and
+// stopped by PrinterLinkThreads; the latch is a LatchedEmergencyStop, shared with the HTTP links).
 #include "multidir/hardware/marlin_link.h"
 
 #include <poll.h>
@@ -7,18 +8,18 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <condition_variable>
 #include <cstring>
 #include <deque>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <optional>
-#include <thread>
 #include <utility>
 #include <vector>
 
+#include "printer/latched_emergency_stop.h"
 #include "printer/marlin_protocol.h"
+#include "printer/printer_link_threads.h"
 #include "printer/serial_port.h"
 
 namespace multidir::hardware {
@@ -55,44 +56,25 @@ class MarlinLink : public PrinterLink {
   core::Status connect() override {
     {
       std::lock_guard<std::mutex> lock(m_mutex);
-      if (m_running) return invalid("already connected", m_name);
-      m_quit = false;
-      m_running = true;
-      m_firstDone = false;
+      if (m_threads.running()) return invalid("already connected", m_name);
+      m_threads.begin();
       m_status.link = LinkState::Connecting;
       m_status.polls = 0;
     }
-    m_worker = std::thread([this] { runWorker(); });
-    m_stopper = std::thread([this] { runStopper(); });
-    std::unique_lock<std::mutex> lock(m_mutex);
-    m_firstCondition.wait(lock, [this] { return m_firstDone; });
-    return m_first;
+    return m_threads.start([this] { runWorker(); }, [this] { runStopper(); });
   }
 
   void disconnect() override {
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      if (!m_running) return;
-      m_quit = true;
-    }
-    m_wake.notify_all();
-    m_stopWake.notify_all();
-    if (m_worker.joinable()) m_worker.join();
-    if (m_stopper.joinable()) m_stopper.join();
+    if (!m_threads.stop()) return;
     closePort();
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_running = false;
+    m_threads.finish();
     m_status.link = LinkState::Disconnected;
     const core::Error cancelled{core::ErrorCode::Cancelled, "the link was disconnected before the printer answered",
                                 m_name};
     failQueued(cancelled);
     failJobPromises(cancelled);
-    for (auto& waiter : m_stopWaiters)
-      waiter.second.set_value(core::Error{core::ErrorCode::Cancelled,
-                                          "disconnected before the printer confirmed the emergency stop (it stays "
-                                          "latched and is sent first on the next connect)",
-                                          m_name});
-    m_stopWaiters.clear();
+    m_stop.cancelWaiters(m_name);
   }
 
   std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override {
@@ -109,39 +91,28 @@ class MarlinLink : public PrinterLink {
   std::future<core::Status> cancelPrint() override { return submit(Command::Cancel, "cancelling the print", false); }
 
   std::future<core::Status> emergencyStop() override {
-    std::promise<core::Status> promise;
-    std::future<core::Status> future = promise.get_future();
+    std::future<core::Status> future;
     {
       std::lock_guard<std::mutex> lock(m_mutex);
-      m_status.stop.kind = StopKind::EmergencyStop;
-      m_status.stop.confirmed = false;
-      m_status.stop.problem = "not sent yet";
-      ++m_stopGeneration;
-      m_stopDue = true;
+      future = m_stop.latch();
       m_haltedBeforeStop = m_status.firmwareState == "halted";
-      m_stopWaiters.emplace_back(m_stopGeneration, std::move(promise));
       failQueued(core::Error{core::ErrorCode::Cancelled, "cancelled by the emergency stop", m_name});
       m_dropJob = true;  // the worker stops streaming at once
     }
-    m_stopWake.notify_all();
-    m_wake.notify_all();
+    m_threads.stopWake().notify_all();
+    m_threads.workerWake().notify_all();
     return future;
   }
 
   core::Status clearStop() override {
     std::lock_guard<std::mutex> lock(m_mutex);
-    if (!m_status.stop.latched()) return core::Done{};
-    if (!m_status.stop.confirmed)
-      return invalid("the printer has not confirmed the emergency stop yet (" + m_status.stop.problem +
-                         "): it cannot be cleared before it took effect",
-                     m_name);
-    m_status.stop = StopLatch{};
-    return core::Done{};
+    return m_stop.clear(m_name);
   }
 
   PrinterStatus status() const override {
     std::lock_guard<std::mutex> lock(m_mutex);
     PrinterStatus s = m_status;
+    s.stop = m_stop.state();
     s.linkLost = s.polls == 0 || m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter;
     return s;
   }
@@ -180,11 +151,11 @@ class MarlinLink : public PrinterLink {
     std::future<core::Status> future = promise.get_future();
     {
       std::lock_guard<std::mutex> lock(m_mutex);
-      if (!m_running) {
+      if (!m_threads.running()) {
         promise.set_value(invalid("not connected: " + what + " was not sent", m_name));
         return future;
       }
-      if (refusedWhileStopped && m_status.stop.latched()) {
+      if (refusedWhileStopped && m_stop.latched()) {
         promise.set_value(invalid(
             "the emergency stop is latched: " + what + " was not sent; clear the stop (and reset the printer) first",
             m_name));
@@ -192,7 +163,7 @@ class MarlinLink : public PrinterLink {
       }
       m_queue.push_back(Pending{command, what, std::move(localPath), std::move(remoteName), std::move(promise)});
     }
-    m_wake.notify_all();
+    m_threads.workerWake().notify_all();
     return future;
   }
 
@@ -207,13 +178,6 @@ class MarlinLink : public PrinterLink {
     if (m_cancelPromise) m_cancelPromise->set_value(error);
     m_startPromise.reset();
     m_cancelPromise.reset();
-  }
-
-  void finishFirst(core::Status outcome) {
-    if (m_firstDone) return;
-    m_first = std::move(outcome);
-    m_firstDone = true;
-    m_firstCondition.notify_all();
   }
 
   // --- the port -------------------------------------------------------------------------------------------
@@ -231,7 +195,7 @@ class MarlinLink : public PrinterLink {
     if (!opened) {
       m_status.link = m_status.polls == 0 ? LinkState::Connecting : LinkState::Reconnecting;
       m_status.lastError = opened.error().describe();
-      finishFirst(opened.error());
+      m_threads.reportFirst(opened.error());
       return false;
     }
     {
@@ -243,9 +207,9 @@ class MarlinLink : public PrinterLink {
     resetNumbering();
     // A stop latched before (or while) the port was closed is written again first: the printer may have
     // restarted meanwhile.
-    if (m_status.stop.latched()) {
-      m_stopDue = true;
-      m_stopWake.notify_all();
+    if (m_stop.latched()) {
+      m_stop.markDue();
+      m_threads.stopWake().notify_all();
     }
     return true;
   }
@@ -276,7 +240,7 @@ class MarlinLink : public PrinterLink {
     while (true) {
       {
         std::lock_guard<std::mutex> lock(m_mutex);
-        if (m_quit) return;
+        if (m_threads.quitting()) return;
       }
       int fd = -1;
       {
@@ -286,7 +250,7 @@ class MarlinLink : public PrinterLink {
       if (fd < 0) {
         if (Clock::now() < nextOpen) {
           std::unique_lock<std::mutex> lock(m_mutex);
-          m_wake.wait_until(lock, nextOpen, [this] { return m_quit; });
+          m_threads.workerWake().wait_until(lock, nextOpen, [this] { return m_threads.quitting(); });
           continue;
         }
         nextOpen = Clock::now() + reopenEvery;
@@ -309,14 +273,14 @@ class MarlinLink : public PrinterLink {
       checkSilence();
       pump();
       std::lock_guard<std::mutex> lock(m_mutex);
-      if (!m_firstDone && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter)
-        finishFirst(core::Error{core::ErrorCode::DeviceUnreachable,
-                                "no answer from the printer within " +
-                                    std::to_string(2 * m_options.linkLostAfter.count()) + " ms of opening " +
-                                    m_settings.devicePath + " at " + std::to_string(m_settings.baud) +
-                                    " baud: check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
-                                    "the printer is on, and that no other program uses the port",
-                                m_name});
+      if (!m_threads.firstReported() && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter)
+        m_threads.reportFirst(
+            core::Error{core::ErrorCode::DeviceUnreachable,
+                        "no answer from the printer within " + std::to_string(2 * m_options.linkLostAfter.count()) +
+                            " ms of opening " + m_settings.devicePath + " at " + std::to_string(m_settings.baud) +
+                            " baud: check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
+                            "the printer is on, and that no other program uses the port",
+                        m_name});
     }
   }
 
@@ -333,7 +297,7 @@ class MarlinLink : public PrinterLink {
       m_job.reset();
       failJobPromises(core::Error{core::ErrorCode::DeviceUnreachable, m_status.message, m_name});
     }
-    finishFirst(core::Error{core::ErrorCode::DeviceUnreachable, m_status.lastError, m_name});
+    m_threads.reportFirst(core::Error{core::ErrorCode::DeviceUnreachable, m_status.lastError, m_name});
   }
 
   // False on a read error (the device is gone).
@@ -372,7 +336,7 @@ class MarlinLink : public PrinterLink {
       if (m_status.firmwareState.empty()) m_status.firmwareState = "ready";
       if (m_status.state == PrinterJobState::Unknown) m_status.state = PrinterJobState::Standby;
       m_status.lastError.clear();
-      finishFirst(core::Done{});
+      m_threads.reportFirst(core::Done{});
     }
     switch (reply.kind) {
       case marlin::Reply::Kind::Ok:
@@ -489,7 +453,7 @@ class MarlinLink : public PrinterLink {
     m_status.lastError = "the printer reports: " + text;
     m_job.reset();
     failJobPromises(core::Error{core::ErrorCode::DeviceFault, "the printer stopped: " + m_status.message, m_name});
-    if (killed && m_status.stop.latched() && !m_status.stop.confirmed) confirmStop(m_stopGeneration);
+    if (killed && m_stop.latched() && !m_stop.state().confirmed) confirmStop(m_stop.generation());
   }
 
   // m_mutex held: host action commands Marlin sends when the job is handled at the printer.
@@ -520,22 +484,10 @@ class MarlinLink : public PrinterLink {
     resetNumbering();
   }
 
-  // m_mutex held.
+  // m_mutex held: the printer's halt confirms the stop sent as `generation`.
   void confirmStop(std::uint64_t generation) {
-    ++m_status.stop.writes;
-    if (generation == m_stopGeneration) {
-      m_status.stop.confirmed = true;
-      m_status.stop.problem.clear();
-    }
-    for (auto it = m_stopWaiters.begin(); it != m_stopWaiters.end();) {
-      if (it->first <= generation) {
-        it->second.set_value(core::Done{});
-        it = m_stopWaiters.erase(it);
-      } else {
-        ++it;
-      }
-    }
-    m_stopWake.notify_all();
+    m_stop.confirm(generation);
+    m_threads.stopWake().notify_all();
   }
 
   // The queued commands, in order; start and cancel finish later, when the printer answered their lines.
@@ -704,7 +656,7 @@ class MarlinLink : public PrinterLink {
     const auto now = Clock::now();
     const bool pollDue =
         now - m_lastTemperature >= m_options.pollInterval && now - m_lastPollSent >= m_options.pollInterval;
-    if (m_job && m_status.state == PrinterJobState::Printing && !m_status.stop.latched()) {
+    if (m_job && m_status.state == PrinterJobState::Printing && !m_stop.latched()) {
       // At most one poll between two job lines: when a round trip takes longer than pollInterval (a loaded
       // machine, a slow printer) a poll is always due, and polls alone would hold the job (and a cancel) up.
       if (pollDue && !m_pollSentLast) return appendPoll(now);
@@ -757,30 +709,30 @@ class MarlinLink : public PrinterLink {
       bool haltedBefore = false;
       {
         std::unique_lock<std::mutex> lock(m_mutex);
-        m_stopWake.wait(lock, [this] { return m_quit || m_stopDue; });
-        if (m_quit) return;
-        generation = m_stopGeneration;
+        m_threads.stopWake().wait(lock, [this] { return m_threads.quitting() || m_stop.due(); });
+        if (m_threads.quitting()) return;
+        generation = m_stop.take();
         haltedBefore = m_haltedBeforeStop;
-        m_stopDue = false;
       }
       // Outside the numbering: Marlin's emergency parser acts on M112 as it arrives, even with a full buffer.
       // The leading line end ends a line a failed write may have cut short (the parser skips to the next line).
       const core::Status sent = sendRaw("\nM112\n");
       std::unique_lock<std::mutex> lock(m_mutex);
       if (!sent.ok()) {
-        m_status.stop.problem = "M112 not written: " + sent.error().message;
+        m_stop.setProblem("M112 not written: " + sent.error().message);
       } else if (haltedBefore) {
         // Marlin was already halted (a kill before this stop) and answers nothing more: the state shows it.
         confirmStop(generation);
-      } else if (!m_status.stop.confirmed) {
-        m_status.stop.problem = "M112 sent; waiting for the printer to report its halt";
+      } else if (!m_stop.state().confirmed) {
+        m_stop.setProblem("M112 sent; waiting for the printer to report its halt");
       }
-      const bool answered = m_stopWake.wait_for(lock, m_options.stopRetryInterval, [&] {
-        return m_quit || (m_status.stop.confirmed && generation == m_stopGeneration) || generation != m_stopGeneration;
+      const bool answered = m_threads.stopWake().wait_for(lock, m_options.stopRetryInterval, [&] {
+        return m_threads.quitting() || (m_stop.state().confirmed && generation == m_stop.generation()) ||
+               generation != m_stop.generation();
       });
-      if (m_quit) return;
+      if (m_threads.quitting()) return;
       (void)answered;
-      if (m_status.stop.latched() && !m_status.stop.confirmed) m_stopDue = true;  // resend until the printer answers
+      if (m_stop.latched() && !m_stop.state().confirmed) m_stop.markDue();  // resend until the printer answers
     }
   }
 
@@ -789,20 +741,12 @@ class MarlinLink : public PrinterLink {
   std::string m_name;
 
   mutable std::mutex m_mutex;  // everything below but the port
-  std::condition_variable m_wake;
-  std::condition_variable m_stopWake;
-  std::condition_variable m_firstCondition;
+  PrinterLinkThreads m_threads{m_mutex};
   std::deque<Pending> m_queue;
-  bool m_quit = false;
-  bool m_running = false;
-  bool m_firstDone = false;
-  core::Status m_first = core::Done{};
-  PrinterStatus m_status;
-  std::uint64_t m_stopGeneration = 0;
-  bool m_stopDue = false;
+  PrinterStatus m_status;  // but its stop, which is m_stop's
+  LatchedEmergencyStop m_stop;
   bool m_haltedBeforeStop = false;
   bool m_dropJob = false;
-  std::vector<std::pair<std::uint64_t, std::promise<core::Status>>> m_stopWaiters;
 
   // The stream (worker, under m_mutex): every line numbered since the last M110, for resends.
   std::vector<Line> m_lines;
@@ -828,9 +772,6 @@ class MarlinLink : public PrinterLink {
 
   std::mutex m_writeMutex;  // the descriptor and every write: whole lines never interleave
   int m_fd = -1;
-
-  std::thread m_worker;
-  std::thread m_stopper;
 };
 
 }  // namespace
