@@ -186,13 +186,31 @@ TEST(CliDecompose, UsageErrorsExitWithTwoAndNameTheOption) {
   expectUsageError("-o out", "which model?");
 }
 
+TEST(CliDecompose, ScalesOutsideOneToFourIsAUsageErrorNamingTheOption) {
+  const std::string k = kitten() + " ";
+  expectUsageError(k + "-o out --scales 0", "--scales: volume scales must be between 1 and 4");
+  expectUsageError(k + "-o out --scales 5", "--scales: volume scales must be between 1 and 4");
+  expectUsageError(k + "-o out --scales 1.5", "--scales expects a whole number, got '1.5'");
+}
+
+TEST(CliDecompose, OneScaleRunsAndIsRecordedInThePlan) {
+  const std::string dir = multidir::test::scratchDirectory("CliDecompose.OneScale");
+  const CliRun run =
+      runCli("decompose " + kitten() + " --up y --beam-width 2 --scales 1 -o '" + dir + "/plan'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto loaded = multidir::core::loadPlan(dir + "/plan");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->metadata.options.volumeScales, 1);
+  EXPECT_EQ(nlohmann::json::parse(readAll(dir + "/plan/plan.json"))["search"]["volumeScales"], 1);
+}
+
 TEST(CliDecompose, HelpListsEveryOption) {
   const std::string dir = multidir::test::scratchDirectory("CliDecompose.Help");
   const CliRun run = runCli("help decompose", dir);
   EXPECT_EQ(run.exitCode, 0);
   for (const char* option :
        {"-o OUTDIR", "--up", "--machine", "--axis X,Y,Z", "--axis-search", "--profile", "--scheme", "--beam-width",
-        "--alpha", "--normals", "--offset-step", "--w W", "--threads", "--summary"})
+        "--alpha", "--normals", "--offset-step", "--w W", "--scales S", "--threads", "--summary"})
     EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 
