@@ -51,7 +51,9 @@ const KittenRun& kittenRun() {
 }
 
 void expectUsageError(const std::string& arguments, const std::string& message) {
-  const std::string dir = multidir::test::scratchDirectory("CliDecompose.Usage");
+  // A folder per test: ctest runs the tests that call this in parallel.
+  const std::string dir = multidir::test::scratchDirectory(
+      std::string("CliDecompose.Usage.") + testing::UnitTest::GetInstance()->current_test_info()->name());
   const CliRun run = runCli("decompose " + arguments, dir);
   EXPECT_EQ(run.exitCode, 2) << arguments << "\n" << run.err;
   EXPECT_NE(run.err.find(message), std::string::npos) << arguments << "\n" << run.err;
