@@ -77,7 +77,8 @@ CapCheck checkCap(const TriangleMesh& mesh, const Plane& plane, std::int32_t pla
     ++check.interiorEdges;
     for (int s = 0; s < 2; ++s) {
       const Triangle& t = mesh.triangles[sides[static_cast<std::size_t>(s)].first];
-      if (strictlyInsideCircumcircle(flat(t[0]), flat(t[1]), flat(t[2]), flat(sides[static_cast<std::size_t>(1 - s)].second))) {
+      const std::int32_t across = sides[static_cast<std::size_t>(1 - s)].second;
+      if (strictlyInsideCircumcircle(flat(t[0]), flat(t[1]), flat(t[2]), flat(across))) {
         ++check.notDelaunay;
         break;
       }
