@@ -51,7 +51,9 @@ const KittenRun& kittenRun() {
 }
 
 void expectUsageError(const std::string& arguments, const std::string& message) {
-  const std::string dir = multidir::test::scratchDirectory("CliDecompose.Usage");
+  // A folder per test: ctest runs the tests that call this in parallel.
+  const std::string dir = multidir::test::scratchDirectory(
+      std::string("CliDecompose.Usage.") + testing::UnitTest::GetInstance()->current_test_info()->name());
   const CliRun run = runCli("decompose " + arguments, dir);
   EXPECT_EQ(run.exitCode, 2) << arguments << "\n" << run.err;
   EXPECT_NE(run.err.find(message), std::string::npos) << arguments << "\n" << run.err;
@@ -186,13 +188,31 @@ TEST(CliDecompose, UsageErrorsExitWithTwoAndNameTheOption) {
   expectUsageError("-o out", "which model?");
 }
 
+TEST(CliDecompose, ScalesOutsideOneToFourIsAUsageErrorNamingTheOption) {
+  const std::string k = kitten() + " ";
+  expectUsageError(k + "-o out --scales 0", "--scales: volume scales must be between 1 and 4");
+  expectUsageError(k + "-o out --scales 5", "--scales: volume scales must be between 1 and 4");
+  expectUsageError(k + "-o out --scales 1.5", "--scales expects a whole number, got '1.5'");
+}
+
+TEST(CliDecompose, OneScaleRunsAndIsRecordedInThePlan) {
+  const std::string dir = multidir::test::scratchDirectory("CliDecompose.OneScale");
+  const CliRun run =
+      runCli("decompose " + kitten() + " --up y --beam-width 2 --scales 1 -o '" + dir + "/plan'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const auto loaded = multidir::core::loadPlan(dir + "/plan");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->metadata.options.volumeScales, 1);
+  EXPECT_EQ(nlohmann::json::parse(readAll(dir + "/plan/plan.json"))["search"]["volumeScales"], 1);
+}
+
 TEST(CliDecompose, HelpListsEveryOption) {
   const std::string dir = multidir::test::scratchDirectory("CliDecompose.Help");
   const CliRun run = runCli("help decompose", dir);
   EXPECT_EQ(run.exitCode, 0);
   for (const char* option :
        {"-o OUTDIR", "--up", "--machine", "--axis X,Y,Z", "--axis-search", "--profile", "--scheme", "--beam-width",
-        "--alpha", "--normals", "--offset-step", "--w W", "--threads", "--summary"})
+        "--alpha", "--normals", "--offset-step", "--w W", "--scales S", "--threads", "--summary"})
     EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 

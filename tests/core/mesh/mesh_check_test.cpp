@@ -268,3 +268,79 @@ TEST(MeshCheck, NegativeWeldToleranceIsAnInvalidParameter) {
   ASSERT_FALSE(loaded.ok());
   EXPECT_EQ(loaded.error().code, ErrorCode::InvalidParameter);
 }
+
+namespace {
+
+// A tolerance that is a power of two, so that cell boundaries (multiples of it) fall exactly on coordinates.
+constexpr double kWeldTolerance = 0.125;
+
+LoadOptions weldingAt(double tolerance) {
+  LoadOptions options;
+  options.weldToleranceMm = tolerance;
+  return options;
+}
+
+// The 10 mm cube whose top face (z = 10) is a fan of four triangles around vertex 8, placed at corner 6
+// (10, 10, 10) plus `offset` in the top face: a closed solid with two vertices as close together as wanted.
+RawSoup cubeWithTopFanNearCorner(const Vec3& offset) {
+  RawSoup soup = cubeSoup();
+  soup.vertices.push_back(soup.vertices[6] + offset);
+  // The cube's top face was {4, 5, 6} and {4, 6, 7}: its boundary 4 -> 5 -> 6 -> 7 -> 4.
+  soup.triangles[2] = {8, 4, 5};
+  soup.triangles[3] = {8, 5, 6};
+  soup.triangles.push_back({8, 6, 7});
+  soup.triangles.push_back({8, 7, 4});
+  return soup;
+}
+
+}  // namespace
+
+TEST(MeshWeld, PointsStraddlingACellCornerWithinTheToleranceAreWelded) {
+  // Corner 6 is moved just below (10, 10, 10) on every axis and its copy in two of its faces just above: the
+  // two points lie in different weld cells along all three axes (10 is a multiple of every cell size), and
+  // 0.104 mm apart, within the 0.125 mm tolerance.
+  RawSoup soup = cubeSoup();
+  soup.vertices[6] -= Vec3::Constant(0.03);
+  soup.vertices.push_back(Vec3::Constant(10.03));
+  soup.triangles[2] = {4, 5, 8};  // the top face {4, 5, 6} with the copy
+  soup.triangles[11] = {1, 8, 5};  // the side face {1, 6, 5} with the copy
+  auto loaded = checkAndRepair(soup, weldingAt(kWeldTolerance));
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->mesh.vertexCount(), 8u);
+  EXPECT_TRUE(loaded->report.statistics.closed);
+  EXPECT_NEAR(loaded->report.statistics.volumeMm3, 997.0, 0.01);  // corner 6 sits 0.03 mm inside on each axis
+}
+
+TEST(MeshWeld, PointWithinTheToleranceOfTwoKeptVerticesWeldsToTheEarlierOne) {
+  // Corner 6 (kept first) and the fan's centre 8 (kept later) are 0.177 mm apart, not welded to each other.
+  // The copy of corner 6 that face {8, 5, 6} uses is moved to their midpoint, 0.088 mm from both: it must
+  // become corner 6 again. Welded to vertex 8 instead, that face would lose its area and the cube its top.
+  // Vertex 8 lies in a cell visited before corner 6's by a search that looks at cells in coordinate order.
+  RawSoup soup = cubeWithTopFanNearCorner(Vec3(-kWeldTolerance, -kWeldTolerance, 0.0));
+  const Vec3 corner = soup.vertices[6];
+  const Vec3 between = 0.5 * (soup.vertices[6] + soup.vertices[8]);
+  soup.vertices.push_back(between);
+  soup.triangles[3] = {8, 5, 9};
+  ASSERT_LT((between - corner).norm(), kWeldTolerance);
+  ASSERT_LT((between - soup.vertices[8]).norm(), kWeldTolerance);
+  ASSERT_GT((soup.vertices[8] - corner).norm(), kWeldTolerance);
+
+  auto loaded = checkAndRepair(soup, weldingAt(kWeldTolerance));
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  const TriangleMesh& mesh = loaded->mesh;
+  EXPECT_EQ(mesh.vertexCount(), 9u);
+  ASSERT_EQ(mesh.faceCount(), 14u);
+  EXPECT_EQ(mesh.vertices[static_cast<std::size_t>(mesh.triangles[3][2])], corner);
+  EXPECT_TRUE(loaded->report.statistics.closed);
+}
+
+TEST(MeshWeld, PointsJustBeyondTheToleranceStayApart) {
+  // The fan's centre 1 % farther from corner 6 than the tolerance: two vertices, the cube closed.
+  const Vec3 offset = Vec3(-1.0, -1.0, 0.0).normalized() * (1.01 * kWeldTolerance);
+  auto loaded = checkAndRepair(cubeWithTopFanNearCorner(offset), weldingAt(kWeldTolerance));
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->mesh.vertexCount(), 9u);
+  EXPECT_EQ(loaded->mesh.faceCount(), 14u);
+  EXPECT_TRUE(loaded->report.statistics.closed);
+  EXPECT_NEAR(loaded->report.statistics.volumeMm3, 1000.0, 1e-9);
+}

@@ -409,6 +409,10 @@ INSTANTIATE_TEST_SUITE_P(
                  "plan.json: machine.platformMarginMm is missing"},
         EditCase{"BeamWidthZero", [](nlohmann::json& d) { d["search"]["beamWidth"] = 0; },
                  "plan.json: search: beam width must be between 1 and 1000"},
+        EditCase{"VolumeScalesFive", [](nlohmann::json& d) { d["search"]["volumeScales"] = 5; },
+                 "plan.json: search: volume scales must be between 1 and 4"},
+        EditCase{"VolumeScalesZero", [](nlohmann::json& d) { d["search"]["volumeScales"] = 0; },
+                 "plan.json: search: volume scales must be between 1 and 4"},
         EditCase{"UnknownScheme", [](nlohmann::json& d) { d["search"]["scheme"] = "random"; },
                  "plan.json: search.scheme must be \"beam\", \"greedy\" or \"cgreedy\""},
         EditCase{"BadChecksum", [](nlohmann::json& d) { d["model"]["checksum"] = "abc"; },
@@ -422,6 +426,44 @@ INSTANTIATE_TEST_SUITE_P(
         EditCase{"LengthInInches", [](nlohmann::json& d) { d["units"]["length"] = "inch"; },
                  "plan.json: units.length must be \"mm\""}),
     [](const testing::TestParamInfo<EditCase>& info) { return std::string(info.param.name); });
+
+TEST(PlanFile, SearchSettingsKeepTheirVolumeScales) {
+  PlanMetadata meta = tbarMetadata();
+  meta.options.volumeScales = 3;
+  const std::string dir = scratchDirectory("PlanFile.VolumeScales");
+  ASSERT_TRUE(savePlan(tbarPlan(), meta, dir).ok());
+  EXPECT_EQ(readJson(dir + "/plan.json")["search"]["volumeScales"], 3);
+  const Result<LoadedPlan> loaded = loadPlan(dir);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->metadata.options.volumeScales, 3);
+}
+
+TEST(PlanFile, PlanWrittenBeforeVolumeScalesReadsAsSearchedAtOneScale) {
+  // Plans saved before the beam ran at several scales have no search.volumeScales: they ran at w alone.
+  const std::string dir = savedTbar("PlanFile.NoVolumeScales");
+  nlohmann::json doc = readJson(dir + "/plan.json");
+  ASSERT_EQ(doc["search"]["volumeScales"], SearchOptions{}.volumeScales);
+  ASSERT_NE(SearchOptions{}.volumeScales, 1) << "the default would hide a reader that ignores the field";
+  doc["search"].erase("volumeScales");
+  writeText(dir + "/plan.json", doc.dump(2));
+  const Result<LoadedPlan> loaded = loadPlan(dir);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->metadata.options.volumeScales, 1);
+}
+
+TEST(PlanFile, SaveWhereARegionFileIsAFolderFailsNamingThatFile) {
+  // Region files are written side by side; the one that cannot be written is the one named.
+  const std::string dir = scratchDirectory("PlanFile.RegionFileIsAFolder");
+  ASSERT_GE(tbarPlan().regions.size(), 3u);
+  fs::create_directories(dir + "/region-02.stl");
+  const Status saved = savePlan(tbarPlan(), tbarMetadata(), dir);
+  ASSERT_FALSE(saved.ok());
+  EXPECT_EQ(saved.error().code, ErrorCode::WriteFailed) << saved.error().describe();
+  EXPECT_NE(saved.error().describe().find("region-02.stl"), std::string::npos) << saved.error().describe();
+  EXPECT_EQ(saved.error().describe().find("region-01.stl"), std::string::npos) << saved.error().describe();
+  EXPECT_EQ(saved.error().describe().find("region-03.stl"), std::string::npos) << saved.error().describe();
+  EXPECT_FALSE(fs::exists(dir + "/plan.json")) << "plan.json is written only after every region file";
+}
 
 TEST(PlanFile, UnknownFieldsAreIgnored) {
   const std::string dir = savedTbar("PlanFile.UnknownFields");

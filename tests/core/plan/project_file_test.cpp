@@ -45,6 +45,7 @@ Project fullProject(const std::string& modelPath) {
   options.candidates.offsetStepMm = 0.75;
   options.candidates.platformClearanceMm = 0.5;
   options.minVolumeDivisor = 12.0;
+  options.volumeScales = 3;
   options.initialDeltaMm2 = 2.5;
   options.deltaGrowth = 3.0;
   options.diversityCosine = 0.9;
@@ -124,6 +125,7 @@ void expectSameOptions(const SearchOptions& a, const SearchOptions& b) {
   EXPECT_EQ(a.candidates.offsetStepMm, b.candidates.offsetStepMm);
   EXPECT_EQ(a.candidates.platformClearanceMm, b.candidates.platformClearanceMm);
   EXPECT_EQ(a.minVolumeDivisor, b.minVolumeDivisor);
+  EXPECT_EQ(a.volumeScales, b.volumeScales);
   EXPECT_EQ(a.initialDeltaMm2, b.initialDeltaMm2);
   EXPECT_EQ(a.deltaGrowth, b.deltaGrowth);
   EXPECT_EQ(a.diversityCosine, b.diversityCosine);
