@@ -54,6 +54,13 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   m_minVolumeDivisor->setDecimals(1);
   m_minVolumeDivisor->setValue(defaults.minVolumeDivisor);
   m_minVolumeDivisor->setToolTip(tr("w: every region cut off keeps at least the model's volume divided by w"));
+  m_volumeScales = new QSpinBox(this);
+  m_volumeScales->setObjectName(QStringLiteral("volumeScales"));
+  m_volumeScales->setRange(1, 4);
+  m_volumeScales->setValue(defaults.volumeScales);
+  m_volumeScales->setToolTip(tr("Beam search only: runs at this many region scales side by side, the smallest region "
+                                "V/w, V/2w, V/4w, ..., the beam width shared among them, and keeps the best plan. "
+                                "No single w suits every model. 1: one beam search at w"));
   m_normals = new QSpinBox(this);
   m_normals->setObjectName(QStringLiteral("normals"));
   m_normals->setRange(1, 5000);
@@ -98,8 +105,11 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
 
   auto* form = new QFormLayout;
   form->addRow(tr("Scheme:"), m_scheme);
-  form->addRow(tr("Beam width:"), m_beamWidth);
+  m_beamWidthLabel = new QLabel(tr("Beam width:"), this);
+  form->addRow(m_beamWidthLabel, m_beamWidth);
   form->addRow(tr("Volume divisor w:"), m_minVolumeDivisor);
+  m_volumeScalesLabel = new QLabel(tr("Scales:"), this);
+  form->addRow(m_volumeScalesLabel, m_volumeScales);
   form->addRow(tr("Normals:"), m_normals);
   form->addRow(tr("Offset step:"), m_offsetStep);
   form->addRow(tr("Max. overhang angle α:"), m_alpha);
@@ -119,8 +129,9 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   buttons->addWidget(m_cancel);
   connect(m_run, &QPushButton::clicked, this, &SearchPanel::runClicked);
   connect(m_cancel, &QPushButton::clicked, this, &SearchPanel::cancelClicked);
+  connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::updateBeamOnlyControls);
   connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::settingsChanged);
-  for (QSpinBox* box : {m_beamWidth, m_normals, m_axisCount})
+  for (QSpinBox* box : {m_beamWidth, m_volumeScales, m_normals, m_axisCount})
     connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
   for (QDoubleSpinBox* box : {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain})
     connect(box, &QDoubleSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
@@ -175,6 +186,7 @@ core::SearchOptions SearchPanel::searchOptions() const {
   options.scheme = static_cast<core::SearchScheme>(m_scheme->currentData().toInt());
   options.beamWidth = m_beamWidth->value();
   options.minVolumeDivisor = m_minVolumeDivisor->value();
+  options.volumeScales = m_volumeScales->value();
   options.candidates.normalSamples = m_normals->value();
   options.candidates.offsetStepMm = m_offsetStep->value();
   options.alphaMaxDegrees = m_alpha->value();
@@ -190,6 +202,7 @@ void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
   }
   m_beamWidth->setValue(options.beamWidth);
   m_minVolumeDivisor->setValue(options.minVolumeDivisor);
+  m_volumeScales->setValue(options.volumeScales);
   m_normals->setValue(options.candidates.normalSamples);
   m_offsetStep->setValue(options.candidates.offsetStepMm);
   m_alpha->setValue(options.alphaMaxDegrees);
@@ -222,10 +235,18 @@ void SearchPanel::setRunning(bool running) {
   m_running = running;
   m_run->setEnabled(m_runnable && !running);
   m_cancel->setEnabled(running);
-  for (QWidget* w : std::initializer_list<QWidget*>{m_scheme, m_beamWidth, m_minVolumeDivisor, m_normals,
-                                                    m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain}) {
+  for (QWidget* w : std::initializer_list<QWidget*>{m_scheme, m_minVolumeDivisor, m_normals, m_offsetStep, m_alpha,
+                                                    m_minRegionHeight, m_minPlaneGain}) {
     w->setEnabled(!running);
   }
+  updateBeamOnlyControls();
+}
+
+void SearchPanel::updateBeamOnlyControls() {
+  const bool beam = static_cast<core::SearchScheme>(m_scheme->currentData().toInt()) == core::SearchScheme::Beam;
+  // Their values stay in searchOptions() (and in plans and projects) whatever the scheme.
+  for (QWidget* box : std::initializer_list<QWidget*>{m_beamWidth, m_volumeScales}) box->setEnabled(beam && !m_running);
+  for (QLabel* label : {m_beamWidthLabel, m_volumeScalesLabel}) label->setEnabled(beam);
 }
 
 void SearchPanel::searchStarted(double jgBeforeMm2, int maxLevels) {

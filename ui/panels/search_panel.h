@@ -1,6 +1,6 @@
 #pragma once
-// The Search panel: the search's parameters (scheme, beam width, w, normals, offset step, alpha_max, and for
-// 4-DOF machines how many rotation axes to try), Run and Cancel, a progress bar, a live read-out (level,
+// The Search panel: the search's parameters (scheme, beam width, w, region scales, normals, offset step,
+// alpha_max, min. region height, min. gain per plane, and for 4-DOF machines how many rotation axes to try), Run and Cancel, a progress bar, a live read-out (level,
 // beams alive, best J_G, candidates scored), a chart of the best J_G per level, and what the result means
 // (support-free or not, improved or not, cancelled).
 //
@@ -74,6 +74,8 @@ class SearchPanel : public QWidget {
 
  private:
   void setRunning(bool running);
+  // Beam width and scales mean something to the beam scheme only: editable when it is chosen and no search runs.
+  void updateBeamOnlyControls();
   void showNotice(const QString& text, bool warning);
   void updateProgressText();
   void resetReadout();
@@ -81,6 +83,9 @@ class SearchPanel : public QWidget {
   QComboBox* m_scheme = nullptr;
   QSpinBox* m_beamWidth = nullptr;
   QDoubleSpinBox* m_minVolumeDivisor = nullptr;
+  QSpinBox* m_volumeScales = nullptr;
+  QLabel* m_beamWidthLabel = nullptr;
+  QLabel* m_volumeScalesLabel = nullptr;
   QSpinBox* m_normals = nullptr;
   QDoubleSpinBox* m_offsetStep = nullptr;
   QDoubleSpinBox* m_alpha = nullptr;

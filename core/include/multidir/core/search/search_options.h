@@ -28,7 +28,7 @@ struct SearchOptions {
   // own, and 40 took the median of the nine shared models from 4.4 % to 1.8 % of J_G before (bench/). Regions
   // that do not pay for themselves are removed after the search (minPlaneGain*).
   double minVolumeDivisor = 40.0;
-  // The beam search runs at this many region scales, w, 2w, 4w, ..., one after the other, each with
+  // The beam search runs at this many region scales, w, 2w, 4w, ..., side by side, each with
   // beamWidth / volumeScales beams (rounded up), and keeps the best plan of all. No single w suits every
   // model: a knight's mane and ears are printed risk-free only from regions near V/80, while at V/80 a
   // bunny's beam spends its levels on small cuts and ends worse than at V/40 (bench/, docs/search.md).
