@@ -3249,192 +3249,202 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="61"/>
+        <source>Beam search only: runs at this many region scales side by side, the smallest region V/w, V/2w, V/4w, ..., the beam width shared among them, and keeps the best plan. No single w suits every model. 1: one beam search at w</source>
+        <translation>Nur Strahlsuche: läuft nebeneinander auf so vielen Regionsskalen (kleinste Region V/w, V/2w, V/4w, ...), teilt die Strahlbreite unter ihnen auf und behält den besten Plan. Kein einzelnes w passt zu jedem Modell. 1: eine Strahlsuche bei w</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="68"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>Kandidatennormalen, auf der ganzen Kugel abgetastet (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="66"/>
-        <location filename="../ui/panels/search_panel.cpp" line="80"/>
+        <location filename="../ui/panels/search_panel.cpp" line="73"/>
+        <location filename="../ui/panels/search_panel.cpp" line="87"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="68"/>
+        <location filename="../ui/panels/search_panel.cpp" line="75"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>Abstand der Kandidatenebenen entlang jeder Normalen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="73"/>
+        <location filename="../ui/panels/search_panel.cpp" line="80"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="75"/>
+        <location filename="../ui/panels/search_panel.cpp" line="82"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>Größter selbsttragender Winkel, mit dem die Suche plant</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="89"/>
         <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
         <translation>Kein Bereich, auch nicht der auf der Plattform, ist entlang seiner Druckrichtung dünner als dieser Wert</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="88"/>
+        <location filename="../ui/panels/search_panel.cpp" line="95"/>
         <source> % of J_G</source>
         <translation> % von J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="90"/>
+        <location filename="../ui/panels/search_panel.cpp" line="97"/>
         <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
         <translation>Eine Ebene bleibt nur, wenn ihr Entfernen J_G um mindestens diesen Anteil des vorherigen J_G (und um mindestens 1 mm²) erhöhen würde: jeder Bereich kostet eine Plattformbewegung und eine Naht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="96"/>
+        <location filename="../ui/panels/search_panel.cpp" line="103"/>
         <source>machine&apos;s axis only</source>
         <translation>nur Achse der Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="97"/>
+        <location filename="../ui/panels/search_panel.cpp" line="104"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4-DOF: zusätzlich so viele über 180° verteilte Drehachsen probieren und die beste behalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="100"/>
+        <location filename="../ui/panels/search_panel.cpp" line="107"/>
         <source>Scheme:</source>
         <translation>Verfahren:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="101"/>
+        <location filename="../ui/panels/search_panel.cpp" line="108"/>
         <source>Beam width:</source>
         <translation>Strahlbreite:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="102"/>
+        <location filename="../ui/panels/search_panel.cpp" line="110"/>
         <source>Volume divisor w:</source>
         <translation>Volumenteiler w:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="103"/>
+        <location filename="../ui/panels/search_panel.cpp" line="111"/>
+        <source>Scales:</source>
+        <translation>Skalen:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="113"/>
         <source>Normals:</source>
         <translation>Normalen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="104"/>
+        <location filename="../ui/panels/search_panel.cpp" line="114"/>
         <source>Offset step:</source>
         <translation>Versatzschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="105"/>
+        <location filename="../ui/panels/search_panel.cpp" line="115"/>
         <source>Max. overhang angle α:</source>
         <translation>Max. Überhangwinkel α:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <location filename="../ui/panels/search_panel.cpp" line="116"/>
         <source>Min. region height:</source>
         <translation>Min. Bereichshöhe:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <location filename="../ui/panels/search_panel.cpp" line="117"/>
         <source>Min. gain per plane:</source>
         <translation>Min. Gewinn je Ebene:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="108"/>
+        <location filename="../ui/panels/search_panel.cpp" line="118"/>
         <source>Axes to try:</source>
         <translation>Zu probierende Achsen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="111"/>
+        <location filename="../ui/panels/search_panel.cpp" line="121"/>
         <source>&amp;Run search</source>
         <translation>Suche &amp;starten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="114"/>
+        <location filename="../ui/panels/search_panel.cpp" line="124"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="138"/>
+        <location filename="../ui/panels/search_panel.cpp" line="149"/>
         <source>Progress</source>
         <translation>Fortschritt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="146"/>
+        <location filename="../ui/panels/search_panel.cpp" line="157"/>
         <source>Level:</source>
         <translation>Stufe:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="147"/>
+        <location filename="../ui/panels/search_panel.cpp" line="158"/>
         <source>Beams alive:</source>
         <translation>Aktive Strahlen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="148"/>
+        <location filename="../ui/panels/search_panel.cpp" line="159"/>
         <source>Best J_G:</source>
         <translation>Bestes J_G:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="149"/>
+        <location filename="../ui/panels/search_panel.cpp" line="160"/>
         <source>Candidates scored:</source>
         <translation>Bewertete Kandidaten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="170"/>
+        <location filename="../ui/panels/search_panel.cpp" line="181"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="217"/>
+        <location filename="../ui/panels/search_panel.cpp" line="230"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>Nach Schnittebenen suchen, mit denen das Modell mit weniger Stützen druckbar wird</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="280"/>
+        <location filename="../ui/panels/search_panel.cpp" line="301"/>
         <source>Cancelling: keeping the best plan so far... %1</source>
         <translation>Abbruch: der bisher beste Plan wird behalten... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="282"/>
+        <location filename="../ui/panels/search_panel.cpp" line="303"/>
         <source>%1 %2 - %3</source>
         <translation>%1 %2 - %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="284"/>
+        <location filename="../ui/panels/search_panel.cpp" line="305"/>
         <source>Level 1 of %1: scoring candidates... %2</source>
         <translation>Stufe 1 von %1: Kandidaten werden bewertet... %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="285"/>
+        <location filename="../ui/panels/search_panel.cpp" line="306"/>
         <source>Scoring candidates... %1</source>
         <translation>Kandidaten werden bewertet... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <location filename="../ui/panels/search_panel.cpp" line="309"/>
         <source>Level %1 of %2</source>
         <translation>Stufe %1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <location filename="../ui/panels/search_panel.cpp" line="309"/>
         <source>Level %1</source>
         <translation>Ebene %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="289"/>
+        <location filename="../ui/panels/search_panel.cpp" line="310"/>
         <source>Axis %1 of %2, %3</source>
         <translation>Achse %1 von %2, %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="290"/>
+        <location filename="../ui/panels/search_panel.cpp" line="311"/>
         <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
         <translation>%1 · aktive Strahlen: %2 · bestes J_G %3 mm² · %4 Kandidaten · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="329"/>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
         <translation>Die Suche lief auf einer vereinfachten Kopie mit %1 Flächen; ihre Ebenen schneiden danach das vollständige Modell, und alle angezeigten Zahlen beziehen sich auf das vollständige Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="371"/>
         <source>Stopped</source>
         <translation>Angehalten</translation>
     </message>
@@ -3443,14 +3453,14 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation type="vanished">Starte...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="241"/>
-        <location filename="../ui/panels/search_panel.cpp" line="269"/>
-        <location filename="../ui/panels/search_panel.cpp" line="308"/>
+        <location filename="../ui/panels/search_panel.cpp" line="262"/>
+        <location filename="../ui/panels/search_panel.cpp" line="290"/>
+        <location filename="../ui/panels/search_panel.cpp" line="329"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="266"/>
+        <location filename="../ui/panels/search_panel.cpp" line="287"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1 (Achse %2 von %3)</translation>
     </message>
@@ -3459,27 +3469,27 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation type="vanished">Abbruch: der bisher beste Plan wird behalten...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="307"/>
+        <location filename="../ui/panels/search_panel.cpp" line="328"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="307"/>
+        <location filename="../ui/panels/search_panel.cpp" line="328"/>
         <source>Done</source>
         <translation>Fertig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="313"/>
+        <location filename="../ui/panels/search_panel.cpp" line="334"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>Abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="317"/>
+        <location filename="../ui/panels/search_panel.cpp" line="338"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>Keine Verbesserung: keine Schnittebene verringert die Risikofläche (J_G bleibt %1 mm²). Versuchen Sie mehr Normalen, einen kleineren Versatzschritt, ein größeres w oder eine andere Maschine.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="322"/>
+        <location filename="../ui/panels/search_panel.cpp" line="343"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>Nicht stützenfrei: %1 mm² brauchen noch Stützen (vorher %2 mm²), in %n Bereich.</numerusform>
@@ -3487,7 +3497,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="326"/>
+        <location filename="../ui/panels/search_panel.cpp" line="347"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>Stützenfrei in %n Bereich (J_G war %1 mm²).</numerusform>
@@ -3495,12 +3505,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="342"/>
+        <location filename="../ui/panels/search_panel.cpp" line="363"/>
         <source>Failed</source>
         <translation>Fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <location filename="../ui/panels/search_panel.cpp" line="364"/>
         <source>%1
 %2</source>
         <translation>%1

@@ -3244,192 +3244,202 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="61"/>
+        <source>Beam search only: runs at this many region scales side by side, the smallest region V/w, V/2w, V/4w, ..., the beam width shared among them, and keeps the best plan. No single w suits every model. 1: one beam search at w</source>
+        <translation>仅限束搜索：在这么多个区域尺度上并行运行（最小区域为 V/w、V/2w、V/4w……），束宽在它们之间分配，保留最佳方案。没有一个 w 适合所有模型。1：在 w 上进行一次束搜索</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="68"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>在整个球面上采样的候选法向（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="66"/>
-        <location filename="../ui/panels/search_panel.cpp" line="80"/>
+        <location filename="../ui/panels/search_panel.cpp" line="73"/>
+        <location filename="../ui/panels/search_panel.cpp" line="87"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="68"/>
+        <location filename="../ui/panels/search_panel.cpp" line="75"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>沿每个法向的候选平面间距</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="73"/>
+        <location filename="../ui/panels/search_panel.cpp" line="80"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="75"/>
+        <location filename="../ui/panels/search_panel.cpp" line="82"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>搜索所依据的最大自支撑角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="89"/>
         <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
         <translation>任何区域（包括平台上的区域）沿其打印方向的厚度都不小于此值</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="88"/>
+        <location filename="../ui/panels/search_panel.cpp" line="95"/>
         <source> % of J_G</source>
         <translation> % 的 J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="90"/>
+        <location filename="../ui/panels/search_panel.cpp" line="97"/>
         <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
         <translation>仅当移除某个平面会使 J_G 至少增加移除前 J_G 的这一比例（且至少 1 mm²）时，才保留该平面：每个区域都需要一次平台移动并产生一条接缝</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="96"/>
+        <location filename="../ui/panels/search_panel.cpp" line="103"/>
         <source>machine&apos;s axis only</source>
         <translation>仅机器自身的轴</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="97"/>
+        <location filename="../ui/panels/search_panel.cpp" line="104"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4 自由度：另外尝试这么多分布在 180° 内的旋转轴，并保留最佳的</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="100"/>
+        <location filename="../ui/panels/search_panel.cpp" line="107"/>
         <source>Scheme:</source>
         <translation>方案类型：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="101"/>
+        <location filename="../ui/panels/search_panel.cpp" line="108"/>
         <source>Beam width:</source>
         <translation>束宽：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="102"/>
+        <location filename="../ui/panels/search_panel.cpp" line="110"/>
         <source>Volume divisor w:</source>
         <translation>体积除数 w：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="103"/>
+        <location filename="../ui/panels/search_panel.cpp" line="111"/>
+        <source>Scales:</source>
+        <translation>尺度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="113"/>
         <source>Normals:</source>
         <translation>法向数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="104"/>
+        <location filename="../ui/panels/search_panel.cpp" line="114"/>
         <source>Offset step:</source>
         <translation>偏移步长：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="105"/>
+        <location filename="../ui/panels/search_panel.cpp" line="115"/>
         <source>Max. overhang angle α:</source>
         <translation>最大悬垂角 α：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <location filename="../ui/panels/search_panel.cpp" line="116"/>
         <source>Min. region height:</source>
         <translation>最小区域高度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <location filename="../ui/panels/search_panel.cpp" line="117"/>
         <source>Min. gain per plane:</source>
         <translation>每个平面的最小增益：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="108"/>
+        <location filename="../ui/panels/search_panel.cpp" line="118"/>
         <source>Axes to try:</source>
         <translation>尝试的轴数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="111"/>
+        <location filename="../ui/panels/search_panel.cpp" line="121"/>
         <source>&amp;Run search</source>
         <translation>运行搜索(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="114"/>
+        <location filename="../ui/panels/search_panel.cpp" line="124"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="138"/>
+        <location filename="../ui/panels/search_panel.cpp" line="149"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="146"/>
+        <location filename="../ui/panels/search_panel.cpp" line="157"/>
         <source>Level:</source>
         <translation>层级：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="147"/>
+        <location filename="../ui/panels/search_panel.cpp" line="158"/>
         <source>Beams alive:</source>
         <translation>存活束：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="148"/>
+        <location filename="../ui/panels/search_panel.cpp" line="159"/>
         <source>Best J_G:</source>
         <translation>最佳 J_G：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="149"/>
+        <location filename="../ui/panels/search_panel.cpp" line="160"/>
         <source>Candidates scored:</source>
         <translation>已评估候选：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="170"/>
+        <location filename="../ui/panels/search_panel.cpp" line="181"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="217"/>
+        <location filename="../ui/panels/search_panel.cpp" line="230"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>搜索能让模型以更少支撑打印的切割平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="280"/>
+        <location filename="../ui/panels/search_panel.cpp" line="301"/>
         <source>Cancelling: keeping the best plan so far... %1</source>
         <translation>正在取消：保留目前的最佳方案... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="282"/>
+        <location filename="../ui/panels/search_panel.cpp" line="303"/>
         <source>%1 %2 - %3</source>
         <translation>%1 %2 - %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="284"/>
+        <location filename="../ui/panels/search_panel.cpp" line="305"/>
         <source>Level 1 of %1: scoring candidates... %2</source>
         <translation>层级 1 / %1：正在评估候选... %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="285"/>
+        <location filename="../ui/panels/search_panel.cpp" line="306"/>
         <source>Scoring candidates... %1</source>
         <translation>正在评估候选... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <location filename="../ui/panels/search_panel.cpp" line="309"/>
         <source>Level %1 of %2</source>
         <translation>层级 %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="288"/>
+        <location filename="../ui/panels/search_panel.cpp" line="309"/>
         <source>Level %1</source>
         <translation>层级 %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="289"/>
+        <location filename="../ui/panels/search_panel.cpp" line="310"/>
         <source>Axis %1 of %2, %3</source>
         <translation>第 %1 / %2 个轴，%3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="290"/>
+        <location filename="../ui/panels/search_panel.cpp" line="311"/>
         <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
         <translation>%1 · 存活束：%2 · 最佳 J_G %3 mm² · %4 个候选 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="329"/>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
         <translation>搜索在有 %1 个面的简化副本上进行；随后用其平面切割完整模型，显示的所有数值均针对完整模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="371"/>
         <source>Stopped</source>
         <translation>已停止</translation>
     </message>
@@ -3438,14 +3448,14 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation type="vanished">正在启动...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="241"/>
-        <location filename="../ui/panels/search_panel.cpp" line="269"/>
-        <location filename="../ui/panels/search_panel.cpp" line="308"/>
+        <location filename="../ui/panels/search_panel.cpp" line="262"/>
+        <location filename="../ui/panels/search_panel.cpp" line="290"/>
+        <location filename="../ui/panels/search_panel.cpp" line="329"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="266"/>
+        <location filename="../ui/panels/search_panel.cpp" line="287"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1（第 %2 / %3 个轴）</translation>
     </message>
@@ -3454,46 +3464,46 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation type="vanished">正在取消：保留目前的最佳方案...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="307"/>
+        <location filename="../ui/panels/search_panel.cpp" line="328"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="307"/>
+        <location filename="../ui/panels/search_panel.cpp" line="328"/>
         <source>Done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="313"/>
+        <location filename="../ui/panels/search_panel.cpp" line="334"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="317"/>
+        <location filename="../ui/panels/search_panel.cpp" line="338"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>没有改进：没有切割平面能减少风险面积（J_G 仍为 %1 mm²）。请尝试更多法向、更小的偏移步长、更大的 w 或其他机器。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="322"/>
+        <location filename="../ui/panels/search_panel.cpp" line="343"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>并非无支撑：仍有 %1 mm² 需要支撑（原为 %2 mm²），共 %n 个区域。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="326"/>
+        <location filename="../ui/panels/search_panel.cpp" line="347"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>分为 %n 个区域后无需支撑（J_G 原为 %1 mm²）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="342"/>
+        <location filename="../ui/panels/search_panel.cpp" line="363"/>
         <source>Failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <location filename="../ui/panels/search_panel.cpp" line="364"/>
         <source>%1
 %2</source>
         <translation>%1
