@@ -18,6 +18,19 @@
     </message>
 </context>
 <context>
+    <name>DeviceReading</name>
+    <message>
+        <location filename="../ui/device/device_reading.cpp" line="15"/>
+        <source>unknown: not read yet</source>
+        <translation>unbekannt: noch nicht gelesen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_reading.cpp" line="18"/>
+        <source>unknown since %1 (last read: %2)</source>
+        <translation>unbekannt seit %1 (zuletzt gelesen: %2)</translation>
+    </message>
+</context>
+<context>
     <name>GcodeExport</name>
     <message>
         <location filename="../ui/slicing/gcode_export.cpp" line="22"/>
@@ -431,7 +444,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="595"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="576"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
@@ -552,537 +565,515 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="65"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="67"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
         <source>Reconnecting…</source>
         <translation>Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
         <source>Connecting…</source>
         <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="70"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="73"/>
         <source>Fault</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="81"/>
         <source>idle</source>
         <translation>im Leerlauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="83"/>
         <source>turning the platform</source>
         <translation>Plattform wird gedreht</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="85"/>
         <source>settling</source>
         <translation>Beruhigungszeit</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="87"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="89"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="91"/>
         <source>finished</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="93"/>
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="95"/>
         <source>stopped by a device problem</source>
         <translation>durch ein Geräteproblem angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="101"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
         <source>angle %1</source>
         <translation>Winkel %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="103"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
         <source>tilt %1, azimuth %2</source>
         <translation>Neigung %1, Azimut %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="111"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>„Fehler löschen“, dann „Aktivieren“ und „Referenzfahrt“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="113"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>„Fehler löschen“; danach nimmt das Roboterprogramm wieder Fahrbefehle an</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="210"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="217"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="213"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="218"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="215"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>Schließt die Verbindung, ohne dem Gerät einen Befehl zu senden; sein Heartbeat-Watchdog hält es an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="233"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="242"/>
         <source>Enabled:</source>
         <translation>Aktiviert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="243"/>
         <source>Position:</source>
         <translation>Position:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
         <source>Moving:</source>
         <translation>In Bewegung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
         <source>Homed:</source>
         <translation>Referenziert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="250"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
         <source>Fault:</source>
         <translation>Fehler:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
         <source>Heartbeat:</source>
         <translation>Heartbeat:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
         <source>Last problem:</source>
         <translation>Letztes Problem:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Controls</source>
         <translation>Steuerung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Enable</source>
         <translation>Aktivieren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>Schaltet den Antrieb der Plattform ein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="259"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
         <source>Home</source>
         <translation>Referenzfahrt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>Drehplattform: sucht den Referenzschalter (0°). Roboterarm: richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="261"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
         <source>Clear fault</source>
         <translation>Fehler löschen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>Setzt das Gerät nach einem Fehler oder NOT-HALT zurück; danach erneut aktivieren und referenzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
         <source>Tilt</source>
         <translation>Neigung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
         <source>Azimuth</source>
         <translation>Azimut</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="268"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
         <source>Jog −</source>
         <translation>Tippen −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
         <source>Jog +</source>
         <translation>Tippen +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
         <source>Angle:</source>
         <translation>Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="270"/>
         <source>Tilt:</source>
         <translation>Neigung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="275"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
         <source>Azimuth:</source>
         <translation>Azimut:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="276"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
         <source>Go to</source>
         <translation>Anfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>Bremst ab und hält an; verwirft wartende Befehle.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="307"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="328"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="303"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="324"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
         <translation>Drücken, sobald der angeforderte Bereich gedruckt ist (nur beim Drucken von Hand: bei einem Bereich, den der verbundene Drucker druckt, geht es von selbst weiter).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
         <source>the platform</source>
         <translation>die Plattform</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="449"/>
         <source>the printer</source>
         <translation>den Drucker</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="455"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="451"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
         <translation>NOT-HALT an %1 gesendet. Zum Fortfahren: %2%3.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="456"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
         <source> and </source>
         <translation> und </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="457"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
         <translation>; beim Drucker „Drucker-NOT-HALT aufheben“ und seine Firmware neu starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="468"/>
         <source>Platform: stop confirmed by the device.</source>
         <translation>Plattform: Halt vom Gerät bestätigt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="469"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
         <translation>Plattform: Halt noch nicht bestätigt; MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="478"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="474"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
         <translation>Drucker: Not-Halt vom Drucker bestätigt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
         <translation>Drucker: Not-Halt noch nicht bestätigt (%1); MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="613"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (%2) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
     </message>
     <message>
-        <source>Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards.</source>
-        <translation type="vanished">Not-Halt: unterbricht die Bewegung sofort. Danach den Fehler löschen, erneut aktivieren und referenzieren.</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
         <source>Jog step:</source>
         <translation>Tippschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="338"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
         <source>Print run</source>
         <translation>Drucklauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="340"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="689"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="336"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="670"/>
         <source>Start run</source>
         <translation>Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="341"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="337"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>Dreht die Plattform in Druckreihenfolge in die Ausrichtung jedes Bereichs und fordert dazu auf, jeden Bereich zu drucken.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
         <source>Region done</source>
         <translation>Bereich fertig</translation>
     </message>
     <message>
-        <source>Press when the region asked for has been printed.</source>
-        <translation type="vanished">Drücken, sobald der angeforderte Bereich gedruckt ist.</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="353"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="383"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="349"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="354"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="384"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="380"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>Setzt einen pausierten Lauf fort oder wiederholt nach einem Geräteproblem den aktuellen Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="352"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="381"/>
         <source>Abort</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="366"/>
         <source>Step:</source>
         <translation>Schritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="367"/>
         <source>Elapsed:</source>
         <translation>Verstrichen:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="398"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>Die Verbindung zu %1 ist um %2 abgerissen. Die Werte unten stammen nicht mehr vom Gerät; MultiDir versucht weiter, die Verbindung wiederherzustellen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="406"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>Der Drucklauf ist pausiert: ein Bereich, der gerade gedruckt wird, darf fertig werden, aber kein neuer Bereich beginnt. Drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="409"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="405"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 antwortet nicht: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>Die Verbindung steht wieder. Der Drucklauf ist seit dem Verbindungsabbruch weiterhin pausiert: prüfen Sie die Plattform und drücken Sie dann „Fortsetzen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="514"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>Mit diesen Einstellungen ist keine Verbindung möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="522"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="531"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="527"/>
         <source>Disconnected.</source>
         <translation>Getrennt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="537"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="543"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>Verbindung um %1 abgerissen; Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
         <source>no: press Enable</source>
         <translation>nein: drücken Sie „Aktivieren“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="550"/>
         <source>%1 (target %2)</source>
         <translation>%1 (Ziel %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
         <source>homing</source>
         <translation>Referenzfahrt läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
         <location filename="../ui/device/hardware_panel.cpp" line="555"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
         <location filename="../ui/device/hardware_panel.cpp" line="555"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
         <source>not needed (robot arm)</source>
         <translation>nicht nötig (Roboterarm)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="562"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="582"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="571"/>
-        <source>unknown: not read yet</source>
-        <translation>unbekannt: noch nicht gelesen</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="574"/>
-        <source>unknown since %1 (last read: %2)</source>
-        <translation>unbekannt seit %1 (zuletzt gelesen: %2)</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="577"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1: an das Gerät gesendet. Zum Weitermachen: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
         <source>%1: sent to the device.</source>
         <translation>%1: an das Gerät gesendet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="604"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="585"/>
         <source>Connected to %1.</source>
         <translation>Verbunden mit %1.</translation>
     </message>
     <message>
-        <source>The print run stopped: %1. Fix the device (Clear fault, Enable, Home), then press Resume to retry this step, or Abort.</source>
-        <translation type="vanished">Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (Fehler löschen, Aktivieren, Referenzfahrt) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="617"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>Der Drucklauf ist abgeschlossen: jeder Bereich wurde gedruckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>The print run was aborted.</source>
         <translation>Der Drucklauf wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="629"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="610"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
         <translation>Bereich %1 wird von %2 gedruckt (%3); der Lauf geht weiter, sobald der Drucker ihn als fertig meldet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="634"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="615"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>Drucken Sie Bereich %1 (Datei %2) und drücken Sie dann „Bereich fertig“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="642"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>„Lauf starten“ abgelehnt: nicht verbunden; verbinden Sie zuerst das Gerät.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="668"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
         <source>Start run refused: %1</source>
         <translation>„Lauf starten“ abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="673"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
         <translation>Für den Plan gibt es kein Slicing-Ergebnis: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan, damit der Drucker die Bereiche druckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="694"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="675"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
         <translation>Das Slicing-Ergebnis hat %1 Schritte, der Plan %2 Bereiche: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
         <source>%1 refused: %2</source>
         <translation>%1 abgelehnt: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>Grenzen: %1 bis %2 in Schritten von %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="704"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>Grenzen: Neigung bis %1, %n verbotener Kegel</numerusform>
@@ -1090,77 +1081,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="726"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
         <source> (machine profile)</source>
         <translation> (Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="728"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation> (Standardwerte: das Maschinenprofil gilt für eine %1-Maschine)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="712"/>
         <source> (defaults: no machine profile)</source>
         <translation> (Standardwerte: kein Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="732"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="713"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>; ein geändertes Profil gilt ab dem nächsten Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>Not-Halt: schaltet die Endstufe der Plattform sofort ab. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="733"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>Not-Halt: hält das Roboterprogramm mit größter Verzögerung an. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="757"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="738"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>Setzt die Plattform nach einem Fehler oder NOT-HALT zurück; danach erneut „Aktivieren“ und „Referenzfahrt“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="739"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>Setzt das Roboterprogramm nach einem Fehler oder NOT-HALT zurück; danach nimmt es wieder Fahrbefehle an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="760"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>Sucht den Referenzschalter (0°); der Antrieb muss aktiviert sein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="761"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="742"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>Richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="809"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="790"/>
         <source>unknown since %1</source>
         <translation>unbekannt seit %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="811"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="792"/>
         <source>not seen yet</source>
         <translation>noch nicht empfangen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="814"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="795"/>
         <source>%1 s ago</source>
         <translation>vor %1 s</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="823"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>Kein Plan: starten Sie zuerst eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="824"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="805"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>Plan mit %n Bereich.</numerusform>
@@ -1168,12 +1159,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="826"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
         <translation>Slicing-Ergebnis vorhanden: ein verbundener Drucker druckt den G-Code jedes Bereichs.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="834"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="815"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>%n Bereich gedruckt: abgeschlossen</numerusform>
@@ -1181,17 +1172,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="836"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
         <source>%1 of %2: %3</source>
         <translation>%1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="838"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
         <source> (%1, %2)</source>
         <translation> (%1, %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="839"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="820"/>
         <source>; pausing after this region</source>
         <translation>; Pause nach diesem Bereich</translation>
     </message>
@@ -1212,72 +1203,72 @@
 <context>
     <name>multidir::ui::JobTimeline</name>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Region</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>State</source>
         <translation>Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Started</source>
         <translation>Beginn</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Ended</source>
         <translation>Ende</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="131"/>
+        <location filename="../ui/device/job_timeline.cpp" line="133"/>
         <source>waiting</source>
         <translation>wartend</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="133"/>
+        <location filename="../ui/device/job_timeline.cpp" line="135"/>
         <source>moving</source>
         <translation>in Bewegung</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="135"/>
+        <location filename="../ui/device/job_timeline.cpp" line="137"/>
         <source>settling</source>
         <translation>Beruhigungszeit</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="137"/>
+        <location filename="../ui/device/job_timeline.cpp" line="139"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="139"/>
+        <location filename="../ui/device/job_timeline.cpp" line="141"/>
         <source>done</source>
         <translation>fertig</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="141"/>
+        <location filename="../ui/device/job_timeline.cpp" line="143"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="143"/>
+        <location filename="../ui/device/job_timeline.cpp" line="145"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="145"/>
+        <location filename="../ui/device/job_timeline.cpp" line="147"/>
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="155"/>
+        <location filename="../ui/device/job_timeline.cpp" line="157"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1418,18 +1409,6 @@
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <source>Open a mesh file (STL, OBJ, OFF or PLY)</source>
-        <translation type="vanished">Eine Netzdatei öffnen (STL, OBJ, OFF oder PLY)</translation>
-    </message>
-    <message>
-        <source>&amp;Samples</source>
-        <translation type="vanished">&amp;Beispiele</translation>
-    </message>
-    <message>
-        <source>Open &amp;plan...</source>
-        <translation type="vanished">&amp;Plan öffnen...</translation>
-    </message>
-    <message>
         <location filename="../ui/main_window.cpp" line="135"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>Einen früher gespeicherten Plan anzeigen (ein Ordner mit plan.json)</translation>
@@ -1448,10 +1427,6 @@
         <location filename="../ui/main_window.cpp" line="149"/>
         <source>&amp;Load machine profile...</source>
         <translation>Maschinenprofil &amp;laden...</translation>
-    </message>
-    <message>
-        <source>&amp;Save machine profile...</source>
-        <translation type="vanished">Maschinenprofil &amp;speichern...</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="154"/>
@@ -1559,21 +1534,9 @@
         <translation>-Z</translation>
     </message>
     <message>
-        <source>Open Model</source>
-        <translation type="vanished">Modell öffnen</translation>
-    </message>
-    <message>
-        <source>Meshes (*.stl *.obj *.off *.ply);;All files (*)</source>
-        <translation type="vanished">Netze (*.stl *.obj *.off *.ply);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <location filename="../ui/main_window.cpp" line="120"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>Eine Netzdatei (STL, OBJ, OFF oder PLY) oder ein MultiDir-Projekt öffnen</translation>
-    </message>
-    <message>
-        <source>Export Sc&amp;reenshot...</source>
-        <translation type="vanished">Bildschirmfoto expo&amp;rtieren...</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="147"/>
@@ -2140,18 +2103,6 @@ Qt %1</translation>
 </context>
 <context>
     <name>multidir::ui::PlanEvaluationJob</name>
-    <message>
-        <source>The supports could not be grown: %1 (%2)</source>
-        <translation type="vanished">Die Stützen konnten nicht erzeugt werden: %1 (%2)</translation>
-    </message>
-    <message>
-        <source>Not enough memory to grow the supports: the plan is shown without them.</source>
-        <translation type="vanished">Nicht genug Speicher, um die Stützen zu erzeugen: der Plan wird ohne sie angezeigt.</translation>
-    </message>
-    <message>
-        <source>Unexpected error while growing the supports.</source>
-        <translation type="vanished">Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
-    </message>
 </context>
 <context>
     <name>multidir::ui::PlanPanel</name>
@@ -2623,290 +2574,280 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::PrinterSection</name>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="47"/>
+        <location filename="../ui/device/printer_section.cpp" line="44"/>
         <source>%1 °C (off)</source>
         <translation>%1 °C (aus)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="48"/>
+        <location filename="../ui/device/printer_section.cpp" line="45"/>
         <source>%1 / %2 °C</source>
         <translation>%1 / %2 °C</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="55"/>
-        <location filename="../ui/device/printer_section.cpp" line="253"/>
+        <location filename="../ui/device/printer_section.cpp" line="52"/>
+        <location filename="../ui/device/printer_section.cpp" line="250"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="57"/>
+        <location filename="../ui/device/printer_section.cpp" line="54"/>
         <source>standby (no job)</source>
         <translation>Bereitschaft (kein Auftrag)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="59"/>
+        <location filename="../ui/device/printer_section.cpp" line="56"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="61"/>
+        <location filename="../ui/device/printer_section.cpp" line="58"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="63"/>
+        <location filename="../ui/device/printer_section.cpp" line="60"/>
         <source>complete</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="65"/>
+        <location filename="../ui/device/printer_section.cpp" line="62"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="67"/>
+        <location filename="../ui/device/printer_section.cpp" line="64"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="77"/>
+        <location filename="../ui/device/printer_section.cpp" line="74"/>
         <source>Printer</source>
         <translation>Drucker</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="81"/>
+        <location filename="../ui/device/printer_section.cpp" line="78"/>
         <source>http://192.168.0.20:7125</source>
         <translation>http://192.168.0.20:7125</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="82"/>
+        <location filename="../ui/device/printer_section.cpp" line="79"/>
         <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
         <translation>Die Adresse des Druckers: Moonraker (Klipper) als http://HOST:PORT oder HOST:PORT (Port 7125).</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="86"/>
-        <location filename="../ui/device/printer_section.cpp" line="257"/>
-        <location filename="../ui/device/printer_section.cpp" line="280"/>
+        <location filename="../ui/device/printer_section.cpp" line="83"/>
+        <location filename="../ui/device/printer_section.cpp" line="254"/>
+        <location filename="../ui/device/printer_section.cpp" line="263"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="87"/>
+        <location filename="../ui/device/printer_section.cpp" line="84"/>
         <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
         <translation>Nur, wenn der Drucker einen verlangt (Moonraker-Abschnitt [authorization]). Wird nicht gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="88"/>
+        <location filename="../ui/device/printer_section.cpp" line="85"/>
         <source>Connect printer</source>
         <translation>Drucker verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="89"/>
+        <location filename="../ui/device/printer_section.cpp" line="86"/>
         <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
         <translation>Verbindet mit dem Drucker; ein Drucklauf sendet ihm dann den G-Code jedes Bereichs.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="90"/>
+        <location filename="../ui/device/printer_section.cpp" line="87"/>
         <source>Disconnect printer</source>
         <translation>Drucker trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="91"/>
+        <location filename="../ui/device/printer_section.cpp" line="88"/>
         <source>Closes the link without commanding the printer: a job on it goes on.</source>
         <translation>Schließt die Verbindung, ohne dem Drucker einen Befehl zu senden: ein Auftrag auf ihm läuft weiter.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="92"/>
+        <location filename="../ui/device/printer_section.cpp" line="89"/>
         <source>Clear printer E-STOP</source>
         <translation>Drucker-NOT-HALT aufheben</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="93"/>
+        <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
         <translation>Lässt wieder Aufträge zu, sobald der Drucker den Not-Halt bestätigt hat. Ein Klipper-Drucker braucht zusätzlich FIRMWARE_RESTART auf seiner Konsole.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="110"/>
+        <location filename="../ui/device/printer_section.cpp" line="107"/>
         <source>Address:</source>
         <translation>Adresse:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="111"/>
+        <location filename="../ui/device/printer_section.cpp" line="108"/>
         <source>API key:</source>
         <translation>API-Schlüssel:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="116"/>
+        <location filename="../ui/device/printer_section.cpp" line="113"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="117"/>
+        <location filename="../ui/device/printer_section.cpp" line="114"/>
         <source>Job:</source>
         <translation>Auftrag:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="118"/>
+        <location filename="../ui/device/printer_section.cpp" line="115"/>
         <source>Firmware:</source>
         <translation>Firmware:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="119"/>
+        <location filename="../ui/device/printer_section.cpp" line="116"/>
         <source>Printer says:</source>
         <translation>Meldung des Druckers:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="120"/>
+        <location filename="../ui/device/printer_section.cpp" line="117"/>
         <source>Extruder:</source>
         <translation>Extruder:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="121"/>
+        <location filename="../ui/device/printer_section.cpp" line="118"/>
         <source>Bed:</source>
         <translation>Druckbett:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="122"/>
+        <location filename="../ui/device/printer_section.cpp" line="119"/>
         <source>File:</source>
         <translation>Datei:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="123"/>
+        <location filename="../ui/device/printer_section.cpp" line="120"/>
         <source>Progress:</source>
         <translation>Fortschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="124"/>
+        <location filename="../ui/device/printer_section.cpp" line="121"/>
         <source>Job time left:</source>
         <translation>Restzeit des Auftrags:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="125"/>
+        <location filename="../ui/device/printer_section.cpp" line="122"/>
         <source>Last problem:</source>
         <translation>Letztes Problem:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="140"/>
+        <location filename="../ui/device/printer_section.cpp" line="137"/>
         <source>Connected to %1.</source>
         <translation>Verbunden mit %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="158"/>
+        <location filename="../ui/device/printer_section.cpp" line="155"/>
         <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
         <translation>Die Verbindung zu %1 ist um %2 abgerissen: die Werte stammen nicht mehr vom Drucker, und er druckt möglicherweise noch. MultiDir versucht es weiter.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="174"/>
+        <location filename="../ui/device/printer_section.cpp" line="171"/>
         <source>Cannot connect to the printer: %1</source>
         <translation>Keine Verbindung zum Drucker möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="178"/>
+        <location filename="../ui/device/printer_section.cpp" line="175"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="183"/>
+        <location filename="../ui/device/printer_section.cpp" line="180"/>
         <source>Printer disconnected.</source>
         <translation>Drucker getrennt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="189"/>
+        <location filename="../ui/device/printer_section.cpp" line="186"/>
         <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
         <translation>Drucker-NOT-HALT aufgehoben. Ein Klipper-Drucker braucht vor seinem nächsten Auftrag FIRMWARE_RESTART.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="191"/>
+        <location filename="../ui/device/printer_section.cpp" line="188"/>
         <source>Clear printer E-STOP refused: %1</source>
         <translation>„Drucker-NOT-HALT aufheben“ abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="210"/>
+        <location filename="../ui/device/printer_section.cpp" line="207"/>
         <source>step %1 of %2: %3</source>
         <translation>Schritt %1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="213"/>
+        <location filename="../ui/device/printer_section.cpp" line="210"/>
         <source>not started</source>
         <translation>nicht begonnen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="216"/>
+        <location filename="../ui/device/printer_section.cpp" line="213"/>
         <source>%1 of %2 (not a step of this run)</source>
         <translation>%1 von %2 (kein Schritt dieses Laufs)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="222"/>
+        <location filename="../ui/device/printer_section.cpp" line="219"/>
         <source>none: every step is printed</source>
         <translation>keine: alle Schritte sind gedruckt</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="225"/>
+        <location filename="../ui/device/printer_section.cpp" line="222"/>
         <source>no estimate: slice the plan before starting the run</source>
         <translation>keine Schätzung: slicen Sie den Plan, bevor Sie den Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="227"/>
+        <location filename="../ui/device/printer_section.cpp" line="224"/>
         <source>%1 of printing (done about %2; platform moves not counted)</source>
         <translation>%1 Druckzeit (fertig gegen %2; Plattformbewegungen nicht mitgerechnet)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="238"/>
+        <location filename="../ui/device/printer_section.cpp" line="235"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="240"/>
+        <location filename="../ui/device/printer_section.cpp" line="237"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="242"/>
+        <location filename="../ui/device/printer_section.cpp" line="239"/>
         <source>Connecting…</source>
         <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="244"/>
+        <location filename="../ui/device/printer_section.cpp" line="241"/>
         <source>Link lost at %1; MultiDir keeps trying…</source>
         <translation>Verbindung um %1 abgerissen; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="246"/>
+        <location filename="../ui/device/printer_section.cpp" line="243"/>
         <source>Connected to %1</source>
         <translation>Verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="254"/>
+        <location filename="../ui/device/printer_section.cpp" line="251"/>
         <source>nothing</source>
         <translation>nichts</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="264"/>
-        <source>unknown: not read yet</source>
-        <translation>unbekannt: noch nicht gelesen</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/printer_section.cpp" line="267"/>
-        <source>unknown since %1 (last read: %2)</source>
-        <translation>unbekannt seit %1 (zuletzt gelesen: %2)</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/printer_section.cpp" line="300"/>
+        <location filename="../ui/device/printer_section.cpp" line="283"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 antwortet nicht: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="302"/>
+        <location filename="../ui/device/printer_section.cpp" line="285"/>
         <source>The printer&apos;s firmware is %1: %2</source>
         <translation>Die Firmware des Druckers ist im Zustand %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="304"/>
+        <location filename="../ui/device/printer_section.cpp" line="287"/>
         <source>it says nothing more</source>
         <translation>weitere Angaben macht sie nicht</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="306"/>
+        <location filename="../ui/device/printer_section.cpp" line="289"/>
         <source>The print run is paused: %1.</source>
         <translation>Der Drucklauf ist pausiert: %1.</translation>
     </message>
@@ -3449,10 +3390,6 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Angehalten</translation>
     </message>
     <message>
-        <source>Starting...</source>
-        <translation type="vanished">Starte...</translation>
-    </message>
-    <message>
         <location filename="../ui/panels/search_panel.cpp" line="262"/>
         <location filename="../ui/panels/search_panel.cpp" line="290"/>
         <location filename="../ui/panels/search_panel.cpp" line="329"/>
@@ -3463,10 +3400,6 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <location filename="../ui/panels/search_panel.cpp" line="287"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1 (Achse %2 von %3)</translation>
-    </message>
-    <message>
-        <source>Cancelling: keeping the best plan so far...</source>
-        <translation type="vanished">Abbruch: der bisher beste Plan wird behalten...</translation>
     </message>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="328"/>
@@ -3981,10 +3914,6 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Die Suche oder der Plan des Projekts wurde nicht innerhalb von %1 s fertig.</translation>
     </message>
     <message>
-        <source>Mesh file to open (.stl .obj .off .ply). Default: the first sample.</source>
-        <translation type="vanished">Zu öffnende Netzdatei (.stl .obj .off .ply). Standard: das erste Beispiel.</translation>
-    </message>
-    <message>
         <location filename="../ui/studio_startup.cpp" line="85"/>
         <source>[model]</source>
         <translation>[Modell]</translation>
@@ -4023,14 +3952,6 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <location filename="../ui/studio_startup.cpp" line="208"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>Das Modell wurde nicht innerhalb von %1 s fertig geladen.</translation>
-    </message>
-    <message>
-        <source>The search did not finish within %1 s.</source>
-        <translation type="vanished">Die Suche wurde nicht innerhalb von %1 s fertig.</translation>
-    </message>
-    <message>
-        <source>Could not write the screenshot to %1.</source>
-        <translation type="vanished">Das Bildschirmfoto konnte nicht nach %1 geschrieben werden.</translation>
     </message>
     <message>
         <location filename="../ui/studio_startup.cpp" line="230"/>

@@ -18,6 +18,19 @@
     </message>
 </context>
 <context>
+    <name>DeviceReading</name>
+    <message>
+        <location filename="../ui/device/device_reading.cpp" line="15"/>
+        <source>unknown: not read yet</source>
+        <translation>未知：尚未读取</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/device_reading.cpp" line="18"/>
+        <source>unknown since %1 (last read: %2)</source>
+        <translation>自 %1 起未知（上次读取：%2）</translation>
+    </message>
+</context>
+<context>
     <name>GcodeExport</name>
     <message>
         <location filename="../ui/slicing/gcode_export.cpp" line="22"/>
@@ -431,7 +444,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="595"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="576"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
@@ -552,643 +565,621 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="65"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
         <source>Disconnected</source>
         <translation>已断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="67"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
         <source>Reconnecting…</source>
         <translation>正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="70"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
         <source>Connected</source>
         <translation>已连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="73"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="80"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="81"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="82"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="83"/>
         <source>turning the platform</source>
         <translation>正在转动平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="85"/>
         <source>settling</source>
         <translation>正在稳定</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="87"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="89"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="91"/>
         <source>finished</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="93"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="95"/>
         <source>stopped by a device problem</source>
         <translation>因设备问题而停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="101"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
         <source>angle %1</source>
         <translation>角度 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="103"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
         <source>tilt %1, azimuth %2</source>
         <translation>倾斜 %1，方位角 %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="111"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>按“清除故障”，然后按“使能”和“回零”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="113"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>按“清除故障”；之后机器人程序将重新接受运动指令</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="210"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="217"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="213"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="218"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="215"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>关闭链路而不向设备发送命令；设备的心跳看门狗会使其停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="233"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
         <source>Status</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="242"/>
         <source>Enabled:</source>
         <translation>已使能：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="243"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
         <source>Moving:</source>
         <translation>运动中：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
         <source>Homed:</source>
         <translation>已回零：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="250"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
         <source>Fault:</source>
         <translation>故障：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
         <source>Heartbeat:</source>
         <translation>心跳：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
         <source>Last problem:</source>
         <translation>最近的问题：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Controls</source>
         <translation>控制</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Enable</source>
         <translation>使能</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>接通平台的驱动。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="259"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
         <source>Home</source>
         <translation>回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="260"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>旋转平台：寻找原点开关（0°）。机械臂：将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="261"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
         <source>Clear fault</source>
         <translation>清除故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>在故障或急停后复位设备；之后请重新使能并回零。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
         <source>Tilt</source>
         <translation>倾斜</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
         <source>Azimuth</source>
         <translation>方位角</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="268"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
         <source>Jog −</source>
         <translation>点动 −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
         <source>Jog +</source>
         <translation>点动 +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
         <source>Angle:</source>
         <translation>角度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="270"/>
         <source>Tilt:</source>
         <translation>倾斜：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="275"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
         <source>Azimuth:</source>
         <translation>方位角：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="276"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
         <source>Go to</source>
         <translation>前往</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="306"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>减速并停止；取消排队中的命令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="307"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="328"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="303"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="324"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
         <translation>所要求的区域打印完成后按此按钮（仅用于手动打印：由已连接的打印机打印的区域会自动继续）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
         <source>the platform</source>
         <translation>平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="449"/>
         <source>the printer</source>
         <translation>打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="455"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="451"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
         <translation>已向%1发送急停。如需继续：%2%3。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="456"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
         <source> and </source>
         <translation>和</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="457"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
         <translation>；对于打印机，请按“清除打印机急停”并重启其固件</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="472"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="468"/>
         <source>Platform: stop confirmed by the device.</source>
         <translation>平台：设备已确认停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="473"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="469"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
         <translation>平台：尚未确认停止；MultiDir 会持续重发。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="478"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="474"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
         <translation>打印机：打印机已确认急停。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
         <translation>打印机：尚未确认急停（%1）；MultiDir 会持续重发。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="613"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>打印运行已停止：%1。请修复设备（%2），然后按“继续”重试此步骤，或按“中止”。</translation>
     </message>
     <message>
-        <source>Emergency stop: cuts the motion at once. Clear the fault, enable and home again afterwards.</source>
-        <translation type="vanished">急停：立即切断运动。之后请清除故障、重新使能并回零。</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
         <source>Jog step:</source>
         <translation>点动步长：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="338"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
         <source>Print run</source>
         <translation>打印运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="340"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="689"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="336"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="670"/>
         <source>Start run</source>
         <translation>开始运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="341"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="337"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>按打印顺序将平台转到每个区域的方向，并提示打印每个区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="382"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
         <source>Region done</source>
         <translation>区域完成</translation>
     </message>
     <message>
-        <source>Press when the region asked for has been printed.</source>
-        <translation type="vanished">所要求的区域打印完成后按此按钮。</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="353"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="383"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="349"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="354"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="384"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="380"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>继续已暂停的运行，或在设备出现问题后重试当前步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="385"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="352"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="381"/>
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="370"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="366"/>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="371"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="367"/>
         <source>Elapsed:</source>
         <translation>已用时间：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="398"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>与 %1 的链路于 %2 中断。下方数值已不再反映设备的状态；MultiDir 会继续尝试重新连接。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="406"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>打印运行已暂停：正在打印的区域可以完成，但不会开始新的区域。链路恢复后请按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="409"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="405"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 没有应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>链路已恢复。由于链路曾中断，打印运行仍处于暂停状态：请检查平台，然后按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="514"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>无法用这些设置连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="522"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="531"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="527"/>
         <source>Disconnected.</source>
         <translation>已断开。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="537"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>无法访问；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="543"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>链路于 %1 中断；正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
         <source>no: press Enable</source>
         <translation>否：请按“使能”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="550"/>
         <source>%1 (target %2)</source>
         <translation>%1（目标 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
         <source>homing</source>
         <translation>正在回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
         <location filename="../ui/device/hardware_panel.cpp" line="555"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
         <location filename="../ui/device/hardware_panel.cpp" line="555"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="559"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
         <source>not needed (robot arm)</source>
         <translation>不需要（机械臂）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="562"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="582"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="571"/>
-        <source>unknown: not read yet</source>
-        <translation>未知：尚未读取</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="574"/>
-        <source>unknown since %1 (last read: %2)</source>
-        <translation>自 %1 起未知（上次读取：%2）</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="577"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1：已发送到设备。如需继续：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
         <source>%1: sent to the device.</source>
         <translation>%1：已发送到设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="604"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="585"/>
         <source>Connected to %1.</source>
         <translation>已连接到 %1。</translation>
     </message>
     <message>
-        <source>The print run stopped: %1. Fix the device (Clear fault, Enable, Home), then press Resume to retry this step, or Abort.</source>
-        <translation type="vanished">打印运行已停止：%1。请修复设备（清除故障、使能、回零），然后按“继续”重试此步骤，或按“中止”。</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="617"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>打印运行已完成：所有区域均已打印。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>The print run was aborted.</source>
         <translation>打印运行已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="629"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="610"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
         <translation>区域 %1 正由 %2 打印（%3）；打印机报告完成后运行将继续。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="634"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="615"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>请打印区域 %1（文件 %2），然后按“区域完成”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="642"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>开始运行被拒绝：未连接；请先连接设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="668"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
         <source>Start run refused: %1</source>
         <translation>开始运行被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="673"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
         <translation>方案尚未切片：每个区域需手动打印（“区域完成”）。请对方案切片，以便由打印机打印各区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="694"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="675"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
         <translation>切片作业有 %1 个步骤，方案有 %2 个区域：每个区域需手动打印（“区域完成”）。请重新对方案切片。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>限制：%1 至 %2，步长 %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="704"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>限制：倾斜最多 %1，%n 个禁止锥</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="726"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
         <source> (machine profile)</source>
         <translation>（机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="728"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation>（默认值：该机器配置适用于 %1 机器）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="712"/>
         <source> (defaults: no machine profile)</source>
         <translation>（默认值：无机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="732"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="713"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>；更改后的配置在下次连接时生效</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>急停：立即切断平台的功率级。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="733"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>急停：以最大减速度停止机器人程序。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="757"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="738"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>在故障或急停后复位平台；之后请重新“使能”并“回零”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="739"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>在故障或急停后复位机器人程序；之后它将重新接受运动指令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="760"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>寻找原点开关（0°）；驱动必须已使能。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="761"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="742"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="809"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="790"/>
         <source>unknown since %1</source>
         <translation>自 %1 起未知</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="811"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="792"/>
         <source>not seen yet</source>
         <translation>尚未收到</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="814"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="795"/>
         <source>%1 s ago</source>
         <translation>%1 秒前</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="823"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>无方案：请先运行搜索或打开方案。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="824"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="805"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>方案包含 %n 个区域。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="826"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
         <translation>已切片：已连接的打印机将打印每个区域的 G 代码。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="834"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="815"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>全部 %n 个区域已打印：完成</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="836"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
         <source>%1 of %2: %3</source>
         <translation>%1 / %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="838"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
         <source> (%1, %2)</source>
         <translation>（%1，%2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="839"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="820"/>
         <source>; pausing after this region</source>
         <translation>；此区域完成后暂停</translation>
     </message>
@@ -1209,72 +1200,72 @@
 <context>
     <name>multidir::ui::JobTimeline</name>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Region</source>
         <translation>区域</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Started</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="104"/>
+        <location filename="../ui/device/job_timeline.cpp" line="106"/>
         <source>Ended</source>
         <translation>结束时间</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="131"/>
+        <location filename="../ui/device/job_timeline.cpp" line="133"/>
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="133"/>
+        <location filename="../ui/device/job_timeline.cpp" line="135"/>
         <source>moving</source>
         <translation>正在移动</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="135"/>
+        <location filename="../ui/device/job_timeline.cpp" line="137"/>
         <source>settling</source>
         <translation>正在稳定</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="137"/>
+        <location filename="../ui/device/job_timeline.cpp" line="139"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="139"/>
+        <location filename="../ui/device/job_timeline.cpp" line="141"/>
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="141"/>
+        <location filename="../ui/device/job_timeline.cpp" line="143"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="143"/>
+        <location filename="../ui/device/job_timeline.cpp" line="145"/>
         <source>failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="145"/>
+        <location filename="../ui/device/job_timeline.cpp" line="147"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/job_timeline.cpp" line="155"/>
+        <location filename="../ui/device/job_timeline.cpp" line="157"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -1415,18 +1406,6 @@
         <translation>打开(&amp;O)...</translation>
     </message>
     <message>
-        <source>Open a mesh file (STL, OBJ, OFF or PLY)</source>
-        <translation type="vanished">打开网格文件（STL、OBJ、OFF 或 PLY）</translation>
-    </message>
-    <message>
-        <source>&amp;Samples</source>
-        <translation type="vanished">示例(&amp;S)</translation>
-    </message>
-    <message>
-        <source>Open &amp;plan...</source>
-        <translation type="vanished">打开方案(&amp;P)...</translation>
-    </message>
-    <message>
         <location filename="../ui/main_window.cpp" line="135"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
@@ -1445,10 +1424,6 @@
         <location filename="../ui/main_window.cpp" line="149"/>
         <source>&amp;Load machine profile...</source>
         <translation>加载机器配置(&amp;L)...</translation>
-    </message>
-    <message>
-        <source>&amp;Save machine profile...</source>
-        <translation type="vanished">保存机器配置(&amp;S)...</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="154"/>
@@ -1556,21 +1531,9 @@
         <translation>-Z</translation>
     </message>
     <message>
-        <source>Open Model</source>
-        <translation type="vanished">打开模型</translation>
-    </message>
-    <message>
-        <source>Meshes (*.stl *.obj *.off *.ply);;All files (*)</source>
-        <translation type="vanished">网格 (*.stl *.obj *.off *.ply);;所有文件 (*)</translation>
-    </message>
-    <message>
         <location filename="../ui/main_window.cpp" line="120"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>打开网格文件（STL、OBJ、OFF 或 PLY）或 MultiDir 项目</translation>
-    </message>
-    <message>
-        <source>Export Sc&amp;reenshot...</source>
-        <translation type="vanished">导出截图(&amp;R)...</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="147"/>
@@ -2137,18 +2100,6 @@ Qt %1</translation>
 </context>
 <context>
     <name>multidir::ui::PlanEvaluationJob</name>
-    <message>
-        <source>The supports could not be grown: %1 (%2)</source>
-        <translation type="vanished">无法生成支撑：%1（%2）</translation>
-    </message>
-    <message>
-        <source>Not enough memory to grow the supports: the plan is shown without them.</source>
-        <translation type="vanished">内存不足，无法生成支撑：方案将不带支撑显示。</translation>
-    </message>
-    <message>
-        <source>Unexpected error while growing the supports.</source>
-        <translation type="vanished">生成支撑时发生意外错误。</translation>
-    </message>
 </context>
 <context>
     <name>multidir::ui::PlanPanel</name>
@@ -2618,290 +2569,280 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::PrinterSection</name>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="47"/>
+        <location filename="../ui/device/printer_section.cpp" line="44"/>
         <source>%1 °C (off)</source>
         <translation>%1 °C（关闭）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="48"/>
+        <location filename="../ui/device/printer_section.cpp" line="45"/>
         <source>%1 / %2 °C</source>
         <translation>%1 / %2 °C</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="55"/>
-        <location filename="../ui/device/printer_section.cpp" line="253"/>
+        <location filename="../ui/device/printer_section.cpp" line="52"/>
+        <location filename="../ui/device/printer_section.cpp" line="250"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="57"/>
+        <location filename="../ui/device/printer_section.cpp" line="54"/>
         <source>standby (no job)</source>
         <translation>待机（无作业）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="59"/>
+        <location filename="../ui/device/printer_section.cpp" line="56"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="61"/>
+        <location filename="../ui/device/printer_section.cpp" line="58"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="63"/>
+        <location filename="../ui/device/printer_section.cpp" line="60"/>
         <source>complete</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="65"/>
+        <location filename="../ui/device/printer_section.cpp" line="62"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="67"/>
+        <location filename="../ui/device/printer_section.cpp" line="64"/>
         <source>error</source>
         <translation>错误</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="77"/>
+        <location filename="../ui/device/printer_section.cpp" line="74"/>
         <source>Printer</source>
         <translation>打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="81"/>
+        <location filename="../ui/device/printer_section.cpp" line="78"/>
         <source>http://192.168.0.20:7125</source>
         <translation>http://192.168.0.20:7125</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="82"/>
+        <location filename="../ui/device/printer_section.cpp" line="79"/>
         <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
         <translation>打印机地址：Moonraker（Klipper），格式为 http://HOST:PORT 或 HOST:PORT（端口 7125）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="86"/>
-        <location filename="../ui/device/printer_section.cpp" line="257"/>
-        <location filename="../ui/device/printer_section.cpp" line="280"/>
+        <location filename="../ui/device/printer_section.cpp" line="83"/>
+        <location filename="../ui/device/printer_section.cpp" line="254"/>
+        <location filename="../ui/device/printer_section.cpp" line="263"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="87"/>
+        <location filename="../ui/device/printer_section.cpp" line="84"/>
         <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
         <translation>仅在打印机要求时填写（Moonraker 的 [authorization]）。不会被保存。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="88"/>
+        <location filename="../ui/device/printer_section.cpp" line="85"/>
         <source>Connect printer</source>
         <translation>连接打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="89"/>
+        <location filename="../ui/device/printer_section.cpp" line="86"/>
         <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
         <translation>连接打印机；之后打印运行会将每个区域的 G 代码发送给它。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="90"/>
+        <location filename="../ui/device/printer_section.cpp" line="87"/>
         <source>Disconnect printer</source>
         <translation>断开打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="91"/>
+        <location filename="../ui/device/printer_section.cpp" line="88"/>
         <source>Closes the link without commanding the printer: a job on it goes on.</source>
         <translation>关闭链路而不向打印机发送命令：打印机上的作业会继续进行。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="92"/>
+        <location filename="../ui/device/printer_section.cpp" line="89"/>
         <source>Clear printer E-STOP</source>
         <translation>清除打印机急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="93"/>
+        <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
         <translation>打印机确认急停后，重新允许作业。Klipper 打印机还需在其控制台上执行 FIRMWARE_RESTART。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="110"/>
+        <location filename="../ui/device/printer_section.cpp" line="107"/>
         <source>Address:</source>
         <translation>地址：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="111"/>
+        <location filename="../ui/device/printer_section.cpp" line="108"/>
         <source>API key:</source>
         <translation>API 密钥：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="116"/>
+        <location filename="../ui/device/printer_section.cpp" line="113"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="117"/>
+        <location filename="../ui/device/printer_section.cpp" line="114"/>
         <source>Job:</source>
         <translation>作业：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="118"/>
+        <location filename="../ui/device/printer_section.cpp" line="115"/>
         <source>Firmware:</source>
         <translation>固件：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="119"/>
+        <location filename="../ui/device/printer_section.cpp" line="116"/>
         <source>Printer says:</source>
         <translation>打印机消息：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="120"/>
+        <location filename="../ui/device/printer_section.cpp" line="117"/>
         <source>Extruder:</source>
         <translation>挤出机：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="121"/>
+        <location filename="../ui/device/printer_section.cpp" line="118"/>
         <source>Bed:</source>
         <translation>热床：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="122"/>
+        <location filename="../ui/device/printer_section.cpp" line="119"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="123"/>
+        <location filename="../ui/device/printer_section.cpp" line="120"/>
         <source>Progress:</source>
         <translation>进度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="124"/>
+        <location filename="../ui/device/printer_section.cpp" line="121"/>
         <source>Job time left:</source>
         <translation>作业剩余时间：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="125"/>
+        <location filename="../ui/device/printer_section.cpp" line="122"/>
         <source>Last problem:</source>
         <translation>最近的问题：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="140"/>
+        <location filename="../ui/device/printer_section.cpp" line="137"/>
         <source>Connected to %1.</source>
         <translation>已连接到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="158"/>
+        <location filename="../ui/device/printer_section.cpp" line="155"/>
         <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
         <translation>与 %1 的链路于 %2 中断：这些数值已不再反映打印机的状态，且它可能仍在打印。MultiDir 会继续尝试。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="174"/>
+        <location filename="../ui/device/printer_section.cpp" line="171"/>
         <source>Cannot connect to the printer: %1</source>
         <translation>无法连接打印机：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="178"/>
+        <location filename="../ui/device/printer_section.cpp" line="175"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="183"/>
+        <location filename="../ui/device/printer_section.cpp" line="180"/>
         <source>Printer disconnected.</source>
         <translation>打印机已断开。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="189"/>
+        <location filename="../ui/device/printer_section.cpp" line="186"/>
         <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
         <translation>打印机急停已清除。Klipper 打印机在下一个作业前需要执行 FIRMWARE_RESTART。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="191"/>
+        <location filename="../ui/device/printer_section.cpp" line="188"/>
         <source>Clear printer E-STOP refused: %1</source>
         <translation>清除打印机急停被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="210"/>
+        <location filename="../ui/device/printer_section.cpp" line="207"/>
         <source>step %1 of %2: %3</source>
         <translation>步骤 %1 / %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="213"/>
+        <location filename="../ui/device/printer_section.cpp" line="210"/>
         <source>not started</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="216"/>
+        <location filename="../ui/device/printer_section.cpp" line="213"/>
         <source>%1 of %2 (not a step of this run)</source>
         <translation>%2 已完成 %1（不属于本次运行的步骤）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="222"/>
+        <location filename="../ui/device/printer_section.cpp" line="219"/>
         <source>none: every step is printed</source>
         <translation>无：所有步骤均已打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="225"/>
+        <location filename="../ui/device/printer_section.cpp" line="222"/>
         <source>no estimate: slice the plan before starting the run</source>
         <translation>无估算：请在开始运行前对方案切片</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="227"/>
+        <location filename="../ui/device/printer_section.cpp" line="224"/>
         <source>%1 of printing (done about %2; platform moves not counted)</source>
         <translation>打印用时 %1（约 %2 完成；不含平台移动）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="238"/>
+        <location filename="../ui/device/printer_section.cpp" line="235"/>
         <source>Disconnected</source>
         <translation>已断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="240"/>
+        <location filename="../ui/device/printer_section.cpp" line="237"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>无法访问；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="242"/>
+        <location filename="../ui/device/printer_section.cpp" line="239"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="244"/>
+        <location filename="../ui/device/printer_section.cpp" line="241"/>
         <source>Link lost at %1; MultiDir keeps trying…</source>
         <translation>链路于 %1 中断；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="246"/>
+        <location filename="../ui/device/printer_section.cpp" line="243"/>
         <source>Connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="254"/>
+        <location filename="../ui/device/printer_section.cpp" line="251"/>
         <source>nothing</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="264"/>
-        <source>unknown: not read yet</source>
-        <translation>未知：尚未读取</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/printer_section.cpp" line="267"/>
-        <source>unknown since %1 (last read: %2)</source>
-        <translation>自 %1 起未知（上次读取：%2）</translation>
-    </message>
-    <message>
-        <location filename="../ui/device/printer_section.cpp" line="300"/>
+        <location filename="../ui/device/printer_section.cpp" line="283"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 没有应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="302"/>
+        <location filename="../ui/device/printer_section.cpp" line="285"/>
         <source>The printer&apos;s firmware is %1: %2</source>
         <translation>打印机固件处于 %1 状态：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="304"/>
+        <location filename="../ui/device/printer_section.cpp" line="287"/>
         <source>it says nothing more</source>
         <translation>无更多信息</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="306"/>
+        <location filename="../ui/device/printer_section.cpp" line="289"/>
         <source>The print run is paused: %1.</source>
         <translation>打印运行已暂停：%1。</translation>
     </message>
@@ -3444,10 +3385,6 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>已停止</translation>
     </message>
     <message>
-        <source>Starting...</source>
-        <translation type="vanished">正在启动...</translation>
-    </message>
-    <message>
         <location filename="../ui/panels/search_panel.cpp" line="262"/>
         <location filename="../ui/panels/search_panel.cpp" line="290"/>
         <location filename="../ui/panels/search_panel.cpp" line="329"/>
@@ -3458,10 +3395,6 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <location filename="../ui/panels/search_panel.cpp" line="287"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1（第 %2 / %3 个轴）</translation>
-    </message>
-    <message>
-        <source>Cancelling: keeping the best plan so far...</source>
-        <translation type="vanished">正在取消：保留目前的最佳方案...</translation>
     </message>
     <message>
         <location filename="../ui/panels/search_panel.cpp" line="328"/>
@@ -3972,10 +3905,6 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>搜索或项目方案未在 %1 秒内完成。</translation>
     </message>
     <message>
-        <source>Mesh file to open (.stl .obj .off .ply). Default: the first sample.</source>
-        <translation type="vanished">要打开的网格文件（.stl .obj .off .ply）。默认：第一个示例。</translation>
-    </message>
-    <message>
         <location filename="../ui/studio_startup.cpp" line="85"/>
         <source>[model]</source>
         <translation>[模型]</translation>
@@ -4014,14 +3943,6 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <location filename="../ui/studio_startup.cpp" line="208"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>模型未在 %1 秒内加载完成。</translation>
-    </message>
-    <message>
-        <source>The search did not finish within %1 s.</source>
-        <translation type="vanished">搜索未在 %1 秒内完成。</translation>
-    </message>
-    <message>
-        <source>Could not write the screenshot to %1.</source>
-        <translation type="vanished">无法将截图写入 %1。</translation>
     </message>
     <message>
         <location filename="../ui/studio_startup.cpp" line="230"/>

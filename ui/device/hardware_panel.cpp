@@ -21,6 +21,7 @@
 
 #include "ui/device/connection_form.h"
 #include "ui/device/device_link.h"
+#include "ui/device/device_reading.h"
 #include "ui/device/job_timeline.h"
 #include "ui/device/plan_steps.h"
 #include "ui/device/print_run_driver.h"
@@ -111,11 +112,6 @@ QString recoveryText(DeviceKind kind) {
              ? HardwarePanel::tr("Clear fault, then Enable and Home")
              : HardwarePanel::tr("Clear fault; the robot program then takes moves again");
 }
-
-QString timeText(const QDateTime& time) { return time.toString(QStringLiteral("HH:mm:ss")); }
-
-constexpr const char* kStaleStyle = "color: #8a8a8a;";
-constexpr const char* kFaultStyle = "color: #c62828;";
 
 QString clockText(std::chrono::milliseconds elapsed) {
   const long long seconds = elapsed.count() / 1000;
@@ -401,7 +397,7 @@ void HardwarePanel::updateBanner() {
   if (open && s.staleSince) {
     text = tr("The link to %1 was lost at %2. The values below are not the device's any more; MultiDir keeps "
               "trying to reconnect.")
-               .arg(m_link->deviceName(), timeText(*s.staleSince));
+               .arg(m_link->deviceName(), DeviceReading::clockTime(*s.staleSince));
     if (held)
       text += QLatin1Char(' ') + tr("The print run is paused: a region being printed may finish, no new region "
                                     "starts. Press Resume once the link is back.");
@@ -540,7 +536,7 @@ void HardwarePanel::onSnapshot(const DeviceSnapshot& s) {
   } else if (!s.hasRead && !s.lastError.isEmpty()) {
     m_state->setText(tr("Not reachable; MultiDir keeps trying…"));
   } else if (s.staleSince) {
-    m_state->setText(tr("Link lost at %1; reconnecting…").arg(timeText(*s.staleSince)));
+    m_state->setText(tr("Link lost at %1; reconnecting…").arg(DeviceReading::clockTime(*s.staleSince)));
   } else {
     m_state->setText(stateText(s));
   }
@@ -562,25 +558,10 @@ void HardwarePanel::onSnapshot(const DeviceSnapshot& s) {
   const QString fault = s.faultText.isEmpty() ? tr("none") : s.faultText;
   const std::pair<QLabel*, QString> fields[] = {
       {m_enabled, enabled}, {m_position, position}, {m_moving, moving}, {m_homed, homed}, {m_fault, fault}};
-  for (const auto& [label, value] : fields) {
-    if (!open) {
-      label->setText(QStringLiteral("—"));
-      label->setStyleSheet(QString());
-    } else if (!s.hasRead) {
-      // The driver's defaults are not the device's state: show none of them.
-      label->setText(tr("unknown: not read yet"));
-      label->setStyleSheet(QString::fromLatin1(kStaleStyle));
-    } else if (s.staleSince) {
-      label->setText(tr("unknown since %1 (last read: %2)").arg(timeText(*s.staleSince), value));
-      label->setStyleSheet(QString::fromLatin1(kStaleStyle));
-    } else {
-      label->setText(value);
-      label->setStyleSheet(QString());
-    }
-  }
-  if (s.isFresh() && !s.faultText.isEmpty()) m_fault->setStyleSheet(QString::fromLatin1(kFaultStyle));
+  for (const auto& [label, value] : fields) DeviceReading::show(label, value, open, s.hasRead, s.staleSince);
+  if (s.isFresh() && !s.faultText.isEmpty()) m_fault->setStyleSheet(QString::fromLatin1(DeviceReading::kFaultStyle));
   m_linkProblem->setText(s.lastError.isEmpty() ? tr("none") : s.lastError);
-  m_linkProblem->setStyleSheet(s.lastError.isEmpty() ? QString() : QString::fromLatin1(kFaultStyle));
+  m_linkProblem->setStyleSheet(s.lastError.isEmpty() ? QString() : QString::fromLatin1(DeviceReading::kFaultStyle));
   // The link dropped: what the panel said before (a command sent, a run finished) is no longer the news.
   if (s.staleSince && !m_wasStale && m_messageTopic == MessageTopic::General) m_message->clear();
   m_wasStale = s.staleSince.has_value();
@@ -802,11 +783,11 @@ void HardwarePanel::updateControls() {
 
 void HardwarePanel::updateClockTexts() {
   const DeviceSnapshot& s = m_link->snapshot();
-  m_heartbeat->setStyleSheet(s.staleSince ? QString::fromLatin1(kStaleStyle) : QString());
+  m_heartbeat->setStyleSheet(s.staleSince ? QString::fromLatin1(DeviceReading::kStaleStyle) : QString());
   if (s.state == DeviceState::Disconnected) {
     m_heartbeat->setText(QStringLiteral("—"));
   } else if (s.staleSince) {
-    m_heartbeat->setText(tr("unknown since %1").arg(timeText(*s.staleSince)));
+    m_heartbeat->setText(tr("unknown since %1").arg(DeviceReading::clockTime(*s.staleSince)));
   } else if (!s.lastAlive) {
     m_heartbeat->setText(tr("not seen yet"));
   } else {

@@ -7,13 +7,15 @@
 #include <QVBoxLayout>
 #include <chrono>
 
+#include "ui/device/device_reading.h"
+
 namespace multidir::ui {
 namespace {
 
 enum Column { kStep, kRegion, kState, kStarted, kEnded, kColumns };
 
 QString timeText(const std::optional<QDateTime>& time) {
-  return time ? time->toString(QStringLiteral("HH:mm:ss")) : QStringLiteral("—");
+  return time ? DeviceReading::clockTime(*time) : QStringLiteral("—");
 }
 
 QDateTime wallTime(const hardware::PrintRunLogEntry& entry) {

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "multidir/slicing/estimates.h"
+#include "ui/device/device_reading.h"
 #include "ui/device/job_eta.h"
 #include "ui/device/print_run_driver.h"
 #include "ui/device/printer_link_owner.h"
@@ -21,8 +22,6 @@ namespace multidir::ui {
 namespace {
 
 constexpr const char* kUrlKey = "printer/url";
-constexpr const char* kStaleStyle = "color: #8a8a8a;";
-constexpr const char* kFaultStyle = "color: #c62828;";
 
 QLabel* valueLabel(QWidget* parent, const QString& name) {
   auto* label = new QLabel(parent);
@@ -38,8 +37,6 @@ QPushButton* button(QWidget* parent, const QString& name, const QString& text, c
   b->setToolTip(tip);
   return b;
 }
-
-QString timeText(const QDateTime& time) { return time.toString(QStringLiteral("HH:mm:ss")); }
 
 QString heaterText(const hardware::HeaterReading& heater) {
   const QLocale locale;
@@ -157,7 +154,7 @@ QString PrinterSection::linkLostText() const {
   if (!m_printer->isOpen() || !m_printer->staleSince()) return {};
   return tr("The link to %1 was lost at %2: its values are not the printer's any more, and it may still be "
             "printing. MultiDir keeps trying.")
-      .arg(m_printer->printerName(), timeText(*m_printer->staleSince()));
+      .arg(m_printer->printerName(), DeviceReading::clockTime(*m_printer->staleSince()));
 }
 
 QString PrinterSection::messageText() const { return m_message->text(); }
@@ -193,7 +190,7 @@ void PrinterSection::clearStop() {
 
 void PrinterSection::setMessage(const QString& text, bool error) {
   m_message->setText(text);
-  m_message->setStyleSheet(error ? QString::fromLatin1(kFaultStyle) : QString());
+  m_message->setStyleSheet(error ? QString::fromLatin1(DeviceReading::kFaultStyle) : QString());
 }
 
 QString PrinterSection::progressText(double* stepProgress) const {
@@ -241,7 +238,7 @@ void PrinterSection::refresh() {
   else if (!read)
     m_state->setText(tr("Connecting…"));
   else if (stale)
-    m_state->setText(tr("Link lost at %1; MultiDir keeps trying…").arg(timeText(*stale)));
+    m_state->setText(tr("Link lost at %1; MultiDir keeps trying…").arg(DeviceReading::clockTime(*stale)));
   else
     m_state->setText(tr("Connected to %1").arg(m_printer->printerName()));
 
@@ -256,29 +253,15 @@ void PrinterSection::refresh() {
       {m_bed, heaterText(s.bed)},
       {m_file, s.currentFile.empty() ? tr("none") : QString::fromStdString(s.currentFile)},
       {m_progress, progress}};
-  for (const auto& [label, value] : fields) {
-    if (!open) {
-      label->setText(QStringLiteral("—"));
-      label->setStyleSheet(QString());
-    } else if (!read) {
-      label->setText(tr("unknown: not read yet"));
-      label->setStyleSheet(QString::fromLatin1(kStaleStyle));
-    } else if (stale) {
-      label->setText(tr("unknown since %1 (last read: %2)").arg(timeText(*stale), value));
-      label->setStyleSheet(QString::fromLatin1(kStaleStyle));
-    } else {
-      label->setText(value);
-      label->setStyleSheet(QString());
-    }
-  }
+  for (const auto& [label, value] : fields) DeviceReading::show(label, value, open, read, stale);
   if (open && read && !stale) {
-    if (!firmwareReady(s)) m_firmware->setStyleSheet(QString::fromLatin1(kFaultStyle));
+    if (!firmwareReady(s)) m_firmware->setStyleSheet(QString::fromLatin1(DeviceReading::kFaultStyle));
     if (!firmwareReady(s) || s.state == hardware::PrinterJobState::Error)
-      m_says->setStyleSheet(QString::fromLatin1(kFaultStyle));
+      m_says->setStyleSheet(QString::fromLatin1(DeviceReading::kFaultStyle));
   }
   m_eta->setText(etaText(stale ? 0.0 : stepProgress));
   m_problem->setText(!open || s.lastError.empty() ? tr("none") : QString::fromStdString(s.lastError));
-  m_problem->setStyleSheet(open && !s.lastError.empty() ? QString::fromLatin1(kFaultStyle) : QString());
+  m_problem->setStyleSheet(open && !s.lastError.empty() ? QString::fromLatin1(DeviceReading::kFaultStyle) : QString());
 
   m_url->setEnabled(!open);
   m_apiKey->setEnabled(!open);
