@@ -66,7 +66,7 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
       return;
     }
     const int s = task - kGreedyChains;
-    const double divisor = std::ldexp(o.minVolumeDivisor, s);
+    const double divisor = volumeDivisorOfScale(o, s);
     BeamScale scale;
     scale.minRegionVolume = own.minRegionVolume(divisor);
     scale.maxLevels = static_cast<int>(std::ceil(divisor)) + 1;

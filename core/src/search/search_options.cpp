@@ -49,15 +49,19 @@ Status validate(const SearchOptions& o) {
   return validate(o.candidates);
 }
 
+double volumeDivisorOfScale(const SearchOptions& options, int scale) {
+  return std::ldexp(options.minVolumeDivisor, std::clamp(scale, 0, 3));
+}
+
 double finestVolumeDivisor(const SearchOptions& options) {
   if (options.scheme != SearchScheme::Beam) return options.minVolumeDivisor;
-  return std::ldexp(options.minVolumeDivisor, std::clamp(options.volumeScales, 1, 4) - 1);
+  return volumeDivisorOfScale(options, std::clamp(options.volumeScales, 1, 4) - 1);
 }
 
 int maxSearchLevels(const SearchOptions& options) {
   const int scales = options.scheme == SearchScheme::Beam ? std::clamp(options.volumeScales, 1, 4) : 1;
   int levels = 0;
-  for (int s = 0; s < scales; ++s) levels += static_cast<int>(std::ceil(std::ldexp(options.minVolumeDivisor, s))) + 1;
+  for (int s = 0; s < scales; ++s) levels += static_cast<int>(std::ceil(volumeDivisorOfScale(options, s))) + 1;
   return levels;
 }
 

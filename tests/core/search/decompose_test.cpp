@@ -225,6 +225,14 @@ TEST(Decompose, VolumeScalesOutsideOneToFourAreRefusedByName) {
   }
 }
 
+TEST(Decompose, EachRegionScaleHalvesTheSmallestRegionOfTheOneBefore) {
+  SearchOptions options;
+  options.minVolumeDivisor = 40;
+  EXPECT_EQ(volumeDivisorOfScale(options, 0), 40.0);
+  EXPECT_EQ(volumeDivisorOfScale(options, 1), 80.0);
+  EXPECT_EQ(volumeDivisorOfScale(options, 3), 320.0);
+}
+
 TEST(Decompose, SearchLevelsAreTheSumOverTheScales) {
   // Progress counts levels over the scales one after the other: at scale w a plan has at most ceil(w) + 1.
   SearchOptions options;

@@ -62,6 +62,10 @@ struct SearchOptions {
 
 Status validate(const SearchOptions& options);
 
+// The volume divisor of the beam search's region scale s (0 = w, the coarsest): w * 2^s. Every region the
+// search at that scale cuts off keeps at least V / this. s is clamped to the valid scales [0, 3].
+[[nodiscard]] double volumeDivisorOfScale(const SearchOptions& options, int scale);
+
 // The volume divisor of the beam search's finest scale: w * 2^(volumeScales - 1) (w for the greedy schemes).
 [[nodiscard]] double finestVolumeDivisor(const SearchOptions& options);
 
