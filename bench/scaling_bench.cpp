@@ -3,12 +3,18 @@
 // peak memory is its own:
 //
 //   multidir_scaling_bench [--models kitten,bunny,fertility] [--levels 0,1,2,3] [--million] [--full]
-//                          [--noise MM] [--keep DIR]
+//                          [--noise MM] [--keep DIR] [--repeat R] [--normals N1,N2,...]
 //
 // --levels: subdivision levels (0: the model as shared; 3: 64x the faces).
 // --million: also the knight subdivided 5 times (1,024,000 faces), smooth and with --noise (default 0.02 mm)
 //   along the normals, like a scan's measurement noise (then no face of the proxy comes for free).
 // --full: every run also with --no-proxy (the full mesh searched; slow: minutes at 64x).
+// --repeat R: every run R times; wall and search seconds are the medians (this machine's speed drifts by 10-20 %
+//   between runs, so the "x of 1x" ratio of single runs is as noisy as that).
+// --normals N1,N2,...: every run once per candidate-normal count (`--normals` of the CLI; default: the CLI's).
+//   The search's plan moves by tens of percent with changes smaller than its candidate spacing (docs/search.md),
+//   so comparing the proxy with the full search on one draw compares two draws of that spread; with several
+//   counts a summary at the end gives each model's and mode's median J_G after / before over the draws.
 // Columns: faces, the proxy's faces (0: none), wall seconds of the whole command, the search's seconds, peak
 // resident MiB (getrusage of the child), regions, J_G after / before, and the wall time over the same model's
 // at level 0 in the same mode. The models are written to a temporary folder (or --keep DIR) as binary STL.
@@ -16,6 +22,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -82,13 +89,17 @@ bool writeCase(Case& c, const fs::path& folder) {
   return true;
 }
 
-Outcome run(const Case& c, bool full, const fs::path& folder) {
+Outcome run(const Case& c, bool full, int normals, const fs::path& folder) {
   Outcome out;
   const fs::path plan = folder / ("plan-" + fs::path(c.file).stem().string() + (full ? "-full" : ""));
   const fs::path summary = plan.string() + ".json";
   std::vector<std::string> args{MULTIDIR_CLI, "decompose", c.file, "--up", "y", "-o", plan.string(), "--summary",
                                 summary.string()};
   if (full) args.emplace_back("--no-proxy");
+  if (normals > 0) {
+    args.emplace_back("--normals");
+    args.push_back(std::to_string(normals));
+  }
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -128,6 +139,28 @@ Outcome run(const Case& c, bool full, const fs::path& folder) {
   return out;
 }
 
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The run repeated: the first run's plan (every run gives the same plan), the median seconds.
+Outcome runRepeated(const Case& c, bool full, int normals, int repeat, const fs::path& folder) {
+  Outcome first = run(c, full, normals, folder);
+  std::vector<double> wall{first.wallSeconds}, search{first.searchSeconds};
+  for (int r = 1; first.ok && r < repeat; ++r) {
+    const Outcome again = run(c, full, normals, folder);
+    if (!again.ok) return again;
+    wall.push_back(again.wallSeconds);
+    search.push_back(again.searchSeconds);
+    first.peakMiB = std::max(first.peakMiB, again.peakMiB);
+  }
+  first.wallSeconds = median(wall);
+  first.searchSeconds = median(search);
+  return first;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -135,6 +168,8 @@ int main(int argc, char** argv) {
   std::vector<int> levels{0, 1, 2, 3};
   bool million = false, full = false;
   double noiseMm = 0.02;
+  int repeat = 1;
+  std::vector<int> normalCounts{0};  // 0: the CLI's default
   std::string keep;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
@@ -143,6 +178,11 @@ int main(int argc, char** argv) {
     else if (i + 1 < argc && flag == "--models") models = split(argv[++i]);
     else if (i + 1 < argc && flag == "--noise") noiseMm = std::atof(argv[++i]);
     else if (i + 1 < argc && flag == "--keep") keep = argv[++i];
+    else if (i + 1 < argc && flag == "--repeat") repeat = std::max(1, std::atoi(argv[++i]));
+    else if (i + 1 < argc && flag == "--normals") {
+      normalCounts.clear();
+      for (const std::string& n : split(argv[++i])) normalCounts.push_back(std::atoi(n.c_str()));
+    }
     else if (i + 1 < argc && flag == "--levels") {
       levels.clear();
       for (const std::string& l : split(argv[++i])) levels.push_back(std::atoi(l.c_str()));
@@ -163,26 +203,43 @@ int main(int argc, char** argv) {
     cases.push_back({"knight 1024x noisy", "knight", 5, noiseMm, ""});
   }
 
-  std::printf("%-20s %5s %10s %8s %8s %8s %9s %7s %8s %9s\n", "model", "mode", "faces", "proxy", "wall s",
-              "search s", "peak MiB", "regions", "after %", "x of 1x");
-  std::map<std::string, double> baseline;  // model + mode -> wall seconds at level 0
+  std::printf("%-20s %5s %7s %10s %8s %8s %8s %9s %7s %8s %9s\n", "model", "mode", "normals", "faces", "proxy",
+              "wall s", "search s", "peak MiB", "regions", "after %", "x of 1x");
+  std::map<std::string, double> baseline;  // model + mode + normals -> wall seconds at level 0
+  std::map<std::string, std::vector<double>> draws;  // case + mode -> J_G after / before (%) per normal count
+  std::vector<std::string> drawOrder;
   for (Case& c : cases) {
     if (!writeCase(c, folder)) return 1;
-    for (const bool fullSearch : full ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
-      const Outcome o = run(c, fullSearch, folder);
-      const char* mode = fullSearch ? "full" : "proxy";
-      if (!o.ok) {
-        std::printf("%-20s %5s %s\n", c.name.c_str(), mode, o.error.c_str());
-        continue;
+    for (const int normals : normalCounts)
+      for (const bool fullSearch : full ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
+        const Outcome o = runRepeated(c, fullSearch, normals, repeat, folder);
+        const char* mode = fullSearch ? "full" : "proxy";
+        const std::string normalsText = normals > 0 ? std::to_string(normals) : "default";
+        if (!o.ok) {
+          std::printf("%-20s %5s %7s %s\n", c.name.c_str(), mode, normalsText.c_str(), o.error.c_str());
+          continue;
+        }
+        const std::string key = c.model + mode + (c.noiseMm > 0 ? "noisy" : "") + normalsText;
+        if (c.level == 0) baseline[key] = o.wallSeconds;
+        char ratio[32] = "-";
+        if (baseline.count(key)) std::snprintf(ratio, sizeof ratio, "%.1f", o.wallSeconds / baseline[key]);
+        const double afterPercent = o.jgBefore > 0 ? 100.0 * o.jgAfter / o.jgBefore : 0.0;
+        std::printf("%-20s %5s %7s %10lld %8lld %8.2f %8.2f %9.0f %7lld %8.2f %9s\n", c.name.c_str(), mode,
+                    normalsText.c_str(), o.faces, o.proxyFaces, o.wallSeconds, o.searchSeconds, o.peakMiB, o.regions,
+                    afterPercent, ratio);
+        std::fflush(stdout);
+        const std::string drawKey = c.name + " " + mode;
+        if (!draws.count(drawKey)) drawOrder.push_back(drawKey);
+        draws[drawKey].push_back(afterPercent);
       }
-      const std::string key = c.model + mode + (c.noiseMm > 0 ? "noisy" : "");
-      if (c.level == 0) baseline[key] = o.wallSeconds;
-      char ratio[32] = "-";
-      if (baseline.count(key)) std::snprintf(ratio, sizeof ratio, "%.1f", o.wallSeconds / baseline[key]);
-      std::printf("%-20s %5s %10lld %8lld %8.2f %8.2f %9.0f %7lld %8.2f %9s\n", c.name.c_str(), mode, o.faces,
-                  o.proxyFaces, o.wallSeconds, o.searchSeconds, o.peakMiB, o.regions,
-                  o.jgBefore > 0 ? 100.0 * o.jgAfter / o.jgBefore : 0.0, ratio);
-      std::fflush(stdout);
+  }
+  if (normalCounts.size() > 1) {
+    std::printf("\nJ_G after / before over the %zu normal counts:\n%-26s %8s %8s %8s\n", normalCounts.size(),
+                "model, mode", "median %", "min %", "max %");
+    for (const std::string& key : drawOrder) {
+      const std::vector<double>& d = draws[key];
+      std::printf("%-26s %8.2f %8.2f %8.2f\n", key.c_str(), median(d), *std::min_element(d.begin(), d.end()),
+                  *std::max_element(d.begin(), d.end()));
     }
   }
   if (keep.empty()) fs::remove_all(folder);
