@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <cstdint>
 #include <vector>
@@ -21,14 +22,15 @@ FloatBits toFloat(const Vec3& p) {
   return bits;
 }
 
-// For every vertex, the first vertex (lowest index) with the same float corner. Sorting, not hashing: a
-// million-face region has half a million vertices, and a node per entry cost more than the sort.
-std::vector<std::int32_t> firstWithSameFloatCorner(const TriangleMesh& mesh) {
-  std::vector<std::pair<FloatBits, std::int32_t>> corners(mesh.vertices.size());
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-    corners[v] = {toFloat(mesh.vertices[v]), static_cast<std::int32_t>(v)};
+// For every vertex of `subset` (indices into mesh.vertices, ascending), the first vertex of the subset (lowest
+// index) with the same float corner, by position in `subset`. Sorting, not hashing: a million-face region has
+// half a million vertices, and a node per entry cost more than the sort.
+std::vector<std::int32_t> firstWithSameFloatCorner(const TriangleMesh& mesh, const std::vector<std::int32_t>& subset) {
+  std::vector<std::pair<FloatBits, std::int32_t>> corners(subset.size());
+  for (std::size_t i = 0; i < subset.size(); ++i)
+    corners[i] = {toFloat(mesh.vertices[static_cast<std::size_t>(subset[i])]), static_cast<std::int32_t>(i)};
   std::sort(corners.begin(), corners.end());
-  std::vector<std::int32_t> first(mesh.vertices.size());
+  std::vector<std::int32_t> first(subset.size());
   for (std::size_t i = 0; i < corners.size(); ++i)
     first[static_cast<std::size_t>(corners[i].second)] =
         i > 0 && corners[i].first == corners[i - 1].first ? first[static_cast<std::size_t>(corners[i - 1].second)]
@@ -36,20 +38,46 @@ std::vector<std::int32_t> firstWithSameFloatCorner(const TriangleMesh& mesh) {
   return first;
 }
 
+std::vector<std::int32_t> allVertices(const TriangleMesh& mesh) {
+  std::vector<std::int32_t> all(mesh.vertices.size());
+  for (std::size_t v = 0; v < all.size(); ++v) all[v] = static_cast<std::int32_t>(v);
+  return all;
+}
+
+// Vertices of `subset` that fall onto another one of it at a different position when rounded to float.
+std::size_t mergedAmong(const TriangleMesh& mesh, const std::vector<std::int32_t>& subset) {
+  // Vertices already at the same point (a pinch split in two by the clip) are one corner either way.
+  const std::vector<std::int32_t> first = firstWithSameFloatCorner(mesh, subset);
+  std::size_t merged = 0;
+  for (std::size_t i = 0; i < subset.size(); ++i)
+    if (mesh.vertices[static_cast<std::size_t>(subset[i])] !=
+        mesh.vertices[static_cast<std::size_t>(subset[static_cast<std::size_t>(first[i])])])
+      ++merged;
+  return merged;
+}
+
 }  // namespace
 
-std::size_t cornersMergedAtFloatPrecision(const TriangleMesh& mesh) {
-  // Vertices already at the same point (a pinch split in two by the clip) are one corner either way.
-  const std::vector<std::int32_t> first = firstWithSameFloatCorner(mesh);
-  std::size_t merged = 0;
+std::size_t cornersMergedAtFloatPrecision(const TriangleMesh& mesh) { return mergedAmong(mesh, allVertices(mesh)); }
+
+std::size_t cornersMergedAtFloatPrecisionNearPlane(const TriangleMesh& mesh, const Plane& plane,
+                                                   double planeToleranceMm) {
+  // Rounding a double to float moves each coordinate by at most |x| 2^-24, so two points with one float image
+  // are at most 2 sqrt(3) M 2^-24 apart (M: the largest coordinate). Every vertex the clip made or moved lies
+  // within the tolerance of the plane, so any pair with one of them has both within this band (with a margin
+  // of 2); pairs of two unchanged vertices cannot merge, by the precondition.
+  double largest = 0.0;
+  for (const Vec3& v : mesh.vertices) largest = std::max(largest, v.cwiseAbs().maxCoeff());
+  const double band = planeToleranceMm + 4.0 * std::sqrt(3.0) * std::ldexp(largest, -24);
+  std::vector<std::int32_t> near;
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-    if (mesh.vertices[v] != mesh.vertices[static_cast<std::size_t>(first[v])]) ++merged;
-  return merged;
+    if (std::abs(plane.normal.dot(mesh.vertices[v]) - plane.offset) <= band) near.push_back(static_cast<std::int32_t>(v));
+  return mergedAmong(mesh, near);
 }
 
 StlImage stlImage(const TriangleMesh& mesh) {
   StlImage image;
-  const std::vector<std::int32_t> first = firstWithSameFloatCorner(mesh);
+  const std::vector<std::int32_t> first = firstWithSameFloatCorner(mesh, allVertices(mesh));
   std::vector<std::int32_t> map(mesh.vertices.size());
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const auto representative = static_cast<std::size_t>(first[v]);

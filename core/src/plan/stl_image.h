@@ -5,6 +5,7 @@
 // stored beside the file would no longer line up. The plan saves this image instead, so what is saved is
 // exactly what loads back.
 #include "multidir/core/common/result.h"
+#include "multidir/core/geometry/plane.h"
 #include "multidir/core/mesh/triangle_mesh.h"
 
 namespace multidir::core::detail {
@@ -18,6 +19,13 @@ struct StlImage {
 // How many vertices of `mesh` fall onto another vertex at a different position when rounded to float (0: the
 // binary STL keeps every point apart, so a closed mesh stays closed). O(V).
 std::size_t cornersMergedAtFloatPrecision(const TriangleMesh& mesh);
+
+// The same for one side of a clip by `plane` (clipByPlane with `planeToleranceMm`), looking only at the vertices
+// near the plane: the clip makes or moves vertices only there. Precondition: the solid that was clipped had no
+// merged corners (cornersMergedAtFloatPrecision == 0); then the count equals cornersMergedAtFloatPrecision's,
+// at the cost of a pass over the vertices and a sort of the cross-section's. O(V + C log C).
+std::size_t cornersMergedAtFloatPrecisionNearPlane(const TriangleMesh& mesh, const Plane& plane,
+                                                   double planeToleranceMm);
 
 // Precondition: mesh.origins.size() == mesh.triangles.size().
 StlImage stlImage(const TriangleMesh& mesh);

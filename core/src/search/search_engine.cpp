@@ -291,9 +291,13 @@ std::string millimetres(double value) {
 
 }  // namespace
 
-bool SearchEngine::keepsFloatPrecision(const ClipResult& clipped) const {
-  return !m_checkFloatPrecision ||
-         (cornersMergedAtFloatPrecision(clipped.above) == 0 && cornersMergedAtFloatPrecision(clipped.below) == 0);
+bool SearchEngine::keepsFloatPrecision(const ClipResult& clipped, const Plane& plane) const {
+  // Every part the engine clips keeps float precision (the model was checked, every cut since passed this),
+  // so only the vertices the clip made or moved, near the plane, can merge: a sort of the cross-section's
+  // vertices instead of both sides' (which was a fifth of a cut through a million faces).
+  const double tolerance = ClipOptions{}.planeToleranceMm;  // clipSavably's
+  return !m_checkFloatPrecision || (cornersMergedAtFloatPrecisionNearPlane(clipped.above, plane, tolerance) == 0 &&
+                                    cornersMergedAtFloatPrecisionNearPlane(clipped.below, plane, tolerance) == 0);
 }
 
 Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& plane, int planeId) {
@@ -315,7 +319,7 @@ Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& p
 #endif
     Result<ClipResult> clipped = clipByPlane(solid, tried, planeId, options);
     if (model && clipped.ok()) m_modelChecked = true;
-    if (!clipped.ok() || keepsFloatPrecision(*clipped)) {
+    if (!clipped.ok() || keepsFloatPrecision(*clipped, tried)) {
       plane = tried;
       return clipped;
     }
@@ -335,7 +339,7 @@ std::string SearchEngine::unprintableReason(const ClipResult& clipped, const Pla
   if (platformHeight < minHeight)
     return "the part left on the platform would be only " + millimetres(platformHeight) + " tall (at least " +
            millimetres(minHeight) + " are needed): move the plane up or tilt it less";
-  if (!keepsFloatPrecision(clipped))
+  if (!keepsFloatPrecision(clipped, plane))
     return "the plane passes so close to the model's vertices that a binary STL could not keep the cut closed: move "
            "it slightly";
   return {};

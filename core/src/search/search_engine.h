@@ -86,7 +86,7 @@ class SearchEngine {
   // Clips by `plane`, moved a few micrometres more where the first placement would not survive a binary STL;
   // `plane` becomes the placement used.
   Result<ClipResult> clipSavably(const TriangleMesh& solid, Plane& plane, int planeId);
-  bool keepsFloatPrecision(const ClipResult& clipped) const;
+  bool keepsFloatPrecision(const ClipResult& clipped, const Plane& plane) const;
   // Why a clip's two parts cannot be regions (too thin, not savable), or empty when they can.
   std::string unprintableReason(const ClipResult& clipped, const Plane& plane) const;
   std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining) const;
