@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/heap_tuning.h"
 #include "cli_args.h"
 #include "decompose_command.h"
 #include "export_command.h"
@@ -104,6 +105,7 @@ int run(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  multidir::app::tuneHeapForLargeMeshes();
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
     return run(args);
