@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "detail/huge_pages.h"
 #include "detail/parallel.h"
 
 namespace multidir::core::detail {
@@ -106,9 +107,15 @@ bool faceQuadric(const std::vector<Vec3>& points, const Triangle& t, Quadric& q)
 class Decimator {
  public:
   Decimator(const TriangleMesh& mesh, int threads)
-      : m_points(mesh.vertices), m_triangles(mesh.triangles), m_quadrics(mesh.vertices.size()),
-        m_removed(mesh.triangles.size(), 0), m_stamp(mesh.vertices.size(), 0), m_touched(mesh.vertices.size(), 0),
+      : m_removed(mesh.triangles.size(), 0), m_stamp(mesh.vertices.size(), 0), m_touched(mesh.vertices.size(), 0),
         m_absorbed(mesh.vertices.size(), -1), m_threads(resolveThreadCount(threads)) {
+    // The big arrays in huge pages (detail/huge_pages.h): a million-face mesh's quadrics alone take 40 MB.
+    reserveInHugePages(m_points, mesh.vertices.size());
+    m_points.assign(mesh.vertices.begin(), mesh.vertices.end());
+    reserveInHugePages(m_triangles, mesh.triangles.size());
+    m_triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
+    reserveInHugePages(m_quadrics, mesh.vertices.size());
+    m_quadrics.resize(mesh.vertices.size());
     m_faces = m_triangles.size();
   }
 
@@ -230,6 +237,7 @@ class Decimator {
       if (!m_removed[f])
         for (std::int32_t v : m_triangles[f]) ++m_firstFace[static_cast<std::size_t>(v) + 1];
     for (std::size_t v = 0; v < m_points.size(); ++v) m_firstFace[v + 1] += m_firstFace[v];
+    reserveInHugePages(m_faceOfVertex, static_cast<std::size_t>(m_firstFace.back()));
     m_faceOfVertex.resize(m_firstFace.back());
     std::vector<std::int32_t> next(m_firstFace.begin(), m_firstFace.end() - 1);
     for (std::size_t f = 0; f < m_triangles.size(); ++f)
@@ -292,6 +300,7 @@ class Decimator {
     });
     start[0] = out.size();
     for (int block = 0; block < blocks; ++block) start[block + 1] += start[block];
+    reserveInHugePages(out, start.back());
     out.resize(start.back());
     detail::parallelFor(blocks, m_threads, [&](int block) {
       const std::size_t end = std::min(m_triangles.size(), static_cast<std::size_t>(block + 1) * kBlock);

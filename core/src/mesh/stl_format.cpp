@@ -8,6 +8,7 @@
 #include <ostream>
 #include <vector>
 
+#include "detail/huge_pages.h"
 #include "mesh/mesh_formats.h"
 
 namespace multidir::core::detail {
@@ -51,8 +52,8 @@ Error tooMany(const std::string& name, std::uintmax_t count, const LoadOptions& 
 
 Result<RawSoup> readBinary(std::istream& in, std::uintmax_t count, const std::string& name) {
   RawSoup soup;
-  soup.vertices.reserve(count * 3);
-  soup.triangles.reserve(count);
+  reserveInHugePages(soup.vertices, count * 3);
+  reserveInHugePages(soup.triangles, count);
   std::array<unsigned char, kFacetBytes> facet{};
   for (std::uintmax_t f = 0; f < count; ++f) {
     if (!in.read(reinterpret_cast<char*>(facet.data()), kFacetBytes))
