@@ -82,6 +82,9 @@ Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const Mac
   MachineSpec chosen = machine;
   chosen.rotationAxis = proxyPlan.rotationAxis;  // an axis search's choice
   SearchEngine engine(model, chosen, evaluation, job, platform);
+  // decimated() accepted the model, so it is a closed, oriented 2-manifold (the verdict clipByPlane's check
+  // would reach), and the callers' checkSearchInputs found its volume positive.
+  engine.trustModelClosed();
   std::vector<std::string> notes;
   bool dropped = false;
   std::shared_ptr<const SearchNode> node = engine.root();
