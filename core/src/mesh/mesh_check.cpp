@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "detail/flat_index.h"
 #include "detail/huge_pages.h"
 #include "detail/parallel.h"
 #include "detail/union_find.h"
@@ -23,6 +24,7 @@
 namespace multidir::core {
 namespace {
 
+using detail::FlatIndex;
 using detail::joinIndices;
 using detail::withThousands;
 
@@ -70,35 +72,6 @@ std::string firstList(const std::string& what, const std::vector<std::int64_t>& 
   if (first.empty()) return "";
   return " (first: " + what + " " + joinIndices(first) + (count > first.size() ? ", ..." : "") + ")";
 }
-
-// Open addressing over 64-bit hashes, for the welding below: an unordered_map allocates a node per entry, which
-// is most of the cost of loading a million-triangle STL.
-class FlatIndex {
- public:
-  explicit FlatIndex(std::size_t entries) {
-    std::size_t capacity = 16;
-    while (capacity < 2 * entries) capacity *= 2;
-    m_slots.assign(capacity, -1);
-    m_mask = capacity - 1;
-  }
-  // The slot where `matches` holds for the stored value, or the empty slot where it would go.
-  template <typename Matches>
-  std::int32_t& find(std::uint64_t hash, Matches matches) {
-    for (std::size_t i = mix(hash) & m_mask;; i = (i + 1) & m_mask)
-      if (m_slots[i] < 0 || matches(m_slots[i])) return m_slots[i];
-  }
-
-  static std::size_t mix(std::uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    return static_cast<std::size_t>(h);
-  }
-
- private:
-  std::vector<std::int32_t> m_slots;
-  std::size_t m_mask = 0;
-};
 
 // A point's coordinates as bits for hashing, -0 as +0 (they compare equal).
 std::array<std::int64_t, 3> bitsOf(const Vec3& p) {

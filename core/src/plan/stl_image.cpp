@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "detail/flat_index.h"
+#include "detail/huge_pages.h"
+
 namespace multidir::core::detail {
 namespace {
 
@@ -21,18 +24,24 @@ FloatBits toFloat(const Vec3& p) {
   return bits;
 }
 
-// For every vertex, the first vertex (lowest index) with the same float corner. Sorting, not hashing: a
-// million-face region has half a million vertices, and a node per entry cost more than the sort.
+// For every vertex, the first vertex (lowest index) with the same float corner, through a flat hash in vertex
+// order (sorting the corners cost three times as much at half a million vertices).
 std::vector<std::int32_t> firstWithSameFloatCorner(const TriangleMesh& mesh) {
-  std::vector<std::pair<FloatBits, std::int32_t>> corners(mesh.vertices.size());
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-    corners[v] = {toFloat(mesh.vertices[v]), static_cast<std::int32_t>(v)};
-  std::sort(corners.begin(), corners.end());
+  std::vector<FloatBits> corners;
+  reserveInHugePages(corners, mesh.vertices.size());
+  for (const Vec3& p : mesh.vertices) corners.push_back(toFloat(p));
+  FlatIndex index(corners.size());
   std::vector<std::int32_t> first(mesh.vertices.size());
-  for (std::size_t i = 0; i < corners.size(); ++i)
-    first[static_cast<std::size_t>(corners[i].second)] =
-        i > 0 && corners[i].first == corners[i - 1].first ? first[static_cast<std::size_t>(corners[i - 1].second)]
-                                                           : corners[i].second;
+  for (std::size_t v = 0; v < corners.size(); ++v) {
+    const FloatBits& bits = corners[v];
+    const std::uint64_t hash =
+        (static_cast<std::uint64_t>(bits[0]) * 0x9e3779b97f4a7c15ull) ^
+        (static_cast<std::uint64_t>(bits[1]) * 0xc2b2ae3d27d4eb4full) ^ (static_cast<std::uint64_t>(bits[2]) << 17);
+    std::int32_t& slot =
+        index.find(hash, [&](std::int32_t w) { return corners[static_cast<std::size_t>(w)] == bits; });
+    if (slot < 0) slot = static_cast<std::int32_t>(v);
+    first[v] = slot;
+  }
   return first;
 }
 
