@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <queue>
@@ -399,7 +400,8 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
       byCorners[f] = {mesh.triangles[f], static_cast<std::uint32_t>(f)};
       std::sort(byCorners[f].first.begin(), byCorners[f].first.end());
     }
-    std::sort(byCorners.begin(), byCorners.end());
+    // (corners, face) pairs are all different: the one sorted order, on threads.
+    detail::parallelSort(byCorners.begin(), byCorners.end(), std::less<>(), detail::resolveThreadCount(0));
     std::vector<char> repeats(mesh.triangles.size(), 0);
     for (std::size_t i = 1; i < byCorners.size(); ++i)
       if (byCorners[i].first == byCorners[i - 1].first) repeats[byCorners[i].second] = 1;

@@ -104,19 +104,6 @@ bool faceQuadric(const std::vector<Vec3>& points, const Triangle& t, Quadric& q)
   return true;
 }
 
-// Sorts [first, last) by `less`, a strict total order, in a piece per thread merged after: the result is the
-// one sorted order, whatever the thread count.
-template <typename Iterator, typename Less>
-void sortOnThreads(Iterator first, Iterator last, Less less, int threads) {
-  const auto count = static_cast<std::size_t>(last - first);
-  const int pieces = std::max(1, std::min(threads, static_cast<int>(count / kBlock)));
-  std::vector<Iterator> bounds;
-  for (int k = 0; k <= pieces; ++k)
-    bounds.push_back(first + static_cast<std::ptrdiff_t>(count * static_cast<std::size_t>(k) / static_cast<std::size_t>(pieces)));
-  detail::parallelFor(pieces, threads, [&](int k) { std::sort(bounds[k], bounds[k + 1], less); });
-  for (int k = 1; k < pieces; ++k) std::inplace_merge(first, bounds[k], bounds[k + 1], less);
-}
-
 class Decimator {
  public:
   Decimator(const TriangleMesh& mesh, int threads)
@@ -191,7 +178,7 @@ class Decimator {
       };
       const auto shareEnd = candidates.begin() + static_cast<std::ptrdiff_t>(share);
       std::nth_element(candidates.begin(), shareEnd - 1, candidates.end(), cheaper);
-      sortOnThreads(candidates.begin(), shareEnd, cheaper, m_threads);
+      parallelSort(candidates.begin(), shareEnd, cheaper, m_threads, kBlock);
       std::fill(m_touched.begin(), m_touched.end(), 0);
       std::fill(m_absorbed.begin(), m_absorbed.end(), -1);
       // In order, on one thread: each collapse changes what the next ones may do. (Planning every edge of the
