@@ -3,6 +3,7 @@
 // depend on how many threads ran or how they were scheduled.
 #include <algorithm>
 #include <atomic>
+#include <cstddef>
 #include <thread>
 #include <vector>
 
@@ -34,6 +35,20 @@ void parallelFor(int count, int threads, const Body& body) {
   for (int w = 1; w < workers; ++w) pool.emplace_back(run);
   run();
   for (std::thread& t : pool) t.join();
+}
+
+// Sorts [first, last) by `less`, which must be a strict total order (no two elements equivalent), in a piece
+// per thread (at least minPiece elements each) merged after: there is only one sorted order then, so the
+// result does not depend on the thread count.
+template <typename Iterator, typename Less>
+void parallelSort(Iterator first, Iterator last, Less less, int threads, std::size_t minPiece = 8192) {
+  const auto count = static_cast<std::size_t>(last - first);
+  const int pieces = std::max(1, std::min(threads, static_cast<int>(count / std::max<std::size_t>(1, minPiece))));
+  std::vector<Iterator> bounds;
+  for (int k = 0; k <= pieces; ++k)
+    bounds.push_back(first + static_cast<std::ptrdiff_t>(count * static_cast<std::size_t>(k) / static_cast<std::size_t>(pieces)));
+  parallelFor(pieces, threads, [&](int k) { std::sort(bounds[k], bounds[k + 1], less); });
+  for (int k = 1; k < pieces; ++k) std::inplace_merge(first, bounds[k], bounds[k + 1], less);
 }
 
 }  // namespace multidir::core::detail

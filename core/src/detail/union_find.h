@@ -7,11 +7,17 @@
 #include <numeric>
 #include <vector>
 
+#include "detail/huge_pages.h"
+
 namespace multidir::core::detail {
 
 struct UnionFind {
   std::vector<std::int32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  explicit UnionFind(std::size_t n) {
+    reserveInHugePages(parent, n);  // a million-face mesh's corners: 12 MB
+    parent.resize(n);
+    std::iota(parent.begin(), parent.end(), 0);
+  }
   std::int32_t find(std::int32_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;

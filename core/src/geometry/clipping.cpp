@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "geometry/cross_section_cap.h"
+#include "detail/huge_pages.h"
 #include "detail/mesh_indices.h"
 #include "detail/union_find.h"
 #include "multidir/core/mesh/mesh_measure.h"
@@ -188,10 +189,11 @@ class PlaneSplitter {
 
   void splitFaces() {
     const std::size_t faceCount = m_solid.triangles.size();
-    m_below.triangles.reserve(faceCount);
-    m_below.origins.reserve(faceCount);
-    m_above.triangles.reserve(faceCount);
-    m_above.origins.reserve(faceCount);
+    // Huge pages (detail/huge_pages.h): only the part a side fills is ever touched, in 2 MiB faults.
+    detail::reserveInHugePages(m_below.triangles, faceCount);
+    detail::reserveInHugePages(m_below.origins, faceCount);
+    detail::reserveInHugePages(m_above.triangles, faceCount);
+    detail::reserveInHugePages(m_above.origins, faceCount);
     for (std::size_t f = 0; f < faceCount; ++f)
       splitFace(m_solid.triangles[f], m_solid.origins[f], static_cast<std::int32_t>(f));
   }

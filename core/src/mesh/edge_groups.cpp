@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "detail/huge_pages.h"
+
 namespace multidir::core::detail {
 
 EdgeGroups edgeGroups(const TriangleMesh& mesh) {
@@ -15,14 +17,16 @@ EdgeGroups edgeGroups(const TriangleMesh& mesh) {
   for (std::uint32_t h = 0; h < halfEdgeCount; ++h) ++bucketStart[static_cast<std::size_t>(lower(h)) + 1];
   for (std::size_t v = 0; v < vertexCount; ++v) bucketStart[v + 1] += bucketStart[v];
   EdgeGroups out;
+  reserveInHugePages(out.halfEdges, halfEdgeCount);
   out.halfEdges.resize(halfEdgeCount);
   {
     std::vector<std::uint32_t> next(bucketStart.begin(), bucketStart.end() - 1);
     for (std::uint32_t h = 0; h < halfEdgeCount; ++h) out.halfEdges[next[static_cast<std::size_t>(lower(h))]++] = h;
   }
   // Inside a bucket (a vertex's edges to higher vertices, a handful), by the higher vertex.
+  reserveInHugePages(out.groupOfHalfEdge, halfEdgeCount);
   out.groupOfHalfEdge.resize(halfEdgeCount);
-  out.groupStart.reserve(halfEdgeCount / 2 + 1);
+  reserveInHugePages(out.groupStart, halfEdgeCount / 2 + 1);
   for (std::size_t v = 0; v < vertexCount; ++v) {
     const auto first = out.halfEdges.begin() + bucketStart[v], last = out.halfEdges.begin() + bucketStart[v + 1];
     std::sort(first, last, [&](std::uint32_t x, std::uint32_t y) {

@@ -5,12 +5,16 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <queue>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "detail/flat_index.h"
+#include "detail/huge_pages.h"
+#include "detail/parallel.h"
 #include "detail/union_find.h"
 #include "detail/edge_key.h"
 #include "mesh/edge_groups.h"
@@ -21,6 +25,7 @@
 namespace multidir::core {
 namespace {
 
+using detail::FlatIndex;
 using detail::joinIndices;
 using detail::withThousands;
 
@@ -69,33 +74,15 @@ std::string firstList(const std::string& what, const std::vector<std::int64_t>& 
   return " (first: " + what + " " + joinIndices(first) + (count > first.size() ? ", ..." : "") + ")";
 }
 
-// Open addressing over 64-bit hashes, for the welding below: an unordered_map allocates a node per entry, which
-// is most of the cost of loading a million-triangle STL.
-class FlatIndex {
- public:
-  explicit FlatIndex(std::size_t entries) {
-    std::size_t capacity = 16;
-    while (capacity < 2 * entries) capacity *= 2;
-    m_slots.assign(capacity, -1);
-    m_mask = capacity - 1;
+// A point's coordinates as bits for hashing, -0 as +0 (they compare equal).
+std::array<std::int64_t, 3> bitsOf(const Vec3& p) {
+  std::array<std::int64_t, 3> bits{};
+  for (int i = 0; i < 3; ++i) {
+    const double c = p[i] == 0.0 ? 0.0 : p[i];
+    std::memcpy(&bits[static_cast<std::size_t>(i)], &c, sizeof(double));
   }
-  // The slot where `matches` holds for the stored value, or the empty slot where it would go.
-  template <typename Matches>
-  std::int32_t& find(std::uint64_t hash, Matches matches) {
-    for (std::size_t i = mix(hash) & m_mask;; i = (i + 1) & m_mask)
-      if (m_slots[i] < 0 || matches(m_slots[i])) return m_slots[i];
-  }
-
- private:
-  static std::size_t mix(std::uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    return static_cast<std::size_t>(h);
-  }
-  std::vector<std::int32_t> m_slots;
-  std::size_t m_mask = 0;
-};
+  return bits;
+}
 
 std::uint64_t hashOf(const std::array<std::int64_t, 3>& c) {
   std::uint64_t h = 1469598103934665603ull;
@@ -103,27 +90,97 @@ std::uint64_t hashOf(const std::array<std::int64_t, 3>& c) {
   return h;
 }
 
+// The points' exact repeats are found on threads, each of kWeldPartitions slices of the hash space by itself
+// in vertex order, so the answer does not depend on the thread count; a slice's table is small enough to stay
+// in cache, where one table for two million STL corners would miss on every probe.
+constexpr int kWeldPartitions = 64;
+constexpr std::size_t kWeldBlock = 16384;  // points per task of the loops over all of them
+
+// For every used point, the first used point with exactly its coordinates (itself for a first occurrence;
+// -0 and +0 are one coordinate); -1 for unused points. Also the largest |coordinate| of a used point.
+std::vector<std::int32_t> firstEqualPoints(const std::vector<Vec3>& points, const std::vector<char>& used,
+                                           double& maxAbs) {
+  const int threads = detail::resolveThreadCount(0);
+  const std::size_t count = points.size();
+  const int blocks = static_cast<int>((count + kWeldBlock - 1) / kWeldBlock);
+  auto blockRange = [&](int block) {
+    const std::size_t begin = static_cast<std::size_t>(block) * kWeldBlock;
+    return std::make_pair(begin, std::min(count, begin + kWeldBlock));
+  };
+  // Each point's slice; each block's count per slice and largest coordinate.
+  std::vector<std::uint8_t> sliceOf(count);
+  std::vector<std::size_t> counts(static_cast<std::size_t>(blocks) * kWeldPartitions, 0);
+  std::vector<double> blockMax(static_cast<std::size_t>(blocks), 0.0);
+  detail::parallelFor(blocks, threads, [&](int block) {
+    const auto [begin, end] = blockRange(block);
+    std::size_t* blockCounts = &counts[static_cast<std::size_t>(block) * kWeldPartitions];
+    double largest = 0.0;
+    for (std::size_t v = begin; v < end; ++v) {
+      if (!used[v]) continue;
+      largest = std::max(largest, points[v].cwiseAbs().maxCoeff());
+      // The top 6 bits of the mixed hash: 64 slices (the table inside a slice uses the low bits).
+      sliceOf[v] = static_cast<std::uint8_t>(FlatIndex::mix(hashOf(bitsOf(points[v]))) >> 58);
+      ++blockCounts[sliceOf[v]];
+    }
+    blockMax[static_cast<std::size_t>(block)] = largest;
+  });
+  maxAbs = 0.0;
+  for (const double m : blockMax) maxAbs = std::max(maxAbs, m);
+  // The used points of each slice, in vertex order (a counting sort: slice-major, then block, then vertex).
+  std::vector<std::size_t> sliceStart(kWeldPartitions + 1, 0);
+  std::vector<std::size_t> offsets(counts.size());
+  {
+    std::size_t next = 0;
+    for (int slice = 0; slice < kWeldPartitions; ++slice) {
+      sliceStart[static_cast<std::size_t>(slice)] = next;
+      for (int block = 0; block < blocks; ++block) {
+        const std::size_t i = static_cast<std::size_t>(block) * kWeldPartitions + static_cast<std::size_t>(slice);
+        offsets[i] = next;
+        next += counts[i];
+      }
+    }
+    sliceStart[kWeldPartitions] = next;
+  }
+  std::vector<std::int32_t> order;
+  detail::reserveInHugePages(order, sliceStart[kWeldPartitions]);
+  order.resize(sliceStart[kWeldPartitions]);
+  detail::parallelFor(blocks, threads, [&](int block) {
+    const auto [begin, end] = blockRange(block);
+    std::size_t* blockOffsets = &offsets[static_cast<std::size_t>(block) * kWeldPartitions];
+    for (std::size_t v = begin; v < end; ++v)
+      if (used[v]) order[blockOffsets[sliceOf[v]]++] = static_cast<std::int32_t>(v);
+  });
+  std::vector<std::int32_t> first = detail::filledInHugePages<std::int32_t>(count, -1);
+  detail::parallelFor(kWeldPartitions, threads, [&](int slice) {
+    const std::size_t begin = sliceStart[static_cast<std::size_t>(slice)];
+    const std::size_t end = sliceStart[static_cast<std::size_t>(slice) + 1];
+    FlatIndex seen(end - begin);
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto v = static_cast<std::size_t>(order[i]);
+      const Vec3& p = points[v];
+      std::int32_t& same = seen.find(hashOf(bitsOf(p)), [&](std::int32_t w) {
+        const Vec3& q = points[static_cast<std::size_t>(w)];
+        return q.x() == p.x() && q.y() == p.y() && q.z() == p.z();
+      });
+      if (same < 0) same = static_cast<std::int32_t>(v);
+      first[v] = same;
+    }
+  });
+  return first;
+}
+
 // Welds vertices closer than `tolerance` (Euclidean) to the earliest kept vertex that close, through a grid
-// of cells. Returns the new index of every vertex (-1 for vertices no face uses). A vertex equal to one
-// already kept (an STL repeats every corner) is found by its exact coordinates first: no kept vertex other than
-// that one can lie within the tolerance, since kept vertices are farther apart than it.
+// of cells. Returns the new index of every vertex (-1 for vertices no face uses). A vertex equal to an earlier
+// one (an STL repeats every corner) goes where that one went: no kept vertex earlier than that one's choice can
+// lie within the tolerance of either, and later ones are later. Only first occurrences search the grid.
 std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const std::vector<char>& used,
                                        double tolerance, std::vector<Vec3>& welded, std::size_t& merged,
                                        std::vector<std::int64_t>& firstMerged) {
-  std::vector<std::int32_t> map(points.size(), -1);
-  // With a zero tolerance, or coordinates too large for integer cells, only identical points merge.
+  std::vector<std::int32_t> map = detail::filledInHugePages<std::int32_t>(points.size(), -1);
   double maxAbs = 0.0;
-  for (std::size_t v = 0; v < points.size(); ++v)
-    if (used[v]) maxAbs = std::max(maxAbs, points[v].cwiseAbs().maxCoeff());
+  const std::vector<std::int32_t> firstEqual = firstEqualPoints(points, used, maxAbs);
+  // With a zero tolerance, or coordinates too large for integer cells, only identical points merge.
   const bool exactOnly = !(tolerance > 0.0) || maxAbs / tolerance > 1e15;
-  auto bitsOf = [](const Vec3& p) {
-    std::array<std::int64_t, 3> bits{};
-    for (int i = 0; i < 3; ++i) {
-      const double c = p[i] == 0.0 ? 0.0 : p[i];  // -0 and +0 are one point
-      std::memcpy(&bits[static_cast<std::size_t>(i)], &c, sizeof(double));
-    }
-    return bits;
-  };
   // Cells twice the tolerance wide: a point lies within the tolerance of at most one side of its cell along
   // each axis, so whatever is that close to it lies in its cell or the next one on that side (8 cells, not 27).
   const double cellSize = 2.0 * tolerance;
@@ -132,28 +189,25 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
             static_cast<std::int64_t>(std::floor(p.y() / cellSize)),
             static_cast<std::int64_t>(std::floor(p.z() / cellSize))};
   };
-  const auto usedCount = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
-  FlatIndex exact(usedCount);
+  std::size_t distinct = 0;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (firstEqual[v] == static_cast<std::int32_t>(v)) ++distinct;
   // Kept vertices by cell: the first of each cell in the index, the rest chained in the order they came.
-  FlatIndex cells(exactOnly ? 0 : usedCount);
+  FlatIndex cells(exactOnly ? 0 : distinct);
   std::vector<std::array<std::int64_t, 3>> cellOfKept;
   std::vector<std::int32_t> nextInCell, lastInCell;
-  // An STL repeats each corner about six times: a sixth is a good first guess of the kept vertices.
-  welded.reserve(usedCount / 6 + 16);
+  detail::reserveInHugePages(welded, distinct);
   if (!exactOnly) {
-    cellOfKept.reserve(usedCount / 6 + 16);
-    nextInCell.reserve(usedCount / 6 + 16);
-    lastInCell.reserve(usedCount / 6 + 16);
+    detail::reserveInHugePages(cellOfKept, distinct);
+    nextInCell.reserve(distinct);
+    lastInCell.reserve(distinct);
   }
   const double toleranceSquared = tolerance * tolerance;
   for (std::size_t v = 0; v < points.size(); ++v) {
     if (!used[v]) continue;
     const Vec3& p = points[v];
-    std::int32_t& same = exact.find(hashOf(bitsOf(p)), [&](std::int32_t w) {
-      const Vec3& q = welded[static_cast<std::size_t>(w)];
-      return q.x() == p.x() && q.y() == p.y() && q.z() == p.z();
-    });
-    std::int32_t found = same;
+    std::int32_t found = -1;
+    if (const auto earlier = static_cast<std::size_t>(firstEqual[v]); earlier != v) found = map[earlier];
     std::array<std::int64_t, 3> cell{};
     if (found < 0 && !exactOnly) {
       cell = cellOf(p);
@@ -177,7 +231,6 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
     }
     const auto index = static_cast<std::int32_t>(welded.size());
     map[v] = index;
-    same = index;
     welded.push_back(p);
     if (exactOnly) continue;
     cellOfKept.push_back(cell);
@@ -309,6 +362,8 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   std::size_t degenerate = soup.droppedByReader;
   std::vector<std::int64_t> firstDegenerate;
   std::vector<std::int64_t> sourceFace;  // soup face index of each kept face
+  detail::reserveInHugePages(mesh.triangles, soup.triangles.size());
+  detail::reserveInHugePages(sourceFace, soup.triangles.size());
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     Triangle t;
     for (int k = 0; k < 3; ++k) t[static_cast<std::size_t>(k)] = newIndex[static_cast<std::size_t>(soup.triangles[f][static_cast<std::size_t>(k)])];
@@ -338,12 +393,15 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   // Duplicate faces: the same three corners, in any order.
   {
     // Sorted by corners, then by face: in each run of equal corners every face but the first repeats it.
-    std::vector<std::pair<std::array<std::int32_t, 3>, std::uint32_t>> byCorners(mesh.triangles.size());
+    std::vector<std::pair<std::array<std::int32_t, 3>, std::uint32_t>> byCorners;
+    detail::reserveInHugePages(byCorners, mesh.triangles.size());
+    byCorners.resize(mesh.triangles.size());
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
       byCorners[f] = {mesh.triangles[f], static_cast<std::uint32_t>(f)};
       std::sort(byCorners[f].first.begin(), byCorners[f].first.end());
     }
-    std::sort(byCorners.begin(), byCorners.end());
+    // (corners, face) pairs are all different: the one sorted order, on threads.
+    detail::parallelSort(byCorners.begin(), byCorners.end(), std::less<>(), detail::resolveThreadCount(0));
     std::vector<char> repeats(mesh.triangles.size(), 0);
     for (std::size_t i = 1; i < byCorners.size(); ++i)
       if (byCorners[i].first == byCorners[i - 1].first) repeats[byCorners[i].second] = 1;
@@ -351,8 +409,8 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
     std::vector<std::int64_t> first;
     std::vector<Triangle> kept;
     std::vector<std::int64_t> keptSource;
-    kept.reserve(mesh.triangles.size());
-    keptSource.reserve(mesh.triangles.size());
+    detail::reserveInHugePages(kept, mesh.triangles.size());
+    detail::reserveInHugePages(keptSource, mesh.triangles.size());
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
       if (repeats[f]) {
         if (duplicates++ < kFirstFew) first.push_back(sourceFace[f]);
@@ -401,8 +459,12 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   // Orientation: walk each shell across its edges so that neighbours traverse their shared edge in
   // opposite directions; flip the smaller part of each shell.
   const std::size_t faceCount = mesh.triangles.size();
-  std::vector<std::array<std::int32_t, 3>> neighbour(faceCount);
-  std::vector<std::array<bool, 3>> sameDirection(faceCount);
+  std::vector<std::array<std::int32_t, 3>> neighbour;
+  detail::reserveInHugePages(neighbour, faceCount);
+  neighbour.resize(faceCount);
+  std::vector<std::array<bool, 3>> sameDirection;
+  detail::reserveInHugePages(sameDirection, faceCount);
+  sameDirection.resize(faceCount);
   for (std::uint32_t h = 0; h < faceCount * 3; ++h) {
     // Every edge has two faces here (checked above): the other half-edge of its group.
     const std::uint32_t first = groups.groupStart[groups.groupOfHalfEdge[h]];

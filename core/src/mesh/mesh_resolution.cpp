@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
@@ -44,21 +45,35 @@ Result<TriangleMesh> subdivided(const TriangleMesh& mesh, int levels) {
 }
 
 Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm,
-                                   double maxVolumeChangePercent) {
+                                   double maxVolumeChangePercent, int threads) {
   if (targetFaces < 100)
     return Error{ErrorCode::InvalidParameter, "decimate to at least 100 faces", "decimate"};
   if (!(freeToleranceMm >= 0.0 && std::isfinite(freeToleranceMm)))
     return Error{ErrorCode::InvalidParameter, "the decimation tolerance must be a finite length >= 0 mm", "decimate"};
-  const EdgeCensus census = edgeCensus(mesh);
-  if (!census.closedOriented())
+  if (threads < 0) return Error{ErrorCode::InvalidParameter, "the decimation's threads must be >= 0 (0: all)", "decimate"};
+  // The decimator checks the input is a closed oriented 2-manifold on its own (a mesh from loadMesh is, but a
+  // caller may pass any mesh), from the vertex lists it builds anyway; the census, which sorts every
+  // half-edge, only runs to say what is wrong.
+  std::optional<TriangleMesh> simplified = detail::quadricDecimation(mesh, targetFaces, freeToleranceMm, threads);
+  if (!simplified) {
+    const std::int32_t vertexCount = static_cast<std::int32_t>(mesh.vertices.size());
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for (const std::int32_t v : mesh.triangles[f])
+        if (v < 0 || v >= vertexCount)
+          return Error{ErrorCode::InvalidParameter,
+                       "face " + std::to_string(f) + " names vertex " + std::to_string(v) + " of " +
+                           std::to_string(vertexCount) + "; load the mesh with loadMesh",
+                       "decimate"};
+    const EdgeCensus census = edgeCensus(mesh);
     return Error{ErrorCode::NotManifold,
                  "only a closed, consistently oriented 2-manifold can be decimated (" + std::to_string(census.boundary) +
                      " open, " + std::to_string(census.nonManifold) + " non-manifold, " +
                      std::to_string(census.misoriented) + " misoriented edges, " +
                      std::to_string(census.nonManifoldVertices) + " non-manifold vertices); repair the mesh first",
                  "decimate"};
+  }
   DecimationResult out;
-  out.mesh = detail::quadricDecimation(mesh, targetFaces, freeToleranceMm);
+  out.mesh = std::move(*simplified);
   const double before = signedVolume(mesh), after = signedVolume(out.mesh);
   out.volumeChangePercent = before > 0 ? 100.0 * std::abs(after - before) / before : 100.0;
   if (!edgeCensus(out.mesh).closedOriented())

@@ -11,15 +11,23 @@
 // turns over (its normal turns by at most 60 degrees) and no face becomes a sliver thinner than it was or
 // than kMinQuality (slivers would make the search's clips refuse cuts through them).
 #include <cstddef>
+#include <optional>
 
 #include "multidir/core/mesh/triangle_mesh.h"
 
 namespace multidir::core::detail {
 
-// `mesh` must be a closed, consistently oriented 2-manifold (not checked here). Returns the decimated mesh
-// (origins reset) with at most targetFaces faces, or as few as the rules above allow; below targetFaces it
-// goes on with the collapses that move the surface by at most freeToleranceMm (root mean square over the
-// faces around the edge), down to 100 faces.
-TriangleMesh quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm);
+// Returns the decimated mesh (origins reset) with at most targetFaces faces, or as few as the rules above
+// allow; below targetFaces it goes on with the collapses that move the surface by at most freeToleranceMm
+// (root mean square over the faces around the edge), down to 100 faces. Returns nothing when `mesh` is not a
+// closed, consistently oriented 2-manifold with every index in range: that is checked first, from each
+// vertex's faces (the decimation needs those lists anyway), with the same verdict as
+// edgeCensus(mesh).closedOriented().
+//
+// The scoring of the edges, the vertex quadrics and the check run on `threads` threads
+// (0: all); each item writes its own slot and every sum keeps its order, so the result is the same, bit for
+// bit, for any thread count. The collapses themselves run in order on one thread.
+std::optional<TriangleMesh> quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm,
+                                              int threads);
 
 }  // namespace multidir::core::detail

@@ -7,6 +7,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "detail/flat_index.h"
+#include "detail/huge_pages.h"
+
 namespace multidir::core::detail {
 namespace {
 
@@ -22,19 +25,25 @@ FloatBits toFloat(const Vec3& p) {
   return bits;
 }
 
-// For every vertex of `subset` (indices into mesh.vertices, ascending), the first vertex of the subset (lowest
-// index) with the same float corner, by position in `subset`. Sorting, not hashing: a million-face region has
-// half a million vertices, and a node per entry cost more than the sort.
+// For every vertex of `subset` (indices into mesh.vertices, ascending), the first of the subset with the same
+// float corner, by position in `subset`, through a flat hash in subset order (sorting the corners cost three
+// times as much at half a million vertices).
 std::vector<std::int32_t> firstWithSameFloatCorner(const TriangleMesh& mesh, const std::vector<std::int32_t>& subset) {
-  std::vector<std::pair<FloatBits, std::int32_t>> corners(subset.size());
-  for (std::size_t i = 0; i < subset.size(); ++i)
-    corners[i] = {toFloat(mesh.vertices[static_cast<std::size_t>(subset[i])]), static_cast<std::int32_t>(i)};
-  std::sort(corners.begin(), corners.end());
+  std::vector<FloatBits> corners;
+  reserveInHugePages(corners, subset.size());
+  for (const std::int32_t v : subset) corners.push_back(toFloat(mesh.vertices[static_cast<std::size_t>(v)]));
+  FlatIndex index(corners.size());
   std::vector<std::int32_t> first(subset.size());
-  for (std::size_t i = 0; i < corners.size(); ++i)
-    first[static_cast<std::size_t>(corners[i].second)] =
-        i > 0 && corners[i].first == corners[i - 1].first ? first[static_cast<std::size_t>(corners[i - 1].second)]
-                                                           : corners[i].second;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const FloatBits& bits = corners[i];
+    const std::uint64_t hash =
+        (static_cast<std::uint64_t>(bits[0]) * 0x9e3779b97f4a7c15ull) ^
+        (static_cast<std::uint64_t>(bits[1]) * 0xc2b2ae3d27d4eb4full) ^ (static_cast<std::uint64_t>(bits[2]) << 17);
+    std::int32_t& slot =
+        index.find(hash, [&](std::int32_t w) { return corners[static_cast<std::size_t>(w)] == bits; });
+    if (slot < 0) slot = static_cast<std::int32_t>(i);
+    first[i] = slot;
+  }
   return first;
 }
 
@@ -64,8 +73,8 @@ std::size_t cornersMergedAtFloatPrecisionNearPlane(const TriangleMesh& mesh, con
                                                    double planeToleranceMm) {
   // Rounding a double to float moves each coordinate by at most |x| 2^-24, so two points with one float image
   // are at most 2 sqrt(3) M 2^-24 apart (M: the largest coordinate). Every vertex the clip made or moved lies
-  // within the tolerance of the plane, so any pair with one of them has both within this band (with a margin
-  // of 2); pairs of two unchanged vertices cannot merge, by the precondition.
+  // on the plane (to rounding), so any pair with one of them has both within this band (with a margin of 2);
+  // pairs of two unchanged vertices cannot merge, by the precondition.
   double largest = 0.0;
   for (const Vec3& v : mesh.vertices) largest = std::max(largest, v.cwiseAbs().maxCoeff());
   const double band = planeToleranceMm + 4.0 * std::sqrt(3.0) * std::ldexp(largest, -24);

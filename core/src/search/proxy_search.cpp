@@ -32,6 +32,8 @@ constexpr double kSettleStepMm = 0.05;
 // scan's or subdivided model's redundant faces go (the search's planes are a millimetre apart, its volumes
 // and areas are measured on the full mesh in the end), its real detail stays.
 constexpr double kProxyToleranceMm = 0.01;
+// A proxy whose volume differs more than this from the model's is not faithful: the full mesh is searched.
+constexpr double kProxyMaxVolumeChangePercent = 0.5;
 
 std::string planeName(std::size_t index) { return "plane " + std::to_string(index + 1); }
 
@@ -50,7 +52,8 @@ std::string millimetres(double value) {
 Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
                                             const SearchOptions& options, JobContext& job, const ProxySearchRun& search) {
   const auto start = std::chrono::steady_clock::now();
-  const auto proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kProxyToleranceMm);
+  const auto proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kProxyToleranceMm,
+                               kProxyMaxVolumeChangePercent, options.threads);
   if (!proxy.ok()) {
     SearchOptions full = options;
     full.proxyFaces = 0;
@@ -79,6 +82,9 @@ Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const Mac
   MachineSpec chosen = machine;
   chosen.rotationAxis = proxyPlan.rotationAxis;  // an axis search's choice
   SearchEngine engine(model, chosen, evaluation, job, platform);
+  // decimated() accepted the model, so it is a closed, oriented 2-manifold (the verdict clipByPlane's check
+  // would reach), and the callers' checkSearchInputs found its volume positive.
+  engine.trustModelClosed();
   std::vector<std::string> notes;
   bool dropped = false;
   std::shared_ptr<const SearchNode> node = engine.root();

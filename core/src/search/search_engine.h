@@ -30,6 +30,11 @@ class SearchEngine {
 
   std::shared_ptr<const SearchNode> root() const { return m_root; }
 
+  // The caller has already verified that the model is a closed, consistently oriented 2-manifold with a
+  // positive volume (the proxy search: decimated() checked the same mesh): its clips then skip that check,
+  // which is half the time of a clip of a million faces. Debug builds check anyway.
+  void trustModelClosed() { m_modelChecked = true; }
+
   // Every admissible candidate of a node (Criterion III by construction, minimal volume above), in a
   // fixed order (normal, then offset). Sets `cancelled` and returns early when the job is cancelled.
   std::vector<ScoredCandidate> score(const SearchNode& node, int beamIndex, bool& cancelled);

@@ -23,10 +23,14 @@ struct DecimationResult {
   double volumeChangePercent = 0.0;  // |V_decimated - V| / V, in percent
 };
 
-// Errors: InvalidParameter (targetFaces < 100), NotManifold (not a closed oriented 2-manifold), CheckFailed
-// when the result is not closed any more or its volume differs by more than maxVolumeChangePercent: then
-// the model is not one to decimate, and the caller uses the full mesh.
+// `mesh` should be a checked mesh (loadMesh's); any other is checked to be a closed, consistently oriented
+// 2-manifold first, from the vertex lists the decimation builds anyway (cheaper than edgeCensus, same verdict).
+// Runs on `threads` threads (0: all hardware threads); the result is the same, bit for bit, for any count.
+// Errors: InvalidParameter (targetFaces < 100, threads < 0, a face naming a vertex that does not exist),
+// NotManifold (not a closed oriented 2-manifold; the message has edgeCensus's counts), CheckFailed when the
+// result is not closed any more or its volume differs by more than maxVolumeChangePercent: then the model is
+// not one to decimate, and the caller uses the full mesh.
 Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm = 0.0,
-                                   double maxVolumeChangePercent = 0.5);
+                                   double maxVolumeChangePercent = 0.5, int threads = 0);
 
 }  // namespace multidir::core
