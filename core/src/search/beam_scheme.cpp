@@ -74,6 +74,9 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
     const SearchProgressSink scaleSink = [&, s](const SearchProgress& p) {
       if (!sink) return;
       std::lock_guard<std::mutex> lock(progressMutex);
+      // Another scale may have finished a level while the sink was cancelling the job: nothing is reported
+      // after a cancel (checked under the lock, so a sink that cancels is the last one called).
+      if (engine.job().isCancelled()) return;
       scaleLevels[static_cast<std::size_t>(s)] = p.level;
       scaleBeams[static_cast<std::size_t>(s)] = p.beamsAlive;
       scaleScored[static_cast<std::size_t>(s)] = p.candidatesScored;
