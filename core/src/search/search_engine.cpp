@@ -228,10 +228,11 @@ std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std:
   if (certainlyLeavesFloatingPiece(*node->remaining, plane, m_machine.up,
                                    m_platform.heightMm + m_options.platformToleranceMm, m_clipMarginMm))
     return std::nullopt;
-  auto clipped = clipSavably(*node->remaining, plane, node->level);
+  bool keepsFloat = true;
+  auto clipped = clipSavably(*node->remaining, plane, node->level, keepsFloat);
   if (!clipped.ok() || clipped->below.empty() || clipped->above.empty()) return std::nullopt;
   if (!standsOnPlatform(clipped->below)) return std::nullopt;
-  if (!unprintableReason(*clipped, plane).empty()) return std::nullopt;
+  if (!unprintableReason(*clipped, plane, keepsFloat).empty()) return std::nullopt;
   // Measured on the region itself, so J_G is what the saved region gives; the sweep ranked the candidate and
   // agrees with this up to the few micrometres the plane was moved off vertices.
   const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(RegionBase::CutPlane));
@@ -250,7 +251,8 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
   if (!planeClearsPlatform(plane, m_platform, m_machine.up))
     return Error{ErrorCode::InvalidParameter,
                  "the plane cuts the platform region (Criterion III): move it up or tilt it less", where};
-  auto clipped = clipSavably(*node->remaining, plane, node->level);
+  bool keepsFloat = true;
+  auto clipped = clipSavably(*node->remaining, plane, node->level, keepsFloat);
   if (!clipped.ok()) return Error{clipped.error().code, clipped.error().message, where};
   if (clipped->above.empty())
     return Error{ErrorCode::InvalidParameter, "the plane passes above what is left of the model: it cuts nothing off",
@@ -262,7 +264,7 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
                  "after this cut a piece below the plane no longer stands on the platform (Criterion II): move or "
                  "tilt the plane so the part below stays in one piece on the platform",
                  where};
-  if (const std::string why = unprintableReason(*clipped, plane); !why.empty())
+  if (const std::string why = unprintableReason(*clipped, plane, keepsFloat); !why.empty())
     return Error{ErrorCode::InvalidParameter, why, where};
   const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(RegionBase::CutPlane));
   if (!risky.ok()) return Error{risky.error().code, risky.error().message, where};
@@ -300,7 +302,7 @@ bool SearchEngine::keepsFloatPrecision(const ClipResult& clipped, const Plane& p
                                     cornersMergedAtFloatPrecisionNearPlane(clipped.below, plane, tolerance) == 0);
 }
 
-Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& plane, int planeId) {
+Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& plane, int planeId, bool& keepsFloat) {
   // Where two cuts cross near an edge, a cut vertex can land within float rounding of another one even with
   // the plane off every vertex; a few nearby placements (2, 4, 8 clearances down, then up) avoid it.
   const Plane first = plane;
@@ -321,15 +323,17 @@ Result<ClipResult> SearchEngine::clipSavably(const TriangleMesh& solid, Plane& p
     if (model && clipped.ok()) m_modelChecked = true;
     if (!clipped.ok() || keepsFloatPrecision(*clipped, tried)) {
       plane = tried;
+      keepsFloat = true;
       return clipped;
     }
     if (!firstClip) firstClip = std::move(clipped);
   }
   plane = first;
+  keepsFloat = false;
   return std::move(*firstClip);  // unprintableReason names what is wrong with it
 }
 
-std::string SearchEngine::unprintableReason(const ClipResult& clipped, const Plane& plane) const {
+std::string SearchEngine::unprintableReason(const ClipResult& clipped, const Plane& plane, bool keepsFloat) const {
   const double minHeight = m_options.minRegionHeightMm;
   const double regionHeight = heightAbove(clipped.above, plane.normal, plane.offset);
   if (regionHeight < minHeight)
@@ -339,7 +343,7 @@ std::string SearchEngine::unprintableReason(const ClipResult& clipped, const Pla
   if (platformHeight < minHeight)
     return "the part left on the platform would be only " + millimetres(platformHeight) + " tall (at least " +
            millimetres(minHeight) + " are needed): move the plane up or tilt it less";
-  if (!keepsFloatPrecision(clipped, plane))
+  if (!keepsFloat)
     return "the plane passes so close to the model's vertices that a binary STL could not keep the cut closed: move "
            "it slightly";
   return {};

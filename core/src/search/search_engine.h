@@ -89,11 +89,13 @@ class SearchEngine {
  private:
   OverhangOptions overhangOptions(RegionBase base) const;
   // Clips by `plane`, moved a few micrometres more where the first placement would not survive a binary STL;
-  // `plane` becomes the placement used.
-  Result<ClipResult> clipSavably(const TriangleMesh& solid, Plane& plane, int planeId);
+  // `plane` becomes the placement used. `keepsFloat` says whether the clip returned survives it (false: no
+  // placement did, and the first clip is returned for unprintableReason to refuse).
+  Result<ClipResult> clipSavably(const TriangleMesh& solid, Plane& plane, int planeId, bool& keepsFloat);
   bool keepsFloatPrecision(const ClipResult& clipped, const Plane& plane) const;
-  // Why a clip's two parts cannot be regions (too thin, not savable), or empty when they can.
-  std::string unprintableReason(const ClipResult& clipped, const Plane& plane) const;
+  // Why a clip's two parts cannot be regions (too thin, not savable: clipSavably's `keepsFloat`), or empty
+  // when they can.
+  std::string unprintableReason(const ClipResult& clipped, const Plane& plane, bool keepsFloat) const;
   std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining) const;
   std::shared_ptr<SearchNode> makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
                                         ClipResult clipped, double regionRiskyMm2) const;
