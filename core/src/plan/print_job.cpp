@@ -28,8 +28,6 @@ constexpr const char* kPrintJobFileName = "print-job.json";
 constexpr double kRealizableToleranceRadians = 1e-4;
 // How far a direction may be from up, or from its base plane's normal, and still be that direction.
 constexpr double kSameDirectionTolerance = 1e-6;
-// Below this |d x up| a 5-DOF direction is along up or straight down: the tilt axis is not defined by it.
-constexpr double kParallelSine = 1e-12;
 
 Error inconsistent(const std::string& what) { return Error{ErrorCode::InvalidParameter, what, "print job"}; }
 
@@ -214,26 +212,7 @@ Status checkJob(const PrintJob& job) {
 }  // namespace
 
 Eigen::Isometry3d machinePose(const MachineSpec& machine, const Vec3& printingDirection, const Vec3& pivot) {
-  const Vec3 d = printingDirection.normalized();
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  switch (machine.kind) {
-    case MachineKind::ThreeAxis:
-      break;
-    case MachineKind::RotaryPlatform:
-      rotation = Eigen::AngleAxisd(-degToRad(machineAnglesFor(machine, d).rotaryDegrees), machine.rotationAxis)
-                     .toRotationMatrix();
-      break;
-    case MachineKind::TiltRotate: {
-      const Vec3 axis = d.cross(machine.up);
-      const double sine = axis.norm();
-      const double cosine = d.dot(machine.up);
-      if (sine > kParallelSine)
-        rotation = Eigen::AngleAxisd(std::atan2(sine, cosine), axis / sine).toRotationMatrix();
-      else if (cosine < 0)
-        rotation = Eigen::AngleAxisd(kPi, machine.up.cross(platformFrameX(machine.up))).toRotationMatrix();
-      break;
-    }
-  }
+  const Eigen::Matrix3d rotation = platformRotation(machine, machineAnglesFor(machine, printingDirection.normalized()));
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = rotation;
   pose.translation() = pivot - rotation * pivot;

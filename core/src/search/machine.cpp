@@ -108,6 +108,23 @@ MachineAngles machineAnglesFor(const MachineSpec& spec, const Vec3& direction) {
   return angles;
 }
 
+Eigen::Matrix3d platformRotation(const MachineSpec& spec, const MachineAngles& angles) {
+  switch (spec.kind) {
+    case MachineKind::ThreeAxis:
+      return Eigen::Matrix3d::Identity();
+    case MachineKind::RotaryPlatform:
+      return Eigen::AngleAxisd(-degToRad(angles.rotaryDegrees), spec.rotationAxis.normalized()).toRotationMatrix();
+    case MachineKind::TiltRotate: {
+      const Vec3 x = platformFrameX(spec.up);
+      const Vec3 y = spec.up.cross(x);
+      const double azimuth = degToRad(angles.azimuthDegrees);
+      const Vec3 axis = std::sin(azimuth) * x - std::cos(azimuth) * y;
+      return Eigen::AngleAxisd(degToRad(angles.tiltDegrees), axis).toRotationMatrix();
+    }
+  }
+  return Eigen::Matrix3d::Identity();
+}
+
 bool isRealizable(const MachineSpec& spec, const Vec3& direction, double toleranceRadians) {
   const Vec3 d = direction.normalized();
   const double tolDeg = radToDeg(toleranceRadians);

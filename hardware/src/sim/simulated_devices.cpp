@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "modbus/register_maps.h"
+#include "sim/platform_kinematics.h"
 
 namespace multidir::hardware::sim {
 
@@ -13,13 +14,6 @@ namespace rb = regs::robot;
 namespace {
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-
-double wrap180(double a) {
-  a = std::fmod(a, 360.0);
-  if (a <= -180.0) a += 360.0;
-  if (a > 180.0) a -= 360.0;
-  return a;
-}
 
 }  // namespace
 
@@ -139,6 +133,7 @@ void RotaryController::publish() {
 SimulatedRotaryState RotaryController::state() const {
   SimulatedRotaryState s;
   s.angleDegrees = m_angle;
+  s.platformOrientation = rotaryShaftOrientation(m_angle, m_options.rotaryShaftAxis);
   s.targetAngleDegrees = m_target;
   s.enabled = m_enabled;
   s.homed = m_homed;
@@ -166,8 +161,7 @@ void RobotProgram::command(std::uint16_t code) {
         m_fault = rb::kFaultBeyondLimits;
         return;
       }
-      m_targetTilt = tilt;
-      m_targetAzimuth = azimuth;
+      m_target = urscriptTargetOrientation(tilt, azimuth);
       m_state = rb::kStateMoving;
       break;
     }
@@ -213,20 +207,10 @@ void RobotProgram::step(Clock::time_point now) {
   }
   if (m_state == rb::kStateMoving && dt > 0) {
     const std::uint16_t percent = std::clamp<std::uint16_t>(reg(rb::kRequestSpeed), 1, 100);
-    const double advance = m_options.robotMaxSpeedDegreesPerSecond * percent / 100.0 * dt;
-    const double dTilt = m_targetTilt - m_tilt;
-    // At tilt 0 the azimuth is free: turn it while level.
-    const double dAzimuth = wrap180(m_targetAzimuth - m_azimuth);
-    const double remaining = std::max(std::abs(dTilt), std::abs(dAzimuth));
-    if (remaining <= advance) {
-      m_tilt = m_targetTilt;
-      m_azimuth = m_targetAzimuth;
-      m_state = rb::kStateReached;
-    } else {
-      const double f = advance / remaining;
-      m_tilt += dTilt * f;
-      m_azimuth = wrap180(m_azimuth + dAzimuth * f);
-    }
+    const double advance = m_options.robotMaxSpeedDegreesPerSecond * percent / 100.0 * dt * M_PI / 180.0;
+    m_orientation = turnedTowards(m_orientation, m_target, advance);
+    // The movel has ended: the TCP stands at the target orientation.
+    if (angleBetween(m_orientation, m_target) < 1e-12) m_state = rb::kStateReached;
   }
   publish();
 }
@@ -236,14 +220,17 @@ void RobotProgram::publish() {
   reg(rb::kAckSequence) = m_ack;
   reg(rb::kProgramHeartbeat) = m_heartbeat;
   reg(rb::kFaultCode) = m_fault;
-  reg(rb::kActualTilt) = regs::degreesToInt16Register(m_tilt);
-  reg(rb::kActualAzimuth) = regs::degreesToInt16Register(m_azimuth);
+  const ReportedTilt actual = urscriptReportedTilt(m_orientation);
+  reg(rb::kActualTilt) = regs::degreesToInt16Register(actual.tiltDegrees);
+  reg(rb::kActualAzimuth) = regs::degreesToInt16Register(actual.azimuthDegrees);
 }
 
 SimulatedRobotState RobotProgram::state() const {
   SimulatedRobotState s;
-  s.tiltDegrees = m_tilt;
-  s.azimuthDegrees = m_azimuth;
+  const ReportedTilt actual = urscriptReportedTilt(m_orientation);
+  s.tiltDegrees = actual.tiltDegrees;
+  s.azimuthDegrees = actual.azimuthDegrees;
+  s.platformOrientation = m_orientation;
   s.programState = m_state;
   s.faultCode = m_fault;
   s.acknowledgedSequence = m_ack;

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cstdint>
 
+#include <Eigen/Core>
+
 #include "multidir/hardware/device_simulator.h"
 
 namespace multidir::hardware::sim {
@@ -64,10 +66,8 @@ class RobotProgram {
 
   SimulatorOptions m_options;
   std::uint16_t* m_regs;
-  double m_tilt = 0.0;
-  double m_azimuth = 0.0;
-  double m_targetTilt = 0.0;
-  double m_targetAzimuth = 0.0;
+  Eigen::Matrix3d m_orientation = Eigen::Matrix3d::Identity();  // the TCP relative to p_level
+  Eigen::Matrix3d m_target = Eigen::Matrix3d::Identity();       // orientation_pose of the last move
   std::uint16_t m_state = 1;
   std::uint16_t m_fault = 0;
   std::uint16_t m_ack = 0;

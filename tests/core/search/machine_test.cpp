@@ -174,3 +174,52 @@ TEST(CandidatePlanes, RotaryNeighboursAreWholeStepsOnEitherSide) {
   // Nothing beyond the range.
   EXPECT_EQ(neighbourNormals(spec, rotaryDirection(spec, 60.0), degToRad(1.0)).size(), 1u);
 }
+
+// The pose convention (machine.h, docs/hardware.md "Pose convention"): the platform's rotation at a
+// direction's angles brings that direction to up, for 1,000 random directions of every kind.
+TEST(PlatformRotation, FiveAxisAnglesOfADirectionTurnItToUp) {
+  std::srand(7);
+  for (const Vec3& up : {Vec3(Vec3::UnitZ()), Vec3(Vec3::UnitY()), Vec3(Vec3(1, 2, -3).normalized())}) {
+    MachineSpec spec;
+    spec.kind = MachineKind::TiltRotate;
+    spec.up = up;
+    for (int i = 0; i < 1000; ++i) {
+      const Vec3 d = Vec3::Random().normalized();
+      const Eigen::Matrix3d r = platformRotation(spec, machineAnglesFor(spec, d));
+      EXPECT_LT((r * d - up).norm(), 1e-9) << d.transpose();
+      EXPECT_LT((r.transpose() * r - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+      EXPECT_NEAR(r.determinant(), 1.0, 1e-12);
+    }
+  }
+}
+
+TEST(PlatformRotation, FiveAxisPlatformTopTiltsTowardsTheOppositeAzimuth) {
+  MachineSpec spec;
+  spec.kind = MachineKind::TiltRotate;
+  MachineAngles angles;
+  angles.tiltDegrees = 30.0;
+  angles.azimuthDegrees = 60.0;
+  // The platform's normal (up in the part's frame) after the turn.
+  const Vec3 top = platformRotation(spec, angles) * spec.up;
+  EXPECT_NEAR(radToDeg(std::acos(top.z())), 30.0, 1e-9);
+  EXPECT_NEAR(radToDeg(std::atan2(top.y(), top.x())), 60.0 - 180.0, 1e-9);
+}
+
+TEST(PlatformRotation, RotaryAnglesOfADirectionTurnItToUpAndThePlatformTopTowardsUpCrossAxis) {
+  MachineSpec spec = rotary();
+  spec.rotationAxis = Vec3(1, 1, 0).normalized();
+  for (double angle = -60.0; angle <= 60.0; angle += 1.0) {
+    const Vec3 d = rotaryDirection(spec, angle);
+    const Eigen::Matrix3d r = platformRotation(spec, machineAnglesFor(spec, d));
+    EXPECT_LT((r * d - spec.up).norm(), 1e-9) << angle;
+    if (angle > 0.5) {
+      EXPECT_GT((r * spec.up).dot(spec.up.cross(spec.rotationAxis)), 0.0) << angle;
+    }
+  }
+}
+
+TEST(PlatformRotation, ThreeAxisMachineDoesNotTurn) {
+  MachineSpec spec;
+  spec.kind = MachineKind::ThreeAxis;
+  EXPECT_TRUE(platformRotation(spec, MachineAngles{}).isIdentity(0.0));
+}

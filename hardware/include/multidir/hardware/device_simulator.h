@@ -14,6 +14,7 @@
 // above 125: illegal data value; unknown function: illegal function), framed by the length field so the
 // connection stays in sync; a frame whose protocol id is not 0 (not Modbus) or whose length no Modbus
 // request can have closes that connection.
+#include <Eigen/Core>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -40,6 +41,9 @@ struct SimulatorOptions {
   double rotaryMaxAngleDegrees = 180.0;
   double robotMaxSpeedDegreesPerSecond = 90.0;  // at speed 100 %
   double robotMaxTiltDegrees = 90.0;           // the program's own limit (beyond it: fault 1)
+  // The rotary controller's shaft in the platform frame at rest (x = azimuth 0, z = the platform's normal):
+  // the machine files' rotation axis, +X for a plan decomposed about the platform frame's x.
+  Eigen::Vector3d rotaryShaftAxis = Eigen::Vector3d::UnitX();
   // The clock of commandLog()'s times (motion always runs on the system's steady clock); tests inject the
   // clock they share with the printer simulator, to compare both devices' records.
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
@@ -59,6 +63,9 @@ struct SimulatedCommandRecord {
 // A copy of the simulated rotary controller's state.
 struct SimulatedRotaryState {
   double angleDegrees = 0.0;
+  // Where the platform physically points: the rotation taking platform-frame vectors (x = azimuth 0, z = its
+  // normal at rest) to the room's, from the shaft's angle (a positive angle tilts the top towards z x shaft).
+  Eigen::Matrix3d platformOrientation = Eigen::Matrix3d::Identity();
   double targetAngleDegrees = 0.0;
   bool enabled = false;
   bool homed = false;
@@ -68,8 +75,11 @@ struct SimulatedRotaryState {
 };
 
 struct SimulatedRobotState {
-  double tiltDegrees = 0.0;
+  double tiltDegrees = 0.0;     // as the program reports them: the platform-frame direction pointing up now
   double azimuthDegrees = 0.0;
+  // The TCP's orientation relative to p_level, as the simulated program turned it (movel's shortest
+  // rotation towards orientation_pose(tilt, azimuth) of multidir_platform.script).
+  Eigen::Matrix3d platformOrientation = Eigen::Matrix3d::Identity();
   int programState = 1;  // as in the STATE register (the simulated program runs from the start)
   int faultCode = 0;
   std::uint16_t acknowledgedSequence = 0;

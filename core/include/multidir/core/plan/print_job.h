@@ -20,13 +20,8 @@ namespace multidir::core {
 constexpr int kPrintJobFormatVersion = 1;
 
 // The rigid motion the machine applies to the part (model coordinates, mm) so that `printingDirection`
-// points along machine.up; `pivot` is the point the platform turns about (it stays where it is):
-//  - 3-DOF: the identity;
-//  - 4-DOF: the rotation about machine.rotationAxis through `pivot` by minus the direction's rotary angle
-//    (machineAnglesFor), the platform turning back what the plan turned up into the direction;
-//  - 5-DOF: the tilt, the minimal rotation taking the direction to up, about direction x up (horizontal and
-//    perpendicular to the azimuth); a direction straight down is turned by a half turn about
-//    up x platformFrameX(up), the tilt axis of azimuth 0.
+// points along machine.up; `pivot` is the point the platform turns about (it stays where it is): the
+// platformRotation (machine.h, the one pose convention) of the direction's machineAnglesFor, about the pivot.
 // Precondition: `printingDirection` is non-zero and realizable by `machine` (isRealizable); only then does
 // pose.linear() * direction equal up. Thread-safe (pure).
 Eigen::Isometry3d machinePose(const MachineSpec& machine, const Vec3& printingDirection, const Vec3& pivot);

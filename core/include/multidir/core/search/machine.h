@@ -61,7 +61,8 @@ struct PlatformRegion {
 PlatformRegion platformRegionFor(const TriangleMesh& model, const MachineSpec& spec, double toleranceMm = 1e-3);
 
 // Machine angles that print along a direction: 4-DOF the angle about r; 5-DOF tilt from up and azimuth
-// (measured in the platform plane from the frame's x axis, see platformFrameX).
+// (measured in the platform plane from the frame's x axis, see platformFrameX). They are the angles the
+// device takes (print-job.json, the drivers' registers); platformRotation is what the device does with them.
 struct MachineAngles {
   double rotaryDegrees = 0.0;
   double tiltDegrees = 0.0;
@@ -74,6 +75,17 @@ Vec3 platformFrameX(const Vec3& up);
 // Whether the machine can print along `direction` (unit), within `toleranceRadians`.
 bool isRealizable(const MachineSpec& spec, const Vec3& direction, double toleranceRadians = 1e-6);
 MachineAngles machineAnglesFor(const MachineSpec& spec, const Vec3& direction);
+
+// The pose convention, in one place: the rotation the machine applies to the part (model frame, about the
+// pivot) when it takes `angles`. docs/hardware.md ("Pose convention") states it for the devices:
+//  - 3-DOF: the identity;
+//  - 4-DOF: the platform turns by -rotaryDegrees about rotationAxis r (a positive angle tilts the platform's
+//    top towards up x r), so rotaryDirection(spec, rotaryDegrees) ends up along up;
+//  - 5-DOF: the platform turns by tiltDegrees about the horizontal axis sin(a) x - cos(a) y of the platform
+//    frame (x = platformFrameX(up), y = up x x, a = azimuthDegrees): the direction tilted from up by the tilt
+//    towards the azimuth ends up along up, and the platform's top tilts towards the opposite azimuth, a + 180.
+// For every realizable direction d, platformRotation(spec, machineAnglesFor(spec, d)) * d == up.
+Eigen::Matrix3d platformRotation(const MachineSpec& spec, const MachineAngles& angles);
 
 // The 4-DOF direction for an angle about the axis: up turned by angleDegrees about rotationAxis.
 Vec3 rotaryDirection(const MachineSpec& spec, double angleDegrees);
