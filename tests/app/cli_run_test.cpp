@@ -246,6 +246,24 @@ TEST(CliSimulatePrinter, ServesOctoPrintOnLoopbackAndPrintsTheApiKeyItExpects) {
   EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
 }
 
+// Issue 24: a second `multidir simulate --printer` on a busy port listened beside the first one (SO_REUSEPORT)
+// and the requests were split between the two printers.
+TEST(CliSimulatePrinter, APortInUseFailsAtOnceNamingThePortAndWhatToDo) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.PortInUse");
+  for (const std::string kind : {"moonraker", "octoprint"}) {
+    hw::MoonrakerSimulator first;
+    ASSERT_TRUE(first.start().ok());
+    const std::string port = std::to_string(first.port());
+    const CliRun run =
+        runCli("simulate --printer " + kind + " --port " + port, dir, "timeout --preserve-status -s INT 5");
+    EXPECT_EQ(run.exitCode, 1) << kind << ": " << run.out << run.err;
+    EXPECT_NE(run.err.find("port " + port + " on 127.0.0.1 is in use"), std::string::npos) << kind << ": " << run.err;
+    EXPECT_NE(run.err.find("stop the other program"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("--port"), std::string::npos) << run.err;
+    EXPECT_EQ(run.out.find("listening on"), std::string::npos) << run.out;
+  }
+}
+
 TEST(CliSimulatePrinter, UnknownPrinterOrFaultIsAUsageErrorNamingTheChoices) {
   const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.Usage");
   const CliRun unknown = runCli("simulate --printer repetier", dir);

@@ -37,6 +37,24 @@ class PrinterLinkTest : public ::testing::TestWithParam<PrinterProtocol> {
 INSTANTIATE_TEST_SUITE_P(Protocols, PrinterLinkTest,
                          ::testing::Values(PrinterProtocol::Moonraker, PrinterProtocol::OctoPrint), protocolName);
 
+// Issue 24: cpp-httplib's SO_REUSEPORT let a second simulator listen on the port of the first, and the
+// kernel split the requests between the two printers.
+TEST_P(PrinterLinkTest, ASimulatorOnAPortInUseFailsNamingThePortAndWhatToDo) {
+  PrinterSimulatorOptions options;
+  options.port = sim->port();
+  auto second = printerSimulator(GetParam(), options);
+  const core::Status started = second->start();
+  ASSERT_FALSE(started.ok()) << "a second simulator listens on port " << sim->port();
+  const std::string port = std::to_string(sim->port());
+  EXPECT_NE(started.error().message.find("port " + port + " on 127.0.0.1 is in use"), std::string::npos)
+      << started.error().message;
+  EXPECT_NE(started.error().message.find("stop the other program"), std::string::npos) << started.error().message;
+  EXPECT_NE(started.error().message.find("--port"), std::string::npos) << started.error().message;
+  // The first one still answers every request.
+  auto link = connected();
+  expectConnectedAndIdle(link->status());
+}
+
 TEST_P(PrinterLinkTest, ConnectReadsTheIdlePrintersStatus) {
   auto link = connected();
   const PrinterStatus s = link->status();
