@@ -382,6 +382,10 @@ class ScriptedPrinter : public PrinterLink {
   std::future<core::Status> pausePrint() override { return done(); }
   std::future<core::Status> resumePrint() override { return done(); }
   std::future<core::Status> cancelPrint() override { return done(); }
+  std::future<core::Status> switchHeatersOff() override {
+    ++heatersOff;
+    return done();
+  }
   std::future<core::Status> emergencyStop() override { return done(); }
   core::Status clearStop() override { return core::Done{}; }
   PrinterStatus status() const override { return state; }
@@ -393,6 +397,7 @@ class ScriptedPrinter : public PrinterLink {
     return p.get_future();
   }
   std::vector<std::string> uploads;
+  int heatersOff = 0;
   PrinterStatus state = [] {
     PrinterStatus s;
     s.link = LinkState::Connected;

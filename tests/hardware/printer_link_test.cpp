@@ -96,6 +96,20 @@ TEST_P(PrinterLinkTest, UploadsStartsAndFollowsAPrintToCompletion) {
   EXPECT_EQ(states, (std::vector<std::string>{"printing", "complete"}));
 }
 
+TEST_P(PrinterLinkTest, SwitchHeatersOffSetsEveryHeatersTargetToZeroAfterAJobLeftThemOn) {
+  auto link = connected();
+  const std::string hot = writeFile(std::filesystem::path(testing::TempDir()) / "printer-link-hot" / "step-01.gcode",
+                                    heatersLeftOnGcode());
+  ASSERT_TRUE(uploadedAndStarted(*link, hot));
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }));
+  ASSERT_GT(sim->state().bed.targetC, 59.0);
+  const core::Status off = outcome(link->switchHeatersOff());
+  ASSERT_TRUE(off.ok()) << messageOf(off);
+  EXPECT_EQ(sim->state().extruder.targetC, 0.0);
+  EXPECT_EQ(sim->state().bed.targetC, 0.0);
+  EXPECT_TRUE(eventually([&] { return link->status().extruder.targetC == 0.0 && link->status().bed.targetC == 0.0; }));
+}
+
 TEST_P(PrinterLinkTest, ReadsTheHeatersAndProgressWhileThePrinterHeats) {
   startSimulator(5.0);  // 18 simulated seconds of heating take 3.6 s: the test sees it on the way
   auto link = connected();

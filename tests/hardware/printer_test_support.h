@@ -30,6 +30,14 @@ inline std::string shortGcode() {
   return text;
 }
 
+// shortGcode() as a step of a multi-step job leaves it: the bed at 60 C and the extruder at 200 C at its end,
+// for the next step (as robot-0.8.ini's end G-code leaves the bed on).
+inline std::string heatersLeftOnGcode() {
+  std::string text = "M140 S60\nM104 S200\nM109 S200\nG90\nM83\nG1 X0 Y0 Z0.3 F1200\n";
+  for (int i = 0; i < 20; ++i) text += "G1 X" + std::to_string((i + 1) % 2 * 10) + " Y" + std::to_string(i) + " E0.5\n";
+  return text;
+}
+
 inline std::string writeFile(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
