@@ -233,8 +233,8 @@ TEST_F(MarlinLinkTest, SwitchHeatersOffIsRefusedWhileAJobStreamsAndSentBetweenJo
   ASSERT_FALSE(whileStreaming.ok());
   EXPECT_NE(messageOf(whileStreaming).find("cancel it first"), std::string::npos) << messageOf(whileStreaming);
   ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }, 10000ms));
-  const std::string hot = writeFile(std::filesystem::path(testing::TempDir()) / "marlin-link-hot" / "step-01.gcode",
-                                    heatersLeftOnGcode());
+  const std::string hot =
+      writeFile(std::filesystem::path(testing::TempDir()) / "marlin-link-hot" / "step-01.gcode", heatersLeftOnGcode());
   startSimulator(400.0);
   link = connected();
   ASSERT_TRUE(uploadedAndStarted(*link, hot));

@@ -98,8 +98,8 @@ TEST_P(PrinterLinkTest, UploadsStartsAndFollowsAPrintToCompletion) {
 
 TEST_P(PrinterLinkTest, SwitchHeatersOffSetsEveryHeatersTargetToZeroAfterAJobLeftThemOn) {
   auto link = connected();
-  const std::string hot = writeFile(std::filesystem::path(testing::TempDir()) / "printer-link-hot" / "step-01.gcode",
-                                    heatersLeftOnGcode());
+  const std::string hot =
+      writeFile(std::filesystem::path(testing::TempDir()) / "printer-link-hot" / "step-01.gcode", heatersLeftOnGcode());
   ASSERT_TRUE(uploadedAndStarted(*link, hot));
   ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }));
   ASSERT_GT(sim->state().bed.targetC, 59.0);
