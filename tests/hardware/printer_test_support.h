@@ -216,6 +216,8 @@ class SimulatedPrinterUnderTest {
   [[nodiscard]] virtual int completedJobs() const = 0;
   [[nodiscard]] virtual bool printingPastHeating() const = 0;  // the current job's moves have begun
   [[nodiscard]] virtual bool halted() const = 0;               // by its emergency stop (or a fault)
+  [[nodiscard]] virtual HeaterReading extruder() const = 0;    // the simulated printer's, now
+  [[nodiscard]] virtual HeaterReading bed() const = 0;
 };
 
 // Moonraker and OctoPrint: one HTTP PrinterSimulator each, the same records; only their paths differ.
@@ -257,6 +259,8 @@ class SimulatedHttpPrinter : public SimulatedPrinterUnderTest {
     return s.jobState == "printing" && s.progress > 0.1;
   }
   bool halted() const override { return m_sim->state().firmwareState == "shutdown"; }
+  HeaterReading extruder() const override { return m_sim->state().extruder; }
+  HeaterReading bed() const override { return m_sim->state().bed; }
 
  private:
   std::vector<Clock::time_point> requestTimes(const std::function<bool(const PrinterRequestRecord&)>& which) const {
@@ -317,6 +321,8 @@ class SimulatedMarlin : public SimulatedPrinterUnderTest {
   // M109's record is written when the wait ends: past the heating once it has more than the finished jobs.
   bool printingPastHeating() const override { return executedTimes("M109 S200").size() > executedTimes("M400").size(); }
   bool halted() const override { return m_sim.state().halted; }
+  HeaterReading extruder() const override { return m_sim.state().extruder; }
+  HeaterReading bed() const override { return m_sim.state().bed; }
 
  private:
   std::vector<Clock::time_point> executedTimes(const std::string& command) const {
