@@ -377,7 +377,9 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   hardware::PrintRunOptions options;
   options.settleTime = std::chrono::milliseconds(settleMs);
   // The run ends at a pause or fault: the log says so, and the last line says how to go on (no studio buttons).
-  options.advice = [](hardware::PrintRunAdvice) {
+  options.advice = [](hardware::PrintRunAdvice situation) {
+    if (situation == hardware::PrintRunAdvice::EmergencyStop)
+      return std::string("use the device's own emergency stop button or cut its power");
     return std::string("multidir run stops here (how to go on follows)");
   };
   hardware::PrintRun run(*devices.positioner, steps, options, devices.printer.get());

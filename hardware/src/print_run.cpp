@@ -118,10 +118,10 @@ namespace {
 constexpr std::chrono::milliseconds kStopConfirmationWarning{1000};
 
 // What the log says after asking for a stop: never "stopped" before the device confirmed it.
-std::string stopRequestText(const core::Status& stopped, const std::string& device) {
+// `emergency`: how the operator stops the device otherwise (PrintRunAdvice::EmergencyStop).
+std::string stopRequestText(const core::Status& stopped, const std::string& device, const std::string& emergency) {
   if (stopped.ok()) return "stopping " + device + " (waiting for it to confirm)";
-  return "the stop was refused (" + stopped.error().describe() + "): " + device +
-         " may still move; use the E-STOP or cut its power";
+  return "the stop was refused (" + stopped.error().describe() + "): " + device + " may still move; " + emergency;
 }
 
 }  // namespace
@@ -139,7 +139,8 @@ void PrintRun::watchStop(const PositionerSnapshot& snapshot) {
                                                       : std::string("the link is down");
     enter(m_state, stepLabel() + ": " + m_positioner.name() + " has not confirmed the stop after " +
                        std::to_string(kStopConfirmationWarning.count()) + " ms (" + why +
-                       "); it is sent as soon as the link allows; if the device still moves, use the E-STOP");
+                       "); it is sent as soon as the link allows; if the device still moves: " +
+                       advice(PrintRunAdvice::EmergencyStop));
   }
 }
 
@@ -153,6 +154,8 @@ std::string PrintRun::advice(PrintRunAdvice situation) const {
     case PrintRunAdvice::PrintInterrupted:
       return "fix it, then resume (the printer's job continues when it is paused or still printing) or finish the "
              "region by hand and press Region done, or abort";
+    case PrintRunAdvice::EmergencyStop:
+      return "use the E-STOP or cut its power";
   }
   return {};
 }
@@ -160,8 +163,10 @@ std::string PrintRun::advice(PrintRunAdvice situation) const {
 void PrintRun::fault(const std::string& problem) {
   m_lastProblem = problem;
   const core::Status stopped = requestStop();
-  enter(PrintRunState::Faulted, stepLabel() + ": " + problem + "; " + stopRequestText(stopped, m_positioner.name()) +
-                                    "; " + advice(PrintRunAdvice::RetryStep));
+  enter(PrintRunState::Faulted,
+        stepLabel() + ": " + problem + "; " +
+            stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)) + "; " +
+            advice(PrintRunAdvice::RetryStep));
 }
 
 std::string PrintRun::printerForbidsMotion() const {
@@ -218,10 +223,14 @@ core::Status PrintRun::pause() {
       const core::Status stopped = requestStop();
       if (!stopped.ok()) {
         m_lastProblem = "the stop was refused: " + stopped.error().describe();
-        enter(PrintRunState::Faulted, stepLabel() + ": pause: " + stopRequestText(stopped, m_positioner.name()));
+        enter(PrintRunState::Faulted,
+              stepLabel() +
+                  ": pause: " + stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
         return stopped;
       }
-      enter(PrintRunState::Paused, stepLabel() + ": paused; " + stopRequestText(stopped, m_positioner.name()));
+      enter(PrintRunState::Paused,
+            stepLabel() + ": paused; " +
+                stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
       return core::Done{};
     }
     case PrintRunState::Printing:
@@ -304,7 +313,9 @@ core::Status PrintRun::abort() {
   if (m_state == PrintRunState::Moving || m_state == PrintRunState::Settling) {
     const core::Status stopped = requestStop();
     if (!stopped.ok()) m_lastProblem = "the stop was refused: " + stopped.error().describe();
-    enter(PrintRunState::Aborted, stepLabel() + ": aborted; " + stopRequestText(stopped, m_positioner.name()));
+    enter(PrintRunState::Aborted,
+          stepLabel() + ": aborted; " +
+              stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
     switchHeatersOff();
     return core::Done{};
   }

@@ -292,13 +292,14 @@ TEST_P(PrintRunWithPrinterTest, AnAbortWhilePrintingCancelsTheJobAndSwitchesTheH
   PrintRun run = runWithPrinter(20.0);
   ASSERT_TRUE(run.start().ok());
   ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
+  // The run has read the printer's progress of the step since (it reads it as it ticks).
+  ASSERT_TRUE(tickUntil(run, [&] { return run.stepProgress() > 0.0; })) << wholeLog(run);
   ASSERT_TRUE(run.abort().ok());
   ASSERT_TRUE(tickUntil(run, [&] { return !run.stopUnconfirmed(); })) << wholeLog(run);
   EXPECT_TRUE(logMentions(run, "switched the heaters off")) << wholeLog(run);
   EXPECT_TRUE(tickUntil(run, [&] { return printerSim->extruder().targetC == 0.0 && printerSim->bed().targetC == 0.0; }))
       << "extruder target " << printerSim->extruder().targetC << " C, bed " << printerSim->bed().targetC << " C";
   EXPECT_TRUE(run.stepBegun());  // part of region 1 is on the platform
-  EXPECT_GT(run.stepProgress(), 0.0);
 }
 
 // The kitten decomposed for this rotary platform (4-DOF about x, up y, greedy search), once per test process.
@@ -580,6 +581,24 @@ TEST(PrintRunInterlock, TheOwnersAdviceReplacesTheStudiosButtonsAfterAPause) {
   ASSERT_EQ(run.state(), PrintRunState::Paused);
   EXPECT_TRUE(logMentions(run, "the platform stays where it is; the owner says how to go on"));
   EXPECT_FALSE(logMentions(run, "Region done"));
+}
+
+TEST(PrintRunInterlock, ARefusedStopSendsTheOperatorToTheOwnersEmergencyStop) {
+  struct RefusingStop : StillPositioner {
+    core::Status stopMotion() override {
+      return core::Error{core::ErrorCode::DeviceUnreachable, "the link is down", "test platform"};
+    }
+  } platform;
+  ScriptedPrinter printer;
+  PrintRunOptions options = immediate();
+  options.advice = [](PrintRunAdvice situation) {
+    return situation == PrintRunAdvice::EmergencyStop ? std::string("press the red button") : std::string("other");
+  };
+  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, options, &printer);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.abort().ok());
+  EXPECT_TRUE(logMentions(run, "test platform may still move; press the red button")) << wholeLog(run);
+  EXPECT_FALSE(logMentions(run, "E-STOP"));
 }
 
 }  // namespace

@@ -153,6 +153,7 @@ enum class PrintRunAdvice {
   RetryStep,             // faulted before printing: fix it, then retry the step, or abort
   RetryWhenPrinterIdle,  // the move was not sent because the printer is busy or its state unknown
   PrintInterrupted,      // paused while the printer printed the step (printInterrupted())
+  EmergencyStop,         // a stop was refused or is not confirmed: the device may still move
 };
 
 struct PrintRunOptions {
@@ -164,7 +165,7 @@ struct PrintRunOptions {
   // With a printer: started, but no job of the step's file seen printing or complete by then: a fault.
   std::chrono::milliseconds printStartTimeout{30000};
   // What the log tells the operator to do after a pause or fault, in the owner's words. Unset: the studio's
-  // (resume, Region done, abort). An owner without those buttons (the command line, which ends the run at a
+  // (resume, Region done, abort, the E-STOP). An owner without those buttons (the command line, which ends the run at a
   // pause) gives its own.
   std::function<std::string(PrintRunAdvice)> advice;
   // Clocks; the defaults are the system's. Tests inject their own.
