@@ -227,9 +227,19 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
       if (homed.wait_for(5s) != std::future_status::ready)
         throw std::runtime_error(devices.rotary->name() + " did not take the homing command");
       if (core::Status h = homed.get(); !h) throw std::runtime_error(h.error().describe());
-      if (!waitOrInterrupt([&] { return devices.rotary->status().homed && !devices.rotary->status().homing; }, 120s,
-                           "homing the platform"))
-        throw std::runtime_error(devices.rotary->name() + " did not finish homing within 120 s");
+      // Ends on a fault too (a stall, the limit switch): the controller stopped homing and will not finish.
+      const auto homedOrFaulted = [&] {
+        const hardware::RotaryStatus now = devices.rotary->status();
+        return (now.homed && !now.homing) || now.fault != hardware::RotaryFault::None;
+      };
+      if (!waitOrInterrupt(homedOrFaulted, 120s, "homing the platform"))
+        throw std::runtime_error(devices.rotary->name() + " did not finish homing within 120 s: check that it turns " +
+                                 "freely and its home switch");
+      if (const hardware::RotaryFault fault = devices.rotary->status().fault; fault != hardware::RotaryFault::None)
+        throw std::runtime_error(devices.rotary->name() + " stopped homing with a fault (" +
+                                 hardware::rotaryFaultName(fault) +
+                                 "): check that it turns freely and its home switch, clear the fault on the "
+                                 "controller (or with Clear fault in the studio), then run the job again");
     }
     devices.positioner = hardware::makePositioner(*devices.rotary);
     return;

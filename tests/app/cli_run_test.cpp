@@ -15,6 +15,7 @@
 
 #include "multidir/hardware/device_simulator.h"
 #include "multidir/hardware/marlin_simulator.h"
+#include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/moonraker_simulator.h"
 #include "multidir/hardware/octoprint_simulator.h"
 #include "support/cli_runner.h"
@@ -228,6 +229,66 @@ TEST_F(CliRunTest, CtrlCDuringATurnSwitchesTheHeatersOff) {
   EXPECT_EQ(printerRequests("/printer/print/cancel"), 0);  // nothing was printing
   // Nothing of step 2 was printed: --from 2 is the true way on.
   EXPECT_NE(run.err.find("nothing of step 2 was printed: continue with --from 2"), std::string::npos) << run.err;
+}
+
+// Ctrl-C before the first step (here while the platform homes from 170 degrees at 10 degrees/s) stopped
+// nothing: the wait for the homing ended, the platform went on homing and the heaters stayed as they were
+// (on, from an earlier job).
+TEST_F(CliRunTest, CtrlCWhileThePlatformHomesStopsItAndSwitchesTheHeatersOff) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.CtrlCHoming");
+  writeJob(dir + "/job");
+  hw::SimulatorOptions deviceOptions;
+  deviceOptions.robot = false;
+  deviceOptions.rotaryInitialAngleDegrees = 170.0;
+  deviceOptions.rotaryHomingSpeedDegreesPerSecond = 10.0;
+  devices = std::make_unique<hw::DeviceSimulator>(deviceOptions);
+  ASSERT_TRUE(devices->start().ok());
+  hw::MoonrakerSimulatorOptions printerOptions;
+  printerOptions.speed = 200.0;
+  printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
+  ASSERT_TRUE(printer->start().ok());
+  printerUrl = "http://127.0.0.1:" + std::to_string(printer->port());
+  {  // an earlier job left the heaters on
+    hw::MoonrakerSettings settings;
+    settings.host = "127.0.0.1";
+    settings.port = printer->port();
+    auto link = hw::makeMoonrakerLink(settings);
+    ASSERT_TRUE(link.ok());
+    ASSERT_TRUE((*link)->connect().ok());
+    std::ofstream(dir + "/hot.gcode") << stepGcode(true);
+    ASSERT_TRUE((*link)->upload(dir + "/hot.gcode", "hot.gcode").get().ok());
+    ASSERT_TRUE((*link)->startPrint("hot.gcode").get().ok());
+    for (int i = 0; i < 500 && printer->state().jobState != "complete"; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(printer->state().jobState, "complete");
+    ASSERT_GT(printer->state().bed.targetC, 59.0);
+  }
+  const std::string pidFile = dir + "/pid";
+  std::filesystem::remove(pidFile);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run '" + dir + "/job' " + deviceArgs(), dir,
+                  "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
+  });
+  bool interrupted = false;
+  for (int i = 0; i < 3000 && !interrupted; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (!devices->rotaryState().homing) continue;
+    const std::string pid = multidir::test::readAll(pidFile);
+    ASSERT_FALSE(pid.empty());
+    ::kill(std::stoi(pid), SIGINT);
+    interrupted = true;
+  }
+  const CliRun run = cli.get();
+  ASSERT_TRUE(interrupted) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("stopped by Ctrl-C while homing the platform, before the first step: nothing was printed"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.out.find("heaters off: done"), std::string::npos) << run.out;
+  EXPECT_EQ(printer->state().extruder.targetC, 0.0);
+  EXPECT_EQ(printer->state().bed.targetC, 0.0);
+  EXPECT_FALSE(devices->rotaryState().homing);            // the stop reached the platform
+  EXPECT_EQ(printerRequests("/server/files/upload"), 1);  // the earlier job's only
 }
 
 TEST_F(CliRunTest, CtrlCMidStepCancelsItSwitchesTheHeatersOffAndSaysItWasPartlyPrinted) {
