@@ -131,6 +131,12 @@ class RunLog {
     m_out << stamped << std::flush;
     if (m_file.is_open()) m_file << stamped << std::flush;
   }
+  // The command's last word (why it stopped, how to go on): on stderr, and in the log file with its time.
+  void ending(std::ostream& err, const std::string& text) {
+    const std::string clean = "multidir run: " + withoutControls(text);
+    err << clean << "\n" << std::flush;
+    if (m_file.is_open()) m_file << "[" + clockText() + "] " + clean + "\n" << std::flush;
+  }
 
  private:
   std::ostream& m_out;
@@ -351,28 +357,29 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   log.line("job " + job.jobFile + ": " + std::to_string(job.steps.size()) + " steps, " +
            core::machineKindName(job.machine.kind) + (from > 1 ? ", starting at step " + std::to_string(from) : ""));
   if (core::Status c = devices.printer->connect(); !c) {
-    err << "multidir run: " << c.error().describe() << "\n";
+    log.ending(err, c.error().describe());
     return kExitRunStopped;
   }
   const hardware::PrinterStatus first = devices.printer->status();
   if (first.busy() || first.firmwareState != "ready") {
-    err << "multidir run: " << devices.printer->name() << " is not ready for a job (job "
-        << hardware::printerJobStateName(first.state) << ", firmware " << first.firmwareState
-        << (first.message.empty() ? "" : ": " + first.message) << "): let it finish, or cancel or restart it first\n";
+    log.ending(err, devices.printer->name() + " is not ready for a job (job " +
+                        hardware::printerJobStateName(first.state) + ", firmware " + first.firmwareState +
+                        (first.message.empty() ? "" : ": " + first.message) +
+                        "): let it finish, or cancel or restart it first");
     return kExitRunStopped;
   }
   log.line("connected to " + devices.printer->name() + " (firmware " + first.firmwareState + ")");
   const std::string notStarted = ", before the first step: nothing was printed; run the job again" +
-                                 (from > 1 ? " with --from " + std::to_string(from) : std::string()) + " when ready\n";
+                                 (from > 1 ? " with --from " + std::to_string(from) : std::string()) + " when ready";
   try {
     connectPlatform(devices, job, platformHost, platformPort, unit, log);
     if (g_interrupts > 0) throw Interrupted("Ctrl-C while connecting the platform");
   } catch (const Interrupted& e) {
     stopBeforeTheRun(devices, log);
-    err << "multidir run: stopped by " << e.what() << notStarted;
+    log.ending(err, std::string("stopped by ") + e.what() + notStarted);
     return kExitRunStopped;
   } catch (const std::runtime_error& e) {
-    err << "multidir run: " << e.what() << "\n";
+    log.ending(err, e.what());
     return kExitRunStopped;
   }
   log.line("connected to " + devices.positioner->name());
@@ -397,7 +404,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     log.line(std::string(hardware::printRunStateName(e.state)) + ": " + e.message);
   });
   if (core::Status started = run.start(); !started) {
-    err << "multidir run: " << started.error().describe() << "\n";
+    log.ending(err, started.error().describe());
     return kExitRunStopped;
   }
 
@@ -475,13 +482,11 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   const std::size_t step = static_cast<std::size_t>(from) + run.currentStep();
   const std::string gcodeName = std::filesystem::path(steps[run.currentStep()].gcodePath).filename().string();
-  err << withoutControls("multidir run: the run stopped at step " + std::to_string(step) + " (" +
-                         hardware::printRunStateName(run.state()) +
-                         (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
-                         (stoppedByOperator ? " by Ctrl-C" : "") +
-                         howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(),
-                                   gcodeName, stoppedByOperator))
-      << "\n";
+  log.ending(err, "the run stopped at step " + std::to_string(step) + " (" + hardware::printRunStateName(run.state()) +
+                      (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
+                      (stoppedByOperator ? " by Ctrl-C" : "") +
+                      howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(),
+                                gcodeName, stoppedByOperator));
   return kExitRunStopped;
 }
 

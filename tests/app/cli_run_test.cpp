@@ -304,6 +304,21 @@ TEST_F(CliRunTest, CtrlCMidStepCancelsItSwitchesTheHeatersOffAndSaysItWasPartlyP
   EXPECT_NE(run.err.find("--from 2"), std::string::npos) << run.err;
 }
 
+// The log file ends with how the command ended, as stderr says it.
+TEST_F(CliRunTest, TheRunLogEndsWithWhyTheRunStoppedAndHowToGoOn) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.LogEnding");
+  writeJob(dir + "/job");
+  startSimulators(1.0);
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs() + " --log '" + dir + "/run.log'", dir,
+                            "timeout --preserve-status -s INT 2");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  const std::string log = multidir::test::readAll(dir + "/run.log");
+  ASSERT_FALSE(run.err.empty());
+  const std::string ending = run.err.substr(0, run.err.find('\n'));
+  EXPECT_NE(ending.find("multidir run: the run stopped at step 1 (aborted"), std::string::npos) << ending;
+  EXPECT_NE(log.find("] " + ending + "\n"), std::string::npos) << log;
+}
+
 // The log file is read as text: no terminal control sequences, even from names the job brings (here its
 // folder's name holds a colour escape).
 TEST_F(CliRunTest, TheRunLogHoldsNoTerminalEscapes) {
