@@ -6,11 +6,13 @@
 #include <csignal>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <thread>
 
 #include "cli_args.h"
+#include "multidir/hardware/platform_check.h"
 #include "multidir/hardware/print_run.h"
 #include "multidir/hardware/printer_url.h"
 #include "multidir/hardware/robot_arm.h"
@@ -34,9 +36,13 @@ const char* const kRunHelp =
     "Every event is logged with its time; a progress line (step, printer progress, temperatures, the job's\n"
     "remaining time from the slicer's estimates) follows the printer. When the printer reports an error, a\n"
     "job cancelled on the printer, a temperature fault, or a link is lost, the run stops there (the platform\n"
-    "stays where it is) and says why; fix it and continue with --from STEP.\n"
+    "stays where it is) and says why and how to go on: when nothing of the step was printed, fix it and\n"
+    "continue with --from STEP; a step interrupted while printing cannot be printed again from its start over\n"
+    "the part already printed: accept it (or finish it by hand) and continue with --from STEP+1, or clear the\n"
+    "platform and print the whole job again.\n"
     "\n"
-    "Ctrl-C stops both devices: the platform's motion and the printer's job (cancelled). A second Ctrl-C sends\n"
+    "Ctrl-C stops both devices: the platform's motion and the printer's job (cancelled), and switches the\n"
+    "printer's heaters off, whatever the run is doing (also while the platform turns). A second Ctrl-C sends\n"
     "both emergency stops (Klipper then needs a FIRMWARE_RESTART; OctoPrint sends M112 and disconnects from the\n"
     "printer, which needs a reset and a Connect in OctoPrint's Connection panel; Marlin a reset; the platform a\n"
     "clear fault and homing).\n"
@@ -84,6 +90,33 @@ std::string clockText() {
   return text;
 }
 
+// `text` without terminal control sequences: the devices' own words (a printer's message, a file name from
+// the job) could hold escapes that colour, move or clear the terminal, and the log file is read as text.
+// ESC sequences (CSI "ESC [ ... final", OSC "ESC ] ... BEL or ESC \\", and two-byte ones) are dropped; other
+// control characters but the tab become '?'.
+std::string withoutControls(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c == 0x1b) {
+      const char kind = i + 1 < text.size() ? text[i + 1] : '\0';
+      i += 1;
+      if (kind == '[') {
+        while (i + 1 < text.size() && !(text[i + 1] >= 0x40 && text[i + 1] <= 0x7e)) ++i;
+        ++i;
+      } else if (kind == ']') {
+        while (i + 1 < text.size() && text[i + 1] != '\a' && !(text[i + 1] == 0x1b)) ++i;
+        ++i;
+        if (i < text.size() && text[i] == 0x1b) ++i;  // ESC \\ ends it
+      }
+      continue;
+    }
+    out += (c < 0x20 && c != '\t') || c == 0x7f ? '?' : static_cast<char>(c);
+  }
+  return out;
+}
+
 // Writes each line to the terminal and the log file.
 class RunLog {
  public:
@@ -94,9 +127,15 @@ class RunLog {
       throw FileError("multidir run: cannot write the log file " + path + ": check the folder exists and is writable");
   }
   void line(const std::string& text) {
-    const std::string stamped = "[" + clockText() + "] " + text + "\n";
+    const std::string stamped = "[" + clockText() + "] " + withoutControls(text) + "\n";
     m_out << stamped << std::flush;
     if (m_file.is_open()) m_file << stamped << std::flush;
+  }
+  // The command's last word (why it stopped, how to go on): on stderr, and in the log file with its time.
+  void ending(std::ostream& err, const std::string& text) {
+    const std::string clean = "multidir run: " + withoutControls(text);
+    err << clean << "\n" << std::flush;
+    if (m_file.is_open()) m_file << "[" + clockText() + "] " + clean + "\n" << std::flush;
   }
 
  private:
@@ -124,6 +163,11 @@ class SignalScope {
   void (*m_term)(int) = SIG_DFL;
 };
 
+// Ctrl-C before the run started (connecting, enabling, homing): the caller stops the devices.
+struct Interrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Polls `condition` every 20 ms until it holds, `limit` passes or Ctrl-C.
 bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds limit) {
   const auto deadline = Clock::now() + limit;
@@ -132,6 +176,13 @@ bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds l
     std::this_thread::sleep_for(20ms);
   }
   return condition();
+}
+
+// waitFor, and Interrupted naming `what` when Ctrl-C ended the wait.
+bool waitOrInterrupt(const std::function<bool()>& condition, std::chrono::milliseconds limit, const std::string& what) {
+  const bool held = waitFor(condition, limit);
+  if (!held && g_interrupts > 0) throw Interrupted("Ctrl-C while " + what);
+  return held;
 }
 
 std::string celsius(const hardware::HeaterReading& h) {
@@ -152,7 +203,14 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
   hardware::ConnectionSettings connection;
   connection.tcp.host = host;
   connection.tcp.port = port;
-  if (job.machine.kind == core::MachineKind::RotaryPlatform) {
+  // The job's device, told apart from the other before anything is written to either: a robot arm answers a
+  // rotary job's registers with a Modbus exception that does not say the wrong device is connected.
+  const bool rotary = job.machine.kind == core::MachineKind::RotaryPlatform;
+  const int rotaryUnit = rotary && unit >= 0 ? unit : 1;
+  const int robotUnit = !rotary && unit >= 0 ? unit : 255;
+  if (core::Status kind = hardware::checkPlatformFor(job.machine.kind, connection, rotaryUnit, robotUnit); !kind)
+    throw std::runtime_error("--platform " + host + ":" + std::to_string(port) + ": " + kind.error().message);
+  if (rotary) {
     hardware::RotaryPlatformOptions options;
     options.connection = connection;
     options.connection.slaveId = unit < 0 ? 1 : unit;
@@ -168,15 +226,26 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
       if (!s.enabled) {
         auto enabled = devices.rotary->enable();
         if (enabled.wait_for(5s) != std::future_status::ready || !enabled.get().ok() ||
-            !waitFor([&] { return devices.rotary->status().enabled; }, 5s))
+            !waitOrInterrupt([&] { return devices.rotary->status().enabled; }, 5s, "enabling the platform"))
           throw std::runtime_error(devices.rotary->name() + " did not enable");
       }
       auto homed = devices.rotary->home();
       if (homed.wait_for(5s) != std::future_status::ready)
         throw std::runtime_error(devices.rotary->name() + " did not take the homing command");
       if (core::Status h = homed.get(); !h) throw std::runtime_error(h.error().describe());
-      if (!waitFor([&] { return devices.rotary->status().homed && !devices.rotary->status().homing; }, 120s))
-        throw std::runtime_error(devices.rotary->name() + " did not finish homing within 120 s");
+      // Ends on a fault too (a stall, the limit switch): the controller stopped homing and will not finish.
+      const auto homedOrFaulted = [&] {
+        const hardware::RotaryStatus now = devices.rotary->status();
+        return (now.homed && !now.homing) || now.fault != hardware::RotaryFault::None;
+      };
+      if (!waitOrInterrupt(homedOrFaulted, 120s, "homing the platform"))
+        throw std::runtime_error(devices.rotary->name() + " did not finish homing within 120 s: check that it turns " +
+                                 "freely and its home switch");
+      if (const hardware::RotaryFault fault = devices.rotary->status().fault; fault != hardware::RotaryFault::None)
+        throw std::runtime_error(devices.rotary->name() + " stopped homing with a fault (" +
+                                 hardware::rotaryFaultName(fault) +
+                                 "): check that it turns freely and its home switch, clear the fault on the "
+                                 "controller (or with Clear fault in the studio), then run the job again");
     }
     devices.positioner = hardware::makePositioner(*devices.rotary);
     return;
@@ -188,6 +257,61 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
   devices.robot = std::make_unique<hardware::RobotArm>(options);
   if (core::Status c = devices.robot->connect(); !c) throw std::runtime_error(c.error().describe());
   devices.positioner = hardware::makePositioner(*devices.robot);
+}
+
+// Ctrl-C before the first step: the platform's stop (it may be homing) and the printer's heaters off (they
+// may be on from before), each waited for at most 10 s.
+void stopBeforeTheRun(Devices& devices, RunLog& log) {
+  log.line("Ctrl-C: stopping the platform and switching the printer's heaters off");
+  std::future<core::Status> platform;
+  if (devices.rotary) platform = devices.rotary->stop();
+  if (devices.robot) platform = devices.robot->stop();
+  std::future<core::Status> heaters = devices.printer->switchHeatersOff();
+  const auto outcome = [](std::future<core::Status>& f) -> std::string {
+    if (!f.valid()) return "not connected";
+    if (f.wait_for(10s) != std::future_status::ready) return "no answer within 10 s: check it by hand";
+    const core::Status s = f.get();
+    return s.ok() ? "done" : s.error().describe();
+  };
+  if (platform.valid()) log.line("platform stop: " + outcome(platform));
+  log.line("heaters off: " + outcome(heaters));
+}
+
+// How to go on after the run stopped at job step `step` (1-based), true to what is on the platform: a step
+// the printer had begun holds part of its region, which printing the step again from its start (--from) would
+// print over.
+std::string howToGoOn(const hardware::PrintRun& run, const hardware::PrinterStatus& printer, std::size_t step,
+                      const std::string& name, std::size_t steps, const std::string& gcodeName,
+                      bool stoppedByOperator) {
+  const std::string from = "--from " + std::to_string(step);
+  if (!run.stepBegun())
+    return "; nothing of step " + std::to_string(step) + " was printed: continue with " + from +
+           (stoppedByOperator ? " when ready" : " once it is fixed");
+  char percent[16];
+  std::snprintf(percent, sizeof percent, "%.0f %%", run.stepProgress() * 100.0);
+  std::string text = "; step " + std::to_string(step) + " was interrupted while printing (" +
+                     (run.stepProgress() > 0.0 ? "the printer had read " + std::string(percent) + " of " + gcodeName
+                                               : "the printer had been started on " + gcodeName) +
+                     "): part of its region may be on the platform, and " + from +
+                     " would print the step again from its start, over that part, so it cannot go on from there. ";
+  const bool ours = printer.currentFile == gcodeName;
+  const std::string next = step < steps ? "continue with the next step: --from " + std::to_string(step + 1)
+                                        : "the job is done (it was the last step)";
+  if (printer.linkLost)
+    return text + "The link to the printer is lost: it may still be printing " + gcodeName +
+           " on its own; check it. If it completes the step, " + next +
+           "; otherwise clear the platform and print the whole job again (without --from)";
+  // Klipper and OctoPrint keep a paused job and resume it themselves; Marlin's job is the stream multidir run
+  // sent, which ended with it.
+  const bool resumableThere = printer.state == hardware::PrinterJobState::Paused && ours &&
+                              (name.rfind("Moonraker", 0) == 0 || name.rfind("OctoPrint", 0) == 0);
+  if (resumableThere)
+    text +=
+        "The printer's job is still paused on the printer: cancel it there (or resume it there once the cause "
+        "is fixed and, when it is complete, " +
+        next + "). ";
+  return text + "Either accept step " + std::to_string(step) + " as it is (or finish it by hand) and " + next +
+         ", or clear the platform and print the whole job again (without --from)";
 }
 
 }  // namespace
@@ -233,21 +357,29 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   log.line("job " + job.jobFile + ": " + std::to_string(job.steps.size()) + " steps, " +
            core::machineKindName(job.machine.kind) + (from > 1 ? ", starting at step " + std::to_string(from) : ""));
   if (core::Status c = devices.printer->connect(); !c) {
-    err << "multidir run: " << c.error().describe() << "\n";
+    log.ending(err, c.error().describe());
     return kExitRunStopped;
   }
   const hardware::PrinterStatus first = devices.printer->status();
   if (first.busy() || first.firmwareState != "ready") {
-    err << "multidir run: " << devices.printer->name() << " is not ready for a job (job "
-        << hardware::printerJobStateName(first.state) << ", firmware " << first.firmwareState
-        << (first.message.empty() ? "" : ": " + first.message) << "): let it finish, or cancel or restart it first\n";
+    log.ending(err, devices.printer->name() + " is not ready for a job (job " +
+                        hardware::printerJobStateName(first.state) + ", firmware " + first.firmwareState +
+                        (first.message.empty() ? "" : ": " + first.message) +
+                        "): let it finish, or cancel or restart it first");
     return kExitRunStopped;
   }
   log.line("connected to " + devices.printer->name() + " (firmware " + first.firmwareState + ")");
+  const std::string notStarted = ", before the first step: nothing was printed; run the job again" +
+                                 (from > 1 ? " with --from " + std::to_string(from) : std::string()) + " when ready";
   try {
     connectPlatform(devices, job, platformHost, platformPort, unit, log);
+    if (g_interrupts > 0) throw Interrupted("Ctrl-C while connecting the platform");
+  } catch (const Interrupted& e) {
+    stopBeforeTheRun(devices, log);
+    log.ending(err, std::string("stopped by ") + e.what() + notStarted);
+    return kExitRunStopped;
   } catch (const std::runtime_error& e) {
-    err << "multidir run: " << e.what() << "\n";
+    log.ending(err, e.what());
     return kExitRunStopped;
   }
   log.line("connected to " + devices.positioner->name());
@@ -261,12 +393,18 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   hardware::PrintRunOptions options;
   options.settleTime = std::chrono::milliseconds(settleMs);
+  // The run ends at a pause or fault: the log says so, and the last line says how to go on (no studio buttons).
+  options.advice = [](hardware::PrintRunAdvice situation) {
+    if (situation == hardware::PrintRunAdvice::EmergencyStop)
+      return std::string("use the device's own emergency stop button or cut its power");
+    return std::string("multidir run stops here (how to go on follows)");
+  };
   hardware::PrintRun run(*devices.positioner, steps, options, devices.printer.get());
   run.setLogCallback([&](const hardware::PrintRunLogEntry& e) {
     log.line(std::string(hardware::printRunStateName(e.state)) + ": " + e.message);
   });
   if (core::Status started = run.start(); !started) {
-    err << "multidir run: " << started.error().describe() << "\n";
+    log.ending(err, started.error().describe());
     return kExitRunStopped;
   }
 
@@ -293,11 +431,12 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
         stopDeadline = firstInterrupt + 10s;
         log.line("Ctrl-C: stopping both devices (press Ctrl-C again for their emergency stops)");
         // abort() cancels the printer's job itself when the run was printing; otherwise the printer is asked
-        // here, in case it prints something the run did not start.
+        // here, in case it prints something the run did not start. Then abort() switches the heaters off
+        // (queued behind the cancel), whatever the run was doing: a turn between two steps leaves them hot.
         const bool runCancels = run.state() == hardware::PrintRunState::Printing ||
                                 (run.state() == hardware::PrintRunState::Paused && run.printInterrupted());
-        (void)run.abort();
         if (!runCancels && devices.printer->status().busy()) (void)devices.printer->cancelPrint();
+        (void)run.abort();
         if (devices.positioner->snapshot().moving) (void)devices.positioner->stopMotion();
       } else if (second) {
         emergencySent = true;
@@ -342,9 +481,12 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     return kExitOk;
   }
   const std::size_t step = static_cast<std::size_t>(from) + run.currentStep();
-  err << "multidir run: the run stopped at step " << step << " (" << hardware::printRunStateName(run.state())
-      << (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) << ")"
-      << (stoppedByOperator ? " by Ctrl-C" : "") << "; continue with --from " << step << " once it is fixed\n";
+  const std::string gcodeName = std::filesystem::path(steps[run.currentStep()].gcodePath).filename().string();
+  log.ending(err, "the run stopped at step " + std::to_string(step) + " (" + hardware::printRunStateName(run.state()) +
+                      (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
+                      (stoppedByOperator ? " by Ctrl-C" : "") +
+                      howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(),
+                                gcodeName, stoppedByOperator));
   return kExitRunStopped;
 }
 

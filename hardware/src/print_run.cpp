@@ -118,10 +118,10 @@ namespace {
 constexpr std::chrono::milliseconds kStopConfirmationWarning{1000};
 
 // What the log says after asking for a stop: never "stopped" before the device confirmed it.
-std::string stopRequestText(const core::Status& stopped, const std::string& device) {
+// `emergency`: how the operator stops the device otherwise (PrintRunAdvice::EmergencyStop).
+std::string stopRequestText(const core::Status& stopped, const std::string& device, const std::string& emergency) {
   if (stopped.ok()) return "stopping " + device + " (waiting for it to confirm)";
-  return "the stop was refused (" + stopped.error().describe() + "): " + device +
-         " may still move; use the E-STOP or cut its power";
+  return "the stop was refused (" + stopped.error().describe() + "): " + device + " may still move; " + emergency;
 }
 
 }  // namespace
@@ -139,15 +139,34 @@ void PrintRun::watchStop(const PositionerSnapshot& snapshot) {
                                                       : std::string("the link is down");
     enter(m_state, stepLabel() + ": " + m_positioner.name() + " has not confirmed the stop after " +
                        std::to_string(kStopConfirmationWarning.count()) + " ms (" + why +
-                       "); it is sent as soon as the link allows; if the device still moves, use the E-STOP");
+                       "); it is sent as soon as the link allows; if the device still moves: " +
+                       advice(PrintRunAdvice::EmergencyStop));
   }
+}
+
+std::string PrintRun::advice(PrintRunAdvice situation) const {
+  if (m_options.advice) return m_options.advice(situation);
+  switch (situation) {
+    case PrintRunAdvice::RetryStep:
+      return "fix it, then resume to retry the step or abort";
+    case PrintRunAdvice::RetryWhenPrinterIdle:
+      return "resume to retry the step once the printer is idle";
+    case PrintRunAdvice::PrintInterrupted:
+      return "fix it, then resume (the printer's job continues when it is paused or still printing) or finish the "
+             "region by hand and press Region done, or abort";
+    case PrintRunAdvice::EmergencyStop:
+      return "use the E-STOP or cut its power";
+  }
+  return {};
 }
 
 void PrintRun::fault(const std::string& problem) {
   m_lastProblem = problem;
   const core::Status stopped = requestStop();
-  enter(PrintRunState::Faulted, stepLabel() + ": " + problem + "; " + stopRequestText(stopped, m_positioner.name()) +
-                                    "; fix it, then resume to retry the step or abort");
+  enter(PrintRunState::Faulted,
+        stepLabel() + ": " + problem + "; " +
+            stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)) + "; " +
+            advice(PrintRunAdvice::RetryStep));
 }
 
 std::string PrintRun::printerForbidsMotion() const {
@@ -168,11 +187,13 @@ void PrintRun::beginMove() {
   m_faultLoggedWhilePrinting = false;
   m_printInterrupted = false;
   m_phase = PrintPhase::None;
+  m_stepBegun = false;
+  m_stepProgress = 0.0;
   m_moveStarted = m_options.steadyNow();
   if (const std::string forbidden = printerForbidsMotion(); !forbidden.empty()) {
     m_lastProblem = forbidden;
-    enter(PrintRunState::Faulted, stepLabel() + ": the move was not sent: " + forbidden +
-                                      "; resume to retry the step once the printer is idle");
+    enter(PrintRunState::Faulted,
+          stepLabel() + ": the move was not sent: " + forbidden + "; " + advice(PrintRunAdvice::RetryWhenPrinterIdle));
     return;
   }
   core::Status started = m_positioner.startMove(m_steps[m_step].orientation);
@@ -202,10 +223,14 @@ core::Status PrintRun::pause() {
       const core::Status stopped = requestStop();
       if (!stopped.ok()) {
         m_lastProblem = "the stop was refused: " + stopped.error().describe();
-        enter(PrintRunState::Faulted, stepLabel() + ": pause: " + stopRequestText(stopped, m_positioner.name()));
+        enter(PrintRunState::Faulted,
+              stepLabel() +
+                  ": pause: " + stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
         return stopped;
       }
-      enter(PrintRunState::Paused, stepLabel() + ": paused; " + stopRequestText(stopped, m_positioner.name()));
+      enter(PrintRunState::Paused,
+            stepLabel() + ": paused; " +
+                stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
       return core::Done{};
     }
     case PrintRunState::Printing:
@@ -276,21 +301,35 @@ core::Status PrintRun::abort() {
       m_printerSideCommand = m_printer->cancelPrint();
       enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: cancelling the job on " +
                                         m_printer->name());
+      switchHeatersOff();
       return core::Done{};
     }
     if (m_state == PrintRunState::Printing) {
       enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: stop the printer");
+      switchHeatersOff();
       return core::Done{};
     }
   }
   if (m_state == PrintRunState::Moving || m_state == PrintRunState::Settling) {
     const core::Status stopped = requestStop();
     if (!stopped.ok()) m_lastProblem = "the stop was refused: " + stopped.error().describe();
-    enter(PrintRunState::Aborted, stepLabel() + ": aborted; " + stopRequestText(stopped, m_positioner.name()));
+    enter(PrintRunState::Aborted,
+          stepLabel() + ": aborted; " +
+              stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
+    switchHeatersOff();
     return core::Done{};
   }
   enter(PrintRunState::Aborted, stepLabel() + ": aborted");
+  switchHeatersOff();
   return core::Done{};
+}
+
+// An aborted run leaves no heater on, whatever it was doing: between two steps the previous step's G-code may
+// have left them hot for the next one. Queued behind a cancel, so it reaches the printer after the cancel.
+void PrintRun::switchHeatersOff() {
+  if (m_printer == nullptr) return;
+  m_heatersOffCommand = m_printer->switchHeatersOff();
+  enter(m_state, stepLabel() + ": switching the heaters of " + m_printer->name() + " off");
 }
 
 core::Status PrintRun::regionDone(std::size_t step) {
@@ -317,6 +356,7 @@ core::Status PrintRun::regionDone(std::size_t step) {
 void PrintRun::finishRegion() {
   m_phase = PrintPhase::None;
   m_printInterrupted = false;
+  m_stepBegun = false;
   if (m_step + 1 == m_steps.size()) {
     enter(PrintRunState::Completed, "all " + std::to_string(m_steps.size()) + " regions printed");
     return;
@@ -345,6 +385,17 @@ void PrintRun::tick() {
   if (commandReady(m_printerSideCommand)) {
     const core::Status side = m_printerSideCommand.get();
     if (!side.ok()) enter(m_state, stepLabel() + ": the printer refused: " + side.error().describe());
+  }
+  if (commandReady(m_heatersOffCommand)) {
+    const core::Status off = m_heatersOffCommand.get();
+    if (off.ok())
+      enter(m_state, stepLabel() + ": " + m_printer->name() + " switched the heaters off");
+    else if (m_printer->status().stop.latched())
+      enter(m_state, stepLabel() + ": the heaters-off was not taken (" + off.error().describe() +
+                         "); the printer's emergency stop switches its heaters off");
+    else
+      enter(m_state, stepLabel() + ": the heaters of " + m_printer->name() +
+                         " may still be on: " + off.error().describe() + "; switch them off on the printer");
   }
   if (m_state != PrintRunState::Moving && m_state != PrintRunState::Settling && m_state != PrintRunState::Printing)
     return;
@@ -379,6 +430,7 @@ void PrintRun::tick() {
   }
   if (now - m_settleStarted >= m_options.settleTime) {
     if (stepUsesPrinter()) return beginPrint(snapshot);
+    m_stepBegun = true;
     enter(PrintRunState::Printing, stepLabel() + ": settled; print region " + std::to_string(m_step + 1));
     if (m_printRequest) m_printRequest(m_step, m_steps[m_step]);
   }
@@ -414,10 +466,8 @@ void PrintRun::interruptPrint(const std::string& reason) {
   m_phase = PrintPhase::None;
   m_printInterrupted = true;
   m_lastProblem = reason;
-  enter(PrintRunState::Paused, stepLabel() + ": paused: " + reason +
-                                   "; the platform stays where it is; fix it, then resume (the printer's job "
-                                   "continues when it is paused or still printing) or finish the region by hand "
-                                   "and press Region done, or abort");
+  enter(PrintRunState::Paused, stepLabel() + ": paused: " + reason + "; the platform stays where it is; " +
+                                   advice(PrintRunAdvice::PrintInterrupted));
 }
 
 
@@ -436,6 +486,7 @@ void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
     const core::Status uploaded = m_printerCommand.get();
     if (!uploaded.ok()) return interruptPrint("the upload of " + remoteName() + " failed: " + uploaded.error().describe());
     m_phase = PrintPhase::Starting;
+    m_stepBegun = true;  // from here the printer may print, even when its answer is lost
     m_printerCommand = m_printer->startPrint(remoteName());
     enter(PrintRunState::Printing, stepLabel() + ": uploaded; starting " + remoteName());
     return;
@@ -443,8 +494,11 @@ void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
   if (m_phase == PrintPhase::Starting) {
     if (!commandReady(m_printerCommand)) return;
     const core::Status started = m_printerCommand.get();
-    if (!started.ok())
+    if (!started.ok()) {
+      // Refused in the printer's words: it did not start. No answer at all: it may have.
+      if (started.error().code != core::ErrorCode::DeviceUnreachable) m_stepBegun = false;
       return interruptPrint("the printer did not start " + remoteName() + ": " + started.error().describe());
+    }
     m_phase = PrintPhase::Running;
     m_pollsAtStart = p.polls;
     m_printStarted = m_options.steadyNow();
@@ -459,6 +513,7 @@ void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
   if (p.state == PrinterJobState::Cancelled && ours)
     return interruptPrint("the job " + remoteName() + " was cancelled on the printer");
   if (ours && (p.state == PrinterJobState::Printing || p.state == PrinterJobState::Paused)) {
+    m_stepProgress = p.progress;
     if (const std::string fault = temperatureFault(p, m_options.temperatureOvershootC); !fault.empty()) {
       m_printerSideCommand = m_printer->pausePrint();
       return interruptPrint(fault);

@@ -2,15 +2,20 @@
 // 127.0.0.1, Marlin on a pseudo-terminal), all in this test process, and
 // `multidir simulate --printer moonraker|octoprint|marlin`.
 #include <gtest/gtest.h>
+#include <signal.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "multidir/hardware/device_simulator.h"
 #include "multidir/hardware/marlin_simulator.h"
+#include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/moonraker_simulator.h"
 #include "multidir/hardware/octoprint_simulator.h"
 #include "support/cli_runner.h"
@@ -22,23 +27,25 @@ using multidir::test::CliRun;
 using multidir::test::runCli;
 namespace hw = multidir::hardware;
 
-// Heats (about 18 simulated seconds), then 20 moves of 10 mm at 1200 mm/min.
-std::string stepGcode() {
-  std::string text = "M104 S200\nM109 S200\nG90\nM83\nG1 X0 Y0 Z0.3 F1200\n";
+// Heats (about 18 simulated seconds), then 20 moves of 10 mm at 1200 mm/min; `heatersLeftOn`: the bed heated
+// too and both left on at the end, for the next step (as robot-0.8.ini's end G-code leaves the bed on).
+std::string stepGcode(bool heatersLeftOn = false) {
+  std::string text =
+      std::string(heatersLeftOn ? "M140 S60\n" : "") + "M104 S200\nM109 S200\nG90\nM83\nG1 X0 Y0 Z0.3 F1200\n";
   for (int i = 0; i < 20; ++i) text += "G1 X" + std::to_string((i + 1) % 2 * 10) + " Y" + std::to_string(i) + " E0.5\n";
-  return text + "M104 S0\n";
+  return text + (heatersLeftOn ? "" : "M104 S0\n");
 }
 
 // A sliced job of two steps as `multidir slice` writes it, G-code beside it: 4-DOF at 0 and 30 degrees, or
 // 5-DOF at tilt 0 and tilt 40 / azimuth 90.
-void writeJob(const std::string& dir, bool sliced = true, bool robot = false) {
+void writeJob(const std::string& dir, bool sliced = true, bool robot = false, bool heatersLeftOn = false) {
   std::filesystem::create_directories(dir);
   std::string steps;
   std::string slicing;
-  const double angles[2] = {0.0, 30.0};
+  const double angles[2] = {0.0, heatersLeftOn ? 90.0 : 30.0};  // a long turn to press Ctrl-C in
   for (int k = 1; k <= 2; ++k) {
     const std::string gcode = "step-0" + std::to_string(k) + ".gcode";
-    std::ofstream(dir + "/" + gcode) << stepGcode();
+    std::ofstream(dir + "/" + gcode) << stepGcode(heatersLeftOn);
     const std::string stepAngles = robot ? (k == 1 ? "{\"tiltDegrees\": 0, \"azimuthDegrees\": 0}"
                                                    : "{\"tiltDegrees\": 40, \"azimuthDegrees\": 90}")
                                          : "{\"rotaryDegrees\": " + std::to_string(angles[k - 1]) + "}";
@@ -118,7 +125,36 @@ TEST_F(CliRunTest, Runs5DofJobsOnTheRobotArm) {
   EXPECT_EQ(printerRequests("/printer/print/start"), 2);
 }
 
-TEST_F(CliRunTest, APrinterFaultStopsTheRunWithItsReasonAndWhereToContinue) {
+// Issue 24: a job for the other device was refused with the driver's Modbus exception ("illegal data
+// address", "gateway target") instead of saying that the wrong device is connected.
+TEST_F(CliRunTest, A5DofJobAtARotaryPlatformIsRefusedSayingWhatItNeedsAndNothingMoves) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.RobotJobAtRotary");
+  writeJob(dir + "/job", true, true);
+  startSimulators(1.0, false);
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("this job needs a 5-DOF robot arm"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("answers as a rotary platform controller"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--platform"), std::string::npos) << run.err;
+  EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Rotary), 0u);
+  EXPECT_EQ(printerRequests("/server/files/upload"), 0);
+}
+
+TEST_F(CliRunTest, A4DofJobAtARobotArmIsRefusedSayingWhatItNeedsAndNothingMoves) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.RotaryJobAtRobot");
+  writeJob(dir + "/job");
+  startSimulators(1.0, true);
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("this job needs a 4-DOF rotary platform"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("answers as a robot arm"), std::string::npos) << run.err;
+  EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Robot), 0u);
+  EXPECT_EQ(printerRequests("/server/files/upload"), 0);
+}
+
+// Issue 24: the advice was "continue with --from 1", which prints step 1 again from its start over the half
+// of it the printer had printed.
+TEST_F(CliRunTest, APrinterFaultMidStepSaysTheStepWasPartlyPrintedAndOffersTheNextStepOrARestart) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.Fault");
   writeJob(dir + "/job");
   hw::SimulatorOptions deviceOptions;
@@ -136,7 +172,15 @@ TEST_F(CliRunTest, APrinterFaultStopsTheRunWithItsReasonAndWhereToContinue) {
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.err.find("the run stopped at step 1"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("step-01.gcode was cancelled on the printer"), std::string::npos) << run.err;
-  EXPECT_NE(run.err.find("--from 1"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("step 1 was interrupted while printing (the printer had read"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--from 1 would print the step again from its start, over that part"), std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("continue with the next step: --from 2"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("clear the platform and print the whole job again"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("continue with --from 1"), std::string::npos) << run.err;
+  // The log speaks of the command line, not of the studio's buttons.
+  EXPECT_EQ(run.out.find("Region done"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("multidir run stops here"), std::string::npos) << run.out;
   EXPECT_EQ(printerRequests("/printer/print/start"), 1);
 }
 
@@ -150,6 +194,145 @@ TEST_F(CliRunTest, CtrlCCancelsThePrintersJobAndEnds) {
   EXPECT_NE(run.err.find("by Ctrl-C"), std::string::npos) << run.err;
   EXPECT_EQ(printerRequests("/printer/print/cancel"), 1);
   EXPECT_EQ(printer->state().jobState, "cancelled");
+}
+
+// Issue 24: Ctrl-C while the platform turned between two steps left the heaters on (the run only cancelled a
+// job it was printing). Ctrl-C is sent once the first step is complete and the platform turns to 90 degrees.
+TEST_F(CliRunTest, CtrlCDuringATurnSwitchesTheHeatersOff) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.CtrlCTurn");
+  writeJob(dir + "/job", true, false, true);
+  startSimulators(200.0);
+  const std::string pidFile = dir + "/pid";
+  std::filesystem::remove(pidFile);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run '" + dir + "/job' " + deviceArgs(), dir,
+                  "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
+  });
+  bool interrupted = false;
+  for (int i = 0; i < 3000 && !interrupted; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const hw::SimulatedRotaryState platform = devices->rotaryState();
+    if (printer->state().jobState != "complete" || !platform.moving || platform.targetAngleDegrees < 89.0) continue;
+    const std::string pid = multidir::test::readAll(pidFile);
+    ASSERT_FALSE(pid.empty());
+    ASSERT_GT(printer->state().bed.targetC, 59.0);  // the first step left them on
+    ::kill(std::stoi(pid), SIGINT);
+    interrupted = true;
+  }
+  const CliRun run = cli.get();
+  ASSERT_TRUE(interrupted) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.out.find("Ctrl-C: stopping both devices"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("switched the heaters off"), std::string::npos) << run.out;
+  EXPECT_EQ(printer->state().extruder.targetC, 0.0);
+  EXPECT_EQ(printer->state().bed.targetC, 0.0);
+  EXPECT_EQ(printerRequests("/printer/print/cancel"), 0);  // nothing was printing
+  // Nothing of step 2 was printed: --from 2 is the true way on.
+  EXPECT_NE(run.err.find("nothing of step 2 was printed: continue with --from 2"), std::string::npos) << run.err;
+}
+
+// Ctrl-C before the first step (here while the platform homes from 170 degrees at 10 degrees/s) stopped
+// nothing: the wait for the homing ended, the platform went on homing and the heaters stayed as they were
+// (on, from an earlier job).
+TEST_F(CliRunTest, CtrlCWhileThePlatformHomesStopsItAndSwitchesTheHeatersOff) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.CtrlCHoming");
+  writeJob(dir + "/job");
+  hw::SimulatorOptions deviceOptions;
+  deviceOptions.robot = false;
+  deviceOptions.rotaryInitialAngleDegrees = 170.0;
+  deviceOptions.rotaryHomingSpeedDegreesPerSecond = 10.0;
+  devices = std::make_unique<hw::DeviceSimulator>(deviceOptions);
+  ASSERT_TRUE(devices->start().ok());
+  hw::MoonrakerSimulatorOptions printerOptions;
+  printerOptions.speed = 200.0;
+  printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
+  ASSERT_TRUE(printer->start().ok());
+  printerUrl = "http://127.0.0.1:" + std::to_string(printer->port());
+  {  // an earlier job left the heaters on
+    hw::MoonrakerSettings settings;
+    settings.host = "127.0.0.1";
+    settings.port = printer->port();
+    auto link = hw::makeMoonrakerLink(settings);
+    ASSERT_TRUE(link.ok());
+    ASSERT_TRUE((*link)->connect().ok());
+    std::ofstream(dir + "/hot.gcode") << stepGcode(true);
+    ASSERT_TRUE((*link)->upload(dir + "/hot.gcode", "hot.gcode").get().ok());
+    ASSERT_TRUE((*link)->startPrint("hot.gcode").get().ok());
+    for (int i = 0; i < 500 && printer->state().jobState != "complete"; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(printer->state().jobState, "complete");
+    ASSERT_GT(printer->state().bed.targetC, 59.0);
+  }
+  const std::string pidFile = dir + "/pid";
+  std::filesystem::remove(pidFile);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run '" + dir + "/job' " + deviceArgs(), dir,
+                  "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
+  });
+  bool interrupted = false;
+  for (int i = 0; i < 3000 && !interrupted; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (!devices->rotaryState().homing) continue;
+    const std::string pid = multidir::test::readAll(pidFile);
+    ASSERT_FALSE(pid.empty());
+    ::kill(std::stoi(pid), SIGINT);
+    interrupted = true;
+  }
+  const CliRun run = cli.get();
+  ASSERT_TRUE(interrupted) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("stopped by Ctrl-C while homing the platform, before the first step: nothing was printed"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.out.find("heaters off: done"), std::string::npos) << run.out;
+  EXPECT_EQ(printer->state().extruder.targetC, 0.0);
+  EXPECT_EQ(printer->state().bed.targetC, 0.0);
+  EXPECT_FALSE(devices->rotaryState().homing);            // the stop reached the platform
+  EXPECT_EQ(printerRequests("/server/files/upload"), 1);  // the earlier job's only
+}
+
+TEST_F(CliRunTest, CtrlCMidStepCancelsItSwitchesTheHeatersOffAndSaysItWasPartlyPrinted) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.CtrlCMidStep");
+  writeJob(dir + "/job", true, false, true);
+  startSimulators(1.0);  // the first step prints for about half a minute
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout --preserve-status -s INT 3");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_EQ(printerRequests("/printer/print/cancel"), 1);
+  EXPECT_EQ(printer->state().extruder.targetC, 0.0);
+  EXPECT_EQ(printer->state().bed.targetC, 0.0);
+  EXPECT_NE(run.err.find("step 1 was interrupted while printing"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--from 2"), std::string::npos) << run.err;
+}
+
+// The log file ends with how the command ended, as stderr says it.
+TEST_F(CliRunTest, TheRunLogEndsWithWhyTheRunStoppedAndHowToGoOn) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.LogEnding");
+  writeJob(dir + "/job");
+  startSimulators(1.0);
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs() + " --log '" + dir + "/run.log'", dir,
+                            "timeout --preserve-status -s INT 2");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  const std::string log = multidir::test::readAll(dir + "/run.log");
+  ASSERT_FALSE(run.err.empty());
+  const std::string ending = run.err.substr(0, run.err.find('\n'));
+  EXPECT_NE(ending.find("multidir run: the run stopped at step 1 (aborted"), std::string::npos) << ending;
+  EXPECT_NE(log.find("] " + ending + "\n"), std::string::npos) << log;
+}
+
+// The log file is read as text: no terminal control sequences, even from names the job brings (here its
+// folder's name holds a colour escape).
+TEST_F(CliRunTest, TheRunLogHoldsNoTerminalEscapes) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.LogEscapes");
+  const std::string job = dir + "/job\x1b[31mred\x1b[0m";
+  writeJob(job);
+  startSimulators(200.0);
+  const CliRun run = runCli("run '" + job + "' " + deviceArgs() + " --log '" + dir + "/run.log'", dir, "timeout 60");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  const std::string log = multidir::test::readAll(dir + "/run.log");
+  EXPECT_NE(log.find("all 2 regions printed"), std::string::npos) << log;
+  EXPECT_NE(log.find("jobred"), std::string::npos) << log;
+  EXPECT_EQ(log.find('\x1b'), std::string::npos) << log;
+  EXPECT_EQ(run.out.find('\x1b'), std::string::npos) << run.out;
 }
 
 TEST_F(CliRunTest, AJobWithoutGcodeSaysToSliceItFirst) {
@@ -244,6 +427,24 @@ TEST(CliSimulatePrinter, ServesOctoPrintOnLoopbackAndPrintsTheApiKeyItExpects) {
   EXPECT_NE(run.out.find("API key: LAB-KEY"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("--printer octoprint://127.0.0.1:"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
+}
+
+// Issue 24: a second `multidir simulate --printer` on a busy port listened beside the first one (SO_REUSEPORT)
+// and the requests were split between the two printers.
+TEST(CliSimulatePrinter, APortInUseFailsAtOnceNamingThePortAndWhatToDo) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulatePrinter.PortInUse");
+  for (const std::string kind : {"moonraker", "octoprint"}) {
+    hw::MoonrakerSimulator first;
+    ASSERT_TRUE(first.start().ok());
+    const std::string port = std::to_string(first.port());
+    const CliRun run =
+        runCli("simulate --printer " + kind + " --port " + port, dir, "timeout --preserve-status -s INT 5");
+    EXPECT_EQ(run.exitCode, 1) << kind << ": " << run.out << run.err;
+    EXPECT_NE(run.err.find("port " + port + " on 127.0.0.1 is in use"), std::string::npos) << kind << ": " << run.err;
+    EXPECT_NE(run.err.find("stop the other program"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("--port"), std::string::npos) << run.err;
+    EXPECT_EQ(run.out.find("listening on"), std::string::npos) << run.out;
+  }
 }
 
 TEST(CliSimulatePrinter, UnknownPrinterOrFaultIsAUsageErrorNamingTheChoices) {

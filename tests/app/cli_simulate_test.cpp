@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "multidir/hardware/device_simulator.h"
 #include "support/cli_runner.h"
 #include "support/test_models.h"
 
@@ -33,6 +34,18 @@ TEST(CliSimulate, ListensOnLoopbackAndStopsCleanlyOnSigint) {
   EXPECT_NE(run.out.find("Simulator listening on 127.0.0.1:"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("rotary: disabled, not homed, angle 7.50 deg"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
+}
+
+TEST(CliSimulate, APortInUseFailsAtOnceNamingThePortAndWhatToDo) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulate.PortInUse");
+  multidir::hardware::DeviceSimulator first;
+  ASSERT_TRUE(first.start().ok());
+  const std::string port = std::to_string(first.port());
+  const CliRun run = runCli("simulate --port " + port, dir, "timeout --preserve-status -s INT 5");
+  EXPECT_EQ(run.exitCode, 1) << run.out << run.err;
+  EXPECT_NE(run.err.find("port " + port + " on 127.0.0.1 is in use"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("stop the other program"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--port"), std::string::npos) << run.err;
 }
 
 // Issue 14: binding an address of another machine said "choose another port".

@@ -33,7 +33,12 @@ TEST(DeviceSimulator, PortInUseIsReportedWithWhatToDo) {
   EXPECT_NE(status.error().message.find("cannot listen on 127.0.0.1:" + std::to_string(first.port())),
             std::string::npos)
       << status.error().message;
-  EXPECT_NE(status.error().message.find("address already in use: choose another port"), std::string::npos)
+  EXPECT_NE(status.error().message.find("port " + std::to_string(first.port()) + " on 127.0.0.1 is in use"),
+            std::string::npos)
+      << status.error().message;
+  EXPECT_NE(status.error().message.find("stop the other program listening there"), std::string::npos)
+      << status.error().message;
+  EXPECT_NE(status.error().message.find("choose another port with --port"), std::string::npos)
       << status.error().message;
 }
 

@@ -225,6 +225,26 @@ TEST_F(MarlinLinkTest, CancelStopsStreamingAndSwitchesTheHeatersOff) {
   EXPECT_LT(executedFileCommands().size(), gcodeCommands(shortGcode()).size());
 }
 
+TEST_F(MarlinLinkTest, SwitchHeatersOffIsRefusedWhileAJobStreamsAndSentBetweenJobs) {
+  startSimulator(20.0);  // the short program heats for about a second here
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  const core::Status whileStreaming = outcome(link->switchHeatersOff());
+  ASSERT_FALSE(whileStreaming.ok());
+  EXPECT_NE(messageOf(whileStreaming).find("cancel it first"), std::string::npos) << messageOf(whileStreaming);
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }, 10000ms));
+  const std::string hot =
+      writeFile(std::filesystem::path(testing::TempDir()) / "marlin-link-hot" / "step-01.gcode", heatersLeftOnGcode());
+  startSimulator(400.0);
+  link = connected();
+  ASSERT_TRUE(uploadedAndStarted(*link, hot));
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }));
+  ASSERT_GT(sim->state().bed.targetC, 59.0);
+  const core::Status off = outcome(link->switchHeatersOff());
+  ASSERT_TRUE(off.ok()) << messageOf(off);
+  EXPECT_TRUE(eventually([&] { return sim->state().extruder.targetC == 0.0 && sim->state().bed.targetC == 0.0; }));
+}
+
 TEST_F(MarlinLinkTest, APrinterThatStopsAnsweringIsLostAfterItsTimeAndComesBack) {
   auto link = connected();
   sim->dropLink();

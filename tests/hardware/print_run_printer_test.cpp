@@ -263,6 +263,45 @@ TEST_P(PrintRunWithPrinterTest, EmergencyStopDuringPrintingReachesBothDevicesWit
   EXPECT_TRUE(logMentions(run, "confirmed the emergency stop"));
 }
 
+// Issue 24: a stop while the platform turned between two steps left the heaters as the previous step's
+// G-code had left them (on, for the next step): the run only cancels a job it is printing.
+TEST_P(PrintRunWithPrinterTest, AnAbortDuringATurnSwitchesTheHeatersOff) {
+  startPrinter(400.0);
+  const auto dir =
+      std::filesystem::path(testing::TempDir()) / (std::string("heaters-left-on-") + protocolText(GetParam()));
+  const std::string hot = writeFile(dir / "step-01.gcode", heatersLeftOnGcode());
+  PrintRun run(*positioner,
+               {{PlatformOrientation::rotary(0.0), "region 1", hot},
+                {PlatformOrientation::rotary(-90.0), "region 2", writeFile(dir / "step-02.gcode", shortGcode())}},
+               runOptions(), printer.get());
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(tickUntil(run, [&] { return run.currentStep() == 1 && run.state() == PrintRunState::Moving; }))
+      << wholeLog(run);
+  EXPECT_GT(printerSim->bed().targetC, 59.0);  // the first step left them on
+  EXPECT_GT(printerSim->extruder().targetC, 199.0);
+  ASSERT_TRUE(run.abort().ok());
+  ASSERT_TRUE(tickUntil(run, [&] { return !run.stopUnconfirmed(); })) << wholeLog(run);
+  EXPECT_TRUE(logMentions(run, "switched the heaters off")) << wholeLog(run);
+  // Marlin answers M140 once it is queued: the simulated heater follows a moment later.
+  EXPECT_TRUE(tickUntil(run, [&] { return printerSim->extruder().targetC == 0.0 && printerSim->bed().targetC == 0.0; }))
+      << "extruder target " << printerSim->extruder().targetC << " C, bed " << printerSim->bed().targetC << " C";
+  EXPECT_FALSE(run.stepBegun());  // the second step was never started: --from 2 is true
+}
+
+TEST_P(PrintRunWithPrinterTest, AnAbortWhilePrintingCancelsTheJobAndSwitchesTheHeatersOff) {
+  PrintRun run = runWithPrinter(20.0);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
+  // The run has read the printer's progress of the step since (it reads it as it ticks).
+  ASSERT_TRUE(tickUntil(run, [&] { return run.stepProgress() > 0.0; })) << wholeLog(run);
+  ASSERT_TRUE(run.abort().ok());
+  ASSERT_TRUE(tickUntil(run, [&] { return !run.stopUnconfirmed(); })) << wholeLog(run);
+  EXPECT_TRUE(logMentions(run, "switched the heaters off")) << wholeLog(run);
+  EXPECT_TRUE(tickUntil(run, [&] { return printerSim->extruder().targetC == 0.0 && printerSim->bed().targetC == 0.0; }))
+      << "extruder target " << printerSim->extruder().targetC << " C, bed " << printerSim->bed().targetC << " C";
+  EXPECT_TRUE(run.stepBegun());  // part of region 1 is on the platform
+}
+
 // The kitten decomposed for this rotary platform (4-DOF about x, up y, greedy search), once per test process.
 const core::Decomposition& kittenPlan() {
   static const core::Decomposition plan = [] {
@@ -382,6 +421,10 @@ class ScriptedPrinter : public PrinterLink {
   std::future<core::Status> pausePrint() override { return done(); }
   std::future<core::Status> resumePrint() override { return done(); }
   std::future<core::Status> cancelPrint() override { return done(); }
+  std::future<core::Status> switchHeatersOff() override {
+    ++heatersOff;
+    return done();
+  }
   std::future<core::Status> emergencyStop() override { return done(); }
   core::Status clearStop() override { return core::Done{}; }
   PrinterStatus status() const override { return state; }
@@ -393,6 +436,7 @@ class ScriptedPrinter : public PrinterLink {
     return p.get_future();
   }
   std::vector<std::string> uploads;
+  int heatersOff = 0;
   PrinterStatus state = [] {
     PrinterStatus s;
     s.link = LinkState::Connected;
@@ -475,6 +519,86 @@ TEST(PrintRunInterlock, ARegionThePrinterPrintsCannotBeDeclaredDoneByHand) {
   ASSERT_EQ(run.state(), PrintRunState::Printing);
   ASSERT_EQ(printer.uploads, std::vector<std::string>{"step-01.gcode"});
   EXPECT_FALSE(run.regionDone(0).ok());
+}
+
+// Issue 24: --from N after a stop reprinted a step the printer had begun over its printed part; the run tells
+// its owner whether the step was begun.
+TEST(PrintRunInterlock, AStepIsBegunFromTheStartSentUntilThePrinterReportsItComplete) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  PrintRun run = oneStepRun(platform, printer);
+  ASSERT_TRUE(run.start().ok());
+  run.tick();  // settling
+  run.tick();  // uploading
+  ASSERT_EQ(run.state(), PrintRunState::Printing);
+  EXPECT_FALSE(run.stepBegun());  // only uploaded: nothing printed yet
+  run.tick();                     // uploaded: the start is sent
+  EXPECT_TRUE(run.stepBegun());
+  run.tick();  // started
+  printer.state.state = PrinterJobState::Printing;
+  printer.state.currentFile = "step-01.gcode";
+  printer.state.progress = 0.4;
+  printer.state.polls = 2;
+  run.tick();
+  EXPECT_TRUE(run.stepBegun());
+  EXPECT_DOUBLE_EQ(run.stepProgress(), 0.4);
+  printer.state.state = PrinterJobState::Complete;
+  printer.state.polls = 3;
+  run.tick();
+  EXPECT_EQ(run.state(), PrintRunState::Completed);
+  EXPECT_FALSE(run.stepBegun());
+}
+
+TEST(PrintRunInterlock, AnAbortBetweenStepsSwitchesTheHeatersOffAndAnAbortWithoutAPrinterSendsNothing) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, immediate(), &printer);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_EQ(run.state(), PrintRunState::Moving);
+  ASSERT_TRUE(run.abort().ok());
+  EXPECT_EQ(printer.heatersOff, 1);
+  platform.state.stopConfirmed = true;
+  run.tick();
+  EXPECT_FALSE(run.stopUnconfirmed());
+  EXPECT_TRUE(logMentions(run, "test printer switched the heaters off"));
+}
+
+// The command line ends the run at a pause: its log must not send the operator to the studio's buttons.
+TEST(PrintRunInterlock, TheOwnersAdviceReplacesTheStudiosButtonsAfterAPause) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  PrintRunOptions options = immediate();
+  options.advice = [](PrintRunAdvice situation) {
+    return situation == PrintRunAdvice::PrintInterrupted ? std::string("the owner says how to go on")
+                                                         : std::string("other advice");
+  };
+  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, options, &printer);
+  ASSERT_TRUE(run.start().ok());
+  run.tick();
+  run.tick();
+  printer.state.linkLost = true;  // the link lost while the step prints: paused, print interrupted
+  run.tick();
+  ASSERT_EQ(run.state(), PrintRunState::Paused);
+  EXPECT_TRUE(logMentions(run, "the platform stays where it is; the owner says how to go on"));
+  EXPECT_FALSE(logMentions(run, "Region done"));
+}
+
+TEST(PrintRunInterlock, ARefusedStopSendsTheOperatorToTheOwnersEmergencyStop) {
+  struct RefusingStop : StillPositioner {
+    core::Status stopMotion() override {
+      return core::Error{core::ErrorCode::DeviceUnreachable, "the link is down", "test platform"};
+    }
+  } platform;
+  ScriptedPrinter printer;
+  PrintRunOptions options = immediate();
+  options.advice = [](PrintRunAdvice situation) {
+    return situation == PrintRunAdvice::EmergencyStop ? std::string("press the red button") : std::string("other");
+  };
+  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, options, &printer);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(run.abort().ok());
+  EXPECT_TRUE(logMentions(run, "test platform may still move; press the red button")) << wholeLog(run);
+  EXPECT_FALSE(logMentions(run, "E-STOP"));
 }
 
 }  // namespace

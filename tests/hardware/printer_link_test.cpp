@@ -37,6 +37,24 @@ class PrinterLinkTest : public ::testing::TestWithParam<PrinterProtocol> {
 INSTANTIATE_TEST_SUITE_P(Protocols, PrinterLinkTest,
                          ::testing::Values(PrinterProtocol::Moonraker, PrinterProtocol::OctoPrint), protocolName);
 
+// Issue 24: cpp-httplib's SO_REUSEPORT let a second simulator listen on the port of the first, and the
+// kernel split the requests between the two printers.
+TEST_P(PrinterLinkTest, ASimulatorOnAPortInUseFailsNamingThePortAndWhatToDo) {
+  PrinterSimulatorOptions options;
+  options.port = sim->port();
+  auto second = printerSimulator(GetParam(), options);
+  const core::Status started = second->start();
+  ASSERT_FALSE(started.ok()) << "a second simulator listens on port " << sim->port();
+  const std::string port = std::to_string(sim->port());
+  EXPECT_NE(started.error().message.find("port " + port + " on 127.0.0.1 is in use"), std::string::npos)
+      << started.error().message;
+  EXPECT_NE(started.error().message.find("stop the other program"), std::string::npos) << started.error().message;
+  EXPECT_NE(started.error().message.find("--port"), std::string::npos) << started.error().message;
+  // The first one still answers every request.
+  auto link = connected();
+  expectConnectedAndIdle(link->status());
+}
+
 TEST_P(PrinterLinkTest, ConnectReadsTheIdlePrintersStatus) {
   auto link = connected();
   const PrinterStatus s = link->status();
@@ -76,6 +94,20 @@ TEST_P(PrinterLinkTest, UploadsStartsAndFollowsAPrintToCompletion) {
   std::vector<std::string> states;
   for (const auto& e : sim->jobEvents()) states.push_back(e.state);
   EXPECT_EQ(states, (std::vector<std::string>{"printing", "complete"}));
+}
+
+TEST_P(PrinterLinkTest, SwitchHeatersOffSetsEveryHeatersTargetToZeroAfterAJobLeftThemOn) {
+  auto link = connected();
+  const std::string hot =
+      writeFile(std::filesystem::path(testing::TempDir()) / "printer-link-hot" / "step-01.gcode", heatersLeftOnGcode());
+  ASSERT_TRUE(uploadedAndStarted(*link, hot));
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }));
+  ASSERT_GT(sim->state().bed.targetC, 59.0);
+  const core::Status off = outcome(link->switchHeatersOff());
+  ASSERT_TRUE(off.ok()) << messageOf(off);
+  EXPECT_EQ(sim->state().extruder.targetC, 0.0);
+  EXPECT_EQ(sim->state().bed.targetC, 0.0);
+  EXPECT_TRUE(eventually([&] { return link->status().extruder.targetC == 0.0 && link->status().bed.targetC == 0.0; }));
 }
 
 TEST_P(PrinterLinkTest, ReadsTheHeatersAndProgressWhileThePrinterHeats) {

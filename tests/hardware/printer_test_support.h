@@ -30,6 +30,14 @@ inline std::string shortGcode() {
   return text;
 }
 
+// shortGcode() as a step of a multi-step job leaves it: the bed at 60 C and the extruder at 200 C at its end,
+// for the next step (as robot-0.8.ini's end G-code leaves the bed on).
+inline std::string heatersLeftOnGcode() {
+  std::string text = "M140 S60\nM104 S200\nM109 S200\nG90\nM83\nG1 X0 Y0 Z0.3 F1200\n";
+  for (int i = 0; i < 20; ++i) text += "G1 X" + std::to_string((i + 1) % 2 * 10) + " Y" + std::to_string(i) + " E0.5\n";
+  return text;
+}
+
 inline std::string writeFile(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
@@ -208,6 +216,8 @@ class SimulatedPrinterUnderTest {
   [[nodiscard]] virtual int completedJobs() const = 0;
   [[nodiscard]] virtual bool printingPastHeating() const = 0;  // the current job's moves have begun
   [[nodiscard]] virtual bool halted() const = 0;               // by its emergency stop (or a fault)
+  [[nodiscard]] virtual HeaterReading extruder() const = 0;    // the simulated printer's, now
+  [[nodiscard]] virtual HeaterReading bed() const = 0;
 };
 
 // Moonraker and OctoPrint: one HTTP PrinterSimulator each, the same records; only their paths differ.
@@ -249,6 +259,8 @@ class SimulatedHttpPrinter : public SimulatedPrinterUnderTest {
     return s.jobState == "printing" && s.progress > 0.1;
   }
   bool halted() const override { return m_sim->state().firmwareState == "shutdown"; }
+  HeaterReading extruder() const override { return m_sim->state().extruder; }
+  HeaterReading bed() const override { return m_sim->state().bed; }
 
  private:
   std::vector<Clock::time_point> requestTimes(const std::function<bool(const PrinterRequestRecord&)>& which) const {
@@ -309,6 +321,8 @@ class SimulatedMarlin : public SimulatedPrinterUnderTest {
   // M109's record is written when the wait ends: past the heating once it has more than the finished jobs.
   bool printingPastHeating() const override { return executedTimes("M109 S200").size() > executedTimes("M400").size(); }
   bool halted() const override { return m_sim.state().halted; }
+  HeaterReading extruder() const override { return m_sim.state().extruder; }
+  HeaterReading bed() const override { return m_sim.state().bed; }
 
  private:
   std::vector<Clock::time_point> executedTimes(const std::string& command) const {

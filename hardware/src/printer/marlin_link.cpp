@@ -31,6 +31,8 @@ using namespace std::chrono_literals;
 // Sent when a job is cancelled: heaters and part fan off. No motion: the platform may be about to turn, and
 // where the head may park is the operator's decision.
 const char* const kCancelLines[] = {"M104 S0", "M140 S0", "M107"};
+// switchHeatersOff(): both heaters, nothing else.
+const char* const kHeatersOffLines[] = {"M104 S0", "M140 S0"};
 constexpr std::size_t kRenumberAfterLines = 10000;
 
 core::Error invalid(const std::string& what, const std::string& where) {
@@ -89,6 +91,9 @@ class MarlinLink : public PrinterLink {
   std::future<core::Status> pausePrint() override { return submit(Command::Pause, "pausing the print", false); }
   std::future<core::Status> resumePrint() override { return submit(Command::Resume, "resuming the print", true); }
   std::future<core::Status> cancelPrint() override { return submit(Command::Cancel, "cancelling the print", false); }
+  std::future<core::Status> switchHeatersOff() override {
+    return submit(Command::HeatersOff, "switching the heaters off", false);
+  }
 
   std::future<core::Status> emergencyStop() override {
     std::future<core::Status> future;
@@ -120,7 +125,7 @@ class MarlinLink : public PrinterLink {
   std::string name() const override { return m_name; }
 
  private:
-  enum class Command { Upload, Start, Pause, Resume, Cancel };
+  enum class Command { Upload, Start, Pause, Resume, Cancel, HeatersOff };
   struct Pending {
     Command command = Command::Upload;
     std::string what;
@@ -129,7 +134,7 @@ class MarlinLink : public PrinterLink {
     std::promise<core::Status> promise;
   };
   // What a numbered line is for, so its ok can be acted on.
-  enum class Role { Reset, Poll, File, JobEnd, CoolDown, CoolDownEnd };
+  enum class Role { Reset, Poll, File, JobEnd, CoolDown, CoolDownEnd, HeatersOff, HeatersOffEnd };
   struct Line {
     std::string command;
     Role role = Role::Poll;
@@ -176,8 +181,11 @@ class MarlinLink : public PrinterLink {
   void failJobPromises(const core::Error& error) {
     if (m_startPromise) m_startPromise->set_value(error);
     if (m_cancelPromise) m_cancelPromise->set_value(error);
+    if (m_heatersOffPromise) m_heatersOffPromise->set_value(error);
     m_startPromise.reset();
     m_cancelPromise.reset();
+    m_heatersOffPromise.reset();
+    m_heatersOffQueued = 0;
   }
 
   // --- the port -------------------------------------------------------------------------------------------
@@ -410,6 +418,13 @@ class MarlinLink : public PrinterLink {
         break;
       case Role::CoolDown:
         break;
+      case Role::HeatersOff:
+        break;
+      case Role::HeatersOffEnd:
+        m_heatersOffQueued = 0;
+        if (m_heatersOffPromise) m_heatersOffPromise->set_value(core::Done{});
+        m_heatersOffPromise.reset();
+        break;
       case Role::CoolDownEnd:
         m_status.state = PrinterJobState::Cancelled;
         ++m_status.polls;
@@ -499,8 +514,8 @@ class MarlinLink : public PrinterLink {
       failJobPromises(core::Error{core::ErrorCode::Cancelled, "cancelled by the emergency stop", m_name});
     }
     while (!m_queue.empty()) {
-      // A start or cancel in progress holds later commands back.
-      if (m_startPromise || m_cancelPromise) return;
+      // A start, cancel or heaters-off in progress holds later commands back.
+      if (m_startPromise || m_cancelPromise || m_heatersOffPromise) return;
       Pending pending = std::move(m_queue.front());
       m_queue.pop_front();
       if (pending.command == Command::Upload) {
@@ -543,6 +558,10 @@ class MarlinLink : public PrinterLink {
           m_job->cancelling = true;
           m_cancelPromise = std::move(pending.promise);
           break;
+        case Command::HeatersOff:
+          m_heatersOffQueued = 0;
+          m_heatersOffPromise = std::move(pending.promise);
+          break;
         case Command::Upload:
           break;
       }
@@ -579,6 +598,13 @@ class MarlinLink : public PrinterLink {
         return core::Done{};
       case Command::Cancel:
         if (!m_job || m_job->cancelling) return invalid("no job is printing: nothing to cancel", m_name);
+        return core::Done{};
+      case Command::HeatersOff:
+        // Streamed between the job's lines they would be overridden by the job's own heater commands.
+        if (m_job)
+          return invalid(
+              "a job is streaming (" + m_job->name + "): cancel it first (the cancel switches the heaters off too)",
+              m_name);
         return core::Done{};
       case Command::Upload:
         return core::Done{};
@@ -690,6 +716,14 @@ class MarlinLink : public PrinterLink {
         return true;
       }
     }
+    if (!m_job && m_heatersOffPromise) {
+      const std::size_t count = sizeof kHeatersOffLines / sizeof kHeatersOffLines[0];
+      if (m_heatersOffQueued < count) {
+        const Role role = m_heatersOffQueued + 1 == count ? Role::HeatersOffEnd : Role::HeatersOff;
+        m_lines.push_back(Line{kHeatersOffLines[m_heatersOffQueued++], role, 0});
+        return true;
+      }
+    }
     if (pollDue) return appendPoll(now);
     return false;
   }
@@ -761,6 +795,8 @@ class MarlinLink : public PrinterLink {
   std::optional<Job> m_job;
   std::optional<std::promise<core::Status>> m_startPromise;
   std::optional<std::promise<core::Status>> m_cancelPromise;
+  std::optional<std::promise<core::Status>> m_heatersOffPromise;
+  std::size_t m_heatersOffQueued = 0;  // of kHeatersOffLines numbered so far
   Clock::time_point m_openedAt{};
   Clock::time_point m_lastRx{};
   Clock::time_point m_lastSend{};

@@ -36,6 +36,12 @@ class MoonrakerLink : public HttpPrinterLink {
     return submit("cancelling the print", false,
                   [this](httplib::Client& client) { return post(client, "/printer/print/cancel"); });
   }
+  // Klipper's TURN_OFF_HEATERS: every heater, whatever printer.cfg names them (M140 fails without a heater_bed).
+  std::future<core::Status> switchHeatersOff() override {
+    return submit("switching the heaters off", false, [this](httplib::Client& client) {
+      return post(client, "/printer/gcode/script?script=TURN_OFF_HEATERS");
+    });
+  }
 
  protected:
   core::Result<PrinterReading> readStatus(httplib::Client& client) override {

@@ -51,6 +51,11 @@ class OctoPrintLink : public HttpPrinterLink {
       return postJson(client, "/api/job", {{"command", "cancel"}});
     });
   }
+  std::future<core::Status> switchHeatersOff() override {
+    return submit("switching the heaters off", false, [this](httplib::Client& client) {
+      return postJson(client, "/api/printer/command", {{"commands", {"M104 S0", "M140 S0"}}});
+    });
+  }
 
  protected:
   core::Result<PrinterReading> readStatus(httplib::Client& client) override {

@@ -3,6 +3,10 @@
 #include "sim/http_printer_simulator.h"
 
 #include <arpa/inet.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include "sim/listen_socket.h"
 
 namespace multidir::hardware {
 
@@ -125,18 +129,31 @@ core::Status HttpPrinterSimulator::listen() {
   auto server = std::make_unique<httplib::Server>();
   configure(*server);
   server->set_keep_alive_timeout(1);
+  // cpp-httplib's default socket options add SO_REUSEPORT, with which a second simulator binds a port another
+  // one listens on and the kernel splits the connections between the two. SO_REUSEADDR alone lets a restarted
+  // simulator (or restoreLink) bind past its old connections in TIME_WAIT, and a port in use still fails.
+  server->set_socket_options([](socket_t sock) {
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   int bound = -1;
   if (m_port == 0) {
     bound = server->bind_to_any_port(m_options.listenAddress);
   } else {
     bound = server->bind_to_port(m_options.listenAddress.c_str(), m_port) ? m_port : -1;
   }
-  if (bound <= 0)
+  if (bound <= 0) {
+    // cpp-httplib does not say why; binding once more ourselves gives the system's reason in words to act on.
+    core::Result<int> again = listenTcp(m_options.listenAddress, m_port, 1);
+    if (again.ok()) ::close(*again);
     return core::Error{core::ErrorCode::DeviceUnreachable,
-                       "cannot listen on " + m_options.listenAddress + ":" + std::to_string(m_port) +
-                           ": the port is in use or needs root, or the address is not one of this machine's; "
-                           "choose another port",
+                       again.ok() ? "the simulator cannot listen on " + m_options.listenAddress + ":" +
+                                        std::to_string(m_port) +
+                                        ": the HTTP server could not bind it; try again or "
+                                        "choose another port with --port (0 picks a free one)"
+                                  : again.error().message,
                        "printer simulator"};
+  }
   m_port = bound;
   m_server = std::move(server);
   httplib::Server* raw = m_server.get();

@@ -14,7 +14,9 @@ std::string listenFailure(const std::string& address, int port, int errnum) {
   const std::string head = "the simulator cannot listen on " + address + ":" + std::to_string(port) + ": ";
   switch (errnum) {
     case EADDRINUSE:
-      return head + "address already in use: choose another port (0 picks a free one) or stop the program using it";
+      return head + "port " + std::to_string(port) + " on " + address +
+             " is in use (address already in use): stop the other program listening there (another simulator?) "
+             "or choose another port with --port (0 picks a free one)";
     case EADDRNOTAVAIL:
       return head + "cannot assign requested address: " + address +
              " is not an address of this machine; use 127.0.0.1, 0.0.0.0 (every interface) or one of the "

@@ -63,6 +63,11 @@ class MoonrakerServer : public sim::HttpPrinterSimulator {
                   m_printer.emergencyStop();
                   command(res, "");
                 }));
+    server.Post("/printer/gcode/script",
+                handled("POST", [this](const httplib::Request& req, httplib::Response& res, std::string& detail) {
+                  detail = req.get_param_value("script");
+                  gcodeScript(res, detail);
+                }));
     server.Post("/printer/firmware_restart",
                 handled("POST", [this](const httplib::Request&, httplib::Response& res, std::string&) {
                   m_printer.firmwareRestart();
@@ -76,6 +81,26 @@ class MoonrakerServer : public sim::HttpPrinterSimulator {
   void command(httplib::Response& res, const std::string& error) {
     if (!error.empty()) return replyError(res, 400, error);
     replyJson(res, 200, Json{{"result", "ok"}});
+  }
+
+  // The console's commands that touch the simulated heaters (TURN_OFF_HEATERS, M104, M140); others are taken
+  // and do nothing. Klipper refuses every command while it is shut down.
+  void gcodeScript(httplib::Response& res, const std::string& script) {
+    if (script.empty()) return replyError(res, 400, "No data for argument: script");
+    if (m_printer.firmwareState() != "ready") return replyError(res, 400, m_printer.firmwareMessage());
+    std::stringstream lines(script);
+    std::string line;
+    while (std::getline(lines, line)) {
+      if (line == "TURN_OFF_HEATERS") {
+        m_printer.setTarget(sim::TimelineLine::Heater::Extruder, 0.0);
+        m_printer.setTarget(sim::TimelineLine::Heater::Bed, 0.0);
+        continue;
+      }
+      const sim::TimelineLine read = sim::GcodeTimelineReader{}.read(line, 0);
+      if (read.heater != sim::TimelineLine::Heater::None && !read.waitForHeater)
+        m_printer.setTarget(read.heater, read.targetC);
+    }
+    command(res, "");
   }
 
   void query(const httplib::Request& req, httplib::Response& res) {

@@ -244,7 +244,11 @@ class OctoPrintServer : public sim::HttpPrinterSimulator {
     for (const std::string& c : commands) detail += (detail.empty() ? "" : " ") + c;
     if (!operational()) return replyError(res, 409, "Printer is not operational");
     for (const std::string& c : commands) {
-      if (c.rfind("M112", 0) != 0) continue;  // other commands reach the simulated printer's terminal only
+      // M104/M140 set the heater at once, as Marlin does; other commands reach the printer's terminal only.
+      const sim::TimelineLine read = sim::GcodeTimelineReader{}.read(c, 0);
+      if (read.heater != sim::TimelineLine::Heater::None && !read.waitForHeater)
+        m_printer.setTarget(read.heater, read.targetC);
+      if (c.rfind("M112", 0) != 0) continue;
       // OctoPrint sends M112 ahead of its queue, switches the heaters off and closes the serial port.
       m_printer.emergencyStop();
       m_closedByEmergencyStop = true;

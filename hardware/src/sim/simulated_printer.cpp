@@ -106,6 +106,11 @@ std::string SimulatedPrinter::cancel() {
   return {};
 }
 
+void SimulatedPrinter::setTarget(TimelineLine::Heater heater, double targetC) {
+  if (heater == TimelineLine::Heater::Extruder) m_extruderTarget = targetC;
+  if (heater == TimelineLine::Heater::Bed) m_bedTarget = targetC;
+}
+
 void SimulatedPrinter::firmwareRestart() {
   m_firmwareState = "ready";
   m_firmwareMessage = "Printer is ready";

@@ -38,6 +38,8 @@ class SimulatedPrinter {
   std::string resume();
   std::string cancel();
   void emergencyStop() { shutdown("Shutdown due to webhooks request"); }
+  // A heater's target set from the console (M104/M140 outside a job, Klipper's TURN_OFF_HEATERS): at once.
+  void setTarget(TimelineLine::Heater heater, double targetC);
   void firmwareRestart();
 
   // Faults.

@@ -46,7 +46,9 @@
 //   Faulted   |   the stop (clearStop refused)              |           | device yet
 //   any but   | abort()                                     | Aborted   | stopMotion() unless Printing; while
 //   Completed,|                                             |           | Printing with a printer: cancelPrint()
-//   Aborted   |                                             |           | (without: the operator stops it)
+//   Aborted   |                                             |           | (without: the operator stops it);
+//             |                                             |           | with a printer, in every state:
+//             |                                             |           | switchHeatersOff() (after the cancel)
 //   any       | emergencyStop()                             | Aborted   | the positioner's and the printer's
 //             |                                             | (final    | emergency stops, both at once, both
 //             |                                             | states    | latched by their drivers
@@ -146,6 +148,14 @@ struct PrintRunLogEntry {
   std::string message;                             // "step 2/5 (region_2.gcode): tilt 30.00 deg ... reached"
 };
 
+// The situations after which the log tells the operator what to do (PrintRunOptions::advice).
+enum class PrintRunAdvice {
+  RetryStep,             // faulted before printing: fix it, then retry the step, or abort
+  RetryWhenPrinterIdle,  // the move was not sent because the printer is busy or its state unknown
+  PrintInterrupted,      // paused while the printer printed the step (printInterrupted())
+  EmergencyStop,         // a stop was refused or is not confirmed: the device may still move
+};
+
 struct PrintRunOptions {
   std::chrono::milliseconds settleTime{500};     // reached this long before printing starts
   std::chrono::milliseconds moveTimeout{120000};  // a move not reached by then is a fault
@@ -154,6 +164,10 @@ struct PrintRunOptions {
   double temperatureOvershootC = 15.0;
   // With a printer: started, but no job of the step's file seen printing or complete by then: a fault.
   std::chrono::milliseconds printStartTimeout{30000};
+  // What the log tells the operator to do after a pause or fault, in the owner's words. Unset: the studio's
+  // (resume, Region done, abort, the E-STOP). An owner without those buttons (the command line, which ends the run at a
+  // pause) gives its own.
+  std::function<std::string(PrintRunAdvice)> advice;
   // Clocks; the defaults are the system's. Tests inject their own.
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
   std::function<std::chrono::system_clock::time_point()> wallNow;
@@ -184,8 +198,17 @@ class PrintRun {
   [[nodiscard]] PrintRunState state() const { return m_state; }
   [[nodiscard]] std::size_t currentStep() const { return m_step; }
   [[nodiscard]] bool pausePending() const { return m_pausePending; }
-  // A stop was asked for and the device has not confirmed it yet: keep calling tick() (even once Aborted).
-  [[nodiscard]] bool stopUnconfirmed() const { return m_awaitingStopConfirmation || m_awaitingPrinterStop; }
+  // A stop was asked for and the device has not confirmed it yet, or the printer has not answered the
+  // heaters-off of an abort yet: keep calling tick() (even once Aborted).
+  [[nodiscard]] bool stopUnconfirmed() const {
+    return m_awaitingStopConfirmation || m_awaitingPrinterStop || m_heatersOffCommand.valid();
+  }
+  // The current step's print was begun (the printer was asked to start its G-code, or the operator to print
+  // the region) and has not been seen finished: part of the region may be on the platform, so printing the
+  // step again from its start would print over it.
+  [[nodiscard]] bool stepBegun() const { return m_stepBegun; }
+  // The share (0..1) of the current step's G-code the printer had read at the last status read of it.
+  [[nodiscard]] double stepProgress() const { return m_stepProgress; }
   // Paused because the printer's job for the current step was interrupted (lastProblem says why).
   [[nodiscard]] bool printInterrupted() const { return m_printInterrupted; }
   [[nodiscard]] bool hasPrinter() const { return m_printer != nullptr; }
@@ -213,6 +236,8 @@ class PrintRun {
   // The current region is printed: the next step, a pending pause, or Completed.
   void finishRegion();
   std::string remoteName() const;
+  std::string advice(PrintRunAdvice situation) const;
+  void switchHeatersOff();
   bool stepUsesPrinter() const { return m_printer != nullptr && !m_steps[m_step].gcodePath.empty(); }
 
   enum class PrintPhase { None, Uploading, Starting, Running };
@@ -235,6 +260,9 @@ class PrintRun {
   PrintPhase m_phase = PrintPhase::None;
   std::future<core::Status> m_printerCommand;  // the upload or start in flight
   std::future<core::Status> m_printerSideCommand;  // a pause or cancel sent on the side (outcome logged)
+  std::future<core::Status> m_heatersOffCommand;   // an abort's heaters-off, until the printer answered it
+  bool m_stepBegun = false;
+  double m_stepProgress = 0.0;
   std::uint64_t m_pollsAtStart = 0;
   std::chrono::steady_clock::time_point m_printStarted{};
   bool m_printInterrupted = false;

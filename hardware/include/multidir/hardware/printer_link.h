@@ -94,6 +94,11 @@ class PrinterLink {
   virtual std::future<core::Status> pausePrint() = 0;
   virtual std::future<core::Status> resumePrint() = 0;
   virtual std::future<core::Status> cancelPrint() = 0;
+  // Sets every heater's target to 0 (Moonraker: Klipper's TURN_OFF_HEATERS; OctoPrint and Marlin: M104 S0 and
+  // M140 S0), whatever the job; queued behind the commands before it (after a cancel, once it was answered).
+  // Not refused while an emergency stop is latched (the stop already switches a Klipper or Marlin printer's
+  // heaters off; this then fails in the printer's words).
+  virtual std::future<core::Status> switchHeatersOff() = 0;
   // Latched (see above); the future ends once the printer answered it.
   virtual std::future<core::Status> emergencyStop() = 0;
   // The operator allows uploads and starts again; refused until the printer confirmed the stop. A Klipper
