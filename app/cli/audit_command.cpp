@@ -161,6 +161,7 @@ Json reportJson(const std::string& job, const slicing::AuditReport& report, bool
   }
   j["programs"] = programs;
   j["poseMismatches"] = report.poseMismatches;
+  j["sequenceViolations"] = report.sequenceViolations;
   j["findings"] = report.findings;
   return j;
 }

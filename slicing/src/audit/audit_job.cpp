@@ -38,12 +38,6 @@ double poseDifference(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   return (a.matrix().topRows<3>() - b.matrix().topRows<3>()).cwiseAbs().maxCoeff();
 }
 
-// The firmware axis' A of a step: the plan's rotaryDegrees, negated when r maps to -X in the files' frame.
-double firmwareDegrees(const AuditJob& job, const AuditStep& step, double axisSign) {
-  (void)job;
-  return axisSign * step.angles.rotaryDegrees;
-}
-
 struct Cluster {
   double lengthMm = 0.0;
   Vec3 sum = Vec3::Zero();
@@ -72,13 +66,13 @@ class ProgramAuditor {
  public:
   ProgramAuditor(const AuditJob& job, const AuditOptions& options, double alphaDegrees,
                  const std::vector<std::unique_ptr<audit::TriangleGrid>>& solids, ProgramAudit& out,
-                 std::vector<std::string>& findings)
+                 AuditReport& report)
       : m_job(job),
         m_options(options),
         m_tanAlpha(std::tan(alphaDegrees * M_PI / 180.0)),
         m_solids(solids),
         m_out(out),
-        m_findings(findings),
+        m_report(report),
         m_material(materialCell(job, alphaDegrees)) {
     for (const AuditStep& s : job.steps) {
       StepAudit row;
@@ -116,13 +110,13 @@ class ProgramAuditor {
       if (!move.extrudes()) continue;
       if (move.step < 1) continue;  // the start and end sequences: purge lines beside the part
       if (move.inTransition) {
-        m_findings.push_back(name + ": line " + std::to_string(move.line) + ": an extrusion inside the transition after step " +
-                             std::to_string(move.step) + " (the platform is turning: nothing may be printed there)");
+        sequenceViolation(name + ": line " + std::to_string(move.line) + ": an extrusion inside the transition after step " +
+                          std::to_string(move.step) + " (the platform turns there: nothing may be printed)");
         continue;
       }
       const Eigen::Isometry3d pose = fixedPose ? *fixedPose : firmwarePose(move.aFromDegrees);
       if (!fixedPose) checkStitchedAngle(move, stepSlot, name);
-      extrusion(move, stepSlot, pose, name);
+      extrusion(move, stepSlot, pose);
     }
     return core::Done{};
   }
@@ -211,16 +205,24 @@ class ProgramAuditor {
     return (rest.linear() * m_job.machine.rotationAxis).x() < 0.0 ? -1.0 : 1.0;
   }
 
-  // job.gcode: a step printed at another A than its plan's angle is printed in another pose.
+  void sequenceViolation(const std::string& what) {
+    ++m_report.sequenceViolations;
+    m_report.findings.push_back(what);
+  }
+
+  // job.gcode: a step printed at another A than its plan's angle (rotaryDegrees, negated when r maps to -X in
+  // the files' frame) is printed in another pose than its mesh was sliced in.
   void checkStitchedAngle(const audit::ReplayMove& move, std::size_t slot, const std::string& name) {
     if (m_angleChecked.count(slot)) return;
     m_angleChecked[slot] = true;
-    const double expected = firmwareDegrees(m_job, m_job.steps[slot], axisSign());
-    if (std::abs(move.aFromDegrees - expected) > 1e-3)
-      m_findings.push_back(name + ": line " + std::to_string(move.line) + ": step " +
+    const double expected = axisSign() * m_job.steps[slot].angles.rotaryDegrees;
+    if (std::abs(move.aFromDegrees - expected) > 1e-3) {
+      ++m_report.poseMismatches;
+      m_report.findings.push_back(name + ": line " + std::to_string(move.line) + ": step " +
                            std::to_string(m_job.steps[slot].index) + " prints at A " + fixed(move.aFromDegrees) +
                            " degrees, but its plan angle gives A " + fixed(expected) +
                            " (print-job.json angles.rotaryDegrees)");
+    }
   }
 
   std::uint16_t directionIndex(const Vec3& d, double width, double height) {
@@ -231,8 +233,7 @@ class ProgramAuditor {
     return static_cast<std::uint16_t>(m_directions.size() - 1);
   }
 
-  void extrusion(const audit::ReplayMove& move, std::size_t slot, const Eigen::Isometry3d& pose,
-                 const std::string& name) {
+  void extrusion(const audit::ReplayMove& move, std::size_t slot, const Eigen::Isometry3d& pose) {
     const AuditStep& step = m_job.steps[slot];
     StepAudit& row = m_out.steps[slot];
     const Eigen::Isometry3d toModel = pose.inverse();
@@ -304,7 +305,6 @@ class ProgramAuditor {
     for (const Vec3& m : samples) m_material.add({m.cast<float>(), dirIndex});
     m_ends.push_back(toModel * (move.from - m_job.printerOffset));
     m_ends.push_back(toModel * (move.to - m_job.printerOffset));
-    (void)name;
   }
 
   double m_materialRadius(double w, double h) const {
@@ -319,11 +319,10 @@ class ProgramAuditor {
   // (e) job.gcode: the material turned over the arc about the files' X axis while the nozzle waits.
   void turn(const audit::ReplayMove& move, std::size_t slot, const std::string& name) {
     if (!move.inTransition)
-      m_findings.push_back(name + ": line " + std::to_string(move.line) +
-                           ": the platform turns outside a transition section");
+      sequenceViolation(name + ": line " + std::to_string(move.line) + ": the platform turns outside a transition section");
     if (move.movesXy() || std::abs(move.to.z() - move.from.z()) > 1e-9)
-      m_findings.push_back(name + ": line " + std::to_string(move.line) +
-                           ": the platform turns in a move that also moves the nozzle");
+      sequenceViolation(name + ": line " + std::to_string(move.line) +
+                        ": the platform turns in a move that also moves the nozzle");
     const Eigen::Isometry3d& from = firmwarePose(move.aFromDegrees);
     std::vector<Vec3> points;
     points.reserve(m_ends.size());
@@ -381,7 +380,7 @@ class ProgramAuditor {
   double m_tanAlpha;
   const std::vector<std::unique_ptr<audit::TriangleGrid>>& m_solids;
   ProgramAudit& m_out;
-  std::vector<std::string>& m_findings;
+  AuditReport& m_report;
   audit::MaterialGrid m_material;
   std::vector<Direction> m_directions;
   std::vector<Vec3> m_ends;  // extrusion end points, model frame: what a turn sweeps
@@ -443,9 +442,7 @@ bool AuditReport::failed() const {
     if (p.total.outsideMm > 0.0 || p.total.firstLayerViolation || p.total.retractViolations > 0 ||
         p.total.turnViolation)
       return true;
-  for (const std::string& f : findings)
-    if (f.find("transition") != std::string::npos || f.find("turns") != std::string::npos) return true;
-  return false;
+  return sequenceViolations > 0;
 }
 
 bool AuditReport::hasUnsupported() const {
@@ -474,7 +471,7 @@ core::Result<AuditReport> auditJob(const AuditJob& job, const AuditOptions& opti
     context.setProgress(0.0, "auditing the step programs");
     ProgramAudit program;
     program.name = "step programs";
-    ProgramAuditor auditor(job, options, report.alphaMaxDegrees, solids, program, report.findings);
+    ProgramAuditor auditor(job, options, report.alphaMaxDegrees, solids, program, report);
     audit::MachineState state;
     for (std::size_t k = 0; k < job.steps.size(); ++k) {
       if (firmware) state = audit::MachineState{};
@@ -491,7 +488,7 @@ core::Result<AuditReport> auditJob(const AuditJob& job, const AuditOptions& opti
     ProgramAudit program;
     program.name = job.stitchedFile;
     program.stitched = true;
-    ProgramAuditor auditor(job, options, report.alphaMaxDegrees, solids, program, report.findings);
+    ProgramAuditor auditor(job, options, report.alphaMaxDegrees, solids, program, report);
     audit::MachineState state;
     if (core::Status s = auditor.replay(job.stitchedGcode, job.stitchedFile, 0, nullptr, state, context); !s)
       return s.error();

@@ -140,12 +140,15 @@ struct ProgramAudit {
 
 struct AuditReport {
   std::vector<ProgramAudit> programs;
-  // Findings that are not a per-step number: a pose in print-job.json that the kinematics disagree with,
-  // extrusion inside a transition, a platform angle in job.gcode other than the step's.
+  // Findings that are not a per-step number, each naming the file (and line): a pose in print-job.json that
+  // the kinematics disagree with, a platform angle in job.gcode other than the step's, an extrusion inside a
+  // transition, a turn outside one or one that also moves the nozzle.
   std::vector<std::string> findings;
-  int poseMismatches = 0;
+  int poseMismatches = 0;      // print-job.json poses and job.gcode angles that disagree with the kinematics
+  int sequenceViolations = 0;  // extrusion in a transition, a turn outside one or with the nozzle moving
   double alphaMaxDegrees = 45.0;
-  // Violations of (a) beyond tolerance, (c), (d), (e) and pose mismatches: the job fails the audit.
+  // Violations of (a) beyond tolerance, (c), (d), (e), pose mismatches and sequence violations: the job
+  // fails the audit.
   bool failed() const;
   // (b) too, for --strict.
   bool hasUnsupported() const;
