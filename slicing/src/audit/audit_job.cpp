@@ -139,7 +139,7 @@ class ProgramAuditor {
   void finish() {
     StepAudit& total = m_out.total;
     total.step = 0;
-    total.file = m_out.name;
+    total.file = m_out.stitched ? m_out.name : "all files";
     total.turnClearanceMm = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t k = 0; k < m_out.steps.size(); ++k) {
       StepAudit& row = m_out.steps[k];
@@ -470,7 +470,7 @@ core::Result<AuditReport> auditJob(const AuditJob& job, const AuditOptions& opti
   {
     context.setProgress(0.0, "auditing the step programs");
     ProgramAudit program;
-    program.name = "step programs";
+    program.name = firmware ? "step programs (each on its own)" : "step programs";
     ProgramAuditor auditor(job, options, report.alphaMaxDegrees, solids, program, report);
     audit::MachineState state;
     for (std::size_t k = 0; k < job.steps.size(); ++k) {

@@ -130,7 +130,7 @@ struct StepAudit {
 
 // One replayed program: the step programs one after another, or the stitched job.gcode.
 struct ProgramAudit {
-  std::string name;  // "step programs" or "job.gcode"
+  std::string name;  // "step programs", "step programs (each on its own)" (firmware axis) or "job.gcode"
   bool stitched = false;
   std::vector<StepAudit> steps;
   StepAudit total;   // sums; firstLayerGapMm: the largest deviation; turnClearanceMm: the least
