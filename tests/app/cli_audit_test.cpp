@@ -27,7 +27,8 @@ const std::string& slicedKitten(const std::string& dir) {
     const CliRun slice = runCli("slice " + quoted(dir + "/plan") +
                                     " --printer klipper-rotary --no-comparison --set 'layer_height=0.3 "
                                     "first_layer_height=0.3 perimeters=1 top_solid_layers=1 bottom_solid_layers=1 "
-                                    "fill_density=0%' -o " + quoted(dir + "/job"),
+                                    "fill_density=0%' -o " +
+                                    quoted(dir + "/job"),
                                 dir);
     if (slice.exitCode != 0) throw std::runtime_error("slice failed: " + slice.err);
     return dir + "/job";
@@ -80,7 +81,8 @@ TEST(CliAudit, AStitchedJobIsAuditedAsStepProgramsAndAsJobGcodeWithTheSameNumber
   ASSERT_EQ(stitched["steps"].size(), printJob["steps"].size());
   for (std::size_t k = 0; k < stitched["steps"].size(); ++k) {
     // job.gcode holds the step programs' bodies: the same extrusion, in the same places.
-    EXPECT_NEAR(stitched["steps"][k]["extrusionMm"].get<double>(), parts["steps"][k]["extrusionMm"].get<double>(), 1e-6);
+    EXPECT_NEAR(stitched["steps"][k]["extrusionMm"].get<double>(), parts["steps"][k]["extrusionMm"].get<double>(),
+                1e-6);
     EXPECT_NEAR(stitched["steps"][k]["unsupportedMm"].get<double>(), parts["steps"][k]["unsupportedMm"].get<double>(),
                 1e-6);
     EXPECT_EQ(stitched["steps"][k]["outsideMm"].get<double>(), 0.0);

@@ -145,7 +145,8 @@ TEST(AuditKinematics, PosesAgreeWithCoreMachinePoseForRealizableDirections) {
       d.normalize();
       const core::MachineAngles angles = core::machineAnglesFor(spec, d);
       // A rotary platform prints the direction of its (whole-step) angle.
-      const Vec3 printed = kind == core::MachineKind::RotaryPlatform ? core::rotaryDirection(spec, angles.rotaryDegrees) : d;
+      const Vec3 printed =
+          kind == core::MachineKind::RotaryPlatform ? core::rotaryDirection(spec, angles.rotaryDegrees) : d;
       Eigen::Isometry3d expected = Eigen::Isometry3d::Identity();
       expected.linear() = frame;
       expected.translation() = -(frame * pivot);

@@ -158,8 +158,7 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
     if (move.filamentMm < 0.0) {
       state.retractedMm -= move.filamentMm;
     } else if (move.filamentMm > 0.0) {
-      move.retractedAtStart =
-          move.extrudes() && (state.retractedMm > retractToleranceMm || state.firmwareRetracted);
+      move.retractedAtStart = move.extrudes() && (state.retractedMm > retractToleranceMm || state.firmwareRetracted);
       state.retractedMm = std::max(0.0, state.retractedMm - move.filamentMm);
     }
     replay.moves.push_back(move);

@@ -31,10 +31,10 @@ struct ReplayMove {
   Eigen::Vector3d to = Eigen::Vector3d::Zero();
   double aFromDegrees = 0.0;
   double aToDegrees = 0.0;
-  double filamentMm = 0.0;      // E pushed (negative: pulled back)
-  int step = 0;                 // 0: before any marker, in the start or the end sequence
+  double filamentMm = 0.0;  // E pushed (negative: pulled back)
+  int step = 0;             // 0: before any marker, in the start or the end sequence
   bool inTransition = false;
-  bool skirt = false;           // under ";TYPE:Skirt/Brim" (or Skirt, Brim)
+  bool skirt = false;             // under ";TYPE:Skirt/Brim" (or Skirt, Brim)
   bool retractedAtStart = false;  // an extrusion that began with the filament retracted: (d)
 
   bool movesXy() const { return (to.head<2>() - from.head<2>()).squaredNorm() > 1e-12; }

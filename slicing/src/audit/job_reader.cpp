@@ -106,8 +106,8 @@ core::TriangleMesh moved(core::TriangleMesh mesh, const Eigen::Isometry3d& motio
 }  // namespace
 
 core::Result<AuditJob> readAuditJob(const std::string& directoryText) {
-  const fs::path directory = fs::is_regular_file(directoryText) ? fs::path(directoryText).parent_path()
-                                                                 : fs::path(directoryText);
+  const fs::path directory =
+      fs::is_regular_file(directoryText) ? fs::path(directoryText).parent_path() : fs::path(directoryText);
   const std::string file = (directory / "print-job.json").string();
   const core::Result<std::string> text = readText(file);
   if (!text)
@@ -119,14 +119,14 @@ core::Result<AuditJob> readAuditJob(const std::string& directoryText) {
   if (!job.contains("slicing") || !job["slicing"].is_object())
     return Error{ErrorCode::InvalidParameter,
                  "the job has no G-code (no \"slicing\"): slice it first with 'multidir slice PLAN --printer PROFILE "
-                 "-o " + directory.string() + "'",
+                 "-o " +
+                     directory.string() + "'",
                  file};
   if (job.value("frame", std::string("machine")) != "machine")
     return malformed(file, "frame", "is not \"machine\" (the slicer was given the machine's poses)");
   if (job.value("format", std::string("stl")) != "stl")
-    return Error{ErrorCode::UnsupportedFormat, "the audit reads STL step meshes only (format is '" +
-                                                   job.value("format", std::string()) + "')",
-                 file};
+    return Error{ErrorCode::UnsupportedFormat,
+                 "the audit reads STL step meshes only (format is '" + job.value("format", std::string()) + "')", file};
 
   AuditJob out;
   out.directory = directory.string();
@@ -182,7 +182,8 @@ core::Result<AuditJob> readAuditJob(const std::string& directoryText) {
     if (!files.contains("region") || !files["region"].is_string())
       return malformed(file, where + ".files.region", "is missing");
     const Eigen::Isometry3d toModel = step.recordedModelToFile.inverse();
-    core::Result<core::TriangleMesh> region = audit::readStlSoup((directory / files["region"].get<std::string>()).string());
+    core::Result<core::TriangleMesh> region =
+        audit::readStlSoup((directory / files["region"].get<std::string>()).string());
     if (!region) return region.error();
     step.region = moved(std::move(region).value(), toModel);
     if (files.contains("supports") && files["supports"].is_string()) {

@@ -40,8 +40,8 @@ core::Result<core::TriangleMesh> readStlSoup(const std::string& path) {
         float xyz[3];
         std::memcpy(xyz, record + 12 * k, 12);
         if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
-          return Error{ErrorCode::MalformedFile, "triangle " + std::to_string(t) + " has a coordinate that is not finite",
-                       path};
+          return Error{ErrorCode::MalformedFile,
+                       "triangle " + std::to_string(t) + " has a coordinate that is not finite", path};
         corner[k] = core::Vec3(xyz[0], xyz[1], xyz[2]);
       }
       addTriangle(mesh, corner[0], corner[1], corner[2]);

@@ -20,7 +20,7 @@ double sweptTop(const std::vector<core::Vec3>& points, const core::Vec3& axisUni
   for (const core::Vec3& f : points) {
     const double along = n.dot(f);
     const double c = n.z() * along;
-    const double a = f.z() - c;          // (f - n (n.f)).z
+    const double a = f.z() - c;  // (f - n (n.f)).z
     const double b = n.cross(f).z();
     double best = std::max(c + a * std::cos(lo) + b * std::sin(lo), c + a * std::cos(hi) + b * std::sin(hi));
     const double amplitude = std::hypot(a, b);

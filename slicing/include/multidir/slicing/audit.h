@@ -54,7 +54,7 @@ struct BeadGeometry {
 struct AuditStep {
   int index = 1;
   core::MachineAngles angles;
-  core::Vec3 printingDirection = core::Vec3::UnitZ();                   // model frame, as print-job.json says
+  core::Vec3 printingDirection = core::Vec3::UnitZ();                     // model frame, as print-job.json says
   Eigen::Isometry3d recordedModelToFile = Eigen::Isometry3d::Identity();  // print-job.json's modelToFile
   core::TriangleMesh region;    // model frame (the step file moved back by recordedModelToFile); a soup
   core::TriangleMesh supports;  // model frame; empty without supports
@@ -71,10 +71,10 @@ struct AuditJob {
   AuditPlatform platform = AuditPlatform::Modbus;
   // Printer coordinates = files' frame + this: (platform_center.x, platform_center.y, platform_z).
   core::Vec3 printerOffset = core::Vec3::Zero();
-  std::string rotaryAxis = "A";  // the platform's G-code axis letter (firmware axis)
-  double alphaMaxDegrees = 45.0; // the printable angle: the plan's search.alphaMaxDegrees when it is found
+  std::string rotaryAxis = "A";   // the platform's G-code axis letter (firmware axis)
+  double alphaMaxDegrees = 45.0;  // the printable angle: the plan's search.alphaMaxDegrees when it is found
   std::vector<AuditStep> steps;
-  std::string stitchedFile;      // "job.gcode", empty when there is none
+  std::string stitchedFile;  // "job.gcode", empty when there is none
   std::string stitchedGcode;
 };
 
@@ -88,41 +88,41 @@ struct AuditJob {
 core::Result<AuditJob> readAuditJob(const std::string& directory);
 
 struct AuditOptions {
-  std::optional<double> alphaMaxDegrees;   // overrides the job's printable angle
-  double firstLayerToleranceMm = 0.05;     // (c): |gap - layer height| above this is a violation
-  double retractToleranceMm = 1e-3;        // (d): retracted by more than this counts
-  int worstClusters = 5;                   // (a), (b): places reported per program
+  std::optional<double> alphaMaxDegrees;  // overrides the job's printable angle
+  double firstLayerToleranceMm = 0.05;    // (c): |gap - layer height| above this is a violation
+  double retractToleranceMm = 1e-3;       // (d): retracted by more than this counts
+  int worstClusters = 5;                  // (a), (b): places reported per program
 };
 
 // Where extrusion went wrong: one cluster of samples (a cube of kClusterMm in the model frame) in one step.
 struct AuditPlace {
   int step = 1;
   std::string file;
-  int line = 0;                            // the first G-code line of the cluster
+  int line = 0;                                // the first G-code line of the cluster
   core::Vec3 modelPoint = core::Vec3::Zero();  // the samples' centroid, model frame
-  double lengthMm = 0.0;                   // extrusion length in the cluster
-  double worstMm = 0.0;                    // (a): the farthest sample's distance outside the solid
+  double lengthMm = 0.0;                       // extrusion length in the cluster
+  double worstMm = 0.0;                        // (a): the farthest sample's distance outside the solid
 };
 
 struct StepAudit {
   int step = 1;
-  std::string file;                  // the G-code file the step's extrusions are in
-  double extrusionMm = 0.0;          // path length of the step's extrusions (after its marker)
-  double skirtMm = 0.0;              // of which skirt and brim (;TYPE:Skirt/Brim): not held to (a)
-  double outsideMm = 0.0;            // (a)
-  double worstOutsideMm = 0.0;       // (a): farthest distance outside region and supports, beyond w/2
-  double unsupportedMm = 0.0;        // (b)
+  std::string file;             // the G-code file the step's extrusions are in
+  double extrusionMm = 0.0;     // path length of the step's extrusions (after its marker)
+  double skirtMm = 0.0;         // of which skirt and brim (;TYPE:Skirt/Brim): not held to (a)
+  double outsideMm = 0.0;       // (a)
+  double worstOutsideMm = 0.0;  // (a): farthest distance outside region and supports, beyond w/2
+  double unsupportedMm = 0.0;   // (b)
   double firstLayerGapMm = std::numeric_limits<double>::quiet_NaN();  // (c): lowest extrusion z - base z
-  double expectedGapMm = 0.0;        // (c): first_layer_height (step 1) or layer_height
-  double baseZMm = 0.0;              // (c): printer z of the step's base plane under the replayed pose
-  int retractViolations = 0;         // (d): in the step's section (and the start sequence, for step 1)
-  std::vector<int> retractLines;     // (d): the first few lines
+  double expectedGapMm = 0.0;     // (c): first_layer_height (step 1) or layer_height
+  double baseZMm = 0.0;           // (c): printer z of the step's base plane under the replayed pose
+  int retractViolations = 0;      // (d): in the step's section (and the start sequence, for step 1)
+  std::vector<int> retractLines;  // (d): the first few lines
   // (e) the turn after this step: nozzle z minus the highest point of the printed part over the turn; NaN
   // when no turn follows.
   double turnClearanceMm = std::numeric_limits<double>::quiet_NaN();
   double turnNozzleZMm = std::numeric_limits<double>::quiet_NaN();
   double turnSweptTopZMm = std::numeric_limits<double>::quiet_NaN();
-  int turnLine = 0;                  // the line that turns (stitched), or the program's last line (Modbus)
+  int turnLine = 0;  // the line that turns (stitched), or the program's last line (Modbus)
   bool firstLayerViolation = false;
   bool turnViolation = false;
   double unsupportedPercent() const { return extrusionMm > 0.0 ? 100.0 * unsupportedMm / extrusionMm : 0.0; }
@@ -133,8 +133,8 @@ struct ProgramAudit {
   std::string name;  // "step programs", "step programs (each on its own)" (firmware axis) or "job.gcode"
   bool stitched = false;
   std::vector<StepAudit> steps;
-  StepAudit total;   // sums; firstLayerGapMm: the largest deviation; turnClearanceMm: the least
-  std::vector<AuditPlace> outsidePlaces;      // (a): the worst clusters, longest first
+  StepAudit total;                        // sums; firstLayerGapMm: the largest deviation; turnClearanceMm: the least
+  std::vector<AuditPlace> outsidePlaces;  // (a): the worst clusters, longest first
   std::vector<AuditPlace> unsupportedPlaces;  // (b): the worst clusters, longest first
 };
 
