@@ -1,5 +1,6 @@
 #include "audit_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -92,6 +93,15 @@ void printReport(std::ostream& out, const std::string& job, const slicing::Audit
         for (std::size_t i = 0; i < s.retractLines.size(); ++i) out << (i ? ", " : " ") << s.retractLines[i];
         out << (s.retractViolations > static_cast<int>(s.retractLines.size()) ? ", ..." : "") << "\n";
       }
+    if (!program.total.unsupportedByFeatureMm.empty()) {
+      std::vector<std::pair<double, std::string>> features;
+      for (const auto& [feature, mm] : program.total.unsupportedByFeatureMm) features.emplace_back(mm, feature);
+      std::sort(features.rbegin(), features.rend());
+      out << "    unsupported by feature:";
+      for (std::size_t i = 0; i < features.size(); ++i)
+        out << (i ? ", " : " ") << features[i].second << " " << number(features[i].first, 1) << " mm";
+      out << "\n";
+    }
     printPlaces(out, "outside the region and supports (a), worst places", program.outsidePlaces, true);
     printPlaces(out, "unsupported (b), worst places", program.unsupportedPlaces, false);
   }
@@ -113,6 +123,7 @@ Json stepJson(const slicing::StepAudit& s) {
   j["worstOutsideMm"] = s.worstOutsideMm;
   j["unsupportedMm"] = s.unsupportedMm;
   j["unsupportedPercent"] = s.unsupportedPercent();
+  j["unsupportedByFeatureMm"] = s.unsupportedByFeatureMm;
   j["firstLayerGapMm"] = numberJson(s.firstLayerGapMm);
   j["expectedGapMm"] = s.expectedGapMm;
   j["baseZMm"] = s.baseZMm;

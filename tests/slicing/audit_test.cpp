@@ -226,15 +226,18 @@ TEST(AuditInside, ExtrusionInsideTheSupportsIsInside) {
   EXPECT_EQ(stepRow(audited(job), 0).outsideMm, 0.0);
 }
 
-TEST(AuditInside, TheSkirtIsNotHeldToTheRegion) {
+TEST(AuditInside, TheSkirtIsNotHeldToTheRegionAndFeaturesAreNamed) {
   AuditJob job = boxJob();
   Program program = stepProgram(1);
   program.line(";TYPE:Skirt/Brim").bead(Vec3(15, -5, 0.2), Vec3(15, 5, 0.2)).line(";TYPE:Perimeter");
-  program.bead(Vec3(-5, 0, 0.2), Vec3(5, 0, 0.2));
+  program.bead(Vec3(-5, 0, 0.2), Vec3(5, 0, 0.2)).bead(Vec3(-5, 0, 3.0), Vec3(5, 0, 3.0));
   job.steps[0].gcode = program.text();
   const StepAudit& row = stepRow(audited(job), 0);
   EXPECT_EQ(row.outsideMm, 0.0);
   EXPECT_NEAR(row.skirtMm, 10.0, 1e-9);
+  // The bead in air is counted under the slicer's feature it was printed as.
+  EXPECT_NEAR(row.unsupportedByFeatureMm.at("Perimeter"), 10.0, 1e-9);
+  EXPECT_EQ(row.unsupportedByFeatureMm.count("Skirt/Brim"), 0u);
 }
 
 // ---- (b) resting on something printed before ----
@@ -247,6 +250,7 @@ TEST(AuditSupport, ABeadInAirIsUnsupported) {
   const AuditReport report = audited(job);
   EXPECT_NEAR(stepRow(report, 0).unsupportedMm, 10.0, 1e-9);
   EXPECT_NEAR(stepRow(report, 0).unsupportedPercent(), 50.0, 1e-6);
+  EXPECT_NEAR(stepRow(report, 0).unsupportedByFeatureMm.at("unlabelled"), 10.0, 1e-9);
   ASSERT_FALSE(report.programs[0].unsupportedPlaces.empty());
   EXPECT_EQ(report.programs[0].unsupportedPlaces[0].line, program.lines());
   EXPECT_TRUE(report.hasUnsupported());

@@ -38,6 +38,7 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
   int step = 0;
   bool inTransition = false;
   bool skirt = false;
+  std::string feature;
   std::istringstream in(text);
   std::string line;
   int lineNumber = 0;
@@ -62,6 +63,8 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
         inTransition = false;
       } else if (comment.rfind("TYPE:", 0) == 0) {
         skirt = comment.find("Skirt") != std::string::npos || comment.find("Brim") != std::string::npos;
+        feature = comment.substr(5);
+        while (!feature.empty() && std::isspace(static_cast<unsigned char>(feature.back()))) feature.pop_back();
       }
     }
     std::string code = line.substr(0, semicolon);
@@ -78,6 +81,7 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
     move.step = step;
     move.inTransition = inTransition;
     move.skirt = skirt;
+    move.feature = feature;
 
     if (head == "MANUAL_STEPPER") {
       double value = 0.0;

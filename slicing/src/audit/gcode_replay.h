@@ -35,6 +35,7 @@ struct ReplayMove {
   int step = 0;             // 0: before any marker, in the start or the end sequence
   bool inTransition = false;
   bool skirt = false;             // under ";TYPE:Skirt/Brim" (or Skirt, Brim)
+  std::string feature;            // the slicer's ";TYPE:" it lies under ("External perimeter"), empty if none
   bool retractedAtStart = false;  // an extrusion that began with the filament retracted: (d)
 
   bool movesXy() const { return (to.head<2>() - from.head<2>()).squaredNorm() > 1e-12; }

@@ -144,6 +144,7 @@ class ProgramAuditor::Impl {
       total.outsideMm += row.outsideMm;
       total.worstOutsideMm = std::max(total.worstOutsideMm, row.worstOutsideMm);
       total.unsupportedMm += row.unsupportedMm;
+      for (const auto& [feature, mm] : row.unsupportedByFeatureMm) total.unsupportedByFeatureMm[feature] += mm;
       total.retractViolations += row.retractViolations;
       for (int line : row.retractLines)
         if (static_cast<int>(total.retractLines.size()) < kLinesKept) total.retractLines.push_back(line);
@@ -291,6 +292,7 @@ class ProgramAuditor::Impl {
       }
       if (!supported) {
         row.unsupportedMm += piece;
+        row.unsupportedByFeatureMm[move.feature.empty() ? "unlabelled" : move.feature] += piece;
         add(m_unsupported, step.index, m, piece, move.line, 0.0);
       }
     }

@@ -10,6 +10,7 @@
 //   (e) during every turn of the platform the nozzle clears everything printed so far.
 #include <Eigen/Geometry>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -112,6 +113,8 @@ struct StepAudit {
   double outsideMm = 0.0;       // (a)
   double worstOutsideMm = 0.0;  // (a): farthest distance outside region and supports, beyond w/2
   double unsupportedMm = 0.0;   // (b)
+  // (b) by the slicer's feature (";TYPE:" comment): "Overhang perimeter", "Bridge infill", "Internal infill"...
+  std::map<std::string, double> unsupportedByFeatureMm;
   double firstLayerGapMm = std::numeric_limits<double>::quiet_NaN();  // (c): lowest extrusion z - base z
   double expectedGapMm = 0.0;     // (c): first_layer_height (step 1) or layer_height
   double baseZMm = 0.0;           // (c): printer z of the step's base plane under the replayed pose
