@@ -352,6 +352,24 @@ TEST(AuditRetract, RetractAndUnretractAroundATravelIsNoViolation) {
   EXPECT_EQ(stepRow(audited(job), 0).retractViolations, 0);
 }
 
+TEST(AuditRetract, RelativeExtrusionStaysRelativeAfterG90) {
+  AuditJob job = boxJob();
+  // M83 then G90: E stays relative (Marlin and Klipper). Read as absolute, the last move would extrude with
+  // the filament pulled back by the second.
+  job.steps[0].gcode = stepProgram(1)
+                           .line("M83")
+                           .line("G90")
+                           .line("G1 X95 Y100 Z0.2")
+                           .line("G1 E1")
+                           .line("G1 X105 Y100 E0.3")
+                           .line("G1 X105 Y101 E0.03")
+                           .line("G1 X95 Y101 E0.3")
+                           .text();
+  const StepAudit& row = stepRow(audited(job), 0);
+  EXPECT_EQ(row.retractViolations, 0);
+  EXPECT_NEAR(row.extrusionMm, 21.0, 1e-9);
+}
+
 TEST(AuditRetract, FirmwareRetractWithoutUnretractIsAViolation) {
   AuditJob job = boxJob();
   job.steps[0].gcode = stepProgram(1).line("G10").bead(Vec3(-5, 0, 0.2), Vec3(5, 0, 0.2)).line("G11").text();

@@ -122,8 +122,8 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
       words.emplace_back(static_cast<char>(std::toupper(c)), value);
       i = static_cast<std::size_t>(end - code.c_str());
     }
-    if (head == "G90") state.absoluteXyz = state.absoluteE = true;
-    if (head == "G91") state.absoluteXyz = state.absoluteE = false;
+    if (head == "G90") state.absoluteXyz = true;
+    if (head == "G91") state.absoluteXyz = false;
     if (head == "M82") state.absoluteE = true;
     if (head == "M83") state.absoluteE = false;
     if (head == "G92") {
@@ -150,7 +150,7 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
         const int axis = letter - 'X';
         state.position[axis] = state.absoluteXyz ? value : state.position[axis] + value;
       } else if (letter == 'E') {
-        const double next = state.absoluteE ? value : state.e + value;
+        const double next = state.absoluteXyz && state.absoluteE ? value : state.e + value;
         move.filamentMm = next - state.e;
         state.e = next;
       } else if (letter == rotary) {

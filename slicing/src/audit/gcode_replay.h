@@ -19,8 +19,8 @@ struct MachineState {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // printer coordinates, mm
   double e = 0.0;                                      // the E register
   double aDegrees = 0.0;                               // the platform's axis
-  bool absoluteXyz = true;
-  bool absoluteE = true;
+  bool absoluteXyz = true;                             // G90; G91 makes every axis relative, E too
+  bool absoluteE = true;           // M82; M83 makes E relative whatever G90 says (Marlin's and Klipper's rule)
   double retractedMm = 0.0;        // filament pulled back and not yet pushed again
   bool firmwareRetracted = false;  // G10 without G11
 };
