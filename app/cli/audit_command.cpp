@@ -111,6 +111,32 @@ void printReport(std::ostream& out, const std::string& job, const slicing::Audit
   }
 }
 
+// Why the audit fails, one phrase per check, summed over the programs.
+std::vector<std::string> failureReasons(const slicing::AuditReport& report, bool strict) {
+  double outside = 0.0, unsupported = 0.0;
+  int firstLayers = 0, retracts = 0, turns = 0;
+  for (const slicing::ProgramAudit& p : report.programs) {
+    outside += p.total.outsideMm;
+    unsupported += p.total.unsupportedMm;
+    retracts += p.total.retractViolations;
+    for (const slicing::StepAudit& s : p.steps) {
+      firstLayers += s.firstLayerViolation ? 1 : 0;
+      turns += s.turnViolation ? 1 : 0;
+    }
+  }
+  std::vector<std::string> reasons;
+  if (outside > 0.0) reasons.push_back("(a) " + number(outside, 2) + " mm outside the region and supports");
+  if (strict && unsupported > 0.0) reasons.push_back("(b) " + number(unsupported, 1) + " mm unsupported");
+  if (firstLayers > 0) reasons.push_back("(c) " + std::to_string(firstLayers) + " first layers off their base");
+  if (retracts > 0) reasons.push_back("(d) " + std::to_string(retracts) + " extrusions while retracted");
+  if (turns > 0) reasons.push_back("(e) " + std::to_string(turns) + " turns with the nozzle too low");
+  if (report.poseMismatches > 0)
+    reasons.push_back(std::to_string(report.poseMismatches) + " poses that disagree with the kinematics");
+  if (report.sequenceViolations > 0)
+    reasons.push_back(std::to_string(report.sequenceViolations) + " moves out of sequence (see the findings)");
+  return reasons;
+}
+
 Json numberJson(double value) { return std::isfinite(value) ? Json(value) : Json(); }
 
 Json stepJson(const slicing::StepAudit& s) {
@@ -206,9 +232,13 @@ int runAudit(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (!file) throw FileError(kCommand + ": --json: cannot write '" + path + "' (no such folder or no permission?)");
   }
   const bool failed = report->failed() || (strict && report->hasUnsupported());
-  out << "\nAudit " << (failed ? "FAILED" : "passed")
-      << (report->hasUnsupported() && !strict ? " (unsupported extrusion is reported; --strict fails on it)" : "")
-      << "\n";
+  const std::vector<std::string> reasons = failureReasons(*report, strict);
+  out << "\nAudit " << (failed ? "FAILED:" : "passed");
+  for (std::size_t i = 0; i < reasons.size(); ++i) out << (i ? "; " : " ") << reasons[i];
+  if (!strict && report->hasUnsupported())
+    out << (failed ? ". Unsupported" : " (unsupported")
+        << " extrusion (b) is reported, not failed: --strict fails on it" << (failed ? "" : ")");
+  out << "\n";
   (void)err;
   return failed ? kExitAuditFailed : kExitOk;
 }

@@ -147,6 +147,10 @@ core::Result<AuditJob> readAuditJob(const std::string& directoryText) {
   const Json printer = slicing.value("printer", Json::object());
   const std::string profilePath = printer.value("profile", std::string());
   core::Result<PrinterProfile> profile = loadPrinterProfile(profilePath);
+  // A profile named by a relative path was found from where `multidir slice` ran: try beside the job too.
+  if (!profile && !profilePath.empty() && fs::path(profilePath).is_relative() &&
+      fs::is_regular_file(directory / profilePath))
+    profile = loadPrinterProfile((directory / profilePath).string());
   if (!profile)
     return Error{profile.error().code,
                  "the job's printer profile '" + profilePath + "' (slicing.printer.profile) cannot be read: " +
