@@ -468,7 +468,7 @@ TEST(AuditReplay, AnArcMoveIsRefusedNamingFileAndLine) {
   const core::Result<AuditReport> report = auditJob(job, AuditOptions{}, context);
   ASSERT_FALSE(report);
   EXPECT_EQ(report.error().code, core::ErrorCode::MalformedFile);
-  EXPECT_NE(report.error().describe().find("step-01.gcode: line 5"), std::string::npos) << report.error().describe();
+  EXPECT_NE(report.error().describe().find("step-01.gcode: line 5 (step 1): an arc move"), std::string::npos) << report.error().describe();
 }
 
 TEST(AuditJobFile, AJobThatWasNotSlicedIsRefusedSayingWhatToRun) {

@@ -43,7 +43,8 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
   std::string line;
   int lineNumber = 0;
   const auto bad = [&](const std::string& what) {
-    return Error{ErrorCode::MalformedFile, "line " + std::to_string(lineNumber) + ": " + what, name};
+    const std::string section = step > 0 ? " (step " + std::to_string(step) + ")" : "";
+    return Error{ErrorCode::MalformedFile, "line " + std::to_string(lineNumber) + section + ": " + what, name};
   };
   while (std::getline(in, line)) {
     ++lineNumber;
