@@ -95,7 +95,7 @@ struct AuditOptions {
   int worstClusters = 5;                  // (a), (b): places reported per program
 };
 
-// Where extrusion went wrong: one cluster of samples (a cube of kClusterMm in the model frame) in one step.
+// Where extrusion went wrong: one cluster of samples (a 5 mm cube of the model frame) in one step.
 struct AuditPlace {
   int step = 1;
   std::string file;
