@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "../common/heap_tuning.h"
+#include "audit_command.h"
 #include "cli_args.h"
 #include "decompose_command.h"
 #include "export_command.h"
@@ -31,6 +32,7 @@ const char* const kUsage =
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
     "  simulate --printer moonraker|marlin   printer simulator: Klipper behind Moonraker, or Marlin on a pty\n"
+    "  audit JOB                   replay a sliced job's G-code through the machine and check it\n"
     "  run JOB --printer URL --platform HOST:PORT   print a sliced job: platform and printer in the loop\n"
     "  help [COMMAND]              show this help, or a command's help\n"
     "\n"
@@ -38,7 +40,8 @@ const char* const kUsage =
     "  -h, --help                  show this help\n"
     "  --version                   show the version\n"
     "\n"
-    "Exit codes: 0 ok, 1 bad input file, 2 usage error, 3 internal error, 4 a run that did not complete.\n";
+    "Exit codes: 0 ok, 1 bad input file, 2 usage error, 3 internal error, 4 a run that did not complete,\n"
+    "5 an audit that found a violation.\n";
 
 int help(const std::vector<std::string>& args) {
   if (args.empty()) {
@@ -70,6 +73,10 @@ int help(const std::vector<std::string>& args) {
     std::cout << kSimulateHelp;
     return kExitOk;
   }
+  if (args[0] == "audit") {
+    std::cout << kAuditHelp;
+    return kExitOk;
+  }
   if (args[0] == "run") {
     std::cout << kRunHelp;
     return kExitOk;
@@ -96,6 +103,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "report") return runReport(rest, std::cout, std::cerr);
   if (command == "export") return runExport(rest, std::cout, std::cerr);
   if (command == "slice") return runSlice(rest, std::cout, std::cerr);
+  if (command == "audit") return runAudit(rest, std::cout, std::cerr);
   if (command == "run") return runRun(rest, std::cout, std::cerr);
   if (!command.empty() && command[0] == '-')
     throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");

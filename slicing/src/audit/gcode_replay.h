@@ -1,0 +1,58 @@
+#pragma once
+// The audit's own reading of G-code (not parseGcode: the audit should not share what it checks): every move
+// in printer coordinates with the platform's angle, the filament pushed and whether the filament was
+// retracted when the move began. The machine's state is passed in and out, so programs that run one after
+// another on one machine (a Modbus platform's step programs) carry the nozzle and the filament over.
+//
+// Understood: G0/G1 (X Y Z E F and the rotary axis letter), G90/G91, M82/M83, G92, G28, G10/G11 (firmware
+// retraction), Klipper's MANUAL_STEPPER ... SET_POSITION= / MOVE=, PrusaSlicer's ";TYPE:" comments and
+// MultiDir's section markers. Arcs (G2/G3) are refused: the audit would have to guess their path.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "multidir/core/common/result.h"
+
+namespace multidir::slicing::audit {
+
+struct MachineState {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // printer coordinates, mm
+  double e = 0.0;                                      // the E register
+  double aDegrees = 0.0;                               // the platform's axis
+  bool absoluteXyz = true;                             // G90; G91 makes every axis relative, E too
+  bool absoluteE = true;           // M82; M83 makes E relative whatever G90 says (Marlin's and Klipper's rule)
+  double retractedMm = 0.0;        // filament pulled back and not yet pushed again
+  bool firmwareRetracted = false;  // G10 without G11
+};
+
+struct ReplayMove {
+  int line = 0;
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();
+  Eigen::Vector3d to = Eigen::Vector3d::Zero();
+  double aFromDegrees = 0.0;
+  double aToDegrees = 0.0;
+  double filamentMm = 0.0;  // E pushed (negative: pulled back)
+  int step = 0;             // 0: before any marker, in the start or the end sequence
+  bool inTransition = false;
+  bool skirt = false;             // under ";TYPE:Skirt/Brim" (or Skirt, Brim)
+  std::string feature;            // the slicer's ";TYPE:" it lies under ("External perimeter"), empty if none
+  bool retractedAtStart = false;  // an extrusion that began with the filament retracted: (d)
+
+  bool movesXy() const { return (to.head<2>() - from.head<2>()).squaredNorm() > 1e-12; }
+  bool turns() const { return std::abs(aToDegrees - aFromDegrees) > 1e-9; }
+  bool extrudes() const { return filamentMm > 1e-9 && movesXy(); }
+};
+
+struct Replay {
+  std::vector<ReplayMove> moves;  // motion and extrusion only
+  int lineCount = 0;
+};
+
+// Errors: MalformedFile naming `name` and the line (a word that is not a number, an arc move).
+core::Result<Replay> replayGcode(const std::string& text, const std::string& name, char rotaryLetter,
+                                 double retractToleranceMm, MachineState& state);
+
+// The value of "; key = value" in the settings the slicer writes at the end of its G-code; empty when absent.
+std::string slicerSetting(const std::string& gcode, const std::string& key);
+
+}  // namespace multidir::slicing::audit
