@@ -103,7 +103,8 @@ std::string findExecutable(const std::string& program) {
   return {};
 }
 
-core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context) {
+core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context,
+                                          const std::function<void(const std::string& piece)>& onOutput) {
   if (argv.empty()) return Error{ErrorCode::InvalidParameter, "no program to run", "child process"};
   const std::string command = commandText(argv);
   const std::string executable = findExecutable(argv[0]);
@@ -147,9 +148,13 @@ core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, 
     pollfd p{readEnd.fd, POLLIN, 0};
     const int ready = ::poll(&p, 1, 50);
     if (ready < 0 && errno != EINTR) break;
-    if (ready <= 0) continue;
+    if (ready <= 0) {
+      if (onOutput) onOutput(std::string());
+      continue;
+    }
     const ssize_t n = ::read(readEnd.fd, buffer, sizeof buffer);
     if (n > 0) {
+      if (onOutput) onOutput(std::string(buffer, static_cast<std::size_t>(n)));
       result.output.append(buffer, static_cast<std::size_t>(n));
       if (result.output.size() > kMaxCapturedBytes)
         result.output.erase(0, result.output.size() - kMaxCapturedBytes);

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,67 @@ using core::Error;
 using core::ErrorCode;
 
 constexpr int kOutputLinesInErrors = 8;
+
+// PrusaSlicer's own stages, as it prints them ("70 => Infilling layers"), in percent; it writes the G-code from
+// 90 % on.
+constexpr double kExportStartPercent = 90.0;
+
+// Follows a run's output and the G-code it writes, for SliceRequest::progress.
+class ProgressFollower {
+ public:
+  explicit ProgressFollower(const SliceRequest& request) : m_request(request) {}
+
+  void take(const std::string& piece) {
+    m_pending += piece;
+    for (std::size_t end = m_pending.find('\n'); end != std::string::npos; end = m_pending.find('\n')) {
+      const std::string line = m_pending.substr(0, end);
+      m_pending.erase(0, end + 1);
+      int percent = 0;
+      char arrow[3] = {};
+      if (std::sscanf(line.c_str(), "%d %2[=>]", &percent, arrow) == 2 && std::string(arrow) == "=>" &&
+          percent >= 0 && percent <= 100)
+        m_stagePercent = std::max(m_stagePercent, static_cast<double>(percent));
+    }
+    if (m_pending.size() > 4096) m_pending.clear();  // not a line of status: nothing to follow
+    double fraction = m_stagePercent / 100.0;
+    if (m_stagePercent >= kExportStartPercent && m_request.heightMm > 0.0) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - m_lastLook > std::chrono::milliseconds(250)) {
+        m_lastLook = now;
+        m_writtenFraction = std::max(m_writtenFraction, writtenFraction());
+      }
+      fraction = (kExportStartPercent + (100.0 - kExportStartPercent) * m_writtenFraction) / 100.0;
+    }
+    if (fraction > m_reported + 1e-3) {
+      m_reported = fraction;
+      m_request.progress(std::min(fraction, 1.0));
+    }
+  }
+
+ private:
+  // The height reached by the G-code being written (PrusaSlicer writes OUT.tmp, then renames it), over the
+  // mesh's height: the last ";Z:" layer comment of the file's tail.
+  double writtenFraction() const {
+    std::ifstream in(m_request.outputFile + ".tmp", std::ios::binary | std::ios::ate);
+    if (!in) return 0.0;
+    const std::streamoff size = in.tellg();
+    const std::streamoff tail = std::min<std::streamoff>(size, 65536);
+    std::string text(static_cast<std::size_t>(tail), '\0');
+    in.seekg(size - tail);
+    in.read(text.data(), tail);
+    const std::size_t at = text.rfind(";Z:");
+    if (at == std::string::npos) return 0.0;
+    const double z = std::strtod(text.c_str() + at + 3, nullptr);
+    return std::clamp((z - m_request.zOffsetMm) / m_request.heightMm, 0.0, 1.0);
+  }
+
+  const SliceRequest& m_request;
+  std::string m_pending;
+  double m_stagePercent = 0.0;
+  double m_writtenFraction = 0.0;
+  double m_reported = 0.0;
+  std::chrono::steady_clock::time_point m_lastLook{};
+};
 
 std::string numberText(double value) {
   char text[40];
@@ -40,7 +102,10 @@ core::Result<SliceRun> PrusaSlicerEngine::slice(const SliceRequest& request, cor
   std::filesystem::remove(request.outputFile, ec);
 
   const auto start = std::chrono::steady_clock::now();
-  core::Result<ChildOutput> child = runChildProcess(argv, context);
+  ProgressFollower follower(request);
+  core::Result<ChildOutput> child =
+      request.progress ? runChildProcess(argv, context, [&follower](const std::string& piece) { follower.take(piece); })
+                       : runChildProcess(argv, context);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!child) return child.error();
   const std::string tail = lastLines(child->output, kOutputLinesInErrors);
