@@ -130,6 +130,16 @@ double worstViolation(const core::PrintJob& job, const Extents& e, const Vec3& d
   return worst;
 }
 
+// What the 5-DOF search minimises: the worst violation, then (a thousandth as much) each axis' worse side, so
+// that an axis which does not decide the worst is still balanced between its two sides.
+double searchCost(const core::PrintJob& job, const Extents& e, const Vec3& d, const PrinterProfile& profile) {
+  const Placed p = placedAt(job, e, d, profile);
+  const Eigen::Vector2d lo = profile.bedMin(), hi = profile.bedMax();
+  const double x = std::max(lo.x() - p.all.lo.x(), p.all.hi.x() - hi.x());
+  const double y = std::max(lo.y() - p.all.lo.y(), p.all.hi.y() - hi.y());
+  return worstViolation(job, e, d, profile) + 1e-3 * (x + y);
+}
+
 Vec3 chooseOffset(const core::PrintJob& job, const Extents& e, const PrinterProfile& profile) {
   const Placed atZero = placedAt(job, e, Vec3::Zero(), profile);
   const Eigen::Vector2d miss = bedCentre(profile) - centreXy(atZero.all);
@@ -152,14 +162,14 @@ Vec3 chooseOffset(const core::PrintJob& job, const Extents& e, const PrinterProf
   // bed (the worst overhang is convex in d: a pattern search finds its least).
   if (worstViolation(job, e, Vec3::Zero(), profile) <= kFitToleranceMm) return Vec3::Zero();
   Vec3 d = Vec3::Zero();
-  double best = worstViolation(job, e, d, profile);
+  double best = searchCost(job, e, d, profile);
   for (double step = 32.0; step > 0.01;) {
     bool moved = false;
     for (const Eigen::Vector2d& direction : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0), Eigen::Vector2d(0, 1),
                                              Eigen::Vector2d(0, -1), Eigen::Vector2d(1, 1), Eigen::Vector2d(1, -1),
                                              Eigen::Vector2d(-1, 1), Eigen::Vector2d(-1, -1)}) {
       const Vec3 candidate = d + Vec3(direction.x(), direction.y(), 0.0) * step;
-      const double v = worstViolation(job, e, candidate, profile);
+      const double v = searchCost(job, e, candidate, profile);
       if (v < best - 1e-9) {
         best = v;
         d = candidate;
@@ -347,8 +357,12 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
     const double swept = turn.sweptTopZMm - profile.platformZMm;
     if (swept > 0.0) scale = std::min(scale, (heightFromPlatform - profile.clearanceMarginMm) / swept);
   }
+  // A part printed below the bed where the plan put it is not helped by scaling (z scales about the platform);
+  // one the search moved there is, as a smaller part stays where the plan put it.
+  bool belowWherePlanned = false;
+  for (const Box& b : placedAt(job, extents, Vec3::Zero(), profile).parts) belowWherePlanned |= b.lo.z() < -t;
   std::string help;
-  if (bottom.mm <= t && scale > 0.0) {
+  if (!belowWherePlanned && scale > 0.0) {
     const double fits = std::floor(scale * 100.0) / 100.0;
     help = "scale the model by " + mm(fits, 2) + " or less (multidir decompose --scale " + mm(fits, 2) + "), or ";
   }

@@ -1,5 +1,8 @@
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -78,6 +81,20 @@ class ProgressFollower {
   std::chrono::steady_clock::time_point m_lastLook{};
 };
 
+// PrusaSlicer prints its stage lines with C stdio, which a pipe buffers until the program ends. coreutils'
+// libstdbuf (what stdbuf -oL preloads), when installed, makes its stdout line-buffered so the lines arrive as
+// it prints them; without it they arrive at the end and only the G-code's height moves the progress.
+std::vector<std::string> lineBufferedOutput() {
+  for (const char* library : {"/usr/libexec/coreutils/libstdbuf.so", "/usr/lib/coreutils/libstdbuf.so",
+                              "/usr/local/libexec/coreutils/libstdbuf.so"}) {
+    if (::access(library, R_OK) != 0) continue;
+    const char* preloaded = std::getenv("LD_PRELOAD");
+    const std::string preload = std::string(library) + (preloaded && *preloaded ? std::string(":") + preloaded : "");
+    return {"LD_PRELOAD=" + preload, "_STDBUF_O=L"};
+  }
+  return {};
+}
+
 std::string numberText(double value) {
   char text[40];
   std::snprintf(text, sizeof text, "%.6f", value);
@@ -104,7 +121,9 @@ core::Result<SliceRun> PrusaSlicerEngine::slice(const SliceRequest& request, cor
   const auto start = std::chrono::steady_clock::now();
   ProgressFollower follower(request);
   core::Result<ChildOutput> child =
-      request.progress ? runChildProcess(argv, context, [&follower](const std::string& piece) { follower.take(piece); })
+      request.progress ? runChildProcess(
+                             argv, context, [&follower](const std::string& piece) { follower.take(piece); },
+                             lineBufferedOutput())
                        : runChildProcess(argv, context);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!child) return child.error();

@@ -32,7 +32,9 @@ std::string findExecutable(const std::string& program);
 // ExternalToolFailed (the process could not be started), Cancelled, InvalidParameter (empty argv).
 // `onOutput`, when given, gets each piece of output as it arrives (on the calling thread), and an empty piece
 // about every 50 ms while the program is quiet, e.g. to follow its own progress lines or the file it writes. Thread-safe: each call owns its child.
+// `environment`: NAME=VALUE entries that replace or add to the calling process' environment for the child.
 core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context,
-                                          const std::function<void(const std::string& piece)>& onOutput = {});
+                                          const std::function<void(const std::string& piece)>& onOutput = {},
+                                          const std::vector<std::string>& environment = {});
 
 }  // namespace multidir::slicing
