@@ -351,7 +351,28 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
   const Vec3 span = p.all.hi - p.all.lo;
   const Eigen::Vector2d bed = hi - lo;
   const double heightFromPlatform = profile.maxPrintHeightMm - profile.platformZMm;
-  double scale = std::min(bed.x() / span.x(), bed.y() / span.y());
+  // A scaled part scales about the pivot. Along an axis it moves freely on (3-DOF both; 4-DOF its rotation
+  // axis) it is centred again, so the spans decide; across, it stays where the plan put it (5-DOF: a smaller
+  // part fits there), so each side's reach from the pivot does. The bed a printer needs likewise.
+  const Placed planned = job.machine.kind == core::MachineKind::TiltRotate
+                             ? placedAt(job, extents, Vec3::Zero(), profile)
+                             : p;
+  const Eigen::Vector2d pivot = profile.platformCenter;
+  double scale = kInfinity;
+  Eigen::Vector2d neededBed = Eigen::Vector2d::Zero();
+  for (int axis = 0; axis < 2; ++axis) {
+    const bool free = job.machine.kind == core::MachineKind::ThreeAxis ||
+                      (job.machine.kind == core::MachineKind::RotaryPlatform && std::abs(extents.axis[axis]) > 1.0 - 1e-6);
+    if (free) {
+      scale = std::min(scale, bed[axis] / span[axis]);
+      neededBed[axis] = span[axis];
+      continue;
+    }
+    const double below = pivot[axis] - planned.all.lo[axis], above = planned.all.hi[axis] - pivot[axis];
+    if (below > 0.0) scale = std::min(scale, (pivot[axis] - lo[axis]) / below);
+    if (above > 0.0) scale = std::min(scale, (hi[axis] - pivot[axis]) / above);
+    neededBed[axis] = 2.0 * std::max(below, above);
+  }
   if (highestZ - profile.platformZMm > 0.0) scale = std::min(scale, heightFromPlatform / (highestZ - profile.platformZMm));
   for (const TurnPlan& turn : *turns) {
     const double swept = turn.sweptTopZMm - profile.platformZMm;
@@ -362,13 +383,13 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
   bool belowWherePlanned = false;
   for (const Box& b : placedAt(job, extents, Vec3::Zero(), profile).parts) belowWherePlanned |= b.lo.z() < -t;
   std::string help;
-  if (!belowWherePlanned && scale > 0.0) {
+  if (!belowWherePlanned && scale > 0.0 && scale < 1.0) {
     const double fits = std::floor(scale * 100.0) / 100.0;
     help = "scale the model by " + mm(fits, 2) + " or less (multidir decompose --scale " + mm(fits, 2) + "), or ";
   }
   const double neededHeight = std::max(highestZ, highestClearance);
-  help += "use a printer whose bed is at least " + mm(std::ceil(span.x()), 0) + " x " + mm(std::ceil(span.y()), 0) +
-          " mm" + (neededHeight > profile.maxPrintHeightMm ? " with " + mm(std::ceil(neededHeight), 0) + " mm of height" : "");
+  help += "use a printer whose bed is at least " + mm(std::ceil(neededBed.x()), 0) + " x " +
+          mm(std::ceil(neededBed.y()), 0) + " mm (the platform at its centre)" + (neededHeight > profile.maxPrintHeightMm ? " with " + mm(std::ceil(neededHeight), 0) + " mm of height" : "");
   const std::string placed = placement.offsetMm.norm() > 1e-6 ? "placed where it has the most room (moved X " +
                                                                    mm(placement.offsetMm.x()) + ", Y " +
                                                                    mm(placement.offsetMm.y()) + " mm on the platform)"
