@@ -222,6 +222,49 @@ TEST(SliceJob, CancellingWhileTheSlicerRunsStopsItAndKeepsNoGcode) {
     EXPECT_EQ(entry.path().filename().string().rfind(".slicing-", 0), std::string::npos) << entry.path();
 }
 
+TEST(SliceJob, CancellingStopsEverySlicerRunningSideBySide) {
+  // Two steps, sliced side by side: one cancel stops both slicers at once.
+  core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  core::PrintJobStep second = job.steps.front();
+  second.index = 2;
+  second.regionFile = "step-02-region.stl";
+  for (Vec3& v : second.region.vertices) v.z() += 10.0;
+  second.lowestHeightMm = 10.0;
+  job.steps.push_back(second);
+  const std::string dir = scratch("cancel-side-by-side");
+  const std::string pidFile = dir + "/slicer.pids";
+  const std::string fake = fakeSlicer(dir + "/slow-slicer.sh", "echo $$ >> '" + pidFile + "'\nexec sleep 60\n");
+  SliceJobOptions options;
+  options.slicerExecutable = fake;
+  options.fixedDirection = false;
+  const auto runningSlicers = [&pidFile] {
+    std::ifstream in(pidFile);
+    int n = 0;
+    for (long pid = 0; in >> pid;) ++n;
+    return n;
+  };
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const int expected = static_cast<int>(std::min<std::size_t>(2, cores));
+  core::JobContext context;
+  std::chrono::steady_clock::time_point cancelledAt;
+  std::thread canceller([&, context]() mutable {
+    for (int i = 0; i < 400 && runningSlicers() < expected; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    cancelledAt = std::chrono::steady_clock::now();
+    context.cancel();
+  });
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  const auto returnedAt = std::chrono::steady_clock::now();
+  canceller.join();
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::Cancelled) << sliced.error().describe();
+  EXPECT_EQ(runningSlicers(), expected) << "the slicers did not start side by side";
+  EXPECT_LT(std::chrono::duration<double>(returnedAt - cancelledAt).count(), 0.5);
+  std::ifstream pids(pidFile);
+  for (long pid = 0; pids >> pid;) EXPECT_NE(::kill(static_cast<pid_t>(pid), 0), 0) << "slicer " << pid << " still runs";
+  for (const auto& entry : fs::directory_iterator(dir + "/out"))
+    EXPECT_NE(entry.path().filename().string().rfind(".slicing-", 0), 0u) << entry.path();
+}
+
 TEST(SliceJob, ProgressNamesTheStepBeingSliced) {
   // Three steps, the comparison and stitching: five shares, as sliceJob reports them.
   EXPECT_EQ(sliceStageAt(0.0, 3, true).kind, SliceStage::Kind::Step);
