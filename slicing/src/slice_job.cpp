@@ -227,7 +227,8 @@ struct SliceTask {
 
 // Runs the tasks side by side, one slicer per core (at most one per task), their results in their slots.
 // Progress: tasks [0, stepCount) are the steps, a further one the comparison; each reports its own fraction
-// (the slicer's own stages), the job's progress is their sum over `shares`. The caller's cancel reaches every
+// (the slicer's own stages), the job's progress is the steps' sum over `shares`, plus the comparison's once
+// every step is done. The caller's cancel reaches every
 // running slicer within about 50 ms (each polls the workers' context, which this thread cancels); the first
 // failure cancels the others and is returned (a cancel, when the caller cancelled).
 core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& tasks, std::size_t stepCount,
@@ -270,10 +271,11 @@ core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& t
   while (finished.load() < tasks.size()) {
     if (context.isCancelled()) stop.cancel();
     double done = 0.0;
+    double comparison = 0.0;
     std::string running;
     int doneSteps = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
-      done += fractions[i];
+      (i < stepCount ? done : comparison) += fractions[i];
       if (i < stepCount && states[i] == 2) ++doneSteps;
       if (states[i] != 1) continue;
       char percent[16];
@@ -281,6 +283,9 @@ core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& t
       running += std::string(running.empty() ? "" : ", ") +
                  (i < stepCount ? "step " + std::to_string(i + 1) : std::string("the comparison")) + percent;
     }
+    // The comparison's share counts once every step is done, so that the steps' shares read as the steps'
+    // progress (sliceStageAt: "step k" while k - 1 steps' worth are done).
+    if (doneSteps == static_cast<int>(stepCount)) done += comparison;
     if (!stop.isCancelled())
       context.setProgress(done / shares, "slicing " + (running.empty() ? std::string("") : running + "; ") +
                                              std::to_string(doneSteps) + " of " + std::to_string(stepCount) +
