@@ -52,7 +52,7 @@ Eigen::Matrix3d restToStep(const core::PrintJob& job, std::size_t k) {
 // printed up to step k swept through the turn after it, in XY.
 struct Extents {
   std::vector<Box> parts;       // one per step
-  std::vector<Box> sweeps;      // one per turn (4-DOF); XY only, z left empty-safe
+  std::vector<Box> sweeps;      // one per turn (4-DOF); XY only (z 0: heights are planTurns' clearance)
   Vec3 axis = Vec3::UnitX();    // 4-DOF: the rotation axis, machine frame (rest pose)
 };
 

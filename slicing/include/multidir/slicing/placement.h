@@ -33,12 +33,14 @@ struct Placement {
 // centred on the bed; 4-DOF moved along the rotation axis only (a move across it would raise every turn's
 // swept part and change the heights) so that everything printed and swept lies centred along the axis; 5-DOF
 // where the plan put it (the first region's footprint centred on the platform) when it fits there, else the
-// offset with the most room over every step (a move there raises, lowers and swings every tilted step). Then every step is
-// checked against the bed's bounding box and max_print_height: its part (region and supports) as posed for it,
-// and on a rotary platform the part printed so far swept through the turn that follows it (exactly, over the
-// arc; a robot arm's turns are bounded in height by planTurns, in XY by the poses).
+// offset with the most room over every step (a move raises, lowers and swings every tilted step). Then every
+// step is checked against the bed's bounding box and max_print_height: its part (region and supports) as
+// posed for it, on a rotary platform the part printed so far swept through the turn that follows it (exactly,
+// over the arc; a robot arm's turns are bounded in height by planTurns, in XY by the poses), and each turn's
+// clearance (planTurns). Also refused: a step that would print below the bed (z 0).
 // Errors: CheckFailed when it cannot fit, naming the step, the side and by how much, the scale factor that
-// would fit and the bed and height a printer would need; InvalidParameter for a job not in the machine frame.
+// would fit and the bed and height a printer would need; InvalidParameter for a job not in the machine frame
+// or without steps; Internal from planTurns.
 core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const PrinterProfile& profile);
 
 }  // namespace multidir::slicing
