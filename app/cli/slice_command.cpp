@@ -1,9 +1,13 @@
 #include "slice_command.h"
 
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
+#include <future>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -11,6 +15,7 @@
 #include "multidir/core/plan/print_job.h"
 #include "multidir/slicing/slice_job.h"
 #include "number_text.h"
+#include "progress_line.h"
 
 namespace multidir::cli {
 
@@ -36,7 +41,13 @@ const char* const kSliceHelp =
     "  --slicer PROGRAM       the prusa-slicer program (default: prusa-slicer on PATH)\n"
     "  -h, --help             show this help\n"
     "\n"
-    "Exit codes: 0 ok, 1 a file cannot be read, the slicer failed or a check refused the G-code, 2 usage error.\n";
+    "The part is placed on the platform where it fits the printer (every step, and on a rotary platform what the\n"
+    "turns sweep) before anything is sliced; a part that cannot fit is refused at once, saying by how much.\n"
+    "Steps are sliced side by side, one slicer per core. On a terminal a status line shows the progress (plain\n"
+    "lines elsewhere). Ctrl-C stops every slicer and removes the work folder; no G-code is kept.\n"
+    "\n"
+    "Exit codes: 0 ok, 1 a file cannot be read, the part does not fit, the slicer failed or a check refused the\n"
+    "G-code, 2 usage error, 130 interrupted (Ctrl-C or SIGTERM).\n";
 
 namespace {
 
@@ -45,6 +56,39 @@ namespace slicing = multidir::slicing;
 namespace fs = std::filesystem;
 
 const std::string kCommand = "multidir slice";
+constexpr int kExitInterrupted = 130;  // 128 + SIGINT, as a shell reports a command Ctrl-C ended
+
+volatile std::sig_atomic_t gInterrupted = 0;
+
+extern "C" void onSliceInterrupt(int) { gInterrupted = 1; }
+
+// SIGINT and SIGTERM only raise a flag while the job runs: the command then cancels it, so every slicer is
+// stopped and the work folder removed (the default action would end the process and leave both behind). A
+// second signal changes nothing (a Ctrl-C reaches the process and its group, timeout(1) sends two); stopping
+// takes at most about a second (a slicer that ignores SIGTERM gets SIGKILL).
+class InterruptScope {
+ public:
+  InterruptScope() {
+    gInterrupted = 0;
+    struct sigaction action {};
+    action.sa_handler = onSliceInterrupt;
+    sigemptyset(&action.sa_mask);
+    m_int = sigaction(SIGINT, &action, &m_previousInt) == 0;
+    m_term = sigaction(SIGTERM, &action, &m_previousTerm) == 0;
+  }
+  ~InterruptScope() {
+    if (m_int) sigaction(SIGINT, &m_previousInt, nullptr);
+    if (m_term) sigaction(SIGTERM, &m_previousTerm, nullptr);
+  }
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+
+ private:
+  struct sigaction m_previousInt {};
+  struct sigaction m_previousTerm {};
+  bool m_int = false;
+  bool m_term = false;
+};
 
 struct Settings {
   std::string input;
@@ -104,24 +148,31 @@ void printTable(std::ostream& out, const slicing::SlicedJob& job) {
   out << "Sliced with " << job.engine << " for " << job.profile.name << " (platform: "
       << slicing::platformDriveName(job.profile.platform) << ")\n";
   char line[256];
-  std::snprintf(line, sizeof line, "  %4s  %-14s  %10s  %12s  %11s  %12s  %9s\n", "step", "G-code", "base z mm",
-                "print time", "filament m", "filament g", "slice s");
+  if (job.placementMm.norm() > 1e-6) {
+    std::snprintf(line, sizeof line, "Part placed X %+.1f, Y %+.1f mm on the platform (where it fits the bed best)\n",
+                  job.placementMm.x(), job.placementMm.y());
+    out << line;
+  }
+  std::snprintf(line, sizeof line, "  %4s  %-14s  %10s  %11s  %12s  %11s  %12s  %9s\n", "step", "G-code", "base z mm",
+                "1st layer", "print time", "filament m", "filament g", "slice s");
   out << line;
   for (const slicing::SlicedStep& s : job.steps) {
-    std::snprintf(line, sizeof line, "  %4d  %-14s  %10.2f  %12s  %11.2f  %12.1f  %9.2f\n", s.index,
-                  s.gcodeFile.c_str(), s.baseZMm, slicing::durationText(s.estimate.printSeconds).c_str(),
-                  s.estimate.filamentMm / 1000.0, s.estimate.filamentGrams, s.sliceSeconds);
+    // The first layer's height above the base plane: the slicer's first_layer_height (layer_height on plastic).
+    std::snprintf(line, sizeof line, "  %4d  %-14s  %10.2f  %11.2f  %12s  %11.2f  %12.1f  %9.2f\n", s.index,
+                  s.gcodeFile.c_str(), s.baseZMm, s.firstLayerZMm - s.baseZMm,
+                  slicing::durationText(s.estimate.printSeconds).c_str(), s.estimate.filamentMm / 1000.0,
+                  s.estimate.filamentGrams, s.sliceSeconds);
     out << line;
   }
   double sliceSeconds = 0.0;
   for (const slicing::SlicedStep& s : job.steps) sliceSeconds += s.sliceSeconds;
-  std::snprintf(line, sizeof line, "  %4s  %-14s  %10s  %12s  %11.2f  %12.1f  %9.2f\n", "all",
-                job.stitchedFile.empty() ? "-" : job.stitchedFile.c_str(), "",
+  std::snprintf(line, sizeof line, "  %4s  %-14s  %10s  %11s  %12s  %11.2f  %12.1f  %9.2f\n", "all",
+                job.stitchedFile.empty() ? "-" : job.stitchedFile.c_str(), "", "",
                 slicing::durationText(job.total.printSeconds).c_str(), job.total.filamentMm / 1000.0,
                 job.total.filamentGrams, sliceSeconds);
   out << line;
   if (job.fixedDirection) {
-    std::snprintf(line, sizeof line, "  %-30s  %12s  %11.2f  %12.1f  %9.2f\n",
+    std::snprintf(line, sizeof line, "  %-45s  %12s  %11.2f  %12.1f  %9.2f\n",
                   "fixed direction, slicer supports", slicing::durationText(job.fixedDirection->printSeconds).c_str(),
                   job.fixedDirection->filamentMm / 1000.0, job.fixedDirection->filamentGrams,
                   job.fixedDirectionSliceSeconds);
@@ -155,16 +206,20 @@ int runSlice(const std::vector<std::string>& args, std::ostream& out, std::ostre
   const core::Result<core::LoadedPlan> plan = core::loadPlan(planDir);
   if (!plan) throw FileError(kCommand + ": cannot read the plan in '" + planDir + "': " + plan.error().describe());
 
-  std::mutex mutex;
-  core::JobContext context([&err, &mutex](double fraction, const std::string& phase) {
-    std::lock_guard<std::mutex> lock(mutex);
-    const int filled = static_cast<int>(fraction * 30.0 + 0.5);
-    err << "\r\033[K[" << std::string(static_cast<std::size_t>(filled), '#')
-        << std::string(static_cast<std::size_t>(30 - filled), '.') << "] " << static_cast<int>(fraction * 100.0 + 0.5)
-        << "% " << phase << std::flush;
-  });
-  const core::Result<slicing::SlicedJob> sliced = slicing::slicePlan(*plan, *profile, s.options, s.outDir, context);
-  err << "\r\033[K" << std::flush;
+  ProgressLine progress(err, isatty(STDERR_FILENO) != 0);
+  core::JobContext context([&progress](double fraction, const std::string& phase) { progress.show(fraction, phase); });
+  const InterruptScope interrupts;
+  std::future<core::Result<slicing::SlicedJob>> running = std::async(
+      std::launch::async, [&] { return slicing::slicePlan(*plan, *profile, s.options, s.outDir, context); });
+  while (running.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready)
+    if (gInterrupted) context.cancel();
+  const core::Result<slicing::SlicedJob> sliced = running.get();
+  progress.clear();
+  if (gInterrupted) {
+    err << kCommand << ": interrupted: every slicer was stopped and no G-code was kept (" << s.outDir
+        << " holds only the print job written before slicing)\n";
+    return kExitInterrupted;
+  }
   if (!sliced) {
     err << kCommand << ": " << sliced.error().describe() << "\n";
     return sliced.error().code == core::ErrorCode::Internal ? kExitInternal : kExitBadInput;

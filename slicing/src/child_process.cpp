@@ -103,7 +103,9 @@ std::string findExecutable(const std::string& program) {
   return {};
 }
 
-core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context) {
+core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context,
+                                          const std::function<void(const std::string& piece)>& onOutput,
+                                          const std::vector<std::string>& environment) {
   if (argv.empty()) return Error{ErrorCode::InvalidParameter, "no program to run", "child process"};
   const std::string command = commandText(argv);
   const std::string executable = findExecutable(argv[0]);
@@ -128,8 +130,20 @@ core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, 
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  // The parent's environment with `environment`'s entries in place of those of the same name.
+  std::vector<std::string> variables = environment;
+  for (char** e = environ; *e != nullptr; ++e) {
+    const std::string entry = *e;
+    const std::string name = entry.substr(0, entry.find('=') + 1);
+    bool replaced = false;
+    for (const std::string& v : environment) replaced = replaced || v.rfind(name, 0) == 0;
+    if (!replaced) variables.push_back(entry);
+  }
+  std::vector<char*> envp;
+  for (std::string& v : variables) envp.push_back(v.data());
+  envp.push_back(nullptr);
   pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, executable.c_str(), &actions, nullptr, args.data(), environ);
+  const int spawned = ::posix_spawn(&pid, executable.c_str(), &actions, nullptr, args.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0)
     return Error{ErrorCode::ExternalToolFailed, std::string("cannot start: ") + std::strerror(spawned), command};
@@ -147,9 +161,13 @@ core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, 
     pollfd p{readEnd.fd, POLLIN, 0};
     const int ready = ::poll(&p, 1, 50);
     if (ready < 0 && errno != EINTR) break;
-    if (ready <= 0) continue;
+    if (ready <= 0) {
+      if (onOutput) onOutput(std::string());
+      continue;
+    }
     const ssize_t n = ::read(readEnd.fd, buffer, sizeof buffer);
     if (n > 0) {
+      if (onOutput) onOutput(std::string(buffer, static_cast<std::size_t>(n)));
       result.output.append(buffer, static_cast<std::size_t>(n));
       if (result.output.size() > kMaxCapturedBytes)
         result.output.erase(0, result.output.size() - kMaxCapturedBytes);

@@ -7,6 +7,12 @@
 namespace multidir::slicing {
 
 double sweptTopZ(const std::vector<core::Vec3>& points, const core::Vec3& axisUnit, double turnRadians) {
+  return sweptMax(points, axisUnit, turnRadians, core::Vec3::UnitZ());
+}
+
+double sweptMax(const std::vector<core::Vec3>& points, const core::Vec3& axisUnit, double turnRadians,
+                const core::Vec3& direction) {
+  const core::Vec3 d = direction.normalized();
   const core::Vec3 a = axisUnit.normalized();
   const double lo = std::min(0.0, turnRadians);
   const double hi = std::max(0.0, turnRadians);
@@ -15,9 +21,9 @@ double sweptTopZ(const std::vector<core::Vec3>& points, const core::Vec3& axisUn
     // Rodrigues: R(t) q = a (a.q) + q_perp cos t + (a x q) sin t.
     const double along = a.dot(q);
     const core::Vec3 perp = q - along * a;
-    const double c = a.z() * along;
-    const double cosCoeff = perp.z();
-    const double sinCoeff = a.cross(q).z();
+    const double c = d.dot(a) * along;
+    const double cosCoeff = d.dot(perp);
+    const double sinCoeff = d.dot(a.cross(q));
     const auto zAt = [&](double t) { return c + cosCoeff * std::cos(t) + sinCoeff * std::sin(t); };
     double best = std::max(zAt(lo), zAt(hi));
     // The peak of A cos t + B sin t is at t* = atan2(B, A) (+ 2 pi k).

@@ -66,13 +66,54 @@ core::Status checkExtrusion(const GcodeMove& move, const StepBounds& bounds, con
   return core::Done{};
 }
 
+// Refuses an extruding `move` made while the filament is drawn back, then advances the state past it.
+core::Status checkPrimed(FilamentState& filament, const GcodeMove& move, int step, double toleranceMm,
+                         const std::string& fileName) {
+  if (move.extrudes() && filament.retracted(toleranceMm)) {
+    const std::string how = filament.firmwareRetracted
+                                ? std::string("retracted by the firmware (G10 without G11)")
+                                : "retracted by " + mm(filament.retractedMm) + " mm";
+    return refusal(fileName, step, move.line,
+                   "extrusion with the filament " + how +
+                       ": the line would start without plastic; unretract (prime) before the first extrusion");
+  }
+  advance(filament, move);
+  return core::Done{};
+}
+
 }  // namespace
 
+void advance(FilamentState& state, const GcodeMove& move) {
+  switch (move.firmwareRetraction) {
+    case GcodeMove::FirmwareRetraction::Retract:
+      state.firmwareRetracted = true;
+      return;
+    case GcodeMove::FirmwareRetraction::Unretract:
+      state.firmwareRetracted = false;
+      return;
+    case GcodeMove::FirmwareRetraction::None:
+      break;
+  }
+  if (move.filamentMm < 0.0)
+    state.retractedMm -= move.filamentMm;
+  else
+    state.retractedMm = std::max(0.0, state.retractedMm - move.filamentMm);
+}
+
+FilamentState filamentAtEnd(const GcodeProgram& program, FilamentState start) {
+  for (const GcodeMove& move : program.moves) advance(start, move);
+  return start;
+}
+
 core::Result<StepTotals> checkStepProgram(const GcodeProgram& program, const StepBounds& bounds,
-                                          const std::string& fileName, const double* endClearanceZMm) {
+                                          const std::string& fileName, const double* endClearanceZMm,
+                                          FilamentState start) {
   StepTotals totals;
   totals.step = bounds.step;
+  FilamentState filament = start;
   for (const GcodeMove& move : program.moves) {
+    if (core::Status s = checkPrimed(filament, move, bounds.step, bounds.retractToleranceMm, fileName); !s)
+      return s.error();
     if (move.step != 0 && move.step != bounds.step)
       return refusal(fileName, bounds.step, move.line, "a section of step " + std::to_string(move.step) + " in its program");
     if (move.rotates())
@@ -90,6 +131,7 @@ core::Result<StepTotals> checkStepProgram(const GcodeProgram& program, const Ste
                      "the program ends with the nozzle at z " + mm(z) + " mm, below the clearance the platform's turn needs (" +
                          mm(*endClearanceZMm) + " mm)");
   }
+  totals.filamentAtEnd = filament;
   return totals;
 }
 
@@ -107,10 +149,13 @@ core::Result<std::vector<StepTotals>> checkStitchedProgram(const GcodeProgram& p
     return nullptr;
   };
 
+  FilamentState filament;
   for (const GcodeMove& move : program.moves) {
     const int step = move.step;
     const StepBounds* own = boundsOf(step == 0 ? (bounds.empty() ? 0 : bounds.front().step) : step);
     if (own == nullptr) return refusal(fileName, step, move.line, "a section of a step the job does not have");
+    if (core::Status s = checkPrimed(filament, move, own->step, own->retractToleranceMm, fileName); !s)
+      return s.error();
     if (move.inTransition) {
       const auto it = clearance.find(step);
       if (it == clearance.end())
@@ -138,8 +183,10 @@ core::Result<std::vector<StepTotals>> checkStitchedProgram(const GcodeProgram& p
     StepTotals scratch;
     if (core::Status s = checkExtrusion(move, *own, fileName, step == 0 ? scratch : t); !s) return s.error();
   }
-  for (const StepTotals& t : totals)
+  for (StepTotals& t : totals) {
     if (t.extrusions == 0) return refusal(fileName, t.step, program.lineCount, "the step extrudes nothing");
+    t.filamentAtEnd = filament;
+  }
   return totals;
 }
 

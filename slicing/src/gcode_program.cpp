@@ -108,7 +108,7 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
     }
     const std::string head = upper(code.substr(0, code.find_first_of(" \t")));
     if (head != "G0" && head != "G1" && head != "G00" && head != "G01" && head != "G90" && head != "G91" &&
-        head != "M82" && head != "M83" && head != "G92" && head != "G28")
+        head != "M82" && head != "M83" && head != "G92" && head != "G28" && head != "G10" && head != "G11")
       continue;  // temperatures, fans, Klipper macros...: no motion MultiDir needs to follow
     std::vector<Word> words;
     if (!splitWords(code, words))
@@ -143,6 +143,19 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
       continue;
     }
     if (head == "G90" || head == "G91" || head == "M82" || head == "M83") continue;
+    if (head == "G10" || head == "G11") {
+      if (words.size() > 1) continue;  // G10 P.. / L..: tool or work offsets, not a retraction
+      GcodeMove move;
+      move.line = lineNumber;
+      move.from = move.to = position;
+      move.rotaryFromDegrees = move.rotaryToDegrees = rotary;
+      move.step = step;
+      move.inTransition = inTransition;
+      move.firmwareRetraction =
+          head == "G10" ? GcodeMove::FirmwareRetraction::Retract : GcodeMove::FirmwareRetraction::Unretract;
+      program.moves.push_back(move);
+      continue;
+    }
 
     GcodeMove move;
     move.line = lineNumber;

@@ -1,18 +1,23 @@
 #include "multidir/slicing/slice_job.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/slicing/clearance.h"
 #include "multidir/slicing/gcode_program.h"
+#include "multidir/slicing/placement.h"
 #include "multidir/slicing/slicer_engine.h"
 
 namespace multidir::slicing {
@@ -57,6 +62,12 @@ double lowestZ(const core::TriangleMesh& mesh) {
   double low = std::numeric_limits<double>::infinity();
   for (const Vec3& v : mesh.vertices) low = std::min(low, v.z());
   return low;
+}
+
+double heightOf(const core::TriangleMesh& mesh) {
+  double high = -std::numeric_limits<double>::infinity();
+  for (const Vec3& v : mesh.vertices) high = std::max(high, v.z());
+  return mesh.vertices.empty() ? 0.0 : high - lowestZ(mesh);
 }
 
 core::Status writeText(const std::string& path, const std::string& text) {
@@ -147,11 +158,13 @@ core::Status recordInJobFile(const std::string& directory, const SlicedJob& slic
     step["estimate"] = estimateJson(s.estimate);
     step["extrusions"] = s.totals.extrusions;
     step["baseZMm"] = s.baseZMm;
+    step["firstLayerZMm"] = s.firstLayerZMm;
     step["highestZMm"] = s.totals.highestZMm;
     step["sliceSeconds"] = s.sliceSeconds;
     steps.push_back(step);
   }
   slicing["steps"] = steps;
+  slicing["placementMm"] = {sliced.placementMm.x(), sliced.placementMm.y()};
   nlohmann::ordered_json turns = nlohmann::ordered_json::array();
   for (const TurnPlan& t : sliced.turns)
     turns.push_back({{"fromStep", t.fromStep},
@@ -166,6 +179,126 @@ core::Status recordInJobFile(const std::string& directory, const SlicedJob& slic
       sliced.fixedDirection ? estimateJson(*sliced.fixedDirection) : nlohmann::ordered_json();
   job["slicing"] = slicing;
   return writeText(path, job.dump(2) + "\n");
+}
+
+// Replaced, in every step after the first, by the lines that prime it (primeCommands).
+constexpr const char* kPrimeMarker = "; MULTIDIR PRIME";
+
+// The first number of a setting ("35,35" per extruder: 35).
+double firstNumber(const std::string& text, double fallback) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() || !std::isfinite(value) ? fallback : value;
+}
+
+PrimeSettings primeSettings(const PrinterProfile& profile, const SliceJobOptions& options) {
+  PrimeSettings prime;
+  prime.retractLengthMm = firstNumber(setting(profile, options, "retract_length", ""), profile.retractLengthMm);
+  prime.restartExtraMm = firstNumber(setting(profile, options, "retract_restart_extra", "0"), 0.0);
+  const double retractSpeed = firstNumber(setting(profile, options, "retract_speed", "40"), 40.0);
+  const double deretractSpeed = firstNumber(setting(profile, options, "deretract_speed", "0"), 0.0);
+  prime.speedMmPerS = deretractSpeed > 0.0 ? deretractSpeed : (retractSpeed > 0.0 ? retractSpeed : 40.0);
+  return prime;
+}
+
+StepBounds stepBounds(const PrinterProfile& profile, const PrimeSettings& prime, int step, double baseZMm) {
+  StepBounds b;
+  b.step = step;
+  b.baseZMm = baseZMm;
+  b.bedMin = profile.bedMin();
+  b.bedMax = profile.bedMax();
+  b.maxZMm = profile.maxPrintHeightMm;
+  b.retractToleranceMm = 0.01 + std::max(0.0, -prime.restartExtraMm);
+  return b;
+}
+
+// The z of the step's first extrusion after its marker (its first layer).
+double firstLayerZ(const GcodeProgram& program, int step) {
+  for (const GcodeMove& m : program.moves)
+    if (m.step == step && m.extrudes()) return std::min(m.from.z(), m.to.z());
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// One slicing run and, once it ran, what it gave.
+struct SliceTask {
+  SliceRequest request;
+  std::optional<SliceRun> run;
+};
+
+// Runs the tasks side by side, one slicer per core (at most one per task), their results in their slots.
+// Progress: tasks [0, stepCount) are the steps, a further one the comparison; each reports its own fraction
+// (the slicer's own stages), the job's progress is the steps' sum over `shares`, plus the comparison's once
+// every step is done. The caller's cancel reaches every
+// running slicer within about 50 ms (each polls the workers' context, which this thread cancels); the first
+// failure cancels the others and is returned (a cancel, when the caller cancelled).
+core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& tasks, std::size_t stepCount,
+                           double shares, core::JobContext& context) {
+  const std::size_t workers =
+      std::max<std::size_t>(1, std::min<std::size_t>(tasks.size(), std::thread::hardware_concurrency()));
+  core::JobContext stop;  // the workers' own: cancelled on the caller's cancel or a failure
+  std::vector<std::atomic<double>> fractions(tasks.size());
+  std::vector<std::atomic<int>> states(tasks.size());  // 0 waiting, 1 running, 2 done
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    fractions[i] = 0.0;
+    states[i] = 0;
+  }
+  std::vector<std::optional<Error>> errors(tasks.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> finished{0};
+  std::vector<std::thread> threads;
+  for (std::size_t w = 0; w < workers; ++w)
+    threads.emplace_back([&] {
+      for (std::size_t i = next++; i < tasks.size(); i = next++) {
+        if (stop.isCancelled()) {
+          ++finished;
+          continue;
+        }
+        states[i] = 1;
+        SliceRequest request = tasks[i].request;
+        request.progress = [&fractions, i](double f) { fractions[i] = f; };
+        core::Result<SliceRun> run = engine.slice(request, stop);
+        if (run) {
+          tasks[i].run = std::move(run).value();
+        } else {
+          errors[i] = run.error();
+          stop.cancel();
+        }
+        fractions[i] = 1.0;
+        states[i] = 2;
+        ++finished;
+      }
+    });
+  while (finished.load() < tasks.size()) {
+    if (context.isCancelled()) stop.cancel();
+    double done = 0.0;
+    double comparison = 0.0;
+    std::string running;
+    int doneSteps = 0;
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+      (i < stepCount ? done : comparison) += fractions[i];
+      if (i < stepCount && states[i] == 2) ++doneSteps;
+      if (states[i] != 1) continue;
+      char percent[16];
+      std::snprintf(percent, sizeof percent, " (%d %%)", static_cast<int>(fractions[i] * 100.0));
+      running += std::string(running.empty() ? "" : ", ") +
+                 (i < stepCount ? "step " + std::to_string(i + 1) : std::string("the comparison")) + percent;
+    }
+    // The comparison's share counts once every step is done, so that the steps' shares read as the steps'
+    // progress (sliceStageAt: "step k" while k - 1 steps' worth are done).
+    if (doneSteps == static_cast<int>(stepCount)) done += comparison;
+    if (!stop.isCancelled())
+      context.setProgress(done / shares, "slicing " + (running.empty() ? std::string("") : running + "; ") +
+                                             std::to_string(doneSteps) + " of " + std::to_string(stepCount) +
+                                             " steps done");
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  for (std::thread& t : threads) t.join();
+  if (context.isCancelled()) return Error{ErrorCode::Cancelled, "slicing was cancelled", "slicing"};
+  for (std::size_t i = 0; i < tasks.size(); ++i)
+    if (errors[i] && errors[i]->code != ErrorCode::Cancelled) return *errors[i];
+  for (std::size_t i = 0; i < tasks.size(); ++i)
+    if (errors[i]) return *errors[i];
+  return core::Done{};
 }
 
 }  // namespace
@@ -209,28 +342,37 @@ core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const P
   return turns;
 }
 
-core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile& profile,
+core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfile& profile,
                                  const SliceJobOptions& options, const std::string& directory,
                                  core::JobContext& context) {
-  if (job.options.frame != core::PrintJobOptions::Frame::Machine)
+  if (input.options.frame != core::PrintJobOptions::Frame::Machine)
     return Error{ErrorCode::InvalidParameter, "slicing needs the job in the machine frame (as the machine holds it)",
                  "print job"};
-  if (job.steps.empty()) return Error{ErrorCode::InvalidParameter, "the job has no steps", "print job"};
+  if (input.steps.empty()) return Error{ErrorCode::InvalidParameter, "the job has no steps", "print job"};
   SlicedJob sliced;
   sliced.profile = profile;
   sliced.dialect = options.dialect.value_or(profile.dialect);
-  if (job.steps.size() > 1 && profile.platform == PlatformDrive::None)
+  if (input.steps.size() > 1 && profile.platform == PlatformDrive::None)
     return Error{ErrorCode::InvalidParameter,
                  "the printer '" + profile.name + "' cannot turn its platform (multidir.platform = none) but the job has " +
-                     std::to_string(job.steps.size()) +
+                     std::to_string(input.steps.size()) +
                      " steps: choose a profile with a rotary platform (firmware-axis or modbus)",
                  profile.path};
-  if (profile.platform == PlatformDrive::FirmwareAxis && job.machine.kind == core::MachineKind::TiltRotate &&
-      job.steps.size() > 1)
+  if (profile.platform == PlatformDrive::FirmwareAxis && input.machine.kind == core::MachineKind::TiltRotate &&
+      input.steps.size() > 1)
     return Error{ErrorCode::InvalidParameter,
                  "the printer turns its platform about one firmware axis, but the plan is for a 5-DOF robot arm: "
                  "decompose for a 4-DOF machine, or use a profile whose platform is driven over Modbus",
                  profile.path};
+
+  // Every step prints from its base plane up (its supports clipped there), and the part is placed where it
+  // fits the printer, or refused now rather than after the slicer ran (placement.h).
+  const core::Result<core::PrintJob> clipped = withSupportsOnTheirBasePlanes(input);
+  if (!clipped) return clipped.error();
+  const core::Result<Placement> placement = placeOnPlatform(*clipped, profile);
+  if (!placement) return placement.error();
+  const core::PrintJob& job = placement->job;
+  sliced.placementMm = placement->offsetMm;
 
   const core::Result<std::vector<TurnPlan>> turns = planTurns(job, profile);
   if (!turns) return turns.error();
@@ -253,14 +395,6 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile
         turn.toDegrees = -turn.toDegrees;
       }
   }
-  for (const TurnPlan& turn : sliced.turns)
-    if (turn.clearanceZMm > profile.maxPrintHeightMm)
-      return Error{ErrorCode::CheckFailed,
-                   "step " + std::to_string(turn.fromStep) + ": while the platform turns to the next step the part "
-                   "sweeps up to z " + fixed(turn.sweptTopZMm, 2) + " mm; with the margin the nozzle would have to "
-                   "rise to " + fixed(turn.clearanceZMm, 2) + " mm, above the printer's height (max_print_height " +
-                   fixed(profile.maxPrintHeightMm, 2) + " mm)",
-                   profile.path};
 
   std::error_code ec;
   fs::create_directories(directory, ec);
@@ -280,31 +414,33 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile
   const Eigen::Isometry3d toPrinter = machineToPrinter(profile);
   const std::string layerHeight = setting(profile, options, "layer_height", "0.3");
   const std::string endSequence = "; MULTIDIR END SEQUENCE\\n";
-  std::vector<StepGcode> gcodes;
+  const PrimeSettings prime = primeSettings(profile, options);
 
+  // Every slicing run the job needs (the steps, then the comparison), written out before any starts.
+  std::vector<SliceTask> tasks;
   for (std::size_t k = 0; k < n; ++k) {
-    if (context.isCancelled()) return Error{ErrorCode::Cancelled, "slicing was cancelled", "slicing"};
     const core::PrintJobStep& step = job.steps[k];
-    context.setProgress(static_cast<double>(k) / shares,
-                        "slicing step " + std::to_string(step.index) + " of " + std::to_string(n));
     const core::TriangleMesh solid = moved(joined(step.region, step.supports), toPrinter);
     const std::string meshPath = (work.path / stepName(step.index, ".stl")).string();
     if (core::Status s = core::saveMesh(solid, meshPath); !s) return s.error();
 
-    // Step 1 starts the printer; later steps print on plastic: no skirt, brim or purge, normal first layer.
+    // Step 1 starts the printer; later steps print on plastic: no skirt, brim or purge, normal first layer,
+    // and the filament pushed back where the previous step drew it back (the prime, written once that
+    // step's G-code says how far: kPrimeMarker).
     const bool first = k == 0;
     const bool last = k + 1 == n;
     std::vector<std::pair<std::string, std::string>> overlay;
-    const std::string startText = first ? profile.startGcode : profile.stepStartGcode;
+    const std::string startText = first ? profile.startGcode : profile.stepStartGcode + "\\n" + kPrimeMarker;
     overlay.push_back({"start_gcode", "; MULTIDIR START SEQUENCE\\n" + startText + "\\n; MULTIDIR STEP " +
                                           std::to_string(step.index)});
     std::string end = profile.endGcode;
     if (!last && profile.platform != PlatformDrive::None) {
+      // The slicer's end of print has drawn the filament back by retract_length: it stays so while the
+      // platform turns, and the next step primes it.
       const TurnPlan& turn = sliced.turns[k];
-      end = "G92 E0\\nG1 E" + fixed(-profile.retractLengthMm, 4) + " F2400 ; retract\\nG90\\nG1 Z" +
-            fixed(turn.clearanceZMm) + " F600 ; lift above the swept part\\nG1 X" + fixed(profile.park.x()) + " Y" +
-            fixed(profile.park.y()) + " F" + fixed(profile.travelSpeedMmPerS * 60.0, 0) +
-            " ; park: the platform turns next";
+      end = "G90\\nG1 Z" + fixed(turn.clearanceZMm) + " F600 ; lift above the swept part\\nG1 X" +
+            fixed(profile.park.x()) + " Y" + fixed(profile.park.y()) + " F" +
+            fixed(profile.travelSpeedMmPerS * 60.0, 0) + " ; park: the platform turns next";
     }
     overlay.push_back({"end_gcode", endSequence + end});
     overlay.push_back({"support_material", "0"});
@@ -318,46 +454,18 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile
     const std::string overlayPath = (work.path / stepName(step.index, ".ini")).string();
     if (core::Status s = writeOverlay(overlayPath, overlay); !s) return s.error();
 
-    SlicedStep out;
-    out.index = step.index;
-    out.gcodeFile = stepName(step.index, ".gcode");
-    out.baseZMm = step.lowestHeightMm + profile.platformZMm;
-    out.zOffsetMm = lowestZ(solid);
-    out.modelToPrinter = toPrinter * step.modelToFile;
-    SliceRequest request;
-    request.meshFile = meshPath;
-    request.configFiles = {profile.path, userOverlay, overlayPath};
-    request.zOffsetMm = out.zOffsetMm;
-    request.outputFile = (work.path / out.gcodeFile).string();
-    core::Result<SliceRun> run = engine.slice(request, context);
-    if (!run) return run.error();
-    out.sliceSeconds = run->seconds;
-
-    const core::Result<GcodeProgram> program = parseGcode(run->gcode, profile.rotaryAxis, out.gcodeFile);
-    if (!program) return program.error();
-    StepBounds bounds;
-    bounds.step = step.index;
-    bounds.baseZMm = out.baseZMm;
-    bounds.bedMin = profile.bedMin();
-    bounds.bedMax = profile.bedMax();
-    bounds.maxZMm = profile.maxPrintHeightMm;
-    const bool turnsAfter = !last && profile.platform != PlatformDrive::None;
-    const core::Result<StepTotals> totals =
-        checkStepProgram(*program, bounds, out.gcodeFile, turnsAfter ? &sliced.turns[k].clearanceZMm : nullptr);
-    if (!totals) return totals.error();
-    out.totals = *totals;
-    const core::Result<Estimate> estimate = parseEstimate(run->gcode, out.gcodeFile);
-    if (!estimate) return estimate.error();
-    out.estimate = *estimate;
-    sliced.total += out.estimate;
-    if (core::Status s = writeText((fs::path(directory) / out.gcodeFile).string(), run->gcode); !s) return s.error();
-    gcodes.push_back({step.index, std::move(run->gcode)});
-    sliced.steps.push_back(out);
+    SliceTask task;
+    task.request.meshFile = meshPath;
+    task.request.configFiles = {profile.path, userOverlay, overlayPath};
+    // The clipped supports reach no lower than the base plane, so the solid's lowest point is on it and the
+    // slicer's first layer lies one first_layer_height above it.
+    task.request.zOffsetMm = lowestZ(solid);
+    task.request.heightMm = heightOf(solid);
+    task.request.outputFile = (work.path / stepName(step.index, ".gcode")).string();
+    tasks.push_back(std::move(task));
   }
-
   if (options.fixedDirection) {
     // The whole model as it stands on the platform at rest (the first step's pose), the slicer's supports on.
-    context.setProgress(static_cast<double>(n) / shares, "slicing the fixed-direction print for comparison");
     core::TriangleMesh model;
     const Eigen::Isometry3d rest = job.steps.front().modelToFile;
     for (const core::PrintJobStep& step : job.steps)
@@ -372,35 +480,77 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile
                                                     {"end_gcode", endSequence + profile.endGcode}});
         !s)
       return s.error();
-    SliceRequest request;
-    request.meshFile = meshPath;
-    request.configFiles = {profile.path, userOverlay, overlayPath};
-    request.zOffsetMm = lowestZ(model);
-    request.outputFile = (work.path / "fixed-direction.gcode").string();
-    core::Result<SliceRun> run = engine.slice(request, context);
-    if (!run) return run.error();
-    sliced.fixedDirectionSliceSeconds = run->seconds;
-    const core::Result<Estimate> estimate = parseEstimate(run->gcode, "fixed-direction.gcode");
+    SliceTask task;
+    task.request.meshFile = meshPath;
+    task.request.configFiles = {profile.path, userOverlay, overlayPath};
+    task.request.zOffsetMm = lowestZ(model);
+    task.request.heightMm = heightOf(model);
+    task.request.outputFile = (work.path / "fixed-direction.gcode").string();
+    tasks.push_back(std::move(task));
+  }
+
+  if (core::Status s = runSideBySide(engine, tasks, n, shares, context); !s) return s.error();
+
+  // In printing order: each step's prime from how the previous one left the filament, then its checks.
+  std::vector<StepGcode> gcodes;
+  FilamentState filament;
+  for (std::size_t k = 0; k < n; ++k) {
+    const core::PrintJobStep& step = job.steps[k];
+    SliceRun& run = *tasks[k].run;
+    SlicedStep out;
+    out.index = step.index;
+    out.gcodeFile = stepName(step.index, ".gcode");
+    out.baseZMm = step.lowestHeightMm + profile.platformZMm;
+    out.zOffsetMm = tasks[k].request.zOffsetMm;
+    out.modelToPrinter = toPrinter * step.modelToFile;
+    out.sliceSeconds = run.seconds;
+    if (k > 0) {
+      const std::size_t at = run.gcode.find(kPrimeMarker);
+      if (at == std::string::npos)
+        return Error{ErrorCode::Internal, "the slicer's G-code lacks MultiDir's prime marker", out.gcodeFile};
+      std::string primeText = primeCommands(filament, prime);
+      if (!primeText.empty() && primeText.back() == '\n') primeText.pop_back();
+      run.gcode.replace(at, std::string(kPrimeMarker).size(), primeText);
+    }
+
+    const core::Result<GcodeProgram> program = parseGcode(run.gcode, profile.rotaryAxis, out.gcodeFile);
+    if (!program) return program.error();
+    StepBounds bounds = stepBounds(profile, prime, step.index, out.baseZMm);
+    const bool turnsAfter = k + 1 < n && profile.platform != PlatformDrive::None;
+    const core::Result<StepTotals> totals = checkStepProgram(
+        *program, bounds, out.gcodeFile, turnsAfter ? &sliced.turns[k].clearanceZMm : nullptr, filament);
+    if (!totals) return totals.error();
+    out.totals = *totals;
+    filament = totals->filamentAtEnd;
+    out.firstLayerZMm = firstLayerZ(*program, step.index);
+    const core::Result<Estimate> estimate = parseEstimate(run.gcode, out.gcodeFile);
+    if (!estimate) return estimate.error();
+    out.estimate = *estimate;
+    sliced.total += out.estimate;
+    sliced.steps.push_back(out);
+    gcodes.push_back({step.index, run.gcode});
+  }
+  for (std::size_t k = 0; k < n; ++k)
+    if (core::Status s = writeText((fs::path(directory) / sliced.steps[k].gcodeFile).string(), gcodes[k].text); !s)
+      return s.error();
+
+  if (options.fixedDirection) {
+    const SliceRun& run = *tasks.back().run;
+    sliced.fixedDirectionSliceSeconds = run.seconds;
+    const core::Result<Estimate> estimate = parseEstimate(run.gcode, "fixed-direction.gcode");
     if (!estimate) return estimate.error();
     sliced.fixedDirection = *estimate;
   }
 
   if (profile.platform == PlatformDrive::FirmwareAxis) {
     context.setProgress((shares - 1.0) / shares, "stitching one program");
-    const core::Result<std::string> stitched = stitchProgram(gcodes, sliced.turns, profile, sliced.dialect, sliced.total);
+    const core::Result<std::string> stitched =
+        stitchProgram(gcodes, sliced.turns, profile, sliced.dialect, sliced.total, prime);
     if (!stitched) return stitched.error();
     const core::Result<GcodeProgram> program = parseGcode(*stitched, profile.rotaryAxis, "job.gcode");
     if (!program) return program.error();
     std::vector<StepBounds> bounds;
-    for (const SlicedStep& s : sliced.steps) {
-      StepBounds b;
-      b.step = s.index;
-      b.baseZMm = s.baseZMm;
-      b.bedMin = profile.bedMin();
-      b.bedMax = profile.bedMax();
-      b.maxZMm = profile.maxPrintHeightMm;
-      bounds.push_back(b);
-    }
+    for (const SlicedStep& s : sliced.steps) bounds.push_back(stepBounds(profile, prime, s.index, s.baseZMm));
     std::vector<TurnClearance> clearances;
     for (const TurnPlan& t : sliced.turns) clearances.push_back({t.fromStep, t.clearanceZMm});
     const core::Result<std::vector<StepTotals>> checked = checkStitchedProgram(*program, bounds, clearances, "job.gcode");

@@ -28,6 +28,15 @@ std::size_t lineOf(const std::string& text, const std::string& marker, std::size
 
 }  // namespace
 
+std::string primeCommands(const FilamentState& state, const PrimeSettings& prime) {
+  if (state.firmwareRetracted) return "G11 ; prime: the firmware pushes back what its G10 drew back\n";
+  const double push = state.retractedMm + prime.restartExtraMm;
+  if (push <= 1e-6) return "; prime: the filament is not drawn back\n";
+  return "G92 E0\nG1 E" + fixed(push, 5) + " F" + fixed(prime.speedMmPerS * 60.0, 0) +
+         " ; prime: push back the " + fixed(state.retractedMm, 3) + " mm drawn back, plus retract_restart_extra\n"
+         "G92 E0\n";
+}
+
 std::string turnCommands(const PrinterProfile& profile, Dialect dialect, double degrees) {
   std::string lines = "M400 ; let the queued moves end\n";
   switch (dialect) {
@@ -45,7 +54,8 @@ std::string turnCommands(const PrinterProfile& profile, Dialect dialect, double 
 }
 
 core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, const std::vector<TurnPlan>& turns,
-                                        const PrinterProfile& profile, Dialect dialect, const Estimate& total) {
+                                        const PrinterProfile& profile, Dialect dialect, const Estimate& total,
+                                        const PrimeSettings& prime) {
   if (steps.empty()) return Error{ErrorCode::InvalidParameter, "no steps to stitch", "stitching"};
   if (turns.size() + 1 != steps.size())
     return Error{ErrorCode::InvalidParameter, "one platform turn is needed between two steps", "stitching"};
@@ -54,6 +64,7 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
   struct Parts {
     std::string prelude, body, end;
     Eigen::Vector2d firstXy = Eigen::Vector2d::Zero();
+    FilamentState atEnd;  // how the body leaves the filament, from a primed start
   };
   std::vector<Parts> parts;
   for (const StepGcode& step : steps) {
@@ -65,7 +76,7 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
                    "the G-code of step " + std::to_string(step.step) + " lacks MultiDir's markers ('" + stepMarker +
                        "', '" + endMarker + "'): was it sliced by MultiDir?",
                    "stitching"};
-    Parts p{step.text.substr(0, bodyAt), step.text.substr(bodyAt, endAt - bodyAt), step.text.substr(endAt), {}};
+    Parts p{step.text.substr(0, bodyAt), step.text.substr(bodyAt, endAt - bodyAt), step.text.substr(endAt), {}, {}};
     const core::Result<GcodeProgram> body = parseGcode(p.body, profile.rotaryAxis, "step " + std::to_string(step.step));
     if (!body) return body.error();
     bool found = false;
@@ -77,6 +88,7 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
       }
     if (!found)
       return Error{ErrorCode::InvalidParameter, "step " + std::to_string(step.step) + " never moves in XY", "stitching"};
+    p.atEnd = filamentAtEnd(*body);
     parts.push_back(std::move(p));
   }
 
@@ -87,7 +99,6 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
   else
     setup += "G92 " + profile.rotaryAxis + "0\n";
 
-  const double retract = profile.retractLengthMm;
   const std::string travel = fixed(profile.travelSpeedMmPerS * 60.0, 0);
   std::string out = parts.front().prelude + setup;
   for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -98,13 +109,21 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
     out += "; MULTIDIR TRANSITION " + std::to_string(steps[i].step) + "\n";
     out += "; turn the platform from " + fixed(turn.fromDegrees, 2) + " to " + fixed(turn.toDegrees, 2) +
            " degrees; the printed part sweeps up to z " + fixed(turn.sweptTopZMm, 2) + " mm\n";
-    out += "G92 E0\nG1 E" + fixed(-retract, 4) + " F2400 ; retract\n";
+    // The slicer's end of print has drawn the filament back already (by retract_length): only what is missing.
+    FilamentState filament = parts[i].atEnd;
+    const double missing = prime.retractLengthMm - filament.retractedMm;
+    if (!filament.firmwareRetracted && missing > 1e-6) {
+      out += "G92 E0\nG1 E" + fixed(-missing, 5) + " F" + fixed(prime.speedMmPerS * 60.0, 0) +
+             " ; retract to retract_length while the platform turns\n";
+      filament.retractedMm += missing;
+    }
     out += "G90\nG1 Z" + fixed(turn.clearanceZMm) + " F600 ; lift above the swept part\n";
     out += "G1 X" + fixed(profile.park.x()) + " Y" + fixed(profile.park.y()) + " F" + travel + " ; park\n";
     out += turnCommands(profile, dialect, turn.toDegrees);
     out += "G1 X" + fixed(next.x()) + " Y" + fixed(next.y()) + " F" + travel + " ; return above step " +
            std::to_string(steps[i + 1].step) + "'s first point\n";
-    out += "G92 E0\nG1 E" + fixed(retract, 4) + " F2400 ; unretract\nG92 E0 ; reset E\n";
+    out += primeCommands(filament, prime);
+    out += "G92 E0 ; reset E\n";
   }
   // The last step's end sequence, without its own estimate comments: the totals follow.
   std::string end = parts.back().end;

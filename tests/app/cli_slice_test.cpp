@@ -2,8 +2,12 @@
 // writes, and its errors and exit codes.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "support/cli_runner.h"
 #include "support/test_models.h"
@@ -73,4 +77,35 @@ TEST(CliSlice, MissingSlicerExitsWithTheCommandNamed) {
                             dir);
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.err.find("no-such-slicer --loglevel 1 --export-gcode"), std::string::npos) << run.err;
+}
+
+TEST(CliSlice, ProgressWrittenToAFileHasNoTerminalEscapes) {
+  // stderr is a file here, not a terminal: plain lines, no carriage returns or ANSI escapes.
+  const std::string dir = multidir::test::scratchDirectory("CliSlice.PlainProgress");
+  const CliRun run = runCli("slice " + quoted(smallKittenPlan(dir)) + " --printer robot-0.8 --no-comparison " +
+                                kCoarse + " -o " + quoted(dir + "/gcode"),
+                            dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(run.err.find('\r'), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find('\033'), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("% slicing"), std::string::npos) << run.err;
+}
+
+TEST(CliSlice, InterruptStopsEverySlicerAndLeavesNoWorkFolder) {
+  const std::string dir = multidir::test::scratchDirectory("CliSlice.Interrupt");
+  // A slicer that never ends on its own; each writes its process id.
+  const std::string fake = dir + "/slow-slicer.sh";
+  std::ofstream(fake) << "#!/bin/sh\necho $$ >> '" << dir << "/pids'\nexec sleep 60\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const CliRun run = runCli("slice " + quoted(smallKittenPlan(dir)) + " --printer robot-0.8 --slicer " + quoted(fake) +
+                                " -o " + quoted(dir + "/out"),
+                            dir, "timeout --preserve-status -s INT 4");
+  EXPECT_EQ(run.exitCode, 130) << run.err;
+  EXPECT_NE(run.err.find("interrupted"), std::string::npos) << run.err;
+  ASSERT_TRUE(fs::exists(dir + "/pids")) << "no slicer started before the interrupt";
+  for (const auto& entry : fs::directory_iterator(dir + "/out"))
+    EXPECT_NE(entry.path().filename().string().rfind(".slicing-", 0), 0u) << entry.path();
+  EXPECT_FALSE(fs::exists(dir + "/out/step-01.gcode"));
+  std::istringstream pids(readAll(dir + "/pids"));
+  for (long pid = 0; pids >> pid;) EXPECT_NE(::kill(static_cast<pid_t>(pid), 0), 0) << "slicer " << pid << " still runs";
 }

@@ -6,6 +6,7 @@
 
 #include "multidir/slicing/estimates.h"
 #include "multidir/slicing/gcode_program.h"
+#include "multidir/slicing/stitch.h"
 
 using namespace multidir;
 using namespace multidir::slicing;
@@ -118,6 +119,81 @@ TEST(GcodeChecks, LiftParkTurnReturnPasses) {
   const auto checked = checkStitchedProgram(p, {bounds(1, 0), bounds(2, 5)}, {{1, 40.0}}, "job.gcode");
   ASSERT_TRUE(checked.ok()) << checked.error().describe();
   EXPECT_EQ(checked->size(), 2u);
+}
+
+TEST(GcodeChecks, ExtrudingWhileRetractedIsRefused) {
+  // The filament is drawn back 1 mm for a travel (E 1 to 0) and never pushed again: the next line starts
+  // without plastic.
+  const GcodeProgram p = parsed("M82\n; MULTIDIR STEP 1\nG1 X100 Y100 Z0.2\nG1 X110 E1\nG1 E0 F2400\nG92 E0\n"
+                                "G1 X120 Y120\nG1 X130 E0.5\n");
+  const auto checked = checkStepProgram(p, bounds(1, 0.0), "step-01.gcode");
+  ASSERT_FALSE(checked.ok());
+  EXPECT_EQ(checked.error().code, core::ErrorCode::CheckFailed);
+  EXPECT_EQ(checked.error().where, "step-01.gcode");
+  EXPECT_NE(checked.error().message.find("step 1, line 8"), std::string::npos) << checked.error().message;
+  EXPECT_NE(checked.error().message.find("retracted by 1.00 mm"), std::string::npos) << checked.error().message;
+}
+
+TEST(GcodeChecks, RetractionPushedBackBeforeTheNextExtrusionPassesInAbsoluteAndRelativeE) {
+  const GcodeProgram absolute = parsed("M82\n; MULTIDIR STEP 1\nG1 X100 Y100 Z0.2\nG1 X110 E1\nG1 E0\nG92 E0\n"
+                                       "G1 X120 Y120\nG1 E1\nG92 E0\nG1 X130 E0.5\n");
+  const GcodeProgram relative = parsed("M83\n; MULTIDIR STEP 1\nG1 X100 Y100 Z0.2\nG1 X110 E1\nG1 E-2\n"
+                                       "G1 X120 Y120\nG1 E2\nG1 X130 E0.5\n");
+  for (const GcodeProgram* p : {&absolute, &relative}) {
+    const auto checked = checkStepProgram(*p, bounds(1, 0.0), "step-01.gcode");
+    ASSERT_TRUE(checked.ok()) << checked.error().describe();
+    EXPECT_NEAR(checked->filamentAtEnd.retractedMm, 0.0, 1e-9);
+  }
+}
+
+TEST(GcodeChecks, FirmwareRetractionWithoutUnretractIsRefused) {
+  const GcodeProgram p = parsed("; MULTIDIR STEP 1\nG1 X100 Y100 Z0.2\nG1 X110 E1\nG10\nG1 X120 Y120\nG1 X130 E2\n");
+  const auto checked = checkStepProgram(p, bounds(1, 0.0), "step-01.gcode");
+  ASSERT_FALSE(checked.ok());
+  EXPECT_NE(checked.error().message.find("line 6"), std::string::npos) << checked.error().message;
+  EXPECT_NE(checked.error().message.find("G10 without G11"), std::string::npos) << checked.error().message;
+  const GcodeProgram primed = parsed("; MULTIDIR STEP 1\nG1 X100 Y100 Z0.2\nG1 X110 E1\nG10\nG1 X120 Y120\nG11\n"
+                                     "G1 X130 E2\n");
+  EXPECT_TRUE(checkStepProgram(primed, bounds(1, 0.0), "step-01.gcode").ok());
+}
+
+TEST(GcodeChecks, AStepThatStartsRetractedMustPrimeBeforeItsFirstExtrusion) {
+  // Step 1 ended with the filament drawn back 3 mm (its program's end state carries over to step 2's program).
+  FilamentState drawnBack;
+  drawnBack.retractedMm = 3.0;
+  const GcodeProgram unprimed = parsed("G90\nG92 E0\n; MULTIDIR STEP 2\nG1 X100 Y100 Z10.2\nG1 X110 E1\n");
+  const auto refused = checkStepProgram(unprimed, bounds(2, 10.0), "step-02.gcode", nullptr, drawnBack);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("step 2, line 5"), std::string::npos) << refused.error().message;
+  EXPECT_NE(refused.error().message.find("retracted by 3.00 mm"), std::string::npos) << refused.error().message;
+  const GcodeProgram primed =
+      parsed("G90\nG92 E0\nG1 E3.2 F2400\nG92 E0\n; MULTIDIR STEP 2\nG1 X100 Y100 Z10.2\nG1 X110 E1\n");
+  EXPECT_TRUE(checkStepProgram(primed, bounds(2, 10.0), "step-02.gcode", nullptr, drawnBack).ok());
+}
+
+TEST(GcodeChecks, StitchedProgramThatTurnsWithoutPrimingAgainIsRefused) {
+  const GcodeProgram p = parsed(
+      "; MULTIDIR STEP 1\nG1 X100 Y100 Z0.2\nG1 X110 E1\n; MULTIDIR TRANSITION 1\nG92 E0\nG1 E-2\nG1 Z50\nG1 X5 Y5\n"
+      "G1 A30\nG1 X100 Y100\nG92 E0\nG1 E1\nG92 E0\n; MULTIDIR STEP 2\nG1 Z5.2\nG1 X110 E2\n");
+  const auto checked = checkStitchedProgram(p, {bounds(1, 0), bounds(2, 5)}, {{1, 40.0}}, "job.gcode");
+  ASSERT_FALSE(checked.ok());
+  EXPECT_EQ(checked.error().where, "job.gcode");
+  EXPECT_NE(checked.error().message.find("step 2, line 16"), std::string::npos) << checked.error().message;
+  EXPECT_NE(checked.error().message.find("retracted by 1.00 mm"), std::string::npos) << checked.error().message;
+}
+
+TEST(Stitch, PrimeCommandsPushBackWhatIsDrawnBackPlusTheRestartExtra) {
+  PrimeSettings prime;
+  prime.restartExtraMm = 0.2;
+  prime.speedMmPerS = 30.0;
+  FilamentState state;
+  state.retractedMm = 1.5;
+  const GcodeProgram p = parsed("M82\n" + primeCommands(state, prime));
+  double pushed = 0.0;
+  for (const GcodeMove& m : p.moves) pushed += m.filamentMm;
+  EXPECT_NEAR(pushed, 1.7, 1e-9);
+  state.firmwareRetracted = true;
+  EXPECT_EQ(primeCommands(state, prime).rfind("G11", 0), 0u);
 }
 
 TEST(Estimates, PrusaSlicerCommentsGiveTimeAndFilament) {

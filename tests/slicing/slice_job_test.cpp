@@ -9,6 +9,9 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "multidir/core/samples/samples.h"
@@ -219,6 +222,49 @@ TEST(SliceJob, CancellingWhileTheSlicerRunsStopsItAndKeepsNoGcode) {
     EXPECT_EQ(entry.path().filename().string().rfind(".slicing-", 0), std::string::npos) << entry.path();
 }
 
+TEST(SliceJob, CancellingStopsEverySlicerRunningSideBySide) {
+  // Two steps, sliced side by side: one cancel stops both slicers at once.
+  core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  core::PrintJobStep second = job.steps.front();
+  second.index = 2;
+  second.regionFile = "step-02-region.stl";
+  for (Vec3& v : second.region.vertices) v.z() += 10.0;
+  second.lowestHeightMm = 10.0;
+  job.steps.push_back(second);
+  const std::string dir = scratch("cancel-side-by-side");
+  const std::string pidFile = dir + "/slicer.pids";
+  const std::string fake = fakeSlicer(dir + "/slow-slicer.sh", "echo $$ >> '" + pidFile + "'\nexec sleep 60\n");
+  SliceJobOptions options;
+  options.slicerExecutable = fake;
+  options.fixedDirection = false;
+  const auto runningSlicers = [&pidFile] {
+    std::ifstream in(pidFile);
+    int n = 0;
+    for (long pid = 0; in >> pid;) ++n;
+    return n;
+  };
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const int expected = static_cast<int>(std::min<std::size_t>(2, cores));
+  core::JobContext context;
+  std::chrono::steady_clock::time_point cancelledAt;
+  std::thread canceller([&, context]() mutable {
+    for (int i = 0; i < 400 && runningSlicers() < expected; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    cancelledAt = std::chrono::steady_clock::now();
+    context.cancel();
+  });
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  const auto returnedAt = std::chrono::steady_clock::now();
+  canceller.join();
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::Cancelled) << sliced.error().describe();
+  EXPECT_EQ(runningSlicers(), expected) << "the slicers did not start side by side";
+  EXPECT_LT(std::chrono::duration<double>(returnedAt - cancelledAt).count(), 0.5);
+  std::ifstream pids(pidFile);
+  for (long pid = 0; pids >> pid;) EXPECT_NE(::kill(static_cast<pid_t>(pid), 0), 0) << "slicer " << pid << " still runs";
+  for (const auto& entry : fs::directory_iterator(dir + "/out"))
+    EXPECT_NE(entry.path().filename().string().rfind(".slicing-", 0), 0u) << entry.path();
+}
+
 TEST(SliceJob, ProgressNamesTheStepBeingSliced) {
   // Three steps, the comparison and stitching: five shares, as sliceJob reports them.
   EXPECT_EQ(sliceStageAt(0.0, 3, true).kind, SliceStage::Kind::Step);
@@ -294,9 +340,10 @@ TEST(SliceJob, PlanWithSupportsExtrudesInsideTheSupportMeshes) {
   const core::PrintJobStep& step = job.steps[withSupports];
   core::TriangleMesh supports = step.supports;
   core::TriangleMesh region = step.region;
-  const Vec3 shift(profile.platformCenter.x(), profile.platformCenter.y(), profile.platformZMm);
-  for (Vec3& v : supports.vertices) v += shift;
-  for (Vec3& v : region.vertices) v += shift;
+  // Where the step printed them: its pose in the printer (the part placed on the bed) after undoing the job's.
+  const Eigen::Isometry3d toPrinter = sliced->steps[withSupports].modelToPrinter * step.modelToFile.inverse();
+  for (Vec3& v : supports.vertices) v = toPrinter * v;
+  for (Vec3& v : region.vertices) v = toPrinter * v;
   const std::vector<GcodeMove> moves = test::extrusionsOf(dir + "/" + sliced->steps[withSupports].gcodeFile);
   int inSupports = 0;
   int sampled = 0;
@@ -336,17 +383,174 @@ TEST(SliceJob, FailingSlicerGivesItsExitCodeAndLastOutput) {
   EXPECT_NE(sliced.error().message.find("the slicer could not do it"), std::string::npos);
 }
 
-TEST(SliceJob, BedTooSmallForThePartIsRefusedNamingStepAndLine) {
+TEST(SliceJob, APartTooBigForTheBedIsRefusedBeforeSlicing) {
+  // 40 mm on a 30 mm bed: refused before the slicer runs (it would leave a mark), saying by how much.
   const core::PrintJob job = oneBoxJob(Vec3(-20, -20, 0), Vec3(20, 20, 3));
   const std::string dir = scratch("smallbed");
   const std::string ini = dir + "/small.ini";
   std::ofstream(ini) << "bed_shape = 0x0,30x0,30x30,0x30\nmax_print_height = 100\nskirts = 0\n";
+  const std::string mark = dir + "/the-slicer-ran";
   SliceJobOptions options = coarseOptions(0.3);
+  options.slicerExecutable = fakeSlicer(dir + "/marking-slicer.sh", "touch '" + mark + "'\nexit 1\n");
   core::JobContext context;
   const auto sliced = sliceJob(job, profileNamed(ini), options, dir + "/out", context);
   ASSERT_FALSE(sliced.ok());
   EXPECT_EQ(sliced.error().code, core::ErrorCode::CheckFailed);
-  EXPECT_NE(sliced.error().message.find("step 1, line "), std::string::npos) << sliced.error().message;
-  EXPECT_NE(sliced.error().message.find("outside the printer's bed"), std::string::npos);
+  const std::string& m = sliced.error().message;
+  EXPECT_NE(m.find("step 1 reaches 5.0 mm past the bed's -X side"), std::string::npos) << m;
+  EXPECT_NE(m.find("5.0 mm past the bed's +Y side"), std::string::npos) << m;
+  EXPECT_NE(m.find("scale the model by 0.75 or less"), std::string::npos) << m;
+  EXPECT_NE(m.find("at least 40 x 40 mm"), std::string::npos) << m;
+  EXPECT_FALSE(fs::exists(mark)) << "the slicer ran for a part that cannot fit";
   EXPECT_FALSE(fs::exists(dir + "/out/step-01.gcode"));
+}
+
+namespace {
+
+// A plan sliced once per test process, read by several tests: the job, what was sliced, its folder, the
+// progress it reported.
+struct SlicedPlan {
+  core::PrintJob job;
+  core::Result<SlicedJob> sliced = core::Error{core::ErrorCode::Internal, "not sliced", "test"};
+  std::string dir;
+  std::vector<std::pair<double, std::string>> progress;
+  double layerHeightMm = 0.0;
+};
+
+SlicedPlan slicedPlan(const core::LoadedPlan& plan, const std::string& profile, double layerHeightMm,
+                      const std::string& name) {
+  SlicedPlan out;
+  out.job = test::machineJob(plan);
+  out.layerHeightMm = layerHeightMm;
+  out.dir = test::scratchDirectory("slice_job.shared." + name);
+  SliceJobOptions options = coarseOptions(layerHeightMm);
+  std::mutex mutex;
+  core::JobContext context([&](double fraction, const std::string& phase) {
+    std::lock_guard<std::mutex> lock(mutex);
+    out.progress.emplace_back(fraction, phase);
+  });
+  out.sliced = sliceJob(out.job, profileNamed(profile), options, out.dir, context);
+  return out;
+}
+
+// The bunny on the paper's robot arm (5-DOF), at its 0.4 mm layers.
+const SlicedPlan& bunnyOnTheRobot() {
+  static const SlicedPlan plan = [] {
+    core::MachineSpec machine;
+    machine.kind = core::MachineKind::TiltRotate;
+    machine.up = Vec3::UnitY();
+    return slicedPlan(test::plannedInMemory(test::loadSharedModel("bunny.off"), machine, "bunny", 0.5), "robot-0.8",
+                      0.4, "bunny-robot");
+  }();
+  return plan;
+}
+
+// The kitten on the Klipper printer's rotary axis (4-DOF, one stitched program), at 0.2 mm layers.
+const SlicedPlan& kittenOnTheRotaryAxis() {
+  static const SlicedPlan plan = [] {
+    return slicedPlan(test::plannedInMemory(test::loadSharedModel("kitten.off"), rotary(Vec3::UnitY()), "kitten", 0.4),
+                      "klipper-rotary", 0.2, "kitten-klipper");
+  }();
+  return plan;
+}
+
+// The z of each step's first extrusion after its marker, read from a program.
+std::map<int, double> firstLayerZ(const std::string& path) {
+  std::map<int, double> first;
+  for (const GcodeMove& m : test::extrusionsOf(path))
+    if (m.step > 0 && !first.count(m.step)) first[m.step] = std::min(m.from.z(), m.to.z());
+  return first;
+}
+
+// How far the filament is drawn back at each step's first extrusion after its marker, the programs played one
+// after another on one printer from a primed start.
+std::map<int, double> drawnBackAtFirstExtrusion(const std::vector<std::string>& paths) {
+  std::map<int, double> at;
+  FilamentState filament;
+  for (const std::string& path : paths) {
+    const core::Result<GcodeProgram> program = parseGcode(test::readFile(path));
+    if (!program) throw std::runtime_error(program.error().describe());
+    for (const GcodeMove& m : program->moves) {
+      if (m.step > 0 && m.extrudes() && !at.count(m.step))
+        at[m.step] = filament.firmwareRetracted ? 1e9 : filament.retractedMm;
+      advance(filament, m);
+    }
+  }
+  return at;
+}
+
+bool supportsReachBelowTheirBasePlane(const core::PrintJob& job) {
+  for (std::size_t k = 1; k < job.steps.size(); ++k)
+    for (const Vec3& v : job.steps[k].supports.vertices)
+      if (v.z() < job.steps[k].lowestHeightMm - 0.05) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(SliceJob, LaterStepsStartOneLayerAboveTheirBasePlane) {
+  // Their supports may reach below the base plane (they continue in the step below): clipped there, they no
+  // longer pull the first layer down to a sliver over the plastic already printed.
+  for (const SlicedPlan* plan : {&bunnyOnTheRobot(), &kittenOnTheRotaryAxis()}) {
+    ASSERT_TRUE(plan->sliced.ok()) << plan->sliced.error().describe();
+    ASSERT_GT(plan->sliced->steps.size(), 1u);
+    for (const SlicedStep& step : plan->sliced->steps) {
+      const std::map<int, double> first = firstLayerZ(plan->dir + "/" + step.gcodeFile);
+      ASSERT_TRUE(first.count(step.index)) << step.gcodeFile;
+      EXPECT_NEAR(first.at(step.index) - step.baseZMm, plan->layerHeightMm, 0.005) << plan->dir << " " << step.gcodeFile;
+    }
+  }
+  EXPECT_TRUE(supportsReachBelowTheirBasePlane(bunnyOnTheRobot().job) ||
+              supportsReachBelowTheirBasePlane(kittenOnTheRotaryAxis().job))
+      << "neither plan has supports below a base plane: the test no longer covers the clip";
+}
+
+TEST(SliceJob, EveryStepIsPrimedBeforeItsFirstExtrusion) {
+  // Each step's program starts where the previous one left the filament (drawn back for the turn).
+  for (const SlicedPlan* plan : {&bunnyOnTheRobot(), &kittenOnTheRotaryAxis()}) {
+    ASSERT_TRUE(plan->sliced.ok()) << plan->sliced.error().describe();
+    std::vector<std::string> files;
+    for (const SlicedStep& step : plan->sliced->steps) files.push_back(plan->dir + "/" + step.gcodeFile);
+    for (const auto& [step, drawnBack] : drawnBackAtFirstExtrusion(files))
+      EXPECT_LE(drawnBack, 0.01) << plan->dir << ": step " << step << "'s program";
+    if (plan->sliced->stitchedFile.empty()) continue;
+    for (const auto& [step, drawnBack] : drawnBackAtFirstExtrusion({plan->dir + "/" + plan->sliced->stitchedFile}))
+      EXPECT_LE(drawnBack, 0.01) << plan->dir << ": step " << step << " in " << plan->sliced->stitchedFile;
+  }
+}
+
+TEST(SliceJob, ProgressMovesWhileTheSlicersRun) {
+  // Not one report per step: the slicers' own stages move the progress inside a step's share.
+  const SlicedPlan& plan = bunnyOnTheRobot();
+  ASSERT_TRUE(plan.sliced.ok()) << plan.sliced.error().describe();
+  const double n = static_cast<double>(plan.sliced->steps.size());
+  const double firstStepDone = 1.0 / (n + 1.0);  // no comparison: one share per step and one for the rest
+  int insideTheFirstShare = 0;
+  bool namesAPercent = false;
+  for (const auto& [fraction, phase] : plan.progress) {
+    if (fraction > 0.0 && fraction < firstStepDone) ++insideTheFirstShare;
+    namesAPercent = namesAPercent || phase.find(" %)") != std::string::npos;
+  }
+  EXPECT_GE(insideTheFirstShare, 2);
+  EXPECT_TRUE(namesAPercent);
+}
+
+TEST(SliceJob, ThePlacedPartIsWhatThePrintJobFileDescribes) {
+  // One placement for every step: print-job.json's poses and step meshes are those the G-code was sliced from.
+  const SlicedPlan& plan = kittenOnTheRotaryAxis();
+  ASSERT_TRUE(plan.sliced.ok()) << plan.sliced.error().describe();
+  const nlohmann::json written = nlohmann::json::parse(test::readFile(plan.dir + "/print-job.json"));
+  const PrinterProfile& profile = plan.sliced->profile;
+  for (std::size_t k = 0; k < plan.sliced->steps.size(); ++k) {
+    const SlicedStep& step = plan.sliced->steps[k];
+    const nlohmann::json& m = written["steps"][k]["modelToFile"];
+    Eigen::Matrix4d fromFile = Eigen::Matrix4d::Identity();
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) fromFile(r, c) = m[r][c].get<double>();
+    Eigen::Isometry3d toPrinter = Eigen::Isometry3d::Identity();
+    toPrinter.translation() = Vec3(profile.platformCenter.x(), profile.platformCenter.y(), profile.platformZMm);
+    EXPECT_LT(((toPrinter.matrix() * fromFile) - step.modelToPrinter.matrix()).cwiseAbs().maxCoeff(), 1e-6)
+        << "step " << step.index;
+    EXPECT_NEAR(written["steps"][k]["lowestHeightMm"].get<double>() + profile.platformZMm, step.baseZMm, 1e-6);
+  }
 }

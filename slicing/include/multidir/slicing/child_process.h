@@ -1,6 +1,7 @@
 #pragma once
 // Runs another program (the slicer) as a child process: posix_spawn, its stdout and stderr captured through
 // one pipe, cancellable from any thread through the JobContext (the child is sent SIGTERM, then SIGKILL).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,11 @@ std::string findExecutable(const std::string& program);
 // A non-zero exit is not an error here (the caller decides), only a program that cannot be started.
 // Errors: FileNotFound (argv[0] is not an executable on PATH; the message names the command),
 // ExternalToolFailed (the process could not be started), Cancelled, InvalidParameter (empty argv).
-// Thread-safe: each call owns its child.
-core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context);
+// `onOutput`, when given, gets each piece of output as it arrives (on the calling thread), and an empty piece
+// about every 50 ms while the program is quiet, e.g. to follow its own progress lines or the file it writes. Thread-safe: each call owns its child.
+// `environment`: NAME=VALUE entries that replace or add to the calling process' environment for the child.
+core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context,
+                                          const std::function<void(const std::string& piece)>& onOutput = {},
+                                          const std::vector<std::string>& environment = {});
 
 }  // namespace multidir::slicing

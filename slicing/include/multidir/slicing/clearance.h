@@ -13,6 +13,11 @@ namespace multidir::slicing {
 // Empty `points`: -infinity.
 double sweptTopZ(const std::vector<core::Vec3>& points, const core::Vec3& axisUnit, double turnRadians);
 
+// The same along any unit `direction`: the largest direction . R(t) q over the arc (sweptTopZ is direction +Z).
+// With -direction it gives the smallest, negated: the swept part's extent on the bed, side by side.
+double sweptMax(const std::vector<core::Vec3>& points, const core::Vec3& axisUnit, double turnRadians,
+                const core::Vec3& direction);
+
 // A bound for any motion that turns the part about the origin (a robot arm's tilt and azimuth): no point
 // rises above its distance from the origin. Empty `points`: -infinity.
 double anyTurnTopZ(const std::vector<core::Vec3>& points);

@@ -11,6 +11,23 @@
 
 namespace multidir::slicing {
 
+// How far the filament is drawn back from the nozzle, as a program's E moves leave it. A retraction (E going
+// back) adds to retractedMm; pushing filament first takes it back to 0 (unretract, prime), only then does it
+// extrude; a push beyond that is extrusion (or, without an XY move, a prime's extra). G10 / G11 draw it back and
+// push it again by the firmware's own length. G92 E only renames the position: the filament stays where it is.
+// Positions are tracked through M82 / M83 and G90 / G91 by parseGcode (GcodeMove::filamentMm).
+struct FilamentState {
+  double retractedMm = 0.0;
+  bool firmwareRetracted = false;
+  bool retracted(double toleranceMm) const { return firmwareRetracted || retractedMm > toleranceMm; }
+};
+
+// The state after `move`.
+void advance(FilamentState& state, const GcodeMove& move);
+
+// The state at the end of `program`, from `start`.
+FilamentState filamentAtEnd(const GcodeProgram& program, FilamentState start = {});
+
 // Where step k may put plastic (printer coordinates, mm).
 struct StepBounds {
   int step = 1;
@@ -19,6 +36,9 @@ struct StepBounds {
   Eigen::Vector2d bedMax = Eigen::Vector2d::Zero();
   double maxZMm = 0.0;     // the printer's height
   double toleranceMm = 1e-3;
+  // Filament still drawn back at an extruding move up to this much (mm) is accepted: rounding of E to five
+  // decimals, and a profile's negative retract_restart_extra (it unretracts less on purpose).
+  double retractToleranceMm = 0.01;
 };
 
 // The platform's turn from step `fromStep` to the next, and the nozzle height it needs.
@@ -34,18 +54,22 @@ struct StepTotals {
   double filamentMm = 0.0;   // pushed while moving in XY
   double lowestZMm = 0.0;    // of its extrusions
   double highestZMm = 0.0;
+  FilamentState filamentAtEnd;  // as the program leaves the filament (the next program starts with it)
 };
 
 // One step's own program (step-NN.gcode): every extrusion of the step (the start sequence's purge included)
 // lies inside the printer's volume, and those after the "; MULTIDIR STEP k" marker on or above the base
-// plane. With `endClearanceZMm` (a Modbus platform turns after this step) the program must end with the
-// nozzle at or above it. Errors: CheckFailed; also when the step extrudes nothing.
+// plane; no extrusion (the purge's included) happens with the filament drawn back (FilamentState, from
+// `start`: how the previous step's program left it on the same printer). With `endClearanceZMm` (a Modbus
+// platform turns after this step) the program must end with the nozzle at or above it. Errors: CheckFailed;
+// also when the step extrudes nothing.
 core::Result<StepTotals> checkStepProgram(const GcodeProgram& program, const StepBounds& bounds,
-                                          const std::string& fileName, const double* endClearanceZMm = nullptr);
+                                          const std::string& fileName, const double* endClearanceZMm = nullptr,
+                                          FilamentState start = {});
 
 // A stitched program (job.gcode): each step's section checked as above; the platform turns only inside a
 // transition section, by a move that moves nothing else, with the nozzle at or above that turn's clearance;
-// inside a transition nothing is extruded and the nozzle moves in XY only at or above the clearance (retract,
+// no extrusion happens with the filament drawn back (from a primed start); inside a transition nothing is extruded and the nozzle moves in XY only at or above the clearance (retract,
 // lift, park, turn, return, unretract). `bounds` has one entry per step in order, `turns` one per transition.
 // Errors: CheckFailed.
 core::Result<std::vector<StepTotals>> checkStitchedProgram(const GcodeProgram& program,

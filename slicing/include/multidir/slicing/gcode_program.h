@@ -1,7 +1,8 @@
 #pragma once
 // G-code read back as moves, so MultiDir can check what a slicer wrote instead of trusting it. Understands
 // what PrusaSlicer and MultiDir's stitching write: G0/G1 (X Y Z E F and the rotary axis), G90/G91, M82/M83,
-// G92, G28, Klipper's MANUAL_STEPPER ... MOVE=, and MultiDir's section markers (below). Other commands are
+// G92, G28, G10/G11 without parameters (firmware retraction), Klipper's MANUAL_STEPPER ... MOVE=, and MultiDir's
+// section markers (below). Other commands are
 // kept out of the moves; their lines still count.
 //
 // Section markers (comments MultiDir writes into a stitched program):
@@ -26,6 +27,10 @@ struct GcodeMove {
   double rotaryToDegrees = 0.0;
   int step = 0;                 // the section it lies in: the step (from 1), 0 before any marker
   bool inTransition = false;    // inside a "; MULTIDIR TRANSITION" section (step is the step it leaves)
+  // G10 / G11 without parameters: the firmware retracts / unretracts the filament by its own length (a move
+  // that changes nothing else). G10 with P or L words sets offsets (RepRapFirmware) and is no move.
+  enum class FirmwareRetraction { None, Retract, Unretract };
+  FirmwareRetraction firmwareRetraction = FirmwareRetraction::None;
 
   bool movesXy() const { return (to.head<2>() - from.head<2>()).squaredNorm() > 1e-12; }
   bool movesZ() const { return std::abs(to.z() - from.z()) > 1e-9; }

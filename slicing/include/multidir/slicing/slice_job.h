@@ -1,7 +1,9 @@
 #pragma once
 // From print job to machine code: every step of a print job sliced by a real slicer (its region and its
-// projected supports as one solid, posed as the machine holds it, layers starting on its base plane), the
-// G-code checked by parsing it, the stitched program for a firmware-axis platform, and the estimates.
+// projected supports clipped to its base plane as one solid, posed as the machine holds it, layers starting on
+// its base plane), the part placed where it fits the printer first, the steps sliced side by side, the G-code
+// checked by parsing it, every step after the first primed, the stitched program for a firmware-axis platform,
+// and the estimates.
 //
 // Written into the output folder (docs/plan-format.md, "slicing" in print-job.json):
 //   step-01-region.stl ...   the print job (core::writePrintJob)
@@ -37,7 +39,8 @@ struct SlicedStep {
   Estimate estimate;
   StepTotals totals;       // from the checks
   double baseZMm = 0.0;    // printer z of the step's base plane
-  double zOffsetMm = 0.0;  // given to the slicer: where its layers start from
+  double zOffsetMm = 0.0;  // given to the slicer: where its layers start from (the base plane)
+  double firstLayerZMm = 0.0;  // printer z of the step's first extrusion after its marker (its first layer)
   double sliceSeconds = 0.0;
   // Takes the plan's model coordinates to the printer's, as this step prints (the machine's pose of the part,
   // then the profile's platform centre and height): its inverse lays the step's G-code over its region.
@@ -54,6 +57,9 @@ struct SlicedJob {
   std::optional<Estimate> fixedDirection;  // the whole model along up, the slicer's supports on
   double fixedDirectionSliceSeconds = 0.0;
   std::string stitchedFile;       // "job.gcode", empty when the platform is not a firmware axis
+  // Where the part was placed on the platform (placeOnPlatform): the offset in the rest pose's XY, mm. The
+  // steps' poses (modelToPrinter, the written print job) include it.
+  Eigen::Vector3d placementMm = Eigen::Vector3d::Zero();
 };
 
 // The clearance of every turn between two steps (printer z): the printed regions and supports of steps 1..k
@@ -62,14 +68,18 @@ struct SlicedJob {
 // differ by a turn about the axis.
 core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile);
 
-// Slices `job` (frame Machine) for `profile` into `directory` (created when missing). Progress: one share per
-// step, one for the fixed-direction print, one for stitching; cancellation is checked while the slicer runs
-// (about every 50 ms) and between steps. A G-code that fails a check is not kept (no step-NN.gcode, no
-// job.gcode) and the job is refused.
+// Slices `job` (frame Machine) for `profile` into `directory` (created when missing). First every step's
+// supports are clipped to its base plane and the part is placed where it fits (placeOnPlatform, which refuses
+// a part that cannot fit before any slicer runs); the job written and sliced is the placed one. The steps and
+// the fixed-direction print are then sliced side by side, one slicer per core, and checked in printing order:
+// each step after the first is primed by what the previous one left drawn back (plus retract_restart_extra).
+// Progress: one share per step and one for the fixed-direction print, each filled as its slicer goes (their
+// sum), one for stitching; the phase names the runs under way. Cancellation reaches every running slicer
+// within about 50 ms. A G-code that fails a check is not kept (no step-NN.gcode, no job.gcode) and the job is
+// refused; the work folder (.slicing-PID) is removed however the job ends.
 // Errors: InvalidParameter (the job is in the model frame, the printer cannot turn its platform and the job has
 // several steps, a firmware axis asked to print a 5-DOF plan), FileNotFound / ExternalToolFailed (the slicer),
-// CheckFailed (a check, naming step, line and reason; also a clearance above the printer's height),
-// WriteFailed, Cancelled.
+// CheckFailed (the part does not fit; a check, naming step, line and reason), WriteFailed, Cancelled.
 core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile& profile,
                                  const SliceJobOptions& options, const std::string& directory,
                                  core::JobContext& context);
@@ -81,7 +91,8 @@ core::Result<SlicedJob> slicePlan(const core::LoadedPlan& plan, const PrinterPro
                                   core::JobContext& context);
 
 // What sliceJob is doing when its progress reads `fraction` (its shares: one per step, one for the
-// fixed-direction print when asked for, one for stitching), so a caller can say it in its own words.
+// fixed-direction print when asked for, one for stitching), so a caller can say it in its own words. Steps are
+// sliced side by side, so "step k" is the number of steps' worth of slicing done, plus one.
 struct SliceStage {
   enum class Kind { Step, FixedDirection, Stitching, Done };
   Kind kind = Kind::Step;

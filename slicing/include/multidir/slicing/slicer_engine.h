@@ -1,6 +1,7 @@
 #pragma once
 // One small interface to a slicer engine, so another one (CuraEngine) can be added beside PrusaSlicer.
 // An engine turns mesh files into one G-code file with the settings of one or more config files.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ struct SliceRequest {
   // XY stays where the mesh is (no arranging or centring).
   double zOffsetMm = 0.0;
   std::string outputFile;  // the G-code, written by the engine
+  // Called (on the slicing thread) with the fraction of the run done so far, in [0, 1], as the engine says it.
+  std::function<void(double fraction)> progress;
+  double heightMm = 0.0;  // the mesh's height, for progress while the G-code is written (0: unknown)
 };
 
 struct SliceRun {
@@ -35,8 +39,10 @@ class SlicerEngine {
   virtual core::Result<SliceRun> slice(const SliceRequest& request, core::JobContext& context) const = 0;
 };
 
-// PrusaSlicer (2.5 and later) run headless: prusa-slicer --export-gcode --load ... --dont-arrange
-// --z-offset H -o OUT MESH.
+// PrusaSlicer (2.5 and later) run headless: prusa-slicer --loglevel 1 --export-gcode --load ... --dont-arrange
+// --z-offset H -o OUT MESH. Progress: its own status lines ("70 => Infilling layers", percent of its stages)
+// while it slices, then while it writes the G-code (its last and often longest stage, from 90 %) the height the
+// G-code it is writing has reached, over the mesh's height.
 class PrusaSlicerEngine : public SlicerEngine {
  public:
   explicit PrusaSlicerEngine(std::string executable = "prusa-slicer");

@@ -1,12 +1,15 @@
 #pragma once
 // One program for a printer whose platform is a firmware axis: the step programs in printing order, one start
-// and one end sequence, and between two steps: retract, lift to the turn's clearance, park, turn the
-// platform (per dialect), return above the next step's first point, unretract, reset E.
+// and one end sequence, and between two steps: retract (to the profile's retract_length, counting what the
+// slicer's own end of print drew back), lift to the turn's clearance, park, turn the platform (per dialect),
+// return above the next step's first point, prime (push back what is drawn back plus retract_restart_extra),
+// reset E.
 #include <string>
 #include <vector>
 
 #include "multidir/core/common/result.h"
 #include "multidir/slicing/estimates.h"
+#include "multidir/slicing/gcode_checks.h"
 #include "multidir/slicing/printer_profile.h"
 
 namespace multidir::slicing {
@@ -28,6 +31,18 @@ struct TurnPlan {
   double clearanceZMm = 0.0;  // sweptTopZMm plus the profile's margin: where the nozzle waits
 };
 
+// How a step is primed after its filament was drawn back: the profile's retraction (or `--set`'s).
+struct PrimeSettings {
+  double retractLengthMm = 2.0;  // retract_length: drawn back while the platform turns
+  double restartExtraMm = 0.0;   // retract_restart_extra: pushed on top when priming (may be negative)
+  double speedMmPerS = 40.0;     // deretract_speed, or retract_speed when that is 0
+};
+
+// The lines that push the filament back before a step's first extrusion, from `state` (how the previous
+// program left it): G11 after a firmware retraction, else G1 E by what is drawn back plus restartExtraMm,
+// between two G92 E0 (so they work in M82 and M83 alike). A comment when there is nothing to push.
+std::string primeCommands(const FilamentState& state, const PrimeSettings& prime);
+
 // The lines that turn the platform to `degrees` (Klipper: MANUAL_STEPPER ... MOVE=, Marlin and RRF: G1 A),
 // each preceded by M400 so that the queued moves end first.
 std::string turnCommands(const PrinterProfile& profile, Dialect dialect, double degrees);
@@ -36,6 +51,7 @@ std::string turnCommands(const PrinterProfile& profile, Dialect dialect, double 
 // parseEstimate reads them. Errors: InvalidParameter when a step lacks a marker, `turns` does not have one
 // entry per gap, or a step has no XY move to return to.
 core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, const std::vector<TurnPlan>& turns,
-                                        const PrinterProfile& profile, Dialect dialect, const Estimate& total);
+                                        const PrinterProfile& profile, Dialect dialect, const Estimate& total,
+                                        const PrimeSettings& prime);
 
 }  // namespace multidir::slicing
