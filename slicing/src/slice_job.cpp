@@ -17,6 +17,7 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/slicing/clearance.h"
 #include "multidir/slicing/gcode_program.h"
+#include "multidir/slicing/interface_settings.h"
 #include "multidir/slicing/placement.h"
 #include "multidir/slicing/slicer_engine.h"
 
@@ -450,6 +451,7 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
       overlay.push_back({"first_layer_height", layerHeight});
       overlay.push_back({"first_layer_temperature", setting(profile, options, "temperature", "200")});
       overlay.push_back({"first_layer_bed_temperature", setting(profile, options, "bed_temperature", "0")});
+      for (const auto& entry : interfaceSettings()) overlay.push_back(entry);
     }
     const std::string overlayPath = (work.path / stepName(step.index, ".ini")).string();
     if (core::Status s = writeOverlay(overlayPath, overlay); !s) return s.error();
