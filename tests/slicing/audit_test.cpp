@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -555,3 +556,52 @@ TEST(AuditKitten, RobotArmJobSlicedByPrusaSlicerPassesTheChecksThatHoldToday) {
   EXPECT_FALSE(program.unsupportedPlaces.empty());
   EXPECT_GT(program.total.extrusionMm, 0.0);
 }
+
+// CI audits the kitten's job for every shipped profile: whatever the printer, the machine code MultiDir
+// writes passes every check the audit fails a job for ((a) beyond tolerance, (c), (d), (e), poses, sequence).
+class AuditKittenOnEveryShippedProfile : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(AuditKittenOnEveryShippedProfile, PassesEveryCheck) {
+  const core::Result<PrinterProfile> profile = loadPrinterProfile(GetParam());
+  ASSERT_TRUE(profile) << profile.error().describe();
+  core::MachineSpec machine;  // 5-DOF for a Modbus platform; a firmware axis turns about the printer's X
+  machine.up = Vec3::UnitY();
+  if (profile->platform == PlatformDrive::FirmwareAxis) {
+    machine.kind = core::MachineKind::RotaryPlatform;
+    machine.rotationAxis = Vec3::UnitX();
+  }
+  const core::Result<core::LoadedMesh> kitten = core::loadMesh(test::sharedModelPath("kitten.off"));
+  ASSERT_TRUE(kitten) << kitten.error().describe();
+  const core::LoadedPlan plan = test::plannedInMemory(kitten->mesh, machine, "kitten");
+  SliceJobOptions options;
+  options.fixedDirection = false;
+  const std::string dir = test::scratchDirectory("AuditKittenOnEveryShippedProfile." + GetParam());
+  core::JobContext context;
+  const core::Result<SlicedJob> sliced = slicePlan(plan, *profile, options, dir, context);
+  ASSERT_TRUE(sliced) << sliced.error().describe();
+  ASSERT_GT(sliced->steps.size(), 1u);
+  const core::Result<AuditJob> job = readAuditJob(dir);
+  ASSERT_TRUE(job) << job.error().describe();
+  const core::Result<AuditReport> report = auditJob(*job, AuditOptions{}, context);
+  ASSERT_TRUE(report) << report.error().describe();
+  EXPECT_FALSE(report->failed()) << (report->findings.empty() ? std::string("see the per-step rows")
+                                                              : report->findings.front());
+  for (const ProgramAudit& program : report->programs)
+    for (const StepAudit& row : program.steps) {
+      SCOPED_TRACE(row.file + ", step " + std::to_string(row.step));
+      EXPECT_EQ(row.retractViolations, 0);
+      EXPECT_NEAR(row.firstLayerGapMm, row.step == 1 ? job->steps[0].bead.firstLayerHeightMm
+                                                     : job->steps[0].bead.layerHeightMm,
+                  0.01);
+      EXPECT_LE(row.outsideMm, 1e-3 * row.extrusionMm);
+      EXPECT_FALSE(row.turnViolation);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedProfiles, AuditKittenOnEveryShippedProfile,
+                         ::testing::ValuesIn(builtinPrinterNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name;
+                           for (char c : info.param) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           return name;
+                         });
