@@ -45,4 +45,15 @@ double anyTurnTopZ(const std::vector<core::Vec3>& points) {
   return top;
 }
 
+std::vector<core::Vec3> printedPoints(const core::PrintJob& job, std::size_t k) {
+  std::vector<core::Vec3> points;
+  const Eigen::Isometry3d toK = job.steps[k].modelToFile;
+  for (std::size_t i = 0; i <= k; ++i) {
+    const Eigen::Isometry3d motion = toK * job.steps[i].modelToFile.inverse();
+    for (const core::TriangleMesh* mesh : {&job.steps[i].region, &job.steps[i].supports})
+      for (const core::Vec3& v : mesh->vertices) points.push_back(motion * v);
+  }
+  return points;
+}
+
 }  // namespace multidir::slicing

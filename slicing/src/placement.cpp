@@ -67,13 +67,7 @@ Extents extentsOf(const core::PrintJob& job) {
   if (job.machine.kind != core::MachineKind::RotaryPlatform) return e;
   e.axis = (job.steps.front().modelToFile.linear() * job.machine.rotationAxis.normalized()).normalized();
   for (std::size_t k = 0; k + 1 < job.steps.size(); ++k) {
-    std::vector<Vec3> points;
-    const Eigen::Isometry3d toK = job.steps[k].modelToFile;
-    for (std::size_t i = 0; i <= k; ++i) {
-      const Eigen::Isometry3d motion = toK * job.steps[i].modelToFile.inverse();
-      for (const core::TriangleMesh* mesh : {&job.steps[i].region, &job.steps[i].supports})
-        for (const Vec3& v : mesh->vertices) points.push_back(motion * v);
-    }
+    const std::vector<Vec3> points = printedPoints(job, k);
     const double turnRadians =
         -(job.steps[k + 1].angles.rotaryDegrees - job.steps[k].angles.rotaryDegrees) * M_PI / 180.0;
     const Vec3 axisK = job.steps[k].modelToFile.linear() * job.machine.rotationAxis.normalized();

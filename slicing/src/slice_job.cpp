@@ -116,18 +116,6 @@ Eigen::Isometry3d machineToPrinter(const PrinterProfile& profile) {
   return t;
 }
 
-// Every point printed up to step k (regions and supports of steps 1..k), posed for step k (machine frame).
-std::vector<Vec3> printedPoints(const core::PrintJob& job, std::size_t k) {
-  std::vector<Vec3> points;
-  const Eigen::Isometry3d toK = job.steps[k].modelToFile;
-  for (std::size_t i = 0; i <= k; ++i) {
-    const Eigen::Isometry3d motion = toK * job.steps[i].modelToFile.inverse();
-    for (const core::TriangleMesh* mesh : {&job.steps[i].region, &job.steps[i].supports})
-      for (const Vec3& v : mesh->vertices) points.push_back(motion * v);
-  }
-  return points;
-}
-
 core::Status writeOverlay(const std::string& path, const std::vector<std::pair<std::string, std::string>>& settings) {
   std::string text = "# MultiDir: settings for one slicing run, applied after the printer profile\n";
   for (const auto& [key, value] : settings) text += key + " = " + value + "\n";

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "multidir/core/mesh/triangle_mesh.h"
+#include "multidir/core/plan/print_job.h"
 
 namespace multidir::slicing {
 
@@ -21,5 +22,9 @@ double sweptMax(const std::vector<core::Vec3>& points, const core::Vec3& axisUni
 // A bound for any motion that turns the part about the origin (a robot arm's tilt and azimuth): no point
 // rises above its distance from the origin. Empty `points`: -infinity.
 double anyTurnTopZ(const std::vector<core::Vec3>& points);
+
+// Every point printed up to step k (from 0: the regions and supports of steps 1..k + 1), posed for step k (the
+// machine frame): what turns with the platform after that step.
+std::vector<core::Vec3> printedPoints(const core::PrintJob& job, std::size_t k);
 
 }  // namespace multidir::slicing
