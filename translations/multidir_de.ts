@@ -3587,6 +3587,11 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
         <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <source>The part does not fit this printer, so nothing was sliced: by how much, and what would help, is below.</source>
+        <translation>Das Teil passt nicht auf diesen Drucker, daher wurde nichts geslict: um wie viel, und was helfen würde, steht unten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
         <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
         <translation>Der G-Code hat die Prüfungen von MultiDir nicht bestanden und wurde verworfen: Schritt, Zeile und Grund stehen unten.</translation>
     </message>

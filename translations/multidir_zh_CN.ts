@@ -3580,6 +3580,11 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
         <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <source>The part does not fit this printer, so nothing was sliced: by how much, and what would help, is below.</source>
+        <translation>零件放不进这台打印机，因此没有切片：超出多少、如何解决见下方。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
         <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
         <translation>G 代码未通过 MultiDir 的检查，未予保留：步骤、行号和原因见下方。</translation>
     </message>

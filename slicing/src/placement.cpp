@@ -388,7 +388,7 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
                                                                    mm(placement.offsetMm.x()) + ", Y " +
                                                                    mm(placement.offsetMm.y()) + " mm on the platform)"
                                                              : "placed where it has the most room";
-  return Error{ErrorCode::CheckFailed,
+  return Error{ErrorCode::TooLarge,
                "the part does not fit the printer '" + profile.name + "' (bed X " + mm(lo.x()) + " to " + mm(hi.x()) +
                    ", Y " + mm(lo.y()) + " to " + mm(hi.y()) + " mm, max_print_height " +
                    mm(profile.maxPrintHeightMm) + " mm), even " + placed + ": " + where +

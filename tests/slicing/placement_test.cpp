@@ -101,7 +101,7 @@ TEST(Placement, APartTooBigForTheBedIsRefusedSayingByHowMuchAndWhatWouldFit) {
   job.steps = {boxStep(1, Vec3(-130, -50, 0), Vec3(130, 50, 40))};  // 260 mm on a 220 mm bed
   const core::Result<Placement> placed = placeOnPlatform(job, profileNamed("marlin-220"));
   ASSERT_FALSE(placed.ok());
-  EXPECT_EQ(placed.error().code, core::ErrorCode::CheckFailed);
+  EXPECT_EQ(placed.error().code, core::ErrorCode::TooLarge);
   const std::string& m = placed.error().message;
   EXPECT_NE(m.find("step 1 reaches 20.0 mm past the bed's -X side"), std::string::npos) << m;
   EXPECT_NE(m.find("20.0 mm past the bed's +X side"), std::string::npos) << m;

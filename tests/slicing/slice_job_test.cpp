@@ -395,7 +395,7 @@ TEST(SliceJob, APartTooBigForTheBedIsRefusedBeforeSlicing) {
   core::JobContext context;
   const auto sliced = sliceJob(job, profileNamed(ini), options, dir + "/out", context);
   ASSERT_FALSE(sliced.ok());
-  EXPECT_EQ(sliced.error().code, core::ErrorCode::CheckFailed);
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::TooLarge);
   const std::string& m = sliced.error().message;
   EXPECT_NE(m.find("step 1 reaches 5.0 mm past the bed's -X side"), std::string::npos) << m;
   EXPECT_NE(m.find("5.0 mm past the bed's +Y side"), std::string::npos) << m;

@@ -332,9 +332,9 @@ TEST_F(StudioSnowmanPlan, MissingSlicerShowsTheDocumentedErrorAndKeepsThePlan) {
   EXPECT_TRUE(window.viewer()->hasPlan());
 }
 
-TEST_F(StudioSnowmanPlan, GcodeThatFailsACheckIsRefusedNamingStepLineAndReason) {
+TEST_F(StudioSnowmanPlan, APartTooBigForTheBedIsRefusedBeforeSlicingSayingByHowMuch) {
   MainWindow& window = *s_window;
-  // A printer whose bed (30 x 30 mm) is smaller than the snowman: the bed check refuses the G-code.
+  // A printer whose bed (30 x 30 mm) is smaller than the snowman: refused before the slicer runs.
   QTemporaryDir scratch;
   ASSERT_TRUE(scratch.isValid());
   const QString ini = scratch.filePath(QStringLiteral("tiny-bed.ini"));
@@ -353,10 +353,10 @@ TEST_F(StudioSnowmanPlan, GcodeThatFailsACheckIsRefusedNamingStepLineAndReason) 
   ASSERT_TRUE(session->slice(choice));
   ASSERT_TRUE(failed.wait(kSliceTimeoutMs));
   const QString shown = slicePanelOf(window)->messageLabel()->text();
-  EXPECT_TRUE(shown.contains(QStringLiteral("failed MultiDir's checks"))) << shown.toStdString();
-  EXPECT_TRUE(shown.contains(QRegularExpression(QStringLiteral("step \\d+, line \\d+: extrusion at .* outside the "
-                                                               "printer's bed"))))
+  EXPECT_TRUE(shown.contains(QStringLiteral("does not fit this printer, so nothing was sliced"))) << shown.toStdString();
+  EXPECT_TRUE(shown.contains(QRegularExpression(QStringLiteral("step \\d+ reaches [0-9.]+ mm past the bed's"))))
       << shown.toStdString();
+  EXPECT_TRUE(shown.contains(QStringLiteral("scale the model by"))) << shown.toStdString();
   EXPECT_FALSE(session->outcome().has_value());
   EXPECT_TRUE(window.viewer()->hasPlan());
 }

@@ -71,6 +71,9 @@ QString headlineFor(const core::Error& error, const std::string& slicer) {
         .arg(QString::fromStdString(slicer));
   if (error.code == core::ErrorCode::ExternalToolFailed)
     return SliceJobRunner::tr("The slicer failed: its command and last output lines are below.");
+  if (error.code == core::ErrorCode::TooLarge)
+    return SliceJobRunner::tr("The part does not fit this printer, so nothing was sliced: by how much, and what "
+                              "would help, is below.");
   if (error.code == core::ErrorCode::CheckFailed)
     return SliceJobRunner::tr("The G-code failed MultiDir's checks and was not kept: the step, line and reason are "
                               "below.");

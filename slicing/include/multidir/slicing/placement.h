@@ -38,7 +38,7 @@ struct Placement {
 // posed for it, on a rotary platform the part printed so far swept through the turn that follows it (exactly,
 // over the arc; a robot arm's turns are bounded in height by planTurns, in XY by the poses), and each turn's
 // clearance (planTurns). Also refused: a step that would print below the bed (z 0).
-// Errors: CheckFailed when it cannot fit, naming the step, the side and by how much, the scale factor that
+// Errors: TooLarge when it cannot fit (nothing is sliced), naming the step, the side and by how much, the scale factor that
 // would fit and the bed and height a printer would need; InvalidParameter for a job not in the machine frame
 // or without steps; Internal from planTurns.
 core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const PrinterProfile& profile);

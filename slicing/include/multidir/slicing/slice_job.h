@@ -79,7 +79,8 @@ core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const P
 // refused; the work folder (.slicing-PID) is removed however the job ends.
 // Errors: InvalidParameter (the job is in the model frame, the printer cannot turn its platform and the job has
 // several steps, a firmware axis asked to print a 5-DOF plan), FileNotFound / ExternalToolFailed (the slicer),
-// CheckFailed (the part does not fit; a check, naming step, line and reason), WriteFailed, Cancelled.
+// TooLarge (the part does not fit the printer, before anything is sliced), CheckFailed (a check of the G-code,
+// naming step, line and reason), WriteFailed, Cancelled.
 core::Result<SlicedJob> sliceJob(const core::PrintJob& job, const PrinterProfile& profile,
                                  const SliceJobOptions& options, const std::string& directory,
                                  core::JobContext& context);

@@ -11,7 +11,7 @@ enum class ErrorCode {
   FileNotFound,      // the path does not exist or cannot be opened
   UnsupportedFormat, // the extension is not one of .stl .obj .off .ply
   MalformedFile,     // the file's content does not follow its format (truncated, lying counts, bad numbers)
-  TooLarge,          // a count or size in the file is beyond what MultiDir accepts
+  TooLarge,          // a count or size in the file is beyond what MultiDir accepts, or a part beyond a printer's volume
   WriteFailed,       // the file could not be written
   EmptyMesh,         // no vertices or no faces, or a closed shell that encloses no volume (flat)
   NonFiniteVertex,   // a coordinate is NaN or infinite
