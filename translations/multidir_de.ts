@@ -3611,6 +3611,11 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Nicht genug Speicher, um diesen Plan zu slicen.</translation>
     </message>
     <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp"/>
+        <source>The audit of the G-code failed, so unsupported extrusions are not marked: %1</source>
+        <translation>Die Prüfung des G-Codes ist fehlgeschlagen, daher sind ungestützte Extrusionen nicht markiert: %1</translation>
+    </message>
+    <message>
         <location filename="../ui/jobs/slice_job_runner.cpp" line="141"/>
         <source>Unexpected error while slicing.</source>
         <translation>Unerwarteter Fehler beim Slicen.</translation>
@@ -3683,6 +3688,16 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <location filename="../ui/panels/slice_panel.cpp" line="84"/>
         <source>Travel moves</source>
         <translation>Leerfahrten</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp"/>
+        <source>Extrusion that rests on nothing printed before it, as the audit finds it (multidir audit, check b): drawn in magenta in the G-code preview</source>
+        <translation>Extrusion, die auf nichts zuvor Gedrucktem aufliegt, wie die Prüfung sie findet (multidir audit, Prüfung b): in der G-Code-Vorschau magenta gezeichnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp"/>
+        <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
+        <translation>Ungestützte Extrusion: %1 mm (%2 %) in Magenta</translation>
     </message>
     <message>
         <location filename="../ui/panels/slice_panel.cpp" line="98"/>
@@ -3816,6 +3831,11 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <location filename="../ui/slicing/slice_session.cpp" line="168"/>
         <source>Slicing finished.</source>
         <translation>Slicen abgeschlossen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp"/>
+        <source>Slicing finished; the audit failed.</source>
+        <translation>Slicen abgeschlossen; die Prüfung ist fehlgeschlagen.</translation>
     </message>
     <message>
         <location filename="../ui/slicing/slice_session.cpp" line="201"/>

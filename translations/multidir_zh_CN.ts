@@ -3604,6 +3604,11 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>内存不足，无法对此方案切片。</translation>
     </message>
     <message>
+        <location filename="../ui/jobs/slice_job_runner.cpp"/>
+        <source>The audit of the G-code failed, so unsupported extrusions are not marked: %1</source>
+        <translation>G 代码审核失败，因此未标记无支撑挤出：%1</translation>
+    </message>
+    <message>
         <location filename="../ui/jobs/slice_job_runner.cpp" line="141"/>
         <source>Unexpected error while slicing.</source>
         <translation>切片时发生意外错误。</translation>
@@ -3676,6 +3681,16 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <location filename="../ui/panels/slice_panel.cpp" line="84"/>
         <source>Travel moves</source>
         <translation>空驶移动</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp"/>
+        <source>Extrusion that rests on nothing printed before it, as the audit finds it (multidir audit, check b): drawn in magenta in the G-code preview</source>
+        <translation>未落在任何先前打印内容上的挤出（multidir audit 检查 b 的结果）：在 G 代码预览中以品红色绘制</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp"/>
+        <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
+        <translation>无支撑挤出：%1 mm（%2 %），以品红色显示</translation>
     </message>
     <message>
         <location filename="../ui/panels/slice_panel.cpp" line="98"/>
@@ -3808,6 +3823,11 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <location filename="../ui/slicing/slice_session.cpp" line="168"/>
         <source>Slicing finished.</source>
         <translation>切片完成。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp"/>
+        <source>Slicing finished; the audit failed.</source>
+        <translation>切片完成；审核失败。</translation>
     </message>
     <message>
         <location filename="../ui/slicing/slice_session.cpp" line="201"/>

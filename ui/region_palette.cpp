@@ -11,10 +11,13 @@ constexpr unsigned kRegionRgb[kRegionColorCount] = {
 };
 
 constexpr QRgb kSupportRgb = 0x4010f0;
+constexpr QRgb kUnsupportedRgb = 0xff00a0;
 
 }  // namespace
 
 QColor supportColor() { return QColor(kSupportRgb); }
+
+QColor unsupportedExtrusionColor() { return QColor(kUnsupportedRgb); }
 
 QColor regionColor(int index) {
   const int slot = (index < 0 ? 0 : index) % kRegionColorCount;

@@ -15,4 +15,8 @@ constexpr int kRegionColorCount = 16;
 // colour (and from blends of two of them), the model's grey-blue, the platform and the background.
 [[nodiscard]] QColor supportColor();
 
+// The G-code preview's warning colour for extrusions that rest on nothing printed before them (the audit's
+// check (b)): a saturated magenta between the palette's red and its pink-violet, far from both.
+[[nodiscard]] QColor unsupportedExtrusionColor();
+
 }  // namespace multidir::ui

@@ -258,6 +258,24 @@ TEST(AuditSupport, ABeadInAirIsUnsupported) {
   EXPECT_FALSE(report.failed());  // (b) is reported, not a failure
 }
 
+TEST(AuditSupport, TheLinesOfUnsupportedBeadsAreListedPerStepAndSupportedOnesAreNot) {
+  AuditJob job = boxJob();
+  Program program = stepProgram(1);
+  program.bead(Vec3(-5, 0, 0.2), Vec3(5, 0, 0.2));  // on the platform
+  const int onThePlatform = program.lines();
+  program.bead(Vec3(-5, 0, 0.4), Vec3(5, 0, 0.4));  // on the bead below
+  const int onTheBead = program.lines();
+  program.bead(Vec3(-5, 5, 5.0), Vec3(5, 5, 5.0));  // in air
+  const int inAir = program.lines();
+  job.steps[0].gcode = program.text();
+  const AuditReport report = audited(job);
+  EXPECT_EQ(stepRow(report, 0).unsupportedLines, std::vector<int>{inAir});
+  EXPECT_EQ(stepRow(report, 0).file, "step-01.gcode");
+  EXPECT_NE(inAir, onThePlatform);
+  EXPECT_NE(inAir, onTheBead);
+  EXPECT_TRUE(report.programs[0].total.unsupportedLines.empty());  // lines of several files would mean nothing
+}
+
 TEST(AuditSupport, ABeadOneLayerAboveAPrintedBeadIsSupported) {
   AuditJob job = boxJob();
   job.steps[0].gcode =

@@ -70,5 +70,26 @@ TEST(GcodeToolpaths, LayersAreNumberedOverTheJobAndEachStepsPoseIsUndone) {
   EXPECT_EQ(preview.travelsUpTo(2), 1u);
 }
 
+TEST(GcodeToolpaths, SegmentsKnowTheirLineAndTheAuditsUnsupportedLinesMarkOnlyThatStepsExtrusions) {
+  const GcodePreview unmarked = buildGcodePreview({{1, programOf(stepText(1)), Eigen::Isometry3d::Identity()},
+                                                   {2, programOf(stepText(2)), Eigen::Isometry3d::Identity()}});
+  ASSERT_EQ(unmarked.extrusions.size(), 6u);
+  // Each step's file: the marker on line 9, the extrusions on lines 11, 12 and 14.
+  const int lines[3] = {11, 12, 14};
+  for (std::size_t i = 0; i < unmarked.extrusions.size(); ++i) {
+    EXPECT_EQ(unmarked.extrusions[i].line, lines[i % 3]) << i;
+    EXPECT_FALSE(unmarked.extrusions[i].unsupported) << i;
+  }
+  EXPECT_EQ(unmarked.travels[0].line, 13);
+  EXPECT_FALSE(unmarked.audited);
+
+  GcodePreview preview = unmarked;
+  EXPECT_EQ(markUnsupported(preview, 2, {12, 14, 99}), 2u);  // a line that is no extrusion marks nothing
+  for (std::size_t i = 0; i < preview.extrusions.size(); ++i)
+    EXPECT_EQ(preview.extrusions[i].unsupported, i == 4 || i == 5) << i;  // step 1's lines 12 and 14 are not
+  EXPECT_EQ(markUnsupported(preview, 3, {11}), 0u);                       // no such step
+  EXPECT_EQ(markUnsupported(preview, 1, {}), 0u);
+}
+
 }  // namespace
 }  // namespace multidir::ui

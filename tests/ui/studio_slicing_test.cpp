@@ -31,6 +31,7 @@
 #include "ui/slicing/slice_dialog.h"
 #include "ui/slicing/slice_session.h"
 #include "ui/studio_test_support.h"
+#include "ui/viewer/gcode_toolpaths.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
@@ -175,6 +176,13 @@ TEST_F(StudioSlicedSnowman, PreviewDrawsEachStepInItsColourTheLayerSliderLimitsI
   // The regions are hidden: what shows in a step's colour is its toolpaths.
   for (int step = 0; step < steps; ++step)
     EXPECT_GT(test::colourFraction(all, regionColor(step)), 0.0002) << "step " << step + 1;
+  // The runner audited the job: its unsupported extrusions are marked, drawn in the warning colour and
+  // counted under the estimates.
+  const GcodePreview& preview = *window.sliceSession()->outcome()->preview;
+  EXPECT_TRUE(preview.audited) << window.sliceSession()->outcome()->auditError.toStdString();
+  EXPECT_TRUE(panel->unsupportedLabel()->isVisibleTo(panel));
+  EXPECT_TRUE(panel->unsupportedLabel()->text().startsWith(QStringLiteral("Unsupported extrusion: ")));
+  EXPECT_EQ(viewer->gcodeUnsupportedLinesShown() > 0, preview.unsupportedMm > 0.0);
 
   QSlider* slider = panel->layerSlider();
   ASSERT_TRUE(slider->isEnabled());

@@ -12,6 +12,7 @@
 
 #include "multidir/slicing/gcode_program.h"
 #include "ui/error_text.h"
+#include "ui/jobs/preview_audit.h"
 #include "ui/viewer/gcode_toolpaths.h"
 
 namespace multidir::ui {
@@ -23,6 +24,7 @@ struct Outcome {
   std::shared_ptr<const GcodePreview> preview;
   QString headline;  // an exception's, when `sliced` is empty
   QString detail;
+  std::string auditError;  // the audit failed: the preview is shown without its marks
 };
 
 core::Result<std::string> readText(const std::string& path) {
@@ -133,7 +135,15 @@ bool SliceJobRunner::start(const core::LoadedPlan& plan, const slicing::PrinterP
         if (!preview) {
           outcome->sliced = preview.error();
         } else {
-          outcome->preview = std::make_shared<const GcodePreview>(std::move(preview).value());
+          GcodePreview shown = std::move(preview).value();
+          const core::Status audit =
+              markUnsupportedExtrusions(shown, directory, plan.metadata.options.alphaMaxDegrees, job);
+          if (!audit && audit.error().code == core::ErrorCode::Cancelled) {
+            outcome->sliced = audit.error();
+          } else {
+            if (!audit) outcome->auditError = audit.error().describe();
+            outcome->preview = std::make_shared<const GcodePreview>(std::move(shown));
+          }
         }
       }
     } catch (const std::bad_alloc&) {
@@ -156,6 +166,9 @@ bool SliceJobRunner::start(const core::LoadedPlan& plan, const slicing::PrinterP
       result.job = std::make_shared<const slicing::SlicedJob>(std::move(outcome->sliced->value()));
       result.preview = outcome->preview;
       result.folder = folder;
+      if (!outcome->auditError.empty())
+        result.auditError = tr("The audit of the G-code failed, so unsupported extrusions are not marked: %1")
+                                .arg(QString::fromStdString(outcome->auditError));
       emit finished(result);
       return;
     }

@@ -1,6 +1,7 @@
 #pragma once
 // Slices a plan off the GUI thread: slicing::slicePlan (the same code as `multidir slice`) on its own
-// QThread, into a private temporary folder, then reads every step's G-code back for the preview. Progress
+// QThread, into a private temporary folder, then reads every step's G-code back for the preview and audits it
+// (ui/jobs/preview_audit.h: the unsupported extrusions marked). Progress
 // arrives as queued signals saying which step is being sliced; the result comes back to the GUI thread as a
 // value holding the folder (removed when the last copy of the result goes).
 //
@@ -31,6 +32,9 @@ struct SliceOutcome {
   // Where the job's files are (step-NN.gcode, job.gcode, print-job.json and the step meshes); removed with
   // the last copy of the outcome.
   std::shared_ptr<QTemporaryDir> folder;
+  // Empty, or why the audit that marks the preview's unsupported extrusions failed (translated, with the
+  // audit's message naming the file and line): the preview is then shown without marks.
+  QString auditError;
   [[nodiscard]] QString folderPath() const;
 };
 

@@ -68,6 +68,14 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setMinimumHeight(120);
 
+  m_unsupported = new QLabel(this);
+  m_unsupported->setObjectName(QStringLiteral("unsupportedExtrusion"));
+  m_unsupported->setWordWrap(true);
+  m_unsupported->setToolTip(
+      tr("Extrusion that rests on nothing printed before it, as the audit finds it (multidir audit, check b): "
+         "drawn in magenta in the G-code preview"));
+  m_unsupported->hide();
+
   m_export = new QPushButton(tr("Export G-code..."), this);
   m_export->setObjectName(QStringLiteral("exportGcodeButton"));
   m_export->setToolTip(tr("Write step-NN.gcode, job.gcode (when the firmware turns the platform) and the print "
@@ -106,6 +114,7 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   inner->addWidget(m_stage);
   inner->addWidget(m_message);
   inner->addWidget(m_table, 1);
+  inner->addWidget(m_unsupported);
   inner->addLayout(exportRow);
   inner->addLayout(previewRow);
   inner->addWidget(m_layerText);
@@ -193,9 +202,17 @@ void SlicePanel::showResult(const slicing::SlicedJob& job, int layers) {
   updatePreviewControls();
 }
 
+void SlicePanel::showUnsupported(bool audited, double unsupportedMm, double percent) {
+  m_unsupported->setText(
+      audited ? tr("Unsupported extrusion: %1 mm (%2 %) in magenta").arg(number(unsupportedMm, 1), number(percent, 1))
+              : QString());
+  m_unsupported->setVisible(audited);
+}
+
 void SlicePanel::clearResult() {
   m_hasResult = false;
   m_table->setRowCount(0);
+  showUnsupported(false, 0.0, 0.0);
   m_export->setEnabled(false);
   {
     const QSignalBlocker block(m_preview);

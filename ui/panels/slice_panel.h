@@ -1,7 +1,8 @@
 #pragma once
 // The G-code part of the Plan dock: the Slice button, the running job's progress ("Slicing step 2 of 3") and
 // its Cancel button, what went wrong, the estimates table (per step: print time and filament; the total; the
-// whole model printed along up with the slicer's supports, when sliced for comparison), Export G-code, and
+// whole model printed along up with the slicer's supports, when sliced for comparison) and the audit's
+// unsupported extrusion under it, Export G-code, and
 // the preview's controls (Preview G-code, the layer slider, travel moves).
 //
 // The panel only shows and collects; SliceSession (ui/slicing) runs the job and drives the viewer.
@@ -38,6 +39,9 @@ class SlicePanel : public QWidget {
   void showProgress(double fraction, const QString& stage);
   // A finished job: its estimates, Export and Preview enabled; `layers` the preview's layer count.
   void showResult(const slicing::SlicedJob& job, int layers);
+  // The audit's unsupported extrusion under the estimates ("Unsupported extrusion: 12.3 mm (0.4 %) in
+  // magenta", the preview's warning colour); hidden when the audit did not run.
+  void showUnsupported(bool audited, double unsupportedMm, double percent);
   // Drops the shown result (the plan changed, or a new job starts): table emptied, Export and Preview off.
   void clearResult();
   // A message under the buttons: an error (`detail` kept in full, selectable) or a plain note.
@@ -56,6 +60,7 @@ class SlicePanel : public QWidget {
   [[nodiscard]] QCheckBox* travelBox() const { return m_travel; }
   [[nodiscard]] QLabel* messageLabel() const { return m_message; }
   [[nodiscard]] QLabel* stageLabel() const { return m_stage; }
+  [[nodiscard]] QLabel* unsupportedLabel() const { return m_unsupported; }
 
  signals:
   void sliceClicked();
@@ -74,6 +79,7 @@ class SlicePanel : public QWidget {
   QLabel* m_stage = nullptr;
   QLabel* m_message = nullptr;
   QTableWidget* m_table = nullptr;
+  QLabel* m_unsupported = nullptr;
   QPushButton* m_export = nullptr;
   QPushButton* m_preview = nullptr;
   QSlider* m_layers = nullptr;

@@ -160,12 +160,19 @@ void SliceSession::onFinished(const SliceOutcome& outcome) {
   if (!run || run->plan != m_plan || run->supports != m_supports) return;  // the plan changed meanwhile
   m_outcome = outcome;
   m_panel->showResult(*outcome.job, outcome.preview ? outcome.preview->layerCount() : 0);
+  if (const GcodePreview* preview = outcome.preview.get(); preview && preview->audited) {
+    const double percent =
+        preview->auditedExtrusionMm > 0.0 ? 100.0 * preview->unsupportedMm / preview->auditedExtrusionMm : 0.0;
+    m_panel->showUnsupported(true, preview->unsupportedMm, percent);
+  }
   const double total = outcome.job->total.printSeconds;
+  // An audit that failed costs the preview its marks only: the job is sliced, the message says why.
   m_panel->showMessage(tr("Sliced for %1: %n step(s), %2 of printing.", nullptr, static_cast<int>(outcome.job->steps.size()))
                            .arg(QString::fromStdString(outcome.job->profile.name),
                                 QString::fromStdString(slicing::durationText(total))),
-                       QString(), false);
-  m_window.statusBar()->showMessage(tr("Slicing finished."));
+                       outcome.auditError, !outcome.auditError.isEmpty());
+  m_window.statusBar()->showMessage(outcome.auditError.isEmpty() ? tr("Slicing finished.")
+                                                                 : tr("Slicing finished; the audit failed."));
   emit resultAvailable(true);
   emit sliced();
 }

@@ -20,12 +20,15 @@
 namespace multidir::ui {
 namespace {
 
-// Extrusions drawn thicker than travels, so the part reads first; both unlit (their colours are exact).
+// Extrusions drawn thicker than travels, so the part reads first; unsupported extrusions thicker still and in
+// one warning colour; all unlit (their colours are exact).
 constexpr float kExtrusionWidthPixels = 2.0f;
+constexpr float kUnsupportedWidthPixels = 3.0f;
 constexpr float kTravelWidthPixels = 1.0f;
 
-// The first `count` segments as lines: two points each, coloured by their step when `byStep`.
-void fillLines(vtkPolyData* data, const std::vector<ToolpathSegment>& segments, std::size_t count, bool byStep) {
+// `segments` as lines: two points each, coloured by their step when `byStep`.
+void fillLines(vtkPolyData* data, const std::vector<const ToolpathSegment*>& segments, bool byStep) {
+  const std::size_t count = segments.size();
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(2 * count));
@@ -36,7 +39,7 @@ void fillLines(vtkPolyData* data, const std::vector<ToolpathSegment>& segments, 
   colours->SetNumberOfComponents(3);
   if (byStep) colours->SetNumberOfTuples(static_cast<vtkIdType>(count));
   for (std::size_t i = 0; i < count; ++i) {
-    const ToolpathSegment& s = segments[i];
+    const ToolpathSegment& s = *segments[i];
     const auto a = static_cast<vtkIdType>(2 * i);
     points->SetPoint(a, s.from.x(), s.from.y(), s.from.z());
     points->SetPoint(a + 1, s.to.x(), s.to.y(), s.to.z());
@@ -54,6 +57,16 @@ void fillLines(vtkPolyData* data, const std::vector<ToolpathSegment>& segments, 
   data->SetLines(lines);
   if (byStep) data->GetCellData()->SetScalars(colours);
   data->Modified();
+}
+
+// The first `count` of `segments` whose mark is `unsupported`.
+std::vector<const ToolpathSegment*> prefixOf(const std::vector<ToolpathSegment>& segments, std::size_t count,
+                                             bool unsupported) {
+  std::vector<const ToolpathSegment*> out;
+  out.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+    if (segments[i].unsupported == unsupported) out.push_back(&segments[i]);
+  return out;
 }
 
 vtkSmartPointer<vtkActor> linesActor(vtkPolyData* data, float widthPixels) {
@@ -74,7 +87,8 @@ vtkSmartPointer<vtkActor> linesActor(vtkPolyData* data, float widthPixels) {
 GcodeScene::GcodeScene(vtkRenderer* renderer)
     : m_renderer(renderer),
       m_extrusionData(vtkSmartPointer<vtkPolyData>::New()),
-      m_travelData(vtkSmartPointer<vtkPolyData>::New()) {
+      m_travelData(vtkSmartPointer<vtkPolyData>::New()),
+      m_unsupportedData(vtkSmartPointer<vtkPolyData>::New()) {
   m_extrusionActor = linesActor(m_extrusionData, kExtrusionWidthPixels);
   auto* extrusionMapper = static_cast<vtkPolyDataMapper*>(m_extrusionActor->GetMapper());
   extrusionMapper->SetScalarModeToUseCellData();
@@ -84,13 +98,21 @@ GcodeScene::GcodeScene(vtkRenderer* renderer)
   m_travelActor->GetMapper()->ScalarVisibilityOff();
   const QColor travel = MeshViewerWidget::gcodeTravelColor();
   m_travelActor->GetProperty()->SetColor(travel.redF(), travel.greenF(), travel.blueF());
+  // Unsupported extrusions are left out of the step-coloured lines and drawn apart, so nothing covers them
+  // at the same depth.
+  m_unsupportedActor = linesActor(m_unsupportedData, kUnsupportedWidthPixels);
+  m_unsupportedActor->GetMapper()->ScalarVisibilityOff();
+  const QColor warning = unsupportedExtrusionColor();
+  m_unsupportedActor->GetProperty()->SetColor(warning.redF(), warning.greenF(), warning.blueF());
   m_renderer->AddActor(m_extrusionActor);
   m_renderer->AddActor(m_travelActor);
+  m_renderer->AddActor(m_unsupportedActor);
 }
 
 GcodeScene::~GcodeScene() {
   m_renderer->RemoveActor(m_extrusionActor);
   m_renderer->RemoveActor(m_travelActor);
+  m_renderer->RemoveActor(m_unsupportedActor);
 }
 
 void GcodeScene::setPreview(std::shared_ptr<const GcodePreview> preview) {
@@ -115,7 +137,12 @@ void GcodeScene::setTravelVisible(bool visible) {
 }
 
 int GcodeScene::extrusionLinesShown() const {
-  return m_extrusionActor->GetVisibility() ? static_cast<int>(m_extrusionData->GetNumberOfLines()) : 0;
+  return (m_extrusionActor->GetVisibility() ? static_cast<int>(m_extrusionData->GetNumberOfLines()) : 0) +
+         unsupportedLinesShown();
+}
+
+int GcodeScene::unsupportedLinesShown() const {
+  return m_unsupportedActor->GetVisibility() ? static_cast<int>(m_unsupportedData->GetNumberOfLines()) : 0;
 }
 
 int GcodeScene::travelLinesShown() const {
@@ -126,15 +153,21 @@ void GcodeScene::rebuild() {
   if (!m_preview) {
     m_extrusionData->Initialize();
     m_travelData->Initialize();
+    m_unsupportedData->Initialize();
     m_extrusionActor->VisibilityOff();
     m_travelActor->VisibilityOff();
+    m_unsupportedActor->VisibilityOff();
     return;
   }
   const std::size_t extrusions = m_preview->extrusionsUpTo(m_layerLimit);
-  fillLines(m_extrusionData, m_preview->extrusions, extrusions, true);
-  m_extrusionActor->SetVisibility(extrusions > 0);
+  const std::vector<const ToolpathSegment*> supported = prefixOf(m_preview->extrusions, extrusions, false);
+  fillLines(m_extrusionData, supported, true);
+  m_extrusionActor->SetVisibility(!supported.empty());
+  const std::vector<const ToolpathSegment*> unsupported = prefixOf(m_preview->extrusions, extrusions, true);
+  fillLines(m_unsupportedData, unsupported, false);
+  m_unsupportedActor->SetVisibility(!unsupported.empty());
   const std::size_t travels = m_travelVisible ? m_preview->travelsUpTo(m_layerLimit) : 0;
-  fillLines(m_travelData, m_preview->travels, travels, false);
+  fillLines(m_travelData, prefixOf(m_preview->travels, travels, false), false);
   m_travelActor->SetVisibility(travels > 0);
 }
 

@@ -2,7 +2,8 @@
 // The G-code preview's VTK actors: the extrusions of every step as lines in the step's region colour
 // (ui/region_palette.h), drawn unlit so they keep it exactly, and the travel moves as thinner lines in
 // MeshViewerWidget::gcodeTravelColor(), hidden until asked for. The layer limit shows layers 1..N of the job
-// (printing order over all steps).
+// (printing order over all steps). Extrusions the audit marked unsupported (ToolpathSegment::unsupported) are
+// drawn instead in unsupportedExtrusionColor(), a little thicker.
 // Part of ui/viewer: only mesh_viewer_widget.cpp includes this header.
 //
 // Thread: GUI thread only, like every VTK object.
@@ -37,8 +38,9 @@ class GcodeScene {
   void setTravelVisible(bool visible);
   [[nodiscard]] bool travelVisible() const { return m_travelVisible; }
 
-  // Line segments drawn now.
+  // Line segments drawn now (extrusions: the unsupported ones included).
   [[nodiscard]] int extrusionLinesShown() const;
+  [[nodiscard]] int unsupportedLinesShown() const;
   [[nodiscard]] int travelLinesShown() const;
 
  private:
@@ -50,6 +52,8 @@ class GcodeScene {
   vtkSmartPointer<vtkPolyData> m_travelData;
   vtkSmartPointer<vtkActor> m_extrusionActor;
   vtkSmartPointer<vtkActor> m_travelActor;
+  vtkSmartPointer<vtkPolyData> m_unsupportedData;
+  vtkSmartPointer<vtkActor> m_unsupportedActor;
   int m_layerLimit = 0;
   bool m_travelVisible = false;
 };

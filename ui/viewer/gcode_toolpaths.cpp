@@ -38,13 +38,25 @@ GcodePreview buildGcodePreview(const std::vector<StepProgram>& steps) {
           layerZ = z;
           preview.layers.push_back({step.step, layerInStep, z});
         }
-        preview.extrusions.push_back({toModel * move.from, toModel * move.to, step.step, firstLayer + layerInStep - 1});
+        preview.extrusions.push_back(
+            {toModel * move.from, toModel * move.to, step.step, firstLayer + layerInStep - 1, move.line});
       } else if (layerInStep > 0 && (move.movesXy() || move.movesZ())) {
-        preview.travels.push_back({toModel * move.from, toModel * move.to, step.step, firstLayer + layerInStep - 1});
+        preview.travels.push_back(
+            {toModel * move.from, toModel * move.to, step.step, firstLayer + layerInStep - 1, move.line});
       }
     }
   }
   return preview;
+}
+
+std::size_t markUnsupported(GcodePreview& preview, int step, const std::vector<int>& lines) {
+  std::size_t marked = 0;
+  for (ToolpathSegment& s : preview.extrusions) {
+    if (s.step != step || !std::binary_search(lines.begin(), lines.end(), s.line)) continue;
+    s.unsupported = true;
+    ++marked;
+  }
+  return marked;
 }
 
 }  // namespace multidir::ui

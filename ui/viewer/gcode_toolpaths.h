@@ -24,6 +24,9 @@ struct ToolpathSegment {
   core::Vec3 to = core::Vec3::Zero();
   int step = 1;   // the step (from 1): its colour is regionColor(step - 1)
   int layer = 1;  // over the whole job, from 1
+  int line = 0;   // the move's line in its step's program (step-NN.gcode), from 1
+  // The audit's check (b) found this extrusion resting on nothing printed before it (markUnsupported).
+  bool unsupported = false;
 };
 
 // One layer of the job: which step prints it, and its number within that step (both from 1).
@@ -39,6 +42,11 @@ struct GcodePreview {
   std::vector<ToolpathSegment> travels;
   std::vector<ToolpathLayer> layers;  // layers[i] is layer i + 1
   int stepCount = 0;
+  // The audit's check (b) (docs/slicing.md "Audit"), when it ran on the job: the unsupported extrusions are
+  // marked and these are its totals over the step programs.
+  bool audited = false;
+  double auditedExtrusionMm = 0.0;
+  double unsupportedMm = 0.0;
 
   [[nodiscard]] int layerCount() const { return static_cast<int>(layers.size()); }
   // How many extrusions (travels) belong to layers 1..`layers` (clamped to the job's).
@@ -55,5 +63,9 @@ struct StepProgram {
 
 // The preview of `steps` (in printing order).
 GcodePreview buildGcodePreview(const std::vector<StepProgram>& steps);
+
+// Marks the extrusions of step `step` whose line is in `lines` (ascending, as the audit lists them); returns
+// how many were marked.
+std::size_t markUnsupported(GcodePreview& preview, int step, const std::vector<int>& lines);
 
 }  // namespace multidir::ui

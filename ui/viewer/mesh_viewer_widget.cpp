@@ -678,6 +678,7 @@ void MeshViewerWidget::setGcodeTravelVisible(bool visible) {
 }
 
 int MeshViewerWidget::gcodeExtrusionLinesShown() const { return m_impl->gcode->extrusionLinesShown(); }
+int MeshViewerWidget::gcodeUnsupportedLinesShown() const { return m_impl->gcode->unsupportedLinesShown(); }
 int MeshViewerWidget::gcodeTravelLinesShown() const { return m_impl->gcode->travelLinesShown(); }
 
 void MeshViewerWidget::initializeGL() {

@@ -117,8 +117,9 @@ class MeshViewerWidget : public QOpenGLWidget {
   void setGcodeLayerLimit(int layers);
   [[nodiscard]] int gcodeLayerLimit() const;
   void setGcodeTravelVisible(bool visible);
-  // Line segments drawn now.
+  // Line segments drawn now (extrusions: those in the warning colour included).
   [[nodiscard]] int gcodeExtrusionLinesShown() const;
+  [[nodiscard]] int gcodeUnsupportedLinesShown() const;
   [[nodiscard]] int gcodeTravelLinesShown() const;
 
   // The direction pointing up on screen after the last fit.

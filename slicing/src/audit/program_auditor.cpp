@@ -135,6 +135,9 @@ class ProgramAuditor::Impl {
     total.turnClearanceMm = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t k = 0; k < m_out.steps.size(); ++k) {
       StepAudit& row = m_out.steps[k];
+      std::sort(row.unsupportedLines.begin(), row.unsupportedLines.end());
+      row.unsupportedLines.erase(std::unique(row.unsupportedLines.begin(), row.unsupportedLines.end()),
+                                 row.unsupportedLines.end());
       if (m_lowest[k] < std::numeric_limits<double>::infinity()) {
         row.firstLayerGapMm = m_lowest[k] - row.baseZMm;
         row.firstLayerViolation = std::abs(row.firstLayerGapMm - row.expectedGapMm) > m_options.firstLayerToleranceMm;
@@ -291,6 +294,8 @@ class ProgramAuditor::Impl {
         });
       }
       if (!supported) {
+        if (row.unsupportedLines.empty() || row.unsupportedLines.back() != move.line)
+          row.unsupportedLines.push_back(move.line);
         row.unsupportedMm += piece;
         row.unsupportedByFeatureMm[move.feature.empty() ? "unlabelled" : move.feature] += piece;
         add(m_unsupported, step.index, m, piece, move.line, 0.0);

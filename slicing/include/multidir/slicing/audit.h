@@ -115,6 +115,9 @@ struct StepAudit {
   double unsupportedMm = 0.0;   // (b)
   // (b) by the slicer's feature (";TYPE:" comment): "Overhang perimeter", "Bridge infill", "Internal infill"...
   std::map<std::string, double> unsupportedByFeatureMm;
+  // (b): the lines of `file` whose extrusion is unsupported anywhere along it, ascending, each once (the
+  // studio's preview marks them). Empty in a program's total: its lines are of several files.
+  std::vector<int> unsupportedLines;
   double firstLayerGapMm = std::numeric_limits<double>::quiet_NaN();  // (c): lowest extrusion z - base z
   double expectedGapMm = 0.0;     // (c): first_layer_height (step 1) or layer_height
   double baseZMm = 0.0;           // (c): printer z of the step's base plane under the replayed pose
