@@ -96,7 +96,9 @@ const SlicedSnowman& slicedSnowman() {
     options.settings = {{"layer_height", "0.3"}, {"first_layer_height", "0.3"}, {"fill_density", "15%"},
                         {"bottom_solid_layers", "3"}, {"top_solid_layers", "3"}};
     options.fixedDirection = false;
-    s.dir = test::scratchDirectory("interface.snowman");
+    // ctest runs each test in its own process, side by side: each slices into its own folder.
+    s.dir = test::scratchDirectory(std::string("interface.snowman.") +
+                                   testing::UnitTest::GetInstance()->current_test_info()->name());
     core::JobContext context;
     s.sliced = sliceJob(test::machineJob(plan), *profile, options, s.dir, context);
     return s;

@@ -422,7 +422,9 @@ SlicedPlan slicedPlan(const core::LoadedPlan& plan, const std::string& profile, 
   SlicedPlan out;
   out.job = test::machineJob(plan);
   out.layerHeightMm = layerHeightMm;
-  out.dir = test::scratchDirectory("slice_job.shared." + name);
+  // ctest runs each test in its own process, side by side: each slices into its own folder.
+  out.dir = test::scratchDirectory("slice_job.shared." + name + "." +
+                                  testing::UnitTest::GetInstance()->current_test_info()->name());
   SliceJobOptions options = coarseOptions(layerHeightMm);
   std::mutex mutex;
   core::JobContext context([&](double fraction, const std::string& phase) {
