@@ -277,6 +277,36 @@ void stopBeforeTheRun(Devices& devices, RunLog& log) {
   log.line("heaters off: " + outcome(heaters));
 }
 
+// Klipper and OctoPrint keep a paused job and resume it themselves; Marlin's job is the stream multidir run
+// sent, which ends with the command.
+bool printerKeepsAResumableJob(const hardware::PrinterStatus& printer, const std::string& name,
+                               const std::string& gcodeName) {
+  return printer.state == hardware::PrinterJobState::Paused && printer.currentFile == gcodeName &&
+         (name.rfind("Moonraker", 0) == 0 || name.rfind("OctoPrint", 0) == 0);
+}
+
+// The run ended on its own (a fault or a pause, no Ctrl-C) and the command is about to exit, leaving the
+// printer unwatched: its heaters go off, unless it keeps a paused job it can resume itself (which needs them).
+void leaveThePrinterSafe(Devices& devices, RunLog& log, const std::string& gcodeName) {
+  const hardware::PrinterStatus printer = devices.printer->status();
+  if (printer.linkLost) {
+    log.line("warning: the printer cannot be reached to switch its heaters off: check it by hand");
+    return;
+  }
+  if (printerKeepsAResumableJob(printer, devices.printer->name(), gcodeName)) {
+    log.line("the printer keeps its paused job, and its heaters on for it: resume or cancel it there");
+    return;
+  }
+  std::future<core::Status> heaters = devices.printer->switchHeatersOff();
+  if (heaters.wait_for(10s) != std::future_status::ready) {
+    log.line("warning: the printer did not confirm its heaters off within 10 s: check it by hand");
+    return;
+  }
+  const core::Status off = heaters.get();
+  log.line(off.ok() ? std::string("nobody watches the printer now: switched its heaters off")
+                    : "warning: switching the printer's heaters off failed: " + off.error().describe());
+}
+
 // How to go on after the run stopped at job step `step` (1-based), true to what is on the platform: a step
 // the printer had begun holds part of its region, which printing the step again from its start (--from) would
 // print over.
@@ -294,18 +324,13 @@ std::string howToGoOn(const hardware::PrintRun& run, const hardware::PrinterStat
                                                : "the printer had been started on " + gcodeName) +
                      "): part of its region may be on the platform, and " + from +
                      " would print the step again from its start, over that part, so it cannot go on from there. ";
-  const bool ours = printer.currentFile == gcodeName;
   const std::string next = step < steps ? "continue with the next step: --from " + std::to_string(step + 1)
                                         : "the job is done (it was the last step)";
   if (printer.linkLost)
     return text + "The link to the printer is lost: it may still be printing " + gcodeName +
            " on its own; check it. If it completes the step, " + next +
            "; otherwise clear the platform and print the whole job again (without --from)";
-  // Klipper and OctoPrint keep a paused job and resume it themselves; Marlin's job is the stream multidir run
-  // sent, which ended with it.
-  const bool resumableThere = printer.state == hardware::PrinterJobState::Paused && ours &&
-                              (name.rfind("Moonraker", 0) == 0 || name.rfind("OctoPrint", 0) == 0);
-  if (resumableThere)
+  if (printerKeepsAResumableJob(printer, name, gcodeName))
     text +=
         "The printer's job is still paused on the printer: cancel it there (or resume it there once the cause "
         "is fixed and, when it is complete, " +
@@ -482,6 +507,8 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   const std::size_t step = static_cast<std::size_t>(from) + run.currentStep();
   const std::string gcodeName = std::filesystem::path(steps[run.currentStep()].gcodePath).filename().string();
+  // After Ctrl-C the run's abort has switched the heaters off already.
+  if (!stoppedByOperator) leaveThePrinterSafe(devices, log, gcodeName);
   log.ending(err, "the run stopped at step " + std::to_string(step) + " (" + hardware::printRunStateName(run.state()) +
                       (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
                       (stoppedByOperator ? " by Ctrl-C" : "") +

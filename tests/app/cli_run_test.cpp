@@ -231,6 +231,30 @@ TEST_F(CliRunTest, CtrlCDuringATurnSwitchesTheHeatersOff) {
   EXPECT_NE(run.err.find("nothing of step 2 was printed: continue with --from 2"), std::string::npos) << run.err;
 }
 
+// A run that ends on its own (here the platform stalls while it turns between two steps) leaves the printer
+// unwatched when the command exits: the heaters the first step left on go off.
+TEST_F(CliRunTest, APlatformFaultDuringATurnEndsTheRunWithTheHeatersOff) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.FaultTurn");
+  writeJob(dir + "/job", true, false, true);
+  startSimulators(200.0);
+  auto cli = std::async(std::launch::async, [&] { return runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60"); });
+  bool stuck = false;
+  for (int i = 0; i < 3000 && !stuck; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const hw::SimulatedRotaryState platform = devices->rotaryState();
+    if (printer->state().jobState != "complete" || !platform.moving || platform.targetAngleDegrees < 89.0) continue;
+    ASSERT_GT(printer->state().bed.targetC, 59.0);  // the first step left them on
+    devices->setMotorStuck(true);
+    stuck = true;
+  }
+  const CliRun run = cli.get();
+  ASSERT_TRUE(stuck) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.out.find("switched its heaters off"), std::string::npos) << run.out;
+  EXPECT_EQ(printer->state().extruder.targetC, 0.0);
+  EXPECT_EQ(printer->state().bed.targetC, 0.0);
+}
+
 // Ctrl-C before the first step (here while the platform homes from 170 degrees at 10 degrees/s) stopped
 // nothing: the wait for the homing ended, the platform went on homing and the heaters stayed as they were
 // (on, from an earlier job).
