@@ -115,10 +115,9 @@ double worstOverhang(const Placed& p, const PrinterProfile& profile) {
   return std::max({lo.x() - p.all.lo.x(), p.all.hi.x() - hi.x(), lo.y() - p.all.lo.y(), p.all.hi.y() - hi.y()});
 }
 
-// The worst of everything's overhang past the bed's sides, above the printer's height and below the bed at
-// offset d (negative: the least room left).
-double worstViolation(const core::PrintJob& job, const Extents& e, const Vec3& d, const PrinterProfile& profile) {
-  const Placed p = placedAt(job, e, d, profile);
+// The worst of everything's overhang past the bed's sides, above the printer's height and below the bed, as
+// placed (negative: the least room left).
+double worstViolation(const Placed& p, const PrinterProfile& profile) {
   double worst = worstOverhang(p, profile);
   for (const Box& b : p.parts) worst = std::max({worst, b.hi.z() - profile.maxPrintHeightMm, -b.lo.z()});
   return worst;
@@ -131,7 +130,7 @@ double searchCost(const core::PrintJob& job, const Extents& e, const Vec3& d, co
   const Eigen::Vector2d lo = profile.bedMin(), hi = profile.bedMax();
   const double x = std::max(lo.x() - p.all.lo.x(), p.all.hi.x() - hi.x());
   const double y = std::max(lo.y() - p.all.lo.y(), p.all.hi.y() - hi.y());
-  return worstViolation(job, e, d, profile) + 1e-3 * (x + y);
+  return worstViolation(p, profile) + 1e-3 * (x + y);
 }
 
 Vec3 chooseOffset(const core::PrintJob& job, const Extents& e, const PrinterProfile& profile) {
@@ -154,7 +153,7 @@ Vec3 chooseOffset(const core::PrintJob& job, const Extents& e, const PrinterProf
   // its own Q_k d: a move raises or lowers every tilted step and swings it wider. The part stays where the plan
   // put it when it fits there; else the offset that leaves the most room over every side, the height and the
   // bed (the worst overhang is convex in d: a pattern search finds its least).
-  if (worstViolation(job, e, Vec3::Zero(), profile) <= kFitToleranceMm) return Vec3::Zero();
+  if (worstViolation(atZero, profile) <= kFitToleranceMm) return Vec3::Zero();
   Vec3 d = Vec3::Zero();
   double best = searchCost(job, e, d, profile);
   for (double step = 32.0; step > 0.01;) {
@@ -303,6 +302,7 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
   // The turns' clearance (planTurns) on the placed job: the nozzle waits above the swept part.
   const core::Result<std::vector<TurnPlan>> turns = planTurns(placement.job, profile);
   if (!turns) return turns.error();
+  placement.turns = *turns;
   Overhang clearance;
   double highestClearance = -kInfinity;
   for (const TurnPlan& t : *turns) {

@@ -362,10 +362,7 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
   if (!placement) return placement.error();
   const core::PrintJob& job = placement->job;
   sliced.placementMm = placement->offsetMm;
-
-  const core::Result<std::vector<TurnPlan>> turns = planTurns(job, profile);
-  if (!turns) return turns.error();
-  sliced.turns = *turns;
+  sliced.turns = placement->turns;  // planTurns of the placed job, computed once by the fit check
   if (profile.platform == PlatformDrive::FirmwareAxis && job.machine.kind == core::MachineKind::RotaryPlatform &&
       job.steps.size() > 1) {
     // The firmware's axis runs along the printer's X: the plan's axis must too, and A counts the plan's

@@ -8,9 +8,11 @@
 // job core::buildPrintJob would build with the pivot at the old one minus d (model frame): the step meshes,
 // modelToFile, lowestHeightMm and the pivot are moved together.
 #include <string>
+#include <vector>
 
 #include "multidir/core/plan/print_job.h"
 #include "multidir/slicing/printer_profile.h"
+#include "multidir/slicing/stitch.h"
 
 namespace multidir::slicing {
 
@@ -27,6 +29,7 @@ core::Result<core::PrintJob> withSupportsOnTheirBasePlanes(const core::PrintJob&
 struct Placement {
   core::Vec3 offsetMm = core::Vec3::Zero();  // d: the part moved on the platform, rest pose (z = 0)
   core::PrintJob job;                        // the job moved by it
+  std::vector<TurnPlan> turns;               // planTurns of `job`: the clearance of every turn, as checked
 };
 
 // The part placed on the platform so that it fits the printer with the most room: 3-DOF its footprint
