@@ -295,31 +295,32 @@ core::Status PrintRun::resume() {
 
 core::Status PrintRun::abort() {
   if (m_state == PrintRunState::Completed || m_state == PrintRunState::Aborted) return refuse("abort");
-  if (m_state == PrintRunState::Printing || (m_state == PrintRunState::Paused && m_printInterrupted)) {
-    if (m_printer != nullptr && (m_phase != PrintPhase::None || m_printInterrupted)) {
-      m_phase = PrintPhase::None;
-      m_printerSideCommand = m_printer->cancelPrint();
-      enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: cancelling the job on " +
-                                        m_printer->name());
-      switchHeatersOff();
-      return core::Done{};
+  // Whatever the run was doing it ends aborted, then its heaters go off (switchHeatersOff).
+  const auto enterAborted = [this] {
+    if (m_state == PrintRunState::Printing || (m_state == PrintRunState::Paused && m_printInterrupted)) {
+      if (m_printer != nullptr && (m_phase != PrintPhase::None || m_printInterrupted)) {
+        m_phase = PrintPhase::None;
+        m_printerSideCommand = m_printer->cancelPrint();
+        enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: cancelling the job on " +
+                                          m_printer->name());
+        return;
+      }
+      if (m_state == PrintRunState::Printing) {
+        enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: stop the printer");
+        return;
+      }
     }
-    if (m_state == PrintRunState::Printing) {
-      enter(PrintRunState::Aborted, stepLabel() + ": aborted while the region was printing: stop the printer");
-      switchHeatersOff();
-      return core::Done{};
+    if (m_state == PrintRunState::Moving || m_state == PrintRunState::Settling) {
+      const core::Status stopped = requestStop();
+      if (!stopped.ok()) m_lastProblem = "the stop was refused: " + stopped.error().describe();
+      enter(PrintRunState::Aborted,
+            stepLabel() + ": aborted; " +
+                stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
+      return;
     }
-  }
-  if (m_state == PrintRunState::Moving || m_state == PrintRunState::Settling) {
-    const core::Status stopped = requestStop();
-    if (!stopped.ok()) m_lastProblem = "the stop was refused: " + stopped.error().describe();
-    enter(PrintRunState::Aborted,
-          stepLabel() + ": aborted; " +
-              stopRequestText(stopped, m_positioner.name(), advice(PrintRunAdvice::EmergencyStop)));
-    switchHeatersOff();
-    return core::Done{};
-  }
-  enter(PrintRunState::Aborted, stepLabel() + ": aborted");
+    enter(PrintRunState::Aborted, stepLabel() + ": aborted");
+  };
+  enterAborted();
   switchHeatersOff();
   return core::Done{};
 }
