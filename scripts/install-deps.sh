@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package MultiDir needs to build, test and run. Idempotent: a second run
 # finds nothing missing and only checks. Needs root (or sudo) for apt-get.
+# --sanitizers also installs clang and its runtimes, for scripts/fuzz.sh and scripts/thread-sanitizer.sh.
 set -euo pipefail
 
 packages=(
@@ -12,6 +13,9 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   prusa-slicer
 )
+if [ "${1:-}" = "--sanitizers" ]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -9,18 +9,12 @@
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_measure.h"
+#include "support/refusal_promise.h"
 
 namespace multidir::test {
 
 inline std::string brokenLoaderPromise(const core::Result<core::LoadedMesh>& loaded) {
-  if (!loaded) {
-    const core::Error& e = loaded.error();
-    if (e.code == core::ErrorCode::Internal) return "refused as an internal error: " + e.describe();
-    if (e.message.empty()) return "refused without a message";
-    if (e.where.empty()) return "refused without saying where: " + e.message;
-    if (e.message.find("please report") != std::string::npos) return "refused as a bug: " + e.describe();
-    return {};
-  }
+  if (!loaded) return brokenRefusalPromise(loaded.error());
   const core::TriangleMesh& mesh = loaded->mesh;
   if (mesh.triangles.empty()) return "loaded without faces";
   if (mesh.origins.size() != mesh.triangles.size()) return "face origins do not match the faces";

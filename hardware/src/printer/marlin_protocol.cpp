@@ -1,5 +1,7 @@
 #include "printer/marlin_protocol.h"
 
+#include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
@@ -21,7 +23,13 @@ std::string marlinNumberedLine(long number, const std::string& command) {
 namespace marlin {
 namespace {
 
+constexpr double kMaxPlausibleCelsius = 2000.0;
+
 bool startsWith(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
+
+// A temperature a thermistor can report: finite and within what any printer's sensor reads (Marlin writes
+// -14 for an open thermistor and a few hundred for a short). Line noise like "T:nan" or "T:1e308" is no reading.
+bool plausibleCelsius(double value) { return std::isfinite(value) && std::fabs(value) < kMaxPlausibleCelsius; }
 
 // "T:210.0 /215.0" at `key` ("T:" or "B:") as a word of its own (not "T0:" nor "B@:").
 std::optional<HeaterReading> heater(const std::string& line, const char* key) {
@@ -34,14 +42,17 @@ std::optional<HeaterReading> heater(const std::string& line, const char* key) {
   const char* start = line.c_str() + at + std::strlen(key);
   char* end = nullptr;
   const double actual = std::strtod(start, &end);
-  if (end == start) return std::nullopt;
+  if (end == start || !plausibleCelsius(actual)) return std::nullopt;
   HeaterReading reading;
   reading.actualC = actual;
   const char* slash = end;
   while (*slash == ' ') ++slash;
   if (*slash == '/') {
     const double target = std::strtod(slash + 1, &end);
-    if (end != slash + 1) reading.targetC = target;
+    if (end != slash + 1) {
+      if (!plausibleCelsius(target)) return std::nullopt;
+      reading.targetC = target;
+    }
   }
   return reading;
 }
@@ -71,8 +82,10 @@ Reply parseReply(const std::string& rawLine) {
     const char* start = line.c_str() + (line[0] == 'R' ? 7 : 3);
     while (*start == ' ' || *start == 'N') ++start;
     char* end = nullptr;
+    errno = 0;
     const long number = std::strtol(start, &end, 10);
-    reply.resendLine = end == start ? -1 : number;
+    // -1 (no line this link sent) for a missing, negative or overflowing number: the link refuses it by name.
+    reply.resendLine = end == start || errno == ERANGE || number < 0 ? -1 : number;
   } else if (startsWith(line, "Error:") || startsWith(line, "!!")) {
     reply.text = line.substr(line[0] == 'E' ? 6 : 2);
     while (!reply.text.empty() && reply.text.front() == ' ') reply.text.erase(0, 1);
