@@ -11,6 +11,7 @@
 #include <memory>
 #include <thread>
 
+#include "api_key.h"
 #include "cli_args.h"
 #include "multidir/hardware/platform_check.h"
 #include "multidir/hardware/print_run.h"
@@ -52,8 +53,10 @@ const char* const kRunHelp =
     "                       moonraker://HOST:PORT or HOST:PORT (7125 when absent); OctoPrint at\n"
     "                       octoprint://HOST:PORT (default port 80; OctoPrint's own server uses 5000); Marlin\n"
     "                       over USB serial at serial:///dev/ttyACM0[?baud=115200]\n"
-    "  --api-key KEY        OctoPrint's API key (required: Settings > Application Keys), or Moonraker's when\n"
-    "                       its [authorization] asks for one\n"
+    "  --api-key-file FILE  the printer's API key, read from FILE (one line): OctoPrint's (required: Settings >\n"
+    "                       Application Keys), or Moonraker's when its [authorization] asks for one. Without\n"
+    "                       it, the environment variable MULTIDIR_PRINTER_API_KEY is read. Prefer either to\n"
+    "  --api-key KEY        the key itself, which is visible to every user in the process list\n"
     "  --platform HOST:PORT the platform's Modbus TCP address (rotary controller or robot)\n"
     "  --unit ID            Modbus unit id, 0..255 (default: 1 for the rotary controller, 255 for the robot)\n"
     "  --from STEP          start at this step, 1..the number of steps (default: 1)\n"
@@ -343,7 +346,8 @@ std::string howToGoOn(const hardware::PrintRun& run, const hardware::PrinterStat
 
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const ParsedArgs parsed = parseArgs(
-      args, {"--printer", "--platform", "--unit", "--api-key", "--log", "--settle", "--from"}, {"--help"}, "run");
+      args, {"--printer", "--platform", "--unit", "--api-key", "--api-key-file", "--log", "--settle", "--from"},
+      {"--help"}, "run");
   if (parsed.has("--help")) {
     out << kRunHelp;
     return kExitOk;
@@ -360,7 +364,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
         "multidir run: --platform HOST:PORT is required (the platform's Modbus TCP address, such as "
         "192.168.0.30:502). Run 'multidir help run'.");
   core::Result<std::unique_ptr<hardware::PrinterLink>> link =
-      hardware::makePrinterLinkFromUrl(parsed.value("--printer", ""), parsed.value("--api-key", ""));
+      hardware::makePrinterLinkFromUrl(parsed.value("--printer", ""), printerApiKey(parsed, "run"));
   if (!link) throw UsageError("multidir run: " + link.error().describe() + ". Run 'multidir help run'.");
   const std::string platformText = parsed.value("--platform", "");
   const std::size_t colon = platformText.rfind(':');

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "degrees_text.h"
+#include "printable_text.h"
 
 namespace multidir::hardware {
 
@@ -95,7 +96,7 @@ void PrintRun::enter(PrintRunState state, const std::string& message) {
   entry.elapsed = std::chrono::duration_cast<std::chrono::milliseconds>(m_options.steadyNow() - m_started);
   entry.step = m_step;
   entry.state = state;
-  entry.message = message;
+  entry.message = escapeControls(message);  // names and the printer's words come from outside
   m_log.push_back(entry);
   if (m_logCallback) m_logCallback(m_log.back());
 }
@@ -169,12 +170,25 @@ void PrintRun::fault(const std::string& problem) {
             advice(PrintRunAdvice::RetryStep));
 }
 
+namespace {
+
+// A state the link read but could not map (a word outside the protocol's documented set): MultiDir cannot
+// tell whether the printer's head moves, so the run stops and asks, as when the link is lost.
+std::string unknownStateText(const PrinterStatus& p) {
+  return "the printer reports a state MultiDir does not know" +
+         (p.message.empty() ? std::string() : " (" + p.message + ")");
+}
+
+}  // namespace
+
 std::string PrintRun::printerForbidsMotion() const {
   if (m_printer == nullptr) return {};
   const PrinterStatus p = m_printer->status();
   if (p.linkLost)
     return "the platform does not move while the printer's state is unknown: the link to " + m_printer->name() +
            " is lost" + (p.lastError.empty() ? std::string() : " (" + p.lastError + ")");
+  if (p.state == PrinterJobState::Unknown)
+    return "the platform does not move while " + unknownStateText(p) + "; check the printer";
   if (p.busy())
     return "the platform does not move while the printer reports a job " + std::string(printerJobStateName(p.state)) +
            (p.currentFile.empty() ? std::string() : " (" + p.currentFile + ")") +
@@ -449,6 +463,8 @@ void PrintRun::beginPrint(const PositionerSnapshot& snapshot) {
   if (p.linkLost)
     return fault("the print was not started: the link to " + m_printer->name() + " is lost" +
                  (p.lastError.empty() ? std::string() : " (" + p.lastError + ")"));
+  if (p.state == PrinterJobState::Unknown)
+    return fault("the print was not started: " + unknownStateText(p) + "; check the printer");
   if (p.busy())
     return fault("the print was not started: " + m_printer->name() + " reports a job " +
                  printerJobStateName(p.state) + " (" + p.currentFile + "); let it finish or cancel it on the printer");
@@ -509,6 +525,8 @@ void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
   // Running: only a status read after the start was answered tells about this job.
   if (p.polls <= m_pollsAtStart) return;
   const bool ours = p.currentFile == remoteName();
+  if (p.state == PrinterJobState::Unknown)
+    return interruptPrint(unknownStateText(p) + "; the printer may still be printing on its own");
   if (p.state == PrinterJobState::Error)
     return interruptPrint("the printer reports an error" + (p.message.empty() ? std::string() : ": " + p.message));
   if (p.state == PrinterJobState::Cancelled && ours)

@@ -47,13 +47,23 @@ TEST(OctoPrintStatus, EachStateStringMapsAsTheTableSays) {
       {"Opening serial connection", PrinterJobState::Standby, "connecting"},
       {"Detecting baudrate", PrinterJobState::Standby, "connecting"},
       {"Reconnecting", PrinterJobState::Standby, "connecting"},
-      {"Unknown State (42)", PrinterJobState::Standby, "offline"},
   };
   for (const MappingCase& c : cases) {
     OctoPrintJobTracker tracker;  // fresh: no job seen before
     const PrinterReading r = tracker.read(job(c.state), nullptr);
     EXPECT_EQ(r.state, c.expected) << c.state;
     EXPECT_EQ(r.firmwareState, c.firmwareState) << c.state;
+  }
+}
+
+// Issue 28: a word outside the table read as an idle printer (standby), and the run moved.
+TEST(OctoPrintStatus, AStateWordOutsideTheTableReadsUnknownNamingTheWord) {
+  for (const std::string word : {"Unknown State (42)", "Unknown", "Calibrating", ""}) {
+    OctoPrintJobTracker tracker;
+    const PrinterReading r = tracker.read(job(word), nullptr);
+    EXPECT_EQ(r.state, PrinterJobState::Unknown) << word;
+    EXPECT_EQ(r.firmwareState, "unknown") << word;
+    EXPECT_NE(r.message.find("'" + word + "'"), std::string::npos) << r.message;
   }
 }
 

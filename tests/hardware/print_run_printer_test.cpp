@@ -14,6 +14,7 @@
 #include "multidir/hardware/print_run.h"
 #include "multidir/hardware/rotary_platform.h"
 #include "printer_test_support.h"
+#include "scripted_http_server.h"
 #include "support/test_models.h"
 
 namespace multidir::hardware {
@@ -480,6 +481,72 @@ TEST(PrintRunInterlock, ThePlatformIsNotCommandedWhileThePrintersStateIsUnknown)
   ASSERT_TRUE(run.start().ok());
   EXPECT_EQ(run.state(), PrintRunState::Faulted);
   EXPECT_EQ(platform.moves, 0);
+}
+
+// Issue 28: a state word the link did not recognise counted as idle, and the run moved.
+TEST(PrintRunInterlock, ThePlatformIsNotCommandedWhileThePrinterReportsAStateMultiDirDoesNotKnow) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  printer.state.state = PrinterJobState::Unknown;  // read, but not a word of the documented set
+  printer.state.message = "Moonraker's print_stats.state 'calibrating' is not one MultiDir knows";
+  PrintRun run = oneStepRun(platform, printer);
+  ASSERT_TRUE(run.start().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
+  EXPECT_EQ(platform.moves, 0);
+  EXPECT_NE(run.lastProblem().find("the printer reports a state MultiDir does not know"), std::string::npos)
+      << run.lastProblem();
+  EXPECT_NE(run.lastProblem().find("'calibrating'"), std::string::npos) << run.lastProblem();
+}
+
+TEST(PrintRunInterlock, AStateMultiDirDoesNotKnowWhileTheRegionPrintsPausesTheRunAtOnce) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  PrintRun run = oneStepRun(platform, printer);
+  ASSERT_TRUE(run.start().ok());
+  run.tick();  // settling
+  run.tick();  // uploading
+  run.tick();  // uploaded: the start is sent
+  run.tick();  // started
+  printer.state.state = PrinterJobState::Printing;
+  printer.state.currentFile = "step-01.gcode";
+  printer.state.polls = 2;
+  run.tick();
+  ASSERT_EQ(run.state(), PrintRunState::Printing);
+  printer.state.state = PrinterJobState::Unknown;
+  printer.state.polls = 3;
+  run.tick();
+  EXPECT_EQ(run.state(), PrintRunState::Paused);
+  EXPECT_NE(run.lastProblem().find("the printer reports a state MultiDir does not know"), std::string::npos)
+      << run.lastProblem();
+  EXPECT_EQ(platform.moves, 1);
+}
+
+// The same through a real link: Moonraker answering with a job state outside the documented set.
+TEST(PrintRunInterlock, ARunWithAMoonrakerReportingAnUnknownJobStateNeverMovesThePlatform) {
+  ScriptedHttpServer server(
+      [](ScriptedConnection& c, const SeenHttpRequest&) { c.send(jsonReply(moonrakerStatusJson("calibrating", 0.0))); });
+  auto printer = moonrakerLinkTo(server.port());
+  ASSERT_TRUE(printer->connect().ok());
+  StillPositioner platform;
+  PrintRun run(platform, {{PlatformOrientation::rotary(0.0), "r1", "/tmp/step-01.gcode"}}, immediate(), printer.get());
+  ASSERT_TRUE(run.start().ok());
+  EXPECT_EQ(run.state(), PrintRunState::Faulted);
+  EXPECT_EQ(platform.moves, 0);
+  EXPECT_NE(run.lastProblem().find("'calibrating'"), std::string::npos) << run.lastProblem();
+}
+
+// Issue 28: a G-code name's control characters reached the log (and the terminal) raw.
+TEST(PrintRunInterlock, TheLogHoldsNoRawControlCharactersOfAFileName) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  PrintRun run = oneStepRun(platform, printer, "/tmp/step\r\n01\x1b[2J.gcode");
+  ASSERT_TRUE(run.start().ok());
+  run.tick();
+  run.tick();  // uploading: the log names the file
+  for (const PrintRunLogEntry& e : run.log())
+    for (const char c : e.message)
+      EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << "raw control character in: " << e.message;
+  EXPECT_TRUE(logMentions(run, R"(step\r\n01\x1b[2J.gcode)")) << wholeLog(run);
 }
 
 TEST(PrintRunInterlock, ThePrinterIsNotStartedWhileThePlatformReportsMotion) {

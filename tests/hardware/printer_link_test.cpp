@@ -155,6 +155,31 @@ TEST_P(PrinterLinkTest, AnUploadOfAMissingFileSendsNothing) {
   EXPECT_EQ(countRequests(sim->requests(), [&](const PrinterRequestRecord& r) { return isUpload(GetParam(), r); }), 0);
 }
 
+// Issue 28: a name with `"` and CR LF went unescaped into the upload's multipart header (a header of the
+// name's choosing) and into the log.
+TEST_P(PrinterLinkTest, AnUploadNamedWithAQuoteOrALineBreakIsRefusedAtOnceAndNamedEscaped) {
+  auto link = connected();
+  std::future<core::Status> uploading = link->upload(gcode, "step\"\r\nX-Injected: 1.gcode");
+  ASSERT_TRUE(readyAtOnce(uploading));
+  const core::Status uploaded = uploading.get();
+  ASSERT_FALSE(uploaded.ok());
+  EXPECT_EQ(uploaded.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_NE(messageOf(uploaded).find(R"(step"\r\nX-Injected: 1.gcode)"), std::string::npos) << messageOf(uploaded);
+  EXPECT_EQ(messageOf(uploaded).find_first_of("\r\n"), std::string::npos) << messageOf(uploaded);
+  EXPECT_EQ(countRequests(sim->requests(), [&](const PrinterRequestRecord& r) { return isUpload(GetParam(), r); }), 0);
+}
+
+TEST_P(PrinterLinkTest, AStartOfANameWithAControlCharacterIsRefusedAtOnce) {
+  auto link = connected();
+  std::future<core::Status> starting = link->startPrint("step-01\x1b[2J.gcode");
+  ASSERT_TRUE(readyAtOnce(starting));
+  const core::Status started = starting.get();
+  ASSERT_FALSE(started.ok());
+  EXPECT_EQ(started.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_NE(messageOf(started).find(R"(step-01\x1b[2J.gcode)"), std::string::npos) << messageOf(started);
+  EXPECT_EQ(countRequests(sim->requests(), [&](const PrinterRequestRecord& r) { return isStart(GetParam(), r); }), 0);
+}
+
 TEST_P(PrinterLinkTest, ThermalRunawayEndsInAnErrorWithTheFirmwaresWords) {
   startSimulator(20.0);
   auto link = connected();

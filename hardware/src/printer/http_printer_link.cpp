@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "printable_text.h"
+
 namespace multidir::hardware {
 
 using Clock = std::chrono::steady_clock;
@@ -48,7 +50,11 @@ core::Result<std::string> readFileToUpload(const std::string& localPath) {
 
 std::string plainFileNameProblem(const std::string& remoteName) {
   if (remoteName.empty() || remoteName.find('/') != std::string::npos || remoteName.find("..") != std::string::npos)
-    return "the printer's file name '" + remoteName + "' must be a plain file name";
+    return "the printer's file name '" + escapeControls(remoteName) + "' must be a plain file name";
+  if (hasControls(remoteName) || remoteName.find('"') != std::string::npos ||
+      remoteName.find('\\') != std::string::npos)
+    return "the printer's file name '" + escapeControls(remoteName) +
+           "' holds a quote, a backslash or a control character: rename the G-code file";
   return {};
 }
 
@@ -123,12 +129,18 @@ void HttpPrinterLink::disconnect() {
 std::future<core::Status> HttpPrinterLink::upload(const std::string& localPath, const std::string& remoteName) {
   if (const std::string problem = plainFileNameProblem(remoteName); !problem.empty())
     return readyStatus(invalidParameter(problem, m_name));
-  return submit("uploading " + remoteName, true, [this, localPath, remoteName](httplib::Client&) {
+  return submit("uploading " + remoteName, true, [this, localPath, remoteName](const BoundedHttpClient&) {
     const core::Result<std::string> content = readFileToUpload(localPath);
     if (!content) return core::Status(content.error());
-    auto uploader = client(m_options.uploadTimeout);
-    return postFile(*uploader, *content, remoteName);
+    return postFile(client(m_options.uploadTimeout), *content, remoteName);
   });
+}
+
+std::future<core::Status> HttpPrinterLink::startPrint(const std::string& remoteName) {
+  if (const std::string problem = plainFileNameProblem(remoteName); !problem.empty())
+    return readyStatus(invalidParameter(problem, m_name));
+  return submit("starting " + remoteName, true,
+                [this, remoteName](const BoundedHttpClient& c) { return postStart(c, remoteName); });
 }
 
 std::future<core::Status> HttpPrinterLink::emergencyStop() {
@@ -151,25 +163,17 @@ PrinterStatus HttpPrinterLink::status() const {
   std::lock_guard<std::mutex> lock(m_mutex);
   PrinterStatus s = m_status;
   s.stop = m_stop.state();
+  const auto now = m_options.steadyNow();
+  // A status read stuck longer than linkLostAfter loses the link before its deadline ends it: the last
+  // reading is not shown as live.
+  const bool readStuck = m_pollBegan && now - *m_pollBegan >= m_options.linkLostAfter;
   s.linkLost = s.polls == 0 ||
-               (s.link != LinkState::Connected && m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter);
+               ((s.link != LinkState::Connected || readStuck) && now - s.lastReply >= m_options.linkLostAfter);
   return s;
 }
 
-std::unique_ptr<httplib::Client> HttpPrinterLink::client(std::chrono::milliseconds replyTimeout) const {
-  auto c = std::make_unique<httplib::Client>(m_endpoint.host, m_endpoint.port);
-  const auto parts = [](std::chrono::milliseconds t) {
-    return std::pair<time_t, time_t>(static_cast<time_t>(t.count() / 1000),
-                                     static_cast<time_t>(t.count() % 1000) * 1000);
-  };
-  const auto connectTimeout = parts(m_options.requestTimeout);
-  const auto reply = parts(replyTimeout);
-  c->set_connection_timeout(connectTimeout.first, connectTimeout.second);
-  c->set_read_timeout(reply.first, reply.second);
-  c->set_write_timeout(reply.first, reply.second);
-  c->set_keep_alive(false);
-  if (!m_endpoint.apiKey.empty()) c->set_default_headers({{"X-Api-Key", m_endpoint.apiKey}});
-  return c;
+BoundedHttpClient HttpPrinterLink::client(std::chrono::milliseconds deadline) const {
+  return BoundedHttpClient(m_endpoint, m_options.requestTimeout, deadline);
 }
 
 std::future<core::Status> HttpPrinterLink::submit(const std::string& what, bool refusedWhileStopped, Command command) {
@@ -199,9 +203,13 @@ void HttpPrinterLink::failQueued(const core::Error& error) {
 }
 
 void HttpPrinterLink::poll() {
-  auto c = client(m_options.requestTimeout);
-  const core::Result<PrinterReading> reading = readStatus(*c);
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_pollBegan = m_options.steadyNow();
+  }
+  const core::Result<PrinterReading> reading = readStatus(client(m_options.requestTimeout));
   std::lock_guard<std::mutex> lock(m_mutex);
+  m_pollBegan.reset();
   if (!reading) {
     m_status.link =
         m_status.polls == 0 && m_status.link == LinkState::Connecting ? LinkState::Connecting : LinkState::Reconnecting;
@@ -247,8 +255,7 @@ void HttpPrinterLink::runWorker() {
       }
     }
     if (havePending) {
-      auto c = client(m_options.requestTimeout);
-      core::Status outcome = pending.command(*c);
+      core::Status outcome = pending.command(client(m_options.requestTimeout));
       if (!outcome.ok()) {
         std::lock_guard<std::mutex> lock(m_mutex);
         m_status.lastError = outcome.error().describe();
@@ -273,8 +280,7 @@ void HttpPrinterLink::runStopper() {
       if (m_threads.quitting()) return;
       generation = m_stop.take();
     }
-    auto c = client(m_options.requestTimeout);
-    const core::Status sent = sendEmergencyStop(*c);
+    const core::Status sent = sendEmergencyStop(client(m_options.requestTimeout));
     std::unique_lock<std::mutex> lock(m_mutex);
     if (sent.ok()) {  // its reply is the printer's confirmation
       m_stop.confirm(generation);

@@ -2,15 +2,16 @@
 // What every printer link over HTTP shares (Moonraker, OctoPrint): the worker thread that polls and runs the
 // queued commands in order, the thread that only sends the latched emergency stop on its own connection, the
 // command queue and the status. A protocol supplies the status read, the emergency-stop request and its
-// commands (through submit()). cpp-httplib stays in hardware/src/printer.
-#include <httplib.h>
-
+// commands (through submit()). Every request goes through a BoundedHttpClient (a total deadline, a size
+// limit); cpp-httplib stays in hardware/src/printer.
 #include <deque>
+#include <optional>
 #include <memory>
 #include <mutex>
 #include <string>
 
 #include "multidir/hardware/printer_link.h"
+#include "printer/bounded_http_client.h"
 #include "printer/latched_emergency_stop.h"
 #include "printer/printer_link_threads.h"
 
@@ -27,12 +28,6 @@ struct PrinterReading {
   HeaterReading bed;
 };
 
-struct HttpEndpoint {
-  std::string host;
-  int port = 0;
-  std::string apiKey;  // sent as X-Api-Key when not empty
-};
-
 class HttpPrinterLink : public PrinterLink {
  public:
   ~HttpPrinterLink() override;
@@ -41,31 +36,35 @@ class HttpPrinterLink : public PrinterLink {
   void disconnect() override;
   // Refuses a name that is not a plain file name, reads the file (FileNotFound), and queues postFile().
   std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override;
+  // Refuses a name that is not a plain file name, and queues postStart().
+  std::future<core::Status> startPrint(const std::string& remoteName) override;
   std::future<core::Status> emergencyStop() override;
   core::Status clearStop() override;
   PrinterStatus status() const override;
   std::string name() const override { return m_name; }
 
  protected:
-  using Command = std::function<core::Status(httplib::Client&)>;
+  using Command = std::function<core::Status(const BoundedHttpClient&)>;
 
   // name(): "<protocol> printer at HOST:PORT".
   HttpPrinterLink(const std::string& protocol, HttpEndpoint endpoint, PrinterLinkOptions options);
 
-  // Queues `command` for the worker (it gets a client with the request timeout). `what` names it in errors
+  // Queues `command` for the worker (its client's deadline is the request timeout). `what` names it in errors
   // ("uploading step-01.gcode"); refusedWhileStopped: refused at once while an emergency stop is latched.
   std::future<core::Status> submit(const std::string& what, bool refusedWhileStopped, Command command);
-  // A fresh client (no keep-alive) that waits `replyTimeout` for each reply.
-  std::unique_ptr<httplib::Client> client(std::chrono::milliseconds replyTimeout) const;
+  // A client whose every request ends by `deadline` (and connects within the request timeout).
+  BoundedHttpClient client(std::chrono::milliseconds deadline) const;
   const PrinterLinkOptions& options() const { return m_options; }
 
   // The protocol. Both run on the link's own threads, never at once with themselves. A derived class calls
   // disconnect() in its destructor, so that no thread calls them while it is destroyed.
-  virtual core::Result<PrinterReading> readStatus(httplib::Client& client) = 0;
-  virtual core::Status sendEmergencyStop(httplib::Client& client) = 0;
-  // Sends the file's bytes as `remoteName` (`uploader` waits uploadTimeout for the reply).
-  virtual core::Status postFile(httplib::Client& uploader, const std::string& content,
+  virtual core::Result<PrinterReading> readStatus(const BoundedHttpClient& client) = 0;
+  virtual core::Status sendEmergencyStop(const BoundedHttpClient& client) = 0;
+  // Sends the file's bytes as `remoteName` (`uploader`'s deadline is uploadTimeout).
+  virtual core::Status postFile(const BoundedHttpClient& uploader, const std::string& content,
                                 const std::string& remoteName) = 0;
+  // Starts the printer's job of `remoteName` (a plain file name).
+  virtual core::Status postStart(const BoundedHttpClient& client, const std::string& remoteName) = 0;
 
  private:
   struct Pending {
@@ -87,6 +86,8 @@ class HttpPrinterLink : public PrinterLink {
   PrinterLinkThreads m_threads{m_mutex};
   std::deque<Pending> m_queue;
   bool m_lastPollFailed = false;
+  // When the status read in flight began (options' clock); a read stuck past linkLostAfter is a lost link.
+  std::optional<std::chrono::steady_clock::time_point> m_pollBegan;
   PrinterStatus m_status;  // but its stop, which is m_stop's
   LatchedEmergencyStop m_stop;
 };
@@ -98,7 +99,8 @@ std::future<core::Status> readyStatus(core::Status status);
 std::string percentEncode(const std::string& text);
 // The G-code file's bytes, or FileNotFound saying to slice the job first.
 core::Result<std::string> readFileToUpload(const std::string& localPath);
-// Refuses a remote name that is not a plain file name (InvalidParameter naming `printer`); "" when fine.
+// Why a remote name is not a plain file name ("" when it is): a path, "..", a quote, a backslash or a control
+// character (shown escaped: it would end the upload's header, or add a line to the log).
 std::string plainFileNameProblem(const std::string& remoteName);
 
 // "http://HOST[:PORT]" (defaultPortWithScheme when absent), "HOST:PORT" or "HOST" (defaultPort). `scheme` is

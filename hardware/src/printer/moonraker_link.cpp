@@ -5,8 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <utility>
 
+#include "printable_text.h"
 #include "printer/http_printer_link.h"
 #include "printer/moonraker_status.h"
+#include "printer/reply_json.h"
 
 namespace multidir::hardware {
 namespace {
@@ -19,73 +21,72 @@ class MoonrakerLink : public HttpPrinterLink {
       : HttpPrinterLink("Moonraker", HttpEndpoint{settings.host, settings.port, settings.apiKey}, std::move(options)) {}
   ~MoonrakerLink() override { disconnect(); }
 
-  std::future<core::Status> startPrint(const std::string& remoteName) override {
-    return submit("starting " + remoteName, true, [this, remoteName](httplib::Client& client) {
-      return post(client, "/printer/print/start?filename=" + percentEncode(remoteName));
-    });
-  }
   std::future<core::Status> pausePrint() override {
     return submit("pausing the print", false,
-                  [this](httplib::Client& client) { return post(client, "/printer/print/pause"); });
+                  [this](const BoundedHttpClient& client) { return post(client, "/printer/print/pause"); });
   }
   std::future<core::Status> resumePrint() override {
     return submit("resuming the print", true,
-                  [this](httplib::Client& client) { return post(client, "/printer/print/resume"); });
+                  [this](const BoundedHttpClient& client) { return post(client, "/printer/print/resume"); });
   }
   std::future<core::Status> cancelPrint() override {
     return submit("cancelling the print", false,
-                  [this](httplib::Client& client) { return post(client, "/printer/print/cancel"); });
+                  [this](const BoundedHttpClient& client) { return post(client, "/printer/print/cancel"); });
   }
   // Klipper's TURN_OFF_HEATERS: every heater, whatever printer.cfg names them (M140 fails without a heater_bed).
   std::future<core::Status> switchHeatersOff() override {
-    return submit("switching the heaters off", false, [this](httplib::Client& client) {
+    return submit("switching the heaters off", false, [this](const BoundedHttpClient& client) {
       return post(client, "/printer/gcode/script?script=TURN_OFF_HEATERS");
     });
   }
 
  protected:
-  core::Result<PrinterReading> readStatus(httplib::Client& client) override {
+  core::Result<PrinterReading> readStatus(const BoundedHttpClient& client) override {
     const std::string path = "/printer/objects/query?webhooks&print_stats&virtual_sdcard&extruder&heater_bed";
-    const core::Result<Json> answered = reply(client.Get(path.c_str()), "GET " + path);
+    const core::Result<Json> answered = reply(client.get(path, name()), "GET " + path);
     if (!answered) return answered.error();
     return readMoonrakerStatus(*answered, name());
   }
-  core::Status sendEmergencyStop(httplib::Client& client) override { return post(client, "/printer/emergency_stop"); }
+  core::Status sendEmergencyStop(const BoundedHttpClient& client) override { return post(client, "/printer/emergency_stop"); }
+  core::Status postStart(const BoundedHttpClient& client, const std::string& remoteName) override {
+    return post(client, "/printer/print/start?filename=" + percentEncode(remoteName));
+  }
 
  private:
   // The reply's "result" (Moonraker wraps every successful reply in {"result": ...}), or the error.
-  core::Result<Json> reply(const httplib::Result& res, const std::string& request) const {
-    if (!res)
+  core::Result<Json> reply(const core::Result<HttpReply>& res, const std::string& request) const {
+    if (!res) {
+      if (res.error().code != core::ErrorCode::DeviceUnreachable)
+        return core::Error{res.error().code, "the reply to " + request + " was refused: " + res.error().message, name()};
       return core::Error{core::ErrorCode::DeviceUnreachable,
-                         "no answer to " + request + " (" + httplib::to_string(res.error()) +
+                         "no answer to " + request + " (" + res.error().message +
                              "): check that Moonraker runs, the address and the network",
                          name()};
-    Json body = Json::parse(res->body, nullptr, false);
+    }
+    const core::Result<Json> body = parseReplyJson(res->body, request, ": is this Moonraker's address?", name());
     if (res->status < 200 || res->status >= 300) {
       std::string message = "HTTP " + std::to_string(res->status);
-      if (!body.is_discarded() && body.contains("error") && body["error"].is_object() &&
-          body["error"].contains("message") && body["error"]["message"].is_string())
-        message += ": " + body["error"]["message"].get<std::string>();
+      if (body && body->is_object() && body->contains("error") && (*body)["error"].is_object() &&
+          (*body)["error"].contains("message") && (*body)["error"]["message"].is_string())
+        message += ": " + escapeControls((*body)["error"]["message"].get<std::string>());
       return core::Error{core::ErrorCode::DeviceFault, "the printer refused " + request + " (" + message + ")", name()};
     }
-    if (body.is_discarded())
-      return core::Error{core::ErrorCode::DeviceFault,
-                         "the reply to " + request + " is not JSON: is this Moonraker's address?", name()};
-    if (body.is_object() && body.contains("result")) return body["result"];
+    if (!body) return body.error();
+    if (body->is_object() && body->contains("result")) return (*body)["result"];
     return body;  // Moonraker before 2021 answered uploads without the wrapper
   }
 
-  core::Status post(httplib::Client& client, const std::string& path) const {
-    const core::Result<Json> answered = reply(client.Post(path.c_str()), "POST " + path);
+  core::Status post(const BoundedHttpClient& client, const std::string& path) const {
+    const core::Result<Json> answered = reply(client.post(path, "", "", name()), "POST " + path);
     if (!answered) return answered.error();
     return core::Done{};
   }
 
-  core::Status postFile(httplib::Client& uploader, const std::string& content, const std::string& remoteName) override {
-    const httplib::MultipartFormDataItems items = {{"file", content, remoteName, "application/octet-stream"},
-                                                   {"root", "gcodes", "", ""}};
+  core::Status postFile(const BoundedHttpClient& uploader, const std::string& content, const std::string& remoteName) override {
+    const std::vector<FormPart> parts = {{"file", content, remoteName, "application/octet-stream"},
+                                         {"root", "gcodes", "", ""}};
     const core::Result<Json> answered =
-        reply(uploader.Post("/server/files/upload", items), "POST /server/files/upload (" + remoteName + ")");
+        reply(uploader.postForm("/server/files/upload", parts, name()), "POST /server/files/upload (" + remoteName + ")");
     if (!answered) return answered.error();
     const Json& result = *answered;
     if (!result.is_object() || !result.contains("item") || !result["item"].is_object())

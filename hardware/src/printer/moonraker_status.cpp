@@ -1,5 +1,7 @@
 #include "printer/moonraker_status.h"
 
+#include "printable_text.h"
+
 namespace multidir::hardware {
 namespace {
 
@@ -42,9 +44,14 @@ core::Result<PrinterReading> readMoonrakerStatus(const nlohmann::json& result, c
                        printer};
   const nlohmann::json& status = result["status"];
   PrinterReading r;
-  r.state = parsePrinterJobState(text(status["print_stats"], "state"));
+  const std::string state = text(status["print_stats"], "state");
+  r.state = parsePrinterJobState(state);
   r.currentFile = text(status["print_stats"], "filename");
   r.message = text(status["print_stats"], "message");
+  // A word outside the documented set: the run stops and asks (it never takes it for an idle printer).
+  if (r.state == PrinterJobState::Unknown)
+    r.message = "Moonraker's print_stats.state '" + escapeControls(state) +
+                "' is not one MultiDir knows (standby, printing, paused, complete, cancelled, error)";
   if (status.contains("webhooks")) {
     r.firmwareState = text(status["webhooks"], "state");
     if (r.firmwareState != "ready" && !text(status["webhooks"], "state_message").empty())

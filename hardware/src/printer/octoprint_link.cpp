@@ -5,8 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <utility>
 
+#include "printable_text.h"
 #include "printer/http_printer_link.h"
 #include "printer/octoprint_status.h"
+#include "printer/reply_json.h"
 
 namespace multidir::hardware {
 namespace {
@@ -16,11 +18,12 @@ using Json = nlohmann::json;
 constexpr int kConflict = 409;  // OctoPrint: the printer is not operational, or the job is not in a state for it
 
 // OctoPrint's own words from an error reply: {"error": "..."} (its API's JSON errors), else a short plain body.
-std::string octoPrintWords(const httplib::Response& res) {
-  const Json body = Json::parse(res.body, nullptr, false);
-  if (!body.is_discarded() && body.is_object() && body.contains("error") && body["error"].is_string())
-    return body["error"].get<std::string>();
-  if (!res.body.empty() && res.body.size() <= 200 && res.body.find('<') == std::string::npos) return res.body;
+std::string octoPrintWords(const HttpReply& res) {
+  const core::Result<Json> body = parseReplyJson(res.body, "", "", "");
+  if (body && body->is_object() && body->contains("error") && (*body)["error"].is_string())
+    return escapeControls((*body)["error"].get<std::string>());
+  if (!res.body.empty() && res.body.size() <= 200 && res.body.find('<') == std::string::npos)
+    return escapeControls(res.body);
   return {};
 }
 
@@ -30,40 +33,34 @@ class OctoPrintLink : public HttpPrinterLink {
       : HttpPrinterLink("OctoPrint", HttpEndpoint{settings.host, settings.port, settings.apiKey}, std::move(options)) {}
   ~OctoPrintLink() override { disconnect(); }
 
-  std::future<core::Status> startPrint(const std::string& remoteName) override {
-    return submit("starting " + remoteName, true, [this, remoteName](httplib::Client& client) {
-      return postJson(client, "/api/files/local/" + percentEncode(remoteName),
-                      {{"command", "select"}, {"print", true}});
-    });
-  }
   std::future<core::Status> pausePrint() override {
-    return submit("pausing the print", false, [this](httplib::Client& client) {
+    return submit("pausing the print", false, [this](const BoundedHttpClient& client) {
       return postJson(client, "/api/job", {{"command", "pause"}, {"action", "pause"}});
     });
   }
   std::future<core::Status> resumePrint() override {
-    return submit("resuming the print", true, [this](httplib::Client& client) {
+    return submit("resuming the print", true, [this](const BoundedHttpClient& client) {
       return postJson(client, "/api/job", {{"command", "pause"}, {"action", "resume"}});
     });
   }
   std::future<core::Status> cancelPrint() override {
-    return submit("cancelling the print", false, [this](httplib::Client& client) {
+    return submit("cancelling the print", false, [this](const BoundedHttpClient& client) {
       return postJson(client, "/api/job", {{"command", "cancel"}});
     });
   }
   std::future<core::Status> switchHeatersOff() override {
-    return submit("switching the heaters off", false, [this](httplib::Client& client) {
+    return submit("switching the heaters off", false, [this](const BoundedHttpClient& client) {
       return postJson(client, "/api/printer/command", {{"commands", {"M104 S0", "M140 S0"}}});
     });
   }
 
  protected:
-  core::Result<PrinterReading> readStatus(httplib::Client& client) override {
-    const core::Result<Json> job = reply(client.Get("/api/job"), "GET /api/job");
+  core::Result<PrinterReading> readStatus(const BoundedHttpClient& client) override {
+    const core::Result<Json> job = reply(client.get("/api/job", name()), "GET /api/job");
     if (!job) return job.error();
     const core::Result<OctoPrintJobReading> jobReading = readOctoPrintJob(*job, name());
     if (!jobReading) return jobReading.error();
-    const httplib::Result printerReply = client.Get("/api/printer?exclude=sd");
+    const core::Result<HttpReply> printerReply = client.get("/api/printer?exclude=sd", name());
     if (printerReply && printerReply->status == kConflict) return m_tracker.read(*jobReading, nullptr);
     const core::Result<Json> printer = reply(printerReply, "GET /api/printer");
     if (!printer) return printer.error();
@@ -75,21 +72,26 @@ class OctoPrintLink : public HttpPrinterLink {
   // OctoPrint sends M112 ahead of its queue and then closes the serial port. A 409 means OctoPrint has no
   // connection to the printer (it already closed it, after an error or an earlier M112): nothing prints
   // through it, so the stop counts as answered.
-  core::Status sendEmergencyStop(httplib::Client& client) override {
-    const httplib::Result res =
-        client.Post("/api/printer/command", Json{{"commands", {"M112"}}}.dump(), "application/json");
+  core::Status sendEmergencyStop(const BoundedHttpClient& client) override {
+    const core::Result<HttpReply> res =
+        client.post("/api/printer/command", Json{{"commands", {"M112"}}}.dump(), "application/json", name());
     if (res && res->status == kConflict) return core::Done{};
     const core::Result<Json> answered = reply(res, "POST /api/printer/command (M112)");
     if (!answered) return answered.error();
     return core::Done{};
   }
+  core::Status postStart(const BoundedHttpClient& client, const std::string& remoteName) override {
+    return postJson(client, "/api/files/local/" + percentEncode(remoteName), {{"command", "select"}, {"print", true}});
+  }
 
  private:
   // The reply's JSON (null for 204 No Content), or the error.
-  core::Result<Json> reply(const httplib::Result& res, const std::string& request) const {
+  core::Result<Json> reply(const core::Result<HttpReply>& res, const std::string& request) const {
+    if (!res && res.error().code != core::ErrorCode::DeviceUnreachable)
+      return core::Error{res.error().code, "the reply to " + request + " was refused: " + res.error().message, name()};
     if (!res)
       return core::Error{core::ErrorCode::DeviceUnreachable,
-                         "no answer to " + request + " (" + httplib::to_string(res.error()) +
+                         "no answer to " + request + " (" + res.error().message +
                              "): check that OctoPrint runs, the address and port (80 on OctoPi, 5000 for "
                              "OctoPrint's own server) and the network",
                          name()};
@@ -100,7 +102,7 @@ class OctoPrintLink : public HttpPrinterLink {
                              (words.empty() ? std::string() : ": " + words) +
                              "): the API key is wrong, or its user lacks the permission (status, control, upload, "
                              "print); copy a key from OctoPrint's Settings > Application Keys (or User Settings > "
-                             "Application Keys) and pass it with --api-key",
+                             "Application Keys) and give it in a file with --api-key-file (or in MULTIDIR_PRINTER_API_KEY)",
                          name()};
     if (res->status == kConflict)
       return core::Error{core::ErrorCode::DeviceFault,
@@ -114,26 +116,22 @@ class OctoPrintLink : public HttpPrinterLink {
                              (words.empty() ? std::string() : ": " + words) + ")",
                          name()};
     if (res->status == 204 || res->body.empty()) return Json(nullptr);
-    Json body = Json::parse(res->body, nullptr, false);
-    if (body.is_discarded())
-      return core::Error{core::ErrorCode::DeviceFault,
-                         "the reply to " + request + " is not JSON: is this OctoPrint's address?", name()};
-    return body;
+    return parseReplyJson(res->body, request, ": is this OctoPrint's address?", name());
   }
 
-  core::Status postJson(httplib::Client& client, const std::string& path, const Json& body) const {
+  core::Status postJson(const BoundedHttpClient& client, const std::string& path, const Json& body) const {
     const core::Result<Json> answered =
-        reply(client.Post(path.c_str(), body.dump(), "application/json"), "POST " + path + " " + body.dump());
+        reply(client.post(path, body.dump(), "application/json", name()), "POST " + path + " " + body.dump());
     if (!answered) return answered.error();
     return core::Done{};
   }
 
-  core::Status postFile(httplib::Client& uploader, const std::string& content, const std::string& remoteName) override {
-    const httplib::MultipartFormDataItems items = {{"file", content, remoteName, "application/octet-stream"},
-                                                   {"select", "false", "", ""},
-                                                   {"print", "false", "", ""}};
+  core::Status postFile(const BoundedHttpClient& uploader, const std::string& content, const std::string& remoteName) override {
+    const std::vector<FormPart> parts = {{"file", content, remoteName, "application/octet-stream"},
+                                         {"select", "false", "", ""},
+                                         {"print", "false", "", ""}};
     const core::Result<Json> answered =
-        reply(uploader.Post("/api/files/local", items), "POST /api/files/local (" + remoteName + ")");
+        reply(uploader.postForm("/api/files/local", parts, name()), "POST /api/files/local (" + remoteName + ")");
     if (!answered) return answered.error();
     const Json& result = *answered;
     if (!result.is_object() || !result.contains("files") || !result["files"].is_object() ||
@@ -159,8 +157,8 @@ core::Result<std::unique_ptr<PrinterLink>> makeOctoPrintLink(const OctoPrintSett
   if (settings.apiKey.empty())
     return invalidParameter(
         "OctoPrint needs an API key: create one in OctoPrint's Settings > Application Keys (or User Settings > "
-        "Application Keys) and pass it with --api-key",
-        "--api-key");
+        "Application Keys) and give it in a file with --api-key-file (or in MULTIDIR_PRINTER_API_KEY)",
+        "--api-key-file");
   return std::unique_ptr<PrinterLink>(std::make_unique<OctoPrintLink>(settings, options));
 }
 

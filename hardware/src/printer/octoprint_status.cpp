@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "printable_text.h"
+
 namespace multidir::hardware {
 namespace {
 
@@ -27,7 +29,7 @@ HeaterReading heater(const Json& temperature, const char* name) {
 
 bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
-enum class Kind { Active, Paused, Operational, Error, Offline, Connecting };
+enum class Kind { Active, Paused, Operational, Error, Offline, Connecting, Unknown };
 
 // OctoPrint's state strings (comm.py, MachineCom.getStateString): anything printing or about to (starting,
 // finishing, pausing, resuming, cancelling, SD transfers) keeps the job active.
@@ -36,7 +38,7 @@ Kind kindOf(const std::string& state) {
   if (state == "Operational") return Kind::Operational;
   if (startsWith(state, "Error") || startsWith(state, "Offline after error") || startsWith(state, "Offline (Error"))
     return Kind::Error;
-  if (state == "Offline" || state == "Closed" || state == "Unknown") return Kind::Offline;
+  if (state == "Offline" || state == "Closed") return Kind::Offline;
   if (startsWith(state, "Opening") || startsWith(state, "Detecting") || startsWith(state, "Connecting") ||
       state == "Reconnecting")
     return Kind::Connecting;
@@ -44,7 +46,9 @@ Kind kindOf(const std::string& state) {
                                         "Cancelling", "Starting", "Sending file to SD", "Transferring file to SD"};
   for (const char* active : kActive)
     if (startsWith(state, active)) return Kind::Active;
-  return Kind::Offline;  // an unknown word: not connected as far as MultiDir can tell (nothing is started)
+  // A word outside the table (OctoPrint's own "Unknown" among them): the run stops and asks; it never takes
+  // it for an idle printer.
+  return Kind::Unknown;
 }
 
 }  // namespace
@@ -117,6 +121,11 @@ PrinterReading OctoPrintJobTracker::read(const OctoPrintJobReading& job, const O
                   "): connect it in OctoPrint's Connection panel";
       m_activeFile.clear();
       return r;
+    case Kind::Unknown:
+      r.state = PrinterJobState::Unknown;
+      r.firmwareState = "unknown";
+      r.message = "OctoPrint's state '" + escapeControls(job.stateText) + "' is not one MultiDir knows";
+      return r;  // the job seen active stays so: nothing tells that it ended
     case Kind::Operational:
       break;
   }

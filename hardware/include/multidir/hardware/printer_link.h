@@ -28,7 +28,8 @@
 namespace multidir::hardware {
 
 // The printer's job, in Klipper's print_stats.state words (OctoPrint's states are mapped onto them: see
-// docs/hardware.md, "OctoPrint"). Unknown until the first good status read.
+// docs/hardware.md, "OctoPrint"). Unknown until the first good status read, and whenever the printer reports
+// a word outside the protocol's documented set (the message names it): the print run then stops and asks.
 enum class PrinterJobState { Unknown, Standby, Printing, Paused, Complete, Cancelled, Error };
 
 // "unknown", "standby", "printing", "paused", "complete", "cancelled", "error".
@@ -41,7 +42,8 @@ struct HeaterReading {
 
 struct PrinterStatus {
   LinkState link = LinkState::Disconnected;
-  // No good status read for PrinterLinkOptions::linkLostAfter (or none yet since connect()): every value below
+  // No good status read for PrinterLinkOptions::linkLostAfter, as the last read failed or is still stuck (or
+  // none yet since connect()): every value below
   // is the last one read and may be stale; the printer may still be printing on its own.
   bool linkLost = true;
   PrinterJobState state = PrinterJobState::Unknown;
@@ -65,7 +67,9 @@ struct PrinterStatus {
 
 struct PrinterLinkOptions {
   std::chrono::milliseconds pollInterval{250};
-  std::chrono::milliseconds requestTimeout{2000};  // connect, and each reply (uploads get uploadTimeout)
+  // Each request's total deadline: connect, send and the whole reply, however slowly it trickles in (an
+  // upload's is uploadTimeout). Replies are limited to 1 MiB and 64 levels of JSON (docs/hardware.md).
+  std::chrono::milliseconds requestTimeout{2000};
   std::chrono::milliseconds uploadTimeout{120000};
   std::chrono::milliseconds linkLostAfter{3000};     // no good status read this long: PrinterStatus::linkLost
   std::chrono::milliseconds stopRetryInterval{100};  // an unanswered emergency stop is resent this often
