@@ -15,7 +15,7 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DMULTIDIR_BUILD_GUI=OFF -DMULTIDIR_BUILD_TESTS=OFF -DMULTIDIR_BUILD_BENCH=OFF \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" >/dev/null
 
-all=(mesh_loader plan_loader project_loader machine_profile printer_profile marlin_reply)
+all=(mesh_loader plan_loader project_loader machine_profile printer_profile marlin_reply printer_reply)
 names=("$@")
 [ ${#names[@]} -eq 0 ] && names=("${all[@]}")
 targets=()

@@ -1,5 +1,5 @@
 // libFuzzer harness for Marlin's replies: every line a printer (or line noise) can write is parsed without
-// crashing, a resend names a line number or none (-1), and a temperature read from it is a finite number.
+// crashing, a resend names a line number or none (-1), and a temperature read from it is one a sensor can read.
 // Build and run: docs/robustness.md ("Fuzzing").
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include "fuzz/fuzz_input_file.h"
 #include "printer/marlin_protocol.h"
+#include "printer/plausible_reading.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
@@ -19,8 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (reply.kind == multidir::hardware::marlin::Reply::Kind::Resend && reply.resendLine < -1)
       broken = "a resend naming a negative line";
     for (const auto& heater : {reply.extruder, reply.bed})
-      if (heater && !(std::isfinite(heater->actualC) && std::isfinite(heater->targetC)))
-        broken = "a temperature that is not finite";
+      if (heater && !(multidir::hardware::plausibleCelsius(heater->actualC) && multidir::hardware::plausibleCelsius(heater->targetC)))
+        broken = "a temperature no sensor reads";
     multidir::fuzz::requirePromise(broken, "marlin::parseReply");
     start = end + 1;
   }

@@ -1,11 +1,11 @@
 #include "printer/marlin_protocol.h"
 
 #include <cerrno>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
 
 #include "multidir/hardware/marlin_link.h"
+#include "printer/plausible_reading.h"
 
 namespace multidir::hardware {
 
@@ -23,13 +23,8 @@ std::string marlinNumberedLine(long number, const std::string& command) {
 namespace marlin {
 namespace {
 
-constexpr double kMaxPlausibleCelsius = 2000.0;
 
 bool startsWith(const std::string& text, const char* prefix) { return text.rfind(prefix, 0) == 0; }
-
-// A temperature a thermistor can report: finite and within what any printer's sensor reads (Marlin writes
-// -14 for an open thermistor and a few hundred for a short). Line noise like "T:nan" or "T:1e308" is no reading.
-bool plausibleCelsius(double value) { return std::isfinite(value) && std::fabs(value) < kMaxPlausibleCelsius; }
 
 // "T:210.0 /215.0" at `key` ("T:" or "B:") as a word of its own (not "T0:" nor "B@:").
 std::optional<HeaterReading> heater(const std::string& line, const char* key) {
@@ -42,6 +37,7 @@ std::optional<HeaterReading> heater(const std::string& line, const char* key) {
   const char* start = line.c_str() + at + std::strlen(key);
   char* end = nullptr;
   const double actual = std::strtod(start, &end);
+  // Line noise like "T:nan" or "T:1e308" is no reading (plausible_reading.h).
   if (end == start || !plausibleCelsius(actual)) return std::nullopt;
   HeaterReading reading;
   reading.actualC = actual;

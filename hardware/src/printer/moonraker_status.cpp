@@ -1,6 +1,10 @@
 #include "printer/moonraker_status.h"
 
+#include <algorithm>
+#include <utility>
+
 #include "printable_text.h"
+#include "printer/plausible_reading.h"
 
 namespace multidir::hardware {
 namespace {
@@ -15,11 +19,15 @@ std::string text(const nlohmann::json& object, const char* key) {
   return object[key].get<std::string>();
 }
 
-HeaterReading heater(const nlohmann::json& status, const char* name) {
+core::Result<HeaterReading> heater(const nlohmann::json& status, const char* name, const std::string& printer) {
   HeaterReading reading;
   if (!status.contains(name)) return reading;
   reading.actualC = number(status[name], "temperature");
   reading.targetC = number(status[name], "target");
+  for (const auto& [field, value] : {std::pair{".temperature", reading.actualC}, std::pair{".target", reading.targetC}})
+    if (!plausibleCelsius(value))
+      return core::Error{core::ErrorCode::DeviceFault, implausibleCelsiusMessage(name + std::string(field), value),
+                         printer};
   return reading;
 }
 
@@ -57,9 +65,14 @@ core::Result<PrinterReading> readMoonrakerStatus(const nlohmann::json& result, c
     if (r.firmwareState != "ready" && !text(status["webhooks"], "state_message").empty())
       r.message = text(status["webhooks"], "state_message");
   }
-  if (status.contains("virtual_sdcard")) r.progress = number(status["virtual_sdcard"], "progress");
-  r.extruder = heater(status, "extruder");
-  r.bed = heater(status, "heater_bed");
+  // A fraction of the file: anything outside [0, 1] is a broken server's, never shown as more than done.
+  if (status.contains("virtual_sdcard")) r.progress = std::clamp(number(status["virtual_sdcard"], "progress"), 0.0, 1.0);
+  const auto extruder = heater(status, "extruder", printer);
+  if (!extruder) return extruder.error();
+  const auto bed = heater(status, "heater_bed", printer);
+  if (!bed) return bed.error();
+  r.extruder = *extruder;
+  r.bed = *bed;
   return r;
 }
 

@@ -1,8 +1,10 @@
 #include "printer/octoprint_status.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "printable_text.h"
+#include "printer/plausible_reading.h"
 
 namespace multidir::hardware {
 namespace {
@@ -64,7 +66,8 @@ core::Result<OctoPrintJobReading> readOctoPrintJob(const Json& reply, const std:
     r.file = text(reply["job"]["file"], "name");
   if (reply.contains("progress") && reply["progress"].is_object() && reply["progress"].contains("completion") &&
       reply["progress"]["completion"].is_number())
-    r.completion = reply["progress"]["completion"].get<double>();
+    // A percentage: a broken server's 1e308 is never shown as more than done.
+    r.completion = std::clamp(reply["progress"]["completion"].get<double>(), 0.0, 100.0);
   return r;
 }
 
@@ -80,6 +83,11 @@ core::Result<OctoPrintPrinterReading> readOctoPrintPrinter(const Json& reply, co
   if (reply.contains("temperature")) {
     r.tool0 = heater(reply["temperature"], "tool0");
     r.bed = heater(reply["temperature"], "bed");
+    for (const auto& [field, value] :
+         {std::pair{"temperature.tool0.actual", r.tool0.actualC}, std::pair{"temperature.tool0.target", r.tool0.targetC},
+          std::pair{"temperature.bed.actual", r.bed.actualC}, std::pair{"temperature.bed.target", r.bed.targetC}})
+      if (!plausibleCelsius(value))
+        return core::Error{core::ErrorCode::DeviceFault, implausibleCelsiusMessage(field, value), printer};
   }
   return r;
 }
