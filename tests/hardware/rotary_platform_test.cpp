@@ -304,6 +304,35 @@ TEST_F(RotaryPlatformTest, LatchedStopIsWrittenAgainAfterEveryReconnect) {
   EXPECT_TRUE(platform->status().stop.confirmed);
 }
 
+// Issue 28: a stop answered with a Modbus exception (busy) was never written again: the latch stayed
+// unconfirmed with 0 writes and the platform finished its move from 10 to 40 degrees.
+TEST_F(RotaryPlatformTest, StopRefusedAsBusyIsWrittenAgainUntilTheControllerTakesItAndThePlatformStops) {
+  options.speedDegreesPerSecond = 10.0;  // 10 -> 40 degrees takes 3 s
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->moveTo(10.0)).ok());
+  ASSERT_TRUE(eventually([&] { return platform->reached(10.0); }));
+  ASSERT_TRUE(outcome(platform->moveTo(40.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  sim.refuseStops(SimulatedDevice::Rotary, 6, 3);  // busy, three times
+
+  const core::Status first = outcome(platform->stop());  // the device's first answer: busy
+  ASSERT_FALSE(first.ok());
+  EXPECT_NE(first.error().message.find("Modbus exception 6"), std::string::npos) << first.error().message;
+  EXPECT_NE(first.error().message.find("writes it again"), std::string::npos) << first.error().message;
+  ASSERT_TRUE(eventually([&] { return platform->status().stop.confirmed; })) << platform->status().stop.problem;
+  EXPECT_EQ(platform->status().stop.writes, 1u);
+  EXPECT_FALSE(sim.rotaryState().moving);
+  const double stoppedAt = sim.rotaryState().angleDegrees;
+  EXPECT_LT(stoppedAt, 39.0);
+  int stops = 0;
+  for (const SimulatedCommandRecord& record : sim.commandLog()) stops += record.command == 5 ? 1 : 0;
+  EXPECT_EQ(stops, 4);  // three refused, the fourth taken, and none after the device confirmed it
+  const auto polls = platform->status().polls;
+  ASSERT_TRUE(eventually([&] { return platform->status().polls > polls + 20; }));
+  EXPECT_DOUBLE_EQ(sim.rotaryState().angleDegrees, stoppedAt);
+  EXPECT_FALSE(outcome(platform->moveTo(20.0)).ok());  // still latched
+}
+
 TEST_F(RotaryPlatformTest, EmergencyStopIsNotDowngradedByALaterStop) {
   auto platform = homed();
   ASSERT_TRUE(outcome(platform->emergencyStop()).ok());

@@ -107,6 +107,11 @@ class DeviceSimulator {
   void setReplyDelay(std::chrono::milliseconds delay);
   // Answers every request to `device` with this Modbus exception code (1..11; 0: answer normally).
   void setExceptionReply(SimulatedDevice device, int exceptionCode);
+  // Answers the next `count` writes of a stop or e-stop command to `device` (rotary COMMAND 5 or 6, robot
+  // COMMAND 2 or 3) with this Modbus exception code (6 busy, 4 device failure...) and takes none of them, as a
+  // controller busy in a state change or a gateway with a failing link would; later ones are taken. Each is
+  // still in commandLog().
+  void refuseStops(SimulatedDevice device, int exceptionCode, int count);
   // The rotary motor stops turning although the controller believes it moves.
   void setMotorStuck(bool stuck);
   // The device stops answering heartbeats: the rotary controller freezes its HEARTBEAT_ECHO, the robot
