@@ -183,6 +183,30 @@ TEST_F(RobotArmTest, EmergencyStopRefusedWithAnExceptionIsWrittenAgainUntilThePr
   EXPECT_EQ(arm->status().stop.kind, StopKind::EmergencyStop);
 }
 
+// Issue 28: one controller at a time, the arm's program too; its halt is still taken from anyone.
+TEST_F(RobotArmTest, ASecondDriverIsRefusedControlOfTheArmAndItsEmergencyStopIsStillHonoured) {
+  options.speedPercent = 5;  // 18 degrees/s: 0 -> 60 takes 3.3 s
+  auto first = connected();
+  const std::uint16_t holder = first->status().control.session;
+  ASSERT_TRUE(first->status().control.held());
+  ASSERT_TRUE(outcome(first->moveTo(60.0, 0.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));
+
+  RobotArm second(options);
+  const core::Status refused = second.connect();
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("is controlled by another run (" + controlSessionText(holder) + ")"),
+            std::string::npos)
+      << refused.error().message;
+  EXPECT_EQ(sim.robotState().controlOwner, holder);
+
+  const core::Status stopped = outcome(second.emergencyStop());
+  ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 5; }));  // halted
+  EXPECT_LT(sim.robotState().tiltDegrees, 50.0);
+  EXPECT_EQ(sim.robotState().controlOwner, holder);
+}
+
 TEST_F(RobotArmTest, ExceptionReplyFromTheRobotIsReported) {
   auto arm = connected();
   sim.setExceptionReply(SimulatedDevice::Robot, 2);

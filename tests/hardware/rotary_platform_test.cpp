@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "hardware_test_support.h"
+#include "raw_modbus_client.h"
 
 namespace multidir::hardware {
 namespace {
@@ -339,6 +340,83 @@ TEST_F(RotaryPlatformTest, EmergencyStopIsNotDowngradedByALaterStop) {
   ASSERT_TRUE(outcome(platform->stop()).ok());
   EXPECT_EQ(platform->status().stop.kind, StopKind::EmergencyStop);
   EXPECT_EQ(sim.rotaryState().faultCode, 5);
+}
+
+// Issue 28: nothing gave one run sole control of the platform: a second `multidir run` turned it 40 degrees
+// while the first one printed.
+TEST_F(RotaryPlatformTest, ASecondDriverIsRefusedControlWhileTheFirstHoldsThePlatformAndNothingMoves) {
+  auto first = homed();
+  ASSERT_TRUE(first->status().control.held());
+  const std::uint16_t holder = first->status().control.session;
+  EXPECT_EQ(sim.rotaryState().controlOwner, holder);
+  const auto writes = sim.commandWriteCount(SimulatedDevice::Rotary);
+
+  RotaryPlatform second(options);
+  const core::Status refused = second.connect();
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("is controlled by another run (" + controlSessionText(holder) + ")"),
+            std::string::npos)
+      << refused.error().message;
+  EXPECT_NE(refused.error().message.find("stop that run first"), std::string::npos) << refused.error().message;
+  EXPECT_NE(second.status().link, LinkState::Connected);
+  EXPECT_FALSE(outcome(second.moveTo(40.0)).ok());
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), writes);  // nothing but claims reached the device
+  EXPECT_EQ(sim.rotaryState().controlOwner, holder);
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 0.0, 1e-9);
+
+  ASSERT_TRUE(outcome(first->moveTo(20.0)).ok());  // the holder goes on as before
+  EXPECT_TRUE(eventually([&] { return first->reached(20.0); }));
+}
+
+TEST_F(RotaryPlatformTest, EmergencyStopFromASecondDriverIsHonouredWhileTheFirstHoldsThePlatform) {
+  options.speedDegreesPerSecond = 10.0;  // 0 -> 40 degrees takes 4 s
+  auto first = homed();
+  ASSERT_TRUE(outcome(first->moveTo(40.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  RotaryPlatform second(options);
+  ASSERT_FALSE(second.connect().ok());
+
+  const core::Status stopped = outcome(second.emergencyStop());
+  ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
+  EXPECT_TRUE(second.status().stop.confirmed);
+  const SimulatedRotaryState state = sim.rotaryState();
+  EXPECT_FALSE(state.moving);
+  EXPECT_EQ(state.faultCode, 5);
+  EXPECT_LT(state.angleDegrees, 39.0);
+  EXPECT_EQ(state.controlOwner, first->status().control.session);  // stopping takes nobody's control
+}
+
+TEST_F(RotaryPlatformTest, DisconnectGivesControlBackSoTheNextDriverGetsIt) {
+  auto first = connected();
+  first->disconnect();
+  EXPECT_EQ(sim.rotaryState().controlOwner, 0);
+  RotaryPlatform second(options);
+  ASSERT_TRUE(second.connect().ok());
+  EXPECT_TRUE(second.status().control.held());
+  EXPECT_EQ(sim.rotaryState().controlOwner, second.status().control.session);
+}
+
+// A run that died (or lost its link) without giving control back: the lock lapses after the controller's
+// timeout, and a driver refused meanwhile takes control on its own next attempt.
+TEST_F(RotaryPlatformTest, ControlOfASessionThatFellSilentLapsesAndARefusedDriverThenTakesIt) {
+  SimulatorOptions shortLock;
+  shortLock.controlTimeout = 300ms;
+  DeviceSimulator lapsing(shortLock);
+  ASSERT_TRUE(lapsing.start().ok());
+  options.connection = fastSettings(lapsing.port(), 1);
+  RawClient dead(lapsing.port());  // claims control as session 1234, then writes nothing more
+  ASSERT_TRUE(dead.send(mbapFrame(1, 1, writePdu(7, {0x1234}))));  // CLAIM
+  ASSERT_TRUE(dead.readFrame().has_value());
+  ASSERT_EQ(lapsing.rotaryState().controlOwner, 0x1234);
+
+  RotaryPlatform platform(options);
+  const core::Status refused = platform.connect();
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("(session 1234)"), std::string::npos) << refused.error().message;
+  ASSERT_TRUE(eventually([&] { return platform.status().link == LinkState::Connected; }, 5000ms))
+      << platform.status().lastError;
+  EXPECT_TRUE(platform.status().control.held());
+  EXPECT_EQ(lapsing.rotaryState().controlOwner, platform.status().control.session);
 }
 
 TEST_F(RotaryPlatformTest, BadOptionsAreRefusedWithoutStartingAnything) {

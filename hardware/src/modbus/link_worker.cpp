@@ -360,6 +360,7 @@ void LinkWorker::run() {
     }
     waitUntil(std::min({nextPoll, nextHeartbeat, stopRetryAt}), true);
   }
+  if (m_port.isOpen() && m_hooks.beforeClose) m_hooks.beforeClose(m_port);
   m_port.close();
   {
     std::lock_guard<std::mutex> lock(m_mutex);

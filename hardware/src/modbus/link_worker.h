@@ -34,6 +34,7 @@ struct LinkHooks {
   std::function<core::Status(ModbusPort&)> heartbeat;    // write the heartbeat
   std::function<void(LinkState, const std::string& problem)> linkChanged;
   std::function<void()> stopLatchChanged;  // after a latched stop was written or failed
+  std::function<void(ModbusPort&)> beforeClose;  // stop(): the link is up for one last request (give control back)
 };
 
 class LinkWorker {

@@ -59,6 +59,8 @@ class DeviceSimulator::Impl {
       return invalid("maximal clients", "must be between 1 and 1000");
     if (m_options.requestTimeout.count() < 1 || m_options.requestTimeout.count() > 60000)
       return invalid("request timeout", "must be between 1 and 60000 ms");
+    if (m_options.controlTimeout.count() < 1 || m_options.controlTimeout.count() > 60000)
+      return invalid("control timeout", "must be between 1 and 60000 ms");
 
     auto listening = sim::listenTcp(m_options.listenAddress, m_options.port, kBacklog);
     if (!listening.ok()) return listening.error();
@@ -366,8 +368,9 @@ class DeviceSimulator::Impl {
     if ((function != 0x06 && function != 0x10) || pduSize < 5) return;
     const int address = (pdu[1] << 8) | pdu[2];
     const int count = function == 0x06 ? 1 : ((pdu[3] << 8) | pdu[4]);
+    // The heartbeat, its timeout, the session and the claim of control are no command.
     const int heartbeatFirst = *device == SimulatedDevice::Rotary ? rr::kHeartbeat : rb::kHostHeartbeat;
-    const int heartbeatLast = *device == SimulatedDevice::Rotary ? rr::kHeartbeatTimeout : rb::kHeartbeatTimeout;
+    const int heartbeatLast = *device == SimulatedDevice::Rotary ? rr::kClaim : rb::kClaim;
     if (address < heartbeatFirst || address + count - 1 > heartbeatLast) {
       (*device == SimulatedDevice::Rotary ? m_rotaryCommandWrites : m_robotCommandWrites)++;
       SimulatedCommandRecord record;
@@ -404,9 +407,12 @@ class DeviceSimulator::Impl {
       } else {
         sim::RegisterBlock block;
         if (rotary) {
-          block = {m_rotaryRegs.data(), 0, rr::kMapSize, rr::kFirstWritable, rr::kLastWritable};
+          block = {m_rotaryRegs.data(), 0, rr::kMapSize, rr::kFirstWritable, rr::kLastWritable, nullptr};
+          block.refuseWrite = [this](int address, const std::vector<std::uint16_t>& values) {
+            return m_rotary->writeRefusal(address, values, Clock::now());
+          };
         } else {
-          block = {m_robotRegs.data(), rb::kFirst, rb::kCount, rb::kFirstHostWritable, rb::kLastHostWritable};
+          block = {m_robotRegs.data(), rb::kFirst, rb::kCount, rb::kFirstHostWritable, rb::kLastHostWritable, nullptr};
         }
         sim::PduAnswer answered = sim::answerPdu(pdu, pduSize, block);
         if (answered.wrote && rotary) m_rotary->afterWrite(Clock::now());
