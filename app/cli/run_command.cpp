@@ -219,7 +219,10 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
     options.connection.slaveId = unit < 0 ? 1 : unit;
     options.machine = job.machine;
     devices.rotary = std::make_unique<hardware::RotaryPlatform>(options);
+    // Refused while another run controls the platform (docs/hardware.md, "One controller at a time").
     if (core::Status c = devices.rotary->connect(); !c) throw std::runtime_error(c.error().describe());
+    log.line(devices.rotary->name() + " is controlled by this run (" +
+             hardware::controlSessionText(devices.rotary->status().control.session) + ") until it ends");
     const hardware::RotaryStatus s = devices.rotary->status();
     if (s.fault != hardware::RotaryFault::None)
       throw std::runtime_error(devices.rotary->name() + " reports a fault (" + hardware::rotaryFaultName(s.fault) +
@@ -259,6 +262,8 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
   options.machine = job.machine;
   devices.robot = std::make_unique<hardware::RobotArm>(options);
   if (core::Status c = devices.robot->connect(); !c) throw std::runtime_error(c.error().describe());
+  log.line(devices.robot->name() + " is controlled by this run (" +
+           hardware::controlSessionText(devices.robot->status().control.session) + ") until it ends");
   devices.positioner = hardware::makePositioner(*devices.robot);
 }
 

@@ -18,6 +18,7 @@
 #include "multidir/hardware/moonraker_link.h"
 #include "multidir/hardware/moonraker_simulator.h"
 #include "multidir/hardware/octoprint_simulator.h"
+#include "multidir/hardware/rotary_platform.h"
 #include "support/cli_runner.h"
 #include "support/test_models.h"
 
@@ -150,6 +151,31 @@ TEST_F(CliRunTest, A4DofJobAtARobotArmIsRefusedSayingWhatItNeedsAndNothingMoves)
   EXPECT_NE(run.err.find("answers as a robot arm"), std::string::npos) << run.err;
   EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Robot), 0u);
   EXPECT_EQ(printerRequests("/server/files/upload"), 0);
+}
+
+// Issue 28: nothing gave one run sole control of the platform: a second run turned it 40 degrees while the
+// first printed. Here the first run is a driver of this process holding the platform.
+TEST_F(CliRunTest, ASecondRunIsRefusedWhileAnotherRunControlsThePlatformAndNothingMoves) {
+  const std::string dir = multidir::test::scratchDirectory("CliRun.SecondRun");
+  writeJob(dir + "/job");
+  startSimulators(200.0);
+  hw::RotaryPlatformOptions firstRun;
+  firstRun.connection.tcp.port = devices->port();
+  firstRun.machine.kind = multidir::core::MachineKind::RotaryPlatform;
+  hw::RotaryPlatform holder(firstRun);
+  ASSERT_TRUE(holder.connect().ok());
+  const std::string session = hw::controlSessionText(holder.status().control.session);
+  const auto writes = devices->commandWriteCount(hw::SimulatedDevice::Rotary);
+
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("is controlled by another run (" + session + "); stop that run first"), std::string::npos)
+      << run.err;
+  EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Rotary), writes);
+  EXPECT_FALSE(devices->rotaryState().homed);
+  EXPECT_NEAR(devices->rotaryState().angleDegrees, 7.5, 1e-9);  // where it stood
+  EXPECT_EQ(printerRequests("/server/files/upload"), 0);
+  EXPECT_TRUE(holder.status().control.held());
 }
 
 // Issue 24: the advice was "continue with --from 1", which prints step 1 again from its start over the half

@@ -5,6 +5,7 @@
 #include "hardware_test_support.h"
 #include "multidir/hardware/print_run.h"
 #include "multidir/hardware/rotary_platform.h"
+#include "raw_modbus_client.h"
 
 namespace multidir::hardware {
 namespace {
@@ -167,6 +168,104 @@ TEST(DeviceSimulator, PositionerForTheRotaryPlatformRefusesTiltTargets) {
   const core::Status status = positioner->startMove(PlatformOrientation::tiltAzimuth(10.0, 0.0));
   ASSERT_FALSE(status.ok());
   EXPECT_NE(status.error().message.find("4dof"), std::string::npos);
+}
+
+// The reply's PDU: what follows the 7-byte MBAP header.
+std::vector<std::uint8_t> replyPdu(RawClient& client) {
+  const auto frame = client.readFrame();
+  if (!frame) return {};
+  return std::vector<std::uint8_t>(frame->begin() + 7, frame->end());
+}
+
+// Issue 28: a second master turned the platform while a run controlled it. The controller refuses another
+// session's writes (exception 1, nothing written) and takes a stop from anyone.
+TEST(DeviceSimulator, RotaryControllerRefusesAnotherSessionsWritesButTakesItsStop) {
+  DeviceSimulator sim;
+  ASSERT_TRUE(sim.start().ok());
+  RotaryPlatformOptions options;
+  options.connection = fastSettings(sim.port(), 1);
+  options.machine.kind = core::MachineKind::RotaryPlatform;
+  RotaryPlatform holder(options);
+  ASSERT_TRUE(holder.connect().ok());
+  ASSERT_TRUE(outcome(holder.enable()).ok());
+  ASSERT_TRUE(eventually([&] { return holder.status().enabled; }));
+  ASSERT_TRUE(outcome(holder.home()).ok());
+  ASSERT_TRUE(eventually([&] { return holder.status().homed && !holder.status().homing; }));
+  const std::uint16_t session = holder.status().control.session;
+  const std::uint16_t other = static_cast<std::uint16_t>(session ^ 0x5555);
+
+  RawClient second(sim.port());
+  ASSERT_TRUE(second.connected());
+  const std::vector<std::uint16_t> moveTo40 = {0, 4000, 1000, 4};  // TARGET_ANGLE, SPEED, COMMAND move
+  ASSERT_TRUE(second.send(mbapFrame(1, 1, writePdu(0, moveTo40))));  // no session
+  EXPECT_EQ(replyPdu(second), (std::vector<std::uint8_t>{0x90, 0x01}));
+  std::vector<std::uint16_t> withOtherSession = moveTo40;
+  withOtherSession.insert(withOtherSession.end(), {77, 1000, other});  // HEARTBEAT, its timeout, SESSION
+  ASSERT_TRUE(second.send(mbapFrame(2, 1, writePdu(0, withOtherSession))));
+  EXPECT_EQ(replyPdu(second), (std::vector<std::uint8_t>{0x90, 0x01}));
+  ASSERT_TRUE(second.send(mbapFrame(3, 1, writePdu(5, {0}))));  // switching the holder's watchdog off
+  EXPECT_EQ(replyPdu(second), (std::vector<std::uint8_t>{0x86, 0x01}));
+  ASSERT_TRUE(second.send(mbapFrame(4, 1, writePdu(7, {other}))));  // a claim is heard, and not granted
+  EXPECT_EQ(replyPdu(second), (std::vector<std::uint8_t>{0x06, 0x00, 0x07, static_cast<std::uint8_t>(other >> 8),
+                                                         static_cast<std::uint8_t>(other & 0xFF)}));
+  const auto polls = holder.status().polls;
+  ASSERT_TRUE(eventually([&] { return holder.status().polls > polls + 5; }));
+  SimulatedRotaryState state = sim.rotaryState();
+  EXPECT_FALSE(state.moving);
+  EXPECT_NEAR(state.angleDegrees, 0.0, 1e-9);
+  EXPECT_NEAR(state.targetAngleDegrees, 0.0, 1e-9);
+  EXPECT_EQ(state.controlOwner, session);
+  EXPECT_EQ(holder.status().link, LinkState::Connected);
+
+  ASSERT_TRUE(outcome(holder.moveTo(60.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  ASSERT_TRUE(second.send(mbapFrame(5, 1, writePdu(3, {6}))));  // e-stop: taken from anyone
+  EXPECT_EQ(replyPdu(second), (std::vector<std::uint8_t>{0x06, 0x00, 0x03, 0x00, 0x06}));
+  state = sim.rotaryState();
+  EXPECT_FALSE(state.moving);
+  EXPECT_EQ(state.faultCode, 5);
+}
+
+// The robot's Modbus server takes every write; the program ignores another session's commands (ACK_SEQUENCE
+// does not follow them) and takes its halt. Both masters are bare clients here, so that nothing else writes.
+TEST(DeviceSimulator, RobotProgramIgnoresAnotherSessionsMoveButTakesItsHalt) {
+  DeviceSimulator sim;
+  ASSERT_TRUE(sim.start().ok());
+  RawClient first(sim.port());
+  RawClient second(sim.port());
+  ASSERT_TRUE(first.send(mbapFrame(1, 255, writePdu(136, {0x1111}))));  // CLAIM
+  ASSERT_FALSE(replyPdu(first).empty());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().controlOwner == 0x1111; }));
+  ASSERT_TRUE(second.send(mbapFrame(1, 255, writePdu(136, {0x2222}))));  // a second claim: not granted
+  ASSERT_FALSE(replyPdu(second).empty());
+
+  // tilt 30, azimuth 0, speed 100 %, move, SEQUENCE 1, HOST_HEARTBEAT, HEARTBEAT_TIMEOUT 0, SESSION
+  ASSERT_TRUE(second.send(mbapFrame(2, 255, writePdu(128, {3000, 0, 100, 1, 1, 1, 0, 0x2222}))));
+  ASSERT_FALSE(replyPdu(second).empty());
+  // Three cycles of the program later (its PROGRAM_HEARTBEAT, register 146, counts them):
+  std::uint16_t transaction = 10;
+  const auto programHeartbeat = [&]() -> int {
+    if (!first.send(mbapFrame(++transaction, 255, readPdu(146, 1)))) return -1;
+    const std::vector<std::uint8_t> pdu = replyPdu(first);
+    return pdu.size() == 4 ? (pdu[2] << 8) | pdu[3] : -1;
+  };
+  const int cycle = programHeartbeat();
+  ASSERT_GE(cycle, 0);
+  ASSERT_TRUE(eventually([&] { return programHeartbeat() >= cycle + 3; }));
+  SimulatedRobotState state = sim.robotState();
+  EXPECT_EQ(state.programState, 1);  // idle
+  EXPECT_EQ(state.acknowledgedSequence, 0);
+  EXPECT_EQ(state.controlOwner, 0x1111);
+  EXPECT_NEAR(state.tiltDegrees, 0.0, 1e-9);
+
+  ASSERT_TRUE(first.send(mbapFrame(3, 255, writePdu(128, {3000, 0, 10, 1, 2, 2, 0, 0x1111}))));  // the holder's
+  ASSERT_FALSE(replyPdu(first).empty());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));  // moving
+  ASSERT_TRUE(second.send(mbapFrame(3, 255, writePdu(131, {3, 3}))));  // halt, SEQUENCE 3: from anyone
+  ASSERT_FALSE(replyPdu(second).empty());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 5; }));  // halted
+  EXPECT_EQ(sim.robotState().acknowledgedSequence, 3);
+  EXPECT_LT(sim.robotState().tiltDegrees, 30.0);
 }
 
 }  // namespace

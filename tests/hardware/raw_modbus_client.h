@@ -109,4 +109,20 @@ inline std::vector<std::uint8_t> readPdu(std::uint16_t address, std::uint16_t qu
           static_cast<std::uint8_t>(quantity >> 8), static_cast<std::uint8_t>(quantity & 0xFF)};
 }
 
+// Function 06 (one value) or 16 (several): write `values` from `address`.
+inline std::vector<std::uint8_t> writePdu(std::uint16_t address, const std::vector<std::uint16_t>& values) {
+  std::vector<std::uint8_t> pdu = {static_cast<std::uint8_t>(values.size() == 1 ? 0x06 : 0x10),
+                                   static_cast<std::uint8_t>(address >> 8), static_cast<std::uint8_t>(address & 0xFF)};
+  if (values.size() != 1) {
+    pdu.push_back(static_cast<std::uint8_t>(values.size() >> 8));
+    pdu.push_back(static_cast<std::uint8_t>(values.size() & 0xFF));
+    pdu.push_back(static_cast<std::uint8_t>(2 * values.size()));
+  }
+  for (std::uint16_t value : values) {
+    pdu.push_back(static_cast<std::uint8_t>(value >> 8));
+    pdu.push_back(static_cast<std::uint8_t>(value & 0xFF));
+  }
+  return pdu;
+}
+
 }  // namespace multidir::hardware::test

@@ -156,6 +156,57 @@ TEST_F(RobotArmTest, EmergencyStopDuringAShortOutageIsSentFirstOnReconnectAndThe
   EXPECT_DOUBLE_EQ(sim.robotState().tiltDegrees, stoppedAt);
 }
 
+// Issue 28: an e-stop answered with a Modbus exception (device failure) was never written again and the arm
+// went on to 60 degrees.
+TEST_F(RobotArmTest, EmergencyStopRefusedWithAnExceptionIsWrittenAgainUntilTheProgramTakesItAndTheArmHalts) {
+  options.speedPercent = 5;                  // 18 degrees/s: 0 -> 60 takes 3.3 s
+  options.programHeartbeatTimeout = 1000ms;  // only the e-stop can stop it
+  auto arm = connected();
+  ASSERT_TRUE(outcome(arm->moveTo(60.0, 0.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));
+  sim.refuseStops(SimulatedDevice::Robot, 4, 3);  // server device failure, three times
+
+  const core::Status first = outcome(arm->emergencyStop());
+  ASSERT_FALSE(first.ok());
+  EXPECT_NE(first.error().message.find("Modbus exception 4"), std::string::npos) << first.error().message;
+  ASSERT_TRUE(eventually([&] { return arm->status().stop.confirmed; })) << arm->status().stop.problem;
+  EXPECT_EQ(arm->status().stop.writes, 1u);
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 5; }));  // halted
+  const double stoppedAt = sim.robotState().tiltDegrees;
+  EXPECT_LT(stoppedAt, 50.0);
+  int halts = 0;
+  for (const SimulatedCommandRecord& record : sim.commandLog()) halts += record.command == 3 ? 1 : 0;
+  EXPECT_EQ(halts, 4);
+  const auto polls = arm->status().polls;
+  ASSERT_TRUE(eventually([&] { return arm->status().polls > polls + 20; }));
+  EXPECT_DOUBLE_EQ(sim.robotState().tiltDegrees, stoppedAt);
+  EXPECT_EQ(arm->status().stop.kind, StopKind::EmergencyStop);
+}
+
+// Issue 28: one controller at a time, the arm's program too; its halt is still taken from anyone.
+TEST_F(RobotArmTest, ASecondDriverIsRefusedControlOfTheArmAndItsEmergencyStopIsStillHonoured) {
+  options.speedPercent = 5;  // 18 degrees/s: 0 -> 60 takes 3.3 s
+  auto first = connected();
+  const std::uint16_t holder = first->status().control.session;
+  ASSERT_TRUE(first->status().control.held());
+  ASSERT_TRUE(outcome(first->moveTo(60.0, 0.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 2; }));
+
+  RobotArm second(options);
+  const core::Status refused = second.connect();
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("is controlled by another run (" + controlSessionText(holder) + ")"),
+            std::string::npos)
+      << refused.error().message;
+  EXPECT_EQ(sim.robotState().controlOwner, holder);
+
+  const core::Status stopped = outcome(second.emergencyStop());
+  ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
+  ASSERT_TRUE(eventually([&] { return sim.robotState().programState == 5; }));  // halted
+  EXPECT_LT(sim.robotState().tiltDegrees, 50.0);
+  EXPECT_EQ(sim.robotState().controlOwner, holder);
+}
+
 TEST_F(RobotArmTest, ExceptionReplyFromTheRobotIsReported) {
   auto arm = connected();
   sim.setExceptionReply(SimulatedDevice::Robot, 2);

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "hardware_test_support.h"
+#include "raw_modbus_client.h"
 
 namespace multidir::hardware {
 namespace {
@@ -304,12 +305,118 @@ TEST_F(RotaryPlatformTest, LatchedStopIsWrittenAgainAfterEveryReconnect) {
   EXPECT_TRUE(platform->status().stop.confirmed);
 }
 
+// Issue 28: a stop answered with a Modbus exception (busy) was never written again: the latch stayed
+// unconfirmed with 0 writes and the platform finished its move from 10 to 40 degrees.
+TEST_F(RotaryPlatformTest, StopRefusedAsBusyIsWrittenAgainUntilTheControllerTakesItAndThePlatformStops) {
+  options.speedDegreesPerSecond = 10.0;  // 10 -> 40 degrees takes 3 s
+  auto platform = homed();
+  ASSERT_TRUE(outcome(platform->moveTo(10.0)).ok());
+  ASSERT_TRUE(eventually([&] { return platform->reached(10.0); }));
+  ASSERT_TRUE(outcome(platform->moveTo(40.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  sim.refuseStops(SimulatedDevice::Rotary, 6, 3);  // busy, three times
+
+  const core::Status first = outcome(platform->stop());  // the device's first answer: busy
+  ASSERT_FALSE(first.ok());
+  EXPECT_NE(first.error().message.find("Modbus exception 6"), std::string::npos) << first.error().message;
+  EXPECT_NE(first.error().message.find("writes it again"), std::string::npos) << first.error().message;
+  ASSERT_TRUE(eventually([&] { return platform->status().stop.confirmed; })) << platform->status().stop.problem;
+  EXPECT_EQ(platform->status().stop.writes, 1u);
+  EXPECT_FALSE(sim.rotaryState().moving);
+  const double stoppedAt = sim.rotaryState().angleDegrees;
+  EXPECT_LT(stoppedAt, 39.0);
+  int stops = 0;
+  for (const SimulatedCommandRecord& record : sim.commandLog()) stops += record.command == 5 ? 1 : 0;
+  EXPECT_EQ(stops, 4);  // three refused, the fourth taken, and none after the device confirmed it
+  const auto polls = platform->status().polls;
+  ASSERT_TRUE(eventually([&] { return platform->status().polls > polls + 20; }));
+  EXPECT_DOUBLE_EQ(sim.rotaryState().angleDegrees, stoppedAt);
+  EXPECT_FALSE(outcome(platform->moveTo(20.0)).ok());  // still latched
+}
+
 TEST_F(RotaryPlatformTest, EmergencyStopIsNotDowngradedByALaterStop) {
   auto platform = homed();
   ASSERT_TRUE(outcome(platform->emergencyStop()).ok());
   ASSERT_TRUE(outcome(platform->stop()).ok());
   EXPECT_EQ(platform->status().stop.kind, StopKind::EmergencyStop);
   EXPECT_EQ(sim.rotaryState().faultCode, 5);
+}
+
+// Issue 28: nothing gave one run sole control of the platform: a second `multidir run` turned it 40 degrees
+// while the first one printed.
+TEST_F(RotaryPlatformTest, ASecondDriverIsRefusedControlWhileTheFirstHoldsThePlatformAndNothingMoves) {
+  auto first = homed();
+  ASSERT_TRUE(first->status().control.held());
+  const std::uint16_t holder = first->status().control.session;
+  EXPECT_EQ(sim.rotaryState().controlOwner, holder);
+  const auto writes = sim.commandWriteCount(SimulatedDevice::Rotary);
+
+  RotaryPlatform second(options);
+  const core::Status refused = second.connect();
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("is controlled by another run (" + controlSessionText(holder) + ")"),
+            std::string::npos)
+      << refused.error().message;
+  EXPECT_NE(refused.error().message.find("stop that run first"), std::string::npos) << refused.error().message;
+  EXPECT_NE(second.status().link, LinkState::Connected);
+  EXPECT_FALSE(outcome(second.moveTo(40.0)).ok());
+  EXPECT_EQ(sim.commandWriteCount(SimulatedDevice::Rotary), writes);  // nothing but claims reached the device
+  EXPECT_EQ(sim.rotaryState().controlOwner, holder);
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 0.0, 1e-9);
+
+  ASSERT_TRUE(outcome(first->moveTo(20.0)).ok());  // the holder goes on as before
+  EXPECT_TRUE(eventually([&] { return first->reached(20.0); }));
+}
+
+TEST_F(RotaryPlatformTest, EmergencyStopFromASecondDriverIsHonouredWhileTheFirstHoldsThePlatform) {
+  options.speedDegreesPerSecond = 10.0;  // 0 -> 40 degrees takes 4 s
+  auto first = homed();
+  ASSERT_TRUE(outcome(first->moveTo(40.0)).ok());
+  ASSERT_TRUE(eventually([&] { return sim.rotaryState().moving; }));
+  RotaryPlatform second(options);
+  ASSERT_FALSE(second.connect().ok());
+
+  const core::Status stopped = outcome(second.emergencyStop());
+  ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
+  EXPECT_TRUE(second.status().stop.confirmed);
+  const SimulatedRotaryState state = sim.rotaryState();
+  EXPECT_FALSE(state.moving);
+  EXPECT_EQ(state.faultCode, 5);
+  EXPECT_LT(state.angleDegrees, 39.0);
+  EXPECT_EQ(state.controlOwner, first->status().control.session);  // stopping takes nobody's control
+}
+
+TEST_F(RotaryPlatformTest, DisconnectGivesControlBackSoTheNextDriverGetsIt) {
+  auto first = connected();
+  first->disconnect();
+  EXPECT_EQ(sim.rotaryState().controlOwner, 0);
+  RotaryPlatform second(options);
+  ASSERT_TRUE(second.connect().ok());
+  EXPECT_TRUE(second.status().control.held());
+  EXPECT_EQ(sim.rotaryState().controlOwner, second.status().control.session);
+}
+
+// A run that died (or lost its link) without giving control back: the lock lapses after the controller's
+// timeout, and a driver refused meanwhile takes control on its own next attempt.
+TEST_F(RotaryPlatformTest, ControlOfASessionThatFellSilentLapsesAndARefusedDriverThenTakesIt) {
+  SimulatorOptions shortLock;
+  shortLock.controlTimeout = 300ms;
+  DeviceSimulator lapsing(shortLock);
+  ASSERT_TRUE(lapsing.start().ok());
+  options.connection = fastSettings(lapsing.port(), 1);
+  RawClient dead(lapsing.port());  // claims control as session 1234, then writes nothing more
+  ASSERT_TRUE(dead.send(mbapFrame(1, 1, writePdu(7, {0x1234}))));  // CLAIM
+  ASSERT_TRUE(dead.readFrame().has_value());
+  ASSERT_EQ(lapsing.rotaryState().controlOwner, 0x1234);
+
+  RotaryPlatform platform(options);
+  const core::Status refused = platform.connect();
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("(session 1234)"), std::string::npos) << refused.error().message;
+  ASSERT_TRUE(eventually([&] { return platform.status().link == LinkState::Connected; }, 5000ms))
+      << platform.status().lastError;
+  EXPECT_TRUE(platform.status().control.held());
+  EXPECT_EQ(lapsing.rotaryState().controlOwner, platform.status().control.session);
 }
 
 TEST_F(RotaryPlatformTest, BadOptionsAreRefusedWithoutStartingAnything) {

@@ -20,4 +20,12 @@ core::Status validateHeartbeatTimeout(std::chrono::milliseconds timeout) {
   return core::Done{};
 }
 
+core::Error controlledByAnotherRun(const std::string& label, std::uint16_t owner) {
+  return core::Error{core::ErrorCode::DeviceFault,
+                     label + " is controlled by another run (" + controlSessionText(owner) +
+                         "); stop that run first (a run that died without giving it back frees it a few seconds "
+                         "after its last heartbeat)",
+                     label};
+}
+
 }  // namespace multidir::hardware

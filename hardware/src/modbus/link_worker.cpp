@@ -92,6 +92,7 @@ std::future<core::Status> LinkWorker::latchStop(StopKind kind, Command command, 
     else
       m_stop.problem = "the " + std::string(stopKindName(m_stop.kind)) + " is being written to " + m_label;
     m_stopDue = true;
+    m_stopRetryAt = Clock::time_point{};  // a new request is written at once, even after a refusal
     m_stopWake = true;
     ++m_stopGeneration;
     if (running) m_stopWaiters.emplace_back(m_stopGeneration, std::move(promise));
@@ -135,15 +136,25 @@ StopLatch LinkWorker::stopLatch() const {
 core::Status LinkWorker::sendLatchedStop() {
   Command command;
   std::uint64_t generation = 0;
+  StopKind kind = StopKind::None;
   {
     std::lock_guard<std::mutex> lock(m_mutex);
     if (!m_stop.latched()) return core::Done{};
+    kind = m_stop.kind;
     command = m_stopCommand;
     generation = m_stopGeneration;
     m_stopDue = false;
   }
   core::Status result = command(m_port);
   const bool linkFailure = !result.ok() && m_port.lastFailureBreaksLink();
+  if (!result.ok() && !linkFailure) {
+    // The device refused it (busy, device failure...): it has not stopped, so the stop stays due.
+    core::Error refused = result.error();
+    refused.message += "; the " + std::string(stopKindName(kind)) + " stays latched and MultiDir writes it again " +
+                       "every " + std::to_string(m_settings.reconnectInitialDelay.count()) + " ms until " +
+                       m_label + " takes it";
+    result = refused;
+  }
   std::vector<std::promise<core::Status>> settled;
   {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -157,10 +168,13 @@ core::Status LinkWorker::sendLatchedStop() {
         }
       } else {
         if (!m_stop.confirmed) m_stop.problem = result.error().message;
-        // A lost link is no answer: the stop is written again after the reconnect. A refusal is an answer.
-        if (linkFailure) m_stopDue = true;
+        // Written again until the device takes it: after the reconnect when the link was lost, after a short
+        // delay when the device refused it (whatever it answers, only taking the write confirms the stop).
+        m_stopDue = true;
+        if (!linkFailure) m_stopRetryAt = Clock::now() + m_settings.reconnectInitialDelay;
       }
     }
+    // The futures end with the device's first answer, taken or refused (a refusal goes on being written).
     if (result.ok() || !linkFailure) {
       for (auto it = m_stopWaiters.begin(); it != m_stopWaiters.end();) {
         if (it->first > generation) {
@@ -202,11 +216,15 @@ void LinkWorker::failQueued(const core::Error& error) {
     pending.promise.set_value(core::Error{error.code, pending.what + " was not sent: " + error.message, error.where});
 }
 
+bool LinkWorker::stopDueNow() const {
+  return m_stopDue && m_stop.latched() && Clock::now() >= m_stopRetryAt;
+}
+
 bool LinkWorker::waitUntil(Clock::time_point deadline, bool linkUp) {
   std::unique_lock<std::mutex> lock(m_mutex);
   // Link up: a due stop is written at once. Link down: a new stop request cuts the backoff short.
   m_wake.wait_until(lock, deadline, [this, linkUp] {
-    return m_stopRequested || !m_queue.empty() || (linkUp ? m_stopDue && m_stop.latched() : m_stopWake);
+    return m_stopRequested || !m_queue.empty() || (linkUp ? stopDueNow() : m_stopWake);
   });
   const bool newStop = m_stopWake;
   m_stopWake = false;
@@ -295,9 +313,11 @@ void LinkWorker::run() {
     }
 
     bool stopDue = false;
+    Clock::time_point stopRetryAt = Clock::time_point::max();
     {
       std::lock_guard<std::mutex> lock(m_mutex);
-      stopDue = m_stopDue && m_stop.latched();
+      stopDue = stopDueNow();
+      if (m_stopDue && m_stop.latched()) stopRetryAt = m_stopRetryAt;
     }
     if (stopDue) {
       core::Status result = sendLatchedStop();
@@ -338,8 +358,9 @@ void LinkWorker::run() {
         continue;
       }
     }
-    waitUntil(std::min(nextPoll, nextHeartbeat), true);
+    waitUntil(std::min({nextPoll, nextHeartbeat, stopRetryAt}), true);
   }
+  if (m_port.isOpen() && m_hooks.beforeClose) m_hooks.beforeClose(m_port);
   m_port.close();
   {
     std::lock_guard<std::mutex> lock(m_mutex);

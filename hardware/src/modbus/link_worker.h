@@ -5,8 +5,10 @@
 // except start(), stop(), submit() and the stop latch's calls (latchStop, clearStop, stopLatch).
 //
 // The stop latch (stop_latch.h): a latched stop is written before anything else whenever the link is up and
-// it is due, and again right after every reconnect, before onConnected; its futures end when the device
-// answered the write (or refused it with a Modbus exception), never because the link was down.
+// it is due, and again right after every reconnect, before onConnected; a write the device refuses (a Modbus
+// exception: busy, device failure...) is written again every reconnectInitialDelay until the device takes it.
+// Its futures end when the device first answered the write (took it, or refused it: the refusal says that it
+// is written again), never because the link was down.
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -32,6 +34,7 @@ struct LinkHooks {
   std::function<core::Status(ModbusPort&)> heartbeat;    // write the heartbeat
   std::function<void(LinkState, const std::string& problem)> linkChanged;
   std::function<void()> stopLatchChanged;  // after a latched stop was written or failed
+  std::function<void(ModbusPort&)> beforeClose;  // stop(): the link is up for one last request (give control back)
 };
 
 class LinkWorker {
@@ -54,8 +57,10 @@ class LinkWorker {
   // Latches a stop: cancels every queued command (Cancelled) and has `command` written first, now if the link
   // is up, else as soon as it is back, and again after every reconnect until clearStop(). An e-stop already
   // latched is kept when a plain stop is asked for (the stop's future then waits for the e-stop). The future
-  // ends Done once the device answered the write, with the device's refusal (Modbus exception), or Cancelled
-  // when the worker is stopped first (the latch stays and is written first on the next start()).
+  // ends Done once the device took the write, with the device's first refusal (Modbus exception), or Cancelled
+  // when the worker is stopped first (the latch stays and is written first on the next start()). A refused
+  // stop stays latched and unconfirmed and is written again every reconnectInitialDelay until the device
+  // takes it: only that confirms it.
   std::future<core::Status> latchStop(StopKind kind, Command command, const std::string& what);
   // The operator allows moves again. Refused (InvalidParameter) while the device has not confirmed the stop.
   core::Status clearStop();
@@ -78,6 +83,8 @@ class LinkWorker {
   // Writes the latched stop (if any) and settles its futures; the write's outcome.
   core::Status sendLatchedStop();
   void cancelStopWaiters(const std::string& why);
+  // A latched stop is due and its retry time (after a refusal) has come. Called under m_mutex.
+  [[nodiscard]] bool stopDueNow() const;
 
   ConnectionSettings m_settings;
   std::string m_label;
@@ -98,7 +105,8 @@ class LinkWorker {
   std::string m_stopWhat;
   std::uint64_t m_stopGeneration = 0;      // one per latchStop() call
   std::uint64_t m_stopSentGeneration = 0;  // the generation the last successful write carried
-  bool m_stopDue = false;                  // asked for and not written since
+  bool m_stopDue = false;                  // asked for and not taken by the device since
+  std::chrono::steady_clock::time_point m_stopRetryAt{};  // not before: the device refused the last write
   bool m_stopWake = false;                 // a new stop request the worker has not woken for yet
   bool m_linkUp = false;                   // set by the worker: connected and configured
   std::vector<std::pair<std::uint64_t, std::promise<core::Status>>> m_stopWaiters;

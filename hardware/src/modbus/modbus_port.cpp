@@ -17,7 +17,9 @@ void splitMilliseconds(std::chrono::milliseconds ms, std::uint32_t& sec, std::ui
 std::string exceptionAdvice(int code) {
   switch (code) {
     case MODBUS_EXCEPTION_ILLEGAL_FUNCTION:
-      return "the device does not support this function: check that it is the device docs/hardware.md describes";
+      return "the device does not support this function, or not in its present state (another MultiDir run "
+             "controls it: see its OWNER register): check that it is the device docs/hardware.md describes and "
+             "that no other run uses it";
     case MODBUS_EXCEPTION_ILLEGAL_DATA_ADDRESS:
       return "the device has no such register: its register map does not match docs/hardware.md (check the "
              "firmware version, or the unit id if several devices share the bus)";
@@ -97,12 +99,19 @@ void ModbusPort::close() {
 
 bool ModbusPort::lastFailureBreaksLink() const {
   return m_lastFailure == PortFailure::Timeout || m_lastFailure == PortFailure::ConnectionLost ||
-         m_lastFailure == PortFailure::BadReply || m_lastFailure == PortFailure::ConnectFailed;
+         m_lastFailure == PortFailure::BadReply || m_lastFailure == PortFailure::ConnectFailed ||
+         m_lastFailure == PortFailure::ControlLost;
+}
+
+core::Status ModbusPort::abandon(core::Error why) {
+  m_lastFailure = PortFailure::ControlLost;
+  return why;
 }
 
 core::Status ModbusPort::failure(int errnum, const std::string& action) {
   const long long timeoutMs = static_cast<long long>(m_settings.responseTimeout.count());
   std::string message;
+  m_lastException = 0;
   if (errnum == ETIMEDOUT || errnum == EAGAIN) {
     m_lastFailure = PortFailure::Timeout;
     message = m_label + " did not answer within " + std::to_string(timeoutMs) + " ms while " + action +
@@ -111,6 +120,7 @@ core::Status ModbusPort::failure(int errnum, const std::string& action) {
   } else if (errnum >= EMBXILFUN && errnum <= EMBXGTAR) {
     m_lastFailure = PortFailure::Exception;
     const int code = errnum - MODBUS_ENOBASE;
+    m_lastException = code;
     message = m_label + " answered " + action + " with Modbus exception " + std::to_string(code) + " (" +
               modbus_strerror(errnum) + "): " + exceptionAdvice(code);
   } else if (errnum == EMBBADCRC || errnum == EMBBADDATA || errnum == EMBBADEXC || errnum == EMBUNKEXC ||

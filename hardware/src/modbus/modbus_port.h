@@ -20,6 +20,7 @@ enum class PortFailure {
   ConnectionLost,  // the peer closed the connection or the socket failed
   BadReply,        // a reply that does not fit the request (CRC, transaction id, length)
   Exception,       // the device answered with a Modbus exception: the link itself is fine
+  ControlLost,     // the driver's own reason (another run took control of the device): rebuilt to claim again
 };
 
 class ModbusPort {
@@ -37,7 +38,13 @@ class ModbusPort {
   core::Status readRegisters(int address, int count, std::uint16_t* dest, const std::string& what);
   core::Status writeRegisters(int address, const std::vector<std::uint16_t>& values, const std::string& what);
 
+  // Has the worker rebuild the link for a reason the device's answers gave the driver (ControlLost);
+  // returns `why`.
+  core::Status abandon(core::Error why);
+
   [[nodiscard]] PortFailure lastFailure() const { return m_lastFailure; }
+  // The Modbus exception code of the last failure when it was PortFailure::Exception, else 0.
+  [[nodiscard]] int lastExceptionCode() const { return m_lastException; }
   // A failure after which the link must be closed and reopened.
   [[nodiscard]] bool lastFailureBreaksLink() const;
 
@@ -49,6 +56,7 @@ class ModbusPort {
   modbus_t* m_context = nullptr;
   bool m_open = false;
   PortFailure m_lastFailure = PortFailure::None;
+  int m_lastException = 0;
 };
 
 }  // namespace multidir::hardware

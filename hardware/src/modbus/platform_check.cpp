@@ -45,8 +45,16 @@ std::string exceptionOf(const std::string& message) {
   return message.substr(at, open - at) + ", " + meaning;
 }
 
-std::string rotaryBlock(int unit) { return "registers 0-12 at unit " + std::to_string(unit); }
-std::string robotBlock(int unit) { return "registers 128-149 at unit " + std::to_string(unit); }
+std::string blockText(int first, int count, int unit) {
+  return "registers " + std::to_string(first) + "-" + std::to_string(first + count - 1) + " at unit " +
+         std::to_string(unit);
+}
+std::string rotaryBlock(int unit) {
+  return blockText(regs::rotary::kStatusBlockFirst, regs::rotary::kStatusBlockCount, unit);
+}
+std::string robotBlock(int unit) {
+  return blockText(regs::robot::kStatusBlockFirst, regs::robot::kStatusBlockCount, unit);
+}
 
 }  // namespace
 

@@ -57,9 +57,13 @@ class RobotArm::Impl {
  public:
   explicit Impl(RobotArmOptions options)
       : m_options(std::move(options)),
-        m_link(m_options.connection, "robot arm at " + describe(m_options.connection), rb::kHostHeartbeat,
+        m_link(m_options.connection, "robot arm at " + describe(m_options.connection),
+               ControlRegisters{rb::kHostHeartbeat, rb::kOwner}, m_options.programHeartbeatTimeout,
                &RobotStatus::programAlive, [this](ModbusPort& port) { return onConnected(port); },
-               [this](ModbusPort& port) { return poll(port); }) {}
+               [this](ModbusPort& port) { return poll(port); },
+               [this](ModbusPort& port) {
+                 return sendCommand(port, rb::kCmdRelease, {}, "the release of control (registers 131-135)");
+               }) {}
 
   core::Status connect() {
     if (m_options.connection.transport != Transport::Tcp)
@@ -101,7 +105,7 @@ class RobotArm::Impl {
           if (auto ok = m_link.refuseWhileStopLatched("move"); !ok.ok()) return ok;
           return sendCommand(port, rb::kCmdMove, {tilt, az, speed},
                              "the move to tilt " + degreesText(tiltDegrees) + ", azimuth " + degreesText(azimuth) +
-                                 " degrees (registers 128-132)");
+                                 " degrees (registers 128-135)");
         },
         false, "move to tilt " + degreesText(tiltDegrees) + ", azimuth " + degreesText(azimuth) + " degrees");
   }
@@ -138,7 +142,7 @@ class RobotArm::Impl {
     if (auto ok = m_link.requireLink(); !ok.ok()) return readyFuture(ok);
     return m_link.submit(
         [this, code, what](ModbusPort& port) {
-          return sendCommand(port, code, {}, "the " + what + " command (registers 131-132)");
+          return sendCommand(port, code, {}, "the " + what + " command (registers 131-135)");
         },
         isUrgent, what);
   }
@@ -158,8 +162,9 @@ class RobotArm::Impl {
         what);
   }
 
-  // Worker thread: writes the request values (from register 128), the command and a new sequence number in
-  // one request, so the program never sees half a command.
+  // Worker thread: writes the request values (from register 128), the command, a new sequence number and
+  // (but for a stop or halt, which the program takes from anyone) the session in one request, so the program
+  // never sees half a command.
   core::Status sendCommand(ModbusPort& port, std::uint16_t code, const std::vector<std::uint16_t>& request,
                            const std::string& what) {
     std::uint16_t sequence = static_cast<std::uint16_t>(m_sequence + 1);
@@ -172,6 +177,10 @@ class RobotArm::Impl {
     }
     values.push_back(code);
     values.push_back(sequence);
+    if (code != rb::kCmdStop && code != rb::kCmdHalt) {
+      const std::vector<std::uint16_t> session = m_link.sessionWords();
+      values.insert(values.end(), session.begin(), session.end());
+    }
     auto result = port.writeRegisters(first, values, what);
     if (!result.ok()) {
       m_link.noteError(result.error().message);
@@ -187,11 +196,9 @@ class RobotArm::Impl {
   }
 
   core::Status onConnected(ModbusPort& port) {
-    auto result = m_link.writeHeartbeatAndTimeout(port, m_options.programHeartbeatTimeout);
-    if (!result.ok()) return result;
     // Continue the sequence the robot holds, so the next command is new to the program.
     std::uint16_t seq = 0;
-    result = port.readRegisters(rb::kSequence, 1, &seq, "the command sequence (register 132)");
+    auto result = port.readRegisters(rb::kSequence, 1, &seq, "the command sequence (register 132)");
     if (!result.ok()) return result;
     m_sequence = seq;
     m_link.update([&](RobotStatus& s) {
@@ -206,9 +213,13 @@ class RobotArm::Impl {
   core::Status poll(ModbusPort& port) {
     std::uint16_t r[rb::kStatusBlockCount] = {};
     auto result = m_link.readStatusBlock(port, rb::kStatusBlockFirst, rb::kStatusBlockCount, r,
-                                         "the status (registers 128-149)");
+                                         "the status (registers 128-150)");
     if (!result.ok()) return result;
     auto at = [&r](int address) { return r[address - rb::kStatusBlockFirst]; };
+    if (auto control = m_link.checkControl(port, at(rb::kOwner)); !control.ok()) {
+      m_link.publish();
+      return control;
+    }
     m_link.update([&](RobotStatus& s) {
       const Clock::time_point now = Clock::now();
       s.state = stateFromRegister(at(rb::kState));

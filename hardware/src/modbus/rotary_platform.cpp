@@ -49,9 +49,11 @@ class RotaryPlatform::Impl {
  public:
   explicit Impl(RotaryPlatformOptions options)
       : m_options(std::move(options)),
-        m_link(m_options.connection, "rotary platform at " + describe(m_options.connection), rr::kHeartbeat,
+        m_link(m_options.connection, "rotary platform at " + describe(m_options.connection),
+               ControlRegisters{rr::kHeartbeat, rr::kOwner}, m_options.controllerHeartbeatTimeout,
                &RotaryStatus::controllerAlive, [this](ModbusPort& port) { return onConnected(port); },
-               [this](ModbusPort& port) { return poll(port); }) {}
+               [this](ModbusPort& port) { return poll(port); },
+               [this](ModbusPort& port) { return writeCommand(port, rr::kCmdRelease, "release control"); }) {}
 
   core::Status connect() {
     if (auto valid = validateLinkAndProfile(m_options.connection, m_options.machine); !valid.ok()) return valid;
@@ -90,7 +92,7 @@ class RotaryPlatform::Impl {
     return m_link.submit(
         [this](ModbusPort& port) {
           if (auto ok = m_link.refuseWhileStopLatched("home"); !ok.ok()) return ok;
-          auto result = port.writeRegisters(rr::kCommand, {rr::kCmdHome}, "the home command (register 3)");
+          auto result = writeCommand(port, rr::kCmdHome, "home");
           if (result.ok()) expectMotion(0.0);
           return result;
         },
@@ -118,10 +120,12 @@ class RotaryPlatform::Impl {
     values[2] = regs::degreesPerSecondToRegister(m_options.speedDegreesPerSecond);
     values[3] = rr::kCmdMove;
     return m_link.submit(
-        [this, values, angleDegrees](ModbusPort& port) {
+        [this, values, angleDegrees](ModbusPort& port) mutable {
           if (auto ok = m_link.refuseWhileStopLatched("move"); !ok.ok()) return ok;
+          const std::vector<std::uint16_t> session = m_link.sessionWords();
+          values.insert(values.end(), session.begin(), session.end());
           auto result = port.writeRegisters(rr::kTargetAngle, values, "the move to " + degreesText(angleDegrees) +
-                                                                          " degrees (registers 0-3)");
+                                                                          " degrees (registers 0-6)");
           if (result.ok()) expectMotion(angleDegrees);
           return result;
         },
@@ -149,13 +153,19 @@ class RotaryPlatform::Impl {
 
  private:
   std::future<core::Status> command(std::uint16_t code, const std::string& what, bool isUrgent) {
-    return m_link.submit(
-        [code, what](ModbusPort& port) {
-          return port.writeRegisters(rr::kCommand, {code}, "the " + what + " command (register 3)");
-        },
-        isUrgent, what);
+    return m_link.submit([this, code, what](ModbusPort& port) { return writeCommand(port, code, what); }, isUrgent,
+                         what);
   }
 
+  // Worker thread: a command but a stop, with the session that says it comes from the controller in charge.
+  core::Status writeCommand(ModbusPort& port, std::uint16_t code, const std::string& what) {
+    std::vector<std::uint16_t> values{code};
+    const std::vector<std::uint16_t> session = m_link.sessionWords();
+    values.insert(values.end(), session.begin(), session.end());
+    return port.writeRegisters(rr::kCommand, values, "the " + what + " command (registers 3-6)");
+  }
+
+  // A stop is COMMAND alone, without the session: the controller takes stops from anyone.
   std::future<core::Status> latch(StopKind kind, std::uint16_t code, const std::string& what) {
     m_link.update([this](RotaryStatus&) { m_motionExpected = false; });
     return m_link.latchStop(
@@ -176,9 +186,7 @@ class RotaryPlatform::Impl {
     });
   }
 
-  core::Status onConnected(ModbusPort& port) {
-    auto result = m_link.writeHeartbeatAndTimeout(port, m_options.controllerHeartbeatTimeout);
-    if (!result.ok()) return result;
+  core::Status onConnected(ModbusPort&) {
     m_link.update([this](RotaryStatus& s) {
       s.polls = 0;
       m_echoChanged = Clock::now();
@@ -190,8 +198,12 @@ class RotaryPlatform::Impl {
   core::Status poll(ModbusPort& port) {
     std::uint16_t r[rr::kStatusBlockCount] = {};
     auto result =
-        m_link.readStatusBlock(port, rr::kStatusBlockFirst, rr::kStatusBlockCount, r, "the status (registers 0-12)");
+        m_link.readStatusBlock(port, rr::kStatusBlockFirst, rr::kStatusBlockCount, r, "the status (registers 0-13)");
     if (!result.ok()) return result;
+    if (auto control = m_link.checkControl(port, r[rr::kOwner]); !control.ok()) {
+      m_link.publish();
+      return control;
+    }
     bool stall = false;
     double stallAngle = 0.0;
     double stallTarget = 0.0;

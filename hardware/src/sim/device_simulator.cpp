@@ -59,6 +59,8 @@ class DeviceSimulator::Impl {
       return invalid("maximal clients", "must be between 1 and 1000");
     if (m_options.requestTimeout.count() < 1 || m_options.requestTimeout.count() > 60000)
       return invalid("request timeout", "must be between 1 and 60000 ms");
+    if (m_options.controlTimeout.count() < 1 || m_options.controlTimeout.count() > 60000)
+      return invalid("control timeout", "must be between 1 and 60000 ms");
 
     auto listening = sim::listenTcp(m_options.listenAddress, m_options.port, kBacklog);
     if (!listening.ok()) return listening.error();
@@ -108,6 +110,12 @@ class DeviceSimulator::Impl {
   void setExceptionReply(SimulatedDevice device, int code) {
     std::lock_guard<std::mutex> lock(m_mutex);
     (device == SimulatedDevice::Rotary ? m_rotaryException : m_robotException) = std::clamp(code, 0, 255);
+  }
+  void refuseStops(SimulatedDevice device, int code, int count) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    StopRefusal& refusal = device == SimulatedDevice::Rotary ? m_rotaryStopRefusal : m_robotStopRefusal;
+    refusal.exception = std::clamp(code, 1, 255);
+    refusal.remaining = std::max(count, 0);
   }
   void setMotorStuck(bool stuck) {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -163,6 +171,10 @@ class DeviceSimulator::Impl {
     std::vector<std::uint8_t> unsent;    // reply bytes the socket did not take yet
     Clock::time_point requestStarted{};  // when the first byte of `received` arrived
     bool closing = false;
+  };
+  struct StopRefusal {
+    int exception = 0;
+    int remaining = 0;  // stop writes still to refuse
   };
   struct DelayedRequest {
     std::uint64_t clientId;
@@ -327,6 +339,24 @@ class DeviceSimulator::Impl {
     return std::nullopt;
   }
 
+  // The COMMAND register's value in a write request to `device`, or -1 when the request writes no COMMAND.
+  static int commandWritten(SimulatedDevice device, const std::uint8_t* pdu, std::size_t pduSize) {
+    const std::uint8_t function = pdu[0];
+    if ((function != 0x06 && function != 0x10) || pduSize < 5) return -1;
+    const int address = (pdu[1] << 8) | pdu[2];
+    const int count = function == 0x06 ? 1 : ((pdu[3] << 8) | pdu[4]);
+    const int commandRegister = device == SimulatedDevice::Rotary ? rr::kCommand : rb::kCommand;
+    if (commandRegister < address || commandRegister >= address + count) return -1;
+    const std::size_t at = function == 0x06 ? 3 : 6 + 2 * static_cast<std::size_t>(commandRegister - address);
+    if (at + 1 >= pduSize) return -1;
+    return (pdu[at] << 8) | pdu[at + 1];
+  }
+
+  static bool isStop(SimulatedDevice device, int command) {
+    if (device == SimulatedDevice::Rotary) return command == rr::kCmdStop || command == rr::kCmdEStop;
+    return command == rb::kCmdStop || command == rb::kCmdHalt;
+  }
+
   void countRequest(const std::vector<std::uint8_t>& frame) {
     const sim::MbapHeader header = sim::parseMbap(frame.data());
     const auto device = deviceFor(header.unit);
@@ -338,20 +368,25 @@ class DeviceSimulator::Impl {
     if ((function != 0x06 && function != 0x10) || pduSize < 5) return;
     const int address = (pdu[1] << 8) | pdu[2];
     const int count = function == 0x06 ? 1 : ((pdu[3] << 8) | pdu[4]);
+    // The heartbeat, its timeout, the session and the claim of control are no command.
     const int heartbeatFirst = *device == SimulatedDevice::Rotary ? rr::kHeartbeat : rb::kHostHeartbeat;
-    const int heartbeatLast = *device == SimulatedDevice::Rotary ? rr::kHeartbeatTimeout : rb::kHeartbeatTimeout;
+    const int heartbeatLast = *device == SimulatedDevice::Rotary ? rr::kClaim : rb::kClaim;
     if (address < heartbeatFirst || address + count - 1 > heartbeatLast) {
       (*device == SimulatedDevice::Rotary ? m_rotaryCommandWrites : m_robotCommandWrites)++;
-      const int commandRegister = *device == SimulatedDevice::Rotary ? rr::kCommand : rb::kCommand;
       SimulatedCommandRecord record;
       record.at = m_options.steadyNow ? m_options.steadyNow() : Clock::now();
       record.device = *device;
-      if (commandRegister >= address && commandRegister < address + count) {
-        const std::size_t at = function == 0x06 ? 3 : 6 + 2 * static_cast<std::size_t>(commandRegister - address);
-        if (at + 1 < pduSize) record.command = (pdu[at] << 8) | pdu[at + 1];
-      }
+      record.command = commandWritten(*device, pdu, pduSize);
       m_commandLog.push_back(record);
     }
+  }
+
+  // The exception refusing this request as refuseStops() asked for, or 0.
+  int injectedStopRefusal(SimulatedDevice device, const std::uint8_t* pdu, std::size_t pduSize) {
+    StopRefusal& refusal = device == SimulatedDevice::Rotary ? m_rotaryStopRefusal : m_robotStopRefusal;
+    if (refusal.remaining == 0 || !isStop(device, commandWritten(device, pdu, pduSize))) return 0;
+    --refusal.remaining;
+    return refusal.exception;
   }
 
   // Queues the reply to one complete request frame and tries to send it.
@@ -365,15 +400,19 @@ class DeviceSimulator::Impl {
       reply = sim::exceptionPdu(pdu[0], 0x0B);  // gateway target device failed to respond
     } else {
       const bool rotary = *device == SimulatedDevice::Rotary;
-      const int exception = rotary ? m_rotaryException : m_robotException;
+      int exception = rotary ? m_rotaryException : m_robotException;
+      if (exception == 0) exception = injectedStopRefusal(*device, pdu, pduSize);
       if (exception != 0) {
         reply = sim::exceptionPdu(pdu[0], static_cast<std::uint8_t>(exception));
       } else {
         sim::RegisterBlock block;
         if (rotary) {
-          block = {m_rotaryRegs.data(), 0, rr::kMapSize, rr::kFirstWritable, rr::kLastWritable};
+          block = {m_rotaryRegs.data(), 0, rr::kMapSize, rr::kFirstWritable, rr::kLastWritable, nullptr};
+          block.refuseWrite = [this](int address, const std::vector<std::uint16_t>& values) {
+            return m_rotary->writeRefusal(address, values, Clock::now());
+          };
         } else {
-          block = {m_robotRegs.data(), rb::kFirst, rb::kCount, rb::kFirstHostWritable, rb::kLastHostWritable};
+          block = {m_robotRegs.data(), rb::kFirst, rb::kCount, rb::kFirstHostWritable, rb::kLastHostWritable, nullptr};
         }
         sim::PduAnswer answered = sim::answerPdu(pdu, pduSize, block);
         if (answered.wrote && rotary) m_rotary->afterWrite(Clock::now());
@@ -407,6 +446,8 @@ class DeviceSimulator::Impl {
   std::chrono::milliseconds m_replyDelay{0};
   int m_rotaryException = 0;
   int m_robotException = 0;
+  StopRefusal m_rotaryStopRefusal;
+  StopRefusal m_robotStopRefusal;
   std::uint64_t m_rotaryRequests = 0;
   std::uint64_t m_robotRequests = 0;
   std::uint64_t m_rotaryCommandWrites = 0;
@@ -426,6 +467,9 @@ std::string DeviceSimulator::address() const { return m_impl->address(); }
 void DeviceSimulator::dropConnections(std::chrono::milliseconds refuseFor) { m_impl->dropConnections(refuseFor); }
 void DeviceSimulator::setReplyDelay(std::chrono::milliseconds delay) { m_impl->setReplyDelay(delay); }
 void DeviceSimulator::setExceptionReply(SimulatedDevice device, int code) { m_impl->setExceptionReply(device, code); }
+void DeviceSimulator::refuseStops(SimulatedDevice device, int code, int count) {
+  m_impl->refuseStops(device, code, count);
+}
 void DeviceSimulator::setMotorStuck(bool stuck) { m_impl->setMotorStuck(stuck); }
 void DeviceSimulator::setHeartbeatAnswering(SimulatedDevice device, bool answering) {
   m_impl->setHeartbeatAnswering(device, answering);

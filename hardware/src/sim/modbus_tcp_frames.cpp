@@ -24,6 +24,10 @@ bool writable(const RegisterBlock& block, int address, int quantity) {
   return address >= block.firstWritable && address + quantity - 1 <= block.lastWritable;
 }
 
+int deviceRefusal(const RegisterBlock& block, int address, const std::vector<std::uint16_t>& values) {
+  return block.refuseWrite ? block.refuseWrite(address, values) : 0;
+}
+
 PduAnswer readHolding(const std::uint8_t* pdu, std::size_t size, const RegisterBlock& block) {
   if (size != 5) return {exceptionPdu(pdu[0], kIllegalDataValue), false};
   const int address = word(pdu + 1);
@@ -42,6 +46,8 @@ PduAnswer writeSingle(const std::uint8_t* pdu, std::size_t size, const RegisterB
   const int address = word(pdu + 1);
   if (!inBlock(block, address, 1) || !writable(block, address, 1))
     return {exceptionPdu(pdu[0], kIllegalDataAddress), false};
+  if (const int refusal = deviceRefusal(block, address, {word(pdu + 3)}); refusal != 0)
+    return {exceptionPdu(pdu[0], static_cast<std::uint8_t>(refusal)), false};
   block.registers[address - block.first] = word(pdu + 3);
   return {std::vector<std::uint8_t>(pdu, pdu + 5), true};
 }
@@ -56,7 +62,11 @@ PduAnswer writeMultiple(const std::uint8_t* pdu, std::size_t size, const Registe
     return {exceptionPdu(pdu[0], kIllegalDataValue), false};
   if (!inBlock(block, address, quantity) || !writable(block, address, quantity))
     return {exceptionPdu(pdu[0], kIllegalDataAddress), false};
-  for (int i = 0; i < quantity; ++i) block.registers[address - block.first + i] = word(pdu + 6 + 2 * i);
+  std::vector<std::uint16_t> values(static_cast<std::size_t>(quantity));
+  for (int i = 0; i < quantity; ++i) values[static_cast<std::size_t>(i)] = word(pdu + 6 + 2 * i);
+  if (const int refusal = deviceRefusal(block, address, values); refusal != 0)
+    return {exceptionPdu(pdu[0], static_cast<std::uint8_t>(refusal)), false};
+  for (int i = 0; i < quantity; ++i) block.registers[address - block.first + i] = values[static_cast<std::size_t>(i)];
   PduAnswer answer;
   answer.wrote = true;
   answer.pdu.push_back(pdu[0]);

@@ -10,6 +10,7 @@
 // data value), and the frame's length field, not its content, says where the next request begins.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace multidir::hardware::sim {
@@ -46,6 +47,9 @@ struct RegisterBlock {
   int count = 0;
   int firstWritable = 0;
   int lastWritable = -1;
+  // The device's own say on a well-formed write to writable registers (`values` for [address, address +
+  // values.size())): 0 takes it, else the Modbus exception that refuses it (nothing is written). Optional.
+  std::function<int(int address, const std::vector<std::uint16_t>& values)> refuseWrite;
 };
 
 struct PduAnswer {

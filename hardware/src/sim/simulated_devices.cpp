@@ -27,9 +27,41 @@ RotaryController::RotaryController(const SimulatorOptions& options, std::uint16_
   publish();
 }
 
+void RotaryController::lapseControl(Clock::time_point now) {
+  if (m_owner != 0 && now - m_ownerLife > m_options.controlTimeout) m_owner = 0;
+}
+
+int RotaryController::writeRefusal(int address, const std::vector<std::uint16_t>& values, Clock::time_point now) {
+  constexpr int kWrongState = 1;  // Modbus exception 1: not in the device's present state
+  lapseControl(now);
+  const int last = address + static_cast<int>(values.size()) - 1;
+  const auto touches = [&](int reg) { return address <= reg && reg <= last; };
+  const auto value = [&](int reg) { return values[static_cast<std::size_t>(reg - address)]; };
+  if (m_owner == 0 || address == rr::kClaim) return 0;  // CLAIM is the last writable register
+  if (touches(rr::kSession) && value(rr::kSession) == m_owner) {
+    m_ownerLife = now;
+    return 0;
+  }
+  const bool stopAlone = address == rr::kCommand && last == rr::kCommand &&
+                         (value(rr::kCommand) == rr::kCmdStop || value(rr::kCommand) == rr::kCmdEStop);
+  return stopAlone ? 0 : kWrongState;
+}
+
 void RotaryController::afterWrite(Clock::time_point now) {
+  const std::uint16_t claim = m_regs[rr::kClaim];
+  if (claim != 0) {
+    m_regs[rr::kClaim] = 0;
+    lapseControl(now);
+    if (m_owner == 0 || m_owner == claim) {
+      m_owner = claim;
+      m_ownerLife = now;
+    }
+  }
   const std::uint16_t code = m_regs[rr::kCommand];
-  if (code == rr::kCmdNone) return;
+  if (code == rr::kCmdNone) {
+    publish();
+    return;
+  }
   m_regs[rr::kCommand] = rr::kCmdNone;
   m_lastLife = now;  // a command is a sign of life too
   command(code, now);
@@ -76,6 +108,9 @@ void RotaryController::command(std::uint16_t code, Clock::time_point) {
     case rr::kCmdClearFault:
       m_fault = 0;
       break;
+    case rr::kCmdRelease:  // writeRefusal took it only with the holder's session, or while nobody holds it
+      m_owner = 0;
+      break;
     default:
       reject();
       break;
@@ -85,6 +120,7 @@ void RotaryController::command(std::uint16_t code, Clock::time_point) {
 void RotaryController::step(Clock::time_point now) {
   const double dt = seconds(now - m_lastStep);
   m_lastStep = now;
+  lapseControl(now);
   const std::uint16_t heartbeat = m_regs[rr::kHeartbeat];
   if (heartbeat != m_lastHeartbeat) {
     m_lastHeartbeat = heartbeat;
@@ -128,6 +164,7 @@ void RotaryController::publish() {
   m_regs[rr::kStatus] = bits;
   m_regs[rr::kFaultCode] = m_fault;
   if (m_echoing) m_regs[rr::kHeartbeatEcho] = m_regs[rr::kHeartbeat];
+  m_regs[rr::kOwner] = m_owner;
 }
 
 SimulatedRotaryState RotaryController::state() const {
@@ -140,6 +177,7 @@ SimulatedRotaryState RotaryController::state() const {
   s.homing = m_homing;
   s.moving = m_moving;
   s.faultCode = m_fault;
+  s.controlOwner = m_owner;
   return s;
 }
 
@@ -150,7 +188,7 @@ RobotProgram::RobotProgram(const SimulatorOptions& options, std::uint16_t* regs,
   publish();
 }
 
-void RobotProgram::command(std::uint16_t code) {
+void RobotProgram::command(std::uint16_t code, std::uint16_t session) {
   switch (code) {
     case rb::kCmdMove: {
       if (m_state == rb::kStateHalted || m_state == rb::kStateFault) return;  // needs a reset first
@@ -175,6 +213,9 @@ void RobotProgram::command(std::uint16_t code) {
       m_fault = 0;
       m_state = rb::kStateIdle;
       break;
+    case rb::kCmdRelease:
+      if (session == m_owner) m_owner = 0;
+      break;
     default:
       m_state = rb::kStateFault;
       m_fault = rb::kFaultUnknownCommand;
@@ -189,16 +230,32 @@ void RobotProgram::step(Clock::time_point now) {
   ++m_heartbeat;
   if (m_heartbeat == 0) m_heartbeat = 1;
 
+  followControl(now);
+  // A heartbeat or a command counts as life only from the session in control (or anyone while nobody is).
+  const std::uint16_t session = reg(rb::kSession);
+  const bool fromController = m_owner == 0 || session == m_owner;
   const std::uint16_t hostBeat = reg(rb::kHostHeartbeat);
   if (hostBeat != m_lastHostHeartbeat) {
     m_lastHostHeartbeat = hostBeat;
-    m_lastLife = now;
+    if (fromController) {
+      m_lastLife = now;
+      m_ownerLife = now;
+    }
   }
+  // A new SEQUENCE is a new command: taken (and acknowledged) from the controller, a stop or halt from
+  // anyone; another session's other commands are ignored, and ACK_SEQUENCE does not follow them.
   const std::uint16_t sequence = reg(rb::kSequence);
-  if (sequence != m_ack) {
-    m_ack = sequence;
-    m_lastLife = now;
-    command(reg(rb::kCommand));
+  if (sequence != m_lastSequence) {
+    m_lastSequence = sequence;
+    const std::uint16_t code = reg(rb::kCommand);
+    if (fromController || code == rb::kCmdStop || code == rb::kCmdHalt) {
+      m_ack = sequence;
+      if (fromController) {
+        m_lastLife = now;
+        m_ownerLife = now;
+      }
+      command(code, session);
+    }
   }
   const std::uint16_t timeoutMs = reg(rb::kHeartbeatTimeout);
   if (timeoutMs > 0 && m_state == rb::kStateMoving && now - m_lastLife > std::chrono::milliseconds(timeoutMs)) {
@@ -215,8 +272,21 @@ void RobotProgram::step(Clock::time_point now) {
   publish();
 }
 
+// Takes a claim from CLAIM (and clears it) and frees the lock when its holder fell silent.
+void RobotProgram::followControl(Clock::time_point now) {
+  if (m_owner != 0 && now - m_ownerLife > m_options.controlTimeout) m_owner = 0;
+  const std::uint16_t claim = reg(rb::kClaim);
+  if (claim == 0) return;
+  reg(rb::kClaim) = 0;
+  if (m_owner == 0 || m_owner == claim) {
+    m_owner = claim;
+    m_ownerLife = now;
+  }
+}
+
 void RobotProgram::publish() {
   reg(rb::kState) = m_state;
+  reg(rb::kOwner) = m_owner;
   reg(rb::kAckSequence) = m_ack;
   reg(rb::kProgramHeartbeat) = m_heartbeat;
   reg(rb::kFaultCode) = m_fault;
@@ -234,6 +304,7 @@ SimulatedRobotState RobotProgram::state() const {
   s.programState = m_state;
   s.faultCode = m_fault;
   s.acknowledgedSequence = m_ack;
+  s.controlOwner = m_owner;
   return s;
 }
 

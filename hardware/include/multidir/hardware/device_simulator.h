@@ -2,7 +2,8 @@
 // A Modbus TCP server that behaves like MultiDir's devices, for tests, demos and `multidir simulate`:
 // the rotary platform controller at one unit id and the robot arm's registers 128-255 (with the URScript
 // program's behaviour) at every other unit id. Motion runs at finite speed, homing takes time, both
-// heartbeat watchdogs work, and faults can be injected.
+// heartbeat watchdogs work, and faults can be injected. Both devices keep the control lock of docs/hardware.md
+// ("One controller at a time"): one session controls each; stops and e-stops are taken from anyone.
 //
 // Listens on 127.0.0.1 unless told otherwise; port 0 picks a free port (see port()). Runs on its own thread
 // (one poll() loop over non-blocking sockets, so a slow or hostile client never holds up the others); every
@@ -34,6 +35,9 @@ struct SimulatorOptions {
   int rotaryUnitId = 1;                     // requests to this unit id go to the rotary controller
   int maxClients = 64;                      // 1..1000 connections at once
   std::chrono::milliseconds requestTimeout{1000};  // 1..60000 ms from a request's first byte to its last
+  // The control lock (docs/hardware.md, "One controller at a time") lapses when the session holding it has
+  // written nothing with its SESSION for this long (1..60000 ms), as the URScript program's owner_timeout_s.
+  std::chrono::milliseconds controlTimeout{3000};
 
   double rotaryInitialAngleDegrees = 7.5;   // where the platform stands at power-on (not homed)
   double rotaryHomingSpeedDegreesPerSecond = 90.0;
@@ -51,7 +55,8 @@ struct SimulatorOptions {
 
 enum class SimulatedDevice { Rotary, Robot };
 
-// One command write (any write but the heartbeat registers') as the simulator received it.
+// One command write (any write that touches more than the heartbeat, its timeout, SESSION and CLAIM) as the
+// simulator received it, taken or refused.
 struct SimulatedCommandRecord {
   std::chrono::steady_clock::time_point at;  // SimulatorOptions::steadyNow
   SimulatedDevice device = SimulatedDevice::Rotary;
@@ -72,6 +77,7 @@ struct SimulatedRotaryState {
   bool homing = false;
   bool moving = false;
   int faultCode = 0;  // as in the FAULT_CODE register
+  std::uint16_t controlOwner = 0;  // OWNER: the session in control, 0 when nobody is
 };
 
 struct SimulatedRobotState {
@@ -83,6 +89,7 @@ struct SimulatedRobotState {
   int programState = 1;  // as in the STATE register (the simulated program runs from the start)
   int faultCode = 0;
   std::uint16_t acknowledgedSequence = 0;
+  std::uint16_t controlOwner = 0;  // OWNER: the session in control, 0 when nobody is
 };
 
 class DeviceSimulator {
@@ -107,6 +114,11 @@ class DeviceSimulator {
   void setReplyDelay(std::chrono::milliseconds delay);
   // Answers every request to `device` with this Modbus exception code (1..11; 0: answer normally).
   void setExceptionReply(SimulatedDevice device, int exceptionCode);
+  // Answers the next `count` writes of a stop or e-stop command to `device` (rotary COMMAND 5 or 6, robot
+  // COMMAND 2 or 3) with this Modbus exception code (6 busy, 4 device failure...) and takes none of them, as a
+  // controller busy in a state change or a gateway with a failing link would; later ones are taken. Each is
+  // still in commandLog().
+  void refuseStops(SimulatedDevice device, int exceptionCode, int count);
   // The rotary motor stops turning although the controller believes it moves.
   void setMotorStuck(bool stuck);
   // The device stops answering heartbeats: the rotary controller freezes its HEARTBEAT_ECHO, the robot
@@ -116,8 +128,8 @@ class DeviceSimulator {
   // Observation.
   [[nodiscard]] SimulatedRotaryState rotaryState() const;
   [[nodiscard]] SimulatedRobotState robotState() const;
-  // Requests received by a device, and those among them that write anything but the heartbeat registers
-  // (target, speed, command, sequence...): a refused command must leave the second at 0.
+  // Requests received by a device, and those among them that write more than the heartbeat registers and the
+  // control lock's (target, speed, command, sequence...): a refused command must leave the second at 0.
   [[nodiscard]] std::uint64_t requestCount(SimulatedDevice device) const;
   [[nodiscard]] std::uint64_t commandWriteCount(SimulatedDevice device) const;
   // Every command write, in the order received.

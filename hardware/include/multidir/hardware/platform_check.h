@@ -9,8 +9,8 @@
 
 namespace multidir::hardware {
 
-// Reads the status block of the device `kind` needs at `connection` (the rotary controller's registers 0-12
-// at `rotaryUnitId`, or the robot program's 128-149 at `robotUnitId`). Done when it reads, and whenever the
+// Reads the status block of the device `kind` needs at `connection` (the rotary controller's registers 0-13
+// at `rotaryUnitId`, or the robot program's 128-150 at `robotUnitId`). Done when it reads, and whenever the
 // check cannot tell (nothing answers, a timeout, another failure: the driver's connect() then says why in its
 // own words). When the device refuses the block with a Modbus exception and the other device's block reads,
 // InvalidParameter saying what the job needs, what answers there and what to do.

@@ -15,6 +15,7 @@
 #include "multidir/core/common/result.h"
 #include "multidir/core/search/machine.h"
 #include "multidir/hardware/connection.h"
+#include "multidir/hardware/control_lock.h"
 #include "multidir/hardware/stop_latch.h"
 
 namespace multidir::hardware {
@@ -47,6 +48,7 @@ struct RobotStatus {
   std::string lastError;
   std::uint64_t polls = 0;
   StopLatch stop;  // the stop or e-stop held until clearStop(): moves are refused
+  ControlLock control;  // this driver's session and who controls the device (control_lock.h)
 };
 
 struct RobotArmOptions {
@@ -73,8 +75,8 @@ class RobotArm {
   RobotArm(const RobotArm&) = delete;
   RobotArm& operator=(const RobotArm&) = delete;
 
-  core::Status connect();  // as RotaryPlatform::connect
-  void disconnect();
+  core::Status connect();  // as RotaryPlatform::connect: claims the program's control lock too
+  void disconnect();       // as RotaryPlatform::disconnect
 
   // Requires the program alive and not halted or faulted; azimuth is taken modulo 360.
   std::future<core::Status> moveTo(double tiltDegrees, double azimuthDegrees);

@@ -21,6 +21,7 @@
 #include "multidir/core/common/result.h"
 #include "multidir/core/search/machine.h"
 #include "multidir/hardware/connection.h"
+#include "multidir/hardware/control_lock.h"
 #include "multidir/hardware/stop_latch.h"
 
 namespace multidir::hardware {
@@ -54,6 +55,7 @@ struct RotaryStatus {
   std::string lastError;          // the latest link or device problem, for the operator ("" when none)
   std::uint64_t polls = 0;        // status reads since connect(); grows while the link works
   StopLatch stop;                 // the stop or e-stop held until clearStop(): moves and homing are refused
+  ControlLock control;            // this driver's session and who controls the device (control_lock.h)
 };
 
 struct RotaryPlatformOptions {
@@ -77,10 +79,14 @@ class RotaryPlatform {
   RotaryPlatform& operator=(const RotaryPlatform&) = delete;
 
   // Starts the worker and waits for the first connection attempt (at most about twice the response
-  // timeout). Done once connected and the status read; otherwise the attempt's error, and the worker keeps
-  // retrying with backoff in the background. InvalidParameter for bad options (nothing started).
+  // timeout). Done once connected, the controller claimed for this driver's session (control_lock.h) and the
+  // status read; otherwise the attempt's error (DeviceFault "... is controlled by another run (session
+  // 1a2b); stop that run first" while another driver holds it), and the worker keeps retrying with backoff in
+  // the background: a latched stop or e-stop is written on each attempt all the same. InvalidParameter for
+  // bad options (nothing started).
   core::Status connect();
-  // Stops the worker and closes the link without commanding the device.
+  // Gives control back (the release command) when it holds it, stops the worker and closes the link,
+  // without stopping the device (its heartbeat watchdog does).
   void disconnect();
 
   // Commands. Each returns a future that is ready at once with the refusal, or once the worker has written
