@@ -34,6 +34,9 @@ const char* const kCancelLines[] = {"M104 S0", "M140 S0", "M107"};
 // switchHeatersOff(): both heaters, nothing else.
 const char* const kHeatersOffLines[] = {"M104 S0", "M140 S0"};
 constexpr std::size_t kRenumberAfterLines = 10000;
+// Marlin answers M105 with its temperatures on the ok line: this many temperature polls answered with a bare ok
+// in a row (no temperature report between them) mean the printer's state cannot be read.
+constexpr int kBareTemperaturePollsLimit = 3;
 
 core::Error invalid(const std::string& what, const std::string& where) {
   return core::Error{core::ErrorCode::InvalidParameter, what, where};
@@ -118,7 +121,10 @@ class MarlinLink : public PrinterLink {
     std::lock_guard<std::mutex> lock(m_mutex);
     PrinterStatus s = m_status;
     s.stop = m_stop.state();
-    s.linkLost = s.polls == 0 || m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter;
+    s.linkLost = s.polls == 0 || m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter ||
+                 m_bareTemperaturePolls >= kBareTemperaturePollsLimit;
+    if (s.linkLost && s.polls > 0)
+      if (std::string why = notAnsweringReason(); !why.empty()) s.lastError = std::move(why);
     return s;
   }
 
@@ -133,8 +139,10 @@ class MarlinLink : public PrinterLink {
     std::string remoteName;
     std::promise<core::Status> promise;
   };
-  // What a numbered line is for, so its ok can be acted on.
-  enum class Role { Reset, Poll, File, JobEnd, CoolDown, CoolDownEnd, HeatersOff, HeatersOffEnd };
+  // What a numbered line is for, so its ok can be acted on. A job ends with M400 (JobEnd: Marlin answers it
+  // once its planner is empty) and M114 (JobEndReport): Marlin runs its commands in order, so the position report
+  // M114 writes proves the M400 done, where an ok alone could be one that answers no line.
+  enum class Role { Reset, Poll, File, JobEnd, JobEndReport, CoolDown, CoolDownEnd, HeatersOff, HeatersOffEnd };
   struct Line {
     std::string command;
     Role role = Role::Poll;
@@ -146,6 +154,8 @@ class MarlinLink : public PrinterLink {
     std::size_t nextFileLine = 0;  // the next file line to number and send
     std::size_t acknowledged = 0;  // file lines the printer took
     bool endQueued = false;        // M400 numbered
+    bool reportQueued = false;     // M114 numbered
+    bool reportSent = false;       // ... and written: its position report ends the job
     bool cancelling = false;
     std::size_t coolDownQueued = 0;
   };
@@ -212,6 +222,10 @@ class MarlinLink : public PrinterLink {
     }
     m_openedAt = Clock::now();
     m_rx.clear();
+    m_unknownSinceRead = 0;
+    m_oksSinceRead = 0;
+    m_bareTemperaturePolls = 0;
+    m_advancedOk = false;
     resetNumbering();
     // A stop latched before (or while) the port was closed is written again first: the printer may have
     // restarted meanwhile.
@@ -281,14 +295,20 @@ class MarlinLink : public PrinterLink {
       checkSilence();
       pump();
       std::lock_guard<std::mutex> lock(m_mutex);
-      if (!m_threads.firstReported() && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter)
-        m_threads.reportFirst(
-            core::Error{core::ErrorCode::DeviceUnreachable,
-                        "no answer from the printer within " + std::to_string(2 * m_options.linkLostAfter.count()) +
-                            " ms of opening " + m_settings.devicePath + " at " + std::to_string(m_settings.baud) +
-                            " baud: check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
-                            "the printer is on, and that no other program uses the port",
-                        m_name});
+      if (!m_threads.firstReported() && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter) {
+        const std::string seen = m_unknownSinceRead > 0
+                                     ? " (only lines that are not Marlin's protocol came back, the last " +
+                                           marlin::quoted(m_lastUnknown) + ")"
+                                 : m_oksSinceRead > 0 ? " (it answered ok, but never with its temperatures)"
+                                                      : std::string();
+        m_threads.reportFirst(core::Error{
+            core::ErrorCode::DeviceUnreachable,
+            "no answer from the printer within " + std::to_string(2 * m_options.linkLostAfter.count()) +
+                " ms of opening " + m_settings.devicePath + " at " + std::to_string(m_settings.baud) + " baud" + seen +
+                ": check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
+                "the printer is on, and that no other program uses the port",
+            m_name});
+      }
     }
   }
 
@@ -330,17 +350,26 @@ class MarlinLink : public PrinterLink {
     return true;
   }
 
+  // Liveness: only lines of Marlin's protocol say the printer answers (noise says nothing), and only status
+  // reads (temperatures, M114's position, busy) keep status().linkLost false: oks alone tell nothing of its state.
   void onLine(const std::string& text) {
     const marlin::Reply reply = marlin::parseReply(text);
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_lastRx = Clock::now();
-    m_status.lastReply = m_options.steadyNow();
+    if (reply.kind == marlin::Reply::Kind::Unknown) {
+      ++m_unknownSinceRead;
+      m_lastUnknown = text;
+      warn("the printer sent a line that is not Marlin's protocol: " + marlin::quoted(text) +
+           " (not taken as an answer)");
+      return;
+    }
+    m_lastProtocolLine = Clock::now();
     m_status.link = LinkState::Connected;
     if (reply.extruder || reply.bed) {
       if (reply.extruder) m_status.extruder = *reply.extruder;
       if (reply.bed) m_status.bed = *reply.bed;
       m_lastTemperature = Clock::now();
-      ++m_status.polls;
+      m_bareTemperaturePolls = 0;
+      noteStatusRead();
       if (m_status.firmwareState.empty()) m_status.firmwareState = "ready";
       if (m_status.state == PrinterJobState::Unknown) m_status.state = PrinterJobState::Standby;
       m_status.lastError.clear();
@@ -348,7 +377,10 @@ class MarlinLink : public PrinterLink {
     }
     switch (reply.kind) {
       case marlin::Reply::Kind::Ok:
-        onOk();
+        onOk(reply);
+        break;
+      case marlin::Reply::Kind::Position:
+        onPosition();
         break;
       case marlin::Reply::Kind::Resend:
         onResend(reply.resendLine);
@@ -364,21 +396,100 @@ class MarlinLink : public PrinterLink {
         onAction(reply.text);
         break;
       case marlin::Reply::Kind::Busy:
-      case marlin::Reply::Kind::Other:
+        // Marlin's keepalive while a command blocks (M109, G28, M400, a move waiting for room in the planner):
+        // the printer is working on what it was sent. A status read once its state was read at all.
+        if (m_status.polls > 0) noteStatusRead();
+        break;
+      case marlin::Reply::Kind::Info:
         if (text == "start" && m_numberingReady) onRestart();
+        break;
+      case marlin::Reply::Kind::Unknown:
         break;
     }
   }
 
-  // m_mutex held.
-  void onOk() {
+  // m_mutex held: a line that tells the printer's state arrived.
+  void noteStatusRead() {
+    m_status.lastReply = m_options.steadyNow();
+    ++m_status.polls;
+    m_unknownSinceRead = 0;
+    m_oksSinceRead = 0;
+  }
+
+  // m_mutex held: a line the link cannot account for; it goes on without it.
+  void warn(const std::string& what) {
+    ++m_status.protocolWarnings;
+    m_status.lastWarning = what;
+  }
+
+  // m_mutex held: why status().linkLost, when the printer still sends lines ("" when it sends none).
+  std::string notAnsweringReason() const {
+    if (m_bareTemperaturePolls >= kBareTemperaturePollsLimit)
+      return "the printer answered its last " + std::to_string(m_bareTemperaturePolls) +
+             " temperature polls (M105) with a bare ok and no temperature report: its state cannot be read, so it "
+             "counts as not answering; check that the device is a Marlin printer and that nothing else answers on "
+             "its port";
+    const std::string since = " for " + std::to_string(m_options.linkLostAfter.count()) + " ms";
+    if (m_unknownSinceRead > 0)
+      return "the printer is not answering: " + std::to_string(m_unknownSinceRead) +
+             " lines that are not Marlin's protocol came" + since + " and nothing else (the last " +
+             marlin::quoted(m_lastUnknown) +
+             "): check the baud rate (Marlin's BAUDRATE, often 115200 or 250000) and the cable";
+    if (m_oksSinceRead > 0)
+      return "the printer is not answering: it sent oks but no temperature, position or busy report" + since +
+             ", so its state cannot be read";
+    return {};
+  }
+
+  // m_mutex held: which line in flight an ok answers. Marlin answers the lines it takes in order, one ok each;
+  // with ADVANCED_OK the ok names the line ("ok N12 P15 B3"). An ok that answers no line in flight (more oks than
+  // lines) is a protocol warning and counts for nothing: counted, it would answer a later line early, and the
+  // job's M400 would read done with moves still in the planner.
+  void onOk(const marlin::Reply& reply) {
+    const bool temperatures = reply.extruder || reply.bed;
+    if (!temperatures) ++m_oksSinceRead;
     if (m_oksToSkip > 0) {  // the ok that follows a Resend answers the refused line, not a new one
       --m_oksToSkip;
       return;
     }
     m_resentAfterSilence = false;
-    if (m_ackedUpTo >= m_sentUpTo) return;  // a stray ok (the printer's start-up, a line sent before a reset)
+    if (reply.okLine >= 0) {
+      m_advancedOk = true;
+      if (reply.okLine <= m_ackedUpTo || reply.okLine > m_sentUpTo)
+        return warn("the printer sent an ok for line " + std::to_string(reply.okLine) +
+                    ", which answers no line in flight (" + inFlightText() + "): not counted");
+      while (m_ackedUpTo < reply.okLine) acknowledgeNext();
+      return;
+    }
+    if (m_ackedUpTo >= m_sentUpTo)
+      return warn("the printer sent an ok that answers no line in flight (" + inFlightText() + "): not counted");
+    const Line& oldest = m_lines[static_cast<std::size_t>(m_ackedUpTo + 1)];
+    // Marlin answers M105 itself, without ADVANCED_OK's number; any other ok of a printer that numbers its oks
+    // and comes without a number answers no line.
+    if (m_advancedOk && !temperatures && oldest.role != Role::Poll)
+      return warn(
+          "the printer sent an ok without the line number its oks carry (ADVANCED_OK), which answers no "
+          "line in flight (" +
+          inFlightText() + "): not counted");
+    if (oldest.role == Role::Poll && !temperatures) ++m_bareTemperaturePolls;
     acknowledgeNext();
+  }
+
+  // m_mutex held: "line 12 is", "lines 12 to 14 are", "no line is".
+  std::string inFlightText() const {
+    if (m_sentUpTo <= m_ackedUpTo) return "no line is";
+    if (m_sentUpTo == m_ackedUpTo + 1) return "line " + std::to_string(m_sentUpTo) + " is";
+    return "lines " + std::to_string(m_ackedUpTo + 1) + " to " + std::to_string(m_sentUpTo) + " are";
+  }
+
+  // m_mutex held: M114's position report. After the job's M114 was written it ends the job: Marlin ran the M400
+  // before it, so the planner was empty and every move of the step done.
+  void onPosition() {
+    noteStatusRead();
+    if (!m_job || !m_job->reportSent || m_job->cancelling) return;
+    m_status.state = PrinterJobState::Complete;
+    m_status.progress = 1.0;
+    m_job.reset();
   }
 
   // m_mutex held: the printer took the oldest line in flight.
@@ -393,7 +504,7 @@ class MarlinLink : public PrinterLink {
           m_status.currentFile = m_job->name;
           m_status.progress = 0.0;
           m_status.message.clear();
-          ++m_status.polls;  // the start's answer is a status read of its own
+          noteStatusRead();  // the start's answer is a status read of its own
           m_startPromise->set_value(core::Done{});
           m_startPromise.reset();
         }
@@ -408,13 +519,8 @@ class MarlinLink : public PrinterLink {
                                   : static_cast<double>(m_job->acknowledged) / static_cast<double>(m_job->lines.size());
         }
         break;
-      case Role::JobEnd:
-        if (m_job) {
-          m_status.state = PrinterJobState::Complete;
-          m_status.progress = 1.0;
-          ++m_status.polls;
-          m_job.reset();
-        }
+      case Role::JobEnd:  // the job ends with M114's report (onPosition)
+      case Role::JobEndReport:
         break;
       case Role::CoolDown:
         break;
@@ -427,7 +533,7 @@ class MarlinLink : public PrinterLink {
         break;
       case Role::CoolDownEnd:
         m_status.state = PrinterJobState::Cancelled;
-        ++m_status.polls;
+        noteStatusRead();
         m_job.reset();
         if (m_cancelPromise) m_cancelPromise->set_value(core::Done{});
         m_cancelPromise.reset();
@@ -496,6 +602,8 @@ class MarlinLink : public PrinterLink {
       m_status.state = PrinterJobState::Standby;
       m_status.message.clear();
     }
+    m_advancedOk = false;  // the firmware may be another one now
+    m_bareTemperaturePolls = 0;
     resetNumbering();
   }
 
@@ -631,13 +739,14 @@ class MarlinLink : public PrinterLink {
     return lines;
   }
 
-  // No answer at all for linkLostAfter while lines are in flight: their oks (or the lines) were lost: send
-  // them again. Marlin answers a line it had with "Resend: <next>", so nothing is done twice.
+  // No line in Marlin's protocol for linkLostAfter while lines are in flight (noise does not count): their oks
+  // (or the lines) were lost: send them again. Marlin answers a line it had with "Resend: <next>", so nothing is
+  // done twice.
   void checkSilence() {
     std::lock_guard<std::mutex> lock(m_mutex);
     const auto now = Clock::now();
     if (m_sentUpTo <= m_ackedUpTo) return;
-    const auto since = std::max(m_lastRx, std::max(m_lastSend, m_lastSilenceResend));
+    const auto since = std::max(m_lastProtocolLine, std::max(m_lastSend, m_lastSilenceResend));
     if (now - since < m_options.linkLostAfter) return;
     m_lastSilenceResend = now;
     m_resentAfterSilence = true;
@@ -657,7 +766,9 @@ class MarlinLink : public PrinterLink {
         if (inFlight >= m_settings.maxUnacknowledgedLines) return;
         if (m_sentUpTo + 1 >= static_cast<long>(m_lines.size()) && !appendNextLine()) return;
         ++m_sentUpTo;
-        text = marlinNumberedLine(m_sentUpTo, m_lines[static_cast<std::size_t>(m_sentUpTo)].command) + "\n";
+        const Line& line = m_lines[static_cast<std::size_t>(m_sentUpTo)];
+        if (line.role == Role::JobEndReport && m_job) m_job->reportSent = true;
+        text = marlinNumberedLine(m_sentUpTo, line.command) + "\n";
         m_lastSend = Clock::now();
       }
       if (const core::Status sent = sendRaw(text); !sent.ok()) {
@@ -702,7 +813,12 @@ class MarlinLink : public PrinterLink {
       }
       if (!job.endQueued) {
         job.endQueued = true;
-        m_lines.push_back(Line{"M400", Role::JobEnd, 0});  // its ok: every move done
+        m_lines.push_back(Line{"M400", Role::JobEnd, 0});  // Marlin takes the next command once every move is done
+        return true;
+      }
+      if (!job.reportQueued) {
+        job.reportQueued = true;
+        m_lines.push_back(Line{"M114", Role::JobEndReport, 0});  // its report: the M400 before it is done
         return true;
       }
       return false;
@@ -790,7 +906,13 @@ class MarlinLink : public PrinterLink {
   bool m_numberingReady = false;
   bool m_resetDue = false;
   bool m_resentAfterSilence = false;
+  bool m_advancedOk = false;  // the printer's oks name their line (ADVANCED_OK): a bare ok then answers no line
   std::uint64_t m_resends = 0;
+  // Since the last status read (temperatures, position, busy): lines that were not the protocol, and oks.
+  std::uint64_t m_unknownSinceRead = 0;
+  std::uint64_t m_oksSinceRead = 0;
+  std::string m_lastUnknown;
+  int m_bareTemperaturePolls = 0;  // M105s answered with a bare ok since the last temperature report
   std::map<std::string, std::vector<std::string>> m_files;
   std::optional<Job> m_job;
   std::optional<std::promise<core::Status>> m_startPromise;
@@ -798,7 +920,7 @@ class MarlinLink : public PrinterLink {
   std::optional<std::promise<core::Status>> m_heatersOffPromise;
   std::size_t m_heatersOffQueued = 0;  // of kHeatersOffLines numbered so far
   Clock::time_point m_openedAt{};
-  Clock::time_point m_lastRx{};
+  Clock::time_point m_lastProtocolLine{};  // the last line in Marlin's protocol (worker clock)
   Clock::time_point m_lastSend{};
   Clock::time_point m_lastSilenceResend{};
   Clock::time_point m_lastTemperature{};
@@ -811,56 +933,6 @@ class MarlinLink : public PrinterLink {
 };
 
 }  // namespace
-
-const std::vector<int>& marlinBaudRates() {
-  static const std::vector<int> rates = {9600,   19200,  38400,  57600,  115200, 230400,
-                                         250000, 460800, 500000, 576000, 921600, 1000000};
-  return rates;
-}
-
-core::Result<MarlinSettings> parseMarlinUrl(const std::string& url) {
-  const std::string scheme = "serial://";
-  if (url.rfind(scheme, 0) != 0)
-    return invalid("'" + url + "' is not a serial address: use serial:///dev/ttyACM0[?baud=115200]", "--printer");
-  std::string rest = url.substr(scheme.size());
-  MarlinSettings settings;
-  std::string query;
-  if (const std::size_t q = rest.find('?'); q != std::string::npos) {
-    query = rest.substr(q + 1);
-    rest.resize(q);
-  }
-  if (rest.empty() || rest[0] != '/')
-    return invalid("'" + url + "' names no absolute device path: use serial:///dev/ttyACM0 (three slashes)",
-                   "--printer");
-  settings.devicePath = rest;
-  std::size_t begin = 0;
-  while (begin < query.size()) {
-    std::size_t end = query.find('&', begin);
-    if (end == std::string::npos) end = query.size();
-    const std::string pair = query.substr(begin, end - begin);
-    begin = end + 1;
-    const std::size_t eq = pair.find('=');
-    const std::string key = pair.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : pair.substr(eq + 1);
-    const bool digits = !value.empty() && value.size() <= 8 &&
-                        std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (key == "baud") {
-      if (!digits || !serial::supportedRate(std::stoi(value)))
-        return invalid("'" + url +
-                           "': baud must be one of 9600, 19200, 38400, 57600, 115200, 230400, 250000, "
-                           "460800, 500000, 576000, 921600, 1000000 (Marlin's BAUDRATE)",
-                       "--printer");
-      settings.baud = std::stoi(value);
-    } else if (key == "window") {
-      if (!digits || std::stoi(value) < 1 || std::stoi(value) > 4)
-        return invalid("'" + url + "': window must be 1 to 4 lines (Marlin's command buffer)", "--printer");
-      settings.maxUnacknowledgedLines = std::stoi(value);
-    } else {
-      return invalid("'" + url + "': unknown option '" + key + "' (known: baud, window)", "--printer");
-    }
-  }
-  return settings;
-}
 
 core::Result<std::unique_ptr<PrinterLink>> makeMarlinLink(const MarlinSettings& settings,
                                                           const PrinterLinkOptions& options) {
