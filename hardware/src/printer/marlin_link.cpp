@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "printer/latched_emergency_stop.h"
+#include "printer/marlin_line_ledger.h"
 #include "printer/marlin_protocol.h"
 #include "printer/printer_link_threads.h"
 #include "printer/serial_port.h"
@@ -139,15 +140,8 @@ class MarlinLink : public PrinterLink {
     std::string remoteName;
     std::promise<core::Status> promise;
   };
-  // What a numbered line is for, so its ok can be acted on. A job ends with M400 (JobEnd: Marlin answers it
-  // once its planner is empty) and M114 (JobEndReport): Marlin runs its commands in order, so the position report
-  // M114 writes proves the M400 done, where an ok alone could be one that answers no line.
-  enum class Role { Reset, Poll, File, JobEnd, JobEndReport, CoolDown, CoolDownEnd, HeatersOff, HeatersOffEnd };
-  struct Line {
-    std::string command;
-    Role role = Role::Poll;
-    std::size_t fileLine = 0;  // Role::File: index in the job's lines
-  };
+  using Role = marlin::LineRole;
+  using Line = marlin::StreamLine;
   struct Job {
     std::string name;
     std::vector<std::string> lines;
@@ -225,8 +219,7 @@ class MarlinLink : public PrinterLink {
     m_unknownSinceRead = 0;
     m_oksSinceRead = 0;
     m_bareTemperaturePolls = 0;
-    m_advancedOk = false;
-    resetNumbering();
+    m_ledger.forgetPrinter();
     // A stop latched before (or while) the port was closed is written again first: the printer may have
     // restarted meanwhile.
     if (m_stop.latched()) {
@@ -234,16 +227,6 @@ class MarlinLink : public PrinterLink {
       m_threads.stopWake().notify_all();
     }
     return true;
-  }
-
-  // Worker, m_mutex held: the next line is N0 M110 N0 (Marlin's "set the current line number").
-  void resetNumbering() {
-    m_lines.clear();
-    m_lines.push_back(Line{"M110 N0", Role::Reset, 0});
-    m_sentUpTo = -1;
-    m_ackedUpTo = -1;
-    m_oksToSkip = 0;
-    m_numberingReady = false;
   }
 
   // Never called with m_mutex held (the lock order is m_mutex, then m_writeMutex).
@@ -401,7 +384,7 @@ class MarlinLink : public PrinterLink {
         if (m_status.polls > 0) noteStatusRead();
         break;
       case marlin::Reply::Kind::Info:
-        if (text == "start" && m_numberingReady) onRestart();
+        if (text == "start" && m_ledger.numberingReady()) onRestart();
         break;
       case marlin::Reply::Kind::Unknown:
         break;
@@ -441,45 +424,13 @@ class MarlinLink : public PrinterLink {
     return {};
   }
 
-  // m_mutex held: which line in flight an ok answers. Marlin answers the lines it takes in order, one ok each;
-  // with ADVANCED_OK the ok names the line ("ok N12 P15 B3"). An ok that answers no line in flight (more oks than
-  // lines) is a protocol warning and counts for nothing: counted, it would answer a later line early, and the
-  // job's M400 would read done with moves still in the planner.
+  // m_mutex held: the ledger says which line in flight the ok answers (marlin_line_ledger.h); an ok that
+  // answers none is a protocol warning and counts for nothing.
   void onOk(const marlin::Reply& reply) {
-    const bool temperatures = reply.extruder || reply.bed;
-    if (!temperatures) ++m_oksSinceRead;
-    if (m_oksToSkip > 0) {  // the ok that follows a Resend answers the refused line, not a new one
-      --m_oksToSkip;
-      return;
-    }
-    m_resentAfterSilence = false;
-    if (reply.okLine >= 0) {
-      m_advancedOk = true;
-      if (reply.okLine <= m_ackedUpTo || reply.okLine > m_sentUpTo)
-        return warn("the printer sent an ok for line " + std::to_string(reply.okLine) +
-                    ", which answers no line in flight (" + inFlightText() + "): not counted");
-      while (m_ackedUpTo < reply.okLine) acknowledgeNext();
-      return;
-    }
-    if (m_ackedUpTo >= m_sentUpTo)
-      return warn("the printer sent an ok that answers no line in flight (" + inFlightText() + "): not counted");
-    const Line& oldest = m_lines[static_cast<std::size_t>(m_ackedUpTo + 1)];
-    // Marlin answers M105 itself, without ADVANCED_OK's number; any other ok of a printer that numbers its oks
-    // and comes without a number answers no line.
-    if (m_advancedOk && !temperatures && oldest.role != Role::Poll)
-      return warn(
-          "the printer sent an ok without the line number its oks carry (ADVANCED_OK), which answers no "
-          "line in flight (" +
-          inFlightText() + "): not counted");
-    if (oldest.role == Role::Poll && !temperatures) ++m_bareTemperaturePolls;
-    acknowledgeNext();
-  }
-
-  // m_mutex held: "line 12 is", "lines 12 to 14 are", "no line is".
-  std::string inFlightText() const {
-    if (m_sentUpTo <= m_ackedUpTo) return "no line is";
-    if (m_sentUpTo == m_ackedUpTo + 1) return "line " + std::to_string(m_sentUpTo) + " is";
-    return "lines " + std::to_string(m_ackedUpTo + 1) + " to " + std::to_string(m_sentUpTo) + " are";
+    if (!reply.extruder && !reply.bed) ++m_oksSinceRead;
+    const marlin::LineLedger::OkOutcome outcome = m_ledger.onOk(reply, [this](const Line& line) { acknowledge(line); });
+    if (outcome.barePoll) ++m_bareTemperaturePolls;
+    if (!outcome.warning.empty()) warn(outcome.warning);
   }
 
   // m_mutex held: M114's position report. After the job's M114 was written it ends the job: Marlin ran the M400
@@ -492,13 +443,10 @@ class MarlinLink : public PrinterLink {
     m_job.reset();
   }
 
-  // m_mutex held: the printer took the oldest line in flight.
-  void acknowledgeNext() {
-    ++m_ackedUpTo;
-    const Line& line = m_lines[static_cast<std::size_t>(m_ackedUpTo)];
+  // m_mutex held: the printer took `line` (the oldest in flight).
+  void acknowledge(const Line& line) {
     switch (line.role) {
       case Role::Reset:
-        m_numberingReady = true;
         if (m_job && m_startPromise) {
           m_status.state = PrinterJobState::Printing;
           m_status.currentFile = m_job->name;
@@ -543,23 +491,8 @@ class MarlinLink : public PrinterLink {
 
   // m_mutex held: the printer refused line n (bad checksum, wrong number) and every line after it.
   void onResend(long n) {
-    ++m_oksToSkip;
-    // A damaged "N0 M110 N0" never reset the printer's numbering, so it asks for the next line of the old one:
-    // the reset goes again (Marlin takes an M110 whatever its number).
-    if (m_ackedUpTo < m_sentUpTo && m_lines[static_cast<std::size_t>(m_ackedUpTo + 1)].role == Role::Reset) {
-      m_sentUpTo = m_ackedUpTo;
-      return;
-    }
-    if (n < 0 || n > static_cast<long>(m_lines.size()) || n <= m_ackedUpTo) {
-      m_status.lastError = "the printer asked for line " + std::to_string(n) + ", which this link did not send";
-      return;
-    }
-    // After a silence the oks of the lines in flight may be lost, not the lines: the printer naming the line it
-    // wants says which it had.
-    if (m_resentAfterSilence)
-      while (m_ackedUpTo < n - 1 && m_ackedUpTo + 1 < static_cast<long>(m_lines.size())) acknowledgeNext();
-    m_resentAfterSilence = false;
-    m_sentUpTo = std::max(m_ackedUpTo, std::min(m_sentUpTo, n - 1));
+    if (std::string problem = m_ledger.onResend(n, [this](const Line& line) { acknowledge(line); }); !problem.empty())
+      m_status.lastError = std::move(problem);
   }
 
   // m_mutex held: Marlin stopped (its own words), or halted after an M112.
@@ -602,9 +535,8 @@ class MarlinLink : public PrinterLink {
       m_status.state = PrinterJobState::Standby;
       m_status.message.clear();
     }
-    m_advancedOk = false;  // the firmware may be another one now
     m_bareTemperaturePolls = 0;
-    resetNumbering();
+    m_ledger.forgetPrinter();  // the firmware may be another one now
   }
 
   // m_mutex held: the printer's halt confirms the stop sent as `generation`.
@@ -745,14 +677,13 @@ class MarlinLink : public PrinterLink {
   void checkSilence() {
     std::lock_guard<std::mutex> lock(m_mutex);
     const auto now = Clock::now();
-    if (m_sentUpTo <= m_ackedUpTo) return;
+    if (m_ledger.inFlight() <= 0) return;
     const auto since = std::max(m_lastProtocolLine, std::max(m_lastSend, m_lastSilenceResend));
     if (now - since < m_options.linkLostAfter) return;
     m_lastSilenceResend = now;
-    m_resentAfterSilence = true;
-    m_sentUpTo = m_ackedUpTo;
+    const long again = m_ledger.resendAfterSilence();
     m_status.lastError = "no answer from the printer for " + std::to_string(m_options.linkLostAfter.count()) +
-                         " ms: sending line " + std::to_string(m_ackedUpTo + 1) + " again";
+                         " ms: sending line " + std::to_string(again) + " again";
   }
 
   // Sends what the window allows: lines to resend, then the job's next line or a temperature poll.
@@ -762,13 +693,12 @@ class MarlinLink : public PrinterLink {
       {
         std::lock_guard<std::mutex> lock(m_mutex);
         if (m_status.firmwareState == "halted") return;
-        const long inFlight = m_sentUpTo - m_ackedUpTo;
-        if (inFlight >= m_settings.maxUnacknowledgedLines) return;
-        if (m_sentUpTo + 1 >= static_cast<long>(m_lines.size()) && !appendNextLine()) return;
-        ++m_sentUpTo;
-        const Line& line = m_lines[static_cast<std::size_t>(m_sentUpTo)];
+        if (m_ledger.inFlight() >= m_settings.maxUnacknowledgedLines) return;
+        if (!m_ledger.hasUnsent() && !appendNextLine()) return;
+        const long number = m_ledger.sendNext();
+        const Line& line = m_ledger.line(number);
         if (line.role == Role::JobEndReport && m_job) m_job->reportSent = true;
-        text = marlinNumberedLine(m_sentUpTo, line.command) + "\n";
+        text = marlinNumberedLine(number, line.command) + "\n";
         m_lastSend = Clock::now();
       }
       if (const core::Status sent = sendRaw(text); !sent.ok()) {
@@ -781,13 +711,13 @@ class MarlinLink : public PrinterLink {
 
   // m_mutex held: numbers the next line to send, if any is due. Never while the job's reset waits.
   bool appendNextLine() {
-    if (!m_numberingReady) return false;  // N0 M110 is in flight: wait for its ok
+    if (!m_ledger.numberingReady()) return false;  // N0 M110 is in flight: wait for its ok
     // Idle polls number lines too: start again from N0 now and then, so the history kept for resends stays small.
-    if (!m_job && m_lines.size() > kRenumberAfterLines) m_resetDue = true;
+    if (!m_job && m_ledger.numbered() > kRenumberAfterLines) m_resetDue = true;
     if (m_resetDue) {
-      if (m_sentUpTo != m_ackedUpTo) return false;
+      if (m_ledger.inFlight() != 0) return false;
       m_resetDue = false;
-      resetNumbering();
+      m_ledger.renumber();  // the next line is N0 M110 N0
       return true;
     }
     const auto now = Clock::now();
@@ -803,22 +733,22 @@ class MarlinLink : public PrinterLink {
         const std::size_t count = sizeof kCancelLines / sizeof kCancelLines[0];
         if (job.coolDownQueued >= count) return false;
         const Role role = job.coolDownQueued + 1 == count ? Role::CoolDownEnd : Role::CoolDown;
-        m_lines.push_back(Line{kCancelLines[job.coolDownQueued++], role, 0});
+        m_ledger.append(Line{kCancelLines[job.coolDownQueued++], role, 0});
         return true;
       }
       if (job.nextFileLine < job.lines.size()) {
-        m_lines.push_back(Line{job.lines[job.nextFileLine], Role::File, job.nextFileLine});
+        m_ledger.append(Line{job.lines[job.nextFileLine], Role::File, job.nextFileLine});
         ++job.nextFileLine;
         return true;
       }
       if (!job.endQueued) {
         job.endQueued = true;
-        m_lines.push_back(Line{"M400", Role::JobEnd, 0});  // Marlin takes the next command once every move is done
+        m_ledger.append(Line{"M400", Role::JobEnd, 0});  // Marlin takes the next command once every move is done
         return true;
       }
       if (!job.reportQueued) {
         job.reportQueued = true;
-        m_lines.push_back(Line{"M114", Role::JobEndReport, 0});  // its report: the M400 before it is done
+        m_ledger.append(Line{"M114", Role::JobEndReport, 0});  // its report: the M400 before it is done
         return true;
       }
       return false;
@@ -828,7 +758,7 @@ class MarlinLink : public PrinterLink {
       const std::size_t count = sizeof kCancelLines / sizeof kCancelLines[0];
       if (m_job->coolDownQueued < count) {
         const Role role = m_job->coolDownQueued + 1 == count ? Role::CoolDownEnd : Role::CoolDown;
-        m_lines.push_back(Line{kCancelLines[m_job->coolDownQueued++], role, 0});
+        m_ledger.append(Line{kCancelLines[m_job->coolDownQueued++], role, 0});
         return true;
       }
     }
@@ -836,7 +766,7 @@ class MarlinLink : public PrinterLink {
       const std::size_t count = sizeof kHeatersOffLines / sizeof kHeatersOffLines[0];
       if (m_heatersOffQueued < count) {
         const Role role = m_heatersOffQueued + 1 == count ? Role::HeatersOffEnd : Role::HeatersOff;
-        m_lines.push_back(Line{kHeatersOffLines[m_heatersOffQueued++], role, 0});
+        m_ledger.append(Line{kHeatersOffLines[m_heatersOffQueued++], role, 0});
         return true;
       }
     }
@@ -847,7 +777,7 @@ class MarlinLink : public PrinterLink {
   bool appendPoll(Clock::time_point now) {
     m_lastPollSent = now;
     m_pollSentLast = true;
-    m_lines.push_back(Line{"M105", Role::Poll, 0});
+    m_ledger.append(Line{"M105", Role::Poll, 0});
     return true;
   }
 
@@ -899,14 +829,8 @@ class MarlinLink : public PrinterLink {
   bool m_dropJob = false;
 
   // The stream (worker, under m_mutex): every line numbered since the last M110, for resends.
-  std::vector<Line> m_lines;
-  long m_sentUpTo = -1;
-  long m_ackedUpTo = -1;
-  int m_oksToSkip = 0;
-  bool m_numberingReady = false;
+  marlin::LineLedger m_ledger;
   bool m_resetDue = false;
-  bool m_resentAfterSilence = false;
-  bool m_advancedOk = false;  // the printer's oks name their line (ADVANCED_OK): a bare ok then answers no line
   std::uint64_t m_resends = 0;
   // Since the last status read (temperatures, position, busy): lines that were not the protocol, and oks.
   std::uint64_t m_unknownSinceRead = 0;
