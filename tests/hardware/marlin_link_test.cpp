@@ -7,6 +7,7 @@
 #include <atomic>
 
 #include "multidir/hardware/marlin_simulator.h"
+#include "printer/marlin_protocol.h"
 #include "printer_test_support.h"
 
 namespace multidir::hardware {
@@ -51,6 +52,28 @@ TEST(MarlinProtocol, ChecksumIsTheXorOfTheLinesBytes) {
   // Lines a host sent to Marlin, with the checksums Marlin accepted (a public OctoPrint log).
   EXPECT_EQ(marlinNumberedLine(65048, "G1 X136.689 Y160.389 E6563.257"), "N65048 G1 X136.689 Y160.389 E6563.257*93");
   EXPECT_EQ(marlinNumberedLine(3186, "M105"), "N3186 M105*27");
+}
+
+TEST(MarlinProtocol, AnAdvancedOkNamesTheLineItAnswers) {
+  EXPECT_EQ(marlin::parseReply("ok N12 P15 B3").okLine, 12);
+  EXPECT_EQ(marlin::parseReply("ok").okLine, -1);
+  const marlin::Reply temperatures = marlin::parseReply("ok T:210.0 /210.0 B:60.0 /60.0 @:0 B@:0");
+  EXPECT_EQ(temperatures.kind, marlin::Reply::Kind::Ok);
+  EXPECT_EQ(temperatures.okLine, -1);
+  ASSERT_TRUE(temperatures.bed.has_value());
+  EXPECT_DOUBLE_EQ(temperatures.bed->targetC, 60.0);
+}
+
+TEST(MarlinProtocol, TellsMarlinsOwnLinesFromNoise) {
+  using Kind = marlin::Reply::Kind;
+  EXPECT_EQ(marlin::parseReply("X:10.00 Y:20.00 Z:0.30 E:0.00 Count X:800 Y:1600 Z:120").kind, Kind::Position);
+  EXPECT_EQ(marlin::parseReply(" T:200.00 /200.00 B:22.00 /0.00 @:0 B@:0 W:?").kind, Kind::Info);
+  EXPECT_EQ(marlin::parseReply("echo:Marlin 2.1.2").kind, Kind::Info);
+  EXPECT_EQ(marlin::parseReply("start").kind, Kind::Info);
+  EXPECT_EQ(marlin::parseReply("echo:busy: processing").kind, Kind::Busy);
+  const marlin::Reply noise = marlin::parseReply("\xf8\x1f~#x% T:5 \x7f&q?");
+  EXPECT_EQ(noise.kind, Kind::Unknown);
+  EXPECT_FALSE(noise.extruder.has_value());  // a "T:" inside noise is no temperature
 }
 
 TEST(MarlinUrl, TakesTheDevicePathAndTheBaudRate) {
@@ -125,12 +148,16 @@ TEST_F(MarlinLinkTest, StreamsTheFileWithLineNumbersAndChecksumsToCompletion) {
     ++expected;
   }
   EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
-  // The job ended with M400: complete means every move was done.
+  // The job ended with M400 and M114: complete means every move was done, proven by the report after the M400.
   const auto executed = sim->executed();
   const auto last = std::find_if(executed.rbegin(), executed.rend(),
                                  [](const MarlinExecutedRecord& e) { return e.command != "M105"; });
   ASSERT_NE(last, executed.rend());
-  EXPECT_EQ(last->command, "M400");
+  EXPECT_EQ(last->command, "M114");
+  const auto beforeLast =
+      std::find_if(std::next(last), executed.rend(), [](const MarlinExecutedRecord& e) { return e.command != "M105"; });
+  ASSERT_NE(beforeLast, executed.rend());
+  EXPECT_EQ(beforeLast->command, "M400");
   EXPECT_EQ(sim->state().queuedMoves, 0u);
 }
 
@@ -310,6 +337,86 @@ TEST_F(MarlinLinkTest, EmergencyStopIsResentUntilThePrinterHearsItAndRefusesStar
   EXPECT_TRUE(link->status().stop.confirmed);
   EXPECT_TRUE(sim->state().halted);
   EXPECT_TRUE(link->clearStop().ok());
+}
+
+// Issue 28: an ok that answers no line was taken as the final M400's, so the step read complete while moves
+// were still queued. The simulator's clock is held by the test: its planner cannot drain until the test says so.
+TEST(MarlinLinkEndOfStep, AStrayOkDoesNotEndTheStep) {
+  static std::atomic<long long> elapsedMs{0};
+  elapsedMs = 0;
+  const auto origin = std::chrono::steady_clock::now();
+  MarlinSimulatorOptions options = test::fastMarlinSimulatorOptions(1.0);
+  options.plannerMoves = 32;  // the whole program fits: it is all received while the clock stands still
+  options.steadyNow = [origin] { return origin + std::chrono::milliseconds(elapsedMs.load()); };
+  MarlinSimulator sim(options);
+  ASSERT_TRUE(sim.start().ok());
+  sim.sendStrayOkOnReceiving("M400");  // the printer writes an ok of no line as the M400 arrives
+  auto link = test::connectedLink(test::marlinLinkTo(sim.devicePath()));
+  ASSERT_TRUE(test::uploadedAndStarted(*link, test::shortGcodeFile("marlin-stray-ok")));
+  ASSERT_TRUE(test::eventually([&] {
+    const auto received = sim.received();
+    return !received.empty() && received.back().command == "M109 S200";
+  }));
+  elapsedMs = 17800;  // heated: the rest is streamed, M400 last; the moves need until 27.862 s
+  const auto receivedM400 = [&] {
+    const auto received = sim.received();
+    return std::find_if(received.begin(), received.end(),
+                        [](const MarlinLineRecord& r) { return r.command == "M400"; }) != received.end();
+  };
+  ASSERT_TRUE(test::eventually(receivedM400));
+  // The link has acted on the stray ok once it sends its next line (whatever that line is).
+  ASSERT_TRUE(test::eventually([&] { return sim.received().back().command != "M400"; }));
+  EXPECT_GT(sim.state().queuedMoves, 0u);
+  EXPECT_EQ(link->status().state, PrinterJobState::Printing);
+  elapsedMs = 27900;  // the last move ends
+  ASSERT_TRUE(test::eventually([&] { return link->status().state == PrinterJobState::Complete; }))
+      << link->status().lastError;
+  EXPECT_EQ(sim.state().queuedMoves, 0u);
+}
+
+TEST_F(MarlinLinkTest, AStrayOkIsCountedAsAProtocolWarningAndForNoLine) {
+  auto link = connected();
+  sim->sendStrayOks(2);
+  ASSERT_TRUE(eventually([&] { return link->status().protocolWarnings >= 2; }));
+  EXPECT_NE(link->status().lastWarning.find("answers no line"), std::string::npos) << link->status().lastWarning;
+  // The printer is still read as before: the strays took no line's place.
+  ASSERT_TRUE(printing(*link));
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }));
+  EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
+}
+
+TEST_F(MarlinLinkTest, WithAdvancedOkAStrayOkIsKnownAtOnceAndTheStepStillEndsWhenItsMovesDo) {
+  MarlinSimulatorOptions options = fastMarlinSimulatorOptions(20.0);
+  options.advancedOk = true;
+  sim = std::make_unique<MarlinSimulator>(options);
+  ASSERT_TRUE(sim->start().ok());
+  sim->sendStrayOkOnReceiving("G1 X0 Y5 E0.5");  // mid-job
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  ASSERT_TRUE(eventually([&] { return link->status().state == PrinterJobState::Complete; }, 5000ms))
+      << link->status().lastError;
+  EXPECT_EQ(sim->state().queuedMoves, 0u);
+  EXPECT_GE(link->status().protocolWarnings, 1u);
+  EXPECT_EQ(executedFileCommands(), gcodeCommands(shortGcode()));
+}
+
+// Issue 28: noise on the line kept the link "alive": the job sat at 31 % with no warning.
+TEST_F(MarlinLinkTest, APrinterSendingOnlyNoiseIsNotAnsweringAfterTheTimeout) {
+  startSimulator(2.0);
+  auto link = connected();
+  ASSERT_TRUE(printing(*link));
+  sim->garbleOutput(true);
+  ASSERT_TRUE(eventually([&] { return link->status().linkLost; }, 5000ms)) << link->status().lastError;
+  EXPECT_NE(link->status().lastError.find("not Marlin's protocol"), std::string::npos) << link->status().lastError;
+  EXPECT_NE(link->status().state, PrinterJobState::Complete);
+}
+
+// Issue 28: oks alone, with no temperature report, kept the status fresh (and "complete") while nothing was read.
+TEST_F(MarlinLinkTest, APrinterAnsweringOksWithoutTemperaturesIsNotAnsweringAfterTheTimeout) {
+  auto link = connected();
+  sim->reportTemperatures(false);  // M105 answered with a bare ok
+  ASSERT_TRUE(eventually([&] { return link->status().linkLost; }, 5000ms)) << link->status().lastError;
+  EXPECT_NE(link->status().lastError.find("no temperature"), std::string::npos) << link->status().lastError;
 }
 
 }  // namespace

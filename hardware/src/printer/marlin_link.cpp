@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "printer/latched_emergency_stop.h"
+#include "printer/marlin_line_ledger.h"
 #include "printer/marlin_protocol.h"
 #include "printer/printer_link_threads.h"
 #include "printer/serial_port.h"
@@ -34,6 +35,9 @@ const char* const kCancelLines[] = {"M104 S0", "M140 S0", "M107"};
 // switchHeatersOff(): both heaters, nothing else.
 const char* const kHeatersOffLines[] = {"M104 S0", "M140 S0"};
 constexpr std::size_t kRenumberAfterLines = 10000;
+// Marlin answers M105 with its temperatures on the ok line: this many temperature polls answered with a bare ok
+// in a row (no temperature report between them) mean the printer's state cannot be read.
+constexpr int kBareTemperaturePollsLimit = 3;
 
 core::Error invalid(const std::string& what, const std::string& where) {
   return core::Error{core::ErrorCode::InvalidParameter, what, where};
@@ -118,7 +122,10 @@ class MarlinLink : public PrinterLink {
     std::lock_guard<std::mutex> lock(m_mutex);
     PrinterStatus s = m_status;
     s.stop = m_stop.state();
-    s.linkLost = s.polls == 0 || m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter;
+    s.linkLost = s.polls == 0 || m_options.steadyNow() - s.lastReply >= m_options.linkLostAfter ||
+                 m_bareTemperaturePolls >= kBareTemperaturePollsLimit;
+    if (s.linkLost && s.polls > 0)
+      if (std::string why = notAnsweringReason(); !why.empty()) s.lastError = std::move(why);
     return s;
   }
 
@@ -133,19 +140,16 @@ class MarlinLink : public PrinterLink {
     std::string remoteName;
     std::promise<core::Status> promise;
   };
-  // What a numbered line is for, so its ok can be acted on.
-  enum class Role { Reset, Poll, File, JobEnd, CoolDown, CoolDownEnd, HeatersOff, HeatersOffEnd };
-  struct Line {
-    std::string command;
-    Role role = Role::Poll;
-    std::size_t fileLine = 0;  // Role::File: index in the job's lines
-  };
+  using Role = marlin::LineRole;
+  using Line = marlin::StreamLine;
   struct Job {
     std::string name;
     std::vector<std::string> lines;
     std::size_t nextFileLine = 0;  // the next file line to number and send
     std::size_t acknowledged = 0;  // file lines the printer took
     bool endQueued = false;        // M400 numbered
+    bool reportQueued = false;     // M114 numbered
+    bool reportSent = false;       // ... and written: its position report ends the job
     bool cancelling = false;
     std::size_t coolDownQueued = 0;
   };
@@ -212,7 +216,10 @@ class MarlinLink : public PrinterLink {
     }
     m_openedAt = Clock::now();
     m_rx.clear();
-    resetNumbering();
+    m_unknownSinceRead = 0;
+    m_oksSinceRead = 0;
+    m_bareTemperaturePolls = 0;
+    m_ledger.forgetPrinter();
     // A stop latched before (or while) the port was closed is written again first: the printer may have
     // restarted meanwhile.
     if (m_stop.latched()) {
@@ -220,16 +227,6 @@ class MarlinLink : public PrinterLink {
       m_threads.stopWake().notify_all();
     }
     return true;
-  }
-
-  // Worker, m_mutex held: the next line is N0 M110 N0 (Marlin's "set the current line number").
-  void resetNumbering() {
-    m_lines.clear();
-    m_lines.push_back(Line{"M110 N0", Role::Reset, 0});
-    m_sentUpTo = -1;
-    m_ackedUpTo = -1;
-    m_oksToSkip = 0;
-    m_numberingReady = false;
   }
 
   // Never called with m_mutex held (the lock order is m_mutex, then m_writeMutex).
@@ -281,14 +278,20 @@ class MarlinLink : public PrinterLink {
       checkSilence();
       pump();
       std::lock_guard<std::mutex> lock(m_mutex);
-      if (!m_threads.firstReported() && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter)
-        m_threads.reportFirst(
-            core::Error{core::ErrorCode::DeviceUnreachable,
-                        "no answer from the printer within " + std::to_string(2 * m_options.linkLostAfter.count()) +
-                            " ms of opening " + m_settings.devicePath + " at " + std::to_string(m_settings.baud) +
-                            " baud: check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
-                            "the printer is on, and that no other program uses the port",
-                        m_name});
+      if (!m_threads.firstReported() && Clock::now() - m_openedAt > 2 * m_options.linkLostAfter) {
+        const std::string seen = m_unknownSinceRead > 0
+                                     ? " (only lines that are not Marlin's protocol came back, the last " +
+                                           marlin::quoted(m_lastUnknown) + ")"
+                                 : m_oksSinceRead > 0 ? " (it answered ok, but never with its temperatures)"
+                                                      : std::string();
+        m_threads.reportFirst(core::Error{
+            core::ErrorCode::DeviceUnreachable,
+            "no answer from the printer within " + std::to_string(2 * m_options.linkLostAfter.count()) +
+                " ms of opening " + m_settings.devicePath + " at " + std::to_string(m_settings.baud) + " baud" + seen +
+                ": check the baud rate (Marlin's BAUDRATE, often 115200 or 250000), that "
+                "the printer is on, and that no other program uses the port",
+            m_name});
+      }
     }
   }
 
@@ -330,17 +333,26 @@ class MarlinLink : public PrinterLink {
     return true;
   }
 
+  // Liveness: only lines of Marlin's protocol say the printer answers (noise says nothing), and only status
+  // reads (temperatures, M114's position, busy) keep status().linkLost false: oks alone tell nothing of its state.
   void onLine(const std::string& text) {
     const marlin::Reply reply = marlin::parseReply(text);
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_lastRx = Clock::now();
-    m_status.lastReply = m_options.steadyNow();
+    if (reply.kind == marlin::Reply::Kind::Unknown) {
+      ++m_unknownSinceRead;
+      m_lastUnknown = text;
+      warn("the printer sent a line that is not Marlin's protocol: " + marlin::quoted(text) +
+           " (not taken as an answer)");
+      return;
+    }
+    m_lastProtocolLine = Clock::now();
     m_status.link = LinkState::Connected;
     if (reply.extruder || reply.bed) {
       if (reply.extruder) m_status.extruder = *reply.extruder;
       if (reply.bed) m_status.bed = *reply.bed;
       m_lastTemperature = Clock::now();
-      ++m_status.polls;
+      m_bareTemperaturePolls = 0;
+      noteStatusRead();
       if (m_status.firmwareState.empty()) m_status.firmwareState = "ready";
       if (m_status.state == PrinterJobState::Unknown) m_status.state = PrinterJobState::Standby;
       m_status.lastError.clear();
@@ -348,7 +360,10 @@ class MarlinLink : public PrinterLink {
     }
     switch (reply.kind) {
       case marlin::Reply::Kind::Ok:
-        onOk();
+        onOk(reply);
+        break;
+      case marlin::Reply::Kind::Position:
+        onPosition();
         break;
       case marlin::Reply::Kind::Resend:
         onResend(reply.resendLine);
@@ -364,36 +379,80 @@ class MarlinLink : public PrinterLink {
         onAction(reply.text);
         break;
       case marlin::Reply::Kind::Busy:
-      case marlin::Reply::Kind::Other:
-        if (text == "start" && m_numberingReady) onRestart();
+        // Marlin's keepalive while a command blocks (M109, G28, M400, a move waiting for room in the planner):
+        // the printer is working on what it was sent. A status read once its state was read at all.
+        if (m_status.polls > 0) noteStatusRead();
+        break;
+      case marlin::Reply::Kind::Info:
+        if (text == "start" && m_ledger.numberingReady()) onRestart();
+        break;
+      case marlin::Reply::Kind::Unknown:
         break;
     }
   }
 
-  // m_mutex held.
-  void onOk() {
-    if (m_oksToSkip > 0) {  // the ok that follows a Resend answers the refused line, not a new one
-      --m_oksToSkip;
-      return;
-    }
-    m_resentAfterSilence = false;
-    if (m_ackedUpTo >= m_sentUpTo) return;  // a stray ok (the printer's start-up, a line sent before a reset)
-    acknowledgeNext();
+  // m_mutex held: a line that tells the printer's state arrived.
+  void noteStatusRead() {
+    m_status.lastReply = m_options.steadyNow();
+    ++m_status.polls;
+    m_unknownSinceRead = 0;
+    m_oksSinceRead = 0;
   }
 
-  // m_mutex held: the printer took the oldest line in flight.
-  void acknowledgeNext() {
-    ++m_ackedUpTo;
-    const Line& line = m_lines[static_cast<std::size_t>(m_ackedUpTo)];
+  // m_mutex held: a line the link cannot account for; it goes on without it.
+  void warn(const std::string& what) {
+    ++m_status.protocolWarnings;
+    m_status.lastWarning = what;
+  }
+
+  // m_mutex held: why status().linkLost, when the printer still sends lines ("" when it sends none).
+  std::string notAnsweringReason() const {
+    if (m_bareTemperaturePolls >= kBareTemperaturePollsLimit)
+      return "the printer answered its last " + std::to_string(m_bareTemperaturePolls) +
+             " temperature polls (M105) with a bare ok and no temperature report: its state cannot be read, so it "
+             "counts as not answering; check that the device is a Marlin printer and that nothing else answers on "
+             "its port";
+    const std::string since = " for " + std::to_string(m_options.linkLostAfter.count()) + " ms";
+    if (m_unknownSinceRead > 0)
+      return "the printer is not answering: " + std::to_string(m_unknownSinceRead) +
+             " lines that are not Marlin's protocol came" + since + " and nothing else (the last " +
+             marlin::quoted(m_lastUnknown) +
+             "): check the baud rate (Marlin's BAUDRATE, often 115200 or 250000) and the cable";
+    if (m_oksSinceRead > 0)
+      return "the printer is not answering: it sent oks but no temperature, position or busy report" + since +
+             ", so its state cannot be read";
+    return {};
+  }
+
+  // m_mutex held: the ledger says which line in flight the ok answers (marlin_line_ledger.h); an ok that
+  // answers none is a protocol warning and counts for nothing.
+  void onOk(const marlin::Reply& reply) {
+    if (!reply.extruder && !reply.bed) ++m_oksSinceRead;
+    const marlin::LineLedger::OkOutcome outcome = m_ledger.onOk(reply, [this](const Line& line) { acknowledge(line); });
+    if (outcome.barePoll) ++m_bareTemperaturePolls;
+    if (!outcome.warning.empty()) warn(outcome.warning);
+  }
+
+  // m_mutex held: M114's position report. After the job's M114 was written it ends the job: Marlin ran the M400
+  // before it, so the planner was empty and every move of the step done.
+  void onPosition() {
+    noteStatusRead();
+    if (!m_job || !m_job->reportSent || m_job->cancelling) return;
+    m_status.state = PrinterJobState::Complete;
+    m_status.progress = 1.0;
+    m_job.reset();
+  }
+
+  // m_mutex held: the printer took `line` (the oldest in flight).
+  void acknowledge(const Line& line) {
     switch (line.role) {
       case Role::Reset:
-        m_numberingReady = true;
         if (m_job && m_startPromise) {
           m_status.state = PrinterJobState::Printing;
           m_status.currentFile = m_job->name;
           m_status.progress = 0.0;
           m_status.message.clear();
-          ++m_status.polls;  // the start's answer is a status read of its own
+          noteStatusRead();  // the start's answer is a status read of its own
           m_startPromise->set_value(core::Done{});
           m_startPromise.reset();
         }
@@ -408,13 +467,8 @@ class MarlinLink : public PrinterLink {
                                   : static_cast<double>(m_job->acknowledged) / static_cast<double>(m_job->lines.size());
         }
         break;
-      case Role::JobEnd:
-        if (m_job) {
-          m_status.state = PrinterJobState::Complete;
-          m_status.progress = 1.0;
-          ++m_status.polls;
-          m_job.reset();
-        }
+      case Role::JobEnd:  // the job ends with M114's report (onPosition)
+      case Role::JobEndReport:
         break;
       case Role::CoolDown:
         break;
@@ -427,7 +481,7 @@ class MarlinLink : public PrinterLink {
         break;
       case Role::CoolDownEnd:
         m_status.state = PrinterJobState::Cancelled;
-        ++m_status.polls;
+        noteStatusRead();
         m_job.reset();
         if (m_cancelPromise) m_cancelPromise->set_value(core::Done{});
         m_cancelPromise.reset();
@@ -437,23 +491,8 @@ class MarlinLink : public PrinterLink {
 
   // m_mutex held: the printer refused line n (bad checksum, wrong number) and every line after it.
   void onResend(long n) {
-    ++m_oksToSkip;
-    // A damaged "N0 M110 N0" never reset the printer's numbering, so it asks for the next line of the old one:
-    // the reset goes again (Marlin takes an M110 whatever its number).
-    if (m_ackedUpTo < m_sentUpTo && m_lines[static_cast<std::size_t>(m_ackedUpTo + 1)].role == Role::Reset) {
-      m_sentUpTo = m_ackedUpTo;
-      return;
-    }
-    if (n < 0 || n > static_cast<long>(m_lines.size()) || n <= m_ackedUpTo) {
-      m_status.lastError = "the printer asked for line " + std::to_string(n) + ", which this link did not send";
-      return;
-    }
-    // After a silence the oks of the lines in flight may be lost, not the lines: the printer naming the line it
-    // wants says which it had.
-    if (m_resentAfterSilence)
-      while (m_ackedUpTo < n - 1 && m_ackedUpTo + 1 < static_cast<long>(m_lines.size())) acknowledgeNext();
-    m_resentAfterSilence = false;
-    m_sentUpTo = std::max(m_ackedUpTo, std::min(m_sentUpTo, n - 1));
+    if (std::string problem = m_ledger.onResend(n, [this](const Line& line) { acknowledge(line); }); !problem.empty())
+      m_status.lastError = std::move(problem);
   }
 
   // m_mutex held: Marlin stopped (its own words), or halted after an M112.
@@ -496,7 +535,8 @@ class MarlinLink : public PrinterLink {
       m_status.state = PrinterJobState::Standby;
       m_status.message.clear();
     }
-    resetNumbering();
+    m_bareTemperaturePolls = 0;
+    m_ledger.forgetPrinter();  // the firmware may be another one now
   }
 
   // m_mutex held: the printer's halt confirms the stop sent as `generation`.
@@ -631,19 +671,19 @@ class MarlinLink : public PrinterLink {
     return lines;
   }
 
-  // No answer at all for linkLostAfter while lines are in flight: their oks (or the lines) were lost: send
-  // them again. Marlin answers a line it had with "Resend: <next>", so nothing is done twice.
+  // No line in Marlin's protocol for linkLostAfter while lines are in flight (noise does not count): their oks
+  // (or the lines) were lost: send them again. Marlin answers a line it had with "Resend: <next>", so nothing is
+  // done twice.
   void checkSilence() {
     std::lock_guard<std::mutex> lock(m_mutex);
     const auto now = Clock::now();
-    if (m_sentUpTo <= m_ackedUpTo) return;
-    const auto since = std::max(m_lastRx, std::max(m_lastSend, m_lastSilenceResend));
+    if (m_ledger.inFlight() <= 0) return;
+    const auto since = std::max(m_lastProtocolLine, std::max(m_lastSend, m_lastSilenceResend));
     if (now - since < m_options.linkLostAfter) return;
     m_lastSilenceResend = now;
-    m_resentAfterSilence = true;
-    m_sentUpTo = m_ackedUpTo;
+    const long again = m_ledger.resendAfterSilence();
     m_status.lastError = "no answer from the printer for " + std::to_string(m_options.linkLostAfter.count()) +
-                         " ms: sending line " + std::to_string(m_ackedUpTo + 1) + " again";
+                         " ms: sending line " + std::to_string(again) + " again";
   }
 
   // Sends what the window allows: lines to resend, then the job's next line or a temperature poll.
@@ -653,11 +693,12 @@ class MarlinLink : public PrinterLink {
       {
         std::lock_guard<std::mutex> lock(m_mutex);
         if (m_status.firmwareState == "halted") return;
-        const long inFlight = m_sentUpTo - m_ackedUpTo;
-        if (inFlight >= m_settings.maxUnacknowledgedLines) return;
-        if (m_sentUpTo + 1 >= static_cast<long>(m_lines.size()) && !appendNextLine()) return;
-        ++m_sentUpTo;
-        text = marlinNumberedLine(m_sentUpTo, m_lines[static_cast<std::size_t>(m_sentUpTo)].command) + "\n";
+        if (m_ledger.inFlight() >= m_settings.maxUnacknowledgedLines) return;
+        if (!m_ledger.hasUnsent() && !appendNextLine()) return;
+        const long number = m_ledger.sendNext();
+        const Line& line = m_ledger.line(number);
+        if (line.role == Role::JobEndReport && m_job) m_job->reportSent = true;
+        text = marlinNumberedLine(number, line.command) + "\n";
         m_lastSend = Clock::now();
       }
       if (const core::Status sent = sendRaw(text); !sent.ok()) {
@@ -670,13 +711,13 @@ class MarlinLink : public PrinterLink {
 
   // m_mutex held: numbers the next line to send, if any is due. Never while the job's reset waits.
   bool appendNextLine() {
-    if (!m_numberingReady) return false;  // N0 M110 is in flight: wait for its ok
+    if (!m_ledger.numberingReady()) return false;  // N0 M110 is in flight: wait for its ok
     // Idle polls number lines too: start again from N0 now and then, so the history kept for resends stays small.
-    if (!m_job && m_lines.size() > kRenumberAfterLines) m_resetDue = true;
+    if (!m_job && m_ledger.numbered() > kRenumberAfterLines) m_resetDue = true;
     if (m_resetDue) {
-      if (m_sentUpTo != m_ackedUpTo) return false;
+      if (m_ledger.inFlight() != 0) return false;
       m_resetDue = false;
-      resetNumbering();
+      m_ledger.renumber();  // the next line is N0 M110 N0
       return true;
     }
     const auto now = Clock::now();
@@ -692,17 +733,22 @@ class MarlinLink : public PrinterLink {
         const std::size_t count = sizeof kCancelLines / sizeof kCancelLines[0];
         if (job.coolDownQueued >= count) return false;
         const Role role = job.coolDownQueued + 1 == count ? Role::CoolDownEnd : Role::CoolDown;
-        m_lines.push_back(Line{kCancelLines[job.coolDownQueued++], role, 0});
+        m_ledger.append(Line{kCancelLines[job.coolDownQueued++], role, 0});
         return true;
       }
       if (job.nextFileLine < job.lines.size()) {
-        m_lines.push_back(Line{job.lines[job.nextFileLine], Role::File, job.nextFileLine});
+        m_ledger.append(Line{job.lines[job.nextFileLine], Role::File, job.nextFileLine});
         ++job.nextFileLine;
         return true;
       }
       if (!job.endQueued) {
         job.endQueued = true;
-        m_lines.push_back(Line{"M400", Role::JobEnd, 0});  // its ok: every move done
+        m_ledger.append(Line{"M400", Role::JobEnd, 0});  // Marlin takes the next command once every move is done
+        return true;
+      }
+      if (!job.reportQueued) {
+        job.reportQueued = true;
+        m_ledger.append(Line{"M114", Role::JobEndReport, 0});  // its report: the M400 before it is done
         return true;
       }
       return false;
@@ -712,7 +758,7 @@ class MarlinLink : public PrinterLink {
       const std::size_t count = sizeof kCancelLines / sizeof kCancelLines[0];
       if (m_job->coolDownQueued < count) {
         const Role role = m_job->coolDownQueued + 1 == count ? Role::CoolDownEnd : Role::CoolDown;
-        m_lines.push_back(Line{kCancelLines[m_job->coolDownQueued++], role, 0});
+        m_ledger.append(Line{kCancelLines[m_job->coolDownQueued++], role, 0});
         return true;
       }
     }
@@ -720,7 +766,7 @@ class MarlinLink : public PrinterLink {
       const std::size_t count = sizeof kHeatersOffLines / sizeof kHeatersOffLines[0];
       if (m_heatersOffQueued < count) {
         const Role role = m_heatersOffQueued + 1 == count ? Role::HeatersOffEnd : Role::HeatersOff;
-        m_lines.push_back(Line{kHeatersOffLines[m_heatersOffQueued++], role, 0});
+        m_ledger.append(Line{kHeatersOffLines[m_heatersOffQueued++], role, 0});
         return true;
       }
     }
@@ -731,7 +777,7 @@ class MarlinLink : public PrinterLink {
   bool appendPoll(Clock::time_point now) {
     m_lastPollSent = now;
     m_pollSentLast = true;
-    m_lines.push_back(Line{"M105", Role::Poll, 0});
+    m_ledger.append(Line{"M105", Role::Poll, 0});
     return true;
   }
 
@@ -783,14 +829,14 @@ class MarlinLink : public PrinterLink {
   bool m_dropJob = false;
 
   // The stream (worker, under m_mutex): every line numbered since the last M110, for resends.
-  std::vector<Line> m_lines;
-  long m_sentUpTo = -1;
-  long m_ackedUpTo = -1;
-  int m_oksToSkip = 0;
-  bool m_numberingReady = false;
+  marlin::LineLedger m_ledger;
   bool m_resetDue = false;
-  bool m_resentAfterSilence = false;
   std::uint64_t m_resends = 0;
+  // Since the last status read (temperatures, position, busy): lines that were not the protocol, and oks.
+  std::uint64_t m_unknownSinceRead = 0;
+  std::uint64_t m_oksSinceRead = 0;
+  std::string m_lastUnknown;
+  int m_bareTemperaturePolls = 0;  // M105s answered with a bare ok since the last temperature report
   std::map<std::string, std::vector<std::string>> m_files;
   std::optional<Job> m_job;
   std::optional<std::promise<core::Status>> m_startPromise;
@@ -798,7 +844,7 @@ class MarlinLink : public PrinterLink {
   std::optional<std::promise<core::Status>> m_heatersOffPromise;
   std::size_t m_heatersOffQueued = 0;  // of kHeatersOffLines numbered so far
   Clock::time_point m_openedAt{};
-  Clock::time_point m_lastRx{};
+  Clock::time_point m_lastProtocolLine{};  // the last line in Marlin's protocol (worker clock)
   Clock::time_point m_lastSend{};
   Clock::time_point m_lastSilenceResend{};
   Clock::time_point m_lastTemperature{};
@@ -811,56 +857,6 @@ class MarlinLink : public PrinterLink {
 };
 
 }  // namespace
-
-const std::vector<int>& marlinBaudRates() {
-  static const std::vector<int> rates = {9600,   19200,  38400,  57600,  115200, 230400,
-                                         250000, 460800, 500000, 576000, 921600, 1000000};
-  return rates;
-}
-
-core::Result<MarlinSettings> parseMarlinUrl(const std::string& url) {
-  const std::string scheme = "serial://";
-  if (url.rfind(scheme, 0) != 0)
-    return invalid("'" + url + "' is not a serial address: use serial:///dev/ttyACM0[?baud=115200]", "--printer");
-  std::string rest = url.substr(scheme.size());
-  MarlinSettings settings;
-  std::string query;
-  if (const std::size_t q = rest.find('?'); q != std::string::npos) {
-    query = rest.substr(q + 1);
-    rest.resize(q);
-  }
-  if (rest.empty() || rest[0] != '/')
-    return invalid("'" + url + "' names no absolute device path: use serial:///dev/ttyACM0 (three slashes)",
-                   "--printer");
-  settings.devicePath = rest;
-  std::size_t begin = 0;
-  while (begin < query.size()) {
-    std::size_t end = query.find('&', begin);
-    if (end == std::string::npos) end = query.size();
-    const std::string pair = query.substr(begin, end - begin);
-    begin = end + 1;
-    const std::size_t eq = pair.find('=');
-    const std::string key = pair.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : pair.substr(eq + 1);
-    const bool digits = !value.empty() && value.size() <= 8 &&
-                        std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
-    if (key == "baud") {
-      if (!digits || !serial::supportedRate(std::stoi(value)))
-        return invalid("'" + url +
-                           "': baud must be one of 9600, 19200, 38400, 57600, 115200, 230400, 250000, "
-                           "460800, 500000, 576000, 921600, 1000000 (Marlin's BAUDRATE)",
-                       "--printer");
-      settings.baud = std::stoi(value);
-    } else if (key == "window") {
-      if (!digits || std::stoi(value) < 1 || std::stoi(value) > 4)
-        return invalid("'" + url + "': window must be 1 to 4 lines (Marlin's command buffer)", "--printer");
-      settings.maxUnacknowledgedLines = std::stoi(value);
-    } else {
-      return invalid("'" + url + "': unknown option '" + key + "' (known: baud, window)", "--printer");
-    }
-  }
-  return settings;
-}
 
 core::Result<std::unique_ptr<PrinterLink>> makeMarlinLink(const MarlinSettings& settings,
                                                           const PrinterLinkOptions& options) {

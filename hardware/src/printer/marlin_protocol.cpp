@@ -71,8 +71,17 @@ Reply parseReply(const std::string& rawLine) {
   reply.extruder = heater(line, "T:");
   reply.bed = heater(line, "B:");
   reply.killed = line.find("kill() called") != std::string::npos || line.find("Printer halted") != std::string::npos;
+  std::size_t first = line.find_first_not_of(' ');
+  if (first == std::string::npos) first = line.size();
+  const std::string trimmed = line.substr(first);
   if (line == "ok" || startsWith(line, "ok ")) {
     reply.kind = Reply::Kind::Ok;
+    // ADVANCED_OK: "ok N<line> P<planner free> B<buffer free>"; Marlin echoes the N of the line it executed.
+    if (startsWith(line, "ok N")) {
+      char* end = nullptr;
+      const long number = std::strtol(line.c_str() + 4, &end, 10);
+      if (end != line.c_str() + 4 && (*end == ' ' || *end == '\0') && number >= 0) reply.okLine = number;
+    }
   } else if (startsWith(line, "Resend:") || startsWith(line, "rs ")) {
     reply.kind = Reply::Kind::Resend;
     const char* start = line.c_str() + (line[0] == 'R' ? 7 : 3);
@@ -96,8 +105,27 @@ Reply parseReply(const std::string& rawLine) {
     reply.kind = Reply::Kind::Action;
     reply.text = line.substr(9);
     if (const std::size_t space = reply.text.find(' '); space != std::string::npos) reply.text.resize(space);
+  } else if (startsWith(trimmed, "X:") && trimmed.find(" Y:") != std::string::npos &&
+             trimmed.find(" Z:") != std::string::npos) {
+    reply.kind = Reply::Kind::Position;
+  } else if (startsWith(line, "echo:") || startsWith(line, "//") || line == "start" || line == "wait" ||
+             startsWith(line, "Not SD printing") || startsWith(line, "FIRMWARE_NAME:") || startsWith(line, "Cap:") ||
+             ((startsWith(trimmed, "T:") || startsWith(trimmed, "B:")) && (reply.extruder || reply.bed))) {
+    reply.kind = Reply::Kind::Info;
+  }
+  // A reading inside a line that is not the protocol's is noise that happens to contain "T:".
+  if (reply.kind == Reply::Kind::Unknown) {
+    reply.extruder.reset();
+    reply.bed.reset();
   }
   return reply;
+}
+
+std::string quoted(const std::string& line) {
+  constexpr std::size_t kLongest = 60;
+  std::string out;
+  for (const char c : line.substr(0, kLongest)) out += c >= ' ' && c <= '~' ? c : '?';
+  return "'" + out + (line.size() > kLongest ? "...'" : "'");
 }
 
 }  // namespace marlin

@@ -19,16 +19,24 @@ struct Reply {
     Fault,      // any other "Error:..." line: Marlin stops ("Thermal Runaway, system stopped!", "kill() called")
     Busy,       // "echo:busy: processing" / "busy: paused for user": alive, still working
     Action,     // "//action:cancel", "//action:pause", "//action:resume" (host action commands)
-    Other,      // "start", "echo:...", temperature auto-reports, anything else
+    Position,   // M114's report: "X:10.00 Y:20.00 Z:0.30 E:0.00 Count X:800 Y:1600 Z:120"
+    Info,       // other lines Marlin writes: "start", "echo:...", "//...", temperature reports ("T:210.0 /210.0
+                // B:60.0 /60.0", "T:... W:?"), "wait", "Not SD printing", M115's "FIRMWARE_NAME:..." and "Cap:..."
+    Unknown,    // not Marlin's protocol: line noise, a wrong baud rate, another device on the port
   };
-  Kind kind = Kind::Other;
+  Kind kind = Kind::Unknown;
   long resendLine = -1;
+  // Ok with ADVANCED_OK: the number of the line it answers ("ok N12 P15 B3"); -1 without.
+  long okLine = -1;
   std::string text;                       // Fault: the printer's words after "Error:"; Action: "cancel", "pause", ...
   bool killed = false;                    // the line says Marlin halted ("Printer halted", "kill() called")
-  std::optional<HeaterReading> extruder;  // from "T:210.0 /210.0" anywhere in the line
+  std::optional<HeaterReading> extruder;  // from "T:210.0 /210.0" in an ok or Info line (never from Unknown)
   std::optional<HeaterReading> bed;       // from "B:60.0 /60.0"
 };
 
 Reply parseReply(const std::string& line);
+
+// `line` as a message may quote it: at most 60 characters, bytes outside printable ASCII as '?'.
+std::string quoted(const std::string& line);
 
 }  // namespace multidir::hardware::marlin

@@ -29,6 +29,8 @@ class GcodeTimelineReader {
  public:
   // `line` without its end of line; `endByte` is stored as the line's TimelineLine::endByte.
   TimelineLine read(const std::string& line, std::size_t endByte);
+  // Where the lines read so far end: axis 0..3 is X, Y, Z, E in mm (Marlin's planned current_position).
+  [[nodiscard]] double position(int axis) const { return m_position[axis]; }
 
  private:
   double m_position[4] = {0, 0, 0, 0};  // X Y Z E

@@ -29,6 +29,10 @@ using Clock = std::chrono::steady_clock;
 using Outcome = MarlinLineRecord::Outcome;
 
 constexpr std::chrono::milliseconds kLoopInterval{1};
+constexpr std::chrono::milliseconds kNoiseInterval{20};
+constexpr int kCommandBuffer = 4;                      // Marlin's BUFSIZE, for ADVANCED_OK's B
+const double kStepsPerMm[3] = {80.0, 80.0, 400.0};     // Marlin's DEFAULT_AXIS_STEPS_PER_UNIT, for M114's Count
+const char* const kNoise = "\xf8\x1f~#x%\x7f&q?\xe0";  // what 115200 baud read at 250000 looks like
 const char* const kKilled = "Printer halted. kill() called!";
 const char* const kThermalRunaway = "Thermal Runaway, system stopped! Heater_ID: 0";
 
@@ -165,6 +169,22 @@ class MarlinSimulator::Impl {
     std::lock_guard<std::mutex> lock(m_mutex);
     bootPrinter();
   }
+  void sendStrayOks(int count) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    for (int i = 0; i < count; ++i) send("ok");
+  }
+  void sendStrayOkOnReceiving(const std::string& command) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_strayOkOn = command;
+  }
+  void garbleOutput(bool garbled) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_garbled = garbled;
+  }
+  void reportTemperatures(bool report) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_reportTemperatures = report;
+  }
 
   std::vector<MarlinLineRecord> received() const {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -220,6 +240,7 @@ class MarlinSimulator::Impl {
     m_lastLine = 0;
     m_inbox.clear();
     m_blocked = false;
+    m_waitingForRoom = false;
     m_pendingExecution.clear();
     m_autoReport = std::chrono::milliseconds{0};
     send("start");
@@ -229,7 +250,39 @@ class MarlinSimulator::Impl {
   // m_mutex held.
   void send(const std::string& line) {
     if (m_silent) return;
-    m_outbox.push_back(Outgoing{Clock::now() + m_replyDelay, line + "\n"});
+    m_outbox.push_back(Outgoing{Clock::now() + m_replyDelay, (m_garbled ? std::string(kNoise) : line) + "\n"});
+  }
+
+  // m_mutex held: a garbled line keeps writing noise of its own, as a wrong baud rate turns any byte into some.
+  void noise() {
+    if (!m_garbled) return;
+    const auto now = Clock::now();
+    if (now - m_lastNoise < kNoiseInterval) return;
+    m_lastNoise = now;
+    send(kNoise);
+  }
+
+  // m_mutex held: the ok of a numbered or unnumbered command, with ADVANCED_OK's numbers when built with it.
+  std::string okFor(const Queued& q) const {
+    if (!m_options.advancedOk || q.lineNumber < 0) return "ok";
+    const std::size_t queued = m_printer.linesQueued();
+    const long plannerFree = queued >= static_cast<std::size_t>(m_options.plannerMoves)
+                                 ? 0
+                                 : m_options.plannerMoves - static_cast<long>(queued);
+    const long bufferFree = std::max<long>(0, kCommandBuffer - static_cast<long>(m_inbox.size()));
+    return "ok N" + std::to_string(q.lineNumber) + " P" + std::to_string(plannerFree) + " B" +
+           std::to_string(bufferFree);
+  }
+
+  // m_mutex held: Marlin's M114 (report_current_position_projected): the planned position, logical and in steps.
+  std::string positionText() const {
+    char text[192];
+    std::snprintf(text, sizeof text, "X:%.2f Y:%.2f Z:%.2f E:%.2f Count X:%ld Y:%ld Z:%ld", m_reader.position(0),
+                  m_reader.position(1), m_reader.position(2), m_reader.position(3),
+                  std::lround(m_reader.position(0) * kStepsPerMm[0]),
+                  std::lround(m_reader.position(1) * kStepsPerMm[1]),
+                  std::lround(m_reader.position(2) * kStepsPerMm[2]));
+    return text;
   }
 
   // m_mutex held: runs the printer up to now.
@@ -315,6 +368,7 @@ class MarlinSimulator::Impl {
     record.outcome = Outcome::Accepted;
     m_received.push_back(record);
     if (!command.empty()) m_inbox.push_back(Queued{record.lineNumber, command});
+    if (!m_strayOkOn.empty() && command == m_strayOkOn) send("ok");  // test hook: an ok that answers no line
   }
 
   // m_mutex held: Marlin's gcode_line_error and flush_and_request_resend.
@@ -347,7 +401,8 @@ class MarlinSimulator::Impl {
             m_lastBusy = realNow;
             send("echo:busy: processing");
           }
-          if (m_printer.waitingForHeater() && realNow - m_lastTemperatureLine >= m_options.temperatureInterval) {
+          if (m_reportTemperatures && m_printer.waitingForHeater() &&
+              realNow - m_lastTemperatureLine >= m_options.temperatureInterval) {
             m_lastTemperatureLine = realNow;
             send(temperatureText(m_printer.extruder(), m_printer.bed()) + " W:?");
           }
@@ -369,7 +424,17 @@ class MarlinSimulator::Impl {
                                       (letter == 'M' && (number == 109 || number == 190 || number == 400)));
       const bool move = known && letter == 'G' && number <= 1;
       if (toPrinter) {
-        if (!blocking && m_printer.linesQueued() >= static_cast<std::size_t>(m_options.plannerMoves)) return;
+        if (!blocking && m_printer.linesQueued() >= static_cast<std::size_t>(m_options.plannerMoves)) {
+          // The move waits for room in the planner inside its handler: Marlin's host keepalive says so.
+          if (!m_waitingForRoom) m_lastBusy = realNow;
+          m_waitingForRoom = true;
+          if (realNow - m_lastBusy >= m_options.busyInterval) {
+            m_lastBusy = realNow;
+            send("echo:busy: processing");
+          }
+          return;
+        }
+        m_waitingForRoom = false;
         m_pendingExecution.push_back(
             Execution{m_printer.linesDone() + m_printer.linesQueued(), q.lineNumber, q.command});
         m_printer.enqueue(m_reader.read(q.command, 0));
@@ -394,21 +459,25 @@ class MarlinSimulator::Impl {
     int number = 0;
     const bool known = codeOf(q.command, letter, number);
     if (known && letter == 'M' && number == 105) {
-      send("ok " + temperatureText(m_printer.extruder(), m_printer.bed()));
+      // Marlin answers M105 on its ok line, without ADVANCED_OK's numbers.
+      send(m_reportTemperatures ? "ok " + temperatureText(m_printer.extruder(), m_printer.bed()) : "ok");
+    } else if (known && letter == 'M' && number == 114) {
+      send(positionText());
+      send(okFor(q));
     } else if (known && letter == 'M' && number == 27) {
       send("Not SD printing");  // the job is streamed by the host, not read from the SD card
-      send("ok");
+      send(okFor(q));
     } else if (known && letter == 'M' && number == 155) {
       m_autoReport = std::chrono::milliseconds(static_cast<long>(parameter(q.command, 'S', 0.0) * 1000.0));
-      send("ok");
+      send(okFor(q));
     } else {
-      send("ok");
+      send(okFor(q));
     }
     m_inbox.pop_front();
   }
 
   void autoReport() {
-    if (m_autoReport.count() <= 0 || m_halted) return;
+    if (m_autoReport.count() <= 0 || m_halted || !m_reportTemperatures) return;
     const auto now = Clock::now();
     if (now - m_lastAutoReport < m_autoReport) return;
     m_lastAutoReport = now;
@@ -467,6 +536,7 @@ class MarlinSimulator::Impl {
       if (m_silent) rx.clear();
       process();
       autoReport();
+      noise();
       flush();
     }
   }
@@ -495,7 +565,13 @@ class MarlinSimulator::Impl {
   Clock::time_point m_lastAutoReport{};
   bool m_flushInput = false;
 
+  bool m_waitingForRoom = false;  // the front move waits for room in the planner
+
   bool m_silent = false;
+  bool m_garbled = false;
+  Clock::time_point m_lastNoise{};
+  bool m_reportTemperatures = true;
+  std::string m_strayOkOn;  // a stray ok follows each received line of this command ("" none)
   int m_corruptions = 0;
   long m_movesTaken = 0;  // G0/G1 taken into the planner since start(), for options.faultAtMove
   std::chrono::milliseconds m_replyDelay{0};
@@ -518,6 +594,10 @@ void MarlinSimulator::closePort() { m_impl->closePort(); }
 void MarlinSimulator::setReplyDelay(std::chrono::milliseconds delay) { m_impl->setReplyDelay(delay); }
 void MarlinSimulator::corruptNextLines(int count) { m_impl->corruptNextLines(count); }
 void MarlinSimulator::resetPrinter() { m_impl->resetPrinter(); }
+void MarlinSimulator::sendStrayOks(int count) { m_impl->sendStrayOks(count); }
+void MarlinSimulator::sendStrayOkOnReceiving(const std::string& command) { m_impl->sendStrayOkOnReceiving(command); }
+void MarlinSimulator::garbleOutput(bool garbled) { m_impl->garbleOutput(garbled); }
+void MarlinSimulator::reportTemperatures(bool report) { m_impl->reportTemperatures(report); }
 std::vector<MarlinLineRecord> MarlinSimulator::received() const { return m_impl->received(); }
 std::vector<MarlinExecutedRecord> MarlinSimulator::executed() const { return m_impl->executed(); }
 MarlinSimulatorState MarlinSimulator::state() const { return m_impl->state(); }

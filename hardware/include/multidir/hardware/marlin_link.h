@@ -3,13 +3,15 @@
 // upload: upload() reads the G-code into memory (comments and blank lines stripped), startPrint() streams it
 // line by line as `N<n> <command>*<checksum>`, at most `maxUnacknowledgedLines` lines ahead of the printer's
 // `ok`s, and re-sends from line n when the printer asks `Resend: n`. Between lines the link polls `M105`
-// (Marlin answers `ok T:210.0 /210.0 B:60.0 /60.0`); the end of the file is followed by `M400`, whose `ok`
-// says the last move is done (job complete). The emergency stop is `M112`, written by the stop thread outside
-// the line numbering (Marlin's emergency parser acts on it at once) and re-sent until the printer reports
-// its kill ("Error:Printer halted. kill() called!").
+// (Marlin answers `ok T:210.0 /210.0 B:60.0 /60.0`); the end of the file is followed by `M400` and `M114`, whose
+// position report proves the last move done (job complete): an `ok` that answers no line in flight is a protocol
+// warning, never the end of a job. Only lines of Marlin's protocol count as answers, and only status reads
+// (temperatures, position, busy) keep the status fresh (docs/hardware.md). The emergency stop is `M112`,
+// written by the stop thread outside the line numbering (Marlin's emergency parser acts on it at once) and
+// re-sent until the printer reports its kill ("Error:Printer halted. kill() called!").
 //
-// POSIX termios on the device (raw, 8N1, no flow control), no other library. Linux only for the rates that
-// are not termios constants (250000: set with termios2).
+// URL and rates: marlin_url.cpp. POSIX termios on the device (raw, 8N1, no flow control), no other library.
+// Linux only for the rates that are not termios constants (250000: set with termios2).
 #include <memory>
 #include <string>
 #include <vector>

@@ -3,11 +3,12 @@
 // devicePath() ("/dev/pts/N") as the printer's serial port (serial:///dev/pts/N). It speaks the subset of
 // Marlin's host protocol MarlinLink uses (docs/hardware.md, "Marlin (USB serial)"): line numbers and
 // checksums checked ("Error:checksum mismatch, Last Line: n" / "Error:Line Number is not Last Line Number+1,
-// Last Line: n", then "Resend: n+1" and "ok"), M110, M105 ("ok T:.. /.. B:.. /.. @:0 B@:0"), M400, M27, M155,
-// M112 (halts at once: "Error:Printer halted. kill() called!", then nothing more), "echo:busy: processing"
-// while a command blocks. Moves and heater waits run on the same simulated printer as the Moonraker
-// simulator (timed by feed rates and heating rates, `speed` times faster than real time); a move is
-// acknowledged once it is in the planner (16 moves), M109/M190/M400/G28/G4 once they are done.
+// Last Line: n", then "Resend: n+1" and "ok"), M110, M105 ("ok T:.. /.. B:.. /.. @:0 B@:0"), M114 ("X:.. Y:..
+// Z:.. E:.. Count X:.. Y:.. Z:.."), M400, M27, M155, M112 (halts at once: "Error:Printer halted. kill() called!",
+// then nothing more), "echo:busy: processing" while a command blocks or waits for room in the planner. Moves and
+// heater waits run on the same simulated printer as the Moonraker simulator (timed by feed rates and heating
+// rates, `speed` times faster than real time, on the injectable clock); a move is acknowledged once it is in the
+// planner (16 moves), M109/M190/G28/G4 once they are done, M400 once the planner is empty.
 //
 // Every method may be called from any thread. Every line received is recorded with its time from the
 // injectable clock, and so is every command the printer executed, so tests assert on what reached the printer.
@@ -34,6 +35,8 @@ struct MarlinSimulatorOptions {
   // move (G0/G1) into the planner: on that event, not on a timer, so a late test thread cannot miss the job.
   PrinterFault fault = PrinterFault::None;
   long faultAtMove = 10;
+  // Marlin's ADVANCED_OK: every ok of a numbered line says which: "ok N<line> P<planner free> B<buffer free>".
+  bool advancedOk = false;
 };
 
 struct MarlinLineRecord {
@@ -88,6 +91,15 @@ class MarlinSimulator {
   void setReplyDelay(std::chrono::milliseconds delay);  // every line the printer writes is held this long
   void corruptNextLines(int count);                     // the next `count` numbered lines arrive with one byte changed
   void resetPrinter();  // the reset button: a halted printer restarts ("start") with line number 0
+  // Lines a host cannot account for (test hooks): an ok that answers no line (a firmware's extra ok, a line
+  // echoed back by a hub), a serial line that carries only noise, a printer that never reports its temperatures.
+  void sendStrayOks(int count);                             // `count` oks that answer no line, written now
+  void sendStrayOkOnReceiving(const std::string& command);  // a stray ok right after each line of `command` arrives
+  // On: every line the printer writes arrives as noise, and more noise arrives every 20 ms (a wrong baud rate, a
+  // bad cable): nothing reads as Marlin's protocol. Off: its lines arrive again.
+  void garbleOutput(bool garbled);
+  // Off: M105 is answered with a bare "ok", and no temperature line is written (heater waits, M155).
+  void reportTemperatures(bool report);
 
   // Observation.
   [[nodiscard]] std::vector<MarlinLineRecord> received() const;

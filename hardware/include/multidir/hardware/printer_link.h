@@ -61,6 +61,10 @@ struct PrinterStatus {
   std::chrono::steady_clock::time_point lastReply{};  // of the last good read (PrinterLinkOptions::steadyNow)
   std::string lastError;                              // the latest link or printer problem ("" after a good read)
   StopLatch stop;                                     // the emergency stop, when one is latched
+  // Lines the link could not account for since connect() (Marlin: an ok that answers no line in flight, a line
+  // that is not Marlin's protocol): how many, and the latest in words. The link went on without them.
+  std::uint64_t protocolWarnings = 0;
+  std::string lastWarning;
 
   [[nodiscard]] bool busy() const { return state == PrinterJobState::Printing || state == PrinterJobState::Paused; }
 };
