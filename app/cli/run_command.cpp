@@ -401,9 +401,10 @@ std::string howToGoOn(const hardware::PrintRun& run, const hardware::PrinterStat
 }  // namespace
 
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(
-      args, {"--printer", "--platform", "--unit", "--api-key", "--log", "--settle", "--from", "--machine", "--printer-profile"},
-      {"--help"}, "run");
+  const ParsedArgs parsed = parseArgs(args,
+                                      {"--printer", "--platform", "--unit", "--api-key", "--log", "--settle", "--from",
+                                       "--machine", "--printer-profile"},
+                                      {"--help"}, "run");
   if (parsed.has("--help")) {
     out << kRunHelp;
     return kExitOk;
@@ -457,10 +458,9 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   const hardware::PrinterStatus first = devices.printer->status();
   if (first.busy() || first.firmwareState != "ready") {
-    log.ending(devices.printer->name() + " is not ready for a job (job " +
-                        hardware::printerJobStateName(first.state) + ", firmware " + first.firmwareState +
-                        (first.message.empty() ? "" : ": " + first.message) +
-                        "): let it finish, or cancel or restart it first");
+    log.ending(devices.printer->name() + " is not ready for a job (job " + hardware::printerJobStateName(first.state) +
+               ", firmware " + first.firmwareState + (first.message.empty() ? "" : ": " + first.message) +
+               "): let it finish, or cancel or restart it first");
     return kExitRunStopped;
   }
   log.line("connected to " + devices.printer->name() + " (firmware " + first.firmwareState + ")");
@@ -580,10 +580,10 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   // After Ctrl-C the run's abort has switched the heaters off already.
   if (!stoppedByOperator) leaveThePrinterSafe(devices, log, gcodeName);
   log.ending("the run stopped at step " + std::to_string(step) + " (" + hardware::printRunStateName(run.state()) +
-                      (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
-                      (stoppedByOperator ? " by " + interruptName() : std::string()) +
-                      howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(),
-                                gcodeName, stoppedByOperator));
+             (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
+             (stoppedByOperator ? " by " + interruptName() : std::string()) +
+             howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(), gcodeName,
+                       stoppedByOperator));
   return kExitRunStopped;
 }
 

@@ -59,7 +59,8 @@ std::string readGcode(const RunJobStep& step) {
 
 // Whether the platform can take the step's angles; the refusal names the limit and its range.
 core::Status platformTakes(const core::MachineSpec& platform, const hardware::PlatformOrientation& o) {
-  if (o.kind == hardware::PlatformOrientation::Kind::Rotary) return hardware::checkRotaryTarget(platform, o.rotaryDegrees);
+  if (o.kind == hardware::PlatformOrientation::Kind::Rotary)
+    return hardware::checkRotaryTarget(platform, o.rotaryDegrees);
   return hardware::checkTiltTarget(platform, o.tiltDegrees, o.azimuthDegrees);
 }
 

@@ -75,8 +75,8 @@ std::string gcodeFileProblem(const std::string& path) {
     return "is a symbolic link: 'multidir run' uploads only regular files inside the job folder; copy the file "
            "there in its place";
   if (S_ISREG(info.st_mode)) return "";
-  const char* kind = S_ISFIFO(info.st_mode)  ? "a FIFO"
-                     : S_ISDIR(info.st_mode) ? "a folder"
+  const char* kind = S_ISFIFO(info.st_mode)   ? "a FIFO"
+                     : S_ISDIR(info.st_mode)  ? "a folder"
                      : S_ISSOCK(info.st_mode) ? "a socket"
                                               : "a device";
   return std::string("is not a regular file (it is ") + kind + "): give the G-code file 'multidir slice' wrote";
@@ -104,8 +104,8 @@ RunJob readRunJob(const std::string& path) {
     bad(name, "version " + std::to_string(version) + " is newer than this MultiDir reads (" + versions +
                   "): update MultiDir");
   if (version < 1)
-    bad(name, "version " + std::to_string(version) + " is not a print-job version (this MultiDir reads " +
-                  versions + "): export and slice the job again");
+    bad(name, "version " + std::to_string(version) + " is not a print-job version (this MultiDir reads " + versions +
+                  "): export and slice the job again");
   RunJob run;
   run.jobFile = name;
   run.folder = file.parent_path().string();
@@ -146,8 +146,9 @@ RunJob readRunJob(const std::string& path) {
     if (run.machine.kind == core::MachineKind::RotaryPlatform)
       s.orientation = hardware::PlatformOrientation::rotary(numberAt(angles, "rotaryDegrees", name, s.anglesField));
     else
-      s.orientation = hardware::PlatformOrientation::tiltAzimuth(numberAt(angles, "tiltDegrees", name, s.anglesField),
-                                                                 numberAt(angles, "azimuthDegrees", name, s.anglesField));
+      s.orientation =
+          hardware::PlatformOrientation::tiltAzimuth(numberAt(angles, "tiltDegrees", name, s.anglesField),
+                                                     numberAt(angles, "azimuthDegrees", name, s.anglesField));
     s.gcodeField = slicedWhere + ".gcode";
     if (!sliced.is_object() || !sliced.contains("gcode") || !sliced["gcode"].is_string())
       bad(name, s.gcodeField + " is missing");

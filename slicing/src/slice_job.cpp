@@ -1,5 +1,7 @@
 #include "multidir/slicing/slice_job.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -12,7 +14,6 @@
 #include <optional>
 #include <sstream>
 #include <thread>
-#include <unistd.h>
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/slicing/clearance.h"

@@ -39,8 +39,8 @@ core::Status recheckStepPrograms(const std::vector<StepProgramText>& programs, c
     const core::Result<GcodeProgram> program = parseGcode(p.text, profile.rotaryAxis, p.fileName);
     if (!program) return program.error();
     const StepBounds bounds = stepBoundsFor(profile, restartExtra, p.step, p.baseZMm);
-    const core::Result<StepTotals> totals = checkStepProgram(
-        *program, bounds, p.fileName, p.endClearanceZMm ? &*p.endClearanceZMm : nullptr, filament);
+    const core::Result<StepTotals> totals =
+        checkStepProgram(*program, bounds, p.fileName, p.endClearanceZMm ? &*p.endClearanceZMm : nullptr, filament);
     if (!totals) return totals.error();
     filament = totals->filamentAtEnd;
   }

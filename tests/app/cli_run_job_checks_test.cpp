@@ -95,9 +95,9 @@ TEST_F(CliRunJobChecks, AnAngleBeyondThePlatformsProfileIsRefusedThoughTheJobWid
     job["machine"]["maxAngleDegrees"] = 180;
     job["steps"][1]["angles"]["rotaryDegrees"] = 175;
   });
-  expectRefusedBeforeAnythingMoves(run(dir), {"print-job.json: steps[1].angles.rotaryDegrees (step 2)", "175.00",
-                                              "[-90.00, 90.00]", "--machine " + dir + "/platform.json",
-                                              "nothing was moved"});
+  expectRefusedBeforeAnythingMoves(
+      run(dir), {"print-job.json: steps[1].angles.rotaryDegrees (step 2)", "175.00", "[-90.00, 90.00]",
+                 "--machine " + dir + "/platform.json", "nothing was moved"});
 }
 
 // Issue 28: step 1 was homed, turned and printed before the run found that step 2 was out of range.
@@ -125,11 +125,12 @@ TEST(CliRunUsage, WithoutThePlatformsMachineProfileIsAUsageError) {
 }
 
 // Issue 28: step G-code was not checked again: each of these was uploaded and printed.
-class CliRunStepGcode : public CliRunJobChecks, public ::testing::WithParamInterface<std::pair<std::string, std::string>> {};
+class CliRunStepGcode : public CliRunJobChecks,
+                        public ::testing::WithParamInterface<std::pair<std::string, std::string>> {};
 
 TEST_P(CliRunStepGcode, AStepFileFailingTheSlicersChecksIsRefusedBeforeAnythingMoves) {
-  const std::string dir = multidir::test::scratchDirectory("CliRunStepGcode." +
-                                                           std::to_string(std::hash<std::string>{}(GetParam().first)));
+  const std::string dir =
+      multidir::test::scratchDirectory("CliRunStepGcode." + std::to_string(std::hash<std::string>{}(GetParam().first)));
   multidir::test::writeJob(dir + "/job");
   std::ofstream(dir + "/job/step-02.gcode", std::ios::app) << GetParam().first << "\n";
   expectRefusedBeforeAnythingMoves(run(dir), {"step-02.gcode: step 2, line 28: " + GetParam().second,
@@ -138,7 +139,8 @@ TEST_P(CliRunStepGcode, AStepFileFailingTheSlicersChecksIsRefusedBeforeAnythingM
 
 INSTANTIATE_TEST_SUITE_P(
     Lines, CliRunStepGcode,
-    ::testing::Values(std::make_pair(std::string("G1 A30"), std::string("the platform turns inside a step's own program")),
+    ::testing::Values(std::make_pair(std::string("G1 A30"),
+                                     std::string("the platform turns inside a step's own program")),
                       std::make_pair(std::string("MANUAL_STEPPER STEPPER=rotary_a MOVE=30"),
                                      std::string("the platform turns inside a step's own program")),
                       std::make_pair(std::string("G1 Z-5 E3"), std::string("a move to z -5.00 mm, below the bed"))));
@@ -149,8 +151,9 @@ TEST_F(CliRunJobChecks, AStepFileThatIsASymbolicLinkIsRefused) {
   multidir::test::writeJob(dir + "/job");
   fs::rename(dir + "/job/step-02.gcode", dir + "/outside.gcode");
   fs::create_symlink("../outside.gcode", dir + "/job/step-02.gcode");
-  expectRefusedBeforeAnythingMoves(run(dir), {"step-02.gcode: step 2's G-code (slicing.steps[1].gcode) is a symbolic link",
-                                              "regular files inside the job folder"});
+  expectRefusedBeforeAnythingMoves(run(dir),
+                                   {"step-02.gcode: step 2's G-code (slicing.steps[1].gcode) is a symbolic link",
+                                    "regular files inside the job folder"});
 }
 
 // Issue 28: a FIFO was reported "missing".
@@ -159,8 +162,9 @@ TEST_F(CliRunJobChecks, AStepFileThatIsAFifoIsRefusedAsNotARegularFile) {
   multidir::test::writeJob(dir + "/job");
   fs::remove(dir + "/job/step-02.gcode");
   ASSERT_EQ(::mkfifo((dir + "/job/step-02.gcode").c_str(), 0600), 0);
-  expectRefusedBeforeAnythingMoves(run(dir), {"step-02.gcode: step 2's G-code (slicing.steps[1].gcode) is not a regular "
-                                              "file (it is a FIFO)"});
+  expectRefusedBeforeAnythingMoves(run(dir),
+                                   {"step-02.gcode: step 2's G-code (slicing.steps[1].gcode) is not a regular "
+                                    "file (it is a FIFO)"});
 }
 
 TEST_F(CliRunJobChecks, OneGcodeFileForTwoStepsIsRefused) {

@@ -57,8 +57,8 @@ TEST(CliRunKitten, AWholeKittenJobRunsEveryStepOnOctoPrintAndThePlatformNeverMov
   ASSERT_TRUE(printer.start().ok());
   const auto started = Clock::now();
   const CliRun run = runCli("run " + quoted(dir + "/job") + " --printer octoprint://" + printer.address() +
-                                " --api-key " + printer.apiKey() + " --platform " + devices.address() + " --settle 20 --machine " +
-                                quoted(dir + "/platform.json"),
+                                " --api-key " + printer.apiKey() + " --platform " + devices.address() +
+                                " --settle 20 --machine " + quoted(dir + "/platform.json"),
                             dir, "timeout 120");
   const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;

@@ -206,7 +206,8 @@ TEST_F(CliRunTest, APlatformFaultDuringATurnEndsTheRunWithTheHeatersOff) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.FaultTurn");
   writeJob(dir + "/job", true, false, true);
   startSimulators(200.0);
-  auto cli = std::async(std::launch::async, [&] { return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60"); });
+  auto cli = std::async(std::launch::async,
+                        [&] { return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60"); });
   bool stuck = false;
   for (int i = 0; i < 3000 && !stuck; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -331,9 +332,8 @@ TEST_F(CliRunTest, TheRunLogHoldsNoTerminalEscapes) {
 TEST_F(CliRunTest, AJobWithoutGcodeSaysToSliceItFirst) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.NotSliced");
   writeJob(dir + "/job", false);
-  const CliRun run = runCli("run '" + dir + "/job' --printer 127.0.0.1:1 --platform 127.0.0.1:1 --machine '" + dir +
-                                "/platform.json'",
-                            dir);
+  const CliRun run = runCli(
+      "run '" + dir + "/job' --printer 127.0.0.1:1 --platform 127.0.0.1:1 --machine '" + dir + "/platform.json'", dir);
   EXPECT_EQ(run.exitCode, 1) << run.err;
   EXPECT_NE(run.err.find("has no G-code"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("multidir slice"), std::string::npos) << run.err;
@@ -345,10 +345,10 @@ TEST_F(CliRunTest, AnUnreachablePrinterIsNamedAndNothingMoves) {
   startSimulators(1.0);
   const int port = printer->port();
   printer->stop();
-  const CliRun run = runCli("run '" + dir + "/job' --printer 127.0.0.1:" + std::to_string(port) +
-                                " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --machine '" + dir +
-                                "/platform.json'",
-                            dir, "timeout 60");
+  const CliRun run =
+      runCli("run '" + dir + "/job' --printer 127.0.0.1:" + std::to_string(port) +
+                 " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --machine '" + dir + "/platform.json'",
+             dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.err;
   EXPECT_NE(run.err.find("Moonraker printer at 127.0.0.1"), std::string::npos) << run.err;
   EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Rotary), 0u);

@@ -81,12 +81,11 @@ TEST(GcodeChecks, AMoveBelowTheBedIsRefusedThoughItLaysNoLine) {
 // the start) turns the platform all the same: the program does not know where it stands.
 TEST(GcodeChecks, AnyCommandOfThePlatformsAxisInAStepsProgramIsRefused) {
   for (const std::string line : {"G1 A0", "MANUAL_STEPPER STEPPER=rotary_a MOVE=0"}) {
-    const auto checked = checkStepProgram(
-        parsed("G90\nM83\n" + line + "\n; MULTIDIR STEP 1\nG1 X10 Y10 Z0.3\nG1 X20 E1\n"), bounds(1, 0.0),
-        "step-01.gcode");
+    const auto checked =
+        checkStepProgram(parsed("G90\nM83\n" + line + "\n; MULTIDIR STEP 1\nG1 X10 Y10 Z0.3\nG1 X20 E1\n"),
+                         bounds(1, 0.0), "step-01.gcode");
     ASSERT_FALSE(checked.ok()) << line;
-    EXPECT_NE(checked.error().message.find("line 3: the platform turns inside a step's own program"),
-              std::string::npos)
+    EXPECT_NE(checked.error().message.find("line 3: the platform turns inside a step's own program"), std::string::npos)
         << checked.error().message;
   }
 }

@@ -44,14 +44,17 @@ void writeJob(const std::string& dir, bool sliced, bool robot, bool heatersLeftO
   std::ofstream(dir + "/print-job.json")
       << "{\"schema\": \"multidir-print-job\", \"version\": 1, \"machine\": " << machine << ", \"steps\": [" << steps
       << "]"
-      << (sliced ? ", \"slicing\": {\"printer\": {\"profile\": \"marlin-220\", \"platform\": \"modbus\"}, \"steps\": [" +
-                       slicing + "], \"turns\": [{\"fromStep\": 1, \"fromDegrees\": 0, \"toDegrees\": 30, "
-                                 "\"sweptTopZMm\": 0, \"clearanceZMm\": 0}]}"
-                 : "")
+      << (sliced
+              ? ", \"slicing\": {\"printer\": {\"profile\": \"marlin-220\", \"platform\": \"modbus\"}, \"steps\": [" +
+                    slicing +
+                    "], \"turns\": [{\"fromStep\": 1, \"fromDegrees\": 0, \"toDegrees\": 30, "
+                    "\"sweptTopZMm\": 0, \"clearanceZMm\": 0}]}"
+              : "")
       << "}\n";
   if (robot)
-    std::ofstream(platformProfileBeside(dir)) << "{\"schema\": \"multidir-machine\", \"version\": 1, \"kind\": \"5dof\", "
-                                                 "\"up\": [0, 0, 1], \"maxTiltDegrees\": 60}\n";
+    std::ofstream(platformProfileBeside(dir))
+        << "{\"schema\": \"multidir-machine\", \"version\": 1, \"kind\": \"5dof\", "
+           "\"up\": [0, 0, 1], \"maxTiltDegrees\": 60}\n";
   else
     writeRotaryProfile(platformProfileBeside(dir), -90.0, 90.0);
 }

@@ -1,7 +1,5 @@
 #include "plan/json_file.h"
 
-#include "detail/atomic_file.h"
-
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -9,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 #include <vector>
+
+#include "detail/atomic_file.h"
 
 namespace multidir::core::detail {
 
@@ -114,8 +114,9 @@ Result<nlohmann::json> parseJsonText(const std::string& content, const std::stri
     // where parsing stopped (NaN, Infinity: not JSON) are what help.
     FieldLocator locator;
     nlohmann::json::sax_parse(content, &locator);
-    const std::string where =
-        locator.failedPath.empty() ? std::string() : " at " + locator.failedPath + " ('" + tokenAt(content, e.byte) + "')";
+    const std::string where = locator.failedPath.empty()
+                                  ? std::string()
+                                  : " at " + locator.failedPath + " ('" + tokenAt(content, e.byte) + "')";
     return Error{ErrorCode::MalformedFile,
                  "not valid JSON (syntax error near byte " + std::to_string(e.byte) + where +
                      "); check brackets, commas and quotes, and that every number is finite",

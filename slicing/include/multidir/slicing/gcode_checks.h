@@ -72,9 +72,9 @@ core::Result<StepTotals> checkStepProgram(const GcodeProgram& program, const Ste
 // A stitched program (job.gcode): each step's section checked as above; the platform turns only inside a
 // transition section, by a move that moves nothing else, with the nozzle at or above that turn's clearance;
 // no move goes below the bed;
-// no extrusion happens with the filament drawn back (from a primed start); inside a transition nothing is extruded and the nozzle moves in XY only at or above the clearance (retract,
-// lift, park, turn, return, unretract). `bounds` has one entry per step in order, `turns` one per transition.
-// Errors: CheckFailed.
+// no extrusion happens with the filament drawn back (from a primed start); inside a transition nothing is extruded and
+// the nozzle moves in XY only at or above the clearance (retract, lift, park, turn, return, unretract). `bounds` has
+// one entry per step in order, `turns` one per transition. Errors: CheckFailed.
 core::Result<std::vector<StepTotals>> checkStitchedProgram(const GcodeProgram& program,
                                                            const std::vector<StepBounds>& bounds,
                                                            const std::vector<TurnClearance>& turns,
