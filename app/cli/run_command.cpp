@@ -1,10 +1,12 @@
 #include "run_command.h"
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -19,12 +21,13 @@
 #include "multidir/hardware/robot_arm.h"
 #include "multidir/hardware/rotary_platform.h"
 #include "multidir/slicing/estimates.h"
+#include "run_job_checks.h"
 #include "run_job_file.h"
 
 namespace multidir::cli {
 
 const char* const kRunHelp =
-    "Usage: multidir run JOB --printer URL --platform HOST:PORT [options]\n"
+    "Usage: multidir run JOB --printer URL --platform HOST:PORT --machine PROFILE.json [options]\n"
     "\n"
     "Runs a sliced print job headless (JOB: the folder written by 'multidir slice' for a profile whose platform\n"
     "is driven over Modbus, or its print-job.json). For each step: turns the platform (4-DOF rotary controller\n"
@@ -34,6 +37,11 @@ const char* const kRunHelp =
     "The platform never moves while the printer prints, and the printer never starts while the platform is not\n"
     "at rest at the step's orientation.\n"
     "\n"
+    "Before anything moves, the whole job is checked: every step's angles against the platform's own machine\n"
+    "profile (--machine; the limits print-job.json carries describe the plan, not the platform), and every\n"
+    "step's G-code file (a regular file in the job folder, not a link, one per step) by the checks\n"
+    "'multidir slice' ran, against the printer profile it was sliced with.\n"
+    "\n"
     "Every event is logged with its time; a progress line (step, printer progress, temperatures, the job's\n"
     "remaining time from the slicer's estimates) follows the printer. When the printer reports an error, a\n"
     "job cancelled on the printer, a temperature fault, or a link is lost, the run stops there (the platform\n"
@@ -42,8 +50,9 @@ const char* const kRunHelp =
     "the part already printed: accept it (or finish it by hand) and continue with --from STEP+1, or clear the\n"
     "platform and print the whole job again.\n"
     "\n"
-    "Ctrl-C stops both devices: the platform's motion and the printer's job (cancelled), and switches the\n"
-    "printer's heaters off, whatever the run is doing (also while the platform turns). A second Ctrl-C sends\n"
+    "Ctrl-C (and SIGTERM, or SIGHUP when the terminal closes) stops both devices: the platform's motion and\n"
+    "the printer's job (cancelled), and switches the printer's heaters off, whatever the run is doing (also\n"
+    "while the platform turns). A second Ctrl-C sends\n"
     "both emergency stops (Klipper then needs a FIRMWARE_RESTART; OctoPrint sends M112 and disconnects from the\n"
     "printer, which needs a reset and a Connect in OctoPrint's Connection panel; Marlin a reset; the platform a\n"
     "clear fault and homing).\n"
@@ -58,14 +67,18 @@ const char* const kRunHelp =
     "                       it, the environment variable MULTIDIR_PRINTER_API_KEY is read. Prefer either to\n"
     "  --api-key KEY        the key itself, which is visible to every user in the process list\n"
     "  --platform HOST:PORT the platform's Modbus TCP address (rotary controller or robot)\n"
+    "  --machine FILE       the connected platform's machine profile (JSON, as 'multidir decompose --profile'\n"
+    "                       reads): its angle range and step, or maximal tilt and forbidden cones\n"
+    "  --printer-profile P  the printer profile (NAME or .ini) the G-code is checked against (default: the one\n"
+    "                       the job was sliced with)\n"
     "  --unit ID            Modbus unit id, 0..255 (default: 1 for the rotary controller, 255 for the robot)\n"
     "  --from STEP          start at this step, 1..the number of steps (default: 1)\n"
     "  --settle MS          the platform holds the orientation this long before printing (default: 500)\n"
-    "  --log FILE           also write the log to FILE\n"
+    "  --log FILE           also write the log to FILE (a write error is reported at once; the run goes on)\n"
     "  -h, --help           show this help\n"
     "\n"
     "Exit codes: 0 every step printed, 1 the job cannot be read, 2 usage error, 4 the run did not complete\n"
-    "(a device unreachable or faulted, a printer fault, Ctrl-C).\n";
+    "(a device unreachable or faulted, a printer fault, Ctrl-C, SIGTERM, SIGHUP).\n";
 
 namespace {
 
@@ -73,8 +86,25 @@ using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 
 std::atomic<int> g_interrupts{0};
+std::atomic<int> g_firstSignal{0};
 
-extern "C" void onRunSignal(int) { g_interrupts.fetch_add(1); }
+extern "C" void onRunSignal(int signal) {
+  int none = 0;
+  g_firstSignal.compare_exchange_strong(none, signal);
+  g_interrupts.fetch_add(1);
+}
+
+// The first stop signal as the log names it: each one stops the devices as Ctrl-C does.
+std::string interruptName() {
+  switch (g_firstSignal.load()) {
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGHUP:
+      return "SIGHUP (the terminal closed)";
+    default:
+      return "Ctrl-C";
+  }
+}
 
 int wholeNumber(const std::string& text, const std::string& option, long low, long high) {
   const double value = parseNumber(text, option);
@@ -120,10 +150,12 @@ std::string withoutControls(const std::string& text) {
   return out;
 }
 
-// Writes each line to the terminal and the log file.
+// Writes each line to the terminal and the log file. A log file that cannot be written (a full disk) is
+// reported at once, on the terminal and stderr, and then left alone: the run goes on, since stopping the
+// devices over a log would be worse than a log that ends early.
 class RunLog {
  public:
-  RunLog(std::ostream& out, const std::string& path) : m_out(out) {
+  RunLog(std::ostream& out, std::ostream& err, const std::string& path) : m_out(out), m_err(err), m_path(path) {
     if (path.empty()) return;
     m_file.open(path, std::ios::app);
     if (!m_file)
@@ -132,31 +164,54 @@ class RunLog {
   void line(const std::string& text) {
     const std::string stamped = "[" + clockText() + "] " + withoutControls(text) + "\n";
     m_out << stamped << std::flush;
-    if (m_file.is_open()) m_file << stamped << std::flush;
+    toFile(stamped);
   }
   // The command's last word (why it stopped, how to go on): on stderr, and in the log file with its time.
-  void ending(std::ostream& err, const std::string& text) {
+  void ending(const std::string& text) {
     const std::string clean = "multidir run: " + withoutControls(text);
-    err << clean << "\n" << std::flush;
-    if (m_file.is_open()) m_file << "[" + clockText() + "] " + clean + "\n" << std::flush;
+    m_err << clean << "\n" << std::flush;
+    toFile("[" + clockText() + "] " + clean + "\n");
   }
 
  private:
+  void toFile(const std::string& text) {
+    if (!m_file.is_open()) return;
+    errno = 0;
+    m_file << text << std::flush;
+    if (m_file) return;
+    const std::string why = errno != 0 ? std::strerror(errno) : "write error";
+    m_file.close();
+    const std::string warning = "warning: the log file " + withoutControls(m_path) + " cannot be written (" + why +
+                                "): the run goes on, logged on the terminal only from here";
+    m_out << "[" + clockText() + "] " + warning + "\n" << std::flush;
+    m_err << "multidir run: " << warning << "\n" << std::flush;
+  }
+
   std::ostream& m_out;
+  std::ostream& m_err;
+  std::string m_path;
   std::ofstream m_file;
 };
 
 // Restores the previous handlers however the command ends.
 class SignalScope {
  public:
+  // SIGHUP (the terminal closed) and SIGTERM stop the devices as Ctrl-C does; SIGPIPE is ignored while the run
+  // lasts, so output to a pipe whose reader is gone (`| tee` in the closed terminal) cannot end the command
+  // before it stopped them.
   SignalScope() {
     g_interrupts = 0;
+    g_firstSignal = 0;
     m_int = std::signal(SIGINT, onRunSignal);
     m_term = std::signal(SIGTERM, onRunSignal);
+    m_hup = std::signal(SIGHUP, onRunSignal);
+    m_pipe = std::signal(SIGPIPE, SIG_IGN);
   }
   ~SignalScope() {
     std::signal(SIGINT, m_int);
     std::signal(SIGTERM, m_term);
+    std::signal(SIGHUP, m_hup);
+    std::signal(SIGPIPE, m_pipe);
   }
   SignalScope(const SignalScope&) = delete;
   SignalScope& operator=(const SignalScope&) = delete;
@@ -164,6 +219,8 @@ class SignalScope {
  private:
   void (*m_int)(int) = SIG_DFL;
   void (*m_term)(int) = SIG_DFL;
+  void (*m_hup)(int) = SIG_DFL;
+  void (*m_pipe)(int) = SIG_DFL;
 };
 
 // Ctrl-C before the run started (connecting, enabling, homing): the caller stops the devices.
@@ -184,7 +241,7 @@ bool waitFor(const std::function<bool()>& condition, std::chrono::milliseconds l
 // waitFor, and Interrupted naming `what` when Ctrl-C ended the wait.
 bool waitOrInterrupt(const std::function<bool()>& condition, std::chrono::milliseconds limit, const std::string& what) {
   const bool held = waitFor(condition, limit);
-  if (!held && g_interrupts > 0) throw Interrupted("Ctrl-C while " + what);
+  if (!held && g_interrupts > 0) throw Interrupted(interruptName() + " while " + what);
   return held;
 }
 
@@ -202,7 +259,9 @@ struct Devices {
   std::unique_ptr<hardware::Positioner> positioner;
 };
 
-void connectPlatform(Devices& devices, const RunJob& job, const std::string& host, int port, int unit, RunLog& log) {
+// `platform`: the connected platform's own profile (--machine), whose limits the drivers enforce.
+void connectPlatform(Devices& devices, const RunJob& job, const core::MachineSpec& platform, const std::string& host,
+                     int port, int unit, RunLog& log) {
   hardware::ConnectionSettings connection;
   connection.tcp.host = host;
   connection.tcp.port = port;
@@ -217,7 +276,7 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
     hardware::RotaryPlatformOptions options;
     options.connection = connection;
     options.connection.slaveId = unit < 0 ? 1 : unit;
-    options.machine = job.machine;
+    options.machine = platform;
     devices.rotary = std::make_unique<hardware::RotaryPlatform>(options);
     // Refused while another run controls the platform (docs/hardware.md, "One controller at a time").
     if (core::Status c = devices.rotary->connect(); !c) throw std::runtime_error(c.error().describe());
@@ -259,7 +318,7 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
   hardware::RobotArmOptions options;
   options.connection = connection;
   options.connection.slaveId = unit < 0 ? 255 : unit;
-  options.machine = job.machine;
+  options.machine = platform;
   devices.robot = std::make_unique<hardware::RobotArm>(options);
   if (core::Status c = devices.robot->connect(); !c) throw std::runtime_error(c.error().describe());
   log.line(devices.robot->name() + " is controlled by this run (" +
@@ -270,7 +329,7 @@ void connectPlatform(Devices& devices, const RunJob& job, const std::string& hos
 // Ctrl-C before the first step: the platform's stop (it may be homing) and the printer's heaters off (they
 // may be on from before), each waited for at most 10 s.
 void stopBeforeTheRun(Devices& devices, RunLog& log) {
-  log.line("Ctrl-C: stopping the platform and switching the printer's heaters off");
+  log.line(interruptName() + ": stopping the platform and switching the printer's heaters off");
   std::future<core::Status> platform;
   if (devices.rotary) platform = devices.rotary->stop();
   if (devices.robot) platform = devices.robot->stop();
@@ -350,9 +409,10 @@ std::string howToGoOn(const hardware::PrintRun& run, const hardware::PrinterStat
 }  // namespace
 
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const ParsedArgs parsed = parseArgs(
-      args, {"--printer", "--platform", "--unit", "--api-key", "--api-key-file", "--log", "--settle", "--from"},
-      {"--help"}, "run");
+  const ParsedArgs parsed = parseArgs(args,
+                                      {"--printer", "--platform", "--unit", "--api-key", "--api-key-file", "--log",
+                                       "--settle", "--from", "--machine", "--printer-profile"},
+                                      {"--help"}, "run");
   if (parsed.has("--help")) {
     out << kRunHelp;
     return kExitOk;
@@ -380,10 +440,20 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const int platformPort = wholeNumber(platformText.substr(colon + 1), "--platform's port", 1, 65535);
   const int unit = parsed.has("--unit") ? wholeNumber(parsed.value("--unit", ""), "--unit", 0, 255) : -1;
   const int settleMs = wholeNumber(parsed.value("--settle", "500"), "--settle", 0, 600000);
+  if (!parsed.has("--machine"))
+    throw UsageError(
+        "multidir run: --machine PROFILE.json is required: the connected platform's machine profile (its angle "
+        "range and step, or maximal tilt and forbidden cones; JSON, as 'multidir decompose --profile' reads). The "
+        "limits in print-job.json describe the plan, not the platform. Run 'multidir help run'.");
 
   const RunJob job = readRunJob(jobPath);
   const int from = wholeNumber(parsed.value("--from", "1"), "--from", 1, static_cast<long>(job.steps.size()));
-  RunLog log(out, parsed.value("--log", ""));
+  // The whole job, before anything connects or moves: the platform's limits and the slicer's G-code checks.
+  const std::string platformProfile = parsed.value("--machine", "");
+  const core::MachineSpec platform = loadPlatformProfile(platformProfile);
+  checkRunJob(job, platform, "--machine " + platformProfile,
+              loadRunPrinterProfile(job, parsed.value("--printer-profile", "")));
+  RunLog log(out, err, parsed.value("--log", ""));
   SignalScope signals;
 
   Devices devices;
@@ -391,29 +461,28 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   log.line("job " + job.jobFile + ": " + std::to_string(job.steps.size()) + " steps, " +
            core::machineKindName(job.machine.kind) + (from > 1 ? ", starting at step " + std::to_string(from) : ""));
   if (core::Status c = devices.printer->connect(); !c) {
-    log.ending(err, c.error().describe());
+    log.ending(c.error().describe());
     return kExitRunStopped;
   }
   const hardware::PrinterStatus first = devices.printer->status();
   if (first.busy() || first.firmwareState != "ready") {
-    log.ending(err, devices.printer->name() + " is not ready for a job (job " +
-                        hardware::printerJobStateName(first.state) + ", firmware " + first.firmwareState +
-                        (first.message.empty() ? "" : ": " + first.message) +
-                        "): let it finish, or cancel or restart it first");
+    log.ending(devices.printer->name() + " is not ready for a job (job " + hardware::printerJobStateName(first.state) +
+               ", firmware " + first.firmwareState + (first.message.empty() ? "" : ": " + first.message) +
+               "): let it finish, or cancel or restart it first");
     return kExitRunStopped;
   }
   log.line("connected to " + devices.printer->name() + " (firmware " + first.firmwareState + ")");
   const std::string notStarted = ", before the first step: nothing was printed; run the job again" +
                                  (from > 1 ? " with --from " + std::to_string(from) : std::string()) + " when ready";
   try {
-    connectPlatform(devices, job, platformHost, platformPort, unit, log);
-    if (g_interrupts > 0) throw Interrupted("Ctrl-C while connecting the platform");
+    connectPlatform(devices, job, platform, platformHost, platformPort, unit, log);
+    if (g_interrupts > 0) throw Interrupted(interruptName() + " while connecting the platform");
   } catch (const Interrupted& e) {
     stopBeforeTheRun(devices, log);
-    log.ending(err, std::string("stopped by ") + e.what() + notStarted);
+    log.ending(std::string("stopped by ") + e.what() + notStarted);
     return kExitRunStopped;
   } catch (const std::runtime_error& e) {
-    log.ending(err, e.what());
+    log.ending(e.what());
     return kExitRunStopped;
   }
   log.line("connected to " + devices.positioner->name());
@@ -438,7 +507,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
     log.line(std::string(hardware::printRunStateName(e.state)) + ": " + e.message);
   });
   if (core::Status started = run.start(); !started) {
-    log.ending(err, started.error().describe());
+    log.ending(started.error().describe());
     return kExitRunStopped;
   }
 
@@ -463,7 +532,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
         stoppedByOperator = true;
         firstInterrupt = Clock::now();
         stopDeadline = firstInterrupt + 10s;
-        log.line("Ctrl-C: stopping both devices (press Ctrl-C again for their emergency stops)");
+        log.line(interruptName() + ": stopping both devices (press Ctrl-C again for their emergency stops)");
         // abort() cancels the printer's job itself when the run was printing; otherwise the printer is asked
         // here, in case it prints something the run did not start. Then abort() switches the heaters off
         // (queued behind the cancel), whatever the run was doing: a turn between two steps leaves them hot.
@@ -475,7 +544,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
       } else if (second) {
         emergencySent = true;
         stopDeadline = Clock::now() + 10s;
-        log.line("second Ctrl-C: emergency stop of both devices");
+        log.line("second stop signal (" + interruptName() + " first): emergency stop of both devices");
         (void)run.emergencyStop();
       }
     }
@@ -518,11 +587,11 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const std::string gcodeName = std::filesystem::path(steps[run.currentStep()].gcodePath).filename().string();
   // After Ctrl-C the run's abort has switched the heaters off already.
   if (!stoppedByOperator) leaveThePrinterSafe(devices, log, gcodeName);
-  log.ending(err, "the run stopped at step " + std::to_string(step) + " (" + hardware::printRunStateName(run.state()) +
-                      (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
-                      (stoppedByOperator ? " by Ctrl-C" : "") +
-                      howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(),
-                                gcodeName, stoppedByOperator));
+  log.ending("the run stopped at step " + std::to_string(step) + " (" + hardware::printRunStateName(run.state()) +
+             (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
+             (stoppedByOperator ? " by " + interruptName() : std::string()) +
+             howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(), gcodeName,
+                       stoppedByOperator));
   return kExitRunStopped;
 }
 

@@ -1,6 +1,9 @@
 #pragma once
 // The sliced print job `multidir run` executes: print-job.json (docs/plan-format.md) with its "slicing" object
-// from `multidir slice`, and the step G-code files beside it.
+// from `multidir slice`, and the step G-code files beside it. Read and checked in full before anything moves;
+// the machine limits it carries describe the plan, not the platform, and are not trusted for motion
+// (run_job_checks.h checks the job against the platform's own profile).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,23 +12,34 @@
 
 namespace multidir::cli {
 
+// A step's print time beyond this (a year) is no slicer's estimate: the job file is refused.
+constexpr double kMaxStepPrintSeconds = 365.0 * 24.0 * 3600.0;
+
 struct RunJobStep {
   int index = 1;
   hardware::PlatformOrientation orientation;
+  std::string anglesField;       // "steps[0].angles", named in errors
+  std::string gcodeField;        // "slicing.steps[0].gcode"
   std::string gcodePath;         // absolute or relative to the working directory: the job folder + the file name
   double estimateSeconds = 0.0;  // the slicer's estimate, 0 when the job has none
+  double baseZMm = 0.0;          // slicing.steps[].baseZMm: the printer z its region starts at
+  std::optional<double> turnClearanceZMm;  // slicing.turns[]: the nozzle's height before the next turn
 };
 
 struct RunJob {
   std::string jobFile;  // the print-job.json read
+  std::string folder;   // the folder it lies in
   core::MachineSpec machine;
+  std::string printerProfile;  // slicing.printer.profile as `multidir slice` recorded it ("" when absent)
   std::vector<RunJobStep> steps;
 };
 
-// Reads `path` (a job folder or its print-job.json). Throws FileError naming the file and the field: not a
-// MultiDir print job, a newer version, no "slicing" (run `multidir slice` first), a stitched job for a
-// firmware-axis platform (run job.gcode on the printer instead), a 3-DOF job, a step without angles or G-code,
-// a G-code file that is missing.
+// Reads `path` (a job folder or its print-job.json) and checks everything the job alone can say. Throws
+// FileError naming the file, the field and what is allowed: not JSON (naming the field of a number such as
+// 1e999 or NaN), not a MultiDir print job, a version other than 1..kPrintJobFormatVersion, no "slicing" (run
+// `multidir slice` first), a stitched job for a firmware-axis platform (run job.gcode on the printer instead),
+// a 3-DOF job, a step without angles or G-code, a printSeconds outside [0, kMaxStepPrintSeconds], two steps
+// naming the same G-code file, a G-code file that is missing, a symbolic link or not a regular file.
 RunJob readRunJob(const std::string& path);
 
 }  // namespace multidir::cli

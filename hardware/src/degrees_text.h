@@ -4,7 +4,7 @@
 
 namespace multidir::hardware {
 
-// degreesText(12.3456) == "12.35".
+// degreesText(12.3456) == "12.35"; beyond 1e6 in magnitude six significant digits: "1e+308".
 std::string degreesText(double value);
 
 }  // namespace multidir::hardware

@@ -81,6 +81,13 @@ core::Status checkPrimed(FilamentState& filament, const GcodeMove& move, int ste
   return core::Done{};
 }
 
+// Refuses any move (travel too) that takes the nozzle below the bed: it would press into the bed or the part.
+core::Status checkAboveBed(const GcodeMove& move, int step, double toleranceMm, const std::string& fileName) {
+  if (move.to.z() >= -toleranceMm) return core::Done{};
+  return refusal(fileName, step, move.line,
+                 "a move to z " + mm(move.to.z()) + " mm, below the bed (z 0): the nozzle would press into the bed");
+}
+
 }  // namespace
 
 void advance(FilamentState& state, const GcodeMove& move) {
@@ -116,7 +123,9 @@ core::Result<StepTotals> checkStepProgram(const GcodeProgram& program, const Ste
       return s.error();
     if (move.step != 0 && move.step != bounds.step)
       return refusal(fileName, bounds.step, move.line, "a section of step " + std::to_string(move.step) + " in its program");
-    if (move.rotates())
+    if (core::Status s = checkAboveBed(move, bounds.step, bounds.toleranceMm, fileName); !s) return s.error();
+    // Any command of the platform's axis, even one to where the parser believes it stands.
+    if (move.rotates() || move.commandsRotaryAxis)
       return refusal(fileName, bounds.step, move.line,
                      "the platform turns inside a step's own program (MultiDir turns it between steps)");
     if (move.extrudes())
@@ -156,6 +165,7 @@ core::Result<std::vector<StepTotals>> checkStitchedProgram(const GcodeProgram& p
     if (own == nullptr) return refusal(fileName, step, move.line, "a section of a step the job does not have");
     if (core::Status s = checkPrimed(filament, move, own->step, own->retractToleranceMm, fileName); !s)
       return s.error();
+    if (core::Status s = checkAboveBed(move, own->step, own->toleranceMm, fileName); !s) return s.error();
     if (move.inTransition) {
       const auto it = clearance.find(step);
       if (it == clearance.end())

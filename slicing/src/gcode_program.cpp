@@ -101,6 +101,7 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
       move.from = move.to = position;
       move.rotaryFromDegrees = rotary;
       move.rotaryToDegrees = rotary = manualDegrees;
+      move.commandsRotaryAxis = true;
       move.step = step;
       move.inTransition = inTransition;
       program.moves.push_back(move);
@@ -174,6 +175,7 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
         e = next;
       } else if (word.letter == rotaryLetter) {
         rotary = absoluteXyz ? word.value : rotary + word.value;
+        move.commandsRotaryAxis = true;
       }
     }
     move.to = position;

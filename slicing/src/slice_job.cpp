@@ -1,5 +1,7 @@
 #include "multidir/slicing/slice_job.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -12,7 +14,6 @@
 #include <optional>
 #include <sstream>
 #include <thread>
-#include <unistd.h>
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/slicing/clearance.h"
@@ -20,6 +21,7 @@
 #include "multidir/slicing/interface_settings.h"
 #include "multidir/slicing/placement.h"
 #include "multidir/slicing/slicer_engine.h"
+#include "multidir/slicing/step_recheck.h"
 
 namespace multidir::slicing {
 
@@ -190,15 +192,9 @@ PrimeSettings primeSettings(const PrinterProfile& profile, const SliceJobOptions
   return prime;
 }
 
+// The same bounds `multidir run` checks the step files against again (step_recheck.h).
 StepBounds stepBounds(const PrinterProfile& profile, const PrimeSettings& prime, int step, double baseZMm) {
-  StepBounds b;
-  b.step = step;
-  b.baseZMm = baseZMm;
-  b.bedMin = profile.bedMin();
-  b.bedMax = profile.bedMax();
-  b.maxZMm = profile.maxPrintHeightMm;
-  b.retractToleranceMm = 0.01 + std::max(0.0, -prime.restartExtraMm);
-  return b;
+  return stepBoundsFor(profile, prime.restartExtraMm, step, baseZMm);
 }
 
 // The z of the step's first extrusion after its marker (its first layer).

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -40,6 +41,11 @@ TEST(CliRunKitten, AWholeKittenJobRunsEveryStepOnOctoPrintAndThePlatformNeverMov
   const nlohmann::json job = nlohmann::json::parse(multidir::test::readAll(dir + "/job/print-job.json"));
   const std::size_t steps = job["steps"].size();
   ASSERT_GE(steps, 2u);
+  // The platform the plan was made for: the job's own machine as its profile (`multidir run --machine`).
+  nlohmann::json platform = job["machine"];
+  platform["schema"] = "multidir-machine";
+  platform["version"] = 1;
+  std::ofstream(dir + "/platform.json") << platform.dump();
 
   hw::SimulatorOptions deviceOptions;
   deviceOptions.robot = false;
@@ -51,7 +57,8 @@ TEST(CliRunKitten, AWholeKittenJobRunsEveryStepOnOctoPrintAndThePlatformNeverMov
   ASSERT_TRUE(printer.start().ok());
   const auto started = Clock::now();
   const CliRun run = runCli("run " + quoted(dir + "/job") + " --printer octoprint://" + printer.address() +
-                                " --api-key " + printer.apiKey() + " --platform " + devices.address() + " --settle 20",
+                                " --api-key " + printer.apiKey() + " --platform " + devices.address() +
+                                " --settle 20 --machine " + quoted(dir + "/platform.json"),
                             dir, "timeout 120");
   const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;

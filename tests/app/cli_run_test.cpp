@@ -20,6 +20,7 @@
 #include "multidir/hardware/octoprint_simulator.h"
 #include "multidir/hardware/rotary_platform.h"
 #include "support/cli_runner.h"
+#include "support/run_job_writer.h"
 #include "support/test_models.h"
 
 namespace {
@@ -28,42 +29,8 @@ using multidir::test::CliRun;
 using multidir::test::runCli;
 namespace hw = multidir::hardware;
 
-// Heats (about 18 simulated seconds), then 20 moves of 10 mm at 1200 mm/min; `heatersLeftOn`: the bed heated
-// too and both left on at the end, for the next step (as robot-0.8.ini's end G-code leaves the bed on).
-std::string stepGcode(bool heatersLeftOn = false) {
-  std::string text =
-      std::string(heatersLeftOn ? "M140 S60\n" : "") + "M104 S200\nM109 S200\nG90\nM83\nG1 X0 Y0 Z0.3 F1200\n";
-  for (int i = 0; i < 20; ++i) text += "G1 X" + std::to_string((i + 1) % 2 * 10) + " Y" + std::to_string(i) + " E0.5\n";
-  return text + (heatersLeftOn ? "" : "M104 S0\n");
-}
-
-// A sliced job of two steps as `multidir slice` writes it, G-code beside it: 4-DOF at 0 and 30 degrees, or
-// 5-DOF at tilt 0 and tilt 40 / azimuth 90.
-void writeJob(const std::string& dir, bool sliced = true, bool robot = false, bool heatersLeftOn = false) {
-  std::filesystem::create_directories(dir);
-  std::string steps;
-  std::string slicing;
-  const double angles[2] = {0.0, heatersLeftOn ? 90.0 : 30.0};  // a long turn to press Ctrl-C in
-  for (int k = 1; k <= 2; ++k) {
-    const std::string gcode = "step-0" + std::to_string(k) + ".gcode";
-    std::ofstream(dir + "/" + gcode) << stepGcode(heatersLeftOn);
-    const std::string stepAngles = robot ? (k == 1 ? "{\"tiltDegrees\": 0, \"azimuthDegrees\": 0}"
-                                                   : "{\"tiltDegrees\": 40, \"azimuthDegrees\": 90}")
-                                         : "{\"rotaryDegrees\": " + std::to_string(angles[k - 1]) + "}";
-    steps += std::string(k > 1 ? "," : "") + "{\"index\": " + std::to_string(k) + ", \"angles\": " + stepAngles + "}";
-    slicing += std::string(k > 1 ? "," : "") + "{\"index\": " + std::to_string(k) + ", \"gcode\": \"" + gcode +
-               "\", \"estimate\": {\"printSeconds\": 28, \"filamentMm\": 10, \"filamentCm3\": 0.02, "
-               "\"filamentGrams\": 0}}";
-  }
-  std::ofstream(dir + "/print-job.json")
-      << "{\"schema\": \"multidir-print-job\", \"version\": 1, "
-      << (robot ? "\"machine\": {\"kind\": \"5dof\", \"up\": [0, 0, 1], \"maxTiltDegrees\": 60}, "
-                : "\"machine\": {\"kind\": \"4dof\", \"up\": [0, 0, 1], \"rotationAxis\": [1, 0, 0], "
-                  "\"minAngleDegrees\": -90, \"maxAngleDegrees\": 90, \"angleStepDegrees\": 1}, ")
-      << "\"steps\": [" << steps << "]"
-      << (sliced ? ", \"slicing\": {\"printer\": {\"platform\": \"modbus\"}, \"steps\": [" + slicing + "]}" : "")
-      << "}\n";
-}
+using multidir::test::stepGcode;
+using multidir::test::writeJob;
 
 class CliRunTest : public ::testing::Test {
  protected:
@@ -83,8 +50,10 @@ class CliRunTest : public ::testing::Test {
     printerUrl = (octoPrint ? "octoprint://127.0.0.1:" : "http://127.0.0.1:") + std::to_string(printer->port()) +
                  (octoPrint ? std::string(" --api-key ") + hw::kOctoPrintSimulatorApiKey : std::string());
   }
-  std::string deviceArgs() const {
-    return "--printer " + printerUrl + " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --settle 20";
+  // `dir`: the folder of the job folder, where writeJob put the platform's machine profile.
+  std::string deviceArgs(const std::string& dir) const {
+    return "--printer " + printerUrl + " --platform 127.0.0.1:" + std::to_string(devices->port()) +
+           " --settle 20 --machine '" + dir + "/platform.json'";
   }
   int printerRequests(const std::string& path) const {
     int n = 0;
@@ -102,7 +71,7 @@ TEST_F(CliRunTest, RunsEveryStepHomingThePlatformAndLogsToAFile) {
   writeJob(dir + "/job");
   startSimulators(200.0);
   const CliRun run =
-      runCli("run '" + dir + "/job' " + deviceArgs() + " --log '" + dir + "/run.log'", dir, "timeout 60");
+      runCli("run '" + dir + "/job' " + deviceArgs(dir) + " --log '" + dir + "/run.log'", dir, "timeout 60");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("homing rotary platform"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("all 2 regions printed"), std::string::npos) << run.out;
@@ -118,7 +87,7 @@ TEST_F(CliRunTest, Runs5DofJobsOnTheRobotArm) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.Robot");
   writeJob(dir + "/job", true, true);
   startSimulators(200.0, true);
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("robot arm"), std::string::npos) << run.out;
   EXPECT_NEAR(devices->robotState().tiltDegrees, 40.0, 0.1);
@@ -132,7 +101,7 @@ TEST_F(CliRunTest, A5DofJobAtARotaryPlatformIsRefusedSayingWhatItNeedsAndNothing
   const std::string dir = multidir::test::scratchDirectory("CliRun.RobotJobAtRotary");
   writeJob(dir + "/job", true, true);
   startSimulators(1.0, false);
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.err.find("this job needs a 5-DOF robot arm"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("answers as a rotary platform controller"), std::string::npos) << run.err;
@@ -145,7 +114,7 @@ TEST_F(CliRunTest, A4DofJobAtARobotArmIsRefusedSayingWhatItNeedsAndNothingMoves)
   const std::string dir = multidir::test::scratchDirectory("CliRun.RotaryJobAtRobot");
   writeJob(dir + "/job");
   startSimulators(1.0, true);
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.err.find("this job needs a 4-DOF rotary platform"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("answers as a robot arm"), std::string::npos) << run.err;
@@ -194,7 +163,7 @@ TEST_F(CliRunTest, APrinterFaultMidStepSaysTheStepWasPartlyPrintedAndOffersTheNe
   printer = std::make_unique<hw::MoonrakerSimulator>(printerOptions);
   ASSERT_TRUE(printer->start().ok());
   printerUrl = "http://127.0.0.1:" + std::to_string(printer->port());
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.err.find("the run stopped at step 1"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("step-01.gcode was cancelled on the printer"), std::string::npos) << run.err;
@@ -214,7 +183,7 @@ TEST_F(CliRunTest, CtrlCCancelsThePrintersJobAndEnds) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.CtrlC");
   writeJob(dir + "/job");
   startSimulators(1.0);  // the first step prints for about half a minute
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout --preserve-status -s INT 2");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout --preserve-status -s INT 2");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.out.find("Ctrl-C: stopping both devices"), std::string::npos) << run.out;
   EXPECT_NE(run.err.find("by Ctrl-C"), std::string::npos) << run.err;
@@ -231,7 +200,7 @@ TEST_F(CliRunTest, CtrlCDuringATurnSwitchesTheHeatersOff) {
   const std::string pidFile = dir + "/pid";
   std::filesystem::remove(pidFile);
   auto cli = std::async(std::launch::async, [&] {
-    return runCli("run '" + dir + "/job' " + deviceArgs(), dir,
+    return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir,
                   "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
   });
   bool interrupted = false;
@@ -263,7 +232,8 @@ TEST_F(CliRunTest, APlatformFaultDuringATurnEndsTheRunWithTheHeatersOff) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.FaultTurn");
   writeJob(dir + "/job", true, false, true);
   startSimulators(200.0);
-  auto cli = std::async(std::launch::async, [&] { return runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60"); });
+  auto cli = std::async(std::launch::async,
+                        [&] { return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60"); });
   bool stuck = false;
   for (int i = 0; i < 3000 && !stuck; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -305,7 +275,7 @@ TEST_F(CliRunTest, CtrlCWhileThePlatformHomesStopsItAndSwitchesTheHeatersOff) {
     auto link = hw::makeMoonrakerLink(settings);
     ASSERT_TRUE(link.ok());
     ASSERT_TRUE((*link)->connect().ok());
-    std::ofstream(dir + "/hot.gcode") << stepGcode(true);
+    std::ofstream(dir + "/hot.gcode") << stepGcode(1, true);
     ASSERT_TRUE((*link)->upload(dir + "/hot.gcode", "hot.gcode").get().ok());
     ASSERT_TRUE((*link)->startPrint("hot.gcode").get().ok());
     for (int i = 0; i < 500 && printer->state().jobState != "complete"; ++i)
@@ -316,7 +286,7 @@ TEST_F(CliRunTest, CtrlCWhileThePlatformHomesStopsItAndSwitchesTheHeatersOff) {
   const std::string pidFile = dir + "/pid";
   std::filesystem::remove(pidFile);
   auto cli = std::async(std::launch::async, [&] {
-    return runCli("run '" + dir + "/job' " + deviceArgs(), dir,
+    return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir,
                   "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
   });
   bool interrupted = false;
@@ -345,7 +315,7 @@ TEST_F(CliRunTest, CtrlCMidStepCancelsItSwitchesTheHeatersOffAndSaysItWasPartlyP
   const std::string dir = multidir::test::scratchDirectory("CliRun.CtrlCMidStep");
   writeJob(dir + "/job", true, false, true);
   startSimulators(1.0);  // the first step prints for about half a minute
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout --preserve-status -s INT 3");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout --preserve-status -s INT 3");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_EQ(printerRequests("/printer/print/cancel"), 1);
   EXPECT_EQ(printer->state().extruder.targetC, 0.0);
@@ -359,7 +329,7 @@ TEST_F(CliRunTest, TheRunLogEndsWithWhyTheRunStoppedAndHowToGoOn) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.LogEnding");
   writeJob(dir + "/job");
   startSimulators(1.0);
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs() + " --log '" + dir + "/run.log'", dir,
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir) + " --log '" + dir + "/run.log'", dir,
                             "timeout --preserve-status -s INT 2");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   const std::string log = multidir::test::readAll(dir + "/run.log");
@@ -376,7 +346,7 @@ TEST_F(CliRunTest, TheRunLogHoldsNoTerminalEscapes) {
   const std::string job = dir + "/job\x1b[31mred\x1b[0m";
   writeJob(job);
   startSimulators(200.0);
-  const CliRun run = runCli("run '" + job + "' " + deviceArgs() + " --log '" + dir + "/run.log'", dir, "timeout 60");
+  const CliRun run = runCli("run '" + job + "' " + deviceArgs(dir) + " --log '" + dir + "/run.log'", dir, "timeout 60");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   const std::string log = multidir::test::readAll(dir + "/run.log");
   EXPECT_NE(log.find("all 2 regions printed"), std::string::npos) << log;
@@ -388,7 +358,8 @@ TEST_F(CliRunTest, TheRunLogHoldsNoTerminalEscapes) {
 TEST_F(CliRunTest, AJobWithoutGcodeSaysToSliceItFirst) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.NotSliced");
   writeJob(dir + "/job", false);
-  const CliRun run = runCli("run '" + dir + "/job' --printer 127.0.0.1:1 --platform 127.0.0.1:1", dir);
+  const CliRun run = runCli(
+      "run '" + dir + "/job' --printer 127.0.0.1:1 --platform 127.0.0.1:1 --machine '" + dir + "/platform.json'", dir);
   EXPECT_EQ(run.exitCode, 1) << run.err;
   EXPECT_NE(run.err.find("has no G-code"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("multidir slice"), std::string::npos) << run.err;
@@ -400,9 +371,10 @@ TEST_F(CliRunTest, AnUnreachablePrinterIsNamedAndNothingMoves) {
   startSimulators(1.0);
   const int port = printer->port();
   printer->stop();
-  const CliRun run = runCli("run '" + dir + "/job' --printer 127.0.0.1:" + std::to_string(port) +
-                                " --platform 127.0.0.1:" + std::to_string(devices->port()),
-                            dir, "timeout 60");
+  const CliRun run =
+      runCli("run '" + dir + "/job' --printer 127.0.0.1:" + std::to_string(port) +
+                 " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --machine '" + dir + "/platform.json'",
+             dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.err;
   EXPECT_NE(run.err.find("Moonraker printer at 127.0.0.1"), std::string::npos) << run.err;
   EXPECT_EQ(devices->commandWriteCount(hw::SimulatedDevice::Rotary), 0u);
@@ -412,7 +384,7 @@ TEST_F(CliRunTest, RunsEveryStepOnOctoPrint) {
   const std::string dir = multidir::test::scratchDirectory("CliRun.OctoPrint");
   writeJob(dir + "/job");
   startSimulators(200.0, false, true);
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("connected to OctoPrint printer at 127.0.0.1"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("reports step-02.gcode complete"), std::string::npos) << run.out;
@@ -427,7 +399,8 @@ TEST_F(CliRunTest, AWrongOctoPrintApiKeyIsNamedWithWhereToFindTheKeyAndNothingMo
   writeJob(dir + "/job");
   startSimulators(1.0, false, true);
   const CliRun run = runCli("run '" + dir + "/job' --printer octoprint://127.0.0.1:" + std::to_string(printer->port()) +
-                                " --api-key wrong --platform 127.0.0.1:" + std::to_string(devices->port()),
+                                " --api-key wrong --platform 127.0.0.1:" + std::to_string(devices->port()) +
+                                " --machine '" + dir + "/platform.json'",
                             dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.err;
   EXPECT_NE(run.err.find("the API key is wrong"), std::string::npos) << run.err;
@@ -529,7 +502,8 @@ TEST(CliRunMarlin, StreamsEveryStepToAMarlinPrinterOverSerial) {
   hw::MarlinSimulator printer(printerOptions);
   ASSERT_TRUE(printer.start().ok());
   const CliRun run = runCli("run '" + dir + "/job' --printer serial://" + printer.devicePath() +
-                                " --platform 127.0.0.1:" + std::to_string(devices.port()) + " --settle 20",
+                                " --platform 127.0.0.1:" + std::to_string(devices.port()) + " --settle 20 --machine '" +
+                                dir + "/platform.json'",
                             dir, "timeout 60");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("Marlin printer at " + printer.devicePath()), std::string::npos) << run.out;

@@ -25,6 +25,14 @@ TEST(MotionLimits, RotaryAnglesAreCountedInStepsFromTheMinimum) {
   EXPECT_FALSE(checkRotaryTarget(spec, std::nan("")).ok());
 }
 
+// Issue 28: an angle of 1e308 from a job file was printed as a 31-digit number.
+TEST(MotionLimits, AHugeAngleIsNamedInShortNotation) {
+  const core::Status refused = checkRotaryTarget(rotaryMachine(), 1e308);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("the target angle 1e+308 degrees is outside"), std::string::npos)
+      << refused.error().message;
+}
+
 TEST(MotionLimits, RotaryTargetsAgreeWithCoreRealizability) {
   const core::MachineSpec spec = rotaryMachine();
   for (int i = -40; i <= 40; ++i) {

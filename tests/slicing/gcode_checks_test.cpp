@@ -68,6 +68,28 @@ TEST(GcodeChecks, ExtrusionBelowTheBasePlaneIsRefusedNamingStepAndLine) {
   EXPECT_NE(checked.error().message.find("below the step's base plane"), std::string::npos);
 }
 
+// Issue 28: `G1 Z-5 E3` (no XY move, so no extrusion) drove the nozzle into the bed unchecked.
+TEST(GcodeChecks, AMoveBelowTheBedIsRefusedThoughItLaysNoLine) {
+  const auto checked = checkStepProgram(parsed("G90\nM83\n; MULTIDIR STEP 1\nG1 X10 Y10 Z0.3\nG1 X20 E1\nG1 Z-5 E3\n"),
+                                        bounds(1, 0.0), "step-01.gcode");
+  ASSERT_FALSE(checked.ok());
+  EXPECT_NE(checked.error().message.find("step 1, line 6: a move to z -5.00 mm, below the bed"), std::string::npos)
+      << checked.error().message;
+}
+
+// Issue 28: a step's program that commands the platform's axis to where the parser believes it stands (A0 at
+// the start) turns the platform all the same: the program does not know where it stands.
+TEST(GcodeChecks, AnyCommandOfThePlatformsAxisInAStepsProgramIsRefused) {
+  for (const std::string line : {"G1 A0", "MANUAL_STEPPER STEPPER=rotary_a MOVE=0"}) {
+    const auto checked =
+        checkStepProgram(parsed("G90\nM83\n" + line + "\n; MULTIDIR STEP 1\nG1 X10 Y10 Z0.3\nG1 X20 E1\n"),
+                         bounds(1, 0.0), "step-01.gcode");
+    ASSERT_FALSE(checked.ok()) << line;
+    EXPECT_NE(checked.error().message.find("line 3: the platform turns inside a step's own program"), std::string::npos)
+        << checked.error().message;
+  }
+}
+
 TEST(GcodeChecks, ExtrusionOutsideTheBedIsRefused) {
   const GcodeProgram p = parsed("; MULTIDIR STEP 1\nG1 X100 Y100 Z0.2\nG1 X230 E1\n");
   const auto checked = checkStepProgram(p, bounds(1, 0.0), "step-01.gcode");

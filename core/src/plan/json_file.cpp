@@ -1,11 +1,14 @@
 #include "plan/json_file.h"
 
-#include "detail/atomic_file.h"
-
+#include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
+
+#include "detail/atomic_file.h"
 
 namespace multidir::core::detail {
 
@@ -73,6 +76,16 @@ class FieldLocator : public nlohmann::json_sax<nlohmann::json> {
   std::vector<Level> m_stack;
 };
 
+// The token around byte `byte` (1-based, where nlohmann stopped) of `content`: "NaN", not only its first letter.
+std::string tokenAt(const std::string& content, std::size_t byte) {
+  const auto delimiter = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || std::strchr(":,[]{}", c); };
+  std::size_t start = std::min(std::max<std::size_t>(byte, 1), content.size()) - 1;
+  while (start > 0 && !delimiter(content[start - 1])) --start;
+  std::size_t end = start;
+  while (end < content.size() && end - start < 40 && !delimiter(content[end])) ++end;
+  return content.substr(start, end - start);
+}
+
 }  // namespace
 
 Result<nlohmann::json> readJsonFile(const std::string& path, const std::string& name) {
@@ -89,16 +102,25 @@ Result<nlohmann::json> readJsonFile(const std::string& path, const std::string& 
   if (!in) return Error{ErrorCode::FileNotFound, "the file cannot be opened (check its permissions): " + path, name};
   std::ostringstream text;
   text << in.rdbuf();
-  const std::string content = text.str();
+  return parseJsonText(text.str(), name);
+}
+
+Result<nlohmann::json> parseJsonText(const std::string& content, const std::string& name) {
   if (content.empty()) return Error{ErrorCode::MalformedFile, "the file is empty (0 bytes)", name};
   try {
     return nlohmann::json::parse(content);
   } catch (const nlohmann::json::parse_error& e) {
-    // e.what() carries nlohmann's "[json.exception.parse_error.101]" prefix; the byte offset is what helps.
-    return Error{
-        ErrorCode::MalformedFile,
-        "not valid JSON (syntax error near byte " + std::to_string(e.byte) + "); check brackets, commas and quotes",
-        name};
+    // e.what() carries nlohmann's "[json.exception.parse_error.101]" prefix; the byte offset and the field
+    // where parsing stopped (NaN, Infinity: not JSON) are what help.
+    FieldLocator locator;
+    nlohmann::json::sax_parse(content, &locator);
+    const std::string where = locator.failedPath.empty()
+                                  ? std::string()
+                                  : " at " + locator.failedPath + " ('" + tokenAt(content, e.byte) + "')";
+    return Error{ErrorCode::MalformedFile,
+                 "not valid JSON (syntax error near byte " + std::to_string(e.byte) + where +
+                     "); check brackets, commas and quotes, and that every number is finite",
+                 name};
   } catch (const nlohmann::json::out_of_range&) {
     // A number beyond double's range (1e999): valid JSON text, but no value MultiDir can hold.
     FieldLocator locator;

@@ -12,6 +12,10 @@ namespace multidir::core::detail {
 constexpr std::uintmax_t kMaxJsonFileBytes = 1u << 30;
 Result<nlohmann::json> readJsonFile(const std::string& path, const std::string& name);
 
+// Parses JSON text already in memory. Errors: MalformedFile naming the field where parsing stopped (a number
+// too large to represent such as 1e999, or a token that is not JSON such as NaN) and the token.
+Result<nlohmann::json> parseJsonText(const std::string& content, const std::string& name);
+
 // Writes `text` beside `path` and renames it into place, so readers never see half a file. Errors: WriteFailed.
 Status writeTextFile(const std::string& path, const std::string& text, const std::string& name);
 

@@ -26,12 +26,12 @@ Status saveMachineProfile(const MachineSpec& machine, const std::string& path) {
   }
 }
 
-Result<MachineSpec> loadMachineProfile(const std::string& path) {
-  const std::string name = std::filesystem::path(path).filename().string();
+namespace {
+
+// Checks a parsed profile document; `name` names it in errors.
+Result<MachineSpec> machineFromDocument(const nlohmann::json& document, const std::string& name) {
   try {
-    Result<nlohmann::json> document = detail::readJsonFile(path, name);
-    if (!document) return document.error();
-    const detail::JsonField root(*document, "", name);
+    const detail::JsonField root(document, "", name);
     const detail::JsonField schema = root["schema"];
     if (schema.string() != kProfileSchema)
       schema.fail(std::string("must be \"") + kProfileSchema + "\": this is not a MultiDir machine profile");
@@ -46,6 +46,21 @@ Result<MachineSpec> loadMachineProfile(const std::string& path) {
     return Error{ErrorCode::Internal, std::string("unexpected failure while loading the profile (") + e.what() + ")",
                  name};
   }
+}
+
+}  // namespace
+
+Result<MachineSpec> loadMachineProfile(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  Result<nlohmann::json> document = detail::readJsonFile(path, name);
+  if (!document) return document.error();
+  return machineFromDocument(*document, name);
+}
+
+Result<MachineSpec> parseMachineProfile(const std::string& jsonText, const std::string& name) {
+  Result<nlohmann::json> document = detail::parseJsonText(jsonText, name);
+  if (!document) return document.error();
+  return machineFromDocument(*document, name);
 }
 
 }  // namespace multidir::core

@@ -60,7 +60,9 @@ struct StepTotals {
 // One step's own program (step-NN.gcode): every extrusion of the step (the start sequence's purge included)
 // lies inside the printer's volume, and those after the "; MULTIDIR STEP k" marker on or above the base
 // plane; no extrusion (the purge's included) happens with the filament drawn back (FilamentState, from
-// `start`: how the previous step's program left it on the same printer). With `endClearanceZMm` (a Modbus
+// `start`: how the previous step's program left it on the same printer); no move (travel too) goes below the
+// bed (z 0); no move commands the platform's axis (G1 A.., MANUAL_STEPPER ... MOVE=), even to where the
+// parser believes it stands. With `endClearanceZMm` (a Modbus
 // platform turns after this step) the program must end with the nozzle at or above it. Errors: CheckFailed;
 // also when the step extrudes nothing.
 core::Result<StepTotals> checkStepProgram(const GcodeProgram& program, const StepBounds& bounds,
@@ -69,9 +71,10 @@ core::Result<StepTotals> checkStepProgram(const GcodeProgram& program, const Ste
 
 // A stitched program (job.gcode): each step's section checked as above; the platform turns only inside a
 // transition section, by a move that moves nothing else, with the nozzle at or above that turn's clearance;
-// no extrusion happens with the filament drawn back (from a primed start); inside a transition nothing is extruded and the nozzle moves in XY only at or above the clearance (retract,
-// lift, park, turn, return, unretract). `bounds` has one entry per step in order, `turns` one per transition.
-// Errors: CheckFailed.
+// no move goes below the bed;
+// no extrusion happens with the filament drawn back (from a primed start); inside a transition nothing is extruded and
+// the nozzle moves in XY only at or above the clearance (retract, lift, park, turn, return, unretract). `bounds` has
+// one entry per step in order, `turns` one per transition. Errors: CheckFailed.
 core::Result<std::vector<StepTotals>> checkStitchedProgram(const GcodeProgram& program,
                                                            const std::vector<StepBounds>& bounds,
                                                            const std::vector<TurnClearance>& turns,

@@ -27,6 +27,9 @@ struct GcodeMove {
   double rotaryToDegrees = 0.0;
   int step = 0;                 // the section it lies in: the step (from 1), 0 before any marker
   bool inTransition = false;    // inside a "; MULTIDIR TRANSITION" section (step is the step it leaves)
+  // The move commands the platform's axis (a G0/G1 with the rotary letter, or MANUAL_STEPPER ... MOVE=), even
+  // to where the parser believes it is: a program does not know where the platform stands when it starts.
+  bool commandsRotaryAxis = false;
   // G10 / G11 without parameters: the firmware retracts / unretracts the filament by its own length (a move
   // that changes nothing else). G10 with P or L words sets offsets (RepRapFirmware) and is no move.
   enum class FirmwareRetraction { None, Retract, Unretract };

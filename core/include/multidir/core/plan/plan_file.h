@@ -99,4 +99,8 @@ Status saveMachineProfile(const MachineSpec& machine, const std::string& path);
 // Errors: FileNotFound, MalformedFile (naming the field), InvalidParameter (a value out of range).
 Result<MachineSpec> loadMachineProfile(const std::string& path);
 
+// The same checks on a profile already in memory (JSON text): no file is written or read. `name` names it in
+// errors ("print-job.json: machine"). Errors: MalformedFile (naming the field), InvalidParameter.
+Result<MachineSpec> parseMachineProfile(const std::string& jsonText, const std::string& name);
+
 }  // namespace multidir::core
