@@ -1,6 +1,6 @@
 #include "plan/json_file.h"
 
-#include "detail/atomic_file.h"
+#include "multidir/core/common/atomic_file.h"
 
 #include <filesystem>
 #include <fstream>
