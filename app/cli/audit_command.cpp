@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "multidir/core/common/atomic_file.h"
 #include "multidir/slicing/audit.h"
 
 namespace multidir::cli {
@@ -227,9 +227,10 @@ int runAudit(const std::vector<std::string>& args, std::ostream& out, std::ostre
   printReport(out, jobDir, *report);
   if (parsed.has("--json")) {
     const std::string path = parsed.value("--json", "");
-    std::ofstream file(path, std::ios::trunc);
-    file << reportJson(jobDir, *report, strict).dump(2) << "\n";
-    if (!file) throw FileError(kCommand + ": --json: cannot write '" + path + "' (no such folder or no permission?)");
+    // Through core's atomic writer: a link at `path` is replaced, never written through.
+    if (const core::Status written = core::writeTextFileAtomically(path, reportJson(jobDir, *report, strict).dump(2) + "\n");
+        !written)
+      throw FileError(kCommand + ": --json: " + written.error().describe());
   }
   const bool failed = report->failed() || (strict && report->hasUnsupported());
   const std::vector<std::string> reasons = failureReasons(*report, strict);

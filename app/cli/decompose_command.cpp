@@ -4,13 +4,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "multidir/core/common/atomic_file.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/plan/checksum.h"
@@ -345,10 +345,9 @@ void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_
                                   {"plan", s.outDir}};
   summary["pose_mode"] = s.autoPose ? "auto" : "up";
   if (pose) summary["pose"] = poseSummary(*pose);
-  std::ofstream file(s.summaryPath);
-  file << summary.dump(2) << '\n';
-  file.flush();
-  if (!file) throw FileError(kCommand + ": cannot write the summary file " + s.summaryPath);
+  // Through core's atomic writer: a link at the path is replaced, never written through.
+  if (const core::Status written = core::writeTextFileAtomically(s.summaryPath, summary.dump(2) + "\n"); !written)
+    throw FileError(kCommand + ": cannot write the summary file: " + written.error().describe());
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 #include "info_command.h"
 
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "multidir/core/common/atomic_file.h"
 #include "multidir/core/search/pose_search.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_io.h"
@@ -64,11 +64,11 @@ nlohmann::json toJson(const core::MeshReport& report) {
   return {{"defects", defects}, {"repairs", report.repairs}};
 }
 
+// Through core's atomic writer, like every file MultiDir writes: a link at `path` is replaced, never written
+// through, and a reader never sees half a file.
 void writeJson(const std::string& path, const nlohmann::json& document) {
-  std::ofstream out(path);
-  out << document.dump(2) << '\n';
-  out.flush();
-  if (!out) throw FileError("multidir info: cannot write the JSON file " + path);
+  if (const core::Status written = core::writeTextFileAtomically(path, document.dump(2) + "\n"); !written)
+    throw FileError("multidir info: cannot write the JSON file: " + written.error().describe());
 }
 
 void printText(std::ostream& out, const std::string& model, const core::LoadedMesh& loaded, const core::Vec3& up,

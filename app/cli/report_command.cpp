@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "multidir/core/common/atomic_file.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/supports/support_report.h"
@@ -180,10 +180,9 @@ int runReport(const std::vector<std::string>& args, std::ostream& out, std::ostr
     rows.push_back(rowJson(model, *report));
   }
   if (!s.jsonPath.empty()) {
-    std::ofstream file(s.jsonPath);
-    file << rows.dump(2) << '\n';
-    file.flush();
-    if (!file) throw FileError(kCommand + ": cannot write the JSON file " + s.jsonPath);
+    // Through core's atomic writer: a link at the path is replaced, never written through.
+    if (const core::Status written = core::writeTextFileAtomically(s.jsonPath, rows.dump(2) + "\n"); !written)
+      throw FileError(kCommand + ": cannot write the JSON file: " + written.error().describe());
   }
   return status;
 }

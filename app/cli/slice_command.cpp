@@ -34,7 +34,10 @@ const char* const kSliceHelp =
     "Options:\n"
     "  --printer PROFILE      a PrusaSlicer .ini with MultiDir's keys (docs/slicing.md) or a shipped profile:\n"
     "                         marlin-220, klipper-rotary, robot-0.8 (required)\n"
-    "  -o OUTDIR              output folder (created if missing; required)\n"
+    "  -o OUTDIR              output folder (created if missing; required): empty, or holding an earlier job,\n"
+    "                         which the new job replaces only once it is complete\n"
+    "  --force                also write into an OUTDIR holding other files (the job's files replace those of\n"
+    "                         the same names; the others stay)\n"
     "  --dialect DIALECT      how the firmware turns the platform: klipper, marlin or rrf (default: the profile's)\n"
     "  --set \"KEY=VALUE ...\"  slicer settings over the profile's, separated by spaces (layer_height=0.3)\n"
     "  --no-comparison        do not slice the fixed-direction print (whole model along up, slicer supports)\n"
@@ -44,10 +47,10 @@ const char* const kSliceHelp =
     "The part is placed on the platform where it fits the printer (every step, and on a rotary platform what the\n"
     "turns sweep) before anything is sliced; a part that cannot fit is refused at once, saying by how much.\n"
     "Steps are sliced side by side, one slicer per core. On a terminal a status line shows the progress (plain\n"
-    "lines elsewhere). Ctrl-C stops every slicer and removes the work folder; no G-code is kept.\n"
+    "lines elsewhere). Ctrl-C stops every slicer and removes the work folder; OUTDIR stays as it was.\n"
     "\n"
-    "Exit codes: 0 ok, 1 a file cannot be read, the part does not fit, the slicer failed or a check refused the\n"
-    "G-code, 2 usage error, 130 interrupted (Ctrl-C or SIGTERM).\n";
+    "Exit codes: 0 ok, 1 a file cannot be read, OUTDIR holds other files (without --force), the part does not\n"
+    "fit, the slicer failed or a check refused the G-code, 2 usage error, 130 interrupted (Ctrl-C or SIGTERM).\n";
 
 namespace {
 
@@ -99,7 +102,7 @@ struct Settings {
 
 Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   const ParsedArgs parsed =
-      parseArgs(args, {"-o", "--printer", "--dialect", "--set", "--slicer"}, {"--help", "--no-comparison"}, "slice");
+      parseArgs(args, {"-o", "--printer", "--dialect", "--set", "--slicer"}, {"--help", "--no-comparison", "--force"}, "slice");
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
@@ -120,6 +123,7 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   s.options.settings = *settings;
   s.options.fixedDirection = !parsed.has("--no-comparison");
   s.options.slicerExecutable = parsed.value("--slicer", s.options.slicerExecutable);
+  s.options.writeIntoOtherFolder = parsed.has("--force");
   return s;
 }
 
@@ -216,8 +220,8 @@ int runSlice(const std::vector<std::string>& args, std::ostream& out, std::ostre
   const core::Result<slicing::SlicedJob> sliced = running.get();
   progress.clear();
   if (gInterrupted) {
-    err << kCommand << ": interrupted: every slicer was stopped and no G-code was kept (" << s.outDir
-        << " holds only the print job written before slicing)\n";
+    err << kCommand << ": interrupted: every slicer was stopped and nothing was written (" << s.outDir
+        << " is as it was)\n";
     return kExitInterrupted;
   }
   if (!sliced) {

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <tuple>
 
+#include "setting_ranges.h"
+
 namespace multidir::slicing {
 
 namespace {
@@ -155,6 +157,11 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
   }
 
   const auto where = [&](const std::string& key) { return path + ": " + key; };
+  // Every numeric slicer setting MultiDir reads or passes on, finite and within a printer's range
+  // (setting_ranges.h), before any of them is used.
+  for (const auto& [key, value] : profile.settings)
+    if (core::Status s = checkSettingValue(key, value, where(key)); !s) return s.error();
+  const auto coordinate = [](double v) { return std::abs(v) <= kMaxPrinterCoordinateMm; };
   const auto number = [&](const std::map<std::string, std::string>& from, const std::string& key, double& value,
                           bool list) -> core::Status {
     const auto it = from.find(key);
@@ -175,6 +182,11 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
       return Error{ErrorCode::MalformedFile,
                    "corner '" + trimmed(corner) + "' is not XxY: give the bed's corners as XxY pairs (0x0,220x0,...)",
                    where("bed_shape")};
+    if (!coordinate(p.x()) || !coordinate(p.y()))
+      return Error{ErrorCode::InvalidParameter,
+                   "corner '" + trimmed(corner) + "' is out of range: give each corner's X and Y in " +
+                       coordinateRangeText(),
+                   where("bed_shape")};
     profile.bedShape.push_back(p);
   }
   if (profile.bedShape.size() < 3 || polygonArea(profile.bedShape) <= 1e-6)
@@ -187,13 +199,6 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
                                          {"retract_length", &profile.retractLengthMm, true},
                                          {"travel_speed", &profile.travelSpeedMmPerS, false}})
     if (core::Status s = number(profile.settings, key, *value, list); !s) return s.error();
-  if (!(profile.maxPrintHeightMm > 0.0))
-    return Error{ErrorCode::InvalidParameter, "must be above 0 mm", where("max_print_height")};
-  if (!(profile.nozzleDiameterMm > 0.0 && profile.nozzleDiameterMm < 10.0))
-    return Error{ErrorCode::InvalidParameter, "must be in (0, 10) mm", where("nozzle_diameter")};
-  if (!(profile.retractLengthMm >= 0.0 && profile.retractLengthMm < 50.0))
-    return Error{ErrorCode::InvalidParameter, "must be in [0, 50) mm", where("retract_length")};
-  if (!(profile.travelSpeedMmPerS > 0.0)) return Error{ErrorCode::InvalidParameter, "must be above 0", where("travel_speed")};
   if (profile.settings.count("start_gcode")) profile.startGcode = profile.settings["start_gcode"];
   if (profile.settings.count("end_gcode")) profile.endGcode = profile.settings["end_gcode"];
 
@@ -222,17 +227,30 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
         return Error{ErrorCode::InvalidParameter, "'" + value + "' is not a stepper name", ownWhere(key)};
       profile.klipperStepper = value;
     } else if (key == "rotary_feed") {
-      if (!parseDouble(value, profile.rotaryFeedDegreesPerMin) || profile.rotaryFeedDegreesPerMin <= 0.0)
-        return Error{ErrorCode::InvalidParameter, "'" + value + "': degrees per minute above 0", ownWhere(key)};
+      // 100000 degrees per minute: more than four turns a second, beyond any platform.
+      if (!parseDouble(value, profile.rotaryFeedDegreesPerMin) || profile.rotaryFeedDegreesPerMin <= 0.0 ||
+          profile.rotaryFeedDegreesPerMin > 100000.0)
+        return Error{ErrorCode::InvalidParameter, "'" + value + "' is out of range: give degrees per minute in (0, 100000]",
+                     ownWhere(key)};
     } else if (key == "platform_center" || key == "park") {
       Eigen::Vector2d p;
-      if (!parsePair(value, ',', p)) return Error{ErrorCode::MalformedFile, "'" + value + "' is not X,Y", ownWhere(key)};
+      if (!parsePair(value, ',', p))
+        return Error{ErrorCode::MalformedFile, "'" + value + "' is not X,Y: give X and Y in " + coordinateRangeText(),
+                     ownWhere(key)};
+      if (!coordinate(p.x()) || !coordinate(p.y()))
+        return Error{ErrorCode::InvalidParameter,
+                     "'" + value + "' is out of range: give X and Y in " + coordinateRangeText(), ownWhere(key)};
       (key == "park" ? profile.park : profile.platformCenter) = p;
     } else if (key == "platform_z") {
-      if (!parseDouble(value, profile.platformZMm)) return Error{ErrorCode::MalformedFile, "'" + value + "' is not a number", ownWhere(key)};
+      if (!parseDouble(value, profile.platformZMm))
+        return Error{ErrorCode::MalformedFile, "'" + value + "' is not a number: give " + coordinateRangeText(),
+                     ownWhere(key)};
+      if (!coordinate(profile.platformZMm))
+        return Error{ErrorCode::InvalidParameter, "'" + value + "' is out of range: give " + coordinateRangeText(),
+                     ownWhere(key)};
     } else if (key == "clearance_margin") {
       if (!parseDouble(value, profile.clearanceMarginMm) || profile.clearanceMarginMm < 0.0 || profile.clearanceMarginMm > 1000.0)
-        return Error{ErrorCode::InvalidParameter, "'" + value + "': mm in [0, 1000]", ownWhere(key)};
+        return Error{ErrorCode::InvalidParameter, "'" + value + "' is out of range: give mm in [0, 1000]", ownWhere(key)};
     } else if (key == "step_start_gcode") {
       profile.stepStartGcode = value;
     } else {

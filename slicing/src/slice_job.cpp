@@ -15,13 +15,17 @@
 #include <sstream>
 #include <thread>
 
+#include "multidir/core/common/atomic_file.h"
+#include "multidir/core/common/staged_folder.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/slicing/clearance.h"
 #include "multidir/slicing/gcode_program.h"
 #include "multidir/slicing/interface_settings.h"
+#include "multidir/slicing/job_folder.h"
 #include "multidir/slicing/placement.h"
 #include "multidir/slicing/slicer_engine.h"
 #include "multidir/slicing/step_recheck.h"
+#include "setting_ranges.h"
 
 namespace multidir::slicing {
 
@@ -73,17 +77,10 @@ double heightOf(const core::TriangleMesh& mesh) {
   return mesh.vertices.empty() ? 0.0 : high - lowestZ(mesh);
 }
 
+// Every file of the job goes through core's atomic writer: never through a link planted at its name or its
+// temporary's, never half-written where the job's reader looks.
 core::Status writeText(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out) return Error{ErrorCode::WriteFailed, "cannot write the file (disk full or no permission?)", path};
-  }
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) return Error{ErrorCode::WriteFailed, "cannot move the file into place: " + ec.message(), path};
-  return core::Done{};
+  return core::writeTextFileAtomically(path, text, path);
 }
 
 core::Result<std::string> readText(const std::string& path) {
@@ -102,12 +99,17 @@ std::string setting(const PrinterProfile& profile, const SliceJobOptions& option
   return found == profile.settings.end() ? fallback : found->second;
 }
 
-// A temporary folder for meshes and config overlays, removed when the job ends.
+// A temporary folder for meshes and config overlays, removed when the job ends (or before it is committed).
 struct WorkFolder {
   fs::path path;
-  ~WorkFolder() {
+  WorkFolder() = default;
+  WorkFolder(const WorkFolder&) = delete;
+  WorkFolder& operator=(const WorkFolder&) = delete;
+  ~WorkFolder() { remove(); }
+  void remove() {
     std::error_code ec;
     if (!path.empty()) fs::remove_all(path, ec);
+    path.clear();
   }
 };
 
@@ -170,6 +172,31 @@ core::Status recordInJobFile(const std::string& directory, const SlicedJob& slic
       sliced.fixedDirection ? estimateJson(*sliced.fixedDirection) : nlohmann::ordered_json();
   job["slicing"] = slicing;
   return writeText(path, job.dump(2) + "\n");
+}
+
+// What `directory` holds, refused when it holds files that are not a MultiDir job and the caller did not allow
+// writing into such a folder (job_folder.h).
+core::Result<JobFolder> outputFolder(const std::string& directory, bool writeIntoOtherFolder) {
+  core::Result<JobFolder> folder = inspectJobFolder(directory);
+  if (!folder) return folder.error();
+  if (folder->kind == JobFolder::Kind::Other && !writeIntoOtherFolder)
+    return Error{ErrorCode::InvalidParameter,
+                 "the folder holds files that are not a MultiDir job ('" + folder->firstOtherEntry +
+                     "' is one), so nothing was written: choose an empty folder or one holding an earlier job (the "
+                     "new job replaces it once complete), or pass --force to write the job into this folder anyway "
+                     "(files of the job's names are replaced, the others kept)",
+                 directory};
+  return folder;
+}
+
+// Puts the complete job in `directory`'s place. The folder is looked at again: slicing takes minutes, and the
+// user may have put files in it meanwhile. An empty folder or an earlier job is replaced as a whole, in one
+// step; a folder holding other files (allowed) gets the job's files moved in, print-job.json last.
+core::Status commitJob(core::StagedFolder& staged, const std::string& directory, bool writeIntoOtherFolder) {
+  const core::Result<JobFolder> folder = outputFolder(directory, writeIntoOtherFolder);
+  if (!folder) return folder.error();
+  if (folder->kind == JobFolder::Kind::Other) return staged.moveEntriesInto("print-job.json");
+  return staged.replaceTarget();
 }
 
 // Replaced, in every step after the first, by the lines that prime it (primeCommands).
@@ -334,6 +361,13 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
     return Error{ErrorCode::InvalidParameter, "slicing needs the job in the machine frame (as the machine holds it)",
                  "print job"};
   if (input.steps.empty()) return Error{ErrorCode::InvalidParameter, "the job has no steps", "print job"};
+  // The settings given over the profile's (--set, the studio's Slice dialog) pass the profile's ranges too: the
+  // slicer takes any number it is given (a temperature of 1e308 became M104 S1).
+  for (const auto& [key, value] : options.settings)
+    if (core::Status s = checkSettingValue(key, value, "slicer settings: " + key); !s) return s.error();
+  // A folder that must not take the job is refused before anything is placed, sliced or written.
+  if (core::Result<JobFolder> folder = outputFolder(directory, options.writeIntoOtherFolder); !folder)
+    return folder.error();
   SlicedJob sliced;
   sliced.profile = profile;
   sliced.dialect = options.dialect.value_or(profile.dialect);
@@ -378,12 +412,19 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
       }
   }
 
+  // The job is written into a fresh folder beside `directory` and takes its place only once complete
+  // (commitJob): a slice that fails or is cancelled leaves `directory` as it was, an earlier good job included,
+  // and nothing can be planted in the fresh folder while the job is written.
   std::error_code ec;
   fs::create_directories(directory, ec);
-  if (core::Status written = core::writePrintJob(job, directory); !written) return written.error();
+  if (ec) return Error{ErrorCode::WriteFailed, "cannot create the folder: " + ec.message(), directory};
+  core::Result<core::StagedFolder> staged = core::StagedFolder::beside(directory);
+  if (!staged) return staged.error();
+  const std::string jobDir = staged->path();
+  if (core::Status written = core::writePrintJob(job, jobDir); !written) return written.error();
 
   WorkFolder work;
-  work.path = fs::path(directory) / (".slicing-" + std::to_string(::getpid()));
+  work.path = fs::path(jobDir) / (".slicing-" + std::to_string(::getpid()));
   fs::create_directories(work.path, ec);
   if (ec) return Error{ErrorCode::WriteFailed, "cannot create the work folder: " + ec.message(), work.path.string()};
   const std::string userOverlay = (work.path / "settings.ini").string();
@@ -514,7 +555,7 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
     gcodes.push_back({step.index, run.gcode});
   }
   for (std::size_t k = 0; k < n; ++k)
-    if (core::Status s = writeText((fs::path(directory) / sliced.steps[k].gcodeFile).string(), gcodes[k].text); !s)
+    if (core::Status s = writeText((fs::path(jobDir) / sliced.steps[k].gcodeFile).string(), gcodes[k].text); !s)
       return s.error();
 
   if (options.fixedDirection) {
@@ -538,10 +579,12 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
     for (const TurnPlan& t : sliced.turns) clearances.push_back({t.fromStep, t.clearanceZMm});
     const core::Result<std::vector<StepTotals>> checked = checkStitchedProgram(*program, bounds, clearances, "job.gcode");
     if (!checked) return checked.error();
-    if (core::Status s = writeText((fs::path(directory) / "job.gcode").string(), *stitched); !s) return s.error();
+    if (core::Status s = writeText((fs::path(jobDir) / "job.gcode").string(), *stitched); !s) return s.error();
     sliced.stitchedFile = "job.gcode";
   }
-  if (core::Status s = recordInJobFile(directory, sliced, sliced.engine); !s) return s.error();
+  if (core::Status s = recordInJobFile(jobDir, sliced, sliced.engine); !s) return s.error();
+  work.remove();
+  if (core::Status s = commitJob(*staged, directory, options.writeIntoOtherFolder); !s) return s.error();
   context.setProgress(1.0, "sliced");
   return sliced;
 }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -255,4 +256,17 @@ TEST(CliDecompose, InterruptSavesTheBestPlanSoFarWithANote) {
   EXPECT_TRUE(loaded->decomposition.cancelled);
   const nlohmann::json summary = nlohmann::json::parse(readAll(dir + "/summary.json"));
   EXPECT_EQ(summary["cancelled"], true);
+}
+
+TEST(CliDecompose, SummaryReplacesALinkAtItsPathInsteadOfWritingThroughIt) {
+  const std::string dir = multidir::test::scratchDirectory("CliDecompose.SummaryOverALink");
+  std::ofstream(dir + "/victim.txt") << "not MultiDir's\n";
+  std::filesystem::create_symlink(dir + "/victim.txt", dir + "/summary.json");
+  const CliRun run = runCli("decompose " + kitten() + " --up y --scheme greedy -o '" + dir + "/plan' --summary '" + dir +
+                                "/summary.json'",
+                            dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(readAll(dir + "/victim.txt"), "not MultiDir's\n");
+  EXPECT_FALSE(std::filesystem::is_symlink(dir + "/summary.json"));
+  EXPECT_TRUE(nlohmann::json::parse(readAll(dir + "/summary.json")).contains("regions"));
 }

@@ -1,6 +1,8 @@
 // Runs the built `multidir` command line and checks its output, JSON and exit codes.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
@@ -76,4 +78,17 @@ TEST(CliInfo, HelpListsEveryCommand) {
   const CliRun info = runCli("help info", dir);
   EXPECT_EQ(info.exitCode, 0);
   EXPECT_NE(info.out.find("--alpha DEGREES"), std::string::npos);
+}
+
+TEST(CliInfo, JsonReplacesALinkAtItsPathInsteadOfWritingThroughIt) {
+  // A link planted where the JSON goes: the file it points to stays as it was.
+  const std::string dir = multidir::test::scratchDirectory("CliInfo.JsonOverALink");
+  std::ofstream(dir + "/victim.txt") << "not MultiDir's\n";
+  std::filesystem::create_symlink(dir + "/victim.txt", dir + "/kitten.json");
+  const CliRun run =
+      runCli("info '" + multidir::test::sharedModelPath("kitten.off") + "' --up y --json '" + dir + "/kitten.json'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(readAll(dir + "/victim.txt"), "not MultiDir's\n");
+  EXPECT_FALSE(std::filesystem::is_symlink(dir + "/kitten.json"));
+  EXPECT_TRUE(nlohmann::json::parse(readAll(dir + "/kitten.json")).contains("overhang"));
 }

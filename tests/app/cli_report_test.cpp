@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -96,4 +97,17 @@ TEST(CliDecomposeSupports, BadSupportSpacingIsAUsageError) {
   const CliRun run = runCli("decompose " + model("kitten.off") + " --support-spacing 0 -o '" + dir + "/plan'", dir);
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.err.find("--support-spacing"), std::string::npos) << run.err;
+}
+
+TEST(CliReport, JsonReplacesALinkAtItsPathInsteadOfWritingThroughIt) {
+  const std::string dir = multidir::test::scratchDirectory("CliReport.JsonOverALink");
+  std::ofstream(dir + "/victim.txt") << "not MultiDir's\n";
+  std::filesystem::create_symlink(dir + "/victim.txt", dir + "/report.json");
+  const CliRun run = runCli("report " + model("kitten.off") + " --up y --beam-width 1 --normals 40 --json '" + dir +
+                                "/report.json'",
+                            dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(readAll(dir + "/victim.txt"), "not MultiDir's\n");
+  EXPECT_FALSE(std::filesystem::is_symlink(dir + "/report.json"));
+  EXPECT_EQ(nlohmann::json::parse(readAll(dir + "/report.json")).size(), 1u);
 }

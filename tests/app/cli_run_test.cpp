@@ -136,7 +136,7 @@ TEST_F(CliRunTest, ASecondRunIsRefusedWhileAnotherRunControlsThePlatformAndNothi
   const std::string session = hw::controlSessionText(holder.status().control.session);
   const auto writes = devices->commandWriteCount(hw::SimulatedDevice::Rotary);
 
-  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(), dir, "timeout 60");
+  const CliRun run = runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, "timeout 60");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.err.find("is controlled by another run (" + session + "); stop that run first"), std::string::npos)
       << run.err;

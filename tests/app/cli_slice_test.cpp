@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -108,4 +109,25 @@ TEST(CliSlice, InterruptStopsEverySlicerAndLeavesNoWorkFolder) {
   EXPECT_FALSE(fs::exists(dir + "/out/step-01.gcode"));
   std::istringstream pids(readAll(dir + "/pids"));
   for (long pid = 0; pids >> pid;) EXPECT_NE(::kill(static_cast<pid_t>(pid), 0), 0) << "slicer " << pid << " still runs";
+}
+
+TEST(CliSlice, AnOutputFolderHoldingOtherFilesIsRefusedNamingItAndForce) {
+  const std::string dir = multidir::test::scratchDirectory("CliSlice.OtherFiles");
+  fs::create_directories(dir + "/out");
+  std::ofstream(dir + "/out/notes.txt") << "the user's own notes\n";
+  const CliRun run = runCli("slice " + quoted(smallKittenPlan(dir)) + " --printer robot-0.8 --slicer no-such-slicer -o " +
+                                quoted(dir + "/out"),
+                            dir);
+  EXPECT_EQ(run.exitCode, 1) << run.err;
+  EXPECT_NE(run.err.find(dir + "/out: "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--force"), std::string::npos) << run.err;
+  EXPECT_EQ(readAll(dir + "/out/notes.txt"), "the user's own notes\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/out"), fs::directory_iterator()), 1);
+}
+
+TEST(CliSlice, HelpNamesForce) {
+  const std::string dir = multidir::test::scratchDirectory("CliSlice.Help");
+  const CliRun run = runCli("slice --help", dir);
+  EXPECT_EQ(run.exitCode, 0);
+  EXPECT_NE(run.out.find("--force"), std::string::npos) << run.out;
 }

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "support/test_models.h"
 
@@ -83,4 +86,66 @@ TEST(PrinterProfile, SettingAssignmentsParseInOrderAndRefuseAWordWithoutEquals) 
   ASSERT_FALSE(wrong.ok());
   EXPECT_EQ(wrong.error().code, core::ErrorCode::InvalidParameter);
   EXPECT_NE(wrong.error().message.find("'perimeters' is not KEY=VALUE"), std::string::npos);
+}
+
+TEST(PrinterProfile, AHotendTemperatureBeyondAnyHotendIsRefusedNamingTheFileKeyAndRange) {
+  // The slicer took it and wrote `M104 S1`.
+  const std::string path = profileFile("hot", "temperature = 1e308\n");
+  const auto p = loadPrinterProfile(path);
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_EQ(p.error().where, path + ": temperature");
+  EXPECT_NE(p.error().message.find("1e308"), std::string::npos) << p.error().message;
+  EXPECT_NE(p.error().message.find("°C in [0, 500]"), std::string::npos) << p.error().message;
+}
+
+TEST(PrinterProfile, ABedCornerBeyondAnyPrinterIsRefusedNamingTheFileKeyAndRange) {
+  const std::string path = profileFile("huge-bed", "bed_shape = 0x0,1e308x0,1e308x1e308,0x1e308\n");
+  const auto p = loadPrinterProfile(path);
+  ASSERT_FALSE(p.ok());
+  EXPECT_EQ(p.error().code, core::ErrorCode::InvalidParameter);
+  EXPECT_EQ(p.error().where, path + ": bed_shape");
+  EXPECT_NE(p.error().message.find("mm in [-10000, 10000]"), std::string::npos) << p.error().message;
+}
+
+TEST(PrinterProfile, EveryNumericSettingMustBeFiniteAndWithinItsRange) {
+  // Each line alone in a profile: the key it names is refused, with the range in the message.
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"first_layer_temperature = 205,600", "first_layer_temperature"},
+      {"bed_temperature = 1e308", "bed_temperature"},
+      {"first_layer_bed_temperature = -5", "first_layer_bed_temperature"},
+      {"max_print_height = 1e308", "max_print_height"},
+      {"nozzle_diameter = 1e308", "nozzle_diameter"},
+      {"layer_height = 1e308", "layer_height"},
+      {"layer_height = 0", "layer_height"},
+      {"first_layer_height = 1e308", "first_layer_height"},
+      {"first_layer_height = 5000%", "first_layer_height"},
+      {"extrusion_width = 1e308", "extrusion_width"},
+      {"retract_length = nan", "retract_length"},
+      {"retract_restart_extra = 1e308", "retract_restart_extra"},
+      {"retract_speed = 1e308", "retract_speed"},
+      {"deretract_speed = -1", "deretract_speed"},
+      {"travel_speed = inf", "travel_speed"},
+      {"# multidir.platform_z = 1e308", "multidir.platform_z"},
+      {"# multidir.platform_center = 1e308,0", "multidir.platform_center"},
+      {"# multidir.park = 0,-1e308", "multidir.park"},
+      {"# multidir.rotary_feed = 1e308", "multidir.rotary_feed"},
+      {"# multidir.clearance_margin = 1e308", "multidir.clearance_margin"},
+  };
+  for (const auto& [line, key] : cases) {
+    SCOPED_TRACE(line);
+    const std::string path = profileFile("range", line + "\n");
+    const auto p = loadPrinterProfile(path);
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.error().where, path + ": " + key);
+    EXPECT_NE(p.error().message.find(" in "), std::string::npos) << p.error().message;  // "give mm in (0, 10)"
+  }
+}
+
+TEST(PrinterProfile, PhysicalValuesAtTheEndsOfTheirRangesLoad) {
+  const auto p = loadPrinterProfile(profileFile(
+      "ends", "temperature = 0,500\nbed_temperature = 200\nfirst_layer_height = 150%\nextrusion_width = 0\n"
+              "retract_restart_extra = -0.5\nderetract_speed = 0\nbed_shape = -10000x-10000,10000x-10000,10000x10000\n"
+              "# multidir.platform_z = -10\n"));
+  ASSERT_TRUE(p.ok()) << p.error().describe();
 }

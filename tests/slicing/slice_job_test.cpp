@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +15,7 @@
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <vector>
 
 #include "multidir/core/samples/samples.h"
 #include "multidir/slicing/gcode_program.h"
@@ -555,4 +558,136 @@ TEST(SliceJob, ThePlacedPartIsWhatThePrintJobFileDescribes) {
         << "step " << step.index;
     EXPECT_NEAR(written["steps"][k]["lowestHeightMm"].get<double>() + profile.platformZMm, step.baseZMm, 1e-6);
   }
+}
+
+// The output folder: a new job replaces an earlier one only once it is complete, a folder holding other files
+// is refused unless allowed, and nothing is ever written through a link planted in it.
+namespace {
+
+// An earlier job as `multidir slice` leaves it: print-job.json of ours and the step files it names.
+void writeEarlierJob(const std::string& folder, int steps) {
+  fs::create_directories(folder);
+  std::ofstream(folder + "/print-job.json") << R"({"schema": "multidir-print-job", "version": 1, "earlier": true})";
+  for (int k = 1; k <= steps; ++k) {
+    const std::string stem = folder + "/step-0" + std::to_string(k);
+    std::ofstream(stem + ".gcode") << "; the earlier job's step " << k << "\n";
+    std::ofstream(stem + "-region.stl") << "solid earlier\nendsolid earlier\n";
+  }
+}
+
+// Every entry of a folder with its content (a folder's as "<folder>"), to compare before and after.
+std::map<std::string, std::string> contentOf(const std::string& folder) {
+  std::map<std::string, std::string> entries;
+  for (const auto& entry : fs::directory_iterator(folder))
+    entries[entry.path().filename().string()] =
+        entry.is_directory() ? std::string("<folder>") : test::readFile(entry.path().string());
+  return entries;
+}
+
+}  // namespace
+
+TEST(SliceJobFolder, AFailedSliceLeavesTheEarlierJobInTheFolderAsItWas) {
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  const std::string dir = scratch("failed-reslice");
+  writeEarlierJob(dir + "/out", 2);
+  const std::map<std::string, std::string> before = contentOf(dir + "/out");
+  SliceJobOptions options = coarseOptions(0.3);
+  options.slicerExecutable = fakeSlicer(dir + "/failing-slicer.sh", "exit 3\n");
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::ExternalToolFailed) << sliced.error().describe();
+  EXPECT_EQ(contentOf(dir + "/out"), before);
+  // Nothing is left beside it either: the fresh folder the job was written into is gone.
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_NE(entry.path().filename().string().rfind(".out.", 0), 0u) << entry.path();
+}
+
+TEST(SliceJobFolder, AFolderHoldingOtherFilesIsRefusedBeforeAnythingIsSlicedOrWritten) {
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  const std::string dir = scratch("other-files");
+  fs::create_directories(dir + "/out");
+  std::ofstream(dir + "/out/notes.txt") << "the user's own notes\n";
+  const std::string mark = dir + "/the-slicer-ran";
+  SliceJobOptions options = coarseOptions(0.3);
+  options.slicerExecutable = fakeSlicer(dir + "/marking-slicer.sh", "touch '" + mark + "'\nexit 1\n");
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::InvalidParameter) << sliced.error().describe();
+  EXPECT_EQ(sliced.error().where, dir + "/out");
+  EXPECT_NE(sliced.error().message.find("'notes.txt'"), std::string::npos) << sliced.error().message;
+  EXPECT_NE(sliced.error().message.find("--force"), std::string::npos) << sliced.error().message;
+  EXPECT_NE(sliced.error().message.find("empty folder"), std::string::npos) << sliced.error().message;
+  EXPECT_FALSE(fs::exists(mark)) << "the slicer ran for a folder that was refused";
+  EXPECT_EQ(contentOf(dir + "/out"), (std::map<std::string, std::string>{{"notes.txt", "the user's own notes\n"}}));
+}
+
+TEST(SliceJobFolder, ANewJobReplacesAnEarlierLongerJobAsAWhole) {
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  const std::string dir = scratch("replace-earlier");
+  writeEarlierJob(dir + "/out", 3);
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), coarseOptions(0.3), dir + "/out", context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+  // The one-step job and nothing of the earlier three-step one.
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir + "/out")) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"print-job.json", "step-01-region.stl", "step-01.gcode"}));
+  EXPECT_NE(test::readFile(dir + "/out/print-job.json").find("\"slicing\""), std::string::npos);
+  EXPECT_EQ(test::readFile(dir + "/out/step-01.gcode").find("the earlier job"), std::string::npos);
+}
+
+TEST(SliceJobFolder, WritingIntoAFolderHoldingOtherFilesWhenAllowedKeepsThem) {
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  const std::string dir = scratch("allowed-other-files");
+  fs::create_directories(dir + "/out");
+  std::ofstream(dir + "/out/notes.txt") << "the user's own notes\n";
+  SliceJobOptions options = coarseOptions(0.3);
+  options.writeIntoOtherFolder = true;
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+  EXPECT_EQ(test::readFile(dir + "/out/notes.txt"), "the user's own notes\n");
+  EXPECT_TRUE(fs::exists(dir + "/out/step-01.gcode"));
+  EXPECT_NE(test::readFile(dir + "/out/print-job.json").find("\"slicing\""), std::string::npos);
+}
+
+TEST(SliceJobFolder, LinksPlantedAtTheJobsFileNamesAreNeverWrittenThrough) {
+  // Links where the job's files, their temporaries and the work folder go, in a folder holding an earlier
+  // job: whatever they point to stays as it was.
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  const std::string dir = scratch("planted-links");
+  const std::string out = dir + "/out";
+  writeEarlierJob(out, 1);
+  std::ofstream(dir + "/victim.txt") << "not MultiDir's\n";
+  fs::create_directories(dir + "/victim-folder");
+  for (const char* name : {"step-01.gcode.part", "print-job.json.part", "step-02.gcode"})
+    fs::create_symlink(dir + "/victim.txt", out + "/" + name);
+  fs::create_directory_symlink(dir + "/victim-folder", out + "/.slicing-" + std::to_string(::getpid()));
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), coarseOptions(0.3), out, context);
+  ASSERT_TRUE(sliced.ok()) << sliced.error().describe();
+  EXPECT_EQ(test::readFile(dir + "/victim.txt"), "not MultiDir's\n");
+  EXPECT_TRUE(fs::is_empty(dir + "/victim-folder"));
+  EXPECT_FALSE(fs::is_symlink(out + "/step-01.gcode"));
+  EXPECT_NE(test::readFile(out + "/step-01.gcode").find("; MULTIDIR STEP 1"), std::string::npos);
+}
+
+TEST(SliceJob, AnOutOfRangeSlicerSettingIsRefusedNamingTheKeyAndTheRange) {
+  // Over the profile (--set): the slicer would have printed `M104 S1` for this temperature.
+  const core::PrintJob job = oneBoxJob(Vec3(-5, -5, 0), Vec3(5, 5, 10));
+  const std::string dir = scratch("setting-range");
+  const std::string mark = dir + "/the-slicer-ran";
+  SliceJobOptions options = coarseOptions(0.3);
+  options.settings.push_back({"temperature", "1e308"});
+  options.slicerExecutable = fakeSlicer(dir + "/marking-slicer.sh", "touch '" + mark + "'\nexit 1\n");
+  core::JobContext context;
+  const auto sliced = sliceJob(job, profileNamed("marlin-220"), options, dir + "/out", context);
+  ASSERT_FALSE(sliced.ok());
+  EXPECT_EQ(sliced.error().code, core::ErrorCode::InvalidParameter) << sliced.error().describe();
+  EXPECT_NE(sliced.error().where.find("temperature"), std::string::npos) << sliced.error().describe();
+  EXPECT_NE(sliced.error().message.find("[0, 500]"), std::string::npos) << sliced.error().message;
+  EXPECT_FALSE(fs::exists(mark));
 }

@@ -7,12 +7,18 @@
 
 namespace multidir::ui {
 
+// The first entry of `folder` (by name) that a MultiDir job does not hold (slicing::inspectJobFolder), or an
+// empty string when the folder is missing, empty or holds an earlier job: what to ask about before exporting.
+QString otherFileIn(const QString& folder);
+
 // Copies every file of `from` (step-NN.gcode, job.gcode when stitched, the step meshes, print-job.json with
-// the estimates) into `to`, creating it with its parents when missing. Each file is written beside its
-// target and renamed into place, print-job.json last, so a folder whose print-job.json is new holds the
-// whole job. Returns the names written; on failure returns false with a translated message naming the folder
-// or file and the reason (earlier files of this export stay; the old print-job.json, if any, is removed
-// first so it never describes a half-written job).
-bool exportSlicedFiles(const QString& from, const QString& to, QStringList* written, QString* error);
+// the estimates) into `to`, creating its parents when missing, the way `multidir slice -o` writes a job: into a
+// fresh folder beside `to` (core::StagedFolder), which takes `to`'s place only once every file is copied, so a
+// failed export leaves `to` as it was, an earlier job included. An empty folder or an earlier job is replaced as
+// a whole; a folder holding other files is refused (nothing written) unless `intoOtherFolder`, when the job's
+// files are moved into it, print-job.json last, and the others stay. Returns the names written; on failure
+// returns false with a translated message naming the folder or file and the reason.
+bool exportSlicedFiles(const QString& from, const QString& to, QStringList* written, QString* error,
+                       bool intoOtherFolder = false);
 
 }  // namespace multidir::ui

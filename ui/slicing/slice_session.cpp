@@ -209,14 +209,14 @@ void SliceSession::showLayer(int layers) {
                             .arg(layer.step).arg(layer.layerInStep));
 }
 
-bool SliceSession::exportGcode(const QString& directory, QString* error) {
+bool SliceSession::exportGcode(const QString& directory, QString* error, bool intoOtherFolder) {
   if (!m_outcome) {
     if (error) *error = tr("There is no G-code to export: slice the plan first.");
     return false;
   }
   QStringList written;
   QString problem;
-  if (!exportSlicedFiles(m_outcome->folderPath(), directory, &written, &problem)) {
+  if (!exportSlicedFiles(m_outcome->folderPath(), directory, &written, &problem, intoOtherFolder)) {
     m_window.statusBar()->showMessage(problem);
     if (error) *error = problem;
     return false;
@@ -235,8 +235,17 @@ void SliceSession::chooseExportGcode() {
       tr("G-code folders (*)"), nullptr, QFileDialog::ShowDirsOnly | QFileDialog::DontConfirmOverwrite);
   if (directory.isEmpty()) return;
   rememberDialogFolder(FileKind::Plan, directory);
+  // The user's own files are never replaced without asking (`multidir slice` wants --force for it).
+  const QString other = otherFileIn(directory);
+  if (!other.isEmpty() &&
+      QMessageBox::question(&m_window, tr("Export G-code"),
+                            tr("%1 holds files that are not a MultiDir job (%2 is one).\n\nWrite the job into this "
+                               "folder anyway? Files with the job's names are replaced; the others stay.")
+                                .arg(QDir::toNativeSeparators(directory), other),
+                            QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes)
+    return;
   QString error;
-  if (!exportGcode(directory, &error)) QMessageBox::warning(&m_window, tr("Export G-code"), error);
+  if (!exportGcode(directory, &error, !other.isEmpty())) QMessageBox::warning(&m_window, tr("Export G-code"), error);
 }
 
 }  // namespace multidir::ui

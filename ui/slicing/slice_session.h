@@ -46,9 +46,11 @@ class SliceSession : public QObject {
   // The last finished job for the plan shown (nullopt: none).
   [[nodiscard]] const std::optional<SliceOutcome>& outcome() const { return m_outcome; }
 
-  // Export G-code: writes the job's files into `directory` (exportSlicedFiles). False with the message.
-  bool exportGcode(const QString& directory, QString* error = nullptr);
-  // The same, asking for the folder (an existing one, or a new name that is created).
+  // Export G-code: writes the job's files into `directory` (exportSlicedFiles: the whole job swapped in once
+  // complete; a folder holding other files only when `intoOtherFolder`). False with the message.
+  bool exportGcode(const QString& directory, QString* error = nullptr, bool intoOtherFolder = false);
+  // The same, asking for the folder (an existing one, or a new name that is created), and asking before it
+  // writes into a folder that holds files other than a MultiDir job's.
   void chooseExportGcode();
 
   // The viewer shows the toolpaths (true) or the plan view (false); false when there is no result.

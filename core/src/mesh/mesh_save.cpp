@@ -3,7 +3,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "detail/atomic_file.h"
+#include "multidir/core/common/atomic_file.h"
 #include "mesh/mesh_formats.h"
 #include "multidir/core/mesh/mesh_io.h"
 
@@ -50,7 +50,7 @@ Status saveMesh(const TriangleMesh& mesh, const std::string& path, const SaveOpt
                      name};
 
   // Written beside the target and renamed into place: a failed save leaves any old file as it was.
-  return detail::writeFileAtomically(path, name, [&](std::ostream& out) -> Status {
+  return writeFileAtomically(path, name, [&](std::ostream& out) -> Status {
     out.precision(17);
     if (ext == ".stl") return detail::writeStl(mesh, out, options.asciiStl);
     if (ext == ".off") writeOff(mesh, out);

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "detail/atomic_file.h"
+#include "multidir/core/common/atomic_file.h"
 
 namespace multidir::core::detail {
 

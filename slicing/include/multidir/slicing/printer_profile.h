@@ -76,10 +76,12 @@ struct PrinterProfile {
 std::vector<std::string> builtinPrinterNames();
 
 // Reads a profile: a path to a .ini, or the name of a shipped one. Checks bed_shape (at least three corners,
-// positive area), max_print_height (> 0), nozzle_diameter (> 0) and every multidir.* key, naming the first
-// that is wrong: "my.ini: bed_shape '0x0,0x0,0x0' has no area: give the bed's corners as XxY pairs".
+// positive area, each coordinate within +-10000 mm), every numeric slicer setting MultiDir reads or passes on
+// (temperatures, heights, nozzle, layer heights, widths, retraction, speeds: finite and within a physical
+// range, docs/slicing.md "Printer profiles") and every multidir.* key, naming the first that is wrong with the
+// file, the key and the range: "my.ini: temperature: '1e308' is out of range: give °C in [0, 500], ...".
 // Errors: FileNotFound (no such file or shipped name; the message lists the shipped names), MalformedFile
-// (a line or value that cannot be read), InvalidParameter (a value out of range).
+// (a line or value that cannot be read, a number that is not finite), InvalidParameter (a value out of range).
 core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName);
 
 // Slicer settings typed as text, "KEY=VALUE KEY=VALUE" separated by white space ("layer_height=0.3

@@ -31,6 +31,9 @@ struct SliceJobOptions {
   // Also slice the whole model along up with the slicer's own supports (the fixed-direction comparison).
   bool fixedDirection = true;
   std::string slicerExecutable = "prusa-slicer";
+  // Write into an output folder that holds files other than a MultiDir job's (`multidir slice --force`): the
+  // job's files replace those of the same names, the others stay. Without it such a folder is refused.
+  bool writeIntoOtherFolder = false;
 };
 
 struct SlicedStep {
@@ -68,7 +71,12 @@ struct SlicedJob {
 // differ by a turn about the axis.
 core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile);
 
-// Slices `job` (frame Machine) for `profile` into `directory` (created when missing). First every step's
+// Slices `job` (frame Machine) for `profile` into `directory` (created when missing). The whole job is written
+// into a fresh folder beside `directory` (core::StagedFolder) and put in its place only when complete: an empty
+// folder or an earlier job (job_folder.h) is replaced as a whole in one step, so a slice that fails, is
+// cancelled or is killed leaves `directory` as it was. A folder holding other files is refused before anything
+// is done (InvalidParameter naming the folder and one such file), unless options.writeIntoOtherFolder: then the
+// job's files are moved into it, print-job.json last, and the other files stay. First every step's
 // supports are clipped to its base plane and the part is placed where it fits (placeOnPlatform, which refuses
 // a part that cannot fit before any slicer runs); the job written and sliced is the placed one. The steps and
 // the fixed-direction print are then sliced side by side, one slicer per core, and checked in printing order:
@@ -76,8 +84,8 @@ core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const P
 // Progress: one share per step and one for the fixed-direction print, each filled as its slicer goes (their
 // sum), one for stitching; the phase names the runs under way. Cancellation reaches every running slicer
 // within about 50 ms. A G-code that fails a check is not kept (no step-NN.gcode, no job.gcode) and the job is
-// refused; the work folder (.slicing-PID) is removed however the job ends.
-// Errors: InvalidParameter (the job is in the model frame, the printer cannot turn its platform and the job has
+// refused; the work folder (.slicing-PID, inside the fresh folder) is removed however the job ends.
+// Errors: InvalidParameter (a folder holding files that are not a MultiDir job, the job is in the model frame, the printer cannot turn its platform and the job has
 // several steps, a firmware axis asked to print a 5-DOF plan), FileNotFound / ExternalToolFailed (the slicer),
 // TooLarge (the part does not fit the printer, before anything is sliced), CheckFailed (a check of the G-code,
 // naming step, line and reason), WriteFailed, Cancelled.

@@ -1,4 +1,4 @@
-#include "detail/atomic_file.h"
+#include "multidir/core/common/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -14,7 +14,7 @@
 #include <random>
 #include <streambuf>
 
-namespace multidir::core::detail {
+namespace multidir::core {
 namespace {
 
 namespace fs = std::filesystem;
@@ -139,4 +139,11 @@ Status writeFileAtomically(const std::string& path, const std::string& name,
   return Done{};
 }
 
-}  // namespace multidir::core::detail
+Status writeTextFileAtomically(const std::string& path, const std::string& text, const std::string& name) {
+  return writeFileAtomically(path, name.empty() ? path : name, [&](std::ostream& out) -> Status {
+    out << text;
+    return Done{};
+  });
+}
+
+}  // namespace multidir::core
