@@ -11,6 +11,7 @@
 #include "multidir/hardware/device_simulator.h"
 #include "multidir/hardware/octoprint_simulator.h"
 #include "support/cli_runner.h"
+#include "support/run_job_writer.h"
 #include "support/test_models.h"
 
 namespace {
@@ -19,18 +20,6 @@ using multidir::test::CliRun;
 using multidir::test::runCli;
 namespace hw = multidir::hardware;
 
-// A sliced one-step job as `multidir slice` writes it (4-DOF at 0 degrees), G-code beside it.
-void writeOneStepJob(const std::string& dir) {
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir + "/step-01.gcode") << "G90\nG1 X0 Y0 Z0.3 F1200\n";
-  std::ofstream(dir + "/print-job.json")
-      << "{\"schema\": \"multidir-print-job\", \"version\": 1, \"machine\": {\"kind\": \"4dof\", \"up\": [0, 0, 1], "
-         "\"rotationAxis\": [1, 0, 0], \"minAngleDegrees\": -90, \"maxAngleDegrees\": 90, \"angleStepDegrees\": 1}, "
-         "\"steps\": [{\"index\": 1, \"angles\": {\"rotaryDegrees\": 0}}], \"slicing\": {\"printer\": {\"platform\": "
-         "\"modbus\"}, \"steps\": [{\"index\": 1, \"gcode\": \"step-01.gcode\", \"estimate\": {\"printSeconds\": 1, "
-         "\"filamentMm\": 1, \"filamentCm3\": 0.01, \"filamentGrams\": 0}}]}}\n";
-}
-
 class CliRunApiKeyTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -38,17 +27,20 @@ class CliRunApiKeyTest : public ::testing::Test {
     deviceOptions.robot = false;
     devices = std::make_unique<hw::DeviceSimulator>(deviceOptions);
     ASSERT_TRUE(devices->start().ok());
-    printer = std::make_unique<hw::OctoPrintSimulator>(hw::OctoPrintSimulatorOptions{});
+    hw::OctoPrintSimulatorOptions printerOptions;
+    printerOptions.speed = 1000.0;  // each step's simulated print takes milliseconds
+    printer = std::make_unique<hw::OctoPrintSimulator>(printerOptions);
     ASSERT_TRUE(printer->start().ok());
   }
 
-  // `multidir run` of a one-step job at the simulators, with `keyArgs` and `environment` (shell words put
+  // `multidir run` of a two-step job at the simulators, with `keyArgs` and `environment` (shell words put
   // before the program, such as "MULTIDIR_PRINTER_API_KEY=wrong").
   CliRun run(const std::string& testName, const std::string& keyArgs, const std::string& environment = "") {
     dir = multidir::test::scratchDirectory(testName);
-    writeOneStepJob(dir + "/job");
+    multidir::test::writeJob(dir + "/job");
     return runCli("run '" + dir + "/job' --printer octoprint://127.0.0.1:" + std::to_string(printer->port()) +
-                      " --platform 127.0.0.1:" + std::to_string(devices->port()) + " " + keyArgs,
+                      " --platform 127.0.0.1:" + std::to_string(devices->port()) + " --machine '" +
+                      multidir::test::platformProfileBeside(dir + "/job") + "' " + keyArgs,
                   dir, environment + " timeout 60");
   }
 
