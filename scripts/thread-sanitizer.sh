@@ -10,13 +10,10 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh" --sanitizers
 build="$root/build-tsan"
 flags="-fsanitize=thread -fno-omit-frame-pointer"
-launcher=()
-if command -v ccache >/dev/null 2>&1; then
-  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-fi
+source "$root/scripts/compiler-cache.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMULTIDIR_BUILD_GUI=OFF \
   -DMULTIDIR_BUILD_BENCH=OFF -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" "${launcher[@]}" >/dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" "${compiler_cache[@]}" >/dev/null
 cmake --build "$build" -j"${MULTIDIR_JOBS:-$(nproc)}" --target multidir_hardware_tests multidir
 cd "$build"
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 history_size=4" \

@@ -59,8 +59,9 @@ TEST_F(CliRunApiKeyTest, TheKeyIsReadFromTheFileGivenWithApiKeyFileWithoutItsLin
   const CliRun wrong = run("CliRunApiKey.WrongFile", "--api-key-file '" + keyFile("wrong.key", "wrong\n") + "'");
   EXPECT_EQ(wrong.exitCode, 4) << wrong.out << wrong.err;
   EXPECT_NE(wrong.err.find("the API key is wrong"), std::string::npos) << wrong.err;
-  const CliRun right = run("CliRunApiKey.RightFile", "--api-key-file '" +
-                                                          keyFile("right.key", std::string(hw::kOctoPrintSimulatorApiKey) + "\r\n") + "'");
+  const CliRun right =
+      run("CliRunApiKey.RightFile",
+          "--api-key-file '" + keyFile("right.key", std::string(hw::kOctoPrintSimulatorApiKey) + "\r\n") + "'");
   EXPECT_EQ(right.err.find("the API key is wrong"), std::string::npos) << right.err;
   EXPECT_NE(right.out.find("connected to OctoPrint printer at 127.0.0.1"), std::string::npos) << right.out << right.err;
 }

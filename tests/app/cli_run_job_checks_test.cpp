@@ -237,18 +237,9 @@ TEST_F(CliRunJobChecks, SighupWhileThePlatformHomesStopsIt) {
   ASSERT_TRUE(devices->start().ok());
   startPrinter(200.0);
   const std::string pidFile = dir + "/pid";
-  auto cli = std::async(std::launch::async, [&] {
-    return run(dir, "", "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
-  });
-  bool hungUp = false;
-  for (int i = 0; i < 3000 && !hungUp; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    if (!devices->rotaryState().homing) continue;
-    const std::string pid = multidir::test::readAll(pidFile);
-    ASSERT_FALSE(pid.empty());
-    ::kill(std::stoi(pid), SIGHUP);
-    hungUp = true;
-  }
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile);
+  auto cli = std::async(std::launch::async, [&] { return run(dir, "", prefix); });
+  const bool hungUp = multidir::test::signalCliWhen(pidFile, SIGHUP, [&] { return devices->rotaryState().homing; });
   const CliRun result = cli.get();
   ASSERT_TRUE(hungUp) << result.out << result.err;
   EXPECT_EQ(result.exitCode, 4) << result.out << result.err;

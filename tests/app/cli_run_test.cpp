@@ -198,24 +198,18 @@ TEST_F(CliRunTest, CtrlCDuringATurnSwitchesTheHeatersOff) {
   writeJob(dir + "/job", true, false, true);
   startSimulators(200.0);
   const std::string pidFile = dir + "/pid";
-  std::filesystem::remove(pidFile);
-  auto cli = std::async(std::launch::async, [&] {
-    return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir,
-                  "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
-  });
-  bool interrupted = false;
-  for (int i = 0; i < 3000 && !interrupted; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile);
+  auto cli =
+      std::async(std::launch::async, [&] { return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, prefix); });
+  double bedTargetWhenInterrupted = 0.0;
+  const bool interrupted = multidir::test::signalCliWhen(pidFile, SIGINT, [&] {
     const hw::SimulatedRotaryState platform = devices->rotaryState();
-    if (printer->state().jobState != "complete" || !platform.moving || platform.targetAngleDegrees < 89.0) continue;
-    const std::string pid = multidir::test::readAll(pidFile);
-    ASSERT_FALSE(pid.empty());
-    ASSERT_GT(printer->state().bed.targetC, 59.0);  // the first step left them on
-    ::kill(std::stoi(pid), SIGINT);
-    interrupted = true;
-  }
+    bedTargetWhenInterrupted = printer->state().bed.targetC;
+    return printer->state().jobState == "complete" && platform.moving && platform.targetAngleDegrees >= 89.0;
+  });
   const CliRun run = cli.get();
   ASSERT_TRUE(interrupted) << run.out << run.err;
+  EXPECT_GT(bedTargetWhenInterrupted, 59.0);  // the first step left them on
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.out.find("Ctrl-C: stopping both devices"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("switched the heaters off"), std::string::npos) << run.out;
@@ -284,20 +278,11 @@ TEST_F(CliRunTest, CtrlCWhileThePlatformHomesStopsItAndSwitchesTheHeatersOff) {
     ASSERT_GT(printer->state().bed.targetC, 59.0);
   }
   const std::string pidFile = dir + "/pid";
-  std::filesystem::remove(pidFile);
-  auto cli = std::async(std::launch::async, [&] {
-    return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir,
-                  "timeout 60 sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'");
-  });
-  bool interrupted = false;
-  for (int i = 0; i < 3000 && !interrupted; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    if (!devices->rotaryState().homing) continue;
-    const std::string pid = multidir::test::readAll(pidFile);
-    ASSERT_FALSE(pid.empty());
-    ::kill(std::stoi(pid), SIGINT);
-    interrupted = true;
-  }
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile);
+  auto cli =
+      std::async(std::launch::async, [&] { return runCli("run '" + dir + "/job' " + deviceArgs(dir), dir, prefix); });
+  const bool interrupted =
+      multidir::test::signalCliWhen(pidFile, SIGINT, [&] { return devices->rotaryState().homing; });
   const CliRun run = cli.get();
   ASSERT_TRUE(interrupted) << run.out << run.err;
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;

@@ -1,10 +1,14 @@
 #include "support/cli_runner.h"
 
+#include <signal.h>
 #include <sys/wait.h>
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace multidir::test {
 
@@ -25,6 +29,22 @@ CliRun runCli(const std::string& arguments, const std::string& dir, const std::s
   run.out = readAll(outPath);
   run.err = readAll(errPath);
   return run;
+}
+
+std::string pidRecordingPrefix(const std::string& pidFile, int timeoutSeconds) {
+  std::remove(pidFile.c_str());
+  return "timeout " + std::to_string(timeoutSeconds) + " sh -c 'echo $$ > \"" + pidFile + "\"; exec \"$0\" \"$@\"'";
+}
+
+bool signalCliWhen(const std::string& pidFile, int signal, const std::function<bool()>& when) {
+  for (int i = 0; i < 3000; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (!when()) continue;
+    const std::string pid = readAll(pidFile);
+    if (pid.empty()) continue;  // the shell has not written it yet
+    return ::kill(std::stoi(pid), signal) == 0;
+  }
+  return false;
 }
 
 }  // namespace multidir::test
