@@ -26,6 +26,11 @@ inline void writeInput(const std::string& path, const std::uint8_t* data, std::s
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
 }
 
+// The input as text, for the promises that look at what a refusal quotes.
+inline std::string inputText(const std::uint8_t* data, std::size_t size) {
+  return std::string(reinterpret_cast<const char*>(data), size);
+}
+
 // Aborts (so libFuzzer keeps the input) when `broken` names a broken promise.
 inline void requirePromise(const std::string& broken, const char* loader) {
   if (broken.empty()) return;

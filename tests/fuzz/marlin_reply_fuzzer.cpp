@@ -20,7 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (reply.kind == multidir::hardware::marlin::Reply::Kind::Resend && reply.resendLine < -1)
       broken = "a resend naming a negative line";
     for (const auto& heater : {reply.extruder, reply.bed})
-      if (heater && !(multidir::hardware::plausibleCelsius(heater->actualC) && multidir::hardware::plausibleCelsius(heater->targetC)))
+      if (heater && !(multidir::hardware::plausibleCelsius(heater->actualC) &&
+                      multidir::hardware::plausibleCelsius(heater->targetC)))
         broken = "a temperature no sensor reads";
     multidir::fuzz::requirePromise(broken, "marlin::parseReply");
     start = end + 1;

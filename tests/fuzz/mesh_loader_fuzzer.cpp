@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const char* extension : {"stl", "obj", "off", "ply"}) {
     const std::string path = multidir::fuzz::scratchStem() + "." + extension;
     multidir::fuzz::writeInput(path, data, size);
-    const std::string broken = multidir::test::brokenLoaderPromise(multidir::core::loadMesh(path, options));
+    const std::string broken = multidir::test::brokenLoaderPromise(multidir::core::loadMesh(path, options),
+                                                                   multidir::fuzz::inputText(data, size));
     std::remove(path.c_str());
     multidir::fuzz::requirePromise(broken, (std::string("loadMesh as .") + extension).c_str());
   }

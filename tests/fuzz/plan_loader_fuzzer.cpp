@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }();
   multidir::fuzz::writeInput(folder + "/plan.json", data, size);
   const auto loaded = multidir::core::loadPlan(folder);
-  std::string broken = multidir::test::brokenRefusalPromise(loaded);
+  std::string broken = multidir::test::brokenRefusalPromise(loaded, multidir::fuzz::inputText(data, size));
   if (loaded && !loaded->supports.empty() && loaded->supports.size() != loaded->decomposition.regions.size())
     broken = "loaded a plan whose support sets do not match its regions";
   multidir::fuzz::requirePromise(broken, "loadPlan");

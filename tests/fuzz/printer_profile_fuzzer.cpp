@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   multidir::fuzz::writeInput(path, data, size);
   const auto loaded = multidir::slicing::loadPrinterProfile(path);
   std::remove(path.c_str());
-  std::string broken = multidir::test::brokenRefusalPromise(loaded);
+  std::string broken = multidir::test::brokenRefusalPromise(loaded, multidir::fuzz::inputText(data, size));
   if (loaded && broken.empty()) broken = brokenProfile(*loaded);
   multidir::fuzz::requirePromise(broken, "loadPrinterProfile");
   return 0;

@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   multidir::fuzz::writeInput(path, data, size);
   const auto loaded = multidir::core::loadProject(path);
   std::remove(path.c_str());
-  std::string broken = multidir::test::brokenRefusalPromise(loaded);
+  std::string broken = multidir::test::brokenRefusalPromise(loaded, multidir::fuzz::inputText(data, size));
   if (loaded && !multidir::core::validate(loaded->machine)) broken = "loaded a machine that validate() refuses";
   multidir::fuzz::requirePromise(broken, "loadProject");
   return 0;

@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "support/fuzz_corpus.h"
 #include "support/printer_reply_promise.h"
@@ -14,9 +12,6 @@ TEST(FileLoaderCorpus, EveryPrinterReplyIsReadIntoNumbersAPrinterCanReportOrRefu
   ASSERT_GE(files.size(), 5u);
   for (const std::filesystem::path& file : files) {
     SCOPED_TRACE(file.filename().string());
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    EXPECT_EQ(multidir::test::brokenPrinterReplyPromise(text.str()), "");
+    EXPECT_EQ(multidir::test::brokenPrinterReplyPromise(multidir::test::readFile(file)), "");
   }
 }

@@ -4,6 +4,8 @@
 // refuse, clearly); header-only.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,14 @@ inline std::vector<std::filesystem::path> fuzzCorpus(const std::string& folder) 
     if (entry.is_regular_file()) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
+}
+
+// The file's bytes, for the promises that look at what a refusal quotes.
+inline std::string readFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 // True for accept-*, false for refuse-*; anything else is a mistake in the corpus and fails the caller's test.

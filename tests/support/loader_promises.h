@@ -2,7 +2,8 @@
 // What loadMesh promises for any input whatever (header-only: shared by the corpus replay test and the
 // libFuzzer harness in tests/fuzz/): either a closed, consistently oriented 2-manifold with finite
 // coordinates and positive volume, or a refusal that says what is wrong (never Internal, never "please
-// report it"). Returns an empty string when the promise holds, else what broke it.
+// report it"). Returns an empty string when the promise holds, else what broke it; `input` as for
+// brokenRefusalPromise.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -13,8 +14,8 @@
 
 namespace multidir::test {
 
-inline std::string brokenLoaderPromise(const core::Result<core::LoadedMesh>& loaded) {
-  if (!loaded) return brokenRefusalPromise(loaded.error());
+inline std::string brokenLoaderPromise(const core::Result<core::LoadedMesh>& loaded, const std::string& input = {}) {
+  if (!loaded) return brokenRefusalPromise(loaded.error(), input);
   const core::TriangleMesh& mesh = loaded->mesh;
   if (mesh.triangles.empty()) return "loaded without faces";
   if (mesh.origins.size() != mesh.triangles.size()) return "face origins do not match the faces";
