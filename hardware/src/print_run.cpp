@@ -473,7 +473,7 @@ void PrintRun::beginPrint(const PositionerSnapshot& snapshot) {
   m_printInterrupted = false;
   m_printerPausedLogged = false;
   m_progressTenths = -1;
-  m_printerCommand = m_printer->upload(m_steps[m_step].gcodePath, remoteName());
+  m_printerCommand = m_printer->upload(m_steps[m_step].gcodePath, remoteName(), m_steps[m_step].gcodeSha256);
   enter(PrintRunState::Printing, stepLabel() + ": settled; uploading " + m_steps[m_step].gcodePath + " to " +
                                      m_printer->name() + " as " + remoteName());
   if (m_printRequest) m_printRequest(m_step, m_steps[m_step]);

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "multidir/core/search/decompose.h"
+#include "multidir/hardware/content_digest.h"
 #include "multidir/hardware/device_simulator.h"
 #include "multidir/hardware/print_run.h"
 #include "multidir/hardware/rotary_platform.h"
@@ -436,6 +437,34 @@ TEST_P(PrintRunWithMarlinTest, ExtraOksWithoutTemperatureReportsPauseTheRunSayin
   EXPECT_EQ(run.currentStep(), 0u);
 }
 
+// Issue 28: `multidir run` checked every step's G-code before the first move, but the link read the file again
+// when its step came up, so a step-02.gcode replaced while step 1 printed was printed unchecked. Now the link
+// compares what it reads with the SHA-256 taken at the check, refuses it, and the run pauses naming the file.
+TEST_P(PrintRunWithPrinterTest, AStepFileReplacedAfterItsCheckIsNotSentAndTheRunPausesNamingIt) {
+  // Files of this test alone: the fixture's are rewritten by other tests of the protocol running beside it.
+  const auto dir = std::filesystem::path(testing::TempDir()) /
+                   (std::string("print-run-replaced-step-") + protocolText(GetParam()));
+  std::vector<PrintStep> checked = steps();
+  for (std::size_t i = 0; i < checked.size(); ++i) {
+    checked[i].gcodePath = writeFile(dir / ("step-0" + std::to_string(i + 1) + ".gcode"), shortGcode());
+    checked[i].gcodeSha256 = sha256Hex(shortGcode());  // as the pre-run check took it
+  }
+  startPrinter(20.0);
+  PrintRun run(*positioner, checked, runOptions(), printer.get());
+  ASSERT_TRUE(run.start().ok());
+  untilFirstStart(run);
+  writeFile(checked[1].gcodePath, heatersLeftOnGcode());  // replaced while step 1 prints
+
+  ASSERT_TRUE(tickUntil(run, [&] { return run.state() == PrintRunState::Paused; }, 6000)) << wholeLog(run);
+  EXPECT_EQ(run.currentStep(), 1u);
+  EXPECT_NE(run.lastProblem().find("step-02.gcode changed after it was checked; nothing of it was sent"),
+            std::string::npos)
+      << run.lastProblem();
+  EXPECT_EQ(printerSim->starts().size(), 1u);  // step 1's only
+  EXPECT_EQ(printerSim->completedJobs(), 1);
+  EXPECT_FALSE(run.stepBegun());
+}
+
 // Interlocks, with doubles whose state the test sets.
 
 class StillPositioner : public Positioner {
@@ -462,7 +491,8 @@ class ScriptedPrinter : public PrinterLink {
  public:
   core::Status connect() override { return core::Done{}; }
   void disconnect() override {}
-  std::future<core::Status> upload(const std::string&, const std::string& name) override {
+  using PrinterLink::upload;
+  std::future<core::Status> upload(const std::string&, const std::string& name, const std::string&) override {
     uploads.push_back(name);
     return done();
   }

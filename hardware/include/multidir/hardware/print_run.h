@@ -100,6 +100,11 @@ struct PrintStep {
   // The step's G-code, uploaded to the printer and started when the run has a printer link; empty: the
   // operator prints the region and presses "region done".
   std::string gcodePath = {};
+  // The SHA-256 of the G-code as the owner checked it (content_digest.h; `multidir run` takes it in its checks
+  // before the first move): the printer link refuses the file if what it reads then differs, so a file
+  // replaced during the run is never printed unchecked (the run pauses, naming it). "": not checked by the
+  // owner (the studio); the file is sent as it is when its step comes up.
+  std::string gcodeSha256 = {};
 };
 
 // What the sequencer needs to know of the device that orients the platform.
