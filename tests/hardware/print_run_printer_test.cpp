@@ -465,6 +465,38 @@ TEST_P(PrintRunWithPrinterTest, AStepFileReplacedAfterItsCheckIsNotSentAndTheRun
   EXPECT_FALSE(run.stepBegun());
 }
 
+// Issue 28: the Marlin link counted stray oks in PrinterStatus::protocolWarnings, but neither the run's log nor
+// `multidir run` said anything of them.
+TEST_P(PrintRunWithMarlinTest, AStrayOkIsLoggedOnceInTheRunsLog) {
+  PrintRun run = runWithPrinter(20.0);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
+  marlin().sendStrayOks(1);
+  const auto warnings = [&] {
+    return std::count_if(run.log().begin(), run.log().end(), [](const PrintRunLogEntry& e) {
+      return e.message.find("warning from Marlin printer") != std::string::npos;
+    });
+  };
+  ASSERT_TRUE(tickUntil(run, [&] { return warnings() > 0; })) << wholeLog(run);
+  EXPECT_TRUE(logMentions(run, "an ok")) << wholeLog(run);
+  tickUntil(run, [] { return false; }, 50);  // 100 ms more: the same warning is not logged again
+  EXPECT_EQ(static_cast<std::uint64_t>(warnings()), printer->status().protocolWarnings) << wholeLog(run);
+}
+
+// Noise on the serial line (a wrong baud rate) is logged in the link's words, without raw control characters.
+TEST_P(PrintRunWithMarlinTest, NoiseOnTheSerialLineIsLoggedAsAWarningWithoutControlCharacters) {
+  PrintRun run = runWithPrinter(20.0);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
+  marlin().garbleOutput(true);
+  ASSERT_TRUE(tickUntil(run, [&] { return logMentions(run, "warning from Marlin printer"); })) << wholeLog(run);
+  EXPECT_TRUE(logMentions(run, "not Marlin's protocol")) << wholeLog(run);
+  marlin().garbleOutput(false);
+  for (const PrintRunLogEntry& e : run.log())
+    for (const char c : e.message)
+      EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << "raw control character in: " << e.message;
+}
+
 // Interlocks, with doubles whose state the test sets.
 
 class StillPositioner : public Positioner {
@@ -625,6 +657,17 @@ TEST(PrintRunInterlock, TheLogHoldsNoRawControlCharactersOfAFileName) {
     for (const char c : e.message)
       EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << "raw control character in: " << e.message;
   EXPECT_TRUE(logMentions(run, R"(step\r\n01\x1b[2J.gcode)")) << wholeLog(run);
+}
+
+// A link's warning quotes what came from outside: its control characters reach the log escaped.
+TEST(PrintRunInterlock, AProtocolWarningIsLoggedWithItsControlCharactersEscaped) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  PrintRun run = oneStepRun(platform, printer);
+  printer.state.protocolWarnings = 1;
+  printer.state.lastWarning = "noise \r\n\x1b[2J";
+  run.tick();
+  EXPECT_TRUE(logMentions(run, R"(warning from test printer: noise \r\n\x1b[2J)")) << wholeLog(run);
 }
 
 TEST(PrintRunInterlock, ThePrinterIsNotStartedWhileThePlatformReportsMotion) {

@@ -54,6 +54,10 @@
 //             |                                             | states    | latched by their drivers
 //             |                                             | stay)     |
 //
+// With a printer, every tick (in every state) logs the link's protocol warnings that are new since the last
+// one (PrinterStatus::protocolWarnings, lastWarning: a stray ok, a noise line), once each; warnings from
+// before the run was constructed are not repeated.
+//
 // A stop is only requested by stopMotion(); "motion stopped" is logged when a later tick() sees the device's
 // confirmation (PositionerSnapshot::stopConfirmed), in whatever state the run is then (ticks keep watching
 // for it in Paused, Faulted and Aborted); a stop not confirmed after a second is logged once as a warning. A
@@ -243,6 +247,8 @@ class PrintRun {
   std::string remoteName() const;
   std::string advice(PrintRunAdvice situation) const;
   void switchHeatersOff();
+  // Logs the printer link's protocol warnings (PrinterStatus::protocolWarnings) not logged yet, once each.
+  void logProtocolWarnings();
   bool stepUsesPrinter() const { return m_printer != nullptr && !m_steps[m_step].gcodePath.empty(); }
 
   enum class PrintPhase { None, Uploading, Starting, Running };
@@ -274,6 +280,7 @@ class PrintRun {
   bool m_printerPausedLogged = false;
   int m_progressTenths = -1;
   bool m_awaitingPrinterStop = false;
+  std::uint64_t m_protocolWarningsLogged = 0;  // PrinterStatus::protocolWarnings up to which the log told
   std::vector<PrintRunLogEntry> m_log;
   LogCallback m_logCallback;
   PrintRequestCallback m_printRequest;
