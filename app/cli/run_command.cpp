@@ -451,8 +451,9 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   // The whole job, before anything connects or moves: the platform's limits and the slicer's G-code checks.
   const std::string platformProfile = parsed.value("--machine", "");
   const core::MachineSpec platform = loadPlatformProfile(platformProfile);
-  checkRunJob(job, platform, "--machine " + platformProfile,
-              loadRunPrinterProfile(job, parsed.value("--printer-profile", "")));
+  // The SHA-256 of each step's G-code as checked: the link sends a step only if its file still has it.
+  const std::vector<std::string> checkedGcode = checkRunJob(
+      job, platform, "--machine " + platformProfile, loadRunPrinterProfile(job, parsed.value("--printer-profile", "")));
   RunLog log(out, err, parsed.value("--log", ""));
   SignalScope signals;
 
@@ -491,7 +492,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   std::vector<double> estimates;
   for (std::size_t i = static_cast<std::size_t>(from - 1); i < job.steps.size(); ++i) {
     const RunJobStep& s = job.steps[i];
-    steps.push_back({s.orientation, "step " + std::to_string(s.index), s.gcodePath});
+    steps.push_back({s.orientation, "step " + std::to_string(s.index), s.gcodePath, checkedGcode[i]});
     estimates.push_back(s.estimateSeconds);
   }
   hardware::PrintRunOptions options;

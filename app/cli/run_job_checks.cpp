@@ -10,6 +10,7 @@
 
 #include "cli_args.h"
 #include "multidir/core/plan/plan_file.h"
+#include "multidir/hardware/content_digest.h"
 #include "multidir/hardware/motion_limits.h"
 #include "multidir/slicing/step_recheck.h"
 
@@ -105,7 +106,7 @@ slicing::PrinterProfile loadRunPrinterProfile(const RunJob& job, const std::stri
   return *profile;
 }
 
-void checkRunJob(const RunJob& job, const core::MachineSpec& platform, const std::string& platformSource,
+std::vector<std::string> checkRunJob(const RunJob& job, const core::MachineSpec& platform, const std::string& platformSource,
                  const slicing::PrinterProfile& printer) {
   if (platform.kind != job.machine.kind)
     bad(job.jobFile, std::string("machine.kind is ") + core::machineKindName(job.machine.kind) +
@@ -119,11 +120,13 @@ void checkRunJob(const RunJob& job, const core::MachineSpec& platform, const std
                            "): " + takes.error().message + " (" + platformSource +
                            "): nothing was moved; plan and slice the job for this platform");
   std::vector<slicing::StepProgramText> programs;
+  std::vector<std::string> digests;
   for (const RunJobStep& step : job.steps) {
     slicing::StepProgramText p;
     p.step = step.index;
     p.fileName = fs::path(step.gcodePath).filename().string();
     p.text = readGcode(step);
+    digests.push_back(hardware::sha256Hex(p.text));
     p.baseZMm = step.baseZMm;
     p.endClearanceZMm = step.turnClearanceZMm;
     programs.push_back(std::move(p));
@@ -132,6 +135,7 @@ void checkRunJob(const RunJob& job, const core::MachineSpec& platform, const std
     bad((fs::path(job.folder) / checked.error().where).string(),
         checked.error().message + " by the checks 'multidir slice' runs (printer profile " + printer.name +
             "): nothing was moved; slice the job again rather than edit its G-code");
+  return digests;
 }
 
 }  // namespace multidir::cli

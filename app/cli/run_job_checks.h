@@ -5,6 +5,7 @@
 // (step_recheck.h), on the files as they are now. A job that fails is refused before anything moves, with one
 // message naming the file, the field and the allowed range.
 #include <string>
+#include <vector>
 
 #include "multidir/core/search/machine.h"
 #include "multidir/slicing/printer_profile.h"
@@ -23,8 +24,10 @@ slicing::PrinterProfile loadRunPrinterProfile(const RunJob& job, const std::stri
 
 // Throws FileError at the first step the platform (`platform`, read from `platformSource`, "--machine
 // lab.json") cannot take or whose G-code fails the slicer's checks against `printer`; names the job file, the
-// field and the allowed range (or the G-code file, step, line and reason).
-void checkRunJob(const RunJob& job, const core::MachineSpec& platform, const std::string& platformSource,
+// field and the allowed range (or the G-code file, step, line and reason). Returns, for each step of
+// `job.steps`, the SHA-256 of the G-code bytes it checked (content_digest.h): the run gives it to the printer
+// link, which refuses a file that no longer has it, so what is printed is what was checked.
+[[nodiscard]] std::vector<std::string> checkRunJob(const RunJob& job, const core::MachineSpec& platform, const std::string& platformSource,
                  const slicing::PrinterProfile& printer);
 
 }  // namespace multidir::cli

@@ -79,6 +79,8 @@ PrintRun::PrintRun(Positioner& positioner, std::vector<PrintStep> steps, PrintRu
     : m_positioner(positioner), m_printer(printer), m_steps(std::move(steps)), m_options(std::move(options)) {
   if (!m_options.steadyNow) m_options.steadyNow = [] { return std::chrono::steady_clock::now(); };
   if (!m_options.wallNow) m_options.wallNow = [] { return std::chrono::system_clock::now(); };
+  // Warnings from before this run (a link the studio keeps across runs) were the earlier run's to log.
+  if (m_printer != nullptr) m_protocolWarningsLogged = m_printer->status().protocolWarnings;
 }
 
 std::string PrintRun::stepLabel() const {
@@ -393,6 +395,7 @@ void PrintRun::finishRegion() {
 void PrintRun::tick() {
   const PositionerSnapshot snapshot = m_positioner.snapshot();
   watchStop(snapshot);
+  if (m_printer != nullptr) logProtocolWarnings();
   if (m_awaitingPrinterStop && m_printer->status().stop.confirmed) {
     m_awaitingPrinterStop = false;
     enter(m_state, stepLabel() + ": " + m_printer->name() + " confirmed the emergency stop");
@@ -473,10 +476,25 @@ void PrintRun::beginPrint(const PositionerSnapshot& snapshot) {
   m_printInterrupted = false;
   m_printerPausedLogged = false;
   m_progressTenths = -1;
-  m_printerCommand = m_printer->upload(m_steps[m_step].gcodePath, remoteName());
+  m_printerCommand = m_printer->upload(m_steps[m_step].gcodePath, remoteName(), m_steps[m_step].gcodeSha256);
   enter(PrintRunState::Printing, stepLabel() + ": settled; uploading " + m_steps[m_step].gcodePath + " to " +
                                      m_printer->name() + " as " + remoteName());
   if (m_printRequest) m_printRequest(m_step, m_steps[m_step]);
+}
+
+void PrintRun::logProtocolWarnings() {
+  const PrinterStatus p = m_printer->status();
+  // The count starts again at a reconnect of the link: all of its warnings are then new.
+  if (p.protocolWarnings < m_protocolWarningsLogged) m_protocolWarningsLogged = 0;
+  if (p.protocolWarnings == m_protocolWarningsLogged) return;
+  // Only the latest warning's words are kept by the link: those before it, since the last tick, are counted.
+  const std::uint64_t earlier = p.protocolWarnings - m_protocolWarningsLogged - 1;
+  m_protocolWarningsLogged = p.protocolWarnings;
+  enter(m_state, stepLabel() + ": warning from " + m_printer->name() + ": " + p.lastWarning +
+                     (earlier > 0 ? " (and " + std::to_string(earlier) + " earlier since the last one logged)"
+                                  : std::string()) +
+                     "; the link went on without it (" + std::to_string(p.protocolWarnings) +
+                     (p.protocolWarnings == 1 ? " warning" : " warnings") + " since the link connected)");
 }
 
 void PrintRun::interruptPrint(const std::string& reason) {

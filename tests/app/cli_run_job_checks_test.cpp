@@ -248,6 +248,31 @@ TEST_F(CliRunJobChecks, SighupWhileThePlatformHomesStopsIt) {
   EXPECT_FALSE(devices->rotaryState().homing);  // the stop reached the platform
 }
 
+// Issue 28: the step files were checked before the first move, but the printer link read step-02.gcode again
+// when step 2 came up: a file replaced while step 1 printed was uploaded and printed unchecked.
+TEST_F(CliRunJobChecks, AStepFileReplacedAfterTheCheckIsNotUploadedAndTheRunStopsNamingIt) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunJobChecks.Replaced");
+  multidir::test::writeJob(dir + "/job");
+  startPrinter(10.0);  // step 1 prints for about 3 s: time to replace step 2's file
+  auto cli = std::async(std::launch::async, [&] { return run(dir); });
+  bool replaced = false;
+  for (int i = 0; i < 6000 && !replaced; ++i) {  // at most 60 s
+    if (printerRequests("/printer/print/start") >= 1) {
+      std::ofstream(dir + "/job/step-02.gcode") << multidir::test::stepGcode(2, true);
+      replaced = true;
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+  const CliRun result = cli.get();
+  ASSERT_TRUE(replaced) << result.out << result.err;
+  EXPECT_EQ(result.exitCode, 4) << result.out << result.err;
+  EXPECT_NE(result.out.find("step-02.gcode changed after it was checked; nothing of it was sent"), std::string::npos)
+      << result.out;
+  EXPECT_EQ(printerRequests("/server/files/upload"), 1);  // step 1's only
+  EXPECT_EQ(printerRequests("/printer/print/start"), 1);
+}
+
 // Issue 28: `--log /dev/full` lost the log silently.
 TEST_F(CliRunJobChecks, ALogFileThatCannotBeWrittenIsReportedAtOnceAndTheRunGoesOn) {
   const std::string dir = multidir::test::scratchDirectory("CliRunJobChecks.LogFull");

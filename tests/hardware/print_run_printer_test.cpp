@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "multidir/core/search/decompose.h"
+#include "multidir/hardware/content_digest.h"
 #include "multidir/hardware/device_simulator.h"
 #include "multidir/hardware/print_run.h"
 #include "multidir/hardware/rotary_platform.h"
@@ -436,6 +437,66 @@ TEST_P(PrintRunWithMarlinTest, ExtraOksWithoutTemperatureReportsPauseTheRunSayin
   EXPECT_EQ(run.currentStep(), 0u);
 }
 
+// Issue 28: `multidir run` checked every step's G-code before the first move, but the link read the file again
+// when its step came up, so a step-02.gcode replaced while step 1 printed was printed unchecked. Now the link
+// compares what it reads with the SHA-256 taken at the check, refuses it, and the run pauses naming the file.
+TEST_P(PrintRunWithPrinterTest, AStepFileReplacedAfterItsCheckIsNotSentAndTheRunPausesNamingIt) {
+  // Files of this test alone: the fixture's are rewritten by other tests of the protocol running beside it.
+  const auto dir = std::filesystem::path(testing::TempDir()) /
+                   (std::string("print-run-replaced-step-") + protocolText(GetParam()));
+  std::vector<PrintStep> checked = steps();
+  for (std::size_t i = 0; i < checked.size(); ++i) {
+    checked[i].gcodePath = writeFile(dir / ("step-0" + std::to_string(i + 1) + ".gcode"), shortGcode());
+    checked[i].gcodeSha256 = sha256Hex(shortGcode());  // as the pre-run check took it
+  }
+  startPrinter(20.0);
+  PrintRun run(*positioner, checked, runOptions(), printer.get());
+  ASSERT_TRUE(run.start().ok());
+  untilFirstStart(run);
+  writeFile(checked[1].gcodePath, heatersLeftOnGcode());  // replaced while step 1 prints
+
+  ASSERT_TRUE(tickUntil(run, [&] { return run.state() == PrintRunState::Paused; }, 6000)) << wholeLog(run);
+  EXPECT_EQ(run.currentStep(), 1u);
+  EXPECT_NE(run.lastProblem().find("step-02.gcode changed after it was checked; nothing of it was sent"),
+            std::string::npos)
+      << run.lastProblem();
+  EXPECT_EQ(printerSim->starts().size(), 1u);  // step 1's only
+  EXPECT_EQ(printerSim->completedJobs(), 1);
+  EXPECT_FALSE(run.stepBegun());
+}
+
+// Issue 28: the Marlin link counted stray oks in PrinterStatus::protocolWarnings, but neither the run's log nor
+// `multidir run` said anything of them.
+TEST_P(PrintRunWithMarlinTest, AStrayOkIsLoggedOnceInTheRunsLog) {
+  PrintRun run = runWithPrinter(20.0);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
+  marlin().sendStrayOks(1);
+  const auto warnings = [&] {
+    return std::count_if(run.log().begin(), run.log().end(), [](const PrintRunLogEntry& e) {
+      return e.message.find("warning from Marlin printer") != std::string::npos;
+    });
+  };
+  ASSERT_TRUE(tickUntil(run, [&] { return warnings() > 0; })) << wholeLog(run);
+  EXPECT_TRUE(logMentions(run, "an ok")) << wholeLog(run);
+  tickUntil(run, [] { return false; }, 50);  // 100 ms more: the same warning is not logged again
+  EXPECT_EQ(static_cast<std::uint64_t>(warnings()), printer->status().protocolWarnings) << wholeLog(run);
+}
+
+// Noise on the serial line (a wrong baud rate) is logged in the link's words, without raw control characters.
+TEST_P(PrintRunWithMarlinTest, NoiseOnTheSerialLineIsLoggedAsAWarningWithoutControlCharacters) {
+  PrintRun run = runWithPrinter(20.0);
+  ASSERT_TRUE(run.start().ok());
+  ASSERT_TRUE(untilPrinting(run)) << wholeLog(run);
+  marlin().garbleOutput(true);
+  ASSERT_TRUE(tickUntil(run, [&] { return logMentions(run, "warning from Marlin printer"); })) << wholeLog(run);
+  EXPECT_TRUE(logMentions(run, "not Marlin's protocol")) << wholeLog(run);
+  marlin().garbleOutput(false);
+  for (const PrintRunLogEntry& e : run.log())
+    for (const char c : e.message)
+      EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << "raw control character in: " << e.message;
+}
+
 // Interlocks, with doubles whose state the test sets.
 
 class StillPositioner : public Positioner {
@@ -462,7 +523,8 @@ class ScriptedPrinter : public PrinterLink {
  public:
   core::Status connect() override { return core::Done{}; }
   void disconnect() override {}
-  std::future<core::Status> upload(const std::string&, const std::string& name) override {
+  using PrinterLink::upload;
+  std::future<core::Status> upload(const std::string&, const std::string& name, const std::string&) override {
     uploads.push_back(name);
     return done();
   }
@@ -595,6 +657,17 @@ TEST(PrintRunInterlock, TheLogHoldsNoRawControlCharactersOfAFileName) {
     for (const char c : e.message)
       EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 || c == 0x7f) << "raw control character in: " << e.message;
   EXPECT_TRUE(logMentions(run, R"(step\r\n01\x1b[2J.gcode)")) << wholeLog(run);
+}
+
+// A link's warning quotes what came from outside: its control characters reach the log escaped.
+TEST(PrintRunInterlock, AProtocolWarningIsLoggedWithItsControlCharactersEscaped) {
+  StillPositioner platform;
+  ScriptedPrinter printer;
+  PrintRun run = oneStepRun(platform, printer);
+  printer.state.protocolWarnings = 1;
+  printer.state.lastWarning = "noise \r\n\x1b[2J";
+  run.tick();
+  EXPECT_TRUE(logMentions(run, R"(warning from test printer: noise \r\n\x1b[2J)")) << wholeLog(run);
 }
 
 TEST(PrintRunInterlock, ThePrinterIsNotStartedWhileThePlatformReportsMotion) {

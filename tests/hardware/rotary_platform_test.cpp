@@ -334,6 +334,22 @@ TEST_F(RotaryPlatformTest, StopRefusedAsBusyIsWrittenAgainUntilTheControllerTake
   EXPECT_FALSE(outcome(platform->moveTo(20.0)).ok());  // still latched
 }
 
+// Issue 28: the stop MultiDir writes after it detects a stall was written once: refused as busy, it was never
+// written again and the controller went on driving the stuck motor. It is latched like the operator's stop now.
+TEST_F(RotaryPlatformTest, TheStopAfterAStallRefusedAsBusyIsWrittenAgainUntilTheControllerTakesIt) {
+  auto platform = homed();
+  sim.refuseStops(SimulatedDevice::Rotary, 6, 3);  // busy, three times
+  sim.setMotorStuck(true);
+  ASSERT_TRUE(outcome(platform->moveTo(30.0)).ok());
+  ASSERT_TRUE(eventually([&] { return platform->status().fault == RotaryFault::Stall; }));
+
+  ASSERT_TRUE(eventually([&] { return !sim.rotaryState().moving; }));  // the controller took a stop
+  EXPECT_TRUE(eventually([&] { return platform->status().stop.confirmed; })) << platform->status().stop.problem;
+  int stops = 0;
+  for (const SimulatedCommandRecord& record : sim.commandLog()) stops += record.command == 5 ? 1 : 0;
+  EXPECT_EQ(stops, 4);  // three refused, the fourth taken, and none after the controller confirmed it
+}
+
 TEST_F(RotaryPlatformTest, EmergencyStopIsNotDowngradedByALaterStop) {
   auto platform = homed();
   ASSERT_TRUE(outcome(platform->emergencyStop()).ok());

@@ -264,10 +264,11 @@ class RotaryPlatform::Impl {
         m_progressTime = now;
       }
     });
-    if (stall) {
-      auto stopped = port.writeRegisters(rr::kCommand, {rr::kCmdStop}, "the stop command after a stall (register 3)");
-      if (!stopped.ok()) m_link.noteError(stopped.error().message);
-    }
+    // Latched like the operator's stop (issue 28): written first on the worker's next turn and again every
+    // reconnectInitialDelay while the controller refuses it (busy...), and after every reconnect, until it takes
+    // it. A single write the controller refused left the stuck motor driven. The future is not waited for: the
+    // latch's state (status().stop) tells when the controller confirmed it.
+    if (stall) (void)latch(StopKind::Stop, rr::kCmdStop, "stop");
     m_link.publish();
     return core::Done{};
   }

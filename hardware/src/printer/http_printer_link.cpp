@@ -4,10 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <sstream>
 
 #include "printable_text.h"
+#include "printer/checked_gcode.h"
 
 namespace multidir::hardware {
 
@@ -36,16 +35,6 @@ std::string percentEncode(const std::string& text) {
     }
   }
   return out;
-}
-
-core::Result<std::string> readFileToUpload(const std::string& localPath) {
-  std::ifstream in(localPath, std::ios::binary);
-  if (!in)
-    return core::Error{core::ErrorCode::FileNotFound,
-                       "cannot read the G-code file to upload: check that it exists (slice the job first)", localPath};
-  std::ostringstream content;
-  content << in.rdbuf();
-  return content.str();
 }
 
 std::string plainFileNameProblem(const std::string& remoteName) {
@@ -126,11 +115,12 @@ void HttpPrinterLink::disconnect() {
   m_stop.cancelWaiters(m_name);
 }
 
-std::future<core::Status> HttpPrinterLink::upload(const std::string& localPath, const std::string& remoteName) {
+std::future<core::Status> HttpPrinterLink::upload(const std::string& localPath, const std::string& remoteName,
+                                                  const std::string& checkedSha256) {
   if (const std::string problem = plainFileNameProblem(remoteName); !problem.empty())
     return readyStatus(invalidParameter(problem, m_name));
-  return submit("uploading " + remoteName, true, [this, localPath, remoteName](const BoundedHttpClient&) {
-    const core::Result<std::string> content = readFileToUpload(localPath);
+  return submit("uploading " + remoteName, true, [this, localPath, remoteName, checkedSha256](const BoundedHttpClient&) {
+    const core::Result<std::string> content = readGcodeToSend(localPath, checkedSha256, "upload");
     if (!content) return core::Status(content.error());
     return postFile(client(m_options.uploadTimeout), *content, remoteName);
   });

@@ -35,7 +35,9 @@ class HttpPrinterLink : public PrinterLink {
   core::Status connect() override;
   void disconnect() override;
   // Refuses a name that is not a plain file name, reads the file (FileNotFound), and queues postFile().
-  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override;
+  using PrinterLink::upload;
+  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName,
+                                   const std::string& checkedSha256) override;
   // Refuses a name that is not a plain file name, and queues postStart().
   std::future<core::Status> startPrint(const std::string& remoteName) override;
   std::future<core::Status> emergencyStop() override;

@@ -10,13 +10,14 @@
 #include <cerrno>
 #include <cstring>
 #include <deque>
-#include <fstream>
+#include <sstream>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "printer/checked_gcode.h"
 #include "printer/latched_emergency_stop.h"
 #include "printer/marlin_line_ledger.h"
 #include "printer/marlin_protocol.h"
@@ -83,11 +84,13 @@ class MarlinLink : public PrinterLink {
     m_stop.cancelWaiters(m_name);
   }
 
-  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) override {
+  using PrinterLink::upload;
+  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName,
+                                   const std::string& checkedSha256) override {
     if (remoteName.empty() || remoteName.find('/') != std::string::npos || remoteName.find("..") != std::string::npos)
       return readyFuture<core::Status>(
           invalid("the printer's file name '" + remoteName + "' must be a plain file name", m_name));
-    return submit(Command::Upload, "loading " + remoteName, true, localPath, remoteName);
+    return submit(Command::Upload, "loading " + remoteName, true, localPath, remoteName, checkedSha256);
   }
   std::future<core::Status> startPrint(const std::string& remoteName) override {
     return submit(Command::Start, "starting " + remoteName, true, {}, remoteName);
@@ -138,6 +141,7 @@ class MarlinLink : public PrinterLink {
     std::string what;
     std::string localPath;
     std::string remoteName;
+    std::string checkedSha256;  // upload: the SHA-256 the file had when it was checked ("": none)
     std::promise<core::Status> promise;
   };
   using Role = marlin::LineRole;
@@ -155,7 +159,8 @@ class MarlinLink : public PrinterLink {
   };
 
   std::future<core::Status> submit(Command command, const std::string& what, bool refusedWhileStopped,
-                                   std::string localPath = {}, std::string remoteName = {}) {
+                                   std::string localPath = {}, std::string remoteName = {},
+                                   std::string checkedSha256 = {}) {
     std::promise<core::Status> promise;
     std::future<core::Status> future = promise.get_future();
     {
@@ -170,7 +175,8 @@ class MarlinLink : public PrinterLink {
             m_name));
         return future;
       }
-      m_queue.push_back(Pending{command, what, std::move(localPath), std::move(remoteName), std::move(promise)});
+      m_queue.push_back(Pending{command, what, std::move(localPath), std::move(remoteName), std::move(checkedSha256),
+                                std::move(promise)});
     }
     m_threads.workerWake().notify_all();
     return future;
@@ -560,7 +566,7 @@ class MarlinLink : public PrinterLink {
       m_queue.pop_front();
       if (pending.command == Command::Upload) {
         lock.unlock();  // reading a large file does not hold the status
-        core::Result<std::vector<std::string>> lines = readJobFile(pending.localPath);
+        core::Result<std::vector<std::string>> lines = readJobFile(pending.localPath, pending.checkedSha256);
         lock.lock();
         if (!lines) {
           pending.promise.set_value(lines.error());
@@ -652,11 +658,11 @@ class MarlinLink : public PrinterLink {
     return core::Done{};
   }
 
-  core::Result<std::vector<std::string>> readJobFile(const std::string& path) const {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-      return core::Error{core::ErrorCode::FileNotFound,
-                         "cannot read the G-code file to stream: check that it exists (slice the job first)", path};
+  // The file is read once (readGcodeToSend checks it is what was checked); its lines are what is streamed.
+  core::Result<std::vector<std::string>> readJobFile(const std::string& path, const std::string& checkedSha256) const {
+    const core::Result<std::string> content = readGcodeToSend(path, checkedSha256, "stream");
+    if (!content) return content.error();
+    std::istringstream in(*content);
     std::vector<std::string> lines;
     std::string raw;
     while (std::getline(in, raw)) {

@@ -54,6 +54,10 @@
 //             |                                             | states    | latched by their drivers
 //             |                                             | stay)     |
 //
+// With a printer, every tick (in every state) logs the link's protocol warnings that are new since the last
+// one (PrinterStatus::protocolWarnings, lastWarning: a stray ok, a noise line), once each; warnings from
+// before the run was constructed are not repeated.
+//
 // A stop is only requested by stopMotion(); "motion stopped" is logged when a later tick() sees the device's
 // confirmation (PositionerSnapshot::stopConfirmed), in whatever state the run is then (ticks keep watching
 // for it in Paused, Faulted and Aborted); a stop not confirmed after a second is logged once as a warning. A
@@ -100,6 +104,11 @@ struct PrintStep {
   // The step's G-code, uploaded to the printer and started when the run has a printer link; empty: the
   // operator prints the region and presses "region done".
   std::string gcodePath = {};
+  // The SHA-256 of the G-code as the owner checked it (content_digest.h; `multidir run` takes it in its checks
+  // before the first move): the printer link refuses the file if what it reads then differs, so a file
+  // replaced during the run is never printed unchecked (the run pauses, naming it). "": not checked by the
+  // owner (the studio); the file is sent as it is when its step comes up.
+  std::string gcodeSha256 = {};
 };
 
 // What the sequencer needs to know of the device that orients the platform.
@@ -238,6 +247,8 @@ class PrintRun {
   std::string remoteName() const;
   std::string advice(PrintRunAdvice situation) const;
   void switchHeatersOff();
+  // Logs the printer link's protocol warnings (PrinterStatus::protocolWarnings) not logged yet, once each.
+  void logProtocolWarnings();
   bool stepUsesPrinter() const { return m_printer != nullptr && !m_steps[m_step].gcodePath.empty(); }
 
   enum class PrintPhase { None, Uploading, Starting, Running };
@@ -269,6 +280,7 @@ class PrintRun {
   bool m_printerPausedLogged = false;
   int m_progressTenths = -1;
   bool m_awaitingPrinterStop = false;
+  std::uint64_t m_protocolWarningsLogged = 0;  // PrinterStatus::protocolWarnings up to which the log told
   std::vector<PrintRunLogEntry> m_log;
   LogCallback m_logCallback;
   PrintRequestCallback m_printRequest;

@@ -96,8 +96,16 @@ class PrinterLink {
 
   // Commands: each future ends once the printer answered (Done or its error). Refused at once while an
   // emergency stop is latched (upload, start, resume).
-  // Sends `localPath` to the printer as `remoteName` (a plain file name, replaced when it exists).
-  virtual std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) = 0;
+  // Sends `localPath` to the printer as `remoteName` (a plain file name, replaced when it exists). The file is
+  // read once, into memory, and what is sent (uploaded, or streamed line by line by the Marlin link) is those
+  // bytes. With `checkedSha256` (content_digest.h: the SHA-256 taken when the file was checked), bytes whose
+  // SHA-256 differs are refused (InvalidParameter, "step-02.gcode changed after it was checked; nothing of it
+  // was sent ..."), so a file replaced after its check is never printed; "": whatever the file holds is sent.
+  virtual std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName,
+                                           const std::string& checkedSha256) = 0;
+  std::future<core::Status> upload(const std::string& localPath, const std::string& remoteName) {
+    return upload(localPath, remoteName, std::string());
+  }
   virtual std::future<core::Status> startPrint(const std::string& remoteName) = 0;
   virtual std::future<core::Status> pausePrint() = 0;
   virtual std::future<core::Status> resumePrint() = 0;
