@@ -57,9 +57,7 @@ std::string limitsText(const FirmwareRotaryAxis& axis, const char* key) {
 
 }  // namespace
 
-TwoAxisAngles restAngles(const TwoAxisPlatform& axes) {
-  return {axes.tilt.zeroDegrees, axes.rotation.zeroDegrees};
-}
+TwoAxisAngles restAngles(const TwoAxisPlatform& axes) { return {axes.tilt.zeroDegrees, axes.rotation.zeroDegrees}; }
 
 core::Result<TwoAxisAngles> twoAxisAngles(const Eigen::Vector3d& direction, const TwoAxisPlatform& axes,
                                           const TwoAxisAngles& previous, int step) {
@@ -110,8 +108,9 @@ core::Result<TwoAxisAngles> twoAxisAngles(const Eigen::Vector3d& direction, cons
   if (best) return *best;
 
   if (tiltReachable.empty()) {
-    const Candidate& nearer =
-        missDegrees(candidates[0].tiltBase, T) <= missDegrees(candidates[1].tiltBase, T) ? candidates[0] : candidates[1];
+    const Candidate& nearer = missDegrees(candidates[0].tiltBase, T) <= missDegrees(candidates[1].tiltBase, T)
+                                  ? candidates[0]
+                                  : candidates[1];
     return Error{ErrorCode::InvalidParameter,
                  "needs a tilt of " + degrees(nearestTurnTo(nearer.tiltBase, T)) + " deg (axis " + T.letter + "); " +
                      limitsText(T, "tilt") +

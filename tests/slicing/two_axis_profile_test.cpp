@@ -51,13 +51,14 @@ TEST(PrinterProfile, ShippedKlipperTwoAxisProfileNamesItsTwoManualSteppers) {
 
 TEST(PrinterProfile, EveryTwoAxisKeyIsRead) {
   const auto p = loadPrinterProfile(profileFile(
-      "all", "# multidir.platform = firmware-2axis\n# multidir.axis_mount = rotation-on-tilt\n"
-             "# multidir.tilt_axis = A\n# multidir.rotation_axis = C\n# multidir.tilt_zero = 12.5\n"
-             "# multidir.tilt_direction = -1\n# multidir.tilt_min = -30\n# multidir.tilt_max = 120\n"
-             "# multidir.rotation_zero = -45\n# multidir.rotation_direction = -1\n# multidir.rotation_min = -36000\n"
-             "# multidir.rotation_max = 36000\n# multidir.tilt_along = Y\n# multidir.tilt_height = 42.5\n"
-             "# multidir.rotation_center = 80,90\n# multidir.klipper_tilt_stepper = stepper_a\n"
-             "# multidir.klipper_rotation_stepper = stepper_c\n"));
+      "all",
+      "# multidir.platform = firmware-2axis\n# multidir.axis_mount = rotation-on-tilt\n"
+      "# multidir.tilt_axis = A\n# multidir.rotation_axis = C\n# multidir.tilt_zero = 12.5\n"
+      "# multidir.tilt_direction = -1\n# multidir.tilt_min = -30\n# multidir.tilt_max = 120\n"
+      "# multidir.rotation_zero = -45\n# multidir.rotation_direction = -1\n# multidir.rotation_min = -36000\n"
+      "# multidir.rotation_max = 36000\n# multidir.tilt_along = Y\n# multidir.tilt_height = 42.5\n"
+      "# multidir.rotation_center = 80,90\n# multidir.klipper_tilt_stepper = stepper_a\n"
+      "# multidir.klipper_rotation_stepper = stepper_c\n"));
   ASSERT_TRUE(p.ok()) << p.error().describe();
   const TwoAxisPlatform& axes = p->twoAxis;
   EXPECT_EQ(axes.tilt.letter, "A");
@@ -78,8 +79,8 @@ TEST(PrinterProfile, EveryTwoAxisKeyIsRead) {
 }
 
 TEST(PrinterProfile, TheRotationAxisStandsAtThePlatformCentreUnlessTold) {
-  const auto p = loadPrinterProfile(profileFile(
-      "centre", "bed_shape = 0x0,250x0,250x210,0x210\n# multidir.platform = firmware-2axis\n"));
+  const auto p = loadPrinterProfile(
+      profileFile("centre", "bed_shape = 0x0,250x0,250x210,0x210\n# multidir.platform = firmware-2axis\n"));
   ASSERT_TRUE(p.ok()) << p.error().describe();
   EXPECT_EQ(p->twoAxis.rotationCenter, Eigen::Vector2d(125, 105));
 }

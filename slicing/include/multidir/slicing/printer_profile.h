@@ -27,8 +27,8 @@
 //   # multidir.klipper_tilt_stepper = tilt   Klipper: the [manual_stepper]s that drive them
 //   # multidir.klipper_rotation_stepper = rotation
 //
-// Shipped profiles live in resources/printers/NAME.ini (marlin-220, klipper-rotary, robot-0.8); the format
-// is documented in docs/slicing.md.
+// Shipped profiles live in resources/printers/NAME.ini (marlin-220, klipper-rotary, robot-0.8, open5x-rrf,
+// klipper-2axis); the format is documented in docs/slicing.md.
 #include <Eigen/Core>
 #include <map>
 #include <string>
@@ -90,7 +90,7 @@ struct PrinterProfile {
   Eigen::Vector2d bedMax() const;
 };
 
-// The shipped profiles' names, sorted ("klipper-rotary", "marlin-220", "robot-0.8").
+// The shipped profiles' names, sorted ("klipper-2axis", "klipper-rotary", "marlin-220", "open5x-rrf", "robot-0.8").
 std::vector<std::string> builtinPrinterNames();
 
 // Reads a profile: a path to a .ini, or the name of a shipped one. Checks bed_shape (at least three corners,

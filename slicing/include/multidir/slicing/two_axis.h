@@ -21,11 +21,11 @@ namespace multidir::slicing {
 
 // One rotary axis of the firmware.
 struct FirmwareRotaryAxis {
-  std::string letter;             // the G-code axis letter (A B C U V W)
-  std::string klipperStepper;     // Klipper: the [manual_stepper] that drives it
-  double zeroDegrees = 0.0;       // the axis' coordinate at the convention's angle 0 (level, resp. azimuth 0)
-  double direction = 1.0;         // +1 or -1: the axis' coordinate per degree of the convention's angle
-  double minDegrees = -90.0;      // the axis' limits, in its own coordinate (as the firmware's M208 / position_min)
+  std::string letter;          // the G-code axis letter (A B C U V W)
+  std::string klipperStepper;  // Klipper: the [manual_stepper] that drives it
+  double zeroDegrees = 0.0;    // the axis' coordinate at the convention's angle 0 (level, resp. azimuth 0)
+  double direction = 1.0;      // +1 or -1: the axis' coordinate per degree of the convention's angle
+  double minDegrees = -90.0;   // the axis' limits, in its own coordinate (as the firmware's M208 / position_min)
   double maxDegrees = 90.0;
 };
 
@@ -36,7 +36,7 @@ struct TwoAxisPlatform {
   FirmwareRotaryAxis tilt{"U", "tilt", 0.0, 1.0, -90.0, 90.0};
   FirmwareRotaryAxis rotation{"V", "rotation", 0.0, 1.0, -360.0, 360.0};
   TiltAlong tiltAlong = TiltAlong::X;
-  double tiltHeightMm = 0.0;                                // printer Z of the tilt axis
+  double tiltHeightMm = 0.0;                                 // printer Z of the tilt axis
   Eigen::Vector2d rotationCenter = Eigen::Vector2d::Zero();  // printer XY of the rotation axis at tilt zero
 };
 
