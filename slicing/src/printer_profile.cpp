@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -70,6 +71,94 @@ std::string shippedList() {
   return list;
 }
 
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// One multidir.tilt_* / rotation_* / axis_mount / klipper_*_stepper key of a firmware-2axis printer.
+core::Status readTwoAxisKey(const std::string& key, const std::string& value, const std::string& at,
+                            TwoAxisPlatform& axes, bool& rotationCenterGiven) {
+  if (key == "axis_mount") {
+    if (value == "rotation-on-tilt") return core::Done{};
+    if (value == "tilt-on-rotation")
+      return Error{ErrorCode::InvalidParameter,
+                   "'tilt-on-rotation' (a tilt axis carried by a turntable) is not supported: MultiDir drives the "
+                   "Open5x arrangement only, the rotation axis riding on the tilt cradle (rotation-on-tilt)",
+                   at};
+    return Error{ErrorCode::InvalidParameter, "'" + value + "': use rotation-on-tilt (the rotation axis riding on "
+                 "the tilt cradle, as Open5x; the only arrangement supported)", at};
+  }
+  if (key == "klipper_tilt_stepper" || key == "klipper_rotation_stepper") {
+    if (value.empty() || value.find_first_of(" \t=") != std::string::npos)
+      return Error{ErrorCode::InvalidParameter, "'" + value + "' is not a stepper name: give a [manual_stepper]'s name",
+                   at};
+    (key == "klipper_tilt_stepper" ? axes.tilt : axes.rotation).klipperStepper = value;
+    return core::Done{};
+  }
+  const bool tilt = key.rfind("tilt_", 0) == 0;
+  FirmwareRotaryAxis& axis = tilt ? axes.tilt : axes.rotation;
+  const std::string field = key.substr(tilt ? 5 : 9);
+  if (field == "axis") {
+    if (value.size() != 1 || std::string("ABCUVW").find(value[0]) == std::string::npos)
+      return Error{ErrorCode::InvalidParameter, "'" + value + "': one of the letters A B C U V W", at};
+    axis.letter = value;
+    return core::Done{};
+  }
+  if (field == "direction") {
+    double sign = 0.0;
+    if (!parseDouble(value, sign) || (sign != 1.0 && sign != -1.0))
+      return Error{ErrorCode::InvalidParameter, "'" + value + "': give 1 (the axis counts as the convention's angle) "
+                   "or -1 (against it; docs/slicing.md \"Two firmware axes\")", at};
+    axis.direction = sign;
+    return core::Done{};
+  }
+  if (tilt && field == "along") {
+    if (value == "X" || value == "x") axes.tiltAlong = TiltAlong::X;
+    else if (value == "Y" || value == "y") axes.tiltAlong = TiltAlong::Y;
+    else return Error{ErrorCode::InvalidParameter, "'" + value + "': X or Y, the printer axis the tilt axis runs along", at};
+    return core::Done{};
+  }
+  if (!tilt && field == "center") {
+    Eigen::Vector2d p;
+    if (!parsePair(value, ',', p))
+      return Error{ErrorCode::MalformedFile, "'" + value + "' is not X,Y: give X and Y in " + coordinateRangeText(), at};
+    if (std::abs(p.x()) > kMaxPrinterCoordinateMm || std::abs(p.y()) > kMaxPrinterCoordinateMm)
+      return Error{ErrorCode::InvalidParameter, "'" + value + "' is out of range: give X and Y in " + coordinateRangeText(),
+                   at};
+    axes.rotationCenter = p;
+    rotationCenterGiven = true;
+    return core::Done{};
+  }
+  double* number = field == "zero" ? &axis.zeroDegrees
+                   : field == "min" ? &axis.minDegrees
+                   : field == "max" ? &axis.maxDegrees
+                   : tilt && field == "height" ? &axes.tiltHeightMm
+                                               : nullptr;
+  if (!number) return Error{ErrorCode::MalformedFile, "unknown MultiDir key (see docs/slicing.md)", at};
+  // The range, and the message naming it, live with every other numeric setting's (setting_ranges.h).
+  if (core::Status s = checkSettingValue("multidir." + key, value, at); !s) return s;
+  parseDouble(value, *number);
+  return core::Done{};
+}
+
+// What no single key can say: each axis' limits in order, two different letters.
+core::Status checkTwoAxisTogether(const TwoAxisPlatform& axes, const std::string& at) {
+  for (const auto& [axis, name] : {std::pair<const FirmwareRotaryAxis*, std::string>{&axes.tilt, "tilt"},
+                                   {&axes.rotation, "rotation"}})
+    if (!(axis->minDegrees < axis->maxDegrees))
+      return Error{ErrorCode::InvalidParameter,
+                   name + "_min (" + shortNumber(axis->minDegrees) + ") is not below " + name + "_max (" +
+                       shortNumber(axis->maxDegrees) + "): give the lower limit first",
+                   at + name + "_min"};
+  if (axes.tilt.letter == axes.rotation.letter)
+    return Error{ErrorCode::InvalidParameter,
+                 "the tilt and the rotation axis are both " + axes.tilt.letter + ": give each its own letter",
+                 at + "rotation_axis"};
+  return core::Done{};
+}
+
 }  // namespace
 
 const char* platformDriveName(PlatformDrive drive) {
@@ -77,6 +166,7 @@ const char* platformDriveName(PlatformDrive drive) {
     case PlatformDrive::None: return "none";
     case PlatformDrive::FirmwareAxis: return "firmware-axis";
     case PlatformDrive::Modbus: return "modbus";
+    case PlatformDrive::FirmwareTwoAxis: return "firmware-2axis";
   }
   return "none";
 }
@@ -206,14 +296,17 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
   const auto ownWhere = [&](const std::string& key) { return where("multidir." + key); };
   profile.platformCenter = 0.5 * (profile.bedMin() + profile.bedMax());
   profile.park = profile.bedMin();
+  bool rotationCenterGiven = false;
   for (const auto& [key, value] : own) {
     if (key == "name") {
       profile.name = value;
     } else if (key == "platform") {
       if (value == "none") profile.platform = PlatformDrive::None;
       else if (value == "firmware-axis") profile.platform = PlatformDrive::FirmwareAxis;
+      else if (value == "firmware-2axis") profile.platform = PlatformDrive::FirmwareTwoAxis;
       else if (value == "modbus") profile.platform = PlatformDrive::Modbus;
-      else return Error{ErrorCode::InvalidParameter, "'" + value + "': use none, firmware-axis or modbus", ownWhere(key)};
+      else return Error{ErrorCode::InvalidParameter, "'" + value + "': use none, firmware-axis, firmware-2axis or modbus",
+                        ownWhere(key)};
     } else if (key == "dialect") {
       const core::Result<Dialect> d = parseDialect(value);
       if (!d) return Error{ErrorCode::InvalidParameter, d.error().message, ownWhere(key)};
@@ -253,10 +346,16 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
         return Error{ErrorCode::InvalidParameter, "'" + value + "' is out of range: give mm in [0, 1000]", ownWhere(key)};
     } else if (key == "step_start_gcode") {
       profile.stepStartGcode = value;
+    } else if (key.rfind("tilt_", 0) == 0 || key.rfind("rotation_", 0) == 0 || key == "axis_mount" ||
+               key == "klipper_tilt_stepper" || key == "klipper_rotation_stepper") {
+      if (core::Status s = readTwoAxisKey(key, value, ownWhere(key), profile.twoAxis, rotationCenterGiven); !s)
+        return s.error();
     } else {
       return Error{ErrorCode::MalformedFile, "unknown MultiDir key (see docs/slicing.md)", ownWhere(key)};
     }
   }
+  if (!rotationCenterGiven) profile.twoAxis.rotationCenter = profile.platformCenter;
+  if (core::Status s = checkTwoAxisTogether(profile.twoAxis, where("multidir.")); !s) return s.error();
   return profile;
 }
 

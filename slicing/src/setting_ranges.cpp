@@ -39,6 +39,16 @@ constexpr Range kRanges[] = {
     {"retract_speed", 0.0, 2000.0, false, true, "mm/s", true, false},
     {"deretract_speed", 0.0, 2000.0, true, true, "mm/s", true, false},
     {"travel_speed", 0.0, 2000.0, false, true, "mm/s", false, false},
+    // MultiDir's own numbers for two firmware axes (the profile's multidir.* comment keys): a tilt axis' zero and
+    // limits within one turn either way; a rotation axis may be continuous, so its limits go to 100000 degrees
+    // (some 280 turns) and its zero within a turn; the tilt axis' height is a printer coordinate.
+    {"multidir.tilt_zero", -360.0, 360.0, true, true, "degrees", false, false},
+    {"multidir.tilt_min", -360.0, 360.0, true, true, "degrees", false, false},
+    {"multidir.tilt_max", -360.0, 360.0, true, true, "degrees", false, false},
+    {"multidir.rotation_zero", -360.0, 360.0, true, true, "degrees", false, false},
+    {"multidir.rotation_min", -100000.0, 100000.0, true, true, "degrees", false, false},
+    {"multidir.rotation_max", -100000.0, 100000.0, true, true, "degrees", false, false},
+    {"multidir.tilt_height", -kMaxPrinterCoordinateMm, kMaxPrinterCoordinateMm, true, true, "mm", false, false},
 };
 
 // Percentages: of a layer height or a nozzle, 1000 % at most.

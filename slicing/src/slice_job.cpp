@@ -377,6 +377,15 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
                      std::to_string(input.steps.size()) +
                      " steps: choose a profile with a rotary platform (firmware-axis or modbus)",
                  profile.path};
+  // Two firmware axes (issue 26): the profile and the angles are there (two_axis.h), the stitched program that
+  // turns them between steps is not yet, so nothing turns the platform: one-step jobs only, as for `none`.
+  if (profile.platform == PlatformDrive::FirmwareTwoAxis && input.steps.size() > 1)
+    return Error{ErrorCode::InvalidParameter,
+                 "the printer '" + profile.name + "' turns its platform with two firmware axes (multidir.platform = "
+                 "firmware-2axis), whose multi-step program MultiDir does not write yet, but the job has " +
+                     std::to_string(input.steps.size()) +
+                     " steps: slice it for a printer whose platform is driven over Modbus or by one firmware axis",
+                 profile.path};
   if (profile.platform == PlatformDrive::FirmwareAxis && input.machine.kind == core::MachineKind::TiltRotate &&
       input.steps.size() > 1)
     return Error{ErrorCode::InvalidParameter,

@@ -41,7 +41,7 @@ TEST(PrinterProfile, ShippedProfilesLoadByName) {
   const auto robot = loadPrinterProfile("robot-0.8");
   ASSERT_TRUE(robot.ok()) << robot.error().describe();
   EXPECT_DOUBLE_EQ(robot->nozzleDiameterMm, 0.8);
-  EXPECT_EQ(builtinPrinterNames(), (std::vector<std::string>{"klipper-rotary", "marlin-220", "robot-0.8"}));
+  EXPECT_EQ(builtinPrinterNames(), (std::vector<std::string>{"klipper-2axis", "klipper-rotary", "marlin-220", "open5x-rrf", "robot-0.8"}));
 }
 
 TEST(PrinterProfile, BedWithoutAreaIsRefusedNamingTheKey) {

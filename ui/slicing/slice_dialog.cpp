@@ -40,6 +40,10 @@ QString platformText(const slicing::PrinterProfile& profile) {
           .arg(QString::fromStdString(profile.rotaryAxis));
     case slicing::PlatformDrive::Modbus:
       return SliceDialog::tr("MultiDir turns the platform over Modbus (Hardware dock): one program per step.");
+    case slicing::PlatformDrive::FirmwareTwoAxis:
+      return SliceDialog::tr("The firmware tilts (axis %1) and rotates (axis %2) the platform; MultiDir does not "
+                             "write their program yet, so it prints one-step plans only.")
+          .arg(QString::fromStdString(profile.twoAxis.tilt.letter), QString::fromStdString(profile.twoAxis.rotation.letter));
     case slicing::PlatformDrive::None:
       break;
   }

@@ -2,7 +2,7 @@
 // A printer as MultiDir slices for it: a PrusaSlicer .ini (every slicer setting, loaded as it is by the
 // slicer) plus MultiDir's own keys, written as comment lines the slicer ignores:
 //
-//   # multidir.platform = firmware-axis      none | firmware-axis | modbus: who turns the platform
+//   # multidir.platform = firmware-axis      none | firmware-axis | firmware-2axis | modbus: who turns it
 //   # multidir.dialect = klipper             klipper | marlin | rrf: how a firmware axis is turned
 //   # multidir.rotary_axis = A               the G-code axis letter of the platform
 //   # multidir.klipper_stepper = rotary_a    Klipper: the [manual_stepper] that drives it
@@ -13,8 +13,22 @@
 //   # multidir.clearance_margin = 5          mm above the swept part while the platform turns
 //   # multidir.step_start_gcode = G92 E0     start of steps 2.. (they print on plastic: no homing or purge)
 //
-// Shipped profiles live in resources/printers/NAME.ini (marlin-220, klipper-rotary, robot-0.8); the format
-// is documented in docs/slicing.md.
+// firmware-2axis (two_axis.h: a tilt axis with the rotation axis riding on its cradle, as Open5x):
+//   # multidir.axis_mount = rotation-on-tilt the only arrangement supported
+//   # multidir.tilt_axis = U                 G-code letters of the two axes (A B C U V W, different)
+//   # multidir.rotation_axis = V
+//   # multidir.tilt_zero = 0                 each axis' coordinate at rest (level; azimuth 0), degrees
+//   # multidir.tilt_direction = 1            +1 or -1: the axis' coordinate per degree of the convention's angle
+//   # multidir.tilt_min = -90                each axis' limits in its own coordinate, degrees
+//   # multidir.tilt_max = 90                 (and rotation_zero, rotation_direction, rotation_min, rotation_max)
+//   # multidir.tilt_along = X                X | Y: the printer axis the tilt axis runs along
+//   # multidir.tilt_height = 0               printer Z of the tilt axis, mm
+//   # multidir.rotation_center = 110,110     printer XY of the rotation axis at tilt zero (default: platform_center)
+//   # multidir.klipper_tilt_stepper = tilt   Klipper: the [manual_stepper]s that drive them
+//   # multidir.klipper_rotation_stepper = rotation
+//
+// Shipped profiles live in resources/printers/NAME.ini (marlin-220, klipper-rotary, robot-0.8, open5x-rrf,
+// klipper-2axis); the format is documented in docs/slicing.md.
 #include <Eigen/Core>
 #include <map>
 #include <string>
@@ -22,6 +36,7 @@
 #include <vector>
 
 #include "multidir/core/common/result.h"
+#include "multidir/slicing/two_axis.h"
 
 namespace multidir::slicing {
 
@@ -30,12 +45,14 @@ enum class PlatformDrive {
   None,          // an ordinary printer: it can print the first step only
   FirmwareAxis,  // the printer's firmware (an A axis): one stitched program, job.gcode
   Modbus,        // MultiDir over Modbus (the hardware panel's print run): one program per step
+  FirmwareTwoAxis,  // the firmware's tilt and rotation axes (Open5x, two_axis.h): one-step jobs until their
+                    // stitched program is written
 };
 
 // How a firmware axis is driven.
 enum class Dialect { Klipper, Marlin, RepRapFirmware };
 
-const char* platformDriveName(PlatformDrive drive);  // "none", "firmware-axis", "modbus"
+const char* platformDriveName(PlatformDrive drive);  // "none", "firmware-axis", "firmware-2axis", "modbus"
 const char* dialectName(Dialect dialect);            // "klipper", "marlin", "rrf"
 // Errors: InvalidParameter listing the dialects there are.
 core::Result<Dialect> parseDialect(const std::string& text);
@@ -64,6 +81,7 @@ struct PrinterProfile {
   Eigen::Vector2d park = Eigen::Vector2d::Zero();
   double clearanceMarginMm = 5.0;
   std::string stepStartGcode = "G92 E0";  // escaped as in the .ini
+  TwoAxisPlatform twoAxis;                 // firmware-2axis: the two axes (rotationCenter defaults to platformCenter)
 
   // Every `key = value` setting of the .ini, for the slicer's keys not listed above.
   std::map<std::string, std::string> settings;
@@ -72,7 +90,7 @@ struct PrinterProfile {
   Eigen::Vector2d bedMax() const;
 };
 
-// The shipped profiles' names, sorted ("klipper-rotary", "marlin-220", "robot-0.8").
+// The shipped profiles' names, sorted ("klipper-2axis", "klipper-rotary", "marlin-220", "open5x-rrf", "robot-0.8").
 std::vector<std::string> builtinPrinterNames();
 
 // Reads a profile: a path to a .ini, or the name of a shipped one. Checks bed_shape (at least three corners,
