@@ -13,6 +13,7 @@
 
 #include "cli_args.h"
 #include "multidir/core/plan/print_job.h"
+#include "multidir/slicing/printer_profile.h"
 #include "multidir/slicing/slice_job.h"
 #include "number_text.h"
 #include "progress_line.h"
@@ -33,7 +34,7 @@ const char* const kSliceHelp =
     "\n"
     "Options:\n"
     "  --printer PROFILE      a PrusaSlicer .ini with MultiDir's keys (docs/slicing.md) or a shipped profile:\n"
-    "                         marlin-220, klipper-rotary, robot-0.8 (required)\n"
+    "                         SHIPPED_PROFILES (required)\n"
     "  -o OUTDIR              output folder (created if missing; required): empty, or holding an earlier job,\n"
     "                         which the new job replaces only once it is complete\n"
     "  --force                also write into an OUTDIR holding other files (the job's files replace those of\n"
@@ -56,6 +57,13 @@ namespace {
 
 namespace core = multidir::core;
 namespace slicing = multidir::slicing;
+
+// "klipper-2axis, klipper-rotary, ...": the shipped printer profiles, as --printer takes them.
+std::string shippedProfileList() {
+  std::string list;
+  for (const std::string& name : slicing::builtinPrinterNames()) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
 namespace fs = std::filesystem;
 
 const std::string kCommand = "multidir slice";
@@ -109,8 +117,7 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   s.input = onlyPositional(parsed, "slice", "plan or print job", "multidir slice PLAN_OR_JOB --printer PROFILE -o OUTDIR");
   s.outDir = outputFolder(parsed, "slice", "the G-code and the print job");
   if (!parsed.has("--printer"))
-    throw UsageError(kCommand + ": --printer is required: a PrusaSlicer .ini or one of marlin-220, klipper-rotary, "
-                                "robot-0.8");
+    throw UsageError(kCommand + ": --printer is required: a PrusaSlicer .ini or one of " + shippedProfileList());
   s.printer = parsed.value("--printer", "");
   if (parsed.has("--dialect")) {
     const core::Result<slicing::Dialect> d = slicing::parseDialect(parsed.value("--dialect", ""));
@@ -201,7 +208,9 @@ int runSlice(const std::vector<std::string>& args, std::ostream& out, std::ostre
   bool helpOnly = false;
   const Settings s = settingsFrom(args, helpOnly);
   if (helpOnly) {
-    out << kSliceHelp;
+    std::string help = kSliceHelp;
+    help.replace(help.find("SHIPPED_PROFILES"), std::string("SHIPPED_PROFILES").size(), shippedProfileList());
+    out << help;
     return kExitOk;
   }
   const core::Result<slicing::PrinterProfile> profile = slicing::loadPrinterProfile(s.printer);
