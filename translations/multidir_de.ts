@@ -33,35 +33,44 @@
 <context>
     <name>GcodeExport</name>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="22"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="75"/>
         <source>Could not write %1: %2. Check that the folder can be written and the disk is not full.</source>
         <translation>%1 konnte nicht geschrieben werden: %2. Prüfen Sie, ob der Ordner beschreibbar und der Datenträger nicht voll ist.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="28"/>
-        <location filename="../ui/slicing/gcode_export.cpp" line="62"/>
         <source>Could not replace %1: it is in use or read-only.</source>
-        <translation>%1 konnte nicht ersetzt werden: die Datei wird verwendet oder ist schreibgeschützt.</translation>
+        <translation type="vanished">%1 konnte nicht ersetzt werden: die Datei wird verwendet oder ist schreibgeschützt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="33"/>
         <source>Could not move %1 into place.</source>
-        <translation>%1 konnte nicht an den Zielort verschoben werden.</translation>
+        <translation type="vanished">%1 konnte nicht an den Zielort verschoben werden.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="46"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="35"/>
         <source>There is no sliced job to export: slice the plan first.</source>
         <translation>Es gibt kein Slicing-Ergebnis zum Exportieren: slicen Sie zuerst den Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="51"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="40"/>
         <source>%1 is a file, not a folder: choose a folder for the G-code.</source>
         <translation>%1 ist eine Datei, kein Ordner: wählen Sie einen Ordner für den G-Code.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="56"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="45"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>Der Ordner %1 konnte nicht angelegt werden: prüfen Sie, ob der übergeordnete Ordner existiert und beschreibbar ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="51"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="66"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="83"/>
+        <source>Could not export the G-code: %1</source>
+        <translation>Der G-Code konnte nicht exportiert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="57"/>
+        <source>%1 holds files that are not a MultiDir job (%2 is one), so nothing was exported: choose an empty folder or one holding an earlier job.</source>
+        <translation>%1 enthält Dateien, die nicht zu einem MultiDir-Auftrag gehören (%2 ist eine davon), daher wurde nichts exportiert: Wählen Sie einen leeren Ordner oder einen mit einem früheren Auftrag.</translation>
     </message>
 </context>
 <context>
@@ -2102,9 +2111,6 @@ Qt %1</translation>
     </message>
 </context>
 <context>
-    <name>multidir::ui::PlanEvaluationJob</name>
-</context>
-<context>
     <name>multidir::ui::PlanPanel</name>
     <message>
         <location filename="../ui/panels/plan_panel.cpp" line="46"/>
@@ -3463,92 +3469,97 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>MultiDir dreht die Plattform über Modbus (Fenster „Hardware“): ein Programm je Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="46"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="44"/>
+        <source>The firmware tilts (axis %1) and rotates (axis %2) the platform; MultiDir does not write their program yet, so it prints one-step plans only.</source>
+        <translation>Die Firmware kippt (Achse %1) und dreht (Achse %2) die Plattform; MultiDir schreibt deren Programm noch nicht, daher druckt sie nur Pläne mit einem Schritt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="50"/>
         <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
         <translation>Ein gewöhnlicher Drucker: er kann das Teil nicht drehen und druckt daher nur Pläne mit einem Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="53"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="57"/>
         <source>Slice the Plan</source>
         <translation>Plan slicen</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="61"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="65"/>
         <source>Load a PrusaSlicer .ini...</source>
         <translation>PrusaSlicer-.ini laden...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="71"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="75"/>
         <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
         <translation>Wie die Firmware die Plattform dreht: MANUAL_STEPPER bei Klipper oder G1 A bei Marlin und RepRapFirmware</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="76"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="80"/>
         <source>layer_height=0.3 fill_density=10%</source>
         <translation>layer_height=0.3 fill_density=10%</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="77"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
         <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
         <translation>PrusaSlicer-Einstellungen, die die des Profils überschreiben, als KEY=VALUE durch Leerzeichen getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="78"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
         <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
         <translation>Zusätzlich das ganze Modell in Aufwärtsrichtung mit den Stützen des Slicers slicen (Vergleich)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
         <source>The prusa-slicer program: a name found on PATH, or a full path</source>
         <translation>Das Programm prusa-slicer: ein Name, der im PATH gefunden wird, oder ein vollständiger Pfad</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="90"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="94"/>
         <source>Printer:</source>
         <translation>Drucker:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="96"/>
         <source>Dialect:</source>
         <translation>Dialekt:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="93"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
         <source>Slicer settings:</source>
         <translation>Slicer-Einstellungen:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="95"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
         <source>Slicer program:</source>
         <translation>Slicer-Programm:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="101"/>
         <source>Slice</source>
         <translation>Slicen</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="123"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="127"/>
         <source>Cannot use the printer profile: %1</source>
         <translation>Das Druckerprofil kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="158"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="162"/>
         <source>Load a PrusaSlicer Printer Profile</source>
         <translation>PrusaSlicer-Druckerprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="160"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="164"/>
         <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
         <translation>PrusaSlicer-Profile (*.ini);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="175"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="179"/>
         <source>Choose a printer profile.</source>
         <translation>Wählen Sie ein Druckerprofil.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="185"/>
         <source>Slicer settings: %1</source>
         <translation>Slicer-Einstellungen: %1</translation>
     </message>
@@ -3556,67 +3567,67 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SliceJobRunner</name>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="55"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
         <source>Slicing step %1 of %2</source>
         <translation>Slicen: Schritt %1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
         <source>Slicing the whole model along up with the slicer&apos;s supports, for comparison</source>
         <translation>Slicen des ganzen Modells in Aufwärtsrichtung mit den Stützen des Slicers, zum Vergleich</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="61"/>
         <source>Stitching the steps into one program</source>
         <translation>Die Schritte werden zu einem Programm zusammengefügt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="63"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="65"/>
         <source>Reading the G-code for the preview</source>
         <translation>G-Code wird für die Vorschau gelesen</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="69"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="71"/>
         <source>The slicer &apos;%1&apos; was not found: install PrusaSlicer (scripts/install-deps.sh) or give the slicer program&apos;s full path in the Slice dialog.</source>
         <translation>Der Slicer „%1“ wurde nicht gefunden: installieren Sie PrusaSlicer (scripts/install-deps.sh) oder geben Sie im Dialog „Plan slicen“ den vollständigen Pfad des Slicer-Programms an.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="73"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
         <source>The slicer failed: its command and last output lines are below.</source>
         <translation>Der Slicer ist fehlgeschlagen: sein Befehl und die letzten Ausgabezeilen stehen unten.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="77"/>
         <source>The part does not fit this printer, so nothing was sliced: by how much, and what would help, is below.</source>
         <translation>Das Teil passt nicht auf diesen Drucker, daher wurde nichts geslict: um wie viel, und was helfen würde, steht unten.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="80"/>
         <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
         <translation>Der G-Code hat die Prüfungen von MultiDir nicht bestanden und wurde verworfen: Schritt, Zeile und Grund stehen unten.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="100"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="105"/>
         <source>A slicing job is already running.</source>
         <translation>Ein Slicing-Auftrag läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="105"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="110"/>
         <source>Could not create a temporary folder for the G-code: %1</source>
         <translation>Für den G-Code konnte kein temporärer Ordner angelegt werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="138"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="151"/>
         <source>Not enough memory to slice this plan.</source>
         <translation>Nicht genug Speicher, um diesen Plan zu slicen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="170"/>
         <source>The audit of the G-code failed, so unsupported extrusions are not marked: %1</source>
         <translation>Die Prüfung des G-Codes ist fehlgeschlagen, daher sind ungestützte Extrusionen nicht markiert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="141"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="154"/>
         <source>Unexpected error while slicing.</source>
         <translation>Unerwarteter Fehler beim Slicen.</translation>
     </message>
@@ -3630,7 +3641,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
         <location filename="../ui/panels/slice_panel.cpp" line="45"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="133"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>Jeden Schritt des angezeigten Plans mit seinen Stützen zu G-Code slicen (PrusaSlicer)</translation>
     </message>
@@ -3660,92 +3671,92 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Filament (g)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="71"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="79"/>
         <source>Export G-code...</source>
         <translation>G-Code exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="73"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
         <source>Write step-NN.gcode, job.gcode (when the firmware turns the platform) and the print job with its estimates into a folder</source>
         <translation>step-NN.gcode, job.gcode (wenn die Firmware die Plattform dreht) und den Druckauftrag mit seinen Schätzungen in einen Ordner schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="75"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="83"/>
         <source>Preview G-code</source>
         <translation>G-Code-Vorschau</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="78"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="86"/>
         <source>Show the toolpaths in place of the regions; click again for the plan view</source>
         <translation>Die Werkzeugwege anstelle der Bereiche zeigen; erneut klicken für die Planansicht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="89"/>
         <source>Show the layers printed up to this one (all steps, in printing order)</source>
         <translation>Die Schichten bis einschließlich dieser zeigen (alle Schritte, in Druckreihenfolge)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="84"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="92"/>
         <source>Travel moves</source>
         <translation>Leerfahrten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="75"/>
         <source>Extrusion that rests on nothing printed before it, as the audit finds it (multidir audit, check b): drawn in magenta in the G-code preview</source>
         <translation>Extrusion, die auf nichts zuvor Gedrucktem aufliegt, wie die Prüfung sie findet (multidir audit, Prüfung b): in der G-Code-Vorschau magenta gezeichnet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="207"/>
         <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
         <translation>Ungestützte Extrusion: %1 mm (%2 %) in Magenta</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="98"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="106"/>
         <source>Layers:</source>
         <translation>Schichten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="102"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="110"/>
         <source>G-code</source>
         <translation>G-Code</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="127"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="136"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>Zeigen Sie zuerst einen Plan an: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="145"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="154"/>
         <source>Starting the slicer...</source>
         <translation>Slicer wird gestartet...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="168"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="177"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="176"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="185"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
         <source>Total (%1)</source>
         <translation>Gesamt (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="181"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="190"/>
         <source>Fixed direction, slicer supports</source>
         <translation>Feste Richtung, Slicer-Stützen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="192"/>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>Das ganze Modell in Aufwärtsrichtung mit den eigenen Stützen von PrusaSlicer gedruckt: der Vergleich</translation>
     </message>
@@ -3820,7 +3831,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Abbruch: Slicer wird angehalten...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="164"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="170"/>
         <source>Sliced for %1: %n step(s), %2 of printing.</source>
         <translation>
             <numerusform>Slicen für %1 abgeschlossen: %n Schritt, %2 Druckzeit.</numerusform>
@@ -3828,27 +3839,27 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="168"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
         <source>Slicing finished.</source>
         <translation>Slicen abgeschlossen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="175"/>
         <source>Slicing finished; the audit failed.</source>
         <translation>Slicen abgeschlossen; die Prüfung ist fehlgeschlagen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="201"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="208"/>
         <source>Layer %1 of %2: step %3, its layer %4</source>
         <translation>Schicht %1 von %2: Schritt %3, dessen Schicht %4</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="207"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
         <source>There is no G-code to export: slice the plan first.</source>
         <translation>Es gibt keinen G-Code zum Exportieren: slicen Sie zuerst den Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="217"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="224"/>
         <source>G-code exported to %1 (%n file(s)).</source>
         <translation>
             <numerusform>G-Code nach %1 exportiert (%n Datei).</numerusform>
@@ -3856,24 +3867,34 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
         <source>Export G-code to Folder</source>
         <translation>G-Code in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
         <source>-gcode</source>
         <translation>-gcode</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="228"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="235"/>
         <source>G-code folders (*)</source>
         <translation>G-Code-Ordner (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="232"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
         <source>Export G-code</source>
         <translation>G-Code exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="242"/>
+        <source>%1 holds files that are not a MultiDir job (%2 is one).
+
+Write the job into this folder anyway? Files with the job&apos;s names are replaced; the others stay.</source>
+        <translation>%1 enthält Dateien, die nicht zu einem MultiDir-Auftrag gehören (%2 ist eine davon).
+
+Den Auftrag trotzdem in diesen Ordner schreiben? Dateien mit den Namen des Auftrags werden ersetzt, die anderen bleiben.</translation>
     </message>
 </context>
 <context>

@@ -33,35 +33,44 @@
 <context>
     <name>GcodeExport</name>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="22"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="75"/>
         <source>Could not write %1: %2. Check that the folder can be written and the disk is not full.</source>
         <translation>无法写入 %1：%2。请检查文件夹是否可写入以及磁盘是否已满。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="28"/>
-        <location filename="../ui/slicing/gcode_export.cpp" line="62"/>
         <source>Could not replace %1: it is in use or read-only.</source>
-        <translation>无法替换 %1：该文件正在使用或为只读。</translation>
+        <translation type="vanished">无法替换 %1：该文件正在使用或为只读。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="33"/>
         <source>Could not move %1 into place.</source>
-        <translation>无法将 %1 移动到目标位置。</translation>
+        <translation type="vanished">无法将 %1 移动到目标位置。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="46"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="35"/>
         <source>There is no sliced job to export: slice the plan first.</source>
         <translation>没有可导出的切片作业：请先对方案切片。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="51"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="40"/>
         <source>%1 is a file, not a folder: choose a folder for the G-code.</source>
         <translation>%1 是文件而不是文件夹：请为 G 代码选择一个文件夹。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/gcode_export.cpp" line="56"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="45"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>无法创建文件夹 %1：请检查其上级文件夹是否存在且可写入。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="51"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="66"/>
+        <location filename="../ui/slicing/gcode_export.cpp" line="83"/>
+        <source>Could not export the G-code: %1</source>
+        <translation>无法导出 G 代码：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/gcode_export.cpp" line="57"/>
+        <source>%1 holds files that are not a MultiDir job (%2 is one), so nothing was exported: choose an empty folder or one holding an earlier job.</source>
+        <translation>%1 中有不属于 MultiDir 作业的文件（例如 %2），因此未导出任何内容：请选择空文件夹或存有先前作业的文件夹。</translation>
     </message>
 </context>
 <context>
@@ -2099,9 +2108,6 @@ Qt %1</translation>
     </message>
 </context>
 <context>
-    <name>multidir::ui::PlanEvaluationJob</name>
-</context>
-<context>
     <name>multidir::ui::PlanPanel</name>
     <message>
         <location filename="../ui/panels/plan_panel.cpp" line="46"/>
@@ -3456,92 +3462,97 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>由 MultiDir 通过 Modbus 转动平台（“硬件”停靠窗口）：每个步骤一个程序。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="46"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="44"/>
+        <source>The firmware tilts (axis %1) and rotates (axis %2) the platform; MultiDir does not write their program yet, so it prints one-step plans only.</source>
+        <translation>由固件倾斜（轴 %1）并旋转（轴 %2）平台；MultiDir 尚不能编写其程序，因此只打印单步计划。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="50"/>
         <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
         <translation>普通打印机：无法转动零件，因此只能打印单步骤方案。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="53"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="57"/>
         <source>Slice the Plan</source>
         <translation>对方案切片</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="61"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="65"/>
         <source>Load a PrusaSlicer .ini...</source>
         <translation>加载 PrusaSlicer .ini...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="71"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="75"/>
         <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
         <translation>固件转动平台的方式：Klipper 的 MANUAL_STEPPER，或 Marlin 和 RepRapFirmware 的 G1 A</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="76"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="80"/>
         <source>layer_height=0.3 fill_density=10%</source>
         <translation>layer_height=0.3 fill_density=10%</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="77"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
         <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
         <translation>覆盖打印机配置的 PrusaSlicer 设置，格式为 KEY=VALUE，以空格分隔</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="78"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
         <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
         <translation>同时沿向上方向用切片软件的支撑对整个模型切片（用于比较）</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
         <source>The prusa-slicer program: a name found on PATH, or a full path</source>
         <translation>prusa-slicer 程序：可在 PATH 中找到的名称，或完整路径</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="90"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="94"/>
         <source>Printer:</source>
         <translation>打印机：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="96"/>
         <source>Dialect:</source>
         <translation>固件方言：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="93"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
         <source>Slicer settings:</source>
         <translation>切片设置：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="95"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
         <source>Slicer program:</source>
         <translation>切片程序：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="101"/>
         <source>Slice</source>
         <translation>切片</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="123"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="127"/>
         <source>Cannot use the printer profile: %1</source>
         <translation>无法使用打印机配置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="158"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="162"/>
         <source>Load a PrusaSlicer Printer Profile</source>
         <translation>加载 PrusaSlicer 打印机配置</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="160"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="164"/>
         <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
         <translation>PrusaSlicer 配置 (*.ini);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="175"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="179"/>
         <source>Choose a printer profile.</source>
         <translation>请选择打印机配置。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="185"/>
         <source>Slicer settings: %1</source>
         <translation>切片设置：%1</translation>
     </message>
@@ -3549,67 +3560,67 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SliceJobRunner</name>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="55"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
         <source>Slicing step %1 of %2</source>
         <translation>正在切片步骤 %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
         <source>Slicing the whole model along up with the slicer&apos;s supports, for comparison</source>
         <translation>正在沿向上方向用切片软件的支撑对整个模型切片，用于比较</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="61"/>
         <source>Stitching the steps into one program</source>
         <translation>正在将各步骤拼接为一个程序</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="63"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="65"/>
         <source>Reading the G-code for the preview</source>
         <translation>正在读取 G 代码以供预览</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="69"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="71"/>
         <source>The slicer &apos;%1&apos; was not found: install PrusaSlicer (scripts/install-deps.sh) or give the slicer program&apos;s full path in the Slice dialog.</source>
         <translation>未找到切片软件“%1”：请安装 PrusaSlicer（scripts/install-deps.sh），或在“对方案切片”对话框中填写切片程序的完整路径。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="73"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
         <source>The slicer failed: its command and last output lines are below.</source>
         <translation>切片软件运行失败：其命令和最后几行输出见下方。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="77"/>
         <source>The part does not fit this printer, so nothing was sliced: by how much, and what would help, is below.</source>
         <translation>零件放不进这台打印机，因此没有切片：超出多少、如何解决见下方。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="80"/>
         <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
         <translation>G 代码未通过 MultiDir 的检查，未予保留：步骤、行号和原因见下方。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="100"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="105"/>
         <source>A slicing job is already running.</source>
         <translation>已有切片作业正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="105"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="110"/>
         <source>Could not create a temporary folder for the G-code: %1</source>
         <translation>无法为 G 代码创建临时文件夹：%1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="138"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="151"/>
         <source>Not enough memory to slice this plan.</source>
         <translation>内存不足，无法对此方案切片。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="170"/>
         <source>The audit of the G-code failed, so unsupported extrusions are not marked: %1</source>
         <translation>G 代码审核失败，因此未标记无支撑挤出：%1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="141"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="154"/>
         <source>Unexpected error while slicing.</source>
         <translation>切片时发生意外错误。</translation>
     </message>
@@ -3623,7 +3634,7 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
         <location filename="../ui/panels/slice_panel.cpp" line="45"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="133"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>将当前方案的每个步骤连同其支撑切片为 G 代码（PrusaSlicer）</translation>
     </message>
@@ -3653,92 +3664,92 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>耗材 (g)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="71"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="79"/>
         <source>Export G-code...</source>
         <translation>导出 G 代码...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="73"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
         <source>Write step-NN.gcode, job.gcode (when the firmware turns the platform) and the print job with its estimates into a folder</source>
         <translation>将 step-NN.gcode、job.gcode（由固件转动平台时）以及带估算值的打印作业写入文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="75"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="83"/>
         <source>Preview G-code</source>
         <translation>预览 G 代码</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="78"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="86"/>
         <source>Show the toolpaths in place of the regions; click again for the plan view</source>
         <translation>显示打印路径而非区域；再次点击返回方案视图</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="89"/>
         <source>Show the layers printed up to this one (all steps, in printing order)</source>
         <translation>显示截至此层已打印的各层（所有步骤，按打印顺序）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="84"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="92"/>
         <source>Travel moves</source>
         <translation>空驶移动</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="75"/>
         <source>Extrusion that rests on nothing printed before it, as the audit finds it (multidir audit, check b): drawn in magenta in the G-code preview</source>
         <translation>未落在任何先前打印内容上的挤出（multidir audit 检查 b 的结果）：在 G 代码预览中以品红色绘制</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="207"/>
         <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
         <translation>无支撑挤出：%1 mm（%2 %），以品红色显示</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="98"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="106"/>
         <source>Layers:</source>
         <translation>层：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="102"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="110"/>
         <source>G-code</source>
         <translation>G 代码</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="127"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="136"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>请先显示方案：运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="145"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="154"/>
         <source>Starting the slicer...</source>
         <translation>正在启动切片软件...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="168"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="177"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="176"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="185"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
         <source>Total</source>
         <translation>合计</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="178"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
         <source>Total (%1)</source>
         <translation>合计（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="181"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="190"/>
         <source>Fixed direction, slicer supports</source>
         <translation>固定方向，切片软件支撑</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="192"/>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>整个模型沿向上方向打印并使用 PrusaSlicer 自身的支撑：用于比较</translation>
     </message>
@@ -3813,58 +3824,68 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>正在取消：正在停止切片软件...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="164"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="170"/>
         <source>Sliced for %1: %n step(s), %2 of printing.</source>
         <translation>
             <numerusform>已为 %1 完成切片：%n 个步骤，打印用时 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="168"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
         <source>Slicing finished.</source>
         <translation>切片完成。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="175"/>
         <source>Slicing finished; the audit failed.</source>
         <translation>切片完成；审核失败。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="201"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="208"/>
         <source>Layer %1 of %2: step %3, its layer %4</source>
         <translation>第 %1 / %2 层：步骤 %3 的第 %4 层</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="207"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
         <source>There is no G-code to export: slice the plan first.</source>
         <translation>没有可导出的 G 代码：请先对方案切片。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="217"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="224"/>
         <source>G-code exported to %1 (%n file(s)).</source>
         <translation>
             <numerusform>G 代码已导出到 %1（%n 个文件）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
         <source>Export G-code to Folder</source>
         <translation>将 G 代码导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="227"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
         <source>-gcode</source>
         <translation>-gcode</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="228"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="235"/>
         <source>G-code folders (*)</source>
         <translation>G 代码文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="232"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
         <source>Export G-code</source>
         <translation>导出 G 代码</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_session.cpp" line="242"/>
+        <source>%1 holds files that are not a MultiDir job (%2 is one).
+
+Write the job into this folder anyway? Files with the job&apos;s names are replaced; the others stay.</source>
+        <translation>%1 中有不属于 MultiDir 作业的文件（例如 %2）。
+
+仍然将作业写入此文件夹吗？与作业同名的文件将被替换，其他文件保留。</translation>
     </message>
 </context>
 <context>
