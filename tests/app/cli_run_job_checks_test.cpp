@@ -211,19 +211,35 @@ TEST_F(CliRunJobChecks, ANumberNoDoubleHoldsOrNaNIsRefusedNamingItsField) {
   }
 }
 
-// Issue 28: SIGHUP (the terminal closed) killed `run` without stopping anything.
-TEST_F(CliRunJobChecks, SighupCancelsThePrintersJobAsCtrlCDoes) {
-  const std::string dir = multidir::test::scratchDirectory("CliRunJobChecks.Sighup");
+// Issue 28: SIGHUP (the terminal closed) killed `run` without stopping anything; SIGTERM (a service manager's
+// stop) must do what Ctrl-C does too.
+struct StopSignal {
+  const char* timeoutName;  // as `timeout -s` takes it
+  const char* logName;      // as the run's log names it
+};
+
+class CliRunStopSignal : public CliRunJobChecks, public ::testing::WithParamInterface<StopSignal> {};
+
+TEST_P(CliRunStopSignal, CancelsThePrintersJobAndSwitchesTheHeatersOffAsCtrlCDoes) {
+  const std::string dir = multidir::test::scratchDirectory(std::string("CliRunJobChecks.") + GetParam().timeoutName);
   multidir::test::writeJob(dir + "/job");
   startPrinter(1.0);  // the first step prints for about half a minute
-  const CliRun result = run(dir, "", "timeout --preserve-status -s HUP 2");
+  const CliRun result = run(dir, "", std::string("timeout --preserve-status -s ") + GetParam().timeoutName + " 2");
   EXPECT_EQ(result.exitCode, 4) << result.out << result.err;
-  EXPECT_NE(result.out.find("SIGHUP (the terminal closed): stopping both devices"), std::string::npos) << result.out;
-  EXPECT_NE(result.err.find("by SIGHUP"), std::string::npos) << result.err;
+  EXPECT_NE(result.out.find(std::string(GetParam().logName) + ": stopping both devices"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.err.find(std::string("by ") + GetParam().logName), std::string::npos) << result.err;
   EXPECT_EQ(printerRequests("/printer/print/cancel"), 1);
   EXPECT_EQ(printer->state().jobState, "cancelled");
   EXPECT_EQ(printer->state().extruder.targetC, 0.0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Signals, CliRunStopSignal,
+                         ::testing::Values(StopSignal{"HUP", "SIGHUP (the terminal closed)"},
+                                           StopSignal{"TERM", "SIGTERM"}),
+                         [](const ::testing::TestParamInfo<StopSignal>& info) {
+                           return std::string(info.param.timeoutName);
+                         });
 
 // SIGHUP while the platform homes before the first step (from 170 degrees at 10 degrees/s): the platform stops.
 TEST_F(CliRunJobChecks, SighupWhileThePlatformHomesStopsIt) {
