@@ -50,6 +50,7 @@
 #include "ui/studio_startup.h"
 #include "ui/viewer/axis_picker.h"
 #include "ui/viewer/mesh_viewer_widget.h"
+#include "ui/wheel_needs_focus.h"
 
 namespace multidir::ui {
 namespace {
@@ -84,6 +85,8 @@ core::TriangleMesh mergedRegions(const core::Decomposition& plan) {
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  // First, so that every field built below is polished with it: the wheel changes a field only with focus.
+  qApp->installEventFilter(new WheelNeedsFocus(this));
   setWindowTitle(tr("MultiDir Studio"));
   m_viewer = new MeshViewerWidget(this);
   setCentralWidget(m_viewer);
@@ -337,8 +340,6 @@ void MainWindow::buildUpBox() {
   static_assert(static_cast<int>(std::size(axes)) == kAxisEntries);
   m_upBox->setCurrentIndex(4);  // +Z, the samples' up
   m_upIndex = 4;
-  m_upBox->setFocusPolicy(Qt::StrongFocus);  // a wheel over it neither gives it the focus ...
-  m_upBox->installEventFilter(this);         // ... nor turns it (eventFilter)
   connect(m_upBox, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MainWindow::onUpBoxChosen);
   bar->addWidget(m_upBox);
 }
@@ -413,14 +414,6 @@ QString MainWindow::dialogFolder(FileKind kind) const {
     return QFileInfo(m_project->projectPath()).absolutePath();
   if (m_model && !m_model->sourcePath.isEmpty()) return QFileInfo(m_model->sourcePath).absolutePath();
   return QString();
-}
-
-bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-  if (watched == m_upBox && event->type() == QEvent::Wheel && !m_upBox->hasFocus()) {
-    event->ignore();
-    return true;
-  }
-  return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::chooseFile() {

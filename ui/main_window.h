@@ -190,8 +190,6 @@ class MainWindow : public QMainWindow {
  protected:
   // Asks about unsaved project changes first (ProjectSession::confirmClose); saves the window's layout.
   void closeEvent(QCloseEvent* event) override;
-  // The Up box takes no wheel event unless it has the focus: scrolling over the toolbar must not drop a plan.
-  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void buildMenus();
