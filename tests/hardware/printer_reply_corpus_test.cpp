@@ -12,6 +12,6 @@ TEST(FileLoaderCorpus, EveryPrinterReplyIsReadIntoNumbersAPrinterCanReportOrRefu
   ASSERT_GE(files.size(), 5u);
   for (const std::filesystem::path& file : files) {
     SCOPED_TRACE(file.filename().string());
-    EXPECT_EQ(multidir::test::brokenPrinterReplyPromise(multidir::test::readFile(file)), "");
+    EXPECT_EQ(multidir::test::brokenPrinterReplyPromise(multidir::test::corpusText(file)), "");
   }
 }

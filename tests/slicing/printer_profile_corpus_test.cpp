@@ -17,7 +17,7 @@ TEST(FileLoaderCorpus, EveryPrinterProfileIsLoadedOrRefusedAsItsNameSays) {
     SCOPED_TRACE(file.filename().string());
     ASSERT_TRUE(multidir::test::corpusNameIsKnown(file)) << "corpus files are named accept-* or refuse-*";
     const auto loaded = multidir::slicing::loadPrinterProfile(file.string());
-    EXPECT_EQ(multidir::test::brokenRefusalPromise(loaded, multidir::test::readFile(file)), "");
+    EXPECT_EQ(multidir::test::brokenRefusalPromise(loaded, multidir::test::corpusText(file)), "");
     if (multidir::test::corpusSaysAccept(file)) {
       EXPECT_TRUE(loaded.ok()) << loaded.error().describe();
     } else {

@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "slicing_fixtures.h"
 #include "support/test_models.h"
 
 using namespace multidir;
@@ -17,10 +17,7 @@ using namespace multidir::slicing;
 namespace {
 
 std::string profileFile(const std::string& name, const std::string& text) {
-  const std::string dir = test::scratchDirectory("printer_profile." + name);
-  const std::string path = dir + "/" + name + ".ini";
-  std::ofstream(path) << text;
-  return path;
+  return test::writeProfileFile("printer_profile", name, text);
 }
 
 }  // namespace
@@ -41,7 +38,8 @@ TEST(PrinterProfile, ShippedProfilesLoadByName) {
   const auto robot = loadPrinterProfile("robot-0.8");
   ASSERT_TRUE(robot.ok()) << robot.error().describe();
   EXPECT_DOUBLE_EQ(robot->nozzleDiameterMm, 0.8);
-  EXPECT_EQ(builtinPrinterNames(), (std::vector<std::string>{"klipper-2axis", "klipper-rotary", "marlin-220", "open5x-rrf", "robot-0.8"}));
+  EXPECT_EQ(builtinPrinterNames(),
+            (std::vector<std::string>{"klipper-2axis", "klipper-rotary", "marlin-220", "open5x-rrf", "robot-0.8"}));
 }
 
 TEST(PrinterProfile, BedWithoutAreaIsRefusedNamingTheKey) {
@@ -144,8 +142,9 @@ TEST(PrinterProfile, EveryNumericSettingMustBeFiniteAndWithinItsRange) {
 
 TEST(PrinterProfile, PhysicalValuesAtTheEndsOfTheirRangesLoad) {
   const auto p = loadPrinterProfile(profileFile(
-      "ends", "temperature = 0,500\nbed_temperature = 200\nfirst_layer_height = 150%\nextrusion_width = 0\n"
-              "retract_restart_extra = -0.5\nderetract_speed = 0\nbed_shape = -10000x-10000,10000x-10000,10000x10000\n"
-              "# multidir.platform_z = -10\n"));
+      "ends",
+      "temperature = 0,500\nbed_temperature = 200\nfirst_layer_height = 150%\nextrusion_width = 0\n"
+      "retract_restart_extra = -0.5\nderetract_speed = 0\nbed_shape = -10000x-10000,10000x-10000,10000x10000\n"
+      "# multidir.platform_z = -10\n"));
   ASSERT_TRUE(p.ok()) << p.error().describe();
 }

@@ -7,6 +7,7 @@
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/supports/projected_supports.h"
 #include "multidir/slicing/gcode_program.h"
+#include "support/test_models.h"
 
 namespace multidir::test {
 
@@ -41,9 +42,8 @@ core::PrintJob machineJob(const core::LoadedPlan& plan) {
 
 std::vector<std::pair<std::string, std::string>> coarseSettings(double layerHeightMm) {
   const std::string h = std::to_string(layerHeightMm);
-  return {{"layer_height", h},        {"first_layer_height", h}, {"perimeters", "1"},
-          {"top_solid_layers", "1"},  {"bottom_solid_layers", "1"}, {"fill_density", "0%"},
-          {"gcode_comments", "0"}};
+  return {{"layer_height", h},          {"first_layer_height", h}, {"perimeters", "1"},    {"top_solid_layers", "1"},
+          {"bottom_solid_layers", "1"}, {"fill_density", "0%"},    {"gcode_comments", "0"}};
 }
 
 std::string readFile(const std::string& path) {
@@ -52,6 +52,12 @@ std::string readFile(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+std::string writeProfileFile(const std::string& folder, const std::string& name, const std::string& text) {
+  const std::string path = scratchDirectory(folder + "." + name) + "/" + name + ".ini";
+  std::ofstream(path) << text;
+  return path;
 }
 
 std::vector<slicing::GcodeMove> extrusionsOf(const std::string& gcodePath) {

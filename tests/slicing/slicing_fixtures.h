@@ -26,4 +26,7 @@ std::vector<slicing::GcodeMove> extrusionsOf(const std::string& gcodePath);
 
 std::string readFile(const std::string& path);
 
+// Writes `text` to NAME.ini in a fresh scratch folder named `folder`.NAME; returns its path.
+std::string writeProfileFile(const std::string& folder, const std::string& name, const std::string& text);
+
 }  // namespace multidir::test

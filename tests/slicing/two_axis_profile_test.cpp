@@ -3,12 +3,12 @@
 // Open5x arrangement (the rotation axis on the tilt cradle) is accepted.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "multidir/slicing/printer_profile.h"
+#include "slicing_fixtures.h"
 #include "support/test_models.h"
 
 using namespace multidir;
@@ -17,10 +17,7 @@ using namespace multidir::slicing;
 namespace {
 
 std::string profileFile(const std::string& name, const std::string& text) {
-  const std::string dir = test::scratchDirectory("two_axis_profile." + name);
-  const std::string path = dir + "/" + name + ".ini";
-  std::ofstream(path) << text;
-  return path;
+  return test::writeProfileFile("two_axis_profile", name, text);
 }
 
 }  // namespace

@@ -18,7 +18,7 @@ namespace {
 template <typename T>
 void expectAsNamed(const fs::path& file, const Result<T>& loaded) {
   ASSERT_TRUE(multidir::test::corpusNameIsKnown(file)) << "corpus files are named accept-* or refuse-*";
-  EXPECT_EQ(multidir::test::brokenRefusalPromise(loaded, multidir::test::readFile(file)), "");
+  EXPECT_EQ(multidir::test::brokenRefusalPromise(loaded, multidir::test::corpusText(file)), "");
   if (multidir::test::corpusSaysAccept(file)) {
     EXPECT_TRUE(loaded.ok()) << loaded.error().describe();
   } else {
@@ -57,7 +57,7 @@ TEST(FileLoaderCorpus, EveryPlanJsonIsLoadedOrRefusedAsItsNameSays) {
     ASSERT_TRUE(multidir::test::corpusNameIsKnown(file));
     fs::copy_file(file, fs::path(dir) / "plan.json", fs::copy_options::overwrite_existing);
     const Result<LoadedPlan> loaded = loadPlan(dir);
-    EXPECT_EQ(multidir::test::brokenRefusalPromise(loaded, multidir::test::readFile(file)), "");
+    EXPECT_EQ(multidir::test::brokenRefusalPromise(loaded, multidir::test::corpusText(file)), "");
     ASSERT_FALSE(loaded.ok());
     if (multidir::test::corpusSaysAccept(file)) {
       EXPECT_EQ(loaded.error().code, ErrorCode::FileNotFound) << "a sound plan.json fails only for its region files: "
