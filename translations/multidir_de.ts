@@ -2371,8 +2371,8 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
-        <source>Poses tried: the current up, the model&apos;s stable resting poses and sampled directions</source>
-        <translation>Probierte Posen: die aktuelle Aufwärtsrichtung, die stabilen Ruhelagen des Modells und abgetastete Richtungen</translation>
+        <source>Poses tried: the current up and the poses the model stands in on its own</source>
+        <translation>Probierte Posen: die aktuelle Aufwärtsrichtung und die Posen, in denen das Modell von selbst steht</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="50"/>

@@ -2367,8 +2367,8 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
-        <source>Poses tried: the current up, the model&apos;s stable resting poses and sampled directions</source>
-        <translation>尝试的姿态：当前向上方向、模型的稳定放置姿态以及采样方向</translation>
+        <source>Poses tried: the current up and the poses the model stands in on its own</source>
+        <translation>尝试的姿态：当前向上方向以及模型能自行站立的姿态</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="50"/>

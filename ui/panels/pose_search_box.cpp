@@ -28,7 +28,6 @@ QString sourceText(core::PoseSource source) {
   switch (source) {
     case core::PoseSource::Given: return PoseSearchBox::tr("given up");
     case core::PoseSource::Resting: return PoseSearchBox::tr("resting");
-    case core::PoseSource::Sampled: return PoseSearchBox::tr("sampled");
   }
   return {};
 }
@@ -42,7 +41,7 @@ PoseSearchBox::PoseSearchBox(QWidget* parent) : QGroupBox(tr("Best pose"), paren
   m_poses->setObjectName(QStringLiteral("posesToTry"));
   m_poses->setRange(1, 200);
   m_poses->setValue(defaults.poses);
-  m_poses->setToolTip(tr("Poses tried: the current up, the model's stable resting poses and sampled directions"));
+  m_poses->setToolTip(tr("Poses tried: the current up and the poses the model stands in on its own"));
   m_fullSearches = new QSpinBox(this);
   m_fullSearches->setObjectName(QStringLiteral("poseFullSearches"));
   m_fullSearches->setRange(1, defaults.poses);
