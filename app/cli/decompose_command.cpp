@@ -78,6 +78,14 @@ const char* const kDecomposeHelp =
     "\n"
     "Exit codes: 0 ok, 1 the model or profile cannot be read or the plan cannot be written, 2 usage error.\n";
 
+const std::set<std::string> kDecomposeValueOptions = {
+    "--up",      "--machine", "--axis",    "--axis-search",     "--scheme",          "--beam-width",
+    "--alpha",   "--normals", "--refine",  "--offset-step",     "--w",               "--scales",
+    "--min-region-height",    "--min-plane-gain",               "--min-plane-gain-area",
+    "--threads", "--profile", "-o",        "--summary",         "--support-spacing", "--scale",
+    "--pose",    "--poses",   "--pose-searches",                "--proxy-faces"};
+const std::set<std::string> kDecomposeFlags = {"--help", "--no-supports", "--no-proxy"};
+
 namespace {
 
 namespace core = multidir::core;
@@ -190,13 +198,7 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
 }
 
 Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
-  const ParsedArgs parsed =
-      parseArgs(args,
-                {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
-                 "--refine", "--offset-step", "--w", "--scales", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
-                 "--threads", "--profile", "-o", "--summary", "--support-spacing", "--scale", "--pose", "--poses",
-                 "--pose-searches", "--proxy-faces"},
-                {"--help", "--no-supports", "--no-proxy"}, "decompose");
+  const ParsedArgs parsed = parseArgs(args, kDecomposeValueOptions, kDecomposeFlags, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
@@ -356,6 +358,13 @@ void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_
 }
 
 }  // namespace
+
+void checkDecomposeOptions(const std::vector<std::string>& options) {
+  std::vector<std::string> args = {"model", "-o", "plan"};
+  args.insert(args.end(), options.begin(), options.end());
+  bool helpOnly = false;
+  settingsFrom(args, helpOnly);
+}
 
 int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   bool helpOnly = false;
