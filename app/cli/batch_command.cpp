@@ -61,6 +61,7 @@ namespace fs = std::filesystem;
 
 const std::string kCommand = "multidir batch";
 const char* const kRowFile = "batch-row.json";
+const std::string kCancelled = "the search was cancelled (Ctrl-C)";
 
 struct Settings {
   std::string input;
@@ -220,11 +221,13 @@ BatchRow runModel(const Settings& s, const BatchModel& model, const fs::path& wo
   std::ifstream in(summary);
   const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
   fs::remove(summary, ec);
-  if (outcome.exitCode != kExitOk || json.is_discarded() || json.value("cancelled", false)) {
+  const bool summarised = json.is_object();
+  const bool cancelled = summarised && json.value("cancelled", false);
+  if (outcome.exitCode != kExitOk || !summarised || cancelled) {
     row.status = "failed";
-    row.error = !outcome.lastError.empty() ? outcome.lastError
-                : json.value("cancelled", false) ? "the search was cancelled"
-                                                 : "multidir decompose exited with code " + std::to_string(outcome.exitCode);
+    row.error = cancelled                    ? kCancelled
+                : !outcome.lastError.empty() ? outcome.lastError
+                                             : "multidir decompose exited with code " + std::to_string(outcome.exitCode);
     return row;
   }
   row.status = "done";
@@ -280,8 +283,13 @@ int runBatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
           << formatNumber("%.2f", row.jgAfterMm2) << " mm^2, " << row.regions << " regions, "
           << formatNumber("%.2f", row.seconds) << " s\n";
     }
+    const bool cancelled = row.error == kCancelled;
     rows.push_back(std::move(row));
     writeTable(s.table, rows);  // after every model: a crash keeps the rows so far
+    if (cancelled) {  // Ctrl-C: the user stops the batch, not one model
+      err << kCommand << ": stopped; run the same command again to go on from " << model.path << "\n";
+      return kExitBadInput;
+    }
   }
   fs::remove(workDir, ec);  // only when empty: another shard may be using it
   if (share.empty()) writeTable(s.table, rows);
