@@ -64,7 +64,7 @@ std::string tableCsv(const std::vector<BatchRow>& rows) {
   for (const BatchRow& row : rows) {
     const bool failed = row.status == "failed";
     csv += csvField(row.model) + "," + csvField(row.status) + "," + (failed ? "" : std::to_string(row.faces)) + "," +
-           (failed ? "" : number("%.6g", row.jgBeforeMm2)) + "," + (failed ? "" : number("%.6g", row.jgAfterMm2)) + "," +
+           (failed ? "" : number("%.9g", row.jgBeforeMm2)) + "," + (failed ? "" : number("%.9g", row.jgAfterMm2)) + "," +
            (failed ? "" : std::to_string(row.regions)) + "," + number("%.3f", row.seconds) + "," +
            number("%.1f", row.peakMemoryMiB) + "," + csvField(row.error) + "\n";
   }
