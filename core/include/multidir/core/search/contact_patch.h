@@ -7,9 +7,10 @@
 
 namespace multidir::core {
 
-// Hull corners this close to the bed count as touching it: the squashed first layer (at least 0.1 mm thick on
-// the printers MultiDir drives) fills a gap of half its height under the part (docs/search.md).
-constexpr double kContactToleranceMm = 0.05;
+// Hull corners this close to the bed count as touching it: the first layer, squashed onto the bed, fills a gap
+// of half its height under the part, and it is 0.2 mm or more in every printer profile MultiDir ships
+// (resources/printers; docs/search.md).
+constexpr double kContactToleranceMm = 0.1;
 
 struct ContactPatch {
   Vec3 up = Vec3::UnitZ();  // unit: the direction that points away from the bed
