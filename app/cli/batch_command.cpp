@@ -162,11 +162,27 @@ RunOutcome runIsolated(const std::vector<std::string>& args, const std::string& 
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  // Ctrl-C reaches the child too (one process group): the child stops its search and saves its plan marked
+  // cancelled, and the batch, ignoring the signal meanwhile, sees that and stops after it. The child starts
+  // with the default action, whatever the batch's.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t interrupt;
+  sigemptyset(&interrupt);
+  sigaddset(&interrupt, SIGINT);
+  posix_spawnattr_setsigdefault(&attributes, &interrupt);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  struct sigaction ignore {};
+  ignore.sa_handler = SIG_IGN;
+  struct sigaction previous {};
+  sigaction(SIGINT, &ignore, &previous);
   const auto start = std::chrono::steady_clock::now();
   pid_t child = 0;
-  const int spawned = posix_spawn(&child, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
+  const int spawned = posix_spawn(&child, "/proc/self/exe", &actions, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (spawned != 0) {
+    sigaction(SIGINT, &previous, nullptr);
     outcome.lastError = kCommand + ": cannot start a child process: " + std::strerror(spawned);
     return outcome;
   }
@@ -174,6 +190,7 @@ RunOutcome runIsolated(const std::vector<std::string>& args, const std::string& 
   rusage usage{};
   while (wait4(child, &status, 0, &usage) < 0 && errno == EINTR) {
   }
+  sigaction(SIGINT, &previous, nullptr);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.peakMemoryMiB = usage.ru_maxrss / 1024.0;  // kB on Linux
   std::ifstream log(logPath);
