@@ -173,17 +173,21 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   const auto start = std::chrono::steady_clock::now();
   auto all = candidatePoses(model, machine.up, poseOptions, options);
   if (!all.ok()) return all.error();
-  // Only poses the model stands in are tried; the given up too, for a plan it cannot be printed in is no plan.
+  // The poses MultiDir proposes all stand on a patch of the hull (candidatePoses). The given up is the user's
+  // choice: it is always tried, so that --pose auto never ends worse than the given up alone, and where the
+  // model would not stand in it (a point or an edge on the bed, or its centre of mass outside the patch) the
+  // plan says so: it then stays on the bed only by the first layer's adhesion and the supports under it.
   std::vector<PoseCandidate> standing;
   std::string refusal;
   for (const PoseCandidate& pose : *all) {
-    if (pose.stands()) {
-      standing.push_back(pose);
-    } else {
-      refusal = "the given up was not tried: the model would touch the bed in " +
+    if (!pose.stands() && pose.source != PoseSource::Given) continue;
+    standing.push_back(pose);
+    if (!pose.stands())
+      refusal = "the given up does not stand: the model touches the bed in " +
                 (pose.contactAreaMm2 > 0 ? "a patch of " + formatFixed(pose.contactAreaMm2) + " mm^2" : std::string("a point or an edge")) +
-                " with its centre of mass " + formatFixed(-pose.stabilityMarginMm) + " mm outside it and tip over";
-    }
+                " with its centre of mass " + formatFixed(-pose.stabilityMarginMm) +
+                " mm outside it; it was tried as given (it holds only by its first layer and supports), every other "
+                "pose tried stands";
   }
   const bool givenStands = !standing.empty() && standing.front().source == PoseSource::Given;
   const std::vector<PoseCandidate>& candidates = standing;
