@@ -528,9 +528,10 @@ namespace {
 
 // The tilt axis' own printer Z and the rotation axis off centre (offsetTwoAxes), the box -10..10 x -10..10 x
 // 0..10 printed at rest as step 1 (a bead along its top edge y = 9.775), then turned V to `rotation`, then U to
-// `tilt`, each alone, with the nozzle at `nozzleZ`, and step 2 printed at those coordinates. `letters`: the
-// two axes' G-code words, or Klipper's steppers when false.
-AuditJob twoAxisJob(double nozzleZ, double tilt, double rotation, bool letters = true) {
+// `tilt` (U first when `tiltFirst`: V then turns about the tilted normal), each alone, with the nozzle at
+// `nozzleZ`, and step 2 printed at those coordinates. `letters`: the two axes' G-code words, or Klipper's
+// steppers when false.
+AuditJob twoAxisJob(double nozzleZ, double tilt, double rotation, bool letters = true, bool tiltFirst = false) {
   AuditJob job;
   job.machine = {core::MachineKind::TiltRotate, Vec3::UnitZ(), Vec3::UnitX(), Vec3::Zero()};
   job.printerOffset = kOffset;
@@ -561,14 +562,16 @@ AuditJob twoAxisJob(double nozzleZ, double tilt, double rotation, bool letters =
                     std::to_string(rest.rotationDegrees) + "\n";
   job.stitchedFile = "job.gcode";
   job.stitchedGcode = start + first.text() + "; MULTIDIR TRANSITION 1\nG1 Z" + std::to_string(nozzleZ) +
-                      "\nG1 X5 Y230\nM400\n" + axis(job.twoAxes.rotation, rotation) + "M400\n" +
-                      axis(job.twoAxes.tilt, tilt) + "M400\n" + second.text();
+                      "\nG1 X5 Y230\nM400\n" +
+                      (tiltFirst ? axis(job.twoAxes.tilt, tilt) + "M400\n" + axis(job.twoAxes.rotation, rotation)
+                                 : axis(job.twoAxes.rotation, rotation) + "M400\n" + axis(job.twoAxes.tilt, tilt)) +
+                      "M400\n" + second.text();
   return job;
 }
 
-// The highest printer z the step-1 beads' end points reach over the turn V then U, replayed in 20,000 small
-// steps per move through the slicer's own two-axis machine.
-double denseTwoAxisTop(const AuditJob& job, double tilt, double rotation) {
+// The highest printer z the step-1 beads' end points reach over the turn V then U (U then V when `tiltFirst`),
+// replayed in 20,000 small steps per move through the slicer's own two-axis machine.
+double denseTwoAxisTop(const AuditJob& job, double tilt, double rotation, bool tiltFirst = false) {
   PrinterProfile profile;
   profile.platformCenter = job.twoAxes.platformCenterMm;
   profile.platformZMm = job.twoAxes.platformZMm;
@@ -583,8 +586,9 @@ double denseTwoAxisTop(const AuditJob& job, double tilt, double rotation) {
   const double t0 = job.twoAxes.tilt.zeroDegrees, r0 = job.twoAxes.rotation.zeroDegrees;
   double top = -1e300;
   for (int i = 0; i <= 40000; ++i) {
-    const TwoAxisAngles at = i <= 20000 ? TwoAxisAngles{t0, r0 + (rotation - r0) * i / 20000.0}
-                                        : TwoAxisAngles{t0 + (tilt - t0) * (i - 20000) / 20000.0, rotation};
+    const double first = std::min(i, 20000) / 20000.0, second = std::max(0, i - 20000) / 20000.0;
+    const TwoAxisAngles at = tiltFirst ? TwoAxisAngles{t0 + (tilt - t0) * first, r0 + (rotation - r0) * second}
+                                       : TwoAxisAngles{t0 + (tilt - t0) * second, r0 + (rotation - r0) * first};
     for (const Vec3& e : ends) top = std::max(top, (machine.pose(at) * e).z());
   }
   return top + job.twoAxes.platformZMm;
@@ -593,13 +597,19 @@ double denseTwoAxisTop(const AuditJob& job, double tilt, double rotation) {
 }  // namespace
 
 TEST(AuditTwoAxisTurn, EachAxisMoveIsCheckedOverItsExactArcAndStepTwoPrintsInItsRegion) {
-  for (const bool letters : {true, false}) {
-    SCOPED_TRACE(letters ? "G1 U.. V.." : "MANUAL_STEPPER");
-    const AuditJob job = twoAxisJob(60.0, 65.0, -110.0, letters);
+  struct Case {
+    bool letters, tiltFirst;
+    double tilt, rotation;
+  };
+  // U first to 45 then V to 160: the part peaks while V turns it about the tilted normal (15.7 mm, against
+  // 10 mm at the ends of the tilt).
+  for (const Case& c : {Case{true, false, 65.0, -110.0}, Case{false, false, 65.0, -110.0}, Case{true, true, 45.0, 160.0}}) {
+    SCOPED_TRACE(std::string(c.letters ? "G1 U.. V.." : "MANUAL_STEPPER") + (c.tiltFirst ? ", U first" : ", V first"));
+    const AuditJob job = twoAxisJob(60.0, c.tilt, c.rotation, c.letters, c.tiltFirst);
     const AuditReport report = audited(job);
     ASSERT_EQ(report.programs.size(), 2u);
     const StepAudit& row = stepRow(report, 0, 1);
-    EXPECT_NEAR(row.turnSweptTopZMm, denseTwoAxisTop(job, 65.0, -110.0), 1e-6);
+    EXPECT_NEAR(row.turnSweptTopZMm, denseTwoAxisTop(job, c.tilt, c.rotation, c.tiltFirst), 1e-6);
     EXPECT_NEAR(row.turnClearanceMm, 60.0 - row.turnSweptTopZMm, 1e-12);
     EXPECT_FALSE(row.turnViolation);
     EXPECT_EQ(report.poseMismatches, 0) << (report.findings.empty() ? "" : report.findings[0]);
