@@ -79,7 +79,7 @@ void printPlaces(std::ostream& out, const char* what, const std::vector<slicing:
 void printReport(std::ostream& out, const std::string& job, const slicing::AuditReport& report) {
   out << "Audit of " << job << " (printable angle " << number(report.alphaMaxDegrees, 1) << " degrees)\n";
   for (const slicing::ProgramAudit& program : report.programs) {
-    out << "\n" << program.name << (program.stitched ? " (stitched, A axis as replayed)" : "") << "\n";
+    out << "\n" << program.name << (program.stitched ? " (stitched, " + program.followedAxes + " as replayed)" : std::string()) << "\n";
     char head[320];
     std::snprintf(head, sizeof head, "  %-5s %-14s %11s %10s %9s %12s %7s %15s %8s %11s\n", "step", "G-code",
                   "extruded mm", "outside mm", "worst mm", "unsupp. mm", "unsup%", "gap/layer mm", "retract",

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/plan/print_job.h"
+#include "multidir/slicing/two_axis_motion.h"
 #include "slicing_fixtures.h"
 #include "support/primitives.h"
 #include "support/test_models.h"
@@ -179,6 +181,48 @@ TEST(AuditKinematics, FirmwareAxisAtAIsTheRotaryPoseWhenTheAxisIsThePlatformX) {
   const AuditMachine machine{core::MachineKind::RotaryPlatform, Vec3::UnitY(), Vec3::UnitX(), Vec3(1.0, 2.0, 3.0)};
   EXPECT_LT(maxDifference(firmwareAxisModelToFile(machine, -21.0), auditModelToFile(machine, {-21.0, 0.0, 0.0})),
             1e-12);
+}
+
+namespace {
+
+// Two firmware axes off every simple place: the tilt along Y 15 mm below the platform, the rotation axis 10 mm
+// off the platform centre, both axes' zeros moved and the rotation counted backwards.
+AuditTwoAxes offsetTwoAxes() {
+  AuditTwoAxes axes;
+  axes.tilt = {"U", "tilt", 5.0, 1.0, -90.0, 90.0};
+  axes.rotation = {"V", "rotation", -20.0, -1.0, -360.0, 360.0};
+  axes.tiltAlongX = false;
+  axes.tiltHeightMm = -15.0;
+  axes.rotationCenterMm = Eigen::Vector2d(110.0, 100.0);
+  axes.platformCenterMm = Eigen::Vector2d(100.0, 100.0);
+  axes.platformZMm = 0.0;
+  return axes;
+}
+
+}  // namespace
+
+TEST(AuditKinematics, TwoAxisPoseIsTheSlicersTwoAxisMachinePoseAfterTheRestPose) {
+  const AuditTwoAxes axes = offsetTwoAxes();
+  PrinterProfile profile;
+  profile.platform = PlatformDrive::FirmwareTwoAxis;
+  profile.platformCenter = axes.platformCenterMm;
+  profile.platformZMm = axes.platformZMm;
+  profile.twoAxis.tilt = {"U", "tilt", 5.0, 1.0, -90.0, 90.0};
+  profile.twoAxis.rotation = {"V", "rotation", -20.0, -1.0, -360.0, 360.0};
+  profile.twoAxis.tiltAlong = TiltAlong::Y;
+  profile.twoAxis.tiltHeightMm = axes.tiltHeightMm;
+  profile.twoAxis.rotationCenter = axes.rotationCenterMm;
+  const TwoAxisMachine machine(profile, 0.0);
+  const AuditMachine plan{core::MachineKind::TiltRotate, Vec3::UnitY(), Vec3::UnitX(), Vec3(1.0, 2.0, 3.0)};
+  const Eigen::Isometry3d rest = auditModelToFile(plan, {});
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> degrees(-180.0, 180.0);
+  for (int i = 0; i < 50; ++i) {
+    const AuditAxisCoordinates at{0.5 * degrees(random), degrees(random)};
+    EXPECT_LT(maxDifference(twoAxisModelToFile(axes, rest, at), machine.pose({at.tiltDegrees, at.rotationDegrees}) * rest),
+              1e-9)
+        << "U " << at.tiltDegrees << " V " << at.rotationDegrees;
+  }
 }
 
 TEST(AuditPose, ARecordedPoseThatDisagreesWithTheAnglesIsAFinding) {
@@ -478,6 +522,135 @@ TEST(AuditTurn, ARobotArmsTurnIsCheckedOverTheGeodesicBetweenThePoses) {
   EXPECT_TRUE(std::isnan(stepRow(report, 1).turnClearanceMm));  // nothing turns after the last step
 }
 
+// ---- (e) on two firmware axes ----
+
+namespace {
+
+// The tilt axis' own printer Z and the rotation axis off centre (offsetTwoAxes), the box -10..10 x -10..10 x
+// 0..10 printed at rest as step 1 (a bead along its top edge y = 9.775), then turned V to `rotation`, then U to
+// `tilt` (U first when `tiltFirst`: V then turns about the tilted normal), each alone, with the nozzle at
+// `nozzleZ`, and step 2 printed at those coordinates. `letters`: the two axes' G-code words, or Klipper's
+// steppers when false.
+AuditJob twoAxisJob(double nozzleZ, double tilt, double rotation, bool letters = true, bool tiltFirst = false) {
+  AuditJob job;
+  job.machine = {core::MachineKind::TiltRotate, Vec3::UnitZ(), Vec3::UnitX(), Vec3::Zero()};
+  job.printerOffset = kOffset;
+  job.platform = AuditPlatform::FirmwareTwoAxis;
+  job.twoAxes = offsetTwoAxes();
+  const AuditAxisCoordinates rest{job.twoAxes.tilt.zeroDegrees, job.twoAxes.rotation.zeroDegrees};
+  job.steps.push_back(boxStep(1, job.machine, {}, Vec3(-10, -10, 0), Vec3(10, 10, 10)));
+  job.steps[0].axisDegrees = rest;
+  job.steps.push_back(boxStep(2, job.machine, {}, Vec3(-10, -10, 0), Vec3(10, 10, 10)));
+  job.steps[1].axisDegrees = AuditAxisCoordinates{tilt, rotation};
+  job.steps[1].recordedModelToFile =
+      twoAxisModelToFile(job.twoAxes, job.steps[0].recordedModelToFile, *job.steps[1].axisDegrees);
+  job.steps[1].printingDirection = job.steps[1].recordedModelToFile.linear().transpose() * Vec3::UnitZ();
+  Program first = stepProgram(1);
+  first.bead(Vec3(-5, 0, 0.2), Vec3(5, 0, 0.2)).bead(Vec3(-5, 9.775, 10), Vec3(5, 9.775, 10));
+  Program second = stepProgram(2, job.steps[1].recordedModelToFile);
+  second.bead(Vec3(-5, 0, 5), Vec3(5, 0, 5));
+  job.steps[0].gcode = first.text();
+  job.steps[1].gcode = second.text();
+  const auto axis = [&](const AuditRotaryAxis& a, double value) {
+    return letters ? "G1 " + a.letter + std::to_string(value) + " F1800\n"
+                   : "MANUAL_STEPPER STEPPER=" + a.stepper + " MOVE=" + std::to_string(value) + " SPEED=30\n";
+  };
+  const std::string start =
+      letters ? "G92 U" + std::to_string(rest.tiltDegrees) + " V" + std::to_string(rest.rotationDegrees) + "\n"
+              : "MANUAL_STEPPER STEPPER=tilt ENABLE=1 SET_POSITION=" + std::to_string(rest.tiltDegrees) +
+                    "\nMANUAL_STEPPER STEPPER=rotation ENABLE=1 SET_POSITION=" +
+                    std::to_string(rest.rotationDegrees) + "\n";
+  job.stitchedFile = "job.gcode";
+  job.stitchedGcode = start + first.text() + "; MULTIDIR TRANSITION 1\nG1 Z" + std::to_string(nozzleZ) +
+                      "\nG1 X5 Y230\nM400\n" +
+                      (tiltFirst ? axis(job.twoAxes.tilt, tilt) + "M400\n" + axis(job.twoAxes.rotation, rotation)
+                                 : axis(job.twoAxes.rotation, rotation) + "M400\n" + axis(job.twoAxes.tilt, tilt)) +
+                      "M400\n" + second.text();
+  return job;
+}
+
+// The highest printer z the step-1 beads' end points reach over the turn V then U (U then V when `tiltFirst`),
+// replayed in 20,000 small steps per move through the slicer's own two-axis machine.
+double denseTwoAxisTop(const AuditJob& job, double tilt, double rotation, bool tiltFirst = false) {
+  PrinterProfile profile;
+  profile.platformCenter = job.twoAxes.platformCenterMm;
+  profile.platformZMm = job.twoAxes.platformZMm;
+  profile.twoAxis.tilt = {"U", "tilt", job.twoAxes.tilt.zeroDegrees, job.twoAxes.tilt.direction, -90.0, 90.0};
+  profile.twoAxis.rotation = {"V", "rotation", job.twoAxes.rotation.zeroDegrees, job.twoAxes.rotation.direction,
+                              -360.0, 360.0};
+  profile.twoAxis.tiltAlong = job.twoAxes.tiltAlongX ? TiltAlong::X : TiltAlong::Y;
+  profile.twoAxis.tiltHeightMm = job.twoAxes.tiltHeightMm;
+  profile.twoAxis.rotationCenter = job.twoAxes.rotationCenterMm;
+  const TwoAxisMachine machine(profile, 0.0);
+  const std::vector<Vec3> ends = {Vec3(-5, 0, 0.2), Vec3(5, 0, 0.2), Vec3(-5, 9.775, 10), Vec3(5, 9.775, 10)};
+  const double t0 = job.twoAxes.tilt.zeroDegrees, r0 = job.twoAxes.rotation.zeroDegrees;
+  double top = -1e300;
+  for (int i = 0; i <= 40000; ++i) {
+    const double first = std::min(i, 20000) / 20000.0, second = std::max(0, i - 20000) / 20000.0;
+    const TwoAxisAngles at = tiltFirst ? TwoAxisAngles{t0 + (tilt - t0) * first, r0 + (rotation - r0) * second}
+                                       : TwoAxisAngles{t0 + (tilt - t0) * second, r0 + (rotation - r0) * first};
+    for (const Vec3& e : ends) top = std::max(top, (machine.pose(at) * e).z());
+  }
+  return top + job.twoAxes.platformZMm;
+}
+
+}  // namespace
+
+TEST(AuditTwoAxisTurn, EachAxisMoveIsCheckedOverItsExactArcAndStepTwoPrintsInItsRegion) {
+  struct Case {
+    bool letters, tiltFirst;
+    double tilt, rotation;
+  };
+  // U first to 45 then V to 160: the part peaks while V turns it about the tilted normal (15.7 mm, against
+  // 10 mm at the ends of the tilt).
+  for (const Case& c : {Case{true, false, 65.0, -110.0}, Case{false, false, 65.0, -110.0}, Case{true, true, 45.0, 160.0}}) {
+    SCOPED_TRACE(std::string(c.letters ? "G1 U.. V.." : "MANUAL_STEPPER") + (c.tiltFirst ? ", U first" : ", V first"));
+    const AuditJob job = twoAxisJob(60.0, c.tilt, c.rotation, c.letters, c.tiltFirst);
+    const AuditReport report = audited(job);
+    ASSERT_EQ(report.programs.size(), 2u);
+    const StepAudit& row = stepRow(report, 0, 1);
+    EXPECT_NEAR(row.turnSweptTopZMm, denseTwoAxisTop(job, c.tilt, c.rotation, c.tiltFirst), 1e-6);
+    EXPECT_NEAR(row.turnClearanceMm, 60.0 - row.turnSweptTopZMm, 1e-12);
+    EXPECT_FALSE(row.turnViolation);
+    EXPECT_EQ(report.poseMismatches, 0) << (report.findings.empty() ? "" : report.findings[0]);
+    EXPECT_EQ(report.sequenceViolations, 0);
+    EXPECT_GT(stepRow(report, 1, 1).extrusionMm, 0.0);
+    EXPECT_EQ(stepRow(report, 1, 1).outsideMm, 0.0);  // job.gcode: step 2 printed where the axes hold it
+    EXPECT_EQ(stepRow(report, 1, 0).outsideMm, 0.0);  // its own program, at its recorded coordinates
+  }
+}
+
+TEST(AuditTwoAxisTurn, ANozzleBelowTheSweptPartIsATurnViolation) {
+  const AuditJob job = twoAxisJob(5.0, 65.0, -110.0);
+  const AuditReport report = audited(job);
+  const StepAudit& row = stepRow(report, 0, 1);
+  EXPECT_TRUE(row.turnViolation);
+  EXPECT_NEAR(row.turnClearanceMm, 5.0 - denseTwoAxisTop(job, 65.0, -110.0), 1e-6);
+  EXPECT_TRUE(report.failed());
+}
+
+TEST(AuditTwoAxisTurn, AStepPrintedAtOtherCoordinatesThanRecordedIsAPoseMismatch) {
+  AuditJob job = twoAxisJob(60.0, 65.0, -110.0);
+  const std::size_t at = job.stitchedGcode.find("G1 U65.000000");
+  ASSERT_NE(at, std::string::npos);
+  job.stitchedGcode.replace(at, 13, "G1 U70.000000");
+  const AuditReport report = audited(job);
+  EXPECT_EQ(report.poseMismatches, 1);
+  ASSERT_FALSE(report.findings.empty());
+  EXPECT_NE(report.findings[0].find("step 2 prints at U 70.000 degrees, but print-job.json gives U 65.000"),
+            std::string::npos)
+      << report.findings[0];
+  EXPECT_TRUE(report.failed());
+}
+
+TEST(AuditTwoAxisTurn, ACoordinateBeyondTheAxisLimitsIsAFinding) {
+  AuditJob job = twoAxisJob(60.0, 65.0, -110.0);
+  job.twoAxes.tilt.maxDegrees = 60.0;
+  const AuditReport report = audited(job);
+  EXPECT_EQ(report.poseMismatches, 2);  // print-job.json's step 2 and job.gcode's U move
+  EXPECT_TRUE(report.failed());
+}
+
 // ---- reading ----
 
 TEST(AuditReplay, AnArcMoveIsRefusedNamingFileAndLine) {
@@ -575,6 +748,105 @@ TEST(AuditKitten, RobotArmJobSlicedByPrusaSlicerPassesTheChecksThatHoldToday) {
   EXPECT_GT(program.total.extrusionMm, 0.0);
 }
 
+// ---- the kitten on the Open5x-like printer, its job.gcode edited by hand ----
+
+namespace {
+
+// The kitten's 5-DOF plan sliced once for open5x-rrf (U tilt, V rotation, RepRapFirmware): the job folder.
+const std::string& kittenOnOpen5x() {
+  static const std::string dir = [] {
+    const std::string out = test::scratchDirectory("AuditTwoAxisKitten.Open5x");
+    const core::Result<PrinterProfile> profile = loadPrinterProfile("open5x-rrf");
+    const core::Result<core::LoadedMesh> kitten = core::loadMesh(test::sharedModelPath("kitten.off"));
+    if (!profile || !kitten) throw std::runtime_error("open5x-rrf or the kitten cannot be loaded");
+    core::MachineSpec machine;  // 5-DOF
+    machine.up = Vec3::UnitY();
+    const core::LoadedPlan plan = test::plannedInMemory(kitten->mesh, machine, "kitten");
+    SliceJobOptions options;
+    options.fixedDirection = false;
+    core::JobContext context;
+    const core::Result<SlicedJob> sliced = slicePlan(plan, *profile, options, out, context);
+    if (!sliced) throw std::runtime_error(sliced.error().describe());
+    return out;
+  }();
+  return dir;
+}
+
+// The line of `text` that starts with `prefix` after the line starting with `after`; npos when none.
+std::size_t lineAfter(const std::string& text, const std::string& after, const std::string& prefix) {
+  const std::size_t from = text.find("\n" + after);
+  return from == std::string::npos ? from : text.find("\n" + prefix, from + 1) + 1;
+}
+
+int lineNumberAt(const std::string& text, std::size_t offset) {
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+}
+
+}  // namespace
+
+TEST(AuditTwoAxisKitten, ATiltCoordinateAlteredByHandInJobGcodeIsReportedAtItsLine) {
+  core::Result<AuditJob> job = readAuditJob(kittenOnOpen5x());
+  ASSERT_TRUE(job) << job.error().describe();
+  ASSERT_EQ(job->platform, AuditPlatform::FirmwareTwoAxis);
+  // The first transition's tilt move, "G1 U60.763 F1800 ; tilt": 8 degrees more.
+  std::string& gcode = job->stitchedGcode;
+  const std::size_t at = lineAfter(gcode, "; MULTIDIR TRANSITION 1", "G1 U");
+  ASSERT_NE(at, std::string::npos);
+  const double recorded = job->steps[1].axisDegrees->tiltDegrees;
+  const std::size_t end = gcode.find(' ', at + 3);
+  gcode.replace(at, end - at, "G1 U" + std::to_string(recorded + 8.0));
+  core::JobContext context;
+  const core::Result<AuditReport> report = auditJob(*job, AuditOptions{}, context);
+  ASSERT_TRUE(report) << report.error().describe();
+  EXPECT_TRUE(report->failed());
+  EXPECT_GE(report->poseMismatches, 1);
+  ASSERT_FALSE(report->findings.empty());
+  EXPECT_NE(report->findings[0].find("job.gcode: line "), std::string::npos) << report->findings[0];
+  EXPECT_NE(report->findings[0].find("step 2 prints at U"), std::string::npos) << report->findings[0];
+  // Printed 8 degrees off, step 2's beads leave its region.
+  EXPECT_GT(report->programs.at(1).steps.at(1).outsideMm, 0.0);
+  // The step programs themselves are untouched: they pass.
+  EXPECT_LE(report->programs.at(0).total.outsideMm, 1e-3 * report->programs.at(0).total.extrusionMm);
+}
+
+TEST(AuditTwoAxisKitten, ATransitionLiftLoweredBelowTheSweptPartIsATurnViolation) {
+  core::Result<AuditJob> job = readAuditJob(kittenOnOpen5x());
+  ASSERT_TRUE(job) << job.error().describe();
+  // The first transition's lift, "G1 Z48.608 F600 ; lift above the swept part", down to 2 mm above the bed.
+  std::string& gcode = job->stitchedGcode;
+  const std::size_t at = lineAfter(gcode, "; MULTIDIR TRANSITION 1", "G1 Z");
+  ASSERT_NE(at, std::string::npos);
+  gcode.replace(at, gcode.find(' ', at + 3) - at, "G1 Z2.000");
+  core::JobContext context;
+  const core::Result<AuditReport> report = auditJob(*job, AuditOptions{}, context);
+  ASSERT_TRUE(report) << report.error().describe();
+  EXPECT_TRUE(report->failed());
+  const StepAudit& row = report->programs.at(1).steps.at(0);
+  EXPECT_TRUE(row.turnViolation);
+  EXPECT_NEAR(row.turnNozzleZMm, 2.0, 1e-9);
+  EXPECT_LT(row.turnClearanceMm, 0.0);
+  // The turn found is one of the transition's axis moves, after the lowered lift.
+  EXPECT_GT(row.turnLine, lineNumberAt(gcode, at));
+  EXPECT_FALSE(report->programs.at(1).steps.at(1).turnViolation);  // the second transition was left alone
+}
+
+TEST(AuditTwoAxisKitten, AJobWithoutAStepsAxisCoordinatesIsRefusedNamingTheField) {
+  const std::string dir = test::scratchDirectory("AuditTwoAxisKitten.NoAxisDegrees");
+  for (const auto& entry : std::filesystem::directory_iterator(kittenOnOpen5x()))
+    std::filesystem::copy(entry.path(), dir + "/" + entry.path().filename().string(),
+                          std::filesystem::copy_options::overwrite_existing);
+  const std::string file = dir + "/print-job.json";
+  std::string text = test::readFile(file);
+  const std::size_t at = text.find("\"axisDegrees\"", text.find("\"axisDegrees\"") + 1);  // step 2's
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 13, "\"axisDegreez\"");
+  std::ofstream(file, std::ios::trunc) << text;
+  const core::Result<AuditJob> job = readAuditJob(dir);
+  ASSERT_FALSE(job);
+  EXPECT_EQ(job.error().code, core::ErrorCode::MalformedFile);
+  EXPECT_NE(job.error().message.find("slicing.steps[1].axisDegrees"), std::string::npos) << job.error().message;
+}
+
 // CI audits the kitten's job for every shipped profile: whatever the printer, the machine code MultiDir
 // writes passes every check the audit fails a job for ((a) beyond tolerance, (c), (d), (e), poses, sequence).
 class AuditKittenOnEveryShippedProfile : public ::testing::TestWithParam<std::string> {};
@@ -582,9 +854,7 @@ class AuditKittenOnEveryShippedProfile : public ::testing::TestWithParam<std::st
 TEST_P(AuditKittenOnEveryShippedProfile, PassesEveryCheck) {
   const core::Result<PrinterProfile> profile = loadPrinterProfile(GetParam());
   ASSERT_TRUE(profile) << profile.error().describe();
-  if (profile->platform == PlatformDrive::FirmwareTwoAxis)
-    GTEST_SKIP() << "two firmware axes: their multi-step program is not written yet (issue 26, item 3)";
-  core::MachineSpec machine;  // 5-DOF for a Modbus platform; a firmware axis turns about the printer's X
+  core::MachineSpec machine;  // 5-DOF for a Modbus platform and two firmware axes; one axis turns about X
   machine.up = Vec3::UnitY();
   if (profile->platform == PlatformDrive::FirmwareAxis) {
     machine.kind = core::MachineKind::RotaryPlatform;

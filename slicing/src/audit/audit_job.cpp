@@ -48,22 +48,46 @@ double solidCell(const AuditStep& step) {
   return std::clamp(2.0 * std::sqrt(2.0 * area / static_cast<double>(count)), std::max(0.5, step.bead.widthMm), 20.0);
 }
 
+// The pose a step prints at: on two firmware axes, the rest pose (the first step's from its plan angles) turned
+// by the axes to the step's recorded coordinates; otherwise the pose of the step's plan angles.
+Eigen::Isometry3d stepPose(const AuditJob& job, const AuditStep& step) {
+  if (job.platform == AuditPlatform::FirmwareTwoAxis && step.axisDegrees)
+    return twoAxisModelToFile(job.twoAxes, auditModelToFile(job.machine, job.steps.front().angles), *step.axisDegrees);
+  return auditModelToFile(job.machine, step.angles);
+}
+
+// Two firmware axes: a step's recorded coordinates must lie within the axes' limits.
+void checkAxisLimits(const AuditJob& job, const AuditStep& step, AuditReport& report) {
+  if (job.platform != AuditPlatform::FirmwareTwoAxis || !step.axisDegrees) return;
+  for (const auto& [axis, degrees] : {std::pair{&job.twoAxes.tilt, step.axisDegrees->tiltDegrees},
+                                      std::pair{&job.twoAxes.rotation, step.axisDegrees->rotationDegrees}}) {
+    if (degrees >= axis->minDegrees - 1e-9 && degrees <= axis->maxDegrees + 1e-9) continue;
+    ++report.poseMismatches;
+    report.findings.push_back("print-job.json: step " + std::to_string(step.index) + ": " + axis->letter + " " +
+                              fixed(degrees) + " degrees (slicing.steps[].axisDegrees) is outside the axis' limits " +
+                              fixed(axis->minDegrees) + " to " + fixed(axis->maxDegrees));
+  }
+}
+
 void checkPoses(const AuditJob& job, AuditReport& report) {
+  const bool twoAxis = job.platform == AuditPlatform::FirmwareTwoAxis;
   for (const AuditStep& step : job.steps) {
-    const Eigen::Isometry3d pose = auditModelToFile(job.machine, step.angles);
+    const Eigen::Isometry3d pose = stepPose(job, step);
     const double difference = poseDifference(pose, step.recordedModelToFile);
     if (difference > kPoseTolerance) {
       ++report.poseMismatches;
-      report.findings.push_back("print-job.json: step " + std::to_string(step.index) +
-                                ": modelToFile differs from the kinematics of its angles by " + fixed(difference, 9) +
-                                " (largest entry): the step's mesh and G-code are posed otherwise than the machine "
-                                "will hold the part");
+      report.findings.push_back(
+          "print-job.json: step " + std::to_string(step.index) + ": modelToFile differs from the kinematics of its " +
+          (twoAxis ? "axis coordinates (slicing.steps[].axisDegrees)" : "angles") + " by " + fixed(difference, 9) +
+          " (largest entry): the step's mesh and G-code are posed otherwise than the machine will hold the part");
     }
+    checkAxisLimits(job, step, report);
     const Vec3 direction = pose.linear().transpose() * Vec3::UnitZ();
     const double angle = std::acos(std::clamp(direction.dot(step.printingDirection.normalized()), -1.0, 1.0));
     if (angle > kPoseTolerance) {
       ++report.poseMismatches;
-      report.findings.push_back("print-job.json: step " + std::to_string(step.index) + ": its angles print along " +
+      report.findings.push_back("print-job.json: step " + std::to_string(step.index) + ": its " +
+                                (twoAxis ? "axis coordinates" : "angles") + " print along " +
                                 pointText(direction) + ", not along printingDirection " +
                                 pointText(step.printingDirection));
     }
@@ -106,7 +130,9 @@ core::Result<AuditReport> auditJob(const AuditJob& job, const AuditOptions& opti
     solids.push_back(std::make_unique<audit::TriangleGrid>(
         std::vector<const core::TriangleMesh*>{&step.region, &step.supports}, solidCell(step)));
 
-  const bool firmware = job.platform == AuditPlatform::FirmwareAxis && !job.stitchedFile.empty();
+  const bool firmware =
+      (job.platform == AuditPlatform::FirmwareAxis || job.platform == AuditPlatform::FirmwareTwoAxis) &&
+      !job.stitchedFile.empty();
   const double shares = firmware ? 2.0 : 1.0;
 
   // The step programs: one after another on one machine (Modbus), or each on its own (the parts of
@@ -119,7 +145,7 @@ core::Result<AuditReport> auditJob(const AuditJob& job, const AuditOptions& opti
     audit::MachineState state;
     for (std::size_t k = 0; k < job.steps.size(); ++k) {
       if (firmware) state = audit::MachineState{};
-      const Eigen::Isometry3d pose = auditModelToFile(job.machine, job.steps[k].angles);
+      const Eigen::Isometry3d pose = stepPose(job, job.steps[k]);
       if (core::Status s = auditor.replay(job.steps[k].gcode, job.steps[k].gcodeFile, k, &pose, state, context); !s)
         return s.error();
       if (!firmware) auditor.modbusTurn(k, state);
@@ -132,6 +158,9 @@ core::Result<AuditReport> auditJob(const AuditJob& job, const AuditOptions& opti
     ProgramAudit program;
     program.name = job.stitchedFile;
     program.stitched = true;
+    program.followedAxes = job.platform == AuditPlatform::FirmwareTwoAxis
+                               ? job.twoAxes.tilt.letter + " and " + job.twoAxes.rotation.letter + " axes"
+                               : job.rotaryAxis + " axis";
     audit::ProgramAuditor auditor(job, options, report.alphaMaxDegrees, solids, program, report);
     audit::MachineState state;
     if (core::Status s = auditor.replay(job.stitchedGcode, job.stitchedFile, 0, nullptr, state, context); !s)

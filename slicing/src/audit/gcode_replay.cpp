@@ -1,5 +1,6 @@
 #include "gcode_replay.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -29,11 +30,25 @@ bool klipperParameter(const std::string& code, const std::string& key, double& v
   return end != start && std::isfinite(value);
 }
 
+// The word after "KEY=" in a Klipper command line (case kept); empty when absent.
+std::string klipperWord(const std::string& code, const std::string& key) {
+  const std::size_t at = upper(code).find(" " + key + "=");
+  if (at == std::string::npos) return {};
+  const std::size_t start = at + key.size() + 2;
+  return code.substr(start, code.find_first_of(" \t", start) - start);
+}
+
 }  // namespace
 
-core::Result<Replay> replayGcode(const std::string& text, const std::string& name, char rotaryLetter,
+core::Result<Replay> replayGcode(const std::string& text, const std::string& name, const std::vector<ReplayAxis>& axes,
                                  double retractToleranceMm, MachineState& state) {
-  const char rotary = static_cast<char>(std::toupper(static_cast<unsigned char>(rotaryLetter)));
+  const std::size_t axisCount = std::min(axes.size(), kMaxRotaryAxes);
+  // The slot of a G-code letter among the rotary axes; axisCount when it is none of them.
+  const auto slotOfLetter = [&](char letter) {
+    for (std::size_t k = 0; k < axisCount; ++k)
+      if (std::toupper(static_cast<unsigned char>(axes[k].letter)) == letter) return k;
+    return axisCount;
+  };
   Replay replay;
   int step = 0;
   bool inTransition = false;
@@ -78,18 +93,25 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
     ReplayMove move;
     move.line = lineNumber;
     move.from = state.position;
-    move.aFromDegrees = state.aDegrees;
+    move.axesFrom = state.axesDegrees;
     move.step = step;
     move.inTransition = inTransition;
     move.skirt = skirt;
     move.feature = feature;
 
     if (head == "MANUAL_STEPPER") {
+      // Klipper's stepper names are case-sensitive in its config but not in commands: compare upper-cased.
+      const std::string stepper = upper(klipperWord(code, "STEPPER"));
+      std::size_t slot = axisCount;
+      for (std::size_t k = 0; k < axisCount && slot == axisCount; ++k)
+        if (axes[k].stepper.empty() || upper(axes[k].stepper) == stepper) slot = k;
+      if (slot == axisCount) continue;  // a stepper that turns no platform axis
       double value = 0.0;
-      if (klipperParameter(code, "SET_POSITION", value)) state.aDegrees = value;
+      if (klipperParameter(code, "SET_POSITION", value)) state.axesDegrees[slot] = value;
       if (klipperParameter(code, "MOVE", value)) {
         move.to = state.position;
-        move.aToDegrees = state.aDegrees = value;
+        state.axesDegrees[slot] = value;
+        move.axesTo = state.axesDegrees;
         replay.moves.push_back(move);
       }
       continue;
@@ -131,7 +153,7 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
       for (const auto& [letter, value] : words) {
         if (letter >= 'X' && letter <= 'Z') state.position[letter - 'X'] = value;
         if (letter == 'E') state.e = value;  // renames E; the filament stays where it is
-        if (letter == rotary) state.aDegrees = value;
+        if (const std::size_t k = slotOfLetter(letter); k < axisCount) state.axesDegrees[k] = value;
       }
       continue;
     }
@@ -154,12 +176,12 @@ core::Result<Replay> replayGcode(const std::string& text, const std::string& nam
         const double next = state.absoluteXyz && state.absoluteE ? value : state.e + value;
         move.filamentMm = next - state.e;
         state.e = next;
-      } else if (letter == rotary) {
-        state.aDegrees = state.absoluteXyz ? value : state.aDegrees + value;
+      } else if (const std::size_t k = slotOfLetter(letter); k < axisCount) {
+        state.axesDegrees[k] = state.absoluteXyz ? value : state.axesDegrees[k] + value;
       }
     }
     move.to = state.position;
-    move.aToDegrees = state.aDegrees;
+    move.axesTo = state.axesDegrees;
     if (move.filamentMm < 0.0) {
       state.retractedMm -= move.filamentMm;
     } else if (move.filamentMm > 0.0) {

@@ -98,6 +98,72 @@ double planAlpha(const Json& job, const fs::path& directory) {
   return 45.0;
 }
 
+AuditRotaryAxis auditAxis(const FirmwareRotaryAxis& axis) {
+  return {axis.letter, axis.klipperStepper, axis.zeroDegrees, axis.direction, axis.minDegrees, axis.maxDegrees};
+}
+
+// The two axes as the profile gives them: for a job written before print-job.json recorded them.
+AuditTwoAxes profileAxes(const PrinterProfile& profile) {
+  AuditTwoAxes axes;
+  axes.tilt = auditAxis(profile.twoAxis.tilt);
+  axes.rotation = auditAxis(profile.twoAxis.rotation);
+  axes.tiltAlongX = profile.twoAxis.tiltAlong == TiltAlong::X;
+  axes.tiltHeightMm = profile.twoAxis.tiltHeightMm;
+  axes.rotationCenterMm = profile.twoAxis.rotationCenter;
+  axes.platformCenterMm = profile.platformCenter;
+  axes.platformZMm = profile.platformZMm;
+  return axes;
+}
+
+bool readNumber(const Json& object, const char* key, double& out) {
+  if (!object.contains(key) || !object[key].is_number()) return false;
+  out = object[key].get<double>();
+  return std::isfinite(out);
+}
+
+bool readVec2(const Json& value, Eigen::Vector2d& out) {
+  if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number()) return false;
+  out = Eigen::Vector2d(value[0].get<double>(), value[1].get<double>());
+  return out.allFinite();
+}
+
+// slicing.printer.axes of a firmware-2axis job; `error` names the field that is missing or wrong.
+core::Result<AuditTwoAxes> readTwoAxes(const Json& json, const std::string& file) {
+  const std::string at = "slicing.printer.axes";
+  if (!json.is_object()) return malformed(file, at, "is not an object");
+  AuditTwoAxes axes;
+  for (const auto& [name, axis] : {std::pair<const char*, AuditRotaryAxis*>{"tilt", &axes.tilt},
+                                   std::pair<const char*, AuditRotaryAxis*>{"rotation", &axes.rotation}}) {
+    const std::string where = at + "." + name;
+    if (!json.contains(name) || !json[name].is_object()) return malformed(file, where, "is missing");
+    const Json& a = json[name];
+    if (!a.contains("letter") || !a["letter"].is_string() || a["letter"].get<std::string>().size() != 1)
+      return malformed(file, where + ".letter", "is missing or not one letter");
+    axis->letter = a["letter"].get<std::string>();
+    axis->stepper = a.value("stepper", std::string());
+    for (const auto& [key, out] : {std::pair<const char*, double*>{"zero", &axis->zeroDegrees},
+                                   std::pair<const char*, double*>{"direction", &axis->direction},
+                                   std::pair<const char*, double*>{"min", &axis->minDegrees},
+                                   std::pair<const char*, double*>{"max", &axis->maxDegrees}})
+      if (!readNumber(a, key, *out)) return malformed(file, where + "." + key, "is missing or not a number");
+    if (axis->direction != 1.0 && axis->direction != -1.0) return malformed(file, where + ".direction", "is not 1 or -1");
+  }
+  if (axes.tilt.letter == axes.rotation.letter)
+    return malformed(file, at + ".rotation.letter", "is the tilt axis' letter too");
+  const std::string along = json.value("tiltAlong", std::string());
+  if (along != "X" && along != "Y") return malformed(file, at + ".tiltAlong", "is not \"X\" or \"Y\"");
+  axes.tiltAlongX = along == "X";
+  if (!readNumber(json, "tiltHeightMm", axes.tiltHeightMm))
+    return malformed(file, at + ".tiltHeightMm", "is missing or not a number");
+  if (!json.contains("rotationCenterMm") || !readVec2(json["rotationCenterMm"], axes.rotationCenterMm))
+    return malformed(file, at + ".rotationCenterMm", "is missing or not two numbers");
+  if (!json.contains("platformCenterMm") || !readVec2(json["platformCenterMm"], axes.platformCenterMm))
+    return malformed(file, at + ".platformCenterMm", "is missing or not two numbers");
+  if (!readNumber(json, "platformZMm", axes.platformZMm))
+    return malformed(file, at + ".platformZMm", "is missing or not a number");
+  return axes;
+}
+
 core::TriangleMesh moved(core::TriangleMesh mesh, const Eigen::Isometry3d& motion) {
   for (Vec3& v : mesh.vertices) v = motion * v;
   return mesh;
@@ -159,9 +225,20 @@ core::Result<AuditJob> readAuditJob(const std::string& directoryText) {
   out.printerOffset = Vec3(profile->platformCenter.x(), profile->platformCenter.y(), profile->platformZMm);
   out.rotaryAxis = profile->rotaryAxis;
   const std::string platform = printer.value("platform", std::string(platformDriveName(profile->platform)));
-  out.platform = platform == "firmware-axis" ? AuditPlatform::FirmwareAxis
-                 : platform == "modbus"      ? AuditPlatform::Modbus
-                                             : AuditPlatform::None;
+  out.platform = platform == "firmware-axis"    ? AuditPlatform::FirmwareAxis
+                 : platform == "firmware-2axis" ? AuditPlatform::FirmwareTwoAxis
+                 : platform == "modbus"         ? AuditPlatform::Modbus
+                                                : AuditPlatform::None;
+  const bool twoAxis = out.platform == AuditPlatform::FirmwareTwoAxis;
+  if (twoAxis) {
+    if (printer.contains("axes")) {
+      core::Result<AuditTwoAxes> axes = readTwoAxes(printer["axes"], file);
+      if (!axes) return axes.error();
+      out.twoAxes = *axes;
+    } else {
+      out.twoAxes = profileAxes(*profile);
+    }
+  }
   out.alphaMaxDegrees = planAlpha(job, directory);
 
   if (!job.contains("steps") || !job["steps"].is_array() || job["steps"].empty())
@@ -200,6 +277,18 @@ core::Result<AuditJob> readAuditJob(const std::string& directoryText) {
     if (gcode.empty() || gcode.find('/') != std::string::npos)
       return malformed(file, "slicing.steps[" + std::to_string(i) + "].gcode", "is not a file name in the job folder");
     step.gcodeFile = gcode;
+    if (twoAxis) {
+      // The coordinates the step prints at, by the axes' letters: {"U": 60.8, "V": 28.1}.
+      const std::string where = "slicing.steps[" + std::to_string(i) + "].axisDegrees";
+      const Json coordinates = sliced[i].value("axisDegrees", Json());
+      AuditAxisCoordinates at;
+      if (!coordinates.is_object() || !readNumber(coordinates, out.twoAxes.tilt.letter.c_str(), at.tiltDegrees) ||
+          !readNumber(coordinates, out.twoAxes.rotation.letter.c_str(), at.rotationDegrees))
+        return malformed(file, where,
+                         "is missing or lacks a number for " + out.twoAxes.tilt.letter + " or " +
+                             out.twoAxes.rotation.letter + " (a firmware-2axis job records both axes per step)");
+      step.axisDegrees = at;
+    }
     core::Result<std::string> program = readText((directory / gcode).string());
     if (!program) return program.error();
     step.gcode = std::move(program).value();

@@ -66,4 +66,29 @@ Eigen::Isometry3d firmwareAxisModelToFile(const AuditMachine& machine, double aD
   return turn * restPose(machine);
 }
 
+double AuditRotaryAxis::conventionRadians(double degrees) const { return radians((degrees - zeroDegrees) / direction); }
+
+AuditAxisLines auditAxisLines(const AuditTwoAxes& axes) {
+  // The files' frame is the printer's moved by (platform centre, platform z).
+  const Eigen::Vector2d centre = axes.rotationCenterMm - axes.platformCenterMm;
+  AuditAxisLines lines;
+  lines.rotationPoint = Vec3(centre.x(), centre.y(), 0.0);
+  lines.tiltPoint = Vec3(centre.x(), centre.y(), axes.tiltHeightMm - axes.platformZMm);
+  lines.tiltDirection = axes.tiltAlongX ? Vec3::UnitX() : Vec3::UnitY();
+  return lines;
+}
+
+Eigen::Isometry3d twoAxisModelToFile(const AuditTwoAxes& axes, const Eigen::Isometry3d& rest,
+                                     const AuditAxisCoordinates& at) {
+  const AuditAxisLines lines = auditAxisLines(axes);
+  const auto about = [](const Vec3& through, const Vec3& direction, double angle) {
+    Eigen::Isometry3d turn = Eigen::Isometry3d::Identity();
+    turn.linear() = Eigen::AngleAxisd(angle, direction).toRotationMatrix();
+    turn.translation() = through - turn.linear() * through;
+    return turn;
+  };
+  return about(lines.tiltPoint, lines.tiltDirection, -axes.tilt.conventionRadians(at.tiltDegrees)) *
+         about(lines.rotationPoint, Vec3::UnitZ(), axes.rotation.conventionRadians(at.rotationDegrees)) * rest;
+}
+
 }  // namespace multidir::slicing

@@ -65,7 +65,9 @@ class ProgramAuditor::Impl {
         m_solids(solids),
         m_out(out),
         m_report(report),
-        m_material(materialCell(job, alphaDegrees)) {
+        m_material(materialCell(job, alphaDegrees)),
+        m_twoAxis(job.platform == AuditPlatform::FirmwareTwoAxis),
+        m_rest(auditModelToFile(job.machine, job.steps.front().angles)) {
     for (const AuditStep& s : job.steps) {
       StepAudit row;
       row.step = s.index;
@@ -79,8 +81,7 @@ class ProgramAuditor::Impl {
   // none (job.gcode): the pose follows the A axis as replayed.
   core::Status replay(const std::string& text, const std::string& name, std::size_t fileStep,
                       const Eigen::Isometry3d* fixedPose, MachineState& state, core::JobContext& context) {
-    core::Result<Replay> replayed = replayGcode(text, name, m_job.rotaryAxis.empty() ? 'A' : m_job.rotaryAxis[0],
-                                                m_options.retractToleranceMm, state);
+    core::Result<Replay> replayed = replayGcode(text, name, replayAxes(), m_options.retractToleranceMm, state);
     if (!replayed) return replayed.error();
     m_lastLine = replayed->lineCount;
     std::size_t stepSlot = fileStep;
@@ -106,7 +107,7 @@ class ProgramAuditor::Impl {
                           " (the platform turns there: nothing may be printed)");
         continue;
       }
-      const Eigen::Isometry3d pose = fixedPose ? *fixedPose : firmwarePose(move.aFromDegrees);
+      const Eigen::Isometry3d pose = fixedPose ? *fixedPose : stitchedPose(move.axesFrom);
       if (!fixedPose) checkStitchedAngle(move, stepSlot, name);
       extrusion(move, stepSlot, pose);
     }
@@ -189,6 +190,27 @@ class ProgramAuditor::Impl {
     return fallback;
   }
 
+  // The axes the replay follows: the tilt and rotation axes (letters and Klipper steppers), or the one
+  // firmware axis by its letter (any manual_stepper).
+  std::vector<ReplayAxis> replayAxes() const {
+    if (m_twoAxis)
+      return {{m_job.twoAxes.tilt.letter.empty() ? 'U' : m_job.twoAxes.tilt.letter[0], m_job.twoAxes.tilt.stepper},
+              {m_job.twoAxes.rotation.letter.empty() ? 'V' : m_job.twoAxes.rotation.letter[0],
+               m_job.twoAxes.rotation.stepper}};
+    return {{m_job.rotaryAxis.empty() ? 'A' : m_job.rotaryAxis[0], std::string()}};
+  }
+
+  // job.gcode: the pose the axes hold as replayed.
+  Eigen::Isometry3d stitchedPose(const std::array<double, kMaxRotaryAxes>& axes) {
+    return m_twoAxis ? twoAxisPose(axes) : firmwarePose(axes[0]);
+  }
+
+  const Eigen::Isometry3d& twoAxisPose(const std::array<double, kMaxRotaryAxes>& axes) {
+    const auto found = m_twoAxisPoses.find(axes);
+    if (found != m_twoAxisPoses.end()) return found->second;
+    return m_twoAxisPoses.emplace(axes, twoAxisModelToFile(m_job.twoAxes, m_rest, {axes[0], axes[1]})).first->second;
+  }
+
   const Eigen::Isometry3d& firmwarePose(double aDegrees) {
     const auto found = m_firmwarePoses.find(aDegrees);
     if (found != m_firmwarePoses.end()) return found->second;
@@ -210,13 +232,35 @@ class ProgramAuditor::Impl {
   void checkStitchedAngle(const ReplayMove& move, std::size_t slot, const std::string& name) {
     if (m_angleChecked.count(slot)) return;
     m_angleChecked[slot] = true;
+    if (m_twoAxis) {
+      checkStitchedCoordinates(move, slot, name);
+      return;
+    }
     const double expected = axisSign() * m_job.steps[slot].angles.rotaryDegrees;
-    if (std::abs(move.aFromDegrees - expected) > 1e-3) {
+    if (std::abs(move.axesFrom[0] - expected) > 1e-3) {
       ++m_report.poseMismatches;
       m_report.findings.push_back(name + ": line " + std::to_string(move.line) + ": step " +
-                                  std::to_string(m_job.steps[slot].index) + " prints at A " + fixed(move.aFromDegrees) +
+                                  std::to_string(m_job.steps[slot].index) + " prints at A " + fixed(move.axesFrom[0]) +
                                   " degrees, but its plan angle gives A " + fixed(expected) +
                                   " (print-job.json angles.rotaryDegrees)");
+    }
+  }
+
+  // job.gcode on two axes: a step printed at other coordinates than print-job.json's axisDegrees for it.
+  void checkStitchedCoordinates(const ReplayMove& move, std::size_t slot, const std::string& name) {
+    const AuditStep& step = m_job.steps[slot];
+    if (!step.axisDegrees) return;  // the reader requires them for a firmware-2axis job
+    const std::array<std::pair<const AuditRotaryAxis*, double>, kMaxRotaryAxes> expected = {
+        std::pair{&m_job.twoAxes.tilt, step.axisDegrees->tiltDegrees},
+        std::pair{&m_job.twoAxes.rotation, step.axisDegrees->rotationDegrees}};
+    for (std::size_t k = 0; k < kMaxRotaryAxes; ++k) {
+      if (std::abs(move.axesFrom[k] - expected[k].second) <= 1e-3) continue;
+      ++m_report.poseMismatches;
+      m_report.findings.push_back(name + ": line " + std::to_string(move.line) + ": step " +
+                                  std::to_string(step.index) + " prints at " + expected[k].first->letter + " " +
+                                  fixed(move.axesFrom[k]) + " degrees, but print-job.json gives " +
+                                  expected[k].first->letter + " " + fixed(expected[k].second) +
+                                  " (slicing.steps[].axisDegrees): the step was sliced in another pose");
     }
   }
 
@@ -323,13 +367,80 @@ class ProgramAuditor::Impl {
     if (move.movesXy() || std::abs(move.to.z() - move.from.z()) > 1e-9)
       sequenceViolation(name + ": line " + std::to_string(move.line) +
                         ": the platform turns in a move that also moves the nozzle");
-    const Eigen::Isometry3d& from = firmwarePose(move.aFromDegrees);
+    if (m_twoAxis) {
+      twoAxisTurn(move, slot, name);
+      return;
+    }
+    const Eigen::Isometry3d& from = firmwarePose(move.axesFrom[0]);
     std::vector<Vec3> points;
     points.reserve(m_ends.size());
     for (const Vec3& m : m_ends) points.push_back(from * m);
-    const double radians = -(move.aToDegrees - move.aFromDegrees) * M_PI / 180.0;
+    const double radians = -(move.axesTo[0] - move.axesFrom[0]) * M_PI / 180.0;
     const double top = sweptTop(points, Vec3::UnitX(), radians) + m_job.printerOffset.z();
     recordTurn(slot, std::min(move.from.z(), move.to.z()), top, move.line);
+  }
+
+  // (e) job.gcode on two axes: each axis' move swept exactly about its line (the tilt axis, fixed; the rotation
+  // axis, the platform's normal through the rotation centre as the tilt holds it). A move turning both axes at
+  // once has no such arc: it is a sequence violation, and its clearance is the worse of the two orders.
+  void twoAxisTurn(const ReplayMove& move, std::size_t slot, const std::string& name) {
+    checkLimits(move, name);
+    const double nozzleZ = std::min(move.from.z(), move.to.z());
+    if (move.turns(0) && move.turns(1)) {
+      sequenceViolation(name + ": line " + std::to_string(move.line) + ": " + m_job.twoAxes.tilt.letter + " and " +
+                        m_job.twoAxes.rotation.letter +
+                        " turn in one move: their path is the firmware's blend, not an arc about either axis");
+      double top = -std::numeric_limits<double>::infinity();
+      for (std::size_t first : {std::size_t{0}, std::size_t{1}}) {
+        std::array<double, kMaxRotaryAxes> middle = move.axesFrom;
+        middle[first] = move.axesTo[first];
+        top = std::max({top, singleAxisSweptTop(move.axesFrom, first, move.axesTo[first]),
+                        singleAxisSweptTop(middle, 1 - first, move.axesTo[1 - first])});
+      }
+      recordTurn(slot, nozzleZ, top + m_job.printerOffset.z(), move.line);
+      return;
+    }
+    const std::size_t axis = move.turns(0) ? 0 : 1;
+    const double top = singleAxisSweptTop(move.axesFrom, axis, move.axesTo[axis]);
+    recordTurn(slot, nozzleZ, top + m_job.printerOffset.z(), move.line);
+  }
+
+  // The highest z (files' frame) of the material so far while axis `axis` turns from `from` to `toDegrees`.
+  double singleAxisSweptTop(const std::array<double, kMaxRotaryAxes>& from, std::size_t axis, double toDegrees) {
+    const Eigen::Isometry3d pose = twoAxisPose(from);
+    const AuditAxisLines lines = auditAxisLines(m_job.twoAxes);
+    Vec3 through = lines.tiltPoint;
+    Vec3 direction = lines.tiltDirection;
+    double radians = 0.0;
+    if (axis == 0) {
+      const AuditRotaryAxis& tilt = m_job.twoAxes.tilt;
+      radians = -(tilt.conventionRadians(toDegrees) - tilt.conventionRadians(from[0]));
+    } else {
+      // The rotation axis as the tilt holds it: the rest normal and centre turned by -t about the tilt line.
+      const AuditRotaryAxis& rotation = m_job.twoAxes.rotation;
+      const Eigen::AngleAxisd tilt(-m_job.twoAxes.tilt.conventionRadians(from[0]), lines.tiltDirection);
+      direction = tilt * Vec3::UnitZ();
+      through = lines.tiltPoint + tilt * (lines.rotationPoint - lines.tiltPoint);
+      radians = rotation.conventionRadians(toDegrees) - rotation.conventionRadians(from[1]);
+    }
+    std::vector<Vec3> points;
+    points.reserve(m_ends.size());
+    for (const Vec3& m : m_ends) points.push_back(pose * m - through);
+    return sweptTop(points, direction, radians) + through.z();
+  }
+
+  // job.gcode on two axes: a coordinate beyond an axis' limits is one the firmware refuses or crashes into.
+  void checkLimits(const ReplayMove& move, const std::string& name) {
+    const std::array<const AuditRotaryAxis*, kMaxRotaryAxes> axes = {&m_job.twoAxes.tilt, &m_job.twoAxes.rotation};
+    for (std::size_t k = 0; k < kMaxRotaryAxes; ++k) {
+      const AuditRotaryAxis& a = *axes[k];
+      if (!move.turns(k) || (move.axesTo[k] >= a.minDegrees - 1e-9 && move.axesTo[k] <= a.maxDegrees + 1e-9)) continue;
+      ++m_report.poseMismatches;
+      m_report.findings.push_back(name + ": line " + std::to_string(move.line) + ": " + a.letter + " " +
+                                  fixed(move.axesTo[k]) + " degrees is outside the axis' limits " +
+                                  fixed(a.minDegrees) + " to " + fixed(a.maxDegrees) +
+                                  " (print-job.json slicing.printer.axes)");
+    }
   }
 
   void recordTurn(std::size_t slot, double nozzleZ, double sweptTopZ, int line) {
@@ -384,7 +495,10 @@ class ProgramAuditor::Impl {
   MaterialGrid m_material;
   std::vector<Direction> m_directions;
   std::vector<Vec3> m_ends;  // extrusion end points, model frame: what a turn sweeps
+  bool m_twoAxis;             // firmware-2axis: the pose follows both axes
+  Eigen::Isometry3d m_rest;   // the first step's pose from its plan angles: both axes at zero
   std::map<double, Eigen::Isometry3d> m_firmwarePoses;
+  std::map<std::array<double, kMaxRotaryAxes>, Eigen::Isometry3d> m_twoAxisPoses;
   std::map<std::size_t, bool> m_angleChecked;
   std::map<ClusterKey, Cluster> m_outside, m_unsupported;
   std::vector<double> m_lowest = std::vector<double>(m_job.steps.size(), std::numeric_limits<double>::infinity());

@@ -43,6 +43,51 @@ Eigen::Isometry3d auditModelToFile(const AuditMachine& machine, const core::Mach
 // origin (positive A tilts the platform's top towards +Y).
 Eigen::Isometry3d firmwareAxisModelToFile(const AuditMachine& machine, double aDegrees);
 
+// One rotary axis of a firmware-2axis printer as print-job.json records it (slicing.printer.axes.tilt /
+// .rotation): the firmware's coordinate is zero + direction x the convention's angle.
+struct AuditRotaryAxis {
+  std::string letter;   // the G-code letter (U, V, B, C...)
+  std::string stepper;  // Klipper's [manual_stepper] name
+  double zeroDegrees = 0.0;
+  double direction = 1.0;  // +1 or -1
+  double minDegrees = -360.0;
+  double maxDegrees = 360.0;
+  // The convention's angle (radians) at the firmware coordinate `degrees`.
+  double conventionRadians(double degrees) const;
+};
+
+// The two axes of a firmware-2axis printer (docs/slicing.md "Two firmware axes"), in printer coordinates.
+struct AuditTwoAxes {
+  AuditRotaryAxis tilt{"U", "tilt", 0.0, 1.0, -90.0, 90.0};
+  AuditRotaryAxis rotation{"V", "rotation", 0.0, 1.0, -360.0, 360.0};
+  bool tiltAlongX = true;                                      // else along the printer's Y
+  double tiltHeightMm = 0.0;                                   // printer Z of the tilt axis
+  Eigen::Vector2d rotationCenterMm = Eigen::Vector2d::Zero();  // printer XY of the rotation axis at tilt zero
+  Eigen::Vector2d platformCenterMm = Eigen::Vector2d::Zero();  // printer XY of the files' frame's origin
+  double platformZMm = 0.0;                                    // printer Z of the files' frame's origin
+};
+
+// Firmware coordinates of the two axes, degrees.
+struct AuditAxisCoordinates {
+  double tiltDegrees = 0.0;
+  double rotationDegrees = 0.0;
+};
+
+// The two axes' lines in the files' frame: the tilt axis through `tiltPoint` along `tiltDirection` (fixed),
+// the rotation axis through `rotationPoint` along +Z with the tilt at zero (it rides on the tilt cradle).
+struct AuditAxisLines {
+  core::Vec3 tiltPoint = core::Vec3::Zero();
+  core::Vec3 tiltDirection = core::Vec3::UnitX();
+  core::Vec3 rotationPoint = core::Vec3::Zero();
+};
+AuditAxisLines auditAxisLines(const AuditTwoAxes& axes);
+
+// Two firmware axes at `at`: the rest pose `rest` (model to files' frame, the first step's pose from its plan
+// angles), then the platform turned by +r about its normal through the rotation centre, then by -t about the
+// tilt axis' line (r, t the convention's angles of the coordinates).
+Eigen::Isometry3d twoAxisModelToFile(const AuditTwoAxes& axes, const Eigen::Isometry3d& rest,
+                                     const AuditAxisCoordinates& at);
+
 // The bead a step lays down (mm): from the printer profile, overridden by the slicer's own settings that
 // close its G-code ("; layer_height = 0.2").
 struct BeadGeometry {
@@ -59,12 +104,14 @@ struct AuditStep {
   Eigen::Isometry3d recordedModelToFile = Eigen::Isometry3d::Identity();  // print-job.json's modelToFile
   core::TriangleMesh region;    // model frame (the step file moved back by recordedModelToFile); a soup
   core::TriangleMesh supports;  // model frame; empty without supports
+  // firmware-2axis: the axes' coordinates while the step prints (print-job.json slicing.steps[i].axisDegrees)
+  std::optional<AuditAxisCoordinates> axisDegrees;
   std::string gcodeFile;        // "step-01.gcode"
   std::string gcode;            // its text
   BeadGeometry bead;
 };
 
-enum class AuditPlatform { None, FirmwareAxis, Modbus };
+enum class AuditPlatform { None, FirmwareAxis, FirmwareTwoAxis, Modbus };
 
 struct AuditJob {
   std::string directory;
@@ -73,6 +120,7 @@ struct AuditJob {
   // Printer coordinates = files' frame + this: (platform_center.x, platform_center.y, platform_z).
   core::Vec3 printerOffset = core::Vec3::Zero();
   std::string rotaryAxis = "A";   // the platform's G-code axis letter (firmware axis)
+  AuditTwoAxes twoAxes;           // FirmwareTwoAxis: the axes (print-job.json slicing.printer.axes)
   double alphaMaxDegrees = 45.0;  // the printable angle: the plan's search.alphaMaxDegrees when it is found
   std::vector<AuditStep> steps;
   std::string stitchedFile;  // "job.gcode", empty when there is none
@@ -82,9 +130,10 @@ struct AuditJob {
 // Reads a job folder written by `multidir slice`: print-job.json (machine, pivot, steps, slicing), the step
 // meshes (binary or ASCII STL), the G-code files, the printer profile named in slicing.printer.profile (its
 // multidir.platform_center, platform_z, rotary_axis and bead settings) and, when the plan folder is still
-// where print-job.json says, plan.json's search.alphaMaxDegrees (else 45 degrees).
+// where print-job.json says, plan.json's search.alphaMaxDegrees (else 45 degrees). A firmware-2axis job: the
+// axes from slicing.printer.axes (else the profile's), each step's slicing.steps[i].axisDegrees required.
 // Errors: FileNotFound (the folder, print-job.json, a step file or G-code), MalformedFile (a field missing
-// or of the wrong type, named with the file; a mesh that cannot be read), UnsupportedFormat (step meshes that
+// or of the wrong type, named with the file and its path in the JSON; a mesh that cannot be read), UnsupportedFormat (step meshes that
 // are not STL), InvalidParameter (no "slicing": the job was not sliced).
 core::Result<AuditJob> readAuditJob(const std::string& directory);
 
@@ -138,6 +187,7 @@ struct StepAudit {
 struct ProgramAudit {
   std::string name;  // "step programs", "step programs (each on its own)" (firmware axis) or "job.gcode"
   bool stitched = false;
+  std::string followedAxes;  // stitched: the rotary axes the pose follows as replayed ("A", "U and V")
   std::vector<StepAudit> steps;
   StepAudit total;                        // sums; firstLayerGapMm: the largest deviation; turnClearanceMm: the least
   std::vector<AuditPlace> outsidePlaces;  // (a): the worst clusters, longest first
@@ -161,8 +211,9 @@ struct AuditReport {
 };
 
 // Replays and checks every program of the job: for a Modbus platform the step programs one after another
-// (the machine's state, the nozzle and the filament carried from one to the next); for a firmware axis the
-// stitched job.gcode and, each on its own, the step programs it was made of. Progress: one share per
+// (the machine's state, the nozzle and the filament carried from one to the next); for a firmware axis (one or
+// two) the stitched job.gcode and, each on its own, the step programs it was made of (two axes: each at the
+// pose of its recorded axis coordinates). Progress: one share per
 // program; cancellation is checked every few thousand moves. Errors: MalformedFile (a G-code line that is
 // not G-code, or an arc move G2/G3, named with file and line), Cancelled.
 core::Result<AuditReport> auditJob(const AuditJob& job, const AuditOptions& options, core::JobContext& context);
