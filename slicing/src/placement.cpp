@@ -308,7 +308,7 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
   for (std::size_t k = 0; k < p.sweeps.size(); ++k) measure(p.sweeps[k], job.steps[k].index, true);
 
   // The turns' clearance (planTurns) on the placed job: the nozzle waits above the swept part.
-  const core::Result<std::vector<TurnPlan>> turns = planTurns(placement.job, profile);
+  const core::Result<std::vector<TurnPlan>> turns = planTurns(placement.job, profile, placement.offsetMm);
   if (!turns) return turns.error();
   placement.turns = *turns;
   Overhang clearance;

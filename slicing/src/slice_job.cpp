@@ -344,13 +344,14 @@ core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& t
 
 }  // namespace
 
-core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile) {
+core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile,
+                                               const Vec3& placementMm) {
   std::vector<TurnPlan> turns;
   const double lift = profile.platformZMm + profile.clearanceMarginMm;
   if (profile.platform == PlatformDrive::FirmwareTwoAxis) {
     // The two axes turn the part about their own lines, one at a time, in the order that keeps it lowest; the
     // platform's disc and cradle sweep with it (two_axis_motion.h).
-    const TwoAxisMachine machine(profile, job.platform.radiusMm);
+    const TwoAxisMachine machine(profile, job.platform.radiusMm, placementMm);
     const core::Result<std::vector<TwoAxisAngles>> angles = machine.stepAngles(job);
     if (!angles) return angles.error();
     for (std::size_t k = 0; k + 1 < job.steps.size(); ++k) {
@@ -456,6 +457,7 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
   sliced.placementMm = placement->offsetMm;
   sliced.turns = placement->turns;  // planTurns of the placed job, computed once by the fit check
   if (twoAxisMachine) {
+    twoAxisMachine.emplace(profile, input.platform.radiusMm, placement->offsetMm);  // the disc where the part is
     // The platform's own body must stay below the nozzle while it prints each step (the turns' clearance
     // includes it already): conservatively, below the step's base plane, under which the nozzle never goes.
     for (std::size_t k = 0; k < job.steps.size(); ++k) {

@@ -46,7 +46,8 @@ Eigen::Isometry3d turnAbout(const Vec3& through, const Vec3& direction, double r
 
 }  // namespace
 
-TwoAxisMachine::TwoAxisMachine(const PrinterProfile& profile, double planPlatformRadiusMm)
+TwoAxisMachine::TwoAxisMachine(const PrinterProfile& profile, double planPlatformRadiusMm,
+                               const Eigen::Vector3d& placementMm)
     : m_axes(profile.twoAxis) {
   const Vec3 printerOrigin(profile.platformCenter.x(), profile.platformCenter.y(), profile.platformZMm);
   const Eigen::Vector2d centre = m_axes.rotationCenter - profile.platformCenter;
@@ -55,12 +56,14 @@ TwoAxisMachine::TwoAxisMachine(const PrinterProfile& profile, double planPlatfor
   m_tiltDirection = m_axes.tiltAlong == TiltAlong::X ? Vec3::UnitX() : Vec3::UnitY();
   m_tiltPoint = Vec3(centre.x(), centre.y(), tiltZ);
 
-  m_radiusMm = m_axes.platformRadiusMm > 0.0 ? m_axes.platformRadiusMm : std::max(0.0, planPlatformRadiusMm);
+  const bool table = m_axes.platformRadiusMm > 0.0;
+  m_radiusMm = table ? m_axes.platformRadiusMm : std::max(0.0, planPlatformRadiusMm);
+  m_discCentre = table ? m_rotationPoint : Vec3(placementMm.x(), placementMm.y(), 0.0);
   if (m_radiusMm > 0.0) {
     const double corner = m_radiusMm / std::cos(M_PI / kDiscSides);
     for (int i = 0; i < kDiscSides; ++i) {
       const double a = 2.0 * M_PI * i / kDiscSides;
-      const Vec3 rim = m_rotationPoint + corner * Vec3(std::cos(a), std::sin(a), 0.0);
+      const Vec3 rim = m_discCentre + corner * Vec3(std::cos(a), std::sin(a), 0.0);
       m_disc.push_back(rim);
       m_disc.push_back(rim - Vec3(0.0, 0.0, m_axes.platformThicknessMm));
     }
@@ -131,7 +134,7 @@ double TwoAxisMachine::bodyTopZ(const TwoAxisAngles& at) const {
   const double rise = m_radiusMm * std::sqrt(std::max(0.0, 1.0 - normal.z() * normal.z()));
   double top = -kInfinity;
   if (m_radiusMm > 0.0)
-    for (const Vec3& centre : {m_rotationPoint, Vec3(m_rotationPoint - m_axes.platformThicknessMm * Vec3::UnitZ())})
+    for (const Vec3& centre : {m_discCentre, Vec3(m_discCentre - m_axes.platformThicknessMm * Vec3::UnitZ())})
       top = std::max(top, (p * centre).z() + rise);
   return std::max(top, highest(m_cradle, tiltPose(at.tiltDegrees)));
 }

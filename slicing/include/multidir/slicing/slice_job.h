@@ -69,9 +69,12 @@ struct SlicedJob {
 
 // The clearance of every turn between two steps (printer z): the printed regions and supports of steps 1..k
 // posed for step k, turned to step k + 1 (4-DOF: exactly over the arc about the rotation axis; 5-DOF: any turn
-// about the pivot; 3-DOF: no turn), plus the profile's margin. Errors: Internal when consecutive poses do not
-// differ by a turn about the axis.
-core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile);
+// about the pivot; 3-DOF: no turn; two firmware axes: each axis' move exactly about its line, in the order that
+// keeps the top lowest, the platform's disc and cradle included, the disc where the part was placed by
+// `placementMm` when the profile gives no table: two_axis_motion.h), plus the profile's margin. Errors: Internal
+// when consecutive poses do not differ by a turn about the axis; those of twoAxisAngles.
+core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile,
+                                               const Eigen::Vector3d& placementMm = Eigen::Vector3d::Zero());
 
 // Slices `job` (frame Machine) for `profile` into `directory` (created when missing). The whole job is written
 // into a fresh folder beside `directory` (core::StagedFolder) and put in its place only when complete: an empty

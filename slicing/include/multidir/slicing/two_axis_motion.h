@@ -38,9 +38,12 @@ struct TwoAxisTurn {
 
 class TwoAxisMachine {
  public:
-  // `planPlatformRadiusMm`: the platform's radius when the profile gives none (multidir.platform_radius = 0),
-  // the plan's platform disc (core::PlatformRegion::radiusMm).
-  TwoAxisMachine(const PrinterProfile& profile, double planPlatformRadiusMm);
+  // The platform's disc: the profile's table (multidir.platform_radius > 0) about the rotation axis; without one
+  // (0), the disc the plan reserved under the part (core::PlatformRegion, radius `planPlatformRadiusMm`), which
+  // the plan's search kept below every cutting plane, centred where the part was placed on the platform
+  // (`placementMm`, the rest frame's offset of the part: placement.h).
+  TwoAxisMachine(const PrinterProfile& profile, double planPlatformRadiusMm,
+                 const Eigen::Vector3d& placementMm = Eigen::Vector3d::Zero());
 
   // The rigid motion of the platform (and the part fixed to it) from rest to the axes at `at` (firmware
   // coordinates), machine frame: Tilt(t) * Rot(r) about the axes' lines.
@@ -82,6 +85,7 @@ class TwoAxisMachine {
   Eigen::Vector3d m_tiltDirection = Eigen::Vector3d::UnitX();
   Eigen::Vector3d m_tiltPoint = Eigen::Vector3d::Zero();      // a point of the tilt axis, machine frame
   Eigen::Vector3d m_rotationPoint = Eigen::Vector3d::Zero();  // where the rotation axis crosses the platform at rest
+  Eigen::Vector3d m_discCentre = Eigen::Vector3d::Zero();     // the platform disc's centre at rest
   double m_radiusMm = 0.0;
   std::vector<core::Vec3> m_disc;    // the platform disc's circumscribed prism corners, rest frame
   std::vector<core::Vec3> m_cradle;  // the cradle box's corners at tilt zero (empty without one)
