@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <atomic>
 #include <cmath>
+#include <future>
 #include <random>
 
 #include "../support/two_axis_program.h"
@@ -202,6 +203,54 @@ TEST(MoonrakerTwoAxisPrint, EndsTheJobInErrorAtAStepperThePrinterLacks) {
   ASSERT_TRUE(test::uploadedAndStarted(*link, path));
   ASSERT_TRUE(test::eventually([&] { return sim.state().jobState == "error"; }, 5s));
   EXPECT_EQ(sim.state().message, "The value 'rotation' is not valid for STEPPER");
+}
+
+// The links ask each printer which axes its firmware has, before a program that turns them is sent.
+TEST(PrinterFirmwareAxes, MoonrakerListsKlippersManualSteppers) {
+  PrinterSimulatorOptions options;
+  options.rotaryAxes.manualSteppers = {"tilt", "rotation"};
+  MoonrakerSimulator sim(options);
+  ASSERT_TRUE(sim.start().ok());
+  auto link = test::moonrakerLinkTo(sim.port());
+  ASSERT_TRUE(link->connect().ok());
+  std::future<core::Result<FirmwareAxes>> asked = link->readFirmwareAxes();
+  ASSERT_EQ(asked.wait_for(3s), std::future_status::ready);
+  const core::Result<FirmwareAxes> axes = asked.get();
+  ASSERT_TRUE(axes.ok()) << axes.error().describe();
+  EXPECT_EQ(axes->manualSteppers, (std::vector<std::string>{"tilt", "rotation"}));
+  EXPECT_TRUE(axes->letters.empty());
+}
+
+TEST(PrinterFirmwareAxes, MarlinReportsItsExtraAxesInM114) {
+  MarlinSimulatorOptions options = test::fastMarlinSimulatorOptions(100.0);
+  options.rotaryAxes.letters = {"U", "V"};
+  test::SimulatedMarlin marlin(options);
+  auto link = test::connectedLink(marlin.link(test::fastPrinterOptions()));
+  std::future<core::Result<FirmwareAxes>> asked = link->readFirmwareAxes();
+  ASSERT_EQ(asked.wait_for(3s), std::future_status::ready);
+  const core::Result<FirmwareAxes> axes = asked.get();
+  ASSERT_TRUE(axes.ok()) << axes.error().describe();
+  EXPECT_EQ(axes->letters, (std::vector<std::string>{"U", "V"}));
+}
+
+TEST(PrinterFirmwareAxes, MarlinWithoutExtraAxesReportsNone) {
+  test::SimulatedMarlin marlin(test::fastMarlinSimulatorOptions(100.0));
+  auto link = test::connectedLink(marlin.link(test::fastPrinterOptions()));
+  std::future<core::Result<FirmwareAxes>> asked = link->readFirmwareAxes();
+  ASSERT_EQ(asked.wait_for(3s), std::future_status::ready);
+  const core::Result<FirmwareAxes> axes = asked.get();
+  ASSERT_TRUE(axes.ok()) << axes.error().describe();
+  EXPECT_TRUE(axes->letters.empty());
+}
+
+TEST(PrinterFirmwareAxes, OctoPrintCannotBeAsked) {
+  OctoPrintSimulator sim;
+  ASSERT_TRUE(sim.start().ok());
+  auto link = test::octoPrintLinkTo(sim.port());
+  ASSERT_TRUE(link->connect().ok());
+  const core::Result<FirmwareAxes> axes = link->readFirmwareAxes().get();
+  ASSERT_FALSE(axes.ok());
+  EXPECT_NE(axes.error().message.find("OctoPrint relays no firmware reply"), std::string::npos);
 }
 
 }  // namespace

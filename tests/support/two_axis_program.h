@@ -72,6 +72,7 @@ inline TwoAxisProgram twoAxisProgram(bool klipper, const TwoAxisMachineSetup& m 
     t += "G1 E" + twoAxisNumber(e) + " F2100\n";
   };
   t += "; MultiDir test program: two steps on a firmware-2axis printer\nG90\nM83\n";
+  t += "; MULTIDIR START SEQUENCE\n; (a printer's homing and purge line go here)\n";
   t += "; MultiDir: the platform's axes, at rest\n";
   if (klipper) {
     t += "MANUAL_STEPPER STEPPER=" + m.tiltStepper + " ENABLE=1 SET_POSITION=" + twoAxisNumber(m.tiltZero) + "\n";
