@@ -150,6 +150,32 @@ TEST(CliRunStitched, AOneAxisKittenJobPrintsOnOctoPrintOnlyWhenTheOperatorSaysTh
   expectEveryExtrusionAtItsStepsAngle(printer.axisLog(), jobJson(job));
 }
 
+// --from 3 on the kitten: the axis is declared where step 2 printed (the program's own turn before it), so the turn
+// to step 3 takes |step 3's angle - step 2's| at the profile's 30 degrees per second, and step 3 on print there.
+TEST(CliRunStitched, AKittenJobResumedAtTheThirdStepTurnsFromTheSecondStepsAngle) {
+  const std::string job = kittenJob(true);
+  const Json turns = jobJson(job)["slicing"]["turns"];
+  ASSERT_GE(turns.size(), 2u);
+  const std::string dir = multidir::test::scratchDirectory("CliRunStitched.KittenFrom3");
+  hw::MoonrakerSimulatorOptions options;
+  options.speed = 100000.0;
+  options.rotaryAxes.manualSteppers = {"rotary_a"};
+  hw::MoonrakerSimulator printer(options);
+  ASSERT_TRUE(printer.start().ok());
+  const CliRun run =
+      runCli("run " + shellQuoted(job) + " --printer http://" + printer.address() + " --from 3", dir, "timeout 120");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_EQ(printer.state().files, std::vector<std::string>{"job-from-03.gcode"});
+  const hw::SimulatedAxisLog log = printer.axisLog();
+  ASSERT_EQ(log.turns.size(), turns.size() - 1);
+  const double from = turns[1]["fromDegrees"].get<double>();
+  const double to = turns[1]["toDegrees"].get<double>();
+  EXPECT_NEAR(log.turns[0].endSeconds - log.turns[0].startSeconds, std::abs(to - from) / 30.0, 1e-9);
+  ASSERT_FALSE(log.extrusions.empty());
+  EXPECT_GT(log.extrusions.front().sequence, log.turns[0].sequence);
+  EXPECT_NEAR(log.extrusions.front().axisDegrees[0], to, 1e-9);
+}
+
 // A job for a platform the printer turns, given the options of a platform driven over Modbus.
 TEST(CliRunStitched, AFirmwareJobGivenModbusDeviceOptionsIsAUsageErrorNamingTheOption) {
   const std::string job = kittenJob(true);
