@@ -4,8 +4,10 @@
 // where their axes stood for every extrusion, so the tests check that each step printed at its own coordinates.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -292,6 +294,37 @@ TEST(CliRunStitched, ATwoAxisJobPrintsOnEachPrinterWithItsAxes) {
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
     expectStepsAtTheirCoordinates(printer.axisLog(), letterProgram, 1);
   }
+}
+
+// Ctrl-C while the program prints step 1: the printer's job is cancelled, as in any run, and the advice names the
+// step the printer was in (from how far it had read the program) and what --from needs on such a printer.
+TEST(CliRunStitched, CtrlCInTheFirstStepCancelsTheProgramAndNamesThatStep) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunStitched.CtrlC");
+  hw::MoonrakerSimulatorOptions options;
+  options.speed = 1.0;  // step 1 prints for seconds
+  options.rotaryAxes.manualSteppers = {"tilt", "rotation"};
+  hw::MoonrakerSimulator printer(options);
+  ASSERT_TRUE(printer.start().ok());
+  const std::string job = writeTwoAxisJob(dir, true);
+  const std::string pidFile = dir + "/pid";
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run " + shellQuoted(job) + " --printer http://" + printer.address(), dir, prefix);
+  });
+  const bool interrupted =
+      multidir::test::signalCliWhen(pidFile, SIGINT, [&] { return printer.axisLog().extrusions.size() >= 2; });
+  const CliRun run = cli.get();
+  ASSERT_TRUE(interrupted) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  int cancels = 0;
+  for (const hw::PrinterRequestRecord& r : printer.requests()) cancels += r.path == "/printer/print/cancel" ? 1 : 0;
+  EXPECT_EQ(cancels, 1);
+  EXPECT_EQ(printer.state().jobState, "cancelled");
+  EXPECT_LT(printer.axisLog().extrusions.size(), 8u);  // step 1 was not finished
+  EXPECT_NE(run.err.find("step 1 was interrupted while printing"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--from 2"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("the platform's axes must stand where the step before it printed"), std::string::npos)
+      << run.err;
 }
 
 TEST(CliRunStitched, APrinterLackingAnAxisTheProgramTurnsIsRefusedBeforeAnythingIsSent) {
