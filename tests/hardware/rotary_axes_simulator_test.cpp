@@ -142,6 +142,17 @@ TEST(GcodeTimelineRotaryAxes, KlipperRefusesAManualStepperItLacksAndIgnoresRotar
                   .error.empty());  // without any manual stepper Klipper only reports an unknown command
 }
 
+// After M83, Klipper's G90 keeps extrusion relative (gcode_move.py: E is relative after G91 or M83), while
+// Marlin's G90 makes every axis absolute, E too: a stitched program's transition (G90) must not change Klipper's E.
+TEST(GcodeTimelineExtrusionMode, KlippersG90KeepsM83sRelativeExtrusionAndMarlinsDoesNot) {
+  sim::GcodeTimelineReader klipper({sim::RotaryAxisSetup::Firmware::Klipper, {}});
+  sim::GcodeTimelineReader marlin({sim::RotaryAxisSetup::Firmware::Marlin, {}});
+  for (sim::GcodeTimelineReader* reader : {&klipper, &marlin})
+    for (const char* line : {"M83", "G90", "G1 X10 E1 F600"}) reader->read(line, 0);
+  EXPECT_TRUE(klipper.read("G1 X20 E1", 0).extrudes);
+  EXPECT_FALSE(marlin.read("G1 X20 E1", 0).extrudes);  // E stays at 1: nothing pushed
+}
+
 // Moonraker and OctoPrint on the test's clock at 10x: the job ends exactly when the sum of its moves has passed.
 class HttpTwoAxisPrint : public testing::TestWithParam<test::PrinterProtocol> {};
 

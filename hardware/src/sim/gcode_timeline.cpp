@@ -122,7 +122,8 @@ TimelineLine GcodeTimelineReader::read(const std::string& text, std::size_t endB
     for (int a = 0; a < 4; ++a) {
       double v = 0;
       if (!word(code, axes[a], v)) continue;
-      const bool rel = a == 3 ? m_relativeE : m_relative;
+      // Klipper's G1 (gcode_move.py): E is relative after G91 or M83; Marlin's G90/G91 set E's mode too.
+      const bool rel = a == 3 ? m_relativeE || (!marlinAxes && m_relative) : m_relative;
       target[a] = rel ? m_position[a] + v : v;
     }
     std::array<double, 3> axisTarget = m_axis;
@@ -152,10 +153,10 @@ TimelineLine GcodeTimelineReader::read(const std::string& text, std::size_t endB
     line.moveSeconds = kHomingSeconds;
   } else if (kind == 'G' && command == 90) {
     m_relative = false;
-    m_relativeE = false;
+    if (marlinAxes) m_relativeE = false;  // Klipper's G90 leaves M83's relative extrusion as it was
   } else if (kind == 'G' && command == 91) {
     m_relative = true;
-    m_relativeE = true;
+    if (marlinAxes) m_relativeE = true;
   } else if (kind == 'G' && command == 92) {
     for (int a = 0; a < 4; ++a) {
       double v = 0;
