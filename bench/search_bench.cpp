@@ -8,7 +8,9 @@
 // --subdivide K: each model subdivided K times first (4^K as many faces, the same surface): the scaling runs.
 // --proxy-faces N: search a decimated proxy of models above N faces (0: always the full mesh).
 // --pose auto: after each --up y search, also the pose search (decomposeWithPoseSearch), on one line below:
-// the chosen up, regions, J_G after as a share of the up-y J_G before, its seconds and its time over up y's.
+// the chosen up, regions, J_G after as a share of the up-y J_G before, its seconds and its time over up y's (wall,
+// and CPU: all threads' user and system time, which the machine's load does not change).
+// --pose-searches K: poses given the full search (default 3).
 // The default runs all nine shared models. J_G is the one definition of docs/jg-definition.md.
 // Up is +Y for every shared model. Peak memory is the process's maximum resident set so far.
 #include <sys/resource.h>
@@ -37,6 +39,13 @@ double peakMemoryMiB() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;
+}
+
+// User and system time of every thread of the process: what a loaded machine does not change, unlike the wall.
+double cpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
 std::vector<std::string> split(const std::string& text) {
@@ -80,6 +89,7 @@ int main(int argc, char** argv) {
     else if (flag == "--proxy-faces") options.proxyFaces = std::atoi(value.c_str());
     else if (flag == "--pose") autoPose = value == "auto";
     else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
+    else if (flag == "--pose-searches") poseOptions.fullSearches = std::atoi(value.c_str());
     else {
       std::fprintf(stderr, "unknown option %s\n", flag.c_str());
       return 2;
@@ -111,6 +121,7 @@ int main(int argc, char** argv) {
       loaded->mesh = std::move(*fine);
     }
     JobContext job;
+    const double cpuBefore = cpuSeconds();
     const auto plan = axes > 0 ? decomposeWithAxisSearch(loaded->mesh, machine, options, axes, job)
                                : decompose(loaded->mesh, machine, options, job, [&](const SearchProgress& p) {
                                    if (verbose)
@@ -145,7 +156,9 @@ int main(int argc, char** argv) {
                     region.angles.tiltDegrees, region.volumeMm3, region.riskyAreaMm2);
       }
     if (autoPose) {
+      const double searchCpu = cpuSeconds() - cpuBefore;
       JobContext poseJob;
+      const double poseCpuBefore = cpuSeconds();
       const auto posed = decomposeWithPoseSearch(loaded->mesh, machine, options, poseOptions, poseJob);
       if (!posed.ok()) {
         std::fprintf(stderr, "%s: pose search: %s\n", name.c_str(), posed.error().describe().c_str());
@@ -154,10 +167,11 @@ int main(int argc, char** argv) {
       const double autoShare = 100.0 * posed->plan.jgAfterMm2 / plan->jgBeforeMm2;
       autoShares.push_back(autoShare);
       std::printf("  auto: up (%.2f %.2f %.2f) %-7s %2zu regions, J_G %.2f -> %.2f, %.2f %% of up-y J_G before, "
-                  "%.2f s (x%.1f)%s\n",
+                  "%.2f s (x%.1f; CPU x%.2f)%s\n",
                   posed->chosen.up.x(), posed->chosen.up.y(), posed->chosen.up.z(), poseSourceName(posed->chosen.source),
                   posed->plan.regions.size(), posed->plan.jgBeforeMm2, posed->plan.jgAfterMm2, autoShare,
                   posed->seconds, posed->seconds / std::max(1e-9, plan->statistics.seconds),
+                  (cpuSeconds() - poseCpuBefore) / std::max(1e-9, searchCpu),
                   posed->plan.jgAfterMm2 > plan->jgAfterMm2 + 1e-6 ? "  WORSE than up y" : "");
     }
     std::fflush(stdout);

@@ -2371,8 +2371,8 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
-        <source>Poses tried: the current up, the model&apos;s stable resting poses and sampled directions</source>
-        <translation>Probierte Posen: die aktuelle Aufwärtsrichtung, die stabilen Ruhelagen des Modells und abgetastete Richtungen</translation>
+        <source>Poses tried: the current up and the poses the model stands in on its own</source>
+        <translation>Probierte Posen: die aktuelle Aufwärtsrichtung und die Posen, in denen das Modell von selbst steht</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="50"/>
@@ -2404,6 +2404,26 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
         <source>Up</source>
         <translation>Oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Contact (mm²)</source>
+        <translation>Auflage (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Margin (mm)</source>
+        <translation>Reserve (mm)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
+        <translation>Fläche des Stücks der konvexen Hülle des Modells, das in dieser Pose auf der Plattform steht</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
+        <translation>Wie weit der Schwerpunkt innerhalb dieser Fläche liegt: das Modell steht nur, wenn der Wert positiv ist</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="72"/>

@@ -2367,8 +2367,8 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
-        <source>Poses tried: the current up, the model&apos;s stable resting poses and sampled directions</source>
-        <translation>尝试的姿态：当前向上方向、模型的稳定放置姿态以及采样方向</translation>
+        <source>Poses tried: the current up and the poses the model stands in on its own</source>
+        <translation>尝试的姿态：当前向上方向以及模型能自行站立的姿态</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="50"/>
@@ -2400,6 +2400,26 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
         <source>Up</source>
         <translation>向上方向</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Contact (mm²)</source>
+        <translation>接触面积 (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Margin (mm)</source>
+        <translation>余量 (mm)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
+        <translation>在此姿态下模型凸包与平台接触部分的面积</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
+        <translation>重心投影位于该接触面内的距离：仅当其为正时模型才能站稳</translation>
     </message>
     <message>
         <location filename="../ui/panels/pose_search_box.cpp" line="72"/>

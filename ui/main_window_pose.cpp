@@ -22,7 +22,8 @@ std::vector<core::PlanPoseTrial> runnersUpOf(const core::PoseSearchResult& resul
   for (std::size_t i = 0; i < result.trials.size(); ++i) {
     const core::PoseTrial& t = result.trials[i];
     if (static_cast<int>(i) == used || t.regions == 0) continue;  // the pose used, and poses never scored
-    others.push_back({t.pose.up, core::poseSourceName(t.pose.source), t.jgAfterMm2, t.regions, t.searched});
+    others.push_back({t.pose.up, core::poseSourceName(t.pose.source), t.jgAfterMm2, t.regions, t.searched,
+                      t.pose.contactAreaMm2, t.pose.stabilityMarginMm});
   }
   std::stable_sort(others.begin(), others.end(), [](const auto& a, const auto& b) {
     if (a.searched != b.searched) return a.searched;

@@ -37,8 +37,9 @@ const char* const kDecomposeHelp =
     "  --machine KIND       3dof, 4dof or 5dof (default: 5dof, or the profile's)\n"
     "  --axis X,Y,Z         4dof: the platform's rotation axis, perpendicular to up (default: x, or y if up is x)\n"
     "  --axis-search N      4dof: also try N rotation axes over 180 degrees and keep the best plan\n"
-    "  --pose MODE          up: stand the model on --up (default); auto: choose the pose too, trying the\n"
-    "                       given up, the model's stable resting poses and sampled directions\n"
+    "  --pose MODE          up: stand the model on --up (default); auto: choose the pose too, among the\n"
+    "                       poses the model stands in: on a patch of its convex hull that holds its centre\n"
+    "                       of mass (the given up included when it does)\n"
     "  --poses N            --pose auto: candidate poses, 1 to 200 (default: 24)\n"
     "  --pose-searches K    --pose auto: poses given the full search, 1 to N (default: 4)\n"
     "  --profile FILE       machine profile (JSON); --machine, --up and --axis override its fields\n"
@@ -76,6 +77,14 @@ const char* const kDecomposeHelp =
     "found until then (plan.json then says \"cancelled\": true); a second Ctrl-C quits without saving.\n"
     "\n"
     "Exit codes: 0 ok, 1 the model or profile cannot be read or the plan cannot be written, 2 usage error.\n";
+
+const std::set<std::string> kDecomposeValueOptions = {
+    "--up",      "--machine", "--axis",    "--axis-search",     "--scheme",          "--beam-width",
+    "--alpha",   "--normals", "--refine",  "--offset-step",     "--w",               "--scales",
+    "--min-region-height",    "--min-plane-gain",               "--min-plane-gain-area",
+    "--threads", "--profile", "-o",        "--summary",         "--support-spacing", "--scale",
+    "--pose",    "--poses",   "--pose-searches",                "--proxy-faces"};
+const std::set<std::string> kDecomposeFlags = {"--help", "--no-supports", "--no-proxy"};
 
 namespace {
 
@@ -189,13 +198,7 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
 }
 
 Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
-  const ParsedArgs parsed =
-      parseArgs(args,
-                {"--up", "--machine", "--axis", "--axis-search", "--scheme", "--beam-width", "--alpha", "--normals",
-                 "--refine", "--offset-step", "--w", "--scales", "--min-region-height", "--min-plane-gain", "--min-plane-gain-area",
-                 "--threads", "--profile", "-o", "--summary", "--support-spacing", "--scale", "--pose", "--poses",
-                 "--pose-searches", "--proxy-faces"},
-                {"--help", "--no-supports", "--no-proxy"}, "decompose");
+  const ParsedArgs parsed = parseArgs(args, kDecomposeValueOptions, kDecomposeFlags, "decompose");
   helpOnly = parsed.has("--help");
   Settings s;
   if (helpOnly) return s;
@@ -257,10 +260,12 @@ core::PlanPose planPoseOf(const core::PoseSearchResult& r) {
   pose.rotation = r.rotation;
   pose.source = core::poseSourceName(r.chosen.source);
   pose.contactAreaMm2 = r.chosen.contactAreaMm2;
+  pose.stabilityMarginMm = r.chosen.stabilityMarginMm;
   for (std::size_t i = 0; i < r.trials.size(); ++i) {
     if (static_cast<int>(i) == r.chosenTrial) continue;
     const core::PoseTrial& t = r.trials[i];
-    pose.runnersUp.push_back({t.pose.up, core::poseSourceName(t.pose.source), t.jgAfterMm2, t.regions, t.searched});
+    pose.runnersUp.push_back({t.pose.up, core::poseSourceName(t.pose.source), t.jgAfterMm2, t.regions, t.searched,
+                              t.pose.contactAreaMm2, t.pose.stabilityMarginMm});
   }
   std::stable_sort(pose.runnersUp.begin(), pose.runnersUp.end(), [](const auto& a, const auto& b) {
     if (a.searched != b.searched) return a.searched;
@@ -273,11 +278,13 @@ nlohmann::json poseSummary(const core::PlanPose& pose) {
   nlohmann::json runnersUp = nlohmann::json::array();
   for (const core::PlanPoseTrial& t : pose.runnersUp)
     runnersUp.push_back({{"up", {t.up.x(), t.up.y(), t.up.z()}}, {"source", t.source}, {"jg_after", t.jgAfterMm2},
-                         {"regions", t.regions}, {"searched", t.searched}});
+                         {"regions", t.regions}, {"searched", t.searched}, {"contact_area", t.contactAreaMm2},
+                         {"stability_margin", t.stabilityMarginMm}});
   nlohmann::json rotation = nlohmann::json::array();
   for (int r = 0; r < 3; ++r) rotation.push_back({pose.rotation(r, 0), pose.rotation(r, 1), pose.rotation(r, 2)});
   return {{"up", {pose.up.x(), pose.up.y(), pose.up.z()}}, {"rotation", rotation}, {"source", pose.source},
-          {"contact_area", pose.contactAreaMm2}, {"runners_up", runnersUp}};
+          {"contact_area", pose.contactAreaMm2}, {"stability_margin", pose.stabilityMarginMm},
+          {"runners_up", runnersUp}};
 }
 
 std::string vectorText(const core::Vec3& v) {
@@ -352,6 +359,13 @@ void writeSummary(const Settings& s, const core::Decomposition& plan, std::size_
 
 }  // namespace
 
+void checkDecomposeOptions(const std::vector<std::string>& options) {
+  std::vector<std::string> args = {"model", "-o", "plan"};
+  args.insert(args.end(), options.begin(), options.end());
+  bool helpOnly = false;
+  settingsFrom(args, helpOnly);
+}
+
 int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   bool helpOnly = false;
   // Every option is checked before the model is read, so a typo costs no loading time.
@@ -408,7 +422,8 @@ int runDecompose(const std::vector<std::string>& args, std::ostream& out, std::o
   printTable(out, s, plan);
   if (pose) {
     out << "Pose         up " << vectorText(pose->up) << " (" << pose->source << "; " << pose->runnersUp.size()
-        << " other poses tried)\n";
+        << " other poses tried), standing on " << formatNumber("%.2f", pose->contactAreaMm2)
+        << " mm^2, centre of mass " << formatNumber("%.2f", pose->stabilityMarginMm) << " mm inside its edge\n";
   }
   std::vector<core::SupportSet> supports;
   if (s.supports && plan.jgAfterMm2 > 0) {

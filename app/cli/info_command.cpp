@@ -22,8 +22,9 @@ const char* const kInfoHelp =
     "  --alpha DEGREES  maximal self-supporting angle, at least 0 and below 90 (default: 45)\n"
     "  --scale FACTOR   multiply the model's coordinates by FACTOR, for a model in other units\n"
     "                   (0.001: micrometres, 25.4: inches; default: 1)\n"
-    "  --poses          also list the candidate poses of 'decompose --pose auto' (the given up, stable\n"
-    "                   resting poses, sampled directions; 24) with their single-direction risky area\n"
+    "  --poses          also list the candidate poses of 'decompose --pose auto' (the given up, then poses\n"
+    "                   the model stands in; at most 24) with the contact area they stand on, the centre of\n"
+    "                   mass's margin inside it (negative: it tips over) and their single-direction risky area\n"
     "  --json FILE      also write everything as JSON to FILE\n"
     "  -h, --help       show this help\n"
     "\n"
@@ -150,8 +151,12 @@ int runInfo(const std::vector<std::string>& args, std::ostream& out, std::ostrea
           << format("%.2f", c.stabilityMarginMm) << "  " << format("%.2f", c.riskyAreaMm2) << "\n";
       poses.push_back({{"up", toJson(c.up)}, {"source", core::poseSourceName(c.source)},
                        {"contactAreaMm2", c.contactAreaMm2}, {"stabilityMarginMm", c.stabilityMarginMm},
-                       {"riskyAreaMm2", c.riskyAreaMm2}});
+                       {"riskyAreaMm2", c.riskyAreaMm2}, {"stands", c.stands()}});
     }
+    const core::PoseCandidate& given = candidates->front();
+    if (!given.stands())
+      out << "  the given up does not stand (" << (given.contactAreaMm2 > 0 ? "its centre of mass falls outside the contact" : "the bed touches a point or an edge")
+          << "): decompose --pose auto does not try it\n";
   }
   if (!jsonPath.empty()) {
     const double area = loaded->report.statistics.areaMm2;

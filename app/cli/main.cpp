@@ -6,6 +6,7 @@
 
 #include "../common/heap_tuning.h"
 #include "audit_command.h"
+#include "batch_command.h"
 #include "cli_args.h"
 #include "decompose_command.h"
 #include "export_command.h"
@@ -27,6 +28,8 @@ const char* const kUsage =
     "Commands:\n"
     "  info MODEL                  statistics, load checks and overhang area of a model\n"
     "  decompose MODEL -o OUTDIR   cut a model into regions with printing directions; write the plan\n"
+    "  batch INPUT -o OUTDIR       decompose every model of a folder or list file: one plan folder each and\n"
+    "                              one results table; --shard I/N, resumable\n"
     "  export PLAN_DIR -o OUTDIR   the print job of a plan: one mesh per step, posed as the machine holds it\n"
     "  slice PLAN_OR_JOB --printer PROFILE -o OUTDIR   G-code for every step (PrusaSlicer), checked\n"
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
@@ -56,6 +59,10 @@ int help(const std::vector<std::string>& args) {
   }
   if (args[0] == "decompose") {
     std::cout << kDecomposeHelp;
+    return kExitOk;
+  }
+  if (args[0] == "batch") {
+    std::cout << kBatchHelp;
     return kExitOk;
   }
   if (args[0] == "export") {
@@ -100,6 +107,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "help") return help(rest);
   if (command == "info") return runInfo(rest, std::cout, std::cerr);
   if (command == "decompose") return runDecompose(rest, std::cout, std::cerr);
+  if (command == "batch") return runBatch(rest, std::cout, std::cerr);
   if (command == "simulate") return runSimulate(rest, std::cout, std::cerr);
   if (command == "report") return runReport(rest, std::cout, std::cerr);
   if (command == "export") return runExport(rest, std::cout, std::cerr);

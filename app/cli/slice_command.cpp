@@ -192,7 +192,20 @@ void printTable(std::ostream& out, const slicing::SlicedJob& job) {
   for (const slicing::TurnPlan& t : job.turns) {
     // Only a rotary platform's turn has one angle; a robot arm's is a tilt and an azimuth (print-job.json).
     std::string angles;
-    if (t.fromDegrees != 0.0 || t.toDegrees != 0.0) {
+    if (t.twoAxis) {
+      // Two firmware axes: each move in the order the program makes it.
+      const slicing::TwoAxisPlatform& axes = job.profile.twoAxis;
+      for (const slicing::AxisMove& m : t.twoAxis->moves) {
+        const std::string& letter = m.axis == slicing::AxisMove::Axis::Tilt ? axes.tilt.letter : axes.rotation.letter;
+        std::snprintf(line, sizeof line, "%s %s %.1f -> %.1f", angles.empty() ? "" : ", then", letter.c_str(),
+                      m.fromDegrees, m.toDegrees);
+        angles += line;
+      }
+      std::snprintf(line, sizeof line, "  turn after step %d: %s; part and platform sweep to z %.2f mm, nozzle at %.2f mm\n",
+                    t.fromStep, angles.empty() ? "the axes stay" : angles.c_str() + 1, t.sweptTopZMm, t.clearanceZMm);
+      out << line;
+      continue;
+    } else if (t.fromDegrees != 0.0 || t.toDegrees != 0.0) {
       std::snprintf(line, sizeof line, " %.1f -> %.1f degrees,", t.fromDegrees, t.toDegrees);
       angles = line;
     }

@@ -43,25 +43,57 @@ bool splitWords(const std::string& code, std::vector<Word>& words) {
   return true;
 }
 
-// MANUAL_STEPPER STEPPER=name MOVE=deg ...: the MOVE value, if any.
-bool manualStepperMove(const std::string& code, double& degrees) {
+// The number after `key` ("MOVE=") in a Klipper command, if any.
+bool klipperNumber(const std::string& code, const std::string& upperCode, const char* key, double& value) {
+  const std::size_t at = upperCode.find(key);
+  if (at == std::string::npos) return false;
+  const std::size_t from = at + std::string(key).size();
+  char* end = nullptr;
+  value = std::strtod(code.c_str() + from, &end);
+  return end != code.c_str() + from && std::isfinite(value);
+}
+
+// MANUAL_STEPPER STEPPER=name MOVE=deg | SET_POSITION=deg ...
+struct ManualStepper {
+  std::string stepper;  // upper case
+  bool moves = false;
+  bool setsPosition = false;
+  double degrees = 0.0;
+};
+
+bool manualStepper(const std::string& code, ManualStepper& out) {
   const std::string u = upper(code);
   if (u.rfind("MANUAL_STEPPER", 0) != 0) return false;
-  const std::size_t at = u.find("MOVE=");
-  if (at == std::string::npos) return false;
-  char* end = nullptr;
-  degrees = std::strtod(code.c_str() + at + 5, &end);
-  return end != code.c_str() + at + 5;
+  out = ManualStepper{};
+  if (const std::size_t at = u.find("STEPPER=", 14); at != std::string::npos) {
+    const std::size_t end = u.find_first_of(" \t", at);
+    out.stepper = u.substr(at + 8, end == std::string::npos ? std::string::npos : end - at - 8);
+  }
+  out.moves = klipperNumber(code, u, "MOVE=", out.degrees);
+  if (!out.moves) out.setsPosition = klipperNumber(code, u, "SET_POSITION=", out.degrees);
+  return out.moves || out.setsPosition;
 }
 
 }  // namespace
 
 core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string& rotaryAxis, const std::string& name) {
-  const char rotaryLetter = rotaryAxis.empty() ? 'A' : static_cast<char>(std::toupper(rotaryAxis[0]));
+  return parseGcode(text, std::vector<RotaryAxisName>{{rotaryAxis.empty() ? "A" : rotaryAxis, ""}}, name);
+}
+
+core::Result<GcodeProgram> parseGcode(const std::string& text, const std::vector<RotaryAxisName>& axes,
+                                      const std::string& name) {
+  const auto letterOf = [&](std::size_t i) {
+    return i < axes.size() && !axes[i].letter.empty() ? static_cast<char>(std::toupper(axes[i].letter[0])) : '\0';
+  };
+  const char rotaryLetter = axes.empty() ? 'A' : letterOf(0);
+  const char secondLetter = letterOf(1);
+  const auto stepperOf = [&](std::size_t i) { return i < axes.size() ? upper(axes[i].klipperStepper) : std::string(); };
+  const std::string rotaryStepper = stepperOf(0), secondStepper = stepperOf(1);
   GcodeProgram program;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   double e = 0.0;
   double rotary = 0.0;
+  double second = 0.0;
   bool absoluteXyz = true;
   bool absoluteE = true;
   int step = 0;
@@ -94,13 +126,25 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
     code = code.substr(first);
     while (!code.empty() && std::isspace(static_cast<unsigned char>(code.back()))) code.pop_back();
 
-    double manualDegrees = 0.0;
-    if (manualStepperMove(code, manualDegrees)) {
+    ManualStepper manual;
+    if (manualStepper(code, manual)) {
+      // One axis: any manual stepper is the platform's (as before names were known); two: the one named.
+      const bool isFirst = rotaryStepper.empty() || manual.stepper == rotaryStepper;
+      const bool isSecond = !isFirst && !secondStepper.empty() && manual.stepper == secondStepper;
+      if (manual.setsPosition) {
+        if (isFirst) rotary = manual.degrees;
+        if (isSecond) second = manual.degrees;
+        continue;
+      }
       GcodeMove move;
       move.line = lineNumber;
       move.from = move.to = position;
       move.rotaryFromDegrees = rotary;
-      move.rotaryToDegrees = rotary = manualDegrees;
+      move.secondFromDegrees = second;
+      if (isFirst) rotary = manual.degrees;
+      if (isSecond) second = manual.degrees;
+      move.rotaryToDegrees = rotary;
+      move.secondToDegrees = second;
       move.commandsRotaryAxis = true;
       move.step = step;
       move.inTransition = inTransition;
@@ -127,6 +171,7 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
         if (word.letter == 'Z') position.z() = word.value;
         if (word.letter == 'E') e = word.value;
         if (word.letter == rotaryLetter) rotary = word.value;
+        if (secondLetter != '\0' && word.letter == secondLetter) second = word.value;
       }
       continue;
     }
@@ -150,6 +195,7 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
       move.line = lineNumber;
       move.from = move.to = position;
       move.rotaryFromDegrees = move.rotaryToDegrees = rotary;
+      move.secondFromDegrees = move.secondToDegrees = second;
       move.step = step;
       move.inTransition = inTransition;
       move.firmwareRetraction =
@@ -162,6 +208,7 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
     move.line = lineNumber;
     move.from = position;
     move.rotaryFromDegrees = rotary;
+    move.secondFromDegrees = second;
     move.step = step;
     move.inTransition = inTransition;
     for (std::size_t w = 1; w < words.size(); ++w) {
@@ -176,10 +223,14 @@ core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string
       } else if (word.letter == rotaryLetter) {
         rotary = absoluteXyz ? word.value : rotary + word.value;
         move.commandsRotaryAxis = true;
+      } else if (secondLetter != '\0' && word.letter == secondLetter) {
+        second = absoluteXyz ? word.value : second + word.value;
+        move.commandsRotaryAxis = true;
       }
     }
     move.to = position;
     move.rotaryToDegrees = rotary;
+    move.secondToDegrees = second;
     program.moves.push_back(move);
   }
   program.lineCount = lineNumber;

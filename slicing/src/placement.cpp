@@ -56,7 +56,14 @@ struct Extents {
   Vec3 axis = Vec3::UnitX();    // 4-DOF: the rotation axis, machine frame (rest pose)
 };
 
-Extents extentsOf(const core::PrintJob& job) {
+// How the part moves between steps, for placing it: as the plan's machine does, except on two firmware axes,
+// which turn it about their own lines for any plan (its turns' heights are planTurns', like a robot arm's).
+core::MachineKind motionKind(const core::PrintJob& job, const PrinterProfile& profile) {
+  return profile.platform == PlatformDrive::FirmwareTwoAxis && job.steps.size() > 1 ? core::MachineKind::TiltRotate
+                                                                                      : job.machine.kind;
+}
+
+Extents extentsOf(const core::PrintJob& job, core::MachineKind kind) {
   Extents e;
   for (const core::PrintJobStep& step : job.steps) {
     Box b;
@@ -64,7 +71,7 @@ Extents extentsOf(const core::PrintJob& job) {
       for (const Vec3& v : mesh->vertices) b.add(v);
     e.parts.push_back(b);
   }
-  if (job.machine.kind != core::MachineKind::RotaryPlatform) return e;
+  if (kind != core::MachineKind::RotaryPlatform) return e;
   e.axis = (job.steps.front().modelToFile.linear() * job.machine.rotationAxis.normalized()).normalized();
   for (std::size_t k = 0; k + 1 < job.steps.size(); ++k) {
     const std::vector<Vec3> points = printedPoints(job, k);
@@ -133,10 +140,10 @@ double searchCost(const core::PrintJob& job, const Extents& e, const Vec3& d, co
   return worstViolation(p, profile) + 1e-3 * (x + y);
 }
 
-Vec3 chooseOffset(const core::PrintJob& job, const Extents& e, const PrinterProfile& profile) {
+Vec3 chooseOffset(const core::PrintJob& job, const Extents& e, const PrinterProfile& profile, core::MachineKind kind) {
   const Placed atZero = placedAt(job, e, Vec3::Zero(), profile);
   const Eigen::Vector2d miss = bedCentre(profile) - centreXy(atZero.all);
-  switch (job.machine.kind) {
+  switch (kind) {
     case core::MachineKind::ThreeAxis:
       return Vec3(miss.x(), miss.y(), 0.0);
     case core::MachineKind::RotaryPlatform: {
@@ -276,9 +283,10 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
   if (job.options.frame != core::PrintJobOptions::Frame::Machine)
     return Error{ErrorCode::InvalidParameter, "placing the part needs the job in the machine frame", "print job"};
   if (job.steps.empty()) return Error{ErrorCode::InvalidParameter, "the job has no steps", "print job"};
-  const Extents extents = extentsOf(job);
+  const core::MachineKind kind = motionKind(job, profile);
+  const Extents extents = extentsOf(job, kind);
   Placement placement;
-  placement.offsetMm = chooseOffset(job, extents, profile);
+  placement.offsetMm = chooseOffset(job, extents, profile, kind);
   placement.job = movedBy(job, placement.offsetMm);
   const Placed p = placedAt(job, extents, placement.offsetMm, profile);
 
@@ -348,15 +356,15 @@ core::Result<Placement> placeOnPlatform(const core::PrintJob& job, const Printer
   // A scaled part scales about the pivot. Along an axis it moves freely on (3-DOF both; 4-DOF its rotation
   // axis) it is centred again, so the spans decide; across, it stays where the plan put it (5-DOF: a smaller
   // part fits there), so each side's reach from the pivot does. The bed a printer needs likewise.
-  const Placed planned = job.machine.kind == core::MachineKind::TiltRotate
+  const Placed planned = kind == core::MachineKind::TiltRotate
                              ? placedAt(job, extents, Vec3::Zero(), profile)
                              : p;
   const Eigen::Vector2d pivot = profile.platformCenter;
   double scale = kInfinity;
   Eigen::Vector2d neededBed = Eigen::Vector2d::Zero();
   for (int axis = 0; axis < 2; ++axis) {
-    const bool free = job.machine.kind == core::MachineKind::ThreeAxis ||
-                      (job.machine.kind == core::MachineKind::RotaryPlatform && std::abs(extents.axis[axis]) > 1.0 - 1e-6);
+    const bool free = kind == core::MachineKind::ThreeAxis ||
+                      (kind == core::MachineKind::RotaryPlatform && std::abs(extents.axis[axis]) > 1.0 - 1e-6);
     if (free) {
       scale = std::min(scale, bed[axis] / span[axis]);
       neededBed[axis] = span[axis];

@@ -346,6 +346,32 @@ core::Result<PrinterProfile> loadPrinterProfile(const std::string& pathOrName) {
         return Error{ErrorCode::InvalidParameter, "'" + value + "' is out of range: give mm in [0, 1000]", ownWhere(key)};
     } else if (key == "step_start_gcode") {
       profile.stepStartGcode = value;
+    } else if (key == "platform_radius" || key == "platform_thickness") {
+      if (core::Status s = checkSettingValue("multidir." + key, value, ownWhere(key)); !s) return s.error();
+      parseDouble(value, key == "platform_radius" ? profile.twoAxis.platformRadiusMm : profile.twoAxis.platformThicknessMm);
+    } else if (key == "cradle_box") {
+      std::vector<double> corners;
+      std::stringstream list(value);
+      std::string item;
+      while (std::getline(list, item, ',')) {
+        double v = 0.0;
+        if (!parseDouble(item, v))
+          return Error{ErrorCode::MalformedFile, "'" + value + "' is not six numbers: give Xmin,Ymin,Zmin,Xmax,Ymax,Zmax "
+                       "in mm (printer coordinates with the tilt at zero)", ownWhere(key)};
+        corners.push_back(v);
+      }
+      if (corners.size() != 6)
+        return Error{ErrorCode::MalformedFile, "'" + value + "' is not six numbers: give Xmin,Ymin,Zmin,Xmax,Ymax,Zmax "
+                     "in mm (printer coordinates with the tilt at zero)", ownWhere(key)};
+      for (double v : corners)
+        if (!coordinate(v))
+          return Error{ErrorCode::InvalidParameter, "'" + value + "' is out of range: give each in " + coordinateRangeText(),
+                       ownWhere(key)};
+      const Eigen::Vector3d lo(corners[0], corners[1], corners[2]), hi(corners[3], corners[4], corners[5]);
+      if (!(lo.array() < hi.array()).all())
+        return Error{ErrorCode::InvalidParameter, "'" + value + "': each minimum must be below its maximum (Xmin,Ymin,Zmin,"
+                     "Xmax,Ymax,Zmax)", ownWhere(key)};
+      profile.twoAxis.cradle = Eigen::AlignedBox3d(lo, hi);
     } else if (key.rfind("tilt_", 0) == 0 || key.rfind("rotation_", 0) == 0 || key == "axis_mount" ||
                key == "klipper_tilt_stepper" || key == "klipper_rotation_stepper") {
       if (core::Status s = readTwoAxisKey(key, value, ownWhere(key), profile.twoAxis, rotationCenterGiven); !s)

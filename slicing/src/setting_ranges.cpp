@@ -48,6 +48,8 @@ constexpr Range kRanges[] = {
     {"multidir.rotation_zero", -360.0, 360.0, true, true, "degrees", false, false},
     {"multidir.rotation_min", -100000.0, 100000.0, true, true, "degrees", false, false},
     {"multidir.rotation_max", -100000.0, 100000.0, true, true, "degrees", false, false},
+    {"multidir.platform_radius", 0.0, 10000.0, true, true, "mm", false, false},
+    {"multidir.platform_thickness", 0.0, 1000.0, true, true, "mm", false, false},
     {"multidir.tilt_height", -kMaxPrinterCoordinateMm, kMaxPrinterCoordinateMm, true, true, "mm", false, false},
 };
 

@@ -25,6 +25,7 @@
 #include "multidir/slicing/placement.h"
 #include "multidir/slicing/slicer_engine.h"
 #include "multidir/slicing/step_recheck.h"
+#include "multidir/slicing/two_axis_motion.h"
 #include "setting_ranges.h"
 
 namespace multidir::slicing {
@@ -145,6 +146,21 @@ core::Status recordInJobFile(const std::string& directory, const SlicedJob& slic
                         {"profile", sliced.profile.path},
                         {"platform", platformDriveName(sliced.profile.platform)},
                         {"dialect", dialectName(sliced.dialect)}};
+  const TwoAxisPlatform& axes = sliced.profile.twoAxis;
+  const bool twoAxis = sliced.profile.platform == PlatformDrive::FirmwareTwoAxis;
+  if (twoAxis) {
+    const auto axisJson = [](const FirmwareRotaryAxis& a) {
+      return nlohmann::ordered_json{{"letter", a.letter},     {"stepper", a.klipperStepper}, {"zero", a.zeroDegrees},
+                                    {"direction", a.direction}, {"min", a.minDegrees},       {"max", a.maxDegrees}};
+    };
+    slicing["printer"]["axes"] = {{"tilt", axisJson(axes.tilt)},
+                                  {"rotation", axisJson(axes.rotation)},
+                                  {"tiltAlong", axes.tiltAlong == TiltAlong::X ? "X" : "Y"},
+                                  {"tiltHeightMm", axes.tiltHeightMm},
+                                  {"rotationCenterMm", {axes.rotationCenter.x(), axes.rotationCenter.y()}},
+                                  {"platformCenterMm", {sliced.profile.platformCenter.x(), sliced.profile.platformCenter.y()}},
+                                  {"platformZMm", sliced.profile.platformZMm}};
+  }
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   for (const SlicedStep& s : sliced.steps) {
     nlohmann::ordered_json step = {{"index", s.index}, {"gcode", s.gcodeFile}};
@@ -154,17 +170,30 @@ core::Status recordInJobFile(const std::string& directory, const SlicedJob& slic
     step["firstLayerZMm"] = s.firstLayerZMm;
     step["highestZMm"] = s.totals.highestZMm;
     step["sliceSeconds"] = s.sliceSeconds;
+    if (s.axisDegrees)
+      step["axisDegrees"] = {{axes.tilt.letter, s.axisDegrees->tiltDegrees},
+                             {axes.rotation.letter, s.axisDegrees->rotationDegrees}};
     steps.push_back(step);
   }
   slicing["steps"] = steps;
   slicing["placementMm"] = {sliced.placementMm.x(), sliced.placementMm.y()};
   nlohmann::ordered_json turns = nlohmann::ordered_json::array();
-  for (const TurnPlan& t : sliced.turns)
-    turns.push_back({{"fromStep", t.fromStep},
-                     {"fromDegrees", t.fromDegrees},
-                     {"toDegrees", t.toDegrees},
-                     {"sweptTopZMm", t.sweptTopZMm},
-                     {"clearanceZMm", t.clearanceZMm}});
+  for (const TurnPlan& t : sliced.turns) {
+    nlohmann::ordered_json turn = {{"fromStep", t.fromStep},
+                                   {"fromDegrees", t.fromDegrees},
+                                   {"toDegrees", t.toDegrees},
+                                   {"sweptTopZMm", t.sweptTopZMm},
+                                   {"clearanceZMm", t.clearanceZMm}};
+    if (t.twoAxis) {
+      nlohmann::ordered_json moves = nlohmann::ordered_json::array();
+      for (const AxisMove& m : t.twoAxis->moves)
+        moves.push_back({{"axis", m.axis == AxisMove::Axis::Tilt ? axes.tilt.letter : axes.rotation.letter},
+                         {"fromDegrees", m.fromDegrees},
+                         {"toDegrees", m.toDegrees}});
+      turn["moves"] = moves;
+    }
+    turns.push_back(turn);
+  }
   slicing["turns"] = turns;
   slicing["total"] = estimateJson(sliced.total);
   slicing["stitched"] = sliced.stitchedFile.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(sliced.stitchedFile);
@@ -318,6 +347,27 @@ core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& t
 core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const PrinterProfile& profile) {
   std::vector<TurnPlan> turns;
   const double lift = profile.platformZMm + profile.clearanceMarginMm;
+  if (profile.platform == PlatformDrive::FirmwareTwoAxis) {
+    // The two axes turn the part about their own lines, one at a time, in the order that keeps it lowest; the
+    // platform's disc and cradle sweep with it (two_axis_motion.h).
+    const TwoAxisMachine machine(profile, job.platform.radiusMm);
+    const core::Result<std::vector<TwoAxisAngles>> angles = machine.stepAngles(job);
+    if (!angles) return angles.error();
+    for (std::size_t k = 0; k + 1 < job.steps.size(); ++k) {
+      const Eigen::Isometry3d toRest = machine.pose((*angles)[k]).inverse();
+      std::vector<Vec3> printed = printedPoints(job, k);
+      for (Vec3& p : printed) p = toRest * p;
+      TurnPlan turn;
+      turn.fromStep = job.steps[k].index;
+      turn.twoAxis = machine.planTurn(printed, (*angles)[k], (*angles)[k + 1]);
+      turn.fromDegrees = turn.twoAxis->from.tiltDegrees;
+      turn.toDegrees = turn.twoAxis->to.tiltDegrees;
+      turn.sweptTopZMm = turn.twoAxis->sweptTopZ + profile.platformZMm;
+      turn.clearanceZMm = turn.twoAxis->sweptTopZ + lift;
+      turns.push_back(turn);
+    }
+    return turns;
+  }
   for (std::size_t k = 0; k + 1 < job.steps.size(); ++k) {
     const std::vector<Vec3> points = printedPoints(job, k);
     TurnPlan turn;
@@ -377,15 +427,6 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
                      std::to_string(input.steps.size()) +
                      " steps: choose a profile with a rotary platform (firmware-axis or modbus)",
                  profile.path};
-  // Two firmware axes (issue 26): the profile and the angles are there (two_axis.h), the stitched program that
-  // turns them between steps is not yet, so nothing turns the platform: one-step jobs only, as for `none`.
-  if (profile.platform == PlatformDrive::FirmwareTwoAxis && input.steps.size() > 1)
-    return Error{ErrorCode::InvalidParameter,
-                 "the printer '" + profile.name + "' turns its platform with two firmware axes (multidir.platform = "
-                 "firmware-2axis), whose multi-step program MultiDir does not write yet, but the job has " +
-                     std::to_string(input.steps.size()) +
-                     " steps: slice it for a printer whose platform is driven over Modbus or by one firmware axis",
-                 profile.path};
   if (profile.platform == PlatformDrive::FirmwareAxis && input.machine.kind == core::MachineKind::TiltRotate &&
       input.steps.size() > 1)
     return Error{ErrorCode::InvalidParameter,
@@ -395,13 +436,44 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
 
   // Every step prints from its base plane up (its supports clipped there), and the part is placed where it
   // fits the printer, or refused now rather than after the slicer ran (placement.h).
-  const core::Result<core::PrintJob> clipped = withSupportsOnTheirBasePlanes(input);
+  // Two firmware axes hold the part as their own kinematics do (two_axis_motion.h), not as the plan's machine
+  // would: every step is posed again, the first at rest.
+  std::optional<core::PrintJob> twoAxisJob;
+  std::optional<TwoAxisMachine> twoAxisMachine;
+  std::vector<TwoAxisAngles> axisAngles;
+  if (profile.platform == PlatformDrive::FirmwareTwoAxis) {
+    twoAxisMachine.emplace(profile, input.platform.radiusMm);
+    core::Result<std::vector<TwoAxisAngles>> angles = twoAxisMachine->stepAngles(input);
+    if (!angles) return angles.error();
+    axisAngles = std::move(angles).value();
+    twoAxisJob = twoAxisMachine->posed(input, axisAngles);
+  }
+  const core::Result<core::PrintJob> clipped = withSupportsOnTheirBasePlanes(twoAxisJob ? *twoAxisJob : input);
   if (!clipped) return clipped.error();
   const core::Result<Placement> placement = placeOnPlatform(*clipped, profile);
   if (!placement) return placement.error();
   const core::PrintJob& job = placement->job;
   sliced.placementMm = placement->offsetMm;
   sliced.turns = placement->turns;  // planTurns of the placed job, computed once by the fit check
+  if (twoAxisMachine) {
+    // The platform's own body must stay below the nozzle while it prints each step (the turns' clearance
+    // includes it already): conservatively, below the step's base plane, under which the nozzle never goes.
+    for (std::size_t k = 0; k < job.steps.size(); ++k) {
+      const double body = twoAxisMachine->bodyTopZ(axisAngles[k]);
+      if (body > job.steps[k].lowestHeightMm + 1e-3)
+        return Error{ErrorCode::InvalidParameter,
+                     "step " + std::to_string(job.steps[k].index) + ": with the axes at " +
+                         profile.twoAxis.tilt.letter + " " + fixed(axisAngles[k].tiltDegrees, 1) + ", " +
+                         profile.twoAxis.rotation.letter + " " + fixed(axisAngles[k].rotationDegrees, 1) +
+                         " the platform's body (its disc of radius " + fixed(twoAxisMachine->platformRadiusMm(), 1) +
+                         " mm and the tilt cradle) reaches z " + fixed(body + profile.platformZMm, 2) +
+                         " mm, above the step's base plane at z " +
+                         fixed(job.steps[k].lowestHeightMm + profile.platformZMm, 2) +
+                         " mm where the nozzle prints its first layer: the nozzle would hit it. Plan with smaller "
+                         "tilts, or check multidir.platform_radius, platform_thickness, cradle_box and tilt_height",
+                     profile.path};
+    }
+  }
   if (profile.platform == PlatformDrive::FirmwareAxis && job.machine.kind == core::MachineKind::RotaryPlatform &&
       job.steps.size() > 1) {
     // The firmware's axis runs along the printer's X: the plan's axis must too, and A counts the plan's
@@ -537,6 +609,7 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
     out.zOffsetMm = tasks[k].request.zOffsetMm;
     out.modelToPrinter = toPrinter * step.modelToFile;
     out.sliceSeconds = run.seconds;
+    if (!axisAngles.empty()) out.axisDegrees = axisAngles[k];
     if (k > 0) {
       const std::size_t at = run.gcode.find(kPrimeMarker);
       if (at == std::string::npos)
@@ -546,7 +619,7 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
       run.gcode.replace(at, std::string(kPrimeMarker).size(), primeText);
     }
 
-    const core::Result<GcodeProgram> program = parseGcode(run.gcode, profile.rotaryAxis, out.gcodeFile);
+    const core::Result<GcodeProgram> program = parseGcode(run.gcode, rotaryAxisNames(profile), out.gcodeFile);
     if (!program) return program.error();
     StepBounds bounds = stepBounds(profile, prime, step.index, out.baseZMm);
     const bool turnsAfter = k + 1 < n && profile.platform != PlatformDrive::None;
@@ -575,12 +648,12 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
     sliced.fixedDirection = *estimate;
   }
 
-  if (profile.platform == PlatformDrive::FirmwareAxis) {
+  if (profile.platform == PlatformDrive::FirmwareAxis || profile.platform == PlatformDrive::FirmwareTwoAxis) {
     context.setProgress((shares - 1.0) / shares, "stitching one program");
     const core::Result<std::string> stitched =
         stitchProgram(gcodes, sliced.turns, profile, sliced.dialect, sliced.total, prime);
     if (!stitched) return stitched.error();
-    const core::Result<GcodeProgram> program = parseGcode(*stitched, profile.rotaryAxis, "job.gcode");
+    const core::Result<GcodeProgram> program = parseGcode(*stitched, rotaryAxisNames(profile), "job.gcode");
     if (!program) return program.error();
     std::vector<StepBounds> bounds;
     for (const SlicedStep& s : sliced.steps) bounds.push_back(stepBounds(profile, prime, s.index, s.baseZMm));

@@ -53,6 +53,48 @@ std::string turnCommands(const PrinterProfile& profile, Dialect dialect, double 
   return lines;
 }
 
+std::vector<RotaryAxisName> rotaryAxisNames(const PrinterProfile& profile) {
+  if (profile.platform == PlatformDrive::FirmwareTwoAxis)
+    return {{profile.twoAxis.tilt.letter, profile.twoAxis.tilt.klipperStepper},
+            {profile.twoAxis.rotation.letter, profile.twoAxis.rotation.klipperStepper}};
+  return {{profile.rotaryAxis, ""}};
+}
+
+std::string twoAxisTurnCommands(const PrinterProfile& profile, Dialect dialect, const TwoAxisTurn& turn) {
+  std::string lines = "M400 ; let the queued moves end\n";
+  for (const AxisMove& move : turn.moves) {
+    const FirmwareRotaryAxis& axis =
+        move.axis == AxisMove::Axis::Tilt ? profile.twoAxis.tilt : profile.twoAxis.rotation;
+    const char* what = move.axis == AxisMove::Axis::Tilt ? " ; tilt" : " ; rotation";
+    if (dialect == Dialect::Klipper)
+      lines += "MANUAL_STEPPER STEPPER=" + axis.klipperStepper + " MOVE=" + fixed(move.toDegrees) +
+               " SPEED=" + fixed(profile.rotaryFeedDegreesPerMin / 60.0) + what + "\n";
+    else
+      lines += "G1 " + axis.letter + fixed(move.toDegrees) + " F" + fixed(profile.rotaryFeedDegreesPerMin, 0) + what + "\n";
+    lines += "M400 ; wait until the platform stands\n";
+  }
+  return lines;
+}
+
+std::string axisSetupCommands(const PrinterProfile& profile, Dialect dialect) {
+  if (profile.platform == PlatformDrive::FirmwareTwoAxis) {
+    const TwoAxisAngles rest = restAngles(profile.twoAxis);
+    std::string setup = "; MultiDir: the platform's two axes, at rest (level, azimuth 0): " +
+                        profile.twoAxis.tilt.letter + " " + fixed(rest.tiltDegrees) + ", " +
+                        profile.twoAxis.rotation.letter + " " + fixed(rest.rotationDegrees) + " degrees\n";
+    if (dialect == Dialect::Klipper)
+      return setup + "MANUAL_STEPPER STEPPER=" + profile.twoAxis.tilt.klipperStepper + " ENABLE=1 SET_POSITION=" +
+             fixed(rest.tiltDegrees) + "\nMANUAL_STEPPER STEPPER=" + profile.twoAxis.rotation.klipperStepper +
+             " ENABLE=1 SET_POSITION=" + fixed(rest.rotationDegrees) + "\n";
+    return setup + "G92 " + profile.twoAxis.tilt.letter + fixed(rest.tiltDegrees) + " " +
+           profile.twoAxis.rotation.letter + fixed(rest.rotationDegrees) + "\n";
+  }
+  std::string setup = "; MultiDir: the platform's axis, at rest = 0 degrees\n";
+  if (dialect == Dialect::Klipper)
+    return setup + "MANUAL_STEPPER STEPPER=" + profile.klipperStepper + " ENABLE=1 SET_POSITION=0\n";
+  return setup + "G92 " + profile.rotaryAxis + "0\n";
+}
+
 core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, const std::vector<TurnPlan>& turns,
                                         const PrinterProfile& profile, Dialect dialect, const Estimate& total,
                                         const PrimeSettings& prime) {
@@ -77,7 +119,7 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
                        "', '" + endMarker + "'): was it sliced by MultiDir?",
                    "stitching"};
     Parts p{step.text.substr(0, bodyAt), step.text.substr(bodyAt, endAt - bodyAt), step.text.substr(endAt), {}, {}};
-    const core::Result<GcodeProgram> body = parseGcode(p.body, profile.rotaryAxis, "step " + std::to_string(step.step));
+    const core::Result<GcodeProgram> body = parseGcode(p.body, rotaryAxisNames(profile), "step " + std::to_string(step.step));
     if (!body) return body.error();
     bool found = false;
     for (const GcodeMove& move : body->moves)
@@ -92,12 +134,8 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
     parts.push_back(std::move(p));
   }
 
-  // Axis set-up: the platform stands at rest (angle 0) while the first step prints.
-  std::string setup = "; MultiDir: the platform's axis, at rest = 0 degrees\n";
-  if (dialect == Dialect::Klipper)
-    setup += "MANUAL_STEPPER STEPPER=" + profile.klipperStepper + " ENABLE=1 SET_POSITION=0\n";
-  else
-    setup += "G92 " + profile.rotaryAxis + "0\n";
+  // Axis set-up: the platform stands at rest while the first step prints.
+  const std::string setup = axisSetupCommands(profile, dialect);
 
   const std::string travel = fixed(profile.travelSpeedMmPerS * 60.0, 0);
   std::string out = parts.front().prelude + setup;
@@ -107,8 +145,15 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
     const TurnPlan& turn = turns[i];
     const Eigen::Vector2d& next = parts[i + 1].firstXy;
     out += "; MULTIDIR TRANSITION " + std::to_string(steps[i].step) + "\n";
-    out += "; turn the platform from " + fixed(turn.fromDegrees, 2) + " to " + fixed(turn.toDegrees, 2) +
-           " degrees; the printed part sweeps up to z " + fixed(turn.sweptTopZMm, 2) + " mm\n";
+    if (turn.twoAxis)
+      out += "; turn the platform from " + profile.twoAxis.tilt.letter + " " + fixed(turn.twoAxis->from.tiltDegrees, 2) +
+             " " + profile.twoAxis.rotation.letter + " " + fixed(turn.twoAxis->from.rotationDegrees, 2) + " to " +
+             profile.twoAxis.tilt.letter + " " + fixed(turn.twoAxis->to.tiltDegrees, 2) + " " +
+             profile.twoAxis.rotation.letter + " " + fixed(turn.twoAxis->to.rotationDegrees, 2) +
+             " degrees; the printed part and the platform sweep up to z " + fixed(turn.sweptTopZMm, 2) + " mm\n";
+    else
+      out += "; turn the platform from " + fixed(turn.fromDegrees, 2) + " to " + fixed(turn.toDegrees, 2) +
+             " degrees; the printed part sweeps up to z " + fixed(turn.sweptTopZMm, 2) + " mm\n";
     // The slicer's end of print has drawn the filament back already (by retract_length): only what is missing.
     FilamentState filament = parts[i].atEnd;
     const double missing = prime.retractLengthMm - filament.retractedMm;
@@ -119,7 +164,8 @@ core::Result<std::string> stitchProgram(const std::vector<StepGcode>& steps, con
     }
     out += "G90\nG1 Z" + fixed(turn.clearanceZMm) + " F600 ; lift above the swept part\n";
     out += "G1 X" + fixed(profile.park.x()) + " Y" + fixed(profile.park.y()) + " F" + travel + " ; park\n";
-    out += turnCommands(profile, dialect, turn.toDegrees);
+    out += turn.twoAxis ? twoAxisTurnCommands(profile, dialect, *turn.twoAxis)
+                        : turnCommands(profile, dialect, turn.toDegrees);
     out += "G1 X" + fixed(next.x()) + " Y" + fixed(next.y()) + " F" + travel + " ; return above step " +
            std::to_string(steps[i + 1].step) + "'s first point\n";
     out += primeCommands(filament, prime);

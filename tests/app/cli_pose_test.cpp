@@ -83,6 +83,20 @@ TEST(CliPose, AutoWritesTheChosenPoseIntoPlanJsonAndSummary) {
   EXPECT_NE(p.run.out.find("Pose         up"), std::string::npos) << p.run.out;
 }
 
+TEST(CliPose, PlanJsonRecordsTheContactAndMarginOfEveryPoseTried) {
+  const PoseRun& p = poseRun();
+  ASSERT_EQ(p.run.exitCode, 0) << p.run.err;
+  const nlohmann::json& pose = p.plan["pose"];
+  EXPECT_GT(pose["contactAreaMm2"].get<double>(), 0.0);
+  EXPECT_GT(pose["stabilityMarginMm"].get<double>(), 0.0);
+  EXPECT_EQ(p.summary["pose"]["stability_margin"], pose["stabilityMarginMm"]);
+  for (const auto& t : pose["runnersUp"]) {
+    EXPECT_GT(t["contactAreaMm2"].get<double>(), 0.0) << t.dump();
+    EXPECT_GT(t["stabilityMarginMm"].get<double>(), 0.0) << t.dump();
+  }
+  EXPECT_NE(p.run.out.find("mm inside its edge"), std::string::npos) << p.run.out;
+}
+
 TEST(CliPose, PlanWithAPoseLoadsBack) {
   const PoseRun& p = poseRun();
   ASSERT_EQ(p.run.exitCode, 0) << p.run.err;
@@ -127,4 +141,17 @@ TEST(CliPose, InfoListsCandidatePosesGivenUpFirst) {
   EXPECT_EQ(info["poses"][0]["source"], "given");
   EXPECT_NEAR(info["poses"][0]["riskyAreaMm2"].get<double>(), info["overhang"]["riskyAreaMm2"].get<double>(), 1e-6);
   EXPECT_EQ(info["poses"][1]["source"], "resting");
+  // The knight stands on its base as given; every other candidate stands too.
+  for (const auto& pose : info["poses"]) {
+    EXPECT_GT(pose["contactAreaMm2"].get<double>(), 0.0) << pose.dump();
+    EXPECT_GT(pose["stabilityMarginMm"].get<double>(), 0.0) << pose.dump();
+  }
+}
+
+TEST(CliPose, InfoSaysWhenTheGivenUpWouldTipOver) {
+  const std::string dir = multidir::test::scratchDirectory("CliPose.InfoTips");
+  // The bunny as scanned touches the bed with one point of its hull along +Y.
+  const CliRun run = runCli("info '" + multidir::test::sharedModelPath("bunny.off") + "' --up y --poses", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("the given up does not stand"), std::string::npos) << run.out;
 }

@@ -111,6 +111,12 @@ TEST(PrinterProfile, EveryTwoAxisValueOutOfItsRangeIsRefusedNamingTheFileKeyAndR
       {"axis_mount = sideways", "rotation-on-tilt"},
       {"klipper_tilt_stepper = two words", "[manual_stepper]"},
       {"platform = firmware-3axis", "firmware-2axis"},
+      {"platform_radius = -1", "mm in [0, 10000]"},
+      {"platform_thickness = 1e9", "mm in [0, 1000]"},
+      {"cradle_box = 1,2,3", "six numbers"},
+      {"cradle_box = 0,0,0,10,10,nan", "six numbers"},
+      {"cradle_box = 0,0,0,1e308,10,10", "mm in [-10000, 10000]"},
+      {"cradle_box = 10,0,0,0,10,10", "minimum must be below its maximum"},
   };
   for (const auto& [line, range] : cases) {
     SCOPED_TRACE(line);
@@ -138,4 +144,16 @@ TEST(PrinterProfile, TheTiltAndTheRotationAxisNeedTheirOwnLetters) {
   ASSERT_FALSE(p.ok());
   EXPECT_EQ(p.error().where, path + ": multidir.rotation_axis");
   EXPECT_NE(p.error().message.find("both V"), std::string::npos) << p.error().message;
+}
+
+TEST(PrinterProfile, ThePlatformsBodyIsReadFromItsKeys) {
+  const auto p = loadPrinterProfile(profileFile(
+      "body", "# multidir.platform = firmware-2axis\n# multidir.platform_radius = 45\n"
+              "# multidir.platform_thickness = 8\n# multidir.cradle_box = 60,70,-40,160,150,-5\n"));
+  ASSERT_TRUE(p.ok()) << p.error().describe();
+  EXPECT_DOUBLE_EQ(p->twoAxis.platformRadiusMm, 45.0);
+  EXPECT_DOUBLE_EQ(p->twoAxis.platformThicknessMm, 8.0);
+  ASSERT_TRUE(p->twoAxis.cradle.has_value());
+  EXPECT_EQ(p->twoAxis.cradle->min(), Eigen::Vector3d(60, 70, -40));
+  EXPECT_EQ(p->twoAxis.cradle->max(), Eigen::Vector3d(160, 150, -5));
 }

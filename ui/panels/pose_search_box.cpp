@@ -28,7 +28,6 @@ QString sourceText(core::PoseSource source) {
   switch (source) {
     case core::PoseSource::Given: return PoseSearchBox::tr("given up");
     case core::PoseSource::Resting: return PoseSearchBox::tr("resting");
-    case core::PoseSource::Sampled: return PoseSearchBox::tr("sampled");
   }
   return {};
 }
@@ -42,7 +41,7 @@ PoseSearchBox::PoseSearchBox(QWidget* parent) : QGroupBox(tr("Best pose"), paren
   m_poses->setObjectName(QStringLiteral("posesToTry"));
   m_poses->setRange(1, 200);
   m_poses->setValue(defaults.poses);
-  m_poses->setToolTip(tr("Poses tried: the current up, the model's stable resting poses and sampled directions"));
+  m_poses->setToolTip(tr("Poses tried: the current up and the poses the model stands in on its own"));
   m_fullSearches = new QSpinBox(this);
   m_fullSearches->setObjectName(QStringLiteral("poseFullSearches"));
   m_fullSearches->setRange(1, defaults.poses);
@@ -69,8 +68,13 @@ PoseSearchBox::PoseSearchBox(QWidget* parent) : QGroupBox(tr("Best pose"), paren
 
   m_table = new QTableWidget(0, ColumnCount, this);
   m_table->setObjectName(QStringLiteral("poseTable"));
-  m_table->setHorizontalHeaderLabels({tr("Source"), tr("Up"), tr("Risky area (mm²)"), tr("J_G (mm²)"), tr("Regions"),
-                                      tr("Search")});
+  m_table->setHorizontalHeaderLabels({tr("Source"), tr("Up"), tr("Contact (mm²)"), tr("Margin (mm)"),
+                                      tr("Risky area (mm²)"), tr("J_G (mm²)"), tr("Regions"), tr("Search")});
+  m_table->horizontalHeaderItem(ContactColumn)
+      ->setToolTip(tr("Area of the patch of the model's convex hull that stands on the platform in this pose"));
+  m_table->horizontalHeaderItem(MarginColumn)
+      ->setToolTip(tr("How far inside that patch the centre of mass falls: the model stands only when it is "
+                      "positive"));
   m_table->horizontalHeaderItem(RiskyColumn)
       ->setToolTip(tr("Risky area of the whole model printed along this up alone (J_G before)"));
   m_table->horizontalHeaderItem(JgColumn)->setToolTip(tr("J_G of the plan found for this pose"));
@@ -177,6 +181,8 @@ void PoseSearchBox::showResult(const core::PoseSearchResult& result, bool cancel
     const QString search = trial.searched ? tr("full search") : scored ? tr("quick plan") : tr("not scored");
     const QString cells[ColumnCount] = {sourceText(trial.pose.source),
                                         upText(trial.pose.up),
+                                        area(trial.pose.contactAreaMm2),
+                                        QLocale().toString(trial.pose.stabilityMarginMm, 'f', 2),
                                         area(trial.pose.riskyAreaMm2),
                                         scored ? area(trial.jgAfterMm2) : tr("-"),
                                         scored ? QString::number(trial.regions) : tr("-"),

@@ -24,7 +24,17 @@ class PoseSearchBox : public QGroupBox {
 
  public:
   // Table columns.
-  enum Column { SourceColumn, UpColumn, RiskyColumn, JgColumn, RegionsColumn, SearchColumn, ColumnCount };
+  enum Column {
+    SourceColumn,
+    UpColumn,
+    ContactColumn,
+    MarginColumn,
+    RiskyColumn,
+    JgColumn,
+    RegionsColumn,
+    SearchColumn,
+    ColumnCount
+  };
 
   explicit PoseSearchBox(QWidget* parent = nullptr);
 

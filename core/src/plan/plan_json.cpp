@@ -184,9 +184,11 @@ ordered_json poseToJson(const PlanPose& pose) {
   ordered_json runnersUp = ordered_json::array();
   for (const PlanPoseTrial& t : pose.runnersUp)
     runnersUp.push_back({{"up", toJson(t.up)}, {"source", t.source}, {"jgAfterMm2", t.jgAfterMm2},
-                         {"regions", t.regions}, {"searched", t.searched}});
+                         {"regions", t.regions}, {"searched", t.searched}, {"contactAreaMm2", t.contactAreaMm2},
+                         {"stabilityMarginMm", t.stabilityMarginMm}});
   return {{"up", toJson(pose.up)}, {"rotation", rotation}, {"source", pose.source},
-          {"contactAreaMm2", pose.contactAreaMm2}, {"runnersUp", runnersUp}};
+          {"contactAreaMm2", pose.contactAreaMm2}, {"stabilityMarginMm", pose.stabilityMarginMm},
+          {"runnersUp", runnersUp}};
 }
 
 PlanPose poseFromJson(const JsonField& field) {
@@ -200,6 +202,8 @@ PlanPose poseFromJson(const JsonField& field) {
     rotation.fail("must be a rotation (orthonormal rows, determinant 1)");
   pose.source = field["source"].string();
   pose.contactAreaMm2 = field["contactAreaMm2"].numberAtLeast(0.0);
+  // Plans written before the margin was recorded have none.
+  if (const auto margin = field.optional("stabilityMarginMm")) pose.stabilityMarginMm = margin->number();
   const JsonField runnersUp = field["runnersUp"];
   for (std::size_t i = 0; i < runnersUp.arraySize(); ++i) {
     const JsonField t = runnersUp.element(i);
@@ -209,6 +213,8 @@ PlanPose poseFromJson(const JsonField& field) {
     trial.jgAfterMm2 = t["jgAfterMm2"].numberAtLeast(0.0);
     trial.regions = static_cast<int>(t["regions"].integer(0, kMaxCount));
     trial.searched = t["searched"].boolean();
+    if (const auto contact = t.optional("contactAreaMm2")) trial.contactAreaMm2 = contact->numberAtLeast(0.0);
+    if (const auto margin = t.optional("stabilityMarginMm")) trial.stabilityMarginMm = margin->number();
     pose.runnersUp.push_back(trial);
   }
   return pose;

@@ -178,8 +178,22 @@ class Quickhull {
   std::unordered_map<std::uint64_t, std::int32_t> m_edges;  // directed edge -> the face it belongs to
 };
 
-// 2-D convex hull (Andrew's monotone chain), counter-clockwise.
-std::vector<Eigen::Vector2d> hull2d(std::vector<Eigen::Vector2d> pts) {
+}  // namespace
+
+Result<ConvexHull> convexHull(const std::vector<Vec3>& points) {
+  if (points.size() < 4)
+    return Error{ErrorCode::EmptyMesh, "a solid needs at least 4 points to have a hull", "convex hull"};
+  double scale = 1.0;
+  for (const Vec3& p : points) {
+    if (!p.allFinite()) return Error{ErrorCode::NonFiniteVertex, "a point is NaN or infinite", "convex hull"};
+    scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  }
+  Quickhull qh(points, 1e-9 * scale * 1e2);
+  if (Status s = qh.run(); !s) return s.error();
+  return qh.result();
+}
+
+std::vector<Eigen::Vector2d> convexHull2d(std::vector<Eigen::Vector2d> pts) {
   std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y(); });
   if (pts.size() < 3) return pts;
   auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -197,83 +211,6 @@ std::vector<Eigen::Vector2d> hull2d(std::vector<Eigen::Vector2d> pts) {
   }
   h.resize(k - 1);
   return h;
-}
-
-}  // namespace
-
-Result<ConvexHull> convexHull(const std::vector<Vec3>& points) {
-  if (points.size() < 4)
-    return Error{ErrorCode::EmptyMesh, "a solid needs at least 4 points to have a hull", "convex hull"};
-  double scale = 1.0;
-  for (const Vec3& p : points) {
-    if (!p.allFinite()) return Error{ErrorCode::NonFiniteVertex, "a point is NaN or infinite", "convex hull"};
-    scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  }
-  Quickhull qh(points, 1e-9 * scale * 1e2);
-  if (Status s = qh.run(); !s) return s.error();
-  return qh.result();
-}
-
-std::vector<HullFacet> mergedFacets(const ConvexHull& hull, double mergeDegrees) {
-  const std::size_t n = hull.triangles.size();
-  std::vector<Vec3> normals(n);
-  std::vector<double> areas(n);
-  std::unordered_map<std::uint64_t, std::int32_t> edges;
-  for (std::size_t f = 0; f < n; ++f) {
-    const Triangle& t = hull.triangles[f];
-    const Vec3 an = (hull.vertices[t[1]] - hull.vertices[t[0]]).cross(hull.vertices[t[2]] - hull.vertices[t[0]]);
-    areas[f] = 0.5 * an.norm();
-    normals[f] = an.normalized();
-    for (int k = 0; k < 3; ++k) edges[detail::directedEdgeKey(t[k], t[(k + 1) % 3])] = static_cast<std::int32_t>(f);
-  }
-  // Largest triangles seed groups first, so a patch grows from its bulk, not from a sliver at its rim.
-  std::vector<std::size_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return areas[a] > areas[b]; });
-  const double cosMerge = std::cos(mergeDegrees * kPi / 180.0);
-  std::vector<char> used(n, 0);
-  std::vector<HullFacet> facets;
-  for (std::size_t seed : order) {
-    if (used[seed]) continue;
-    std::vector<std::size_t> group = {seed};
-    used[seed] = 1;
-    for (std::size_t i = 0; i < group.size(); ++i) {
-      const Triangle& t = hull.triangles[group[i]];
-      for (int k = 0; k < 3; ++k) {
-        const auto it = edges.find(detail::directedEdgeKey(t[(k + 1) % 3], t[k]));
-        if (it == edges.end()) continue;
-        const auto g = static_cast<std::size_t>(it->second);
-        if (!used[g] && normals[g].dot(normals[seed]) >= cosMerge) {
-          used[g] = 1;
-          group.push_back(g);
-        }
-      }
-    }
-    HullFacet facet;
-    Vec3 sum = Vec3::Zero();
-    for (std::size_t g : group) sum += areas[g] * normals[g];
-    facet.normal = sum.norm() > 0 ? sum.normalized() : normals[seed];
-    // The outline: the group's corners projected on its mean plane, their 2-D hull.
-    const Vec3 u = facet.normal.unitOrthogonal();
-    const Vec3 v = facet.normal.cross(u);
-    double offset = -std::numeric_limits<double>::infinity();
-    std::vector<Eigen::Vector2d> pts;
-    for (std::size_t g : group)
-      for (int k = 0; k < 3; ++k) {
-        const Vec3& p = hull.vertices[hull.triangles[g][k]];
-        pts.emplace_back(u.dot(p), v.dot(p));
-        offset = std::max(offset, facet.normal.dot(p));  // the outermost corner: the bed touches there
-      }
-    const std::vector<Eigen::Vector2d> outline = hull2d(pts);
-    for (std::size_t i = 0; i < outline.size(); ++i) {
-      facet.polygon.push_back(outline[i].x() * u + outline[i].y() * v + offset * facet.normal);
-      const Eigen::Vector2d& a = outline[i];
-      const Eigen::Vector2d& b = outline[(i + 1) % outline.size()];
-      facet.areaMm2 += 0.5 * (a.x() * b.y() - a.y() * b.x());
-    }
-    facets.push_back(std::move(facet));
-  }
-  return facets;
 }
 
 }  // namespace multidir::core

@@ -3,15 +3,17 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "detail/parallel.h"
 #include "multidir/core/analysis/overhang.h"
+#include "multidir/core/common/units.h"
 #include "multidir/core/mesh/mesh_measure.h"
-#include "multidir/core/search/convex_hull.h"
-#include "multidir/core/search/candidate_planes.h"
+#include "multidir/core/search/contact_patch.h"
 #include "search/run_decomposition.h"
 
 namespace multidir::core {
@@ -24,34 +26,10 @@ Error outOfRange(const std::string& what, const std::string& range) {
   return Error{ErrorCode::InvalidParameter, what + " " + range, "pose search"};
 }
 
-// Centre of mass of a closed solid (signed tetrahedra from the origin).
-Vec3 centreOfMass(const TriangleMesh& model) {
-  Vec3 sum = Vec3::Zero();
-  double volume = 0;
-  for (std::size_t f = 0; f < model.faceCount(); ++f) {
-    const Vec3& a = model.corner(f, 0);
-    const Vec3& b = model.corner(f, 1);
-    const Vec3& c = model.corner(f, 2);
-    const double v = a.dot(b.cross(c)) / 6.0;
-    volume += v;
-    sum += v * (a + b + c) / 4.0;
-  }
-  return volume != 0 ? Vec3(sum / volume) : Vec3::Zero();
-}
-
-// Signed distance of p (on the facet's plane) inside the facet's convex outline: > 0 inside.
-double marginInside(const HullFacet& facet, const Vec3& p) {
-  const std::size_t n = facet.polygon.size();
-  if (n < 3) return -1.0;
-  double margin = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& a = facet.polygon[i];
-    const Vec3& b = facet.polygon[(i + 1) % n];
-    const Vec3 inward = facet.normal.cross(b - a);  // CCW seen from outside: n x edge points inside
-    if (inward.norm() <= 0) continue;
-    margin = std::min(margin, inward.normalized().dot(p - a));
-  }
-  return margin;
+std::string formatFixed(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", value);
+  return text;
 }
 
 bool closeToAny(const std::vector<PoseCandidate>& poses, const Vec3& up) {
@@ -66,6 +44,36 @@ double riskyAreaFor(const TriangleMesh& model, const Vec3& up, const SearchOptio
   o.base = RegionBase::Platform;
   const auto analysis = analyzeOverhang(model, up, o);
   return analysis.ok() ? analysis->riskyAreaMm2 : 0.0;
+}
+
+// The hull a model stands on and its centre of mass, found once for all its poses.
+struct StandingModel {
+  ConvexHull hull;
+  Vec3 centreOfMass = Vec3::Zero();
+
+  static Result<StandingModel> of(const TriangleMesh& model) {
+    if (model.empty())
+      return Error{ErrorCode::EmptyMesh, "the model has no faces: load a closed mesh first", "model"};
+    std::vector<Vec3> used;
+    std::vector<char> seen(model.vertexCount(), 0);
+    for (const Triangle& t : model.triangles)
+      for (std::int32_t v : t)
+        if (!seen[v]) seen[v] = 1, used.push_back(model.vertices[v]);
+    auto hull = convexHull(used);
+    if (!hull.ok()) return hull.error();
+    return StandingModel{std::move(*hull), solidCentreOfMass(model)};
+  }
+};
+
+PoseCandidate candidateOn(const ContactPatch& patch, PoseSource source, const TriangleMesh& model,
+                          const SearchOptions& options) {
+  PoseCandidate pose;
+  pose.up = patch.up;
+  pose.source = source;
+  pose.contactAreaMm2 = patch.areaMm2;
+  pose.stabilityMarginMm = patch.stabilityMarginMm;
+  pose.riskyAreaMm2 = riskyAreaFor(model, pose.up, options);
+  return pose;
 }
 
 // The better of two finished searches: least J_G, then fewer regions, then larger contact, then earlier.
@@ -83,7 +91,6 @@ const char* poseSourceName(PoseSource source) {
   switch (source) {
     case PoseSource::Given: return "given";
     case PoseSource::Resting: return "resting";
-    case PoseSource::Sampled: return "sampled";
   }
   return "given";
 }
@@ -99,39 +106,11 @@ Status validate(const PoseOptions& options) {
 
 Result<std::vector<PoseCandidate>> restingPoses(const TriangleMesh& model, double mergeDegrees,
                                                 const SearchOptions& options) {
-  if (model.empty()) return Error{ErrorCode::EmptyMesh, "the model has no faces: load a closed mesh first", "model"};
-  std::vector<Vec3> used;
-  std::vector<char> seen(model.vertexCount(), 0);
-  for (const Triangle& t : model.triangles)
-    for (std::int32_t v : t)
-      if (!seen[v]) seen[v] = 1, used.push_back(model.vertices[v]);
-  auto hull = convexHull(used);
-  if (!hull.ok()) return hull.error();
-  const Vec3 centre = centreOfMass(model);
+  auto standing = StandingModel::of(model);
+  if (!standing.ok()) return standing.error();
   std::vector<PoseCandidate> poses;
-  const std::vector<HullFacet> facets = mergedFacets(*hull, mergeDegrees);
-  double hullArea = 0;
-  for (const HullFacet& facet : facets) hullArea += facet.areaMm2;
-  for (const HullFacet& facet : facets) {
-    // Slivers along hull edges (near-collinear corners) have normals that rounding decides: no pose.
-    if (facet.polygon.size() < 3 || facet.areaMm2 < 1e-6 * hullArea) continue;
-    const Vec3 onPlane = centre - facet.normal * facet.normal.dot(centre - facet.polygon.front());
-    const double margin = marginInside(facet, onPlane);
-    if (!(margin > 0)) continue;
-    PoseCandidate pose;
-    pose.up = -facet.normal;
-    pose.source = PoseSource::Resting;
-    pose.contactAreaMm2 = facet.areaMm2;
-    pose.stabilityMarginMm = margin;
-    pose.riskyAreaMm2 = riskyAreaFor(model, pose.up, options);
-    poses.push_back(pose);
-  }
-  std::stable_sort(poses.begin(), poses.end(), [](const PoseCandidate& a, const PoseCandidate& b) {
-    constexpr double kTie = 1e-6;
-    if (std::abs(a.contactAreaMm2 - b.contactAreaMm2) > kTie * std::max(1.0, a.contactAreaMm2))
-      return a.contactAreaMm2 > b.contactAreaMm2;
-    return a.stabilityMarginMm > b.stabilityMarginMm;
-  });
+  for (const ContactPatch& patch : standingPatches(standing->hull, standing->centreOfMass, mergeDegrees))
+    poses.push_back(candidateOn(patch, PoseSource::Resting, model, options));
   return poses;
 }
 
@@ -139,29 +118,36 @@ Result<std::vector<PoseCandidate>> candidatePoses(const TriangleMesh& model, con
                                                   const PoseOptions& poseOptions, const SearchOptions& options) {
   if (Status s = validate(poseOptions); !s) return s.error();
   if (!givenUp.allFinite() || givenUp.norm() < 1e-12) return outOfRange("the given up", "must be a non-zero direction");
+  auto standing = StandingModel::of(model);
+  if (!standing.ok()) return standing.error();
   std::vector<PoseCandidate> poses;
-  PoseCandidate given;
-  given.up = givenUp.normalized();
-  given.source = PoseSource::Given;
-  given.riskyAreaMm2 = riskyAreaFor(model, given.up, options);
-  poses.push_back(given);
-  auto resting = restingPoses(model, poseOptions.mergeDegrees, options);
-  if (!resting.ok()) return resting.error();
-  // Resting poses take up to two thirds of the slots; sampled directions cover what no flat patch offers
-  // (a bunny rests on its belly, but its best pose may balance on its back).
+  poses.push_back(candidateOn(contactPatch(standing->hull, givenUp, standing->centreOfMass), PoseSource::Given, model,
+                              options));
+  std::vector<ContactPatch> resting =
+      standingPatches(standing->hull, standing->centreOfMass, poseOptions.mergeDegrees);
+  // The largest contacts take up to two thirds of the slots; the rest go to the standing poses farthest from
+  // every pose taken so far, so the candidates cover the directions (a bunny rests on its belly, but its best
+  // pose may be on its side).
   const int restingSlots = 1 + (2 * (poseOptions.poses - 1) + 2) / 3;
-  for (const PoseCandidate& pose : *resting) {
+  std::vector<char> taken(resting.size(), 0);
+  for (std::size_t i = 0; i < resting.size(); ++i) {
     if (static_cast<int>(poses.size()) >= std::min(poseOptions.poses, restingSlots)) break;
-    if (!closeToAny(poses, pose.up)) poses.push_back(pose);
+    if (closeToAny(poses, resting[i].up)) continue;
+    poses.push_back(candidateOn(resting[i], PoseSource::Resting, model, options));
+    taken[i] = 1;
   }
-  const int free = poseOptions.poses - static_cast<int>(poses.size());
-  for (const Vec3& up : fibonacciSphere(std::max(0, free))) {
-    if (closeToAny(poses, up)) continue;
-    PoseCandidate pose;
-    pose.up = up;
-    pose.source = PoseSource::Sampled;
-    pose.riskyAreaMm2 = riskyAreaFor(model, up, options);
-    poses.push_back(pose);
+  while (static_cast<int>(poses.size()) < poseOptions.poses) {
+    int farthest = -1;
+    double farthestCos = 2.0;  // the cosine of its angle to the nearest pose taken: least is farthest
+    for (std::size_t i = 0; i < resting.size(); ++i) {
+      if (taken[i] || closeToAny(poses, resting[i].up)) continue;
+      double nearestCos = -1.0;
+      for (const PoseCandidate& p : poses) nearestCos = std::max(nearestCos, p.up.dot(resting[i].up));
+      if (nearestCos < farthestCos) farthestCos = nearestCos, farthest = static_cast<int>(i);
+    }
+    if (farthest < 0) break;
+    taken[farthest] = 1;
+    poses.push_back(candidateOn(resting[farthest], PoseSource::Resting, model, options));
   }
   return poses;
 }
@@ -185,9 +171,23 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   if (Status s = validate(poseOptions); !s) return s.error();
   if (Status s = detail::checkSearchInputs(model, machine, options); !s) return s.error();
   const auto start = std::chrono::steady_clock::now();
-  auto candidates = candidatePoses(model, machine.up, poseOptions, options);
-  if (!candidates.ok()) return candidates.error();
-  const int count = static_cast<int>(candidates->size());
+  auto all = candidatePoses(model, machine.up, poseOptions, options);
+  if (!all.ok()) return all.error();
+  // Only poses the model stands in are tried; the given up too, for a plan it cannot be printed in is no plan.
+  std::vector<PoseCandidate> standing;
+  std::string refusal;
+  for (const PoseCandidate& pose : *all) {
+    if (pose.stands()) {
+      standing.push_back(pose);
+    } else {
+      refusal = "the given up was not tried: the model would touch the bed in " +
+                (pose.contactAreaMm2 > 0 ? "a patch of " + formatFixed(pose.contactAreaMm2) + " mm^2" : std::string("a point or an edge")) +
+                " with its centre of mass " + formatFixed(-pose.stabilityMarginMm) + " mm outside it and tip over";
+    }
+  }
+  const bool givenStands = !standing.empty() && standing.front().source == PoseSource::Given;
+  const std::vector<PoseCandidate>& candidates = standing;
+  const int count = static_cast<int>(candidates.size());
   const int threads = detail::resolveThreadCount(options.threads);
   SearchOptions single = options;
   single.threads = 1;  // parallel across poses instead
@@ -204,7 +204,7 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     if (job.isCancelled()) return;
     const auto t0 = std::chrono::steady_clock::now();
     PoseTrial& trial = trials[i];
-    trial.pose = (*candidates)[i];
+    trial.pose = candidates[i];
     Decomposition plan = detail::runDecomposition(model, machineForPose(machine, trial.pose.up), cheap, job, {});
     trial.cheapJgMm2 = trial.jgAfterMm2 = plan.jgAfterMm2;
     trial.regions = static_cast<int>(plan.regions.size());
@@ -212,14 +212,15 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     plans[i] = std::move(plan);
     job.setProgress(++finished / steps, "pose scores");
   });
-  for (int i = 0; i < count; ++i) trials[i].pose = (*candidates)[i];
+  for (int i = 0; i < count; ++i) trials[i].pose = candidates[i];
 
   // 2. The full search on the given up and the best-scored others.
   std::vector<int> order;
-  for (int i = 1; i < count; ++i)
+  for (int i = givenStands ? 1 : 0; i < count; ++i)
     if (plans[i]) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return trials[a].cheapJgMm2 < trials[b].cheapJgMm2; });
-  std::vector<int> chosen = {0};
+  std::vector<int> chosen;
+  if (givenStands) chosen.push_back(0);
   for (int i : order)
     if (static_cast<int>(chosen.size()) < searches) chosen.push_back(i);
   if (options.scheme != poseOptions.cheapScheme) {
@@ -258,6 +259,7 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.plan.statistics.seconds = result.seconds;  // the whole pose search, as the time it took to get the plan
   result.plan.statistics.threads = threads;
+  if (!refusal.empty()) result.plan.statistics.notes.push_back(refusal);
   job.setProgress(1.0, "pose search done");
   return result;
 }

@@ -82,16 +82,3 @@ TEST(ConvexHull, RefusesFlatPointSetsWithAClearError) {
   EXPECT_NE(hull.error().message.find("plane"), std::string::npos);
   EXPECT_FALSE(convexHull({Vec3(0, 0, 0), Vec3(1, 0, 0)}).ok());
 }
-
-TEST(ConvexHull, MergedFacetsOfABoxAreItsSixSides) {
-  auto hull = convexHull(multidir::test::makeBox(Vec3(0, 0, 0), Vec3(10, 20, 30)).vertices);
-  ASSERT_TRUE(hull.ok());
-  const std::vector<HullFacet> facets = mergedFacets(*hull, 3.0);
-  ASSERT_EQ(facets.size(), 6u);
-  double total = 0;
-  for (const HullFacet& f : facets) {
-    EXPECT_EQ(f.polygon.size(), 4u);
-    total += f.areaMm2;
-  }
-  EXPECT_NEAR(total, 2 * (200.0 + 300.0 + 600.0), 1e-9);
-}

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "multidir/core/search/contact_patch.h"
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/pose_search.h"
 #include "support/primitives.h"
@@ -82,6 +84,40 @@ TEST(CandidatePoses, StartWithTheGivenUpAndAreBoundedAndDistinct) {
       EXPECT_LT((*poses)[i].up.dot((*poses)[j].up), std::cos(4.9 * kPi / 180)) << i << " " << j;
 }
 
+TEST(CandidatePoses, GivenUpCarriesItsContactAndMarginAndTheOthersAllStand) {
+  // On the end of its bar (up +x) the T tips over: its centre of mass is over the stem, far from that end.
+  const TriangleMesh tbar = multidir::test::makeTBar(4, 20, 30, 4, 10);
+  auto poses = candidatePoses(tbar, Vec3(1, 0, 0), fewPoses(10, 2));
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  EXPECT_EQ((*poses)[0].source, PoseSource::Given);
+  EXPECT_NEAR((*poses)[0].contactAreaMm2, 40.0, 1e-6);  // the bar's 4 x 10 end
+  EXPECT_LT((*poses)[0].stabilityMarginMm, 0.0);
+  EXPECT_FALSE((*poses)[0].stands());
+  for (std::size_t i = 1; i < poses->size(); ++i) EXPECT_TRUE((*poses)[i].stands()) << i;
+}
+
+TEST(CandidatePoses, OfTheBunnyAllStandOnAPatchOfTheirHullAndItsGivenUpTouchesInAPoint) {
+  const TriangleMesh bunny = multidir::test::loadSharedModel("bunny.off");
+  auto poses = candidatePoses(bunny, Vec3::UnitY(), PoseOptions{});
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  ASSERT_GE(poses->size(), 4u);
+  EXPECT_EQ((*poses)[0].contactAreaMm2, 0.0) << "the bunny as scanned rests on one point of its hull";
+  EXPECT_LT((*poses)[0].stabilityMarginMm, 0.0);
+  std::vector<Vec3> corners;
+  for (const Vec3& v : bunny.vertices) corners.push_back(v);
+  auto hull = convexHull(corners);
+  ASSERT_TRUE(hull.ok());
+  const Vec3 centre = solidCentreOfMass(bunny);
+  for (std::size_t i = 1; i < poses->size(); ++i) {
+    const PoseCandidate& pose = (*poses)[i];
+    EXPECT_TRUE(pose.stands()) << i;
+    // The contact reported is the one the bed really touches standing that way up.
+    const ContactPatch patch = contactPatch(*hull, pose.up, centre);
+    EXPECT_NEAR(patch.areaMm2, pose.contactAreaMm2, 1e-6 * std::max(1.0, pose.contactAreaMm2)) << i;
+    EXPECT_NEAR(patch.stabilityMarginMm, pose.stabilityMarginMm, 1e-6) << i;
+  }
+}
+
 TEST(PoseOptions, OutOfRangeCountsAreRefusedWithTheirRange) {
   PoseOptions options;
   options.poses = 0;
@@ -133,6 +169,24 @@ TEST(PoseSearch, ChoosesAPoseWithoutOverhangForABox) {
   EXPECT_NEAR(best->plan.jgAfterMm2, 0.0, 1e-9);
   EXPECT_EQ(best->plan.regions.size(), 1u);
   EXPECT_NEAR(best->chosen.contactAreaMm2, 600.0, 1e-9);
+}
+
+TEST(PoseSearch, NeverTriesAGivenUpTheModelTipsOverInAndSaysSo) {
+  const TriangleMesh tbar = multidir::test::makeTBar(4, 20, 30, 4, 10);
+  MachineSpec machine;
+  machine.up = Vec3::UnitX();  // on the bar's end
+  machine.rotationAxis = Vec3::UnitY();
+  JobContext job;
+  auto best = decomposeWithPoseSearch(tbar, machine, smallOptions(), fewPoses(), job);
+  ASSERT_TRUE(best.ok()) << best.error().describe();
+  for (const PoseTrial& trial : best->trials) {
+    EXPECT_NE(trial.pose.source, PoseSource::Given);
+    EXPECT_TRUE(trial.pose.stands());
+  }
+  EXPECT_TRUE(best->chosen.stands());
+  const std::vector<std::string>& notes = best->plan.statistics.notes;
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
+                          [](const std::string& n) { return n.find("the given up was not tried") != std::string::npos; }));
 }
 
 TEST(PoseSearch, GivesTheSameResultForOneAndTwoThreads) {

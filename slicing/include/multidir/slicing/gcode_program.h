@@ -23,8 +23,10 @@ struct GcodeMove {
   Eigen::Vector3d from = Eigen::Vector3d::Zero();  // printer coordinates, mm
   Eigen::Vector3d to = Eigen::Vector3d::Zero();
   double filamentMm = 0.0;      // filament pushed by this move (negative: retracted)
-  double rotaryFromDegrees = 0.0;
+  double rotaryFromDegrees = 0.0;  // the platform's (first) axis: the firmware axis, or the tilt of two
   double rotaryToDegrees = 0.0;
+  double secondFromDegrees = 0.0;  // the second axis of a two-axis platform: its rotation
+  double secondToDegrees = 0.0;
   int step = 0;                 // the section it lies in: the step (from 1), 0 before any marker
   bool inTransition = false;    // inside a "; MULTIDIR TRANSITION" section (step is the step it leaves)
   // The move commands the platform's axis (a G0/G1 with the rotary letter, or MANUAL_STEPPER ... MOVE=), even
@@ -37,7 +39,9 @@ struct GcodeMove {
 
   bool movesXy() const { return (to.head<2>() - from.head<2>()).squaredNorm() > 1e-12; }
   bool movesZ() const { return std::abs(to.z() - from.z()) > 1e-9; }
-  bool rotates() const { return std::abs(rotaryToDegrees - rotaryFromDegrees) > 1e-9; }
+  bool rotates() const {
+    return std::abs(rotaryToDegrees - rotaryFromDegrees) > 1e-9 || std::abs(secondToDegrees - secondFromDegrees) > 1e-9;
+  }
   // Lays down plastic: pushes filament while moving in XY.
   bool extrudes() const { return filamentMm > 1e-9 && movesXy(); }
 };
@@ -47,8 +51,20 @@ struct GcodeProgram {
   int lineCount = 0;
 };
 
+// How a program names one of the platform's axes: its G-code letter and, for Klipper, its [manual_stepper].
+struct RotaryAxisName {
+  std::string letter = "A";
+  std::string klipperStepper;  // empty: any MANUAL_STEPPER ... MOVE= turns it (one axis only)
+};
+
 // Errors: MalformedFile naming `name` and the line of a G0/G1 word that is not a number.
 core::Result<GcodeProgram> parseGcode(const std::string& text, const std::string& rotaryAxis = "A",
                                       const std::string& name = "G-code");
+
+// The same for a platform with one or two axes (the first: GcodeMove::rotary*, the second: second*). Klipper's
+// MANUAL_STEPPER lines turn the axis whose stepper they name (SET_POSITION= renames its position, as G92 does);
+// one naming another stepper still counts as commanding the platform (commandsRotaryAxis), turning neither.
+core::Result<GcodeProgram> parseGcode(const std::string& text, const std::vector<RotaryAxisName>& axes,
+                                      const std::string& name);
 
 }  // namespace multidir::slicing

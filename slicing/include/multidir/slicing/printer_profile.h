@@ -26,6 +26,9 @@
 //   # multidir.rotation_center = 110,110     printer XY of the rotation axis at tilt zero (default: platform_center)
 //   # multidir.klipper_tilt_stepper = tilt   Klipper: the [manual_stepper]s that drive them
 //   # multidir.klipper_rotation_stepper = rotation
+//   # multidir.platform_radius = 0           the rotary table's radius (0: the plan's platform disc), mm
+//   # multidir.platform_thickness = 5        its thickness below the platform plane, mm
+//   # multidir.cradle_box = 60,70,-40,160,150,-5   the tilt cradle: a box in printer coordinates at tilt zero
 //
 // Shipped profiles live in resources/printers/NAME.ini (marlin-220, klipper-rotary, robot-0.8, open5x-rrf,
 // klipper-2axis); the format is documented in docs/slicing.md.
@@ -45,8 +48,7 @@ enum class PlatformDrive {
   None,          // an ordinary printer: it can print the first step only
   FirmwareAxis,  // the printer's firmware (an A axis): one stitched program, job.gcode
   Modbus,        // MultiDir over Modbus (the hardware panel's print run): one program per step
-  FirmwareTwoAxis,  // the firmware's tilt and rotation axes (Open5x, two_axis.h): one-step jobs until their
-                    // stitched program is written
+  FirmwareTwoAxis,  // the firmware's tilt and rotation axes (Open5x, two_axis.h): one stitched program, job.gcode
 };
 
 // How a firmware axis is driven.

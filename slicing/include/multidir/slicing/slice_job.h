@@ -48,6 +48,8 @@ struct SlicedStep {
   // Takes the plan's model coordinates to the printer's, as this step prints (the machine's pose of the part,
   // then the profile's platform centre and height): its inverse lays the step's G-code over its region.
   Eigen::Isometry3d modelToPrinter = Eigen::Isometry3d::Identity();
+  // firmware-2axis: the axes' coordinates while this step prints (two_axis.h).
+  std::optional<TwoAxisAngles> axisDegrees;
 };
 
 struct SlicedJob {

@@ -4,13 +4,16 @@
 // slicer's own end of print drew back), lift to the turn's clearance, park, turn the platform (per dialect),
 // return above the next step's first point, prime (push back what is drawn back plus retract_restart_extra),
 // reset E.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "multidir/core/common/result.h"
 #include "multidir/slicing/estimates.h"
 #include "multidir/slicing/gcode_checks.h"
+#include "multidir/slicing/gcode_program.h"
 #include "multidir/slicing/printer_profile.h"
+#include "multidir/slicing/two_axis_motion.h"
 
 namespace multidir::slicing {
 
@@ -29,7 +32,14 @@ struct TurnPlan {
   double toDegrees = 0.0;
   double sweptTopZMm = 0.0;   // printer z of the highest point the printed part reaches while turning
   double clearanceZMm = 0.0;  // sweptTopZMm plus the profile's margin: where the nozzle waits
+  // firmware-2axis: both axes' coordinates before and after, and the moves in the order that keeps the swept part
+  // (and the platform's body) lowest; fromDegrees / toDegrees are then the tilt's.
+  std::optional<TwoAxisTurn> twoAxis;
 };
+
+// The platform's axes as the profile's programs name them: the tilt and the rotation axis of a firmware-2axis
+// printer (letters and Klipper steppers), else the one rotary axis.
+std::vector<RotaryAxisName> rotaryAxisNames(const PrinterProfile& profile);
 
 // How a step is primed after its filament was drawn back: the profile's retraction (or `--set`'s).
 struct PrimeSettings {
@@ -46,6 +56,14 @@ std::string primeCommands(const FilamentState& state, const PrimeSettings& prime
 // The lines that turn the platform to `degrees` (Klipper: MANUAL_STEPPER ... MOVE=, Marlin and RRF: G1 A),
 // each preceded by M400 so that the queued moves end first.
 std::string turnCommands(const PrinterProfile& profile, Dialect dialect, double degrees);
+
+// The same for two firmware axes: each of the turn's moves in order, one axis per line (Klipper: the axis'
+// manual_stepper; Marlin and RRF: G1 with its letter), M400 before the first and after each.
+std::string twoAxisTurnCommands(const PrinterProfile& profile, Dialect dialect, const TwoAxisTurn& turn);
+
+// The lines that declare where the axes stand when the program starts: at rest (G92 with each letter's rest
+// coordinate; Klipper: each manual_stepper enabled with SET_POSITION).
+std::string axisSetupCommands(const PrinterProfile& profile, Dialect dialect);
 
 // The stitched program. The closing comments give the totals of `total` in PrusaSlicer's words, so
 // parseEstimate reads them. Errors: InvalidParameter when a step lacks a marker, `turns` does not have one

@@ -12,7 +12,8 @@
 // So a point p of the part at rest goes to Tilt(t) * Rot(r) * p (about the axes' lines). The firmware's own
 // coordinate of each axis, what `G1 U.. V..` takes and what the limits are given in, is
 // zero + direction * angle (multidir.tilt_zero, multidir.tilt_direction, ...).
-#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
 #include <string>
 
 #include "multidir/core/common/result.h"
@@ -38,6 +39,11 @@ struct TwoAxisPlatform {
   TiltAlong tiltAlong = TiltAlong::X;
   double tiltHeightMm = 0.0;                                 // printer Z of the tilt axis
   Eigen::Vector2d rotationCenter = Eigen::Vector2d::Zero();  // printer XY of the rotation axis at tilt zero
+  // The machine's own body, which must stay below the nozzle (two_axis_motion.h): the platform disc about the
+  // rotation axis, from the platform plane down by its thickness, and the tilt cradle as a box.
+  double platformRadiusMm = 0.0;     // multidir.platform_radius; 0: the plan's platform disc
+  double platformThicknessMm = 5.0;  // multidir.platform_thickness
+  std::optional<Eigen::AlignedBox3d> cradle;  // multidir.cradle_box: printer coordinates with the tilt at zero
 };
 
 // Where the two axes stand: their firmware coordinates, degrees.

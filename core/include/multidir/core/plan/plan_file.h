@@ -24,10 +24,12 @@ constexpr int kMachineProfileVersion = 1;
 // A pose tried by the pose search (decomposeWithPoseSearch), as plan.json records it.
 struct PlanPoseTrial {
   Vec3 up = Vec3::UnitZ();   // unit, in the model's coordinates
-  std::string source;        // "given", "resting" or "sampled"
+  std::string source;        // "given" or "resting" ("sampled" in plans of older versions)
   double jgAfterMm2 = 0.0;   // full search, or the cheap (greedy) plan's when not fully searched
   int regions = 0;
   bool searched = false;
+  double contactAreaMm2 = 0.0;     // the hull patch it stands on (docs/search.md, "The pose search")
+  double stabilityMarginMm = 0.0;  // the centre of mass's projection inside that patch (> 0)
 };
 
 // The pose the search chose: its up, and the rotation that turns the input model so that this up points
@@ -36,7 +38,8 @@ struct PlanPose {
   Vec3 up = Vec3::UnitZ();
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   std::string source;
-  double contactAreaMm2 = 0.0;
+  double contactAreaMm2 = 0.0;     // the hull patch it stands on
+  double stabilityMarginMm = 0.0;  // the centre of mass's projection inside that patch (0 in older plans)
   std::vector<PlanPoseTrial> runnersUp;  // the other poses tried, best J_G first
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// The convex hull of a point set in 3-D (quickhull), and the merged faces a solid can rest on.
+// The convex hull of a point set in 3-D (quickhull) and in the plane.
 #include <vector>
 
 #include "multidir/core/common/result.h"
@@ -17,13 +17,8 @@ struct ConvexHull {
 // Errors: EmptyMesh (fewer than 4 points), InvalidParameter (the points are coplanar or non-finite).
 Result<ConvexHull> convexHull(const std::vector<Vec3>& points);
 
-// Hull faces whose normals lie within `mergeDegrees` of each other, grouped over shared edges: the flat
-// patches of a hull (a box's side is two triangles; a faceted cylinder's end is many).
-struct HullFacet {
-  Vec3 normal = Vec3::UnitZ();      // unit, outward: area-weighted mean of its triangles
-  std::vector<Vec3> polygon;        // its outline, convex, counter-clockwise seen from outside
-  double areaMm2 = 0.0;
-};
-std::vector<HullFacet> mergedFacets(const ConvexHull& hull, double mergeDegrees);
+// Convex hull of points in the plane (Andrew's monotone chain), counter-clockwise, collinear points left out;
+// fewer than three points come back as they are, sorted.
+std::vector<Eigen::Vector2d> convexHull2d(std::vector<Eigen::Vector2d> points);
 
 }  // namespace multidir::core

@@ -1,11 +1,13 @@
 #pragma once
 // Best pose: how the model stands on the platform, chosen together with its decomposition.
 //
-// A pose is an up direction of the model (MachineSpec::up); plans stay in the model's coordinates. Candidate
-// poses are the user's up, the model's stable resting poses (flat patches of its convex hull that the centre
-// of mass projects into, largest contact first) and Fibonacci-sampled directions. Each gets a cheap score (the
-// J_G of a greedy plan); the best few, always with the user's up, get the full search; the plan with the least
-// J_G wins (ties: fewer regions, then the larger contact area), so the result is never worse than the given up.
+// A pose is an up direction of the model (MachineSpec::up); plans stay in the model's coordinates. The model
+// stands on a patch of its convex hull (contact_patch.h): a pose is tried only when that patch has an area and
+// holds the centre of mass (no pose balances on a point or an edge, or tips over). Candidates are the user's
+// up (tried only if it stands) and the model's standing poses: the largest contacts, then the ones farthest
+// from those taken, so the directions are covered. Each gets a cheap score (the J_G of a greedy plan); the
+// best few, always with the user's up, get the full search; the plan with the least J_G wins (ties: fewer
+// regions, then the larger contact area), so the result is never worse than a given up the model stands in.
 #include <vector>
 
 #include "multidir/core/common/job_context.h"
@@ -13,33 +15,36 @@
 
 namespace multidir::core {
 
-enum class PoseSource { Given, Resting, Sampled };
-const char* poseSourceName(PoseSource source);  // "given", "resting", "sampled"
+enum class PoseSource { Given, Resting };
+const char* poseSourceName(PoseSource source);  // "given", "resting"
 
 struct PoseCandidate {
   Vec3 up = Vec3::UnitZ();         // unit, in the model's coordinates
   PoseSource source = PoseSource::Given;
-  double contactAreaMm2 = 0.0;     // area of the hull patch it rests on (0 unless resting)
-  double stabilityMarginMm = 0.0;  // distance of the centre of mass's projection inside that patch (resting)
+  double contactAreaMm2 = 0.0;     // area of the hull patch it stands on (0: a point or an edge)
+  double stabilityMarginMm = 0.0;  // the centre of mass's projection inside that patch: > 0 inside, else tips
   double riskyAreaMm2 = 0.0;       // single-direction risky area: J_G before for this up
+  bool stands() const { return contactAreaMm2 > 0.0 && stabilityMarginMm > 0.0; }
 };
 
 struct PoseOptions {
   int poses = 24;             // candidates, the given up included; in [1, 200]
-  int fullSearches = 4;       // candidates given the full search, the given up included; in [1, poses]
-  double mergeDegrees = 3.0;  // hull triangles whose normals are this close form one resting patch; [0, 30]
+  int fullSearches = 3;       // candidates given the full search, the given up included; in [1, poses]
+  double mergeDegrees = 3.0;  // standing poses whose ups are this close are one (the larger contact); [0, 30]
   SearchScheme cheapScheme = SearchScheme::Greedy;  // how the cheap score is found
 };
 
 Status validate(const PoseOptions& options);
 
-// The stable resting poses of a closed model, largest contact area first, then larger margin.
+// The poses a closed model stands in (on a hull face's plane, its centre of mass inside the contact), largest
+// contact area first, then larger margin.
 // Errors: EmptyMesh, InvalidParameter (a flat or degenerate model).
 Result<std::vector<PoseCandidate>> restingPoses(const TriangleMesh& model, double mergeDegrees = 3.0,
                                                 const SearchOptions& options = {});
 
-// Candidates in the order they are tried: the given up first, then resting poses, then sampled directions
-// (none within a few degrees of an earlier one), at most options.poses of them, each with its risky area.
+// Candidates in the order they are tried: the given up first (with its contact and margin, whether it stands
+// or not), then standing poses (none within a few degrees of an earlier one), at most options.poses of them,
+// each with its risky area.
 Result<std::vector<PoseCandidate>> candidatePoses(const TriangleMesh& model, const Vec3& givenUp,
                                                   const PoseOptions& poseOptions, const SearchOptions& options = {});
 
@@ -62,13 +67,13 @@ struct PoseSearchResult {
   Decomposition plan;         // for machineForPose(machine, chosen.up)
   PoseCandidate chosen;
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // poseRotation(chosen.up, the given up)
-  std::vector<PoseTrial> trials;  // every candidate, in candidate order
+  std::vector<PoseTrial> trials;  // every candidate that stands, in candidate order
   int chosenTrial = 0;
   double seconds = 0.0;
 };
 
-// Pose search; threads across poses (each search single-threaded), results do not depend on the thread
-// count. Progress: the cheap scores, then the full searches. A cancelled search returns the best finished
+// Pose search over the candidates that stand (a given up that does not is named in plan.statistics.notes);
+// threads across poses (each search single-threaded), results do not depend on the thread count. Progress: the cheap scores, then the full searches. A cancelled search returns the best finished
 // plan (at least the given up's cheap plan) with plan.cancelled set.
 Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, const MachineSpec& machine,
                                                  const SearchOptions& options, const PoseOptions& poseOptions,
