@@ -178,6 +178,54 @@ TEST(CliRunStitched, AKittenJobResumedAtTheThirdStepTurnsFromTheSecondStepsAngle
   EXPECT_NEAR(log.extrusions.front().axisDegrees[0], to, 1e-9);
 }
 
+// The kitten's 5-DOF plan sliced for klipper-2axis (the slicer's own two-axis stitched program) and printed on the
+// Moonraker simulator with the profile's two manual steppers: every extrusion of step k happens at the axis
+// coordinates print-job.json records for step k (slicing.steps[k].axisDegrees; to the program's 3 decimals). The
+// steps are told apart by the turns between them.
+TEST(CliRunStitched, TheKittensTwoAxisJobPrintsEachStepAtItsRecordedAxisCoordinates) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunStitched.Kitten5dof");
+  const CliRun plan = runCli("decompose " + shellQuoted(multidir::test::sharedModelPath("kitten.off")) +
+                                 " --up y --machine 5dof -o " + shellQuoted(dir + "/plan"),
+                             dir);
+  ASSERT_EQ(plan.exitCode, 0) << plan.err;
+  const CliRun sliced = runCli(
+      "slice " + shellQuoted(dir + "/plan") + " --printer klipper-2axis" + kCoarse + " -o " + shellQuoted(dir + "/job"),
+      dir);
+  ASSERT_EQ(sliced.exitCode, 0) << sliced.err;
+  const Json job = jobJson(dir + "/job");
+  const Json& axes = job["slicing"]["printer"]["axes"];
+  const std::string tilt = axes["tilt"]["letter"], rotation = axes["rotation"]["letter"];
+  hw::MoonrakerSimulatorOptions options;
+  options.speed = 100000.0;
+  options.rotaryAxes.manualSteppers = {axes["tilt"]["stepper"], axes["rotation"]["stepper"]};
+  hw::MoonrakerSimulator printer(options);
+  ASSERT_TRUE(printer.start().ok());
+  const CliRun run =
+      runCli("run " + shellQuoted(dir + "/job") + " --printer http://" + printer.address(), dir, "timeout 120");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  const hw::SimulatedAxisLog log = printer.axisLog();
+  const Json& steps = job["slicing"]["steps"];
+  std::size_t step = 0;
+  std::size_t turn = 0;
+  std::size_t checked = 0;
+  for (const hw::SimulatedMove& e : log.extrusions) {
+    bool turned = false;
+    while (turn < log.turns.size() && log.turns[turn].sequence < e.sequence) turned = true, ++turn;
+    if (turned && checked > 0) ++step;
+    ASSERT_LT(step, steps.size());
+    const Json& at = steps[step]["axisDegrees"];
+    if (std::abs(e.axisDegrees[0] - at[tilt].get<double>()) > 1e-3 ||
+        std::abs(e.axisDegrees[1] - at[rotation].get<double>()) > 1e-3) {
+      ADD_FAILURE() << "an extrusion of step " << step + 1 << " printed at " << e.axisDegrees[0] << ", "
+                    << e.axisDegrees[1] << ", not at " << at.dump();
+      return;
+    }
+    ++checked;
+  }
+  EXPECT_EQ(step + 1, steps.size());
+  EXPECT_GT(checked, 1000u);
+}
+
 // A job for a platform the printer turns, given the options of a platform driven over Modbus.
 TEST(CliRunStitched, AFirmwareJobGivenModbusDeviceOptionsIsAUsageErrorNamingTheOption) {
   const std::string job = kittenJob(true);
