@@ -11,10 +11,12 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "api_key.h"
 #include "cli_args.h"
+#include "firmware_axes_positioner.h"
 #include "multidir/hardware/platform_check.h"
 #include "multidir/hardware/print_run.h"
 #include "multidir/hardware/printer_url.h"
@@ -23,11 +25,13 @@
 #include "multidir/slicing/estimates.h"
 #include "run_job_checks.h"
 #include "run_job_file.h"
+#include "run_stitched.h"
 
 namespace multidir::cli {
 
 const char* const kRunHelp =
     "Usage: multidir run JOB --printer URL --platform HOST:PORT --machine PROFILE.json [options]\n"
+    "       multidir run JOB --printer URL [--yes-axes-configured] [options]   (a job the printer's axes turn)\n"
     "\n"
     "Runs a sliced print job headless (JOB: the folder written by 'multidir slice' for a profile whose platform\n"
     "is driven over Modbus, or its print-job.json). For each step: turns the platform (4-DOF rotary controller\n"
@@ -36,6 +40,18 @@ const char* const kRunHelp =
     "Marlin over USB: streamed line by line), follows it until the printer reports it complete, and goes on.\n"
     "The platform never moves while the printer prints, and the printer never starts while the platform is not\n"
     "at rest at the step's orientation.\n"
+    "\n"
+    "A job sliced for a printer whose own firmware turns the platform (multidir.platform = firmware-axis or\n"
+    "firmware-2axis: one or two rotary axes, such as Open5x's U and V or Klipper's [manual_stepper]s) is one\n"
+    "stitched program, job.gcode, that turns the axes itself between the steps. The printer alone prints it:\n"
+    "no --platform, --machine, --unit, --settle or --printer-profile (refused). Before it starts, job.gcode must\n"
+    "be the file print-job.json names (slicing.stitched), a regular file in the job folder, and the printer\n"
+    "must have every axis the program turns: Klipper is asked for its manual_stepper objects, Marlin for M114\n"
+    "(its report lists the extra axes after Z); OctoPrint cannot be asked (it relays no firmware reply), so\n"
+    "check the printer yourself and say so with --yes-axes-configured. The upload is checked by its SHA-256,\n"
+    "as a step's is. --from STEP sends the program from the transition before that step on (no homing, no\n"
+    "purge line, the axes declared where step STEP-1 printed): the printer must still be homed and the\n"
+    "platform stand where that step left it.\n"
     "\n"
     "Before anything moves, the whole job is checked: every step's angles against the platform's own machine\n"
     "profile (--machine; the limits print-job.json carries describe the plan, not the platform), and every\n"
@@ -73,6 +89,8 @@ const char* const kRunHelp =
     "                       the job was sliced with)\n"
     "  --unit ID            Modbus unit id, 0..255 (default: 1 for the rotary controller, 255 for the robot)\n"
     "  --from STEP          start at this step, 1..the number of steps (default: 1)\n"
+    "  --yes-axes-configured  (a job the printer's axes turn, on OctoPrint) the printer has the axes the\n"
+    "                       program turns: OctoPrint cannot be asked\n"
     "  --settle MS          the platform holds the orientation this long before printing (default: 500)\n"
     "  --log FILE           also write the log to FILE (a write error is reported at once; the run goes on)\n"
     "  -h, --help           show this help\n"
@@ -412,7 +430,7 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const ParsedArgs parsed = parseArgs(args,
                                       {"--printer", "--platform", "--unit", "--api-key", "--api-key-file", "--log",
                                        "--settle", "--from", "--machine", "--printer-profile"},
-                                      {"--help"}, "run");
+                                      {"--help", "--yes-axes-configured"}, "run");
   if (parsed.has("--help")) {
     out << kRunHelp;
     return kExitOk;
@@ -424,43 +442,75 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
         "multidir run: --printer URL is required (Moonraker's address, such as http://192.168.0.20:7125, "
         "OctoPrint's, such as octoprint://192.168.0.21:80, or a Marlin printer's serial port, such as "
         "serial:///dev/ttyACM0). Run 'multidir help run'.");
-  if (!parsed.has("--platform"))
-    throw UsageError(
-        "multidir run: --platform HOST:PORT is required (the platform's Modbus TCP address, such as "
-        "192.168.0.30:502). Run 'multidir help run'.");
   core::Result<std::unique_ptr<hardware::PrinterLink>> link =
       hardware::makePrinterLinkFromUrl(parsed.value("--printer", ""), printerApiKey(parsed, "run"));
   if (!link) throw UsageError("multidir run: " + link.error().describe() + ". Run 'multidir help run'.");
-  const std::string platformText = parsed.value("--platform", "");
-  const std::size_t colon = platformText.rfind(':');
-  if (colon == std::string::npos || colon == 0)
-    throw UsageError("multidir run: --platform must be HOST:PORT, such as 192.168.0.30:502, not '" + platformText +
-                     "'. Run 'multidir help run'.");
-  const std::string platformHost = platformText.substr(0, colon);
-  const int platformPort = wholeNumber(platformText.substr(colon + 1), "--platform's port", 1, 65535);
+  std::string platformHost;
+  int platformPort = 0;
+  if (parsed.has("--platform")) {
+    const std::string platformText = parsed.value("--platform", "");
+    const std::size_t colon = platformText.rfind(':');
+    if (colon == std::string::npos || colon == 0)
+      throw UsageError("multidir run: --platform must be HOST:PORT, such as 192.168.0.30:502, not '" + platformText +
+                       "'. Run 'multidir help run'.");
+    platformHost = platformText.substr(0, colon);
+    platformPort = wholeNumber(platformText.substr(colon + 1), "--platform's port", 1, 65535);
+  }
   const int unit = parsed.has("--unit") ? wholeNumber(parsed.value("--unit", ""), "--unit", 0, 255) : -1;
   const int settleMs = wholeNumber(parsed.value("--settle", "500"), "--settle", 0, 600000);
-  if (!parsed.has("--machine"))
-    throw UsageError(
-        "multidir run: --machine PROFILE.json is required: the connected platform's machine profile (its angle "
-        "range and step, or maximal tilt and forbidden cones; JSON, as 'multidir decompose --profile' reads). The "
-        "limits in print-job.json describe the plan, not the platform. Run 'multidir help run'.");
 
   const RunJob job = readRunJob(jobPath);
-  const int from = wholeNumber(parsed.value("--from", "1"), "--from", 1, static_cast<long>(job.steps.size()));
-  // The whole job, before anything connects or moves: the platform's limits and the slicer's G-code checks.
-  const std::string platformProfile = parsed.value("--machine", "");
-  const core::MachineSpec platform = loadPlatformProfile(platformProfile);
-  // The SHA-256 of each step's G-code as checked: the link sends a step only if its file still has it.
-  const std::vector<std::string> checkedGcode = checkRunJob(
-      job, platform, "--machine " + platformProfile, loadRunPrinterProfile(job, parsed.value("--printer-profile", "")));
+  if (job.stitched) {
+    // The printer alone prints the stitched program; the platform's options belong to a Modbus device.
+    for (const char* modbusOnly : {"--platform", "--machine", "--unit", "--settle", "--printer-profile"})
+      if (parsed.has(modbusOnly))
+        throw UsageError("multidir run: " + job.jobFile + " was sliced for a platform the printer's firmware turns (" +
+                         job.stitched->platform + "): the printer prints " + job.stitched->gcodeName +
+                         " alone and turns the platform itself, so " + modbusOnly +
+                         " (an option for a platform driven over Modbus) does not apply: drop it, or slice the job "
+                         "for a printer profile with multidir.platform = modbus. Run 'multidir help run'.");
+  } else {
+    if (!parsed.has("--platform"))
+      throw UsageError(
+          "multidir run: --platform HOST:PORT is required (the platform's Modbus TCP address, such as "
+          "192.168.0.30:502). Run 'multidir help run'.");
+    if (!parsed.has("--machine"))
+      throw UsageError(
+          "multidir run: --machine PROFILE.json is required: the connected platform's machine profile (its angle "
+          "range and step, or maximal tilt and forbidden cones; JSON, as 'multidir decompose --profile' reads). The "
+          "limits in print-job.json describe the plan, not the platform. Run 'multidir help run'.");
+    if (parsed.has("--yes-axes-configured"))
+      throw UsageError("multidir run: --yes-axes-configured is for a job whose platform the printer's firmware turns; "
+                       "this one's platform is driven over Modbus: drop it. Run 'multidir help run'.");
+  }
+  const int totalSteps =
+      job.stitched ? static_cast<int>(job.stitched->stepEstimateSeconds.size()) : static_cast<int>(job.steps.size());
+  const int from = wholeNumber(parsed.value("--from", "1"), "--from", 1, totalSteps);
+  // The whole job, before anything connects or moves: the platform's limits and the slicer's G-code checks (a
+  // stitched job: its program read once, its axes found and its SHA-256 taken).
+  std::vector<std::string> checkedGcode;
+  core::MachineSpec platform;
+  std::optional<StitchedRun> stitchedRun;
+  if (job.stitched) {
+    stitchedRun = prepareStitchedRun(job, from);
+  } else {
+    const std::string platformProfile = parsed.value("--machine", "");
+    platform = loadPlatformProfile(platformProfile);
+    // The SHA-256 of each step's G-code as checked: the link sends a step only if its file still has it.
+    checkedGcode = checkRunJob(job, platform, "--machine " + platformProfile,
+                               loadRunPrinterProfile(job, parsed.value("--printer-profile", "")));
+  }
   RunLog log(out, err, parsed.value("--log", ""));
   SignalScope signals;
 
   Devices devices;
   devices.printer = std::move(*link);
-  log.line("job " + job.jobFile + ": " + std::to_string(job.steps.size()) + " steps, " +
-           core::machineKindName(job.machine.kind) + (from > 1 ? ", starting at step " + std::to_string(from) : ""));
+  log.line("job " + job.jobFile + ": " + std::to_string(totalSteps) + " steps, " +
+           core::machineKindName(job.machine.kind) +
+           (job.stitched ? ", one program (" + stitchedRun->remoteName + ") turning the platform with the printer's " +
+                               "own axes"
+                         : std::string()) +
+           (from > 1 ? ", starting at step " + std::to_string(from) : ""));
   if (core::Status c = devices.printer->connect(); !c) {
     log.ending(c.error().describe());
     return kExitRunStopped;
@@ -475,28 +525,47 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   log.line("connected to " + devices.printer->name() + " (firmware " + first.firmwareState + ")");
   const std::string notStarted = ", before the first step: nothing was printed; run the job again" +
                                  (from > 1 ? " with --from " + std::to_string(from) : std::string()) + " when ready";
-  try {
-    connectPlatform(devices, job, platform, platformHost, platformPort, unit, log);
-    if (g_interrupts > 0) throw Interrupted(interruptName() + " while connecting the platform");
-  } catch (const Interrupted& e) {
-    stopBeforeTheRun(devices, log);
-    log.ending(std::string("stopped by ") + e.what() + notStarted);
-    return kExitRunStopped;
-  } catch (const std::runtime_error& e) {
-    log.ending(e.what());
-    return kExitRunStopped;
-  }
-  log.line("connected to " + devices.positioner->name());
-
   std::vector<hardware::PrintStep> steps;
   std::vector<double> estimates;
-  for (std::size_t i = static_cast<std::size_t>(from - 1); i < job.steps.size(); ++i) {
-    const RunJobStep& s = job.steps[i];
-    steps.push_back({s.orientation, "step " + std::to_string(s.index), s.gcodePath, checkedGcode[i]});
-    estimates.push_back(s.estimateSeconds);
+  if (job.stitched) {
+    // The printer must have the axes the program turns before it starts: a line for an axis it lacks is skipped
+    // (Marlin) or ends the job (Klipper) with the platform left where it was.
+    try {
+      if (!stitchedRun->axes.letters.empty() || !stitchedRun->axes.manualSteppers.empty())
+        log.line(checkPrinterHasTheAxes(*devices.printer, stitchedRun->axes, parsed.has("--yes-axes-configured")));
+    } catch (const std::runtime_error& e) {
+      log.ending(std::string(e.what()) + notStarted);
+      return kExitRunStopped;
+    }
+    devices.positioner = makeFirmwareAxesPositioner(*devices.printer);
+    const std::string label = stitchedRun->remoteName + " (steps " + std::to_string(from) + " to " +
+                              std::to_string(totalSteps) + ")";
+    steps.push_back({hardware::PlatformOrientation::rotary(0.0), label, stitchedRun->uploadPath, stitchedRun->sha256});
+    double total = 0.0;
+    for (double e : stitchedRun->estimates) total += e;
+    estimates.push_back(total);
+  } else {
+    try {
+      connectPlatform(devices, job, platform, platformHost, platformPort, unit, log);
+      if (g_interrupts > 0) throw Interrupted(interruptName() + " while connecting the platform");
+    } catch (const Interrupted& e) {
+      stopBeforeTheRun(devices, log);
+      log.ending(std::string("stopped by ") + e.what() + notStarted);
+      return kExitRunStopped;
+    } catch (const std::runtime_error& e) {
+      log.ending(e.what());
+      return kExitRunStopped;
+    }
+    log.line("connected to " + devices.positioner->name());
+    for (std::size_t i = static_cast<std::size_t>(from - 1); i < job.steps.size(); ++i) {
+      const RunJobStep& s = job.steps[i];
+      steps.push_back({s.orientation, "step " + std::to_string(s.index), s.gcodePath, checkedGcode[i]});
+      estimates.push_back(s.estimateSeconds);
+    }
   }
   hardware::PrintRunOptions options;
-  options.settleTime = std::chrono::milliseconds(settleMs);
+  // Nothing settles on a platform the printer's program turns: it stands at rest until the program starts.
+  options.settleTime = std::chrono::milliseconds(job.stitched ? 0 : settleMs);
   // The run ends at a pause or fault: the log says so, and the last line says how to go on (no studio buttons).
   options.advice = [](hardware::PrintRunAdvice situation) {
     if (situation == hardware::PrintRunAdvice::EmergencyStop)
@@ -566,8 +635,10 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
       for (std::size_t k = run.currentStep() + 1; k < estimates.size(); ++k) remaining += estimates[k];
       char percent[16];
       std::snprintf(percent, sizeof percent, "%.0f %%", progress * 100.0);
-      const std::string text = "progress: step " + std::to_string(from + static_cast<int>(run.currentStep())) + "/" +
-                               std::to_string(job.steps.size()) + " " + hardware::printerJobStateName(p.state) + " " +
+      const int jobStep =
+          job.stitched ? stitchedRun->stepAt(progress) : from + static_cast<int>(run.currentStep());
+      const std::string text = "progress: step " + std::to_string(jobStep) + "/" + std::to_string(totalSteps) + " " +
+                               hardware::printerJobStateName(p.state) + " " +
                                percent + ", extruder " + celsius(p.extruder) + ", bed " + celsius(p.bed) +
                                ", job remaining about " + slicing::durationText(remaining);
       if (text != lastProgress) log.line(lastProgress = text);
@@ -581,18 +652,25 @@ int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   if (run.stopUnconfirmed()) log.line("warning: a device has not confirmed its stop: check it by hand");
   if (run.state() == hardware::PrintRunState::Completed) {
-    log.line("done: " + std::to_string(steps.size()) + " steps printed");
+    log.line("done: " + std::to_string(totalSteps - from + 1) + " steps printed");
     return kExitOk;
   }
-  const std::size_t step = static_cast<std::size_t>(from) + run.currentStep();
+  // A stitched program is one printer job: the step it was in follows from how far the printer had read it.
+  const std::size_t step = job.stitched ? static_cast<std::size_t>(stitchedRun->stepAt(run.stepProgress()))
+                                        : static_cast<std::size_t>(from) + run.currentStep();
   const std::string gcodeName = std::filesystem::path(steps[run.currentStep()].gcodePath).filename().string();
   // After Ctrl-C the run's abort has switched the heaters off already.
   if (!stoppedByOperator) leaveThePrinterSafe(devices, log, gcodeName);
   log.ending("the run stopped at step " + std::to_string(step) + " (" + hardware::printRunStateName(run.state()) +
              (run.lastProblem().empty() ? std::string() : ": " + run.lastProblem()) + ")" +
              (stoppedByOperator ? " by " + interruptName() : std::string()) +
-             howToGoOn(run, devices.printer->status(), step, devices.printer->name(), job.steps.size(), gcodeName,
-                       stoppedByOperator));
+             howToGoOn(run, devices.printer->status(), step, devices.printer->name(),
+                       static_cast<std::size_t>(totalSteps), gcodeName, stoppedByOperator) +
+             (job.stitched && run.stepBegun()
+                  ? ". With --from, the printer gets the program from the transition before that step on: it must "
+                    "still be homed, and the platform's axes must stand where the step before it printed (as the "
+                    "printer left them)"
+                  : std::string()));
   return kExitRunStopped;
 }
 

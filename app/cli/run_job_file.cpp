@@ -82,6 +82,38 @@ std::string gcodeFileProblem(const std::string& path) {
   return std::string("is not a regular file (it is ") + kind + "): give the G-code file 'multidir slice' wrote";
 }
 
+// The stitched program of a job for a platform the printer's firmware turns: the file slicing.stitched names,
+// in the job folder, a regular file.
+RunStitchedProgram readStitchedProgram(const Json& slicing, const std::string& platform, const fs::path& file,
+                                       std::size_t steps) {
+  const std::string name = file.string();
+  RunStitchedProgram stitched;
+  stitched.platform = platform;
+  if (slicing["printer"].contains("dialect") && slicing["printer"]["dialect"].is_string())
+    stitched.dialect = slicing["printer"]["dialect"].get<std::string>();
+  if (!slicing.contains("stitched") || !slicing["stitched"].is_string())
+    bad(name, "was sliced for a platform the printer's firmware turns (" + platform +
+                  ") but names no stitched program (slicing.stitched): slice the job again");
+  stitched.gcodeName = slicing["stitched"].get<std::string>();
+  if (stitched.gcodeName.empty() || stitched.gcodeName.find('/') != std::string::npos ||
+      stitched.gcodeName.find("..") != std::string::npos)
+    bad(name, "slicing.stitched must be a file name in the job folder, not '" + stitched.gcodeName + "'");
+  stitched.gcodePath = (file.parent_path() / stitched.gcodeName).string();
+  if (const std::string problem = gcodeFileProblem(stitched.gcodePath); !problem.empty())
+    bad(stitched.gcodePath, "the stitched program (slicing.stitched) " + problem);
+  const Json slicedSteps = slicing.value("steps", Json::array());
+  for (std::size_t i = 0; i < steps; ++i) {
+    double seconds = 0.0;
+    if (slicedSteps.is_array() && i < slicedSteps.size() && slicedSteps[i].is_object() &&
+        slicedSteps[i].contains("estimate") && slicedSteps[i]["estimate"].is_object() &&
+        slicedSteps[i]["estimate"].contains("printSeconds"))
+      seconds = numberIn(slicedSteps[i]["estimate"], "printSeconds", 0.0, kMaxStepPrintSeconds, "s", name,
+                         "slicing.steps[" + std::to_string(i) + "].estimate");
+    stitched.stepEstimateSeconds.push_back(seconds);
+  }
+  return stitched;
+}
+
 }  // namespace
 
 RunJob readRunJob(const std::string& path) {
@@ -116,17 +148,20 @@ RunJob readRunJob(const std::string& path) {
     bad(name, "has no G-code (no \"slicing\"): run 'multidir slice " + file.parent_path().string() +
                   " --printer PROFILE -o OUTDIR' first and run OUTDIR");
   const Json& slicing = job["slicing"];
+  std::string platformDrive;
   if (slicing.contains("printer") && slicing["printer"].is_object()) {
     const Json& printer = slicing["printer"];
-    if (printer.value("platform", std::string()) == "firmware-axis")
-      bad(name,
-          "was sliced for a platform the printer's firmware turns (job.gcode): print job.gcode on the printer; "
-          "'multidir run' drives a platform over Modbus");
+    if (printer.contains("platform") && printer["platform"].is_string())
+      platformDrive = printer["platform"].get<std::string>();
     if (printer.contains("profile") && printer["profile"].is_string())
       run.printerProfile = printer["profile"].get<std::string>();
   }
   if (!job.contains("steps") || !job["steps"].is_array() || job["steps"].empty())
     bad(name, "\"steps\" is missing or empty");
+  if (platformDrive == "firmware-axis" || platformDrive == "firmware-2axis") {
+    run.stitched = readStitchedProgram(slicing, platformDrive, file, job["steps"].size());
+    return run;
+  }
   if (!slicing.contains("steps") || !slicing["steps"].is_array() || slicing["steps"].size() != job["steps"].size())
     bad(name, "\"slicing.steps\" does not have one entry per step: slice the job again");
   const Json turns = slicing.value("turns", Json::array());

@@ -26,19 +26,30 @@ struct RunJobStep {
   std::optional<double> turnClearanceZMm;  // slicing.turns[]: the nozzle's height before the next turn
 };
 
+// A job sliced for a platform the printer's firmware turns (slicing.printer.platform "firmware-axis" or
+// "firmware-2axis"): one stitched program (slicing.stitched) turns the axes between the steps itself.
+struct RunStitchedProgram {
+  std::string platform;   // "firmware-axis" or "firmware-2axis"
+  std::string dialect;    // slicing.printer.dialect: "klipper", "marlin", "rrf" ("" when absent)
+  std::string gcodeName;  // slicing.stitched: "job.gcode"
+  std::string gcodePath;  // the job folder + gcodeName
+  std::vector<double> stepEstimateSeconds;  // slicing.steps[].estimate.printSeconds (0 where absent)
+};
+
 struct RunJob {
   std::string jobFile;  // the print-job.json read
   std::string folder;   // the folder it lies in
   core::MachineSpec machine;
   std::string printerProfile;  // slicing.printer.profile as `multidir slice` recorded it ("" when absent)
-  std::vector<RunJobStep> steps;
+  std::vector<RunJobStep> steps;  // empty for a stitched job
+  std::optional<RunStitchedProgram> stitched;
 };
 
 // Reads `path` (a job folder or its print-job.json) and checks everything the job alone can say. Throws
 // FileError naming the file, the field and what is allowed: not JSON (naming the field of a number such as
 // 1e999 or NaN), not a MultiDir print job, a version other than 1..kPrintJobFormatVersion, no "slicing" (run
-// `multidir slice` first), a stitched job for a firmware-axis platform (run job.gcode on the printer instead),
-// a 3-DOF job, a step without angles or G-code, a printSeconds outside [0, kMaxStepPrintSeconds], two steps
+// `multidir slice` first), a job for a firmware-turned platform without its stitched program (slicing.stitched
+// missing, not a plain file name, or the file missing, a link or not a regular file), a 3-DOF job, a step without angles or G-code, a printSeconds outside [0, kMaxStepPrintSeconds], two steps
 // naming the same G-code file, a G-code file that is missing, a symbolic link or not a regular file.
 RunJob readRunJob(const std::string& path);
 

@@ -20,7 +20,8 @@ const char* const kSimulateHelp =
     "Usage: multidir simulate [--rotary] [--robot] [--listen ADDRESS] [--port PORT] [--unit ID]\n"
     "       multidir simulate --printer moonraker|octoprint [--listen ADDRESS] [--port PORT] [--speed X]\n"
     "                         [--fault NAME [--fault-at FRACTION]] [--api-key KEY]\n"
-    "       multidir simulate --printer marlin [--speed X] [--fault NAME [--fault-at-line N]]\n"
+    "                         [--manual-stepper NAME,... (moonraker) | --rotary-axes LETTERS (octoprint)]\n"
+    "       multidir simulate --printer marlin [--speed X] [--fault NAME [--fault-at-line N]] [--rotary-axes U,V]\n"
     "\n"
     "Runs a Modbus TCP simulator of MultiDir's devices until Ctrl-C: the rotary platform controller and the\n"
     "Universal Robots arm's registers 128-255 with the behaviour of multidir_platform.script (register maps:\n"
@@ -46,10 +47,19 @@ const char* const kSimulateHelp =
     "  --fault NAME      inject once, when a job first reaches --fault-at: thermal-runaway, link-drop (3 s),\n"
     "                    cancelled-on-printer, slow-replies (3 s each)\n"
     "  --fault-at FRACTION  the job's progress for --fault, 0..1 (default: 0.5)\n"
+    "  --manual-stepper NAMES  (moonraker) the printer's [manual_stepper]s, such as tilt,rotation: it runs\n"
+    "                    MANUAL_STEPPER STEPPER=NAME [ENABLE=] [SET_POSITION=] [MOVE= SPEED=] for them (a turn\n"
+    "                    takes |change| / SPEED), reports each as the object 'manual_stepper NAME', and ends a\n"
+    "                    job in error at a MANUAL_STEPPER for a name it lacks, as Klipper does (default: none)\n"
+    "  --rotary-axes LETTERS  (octoprint, marlin) rotary axes as G-code letters (of A B C U V W), such as U,V:\n"
+    "                    G0/G1/G92 move and set them; a move of them alone takes its length in degrees over F\n"
+    "                    (degrees per minute), one with X, Y or Z the XYZ length over F (default: none; a\n"
+    "                    letter the printer lacks is skipped, as Marlin does)\n"
     "\n"
     "With --printer marlin it runs a Marlin printer on a pseudo-terminal instead and prints its device path:\n"
     "give it to 'multidir run' as --printer serial:///dev/pts/N. It checks line numbers and checksums (asking\n"
-    "for a resend), answers M105 with temperatures and M114 with its position, says busy while M109, M400 or a\n"
+    "for a resend), answers M105 with temperatures, M114 with its position (rotary axes after Z) and M115 with\n"
+    "its capabilities (AXIS_COUNT with rotary axes), says busy while M109, M400 or a\n"
     "move waiting for room in its planner hold it up, and halts on M112.\n"
     "  --printer marlin  simulate a Marlin printer over USB serial\n"
     "  --fault NAME      as above, or serial-resend (one line arrives damaged: the printer asks for it again);\n"
@@ -102,6 +112,11 @@ int simulateMarlin(const ParsedArgs& parsed, std::ostream& out, std::ostream& er
                        " is not for --printer marlin (a serial printer on a pseudo-terminal). Run 'multidir help "
                        "simulate'.");
   hardware::MarlinSimulatorOptions options;
+  if (parsed.has("--manual-stepper"))
+    throw UsageError(
+        "multidir simulate: --manual-stepper is Klipper's (--printer moonraker); Marlin's rotary axes are letters: "
+        "--rotary-axes U,V. Run 'multidir help simulate'.");
+  options.rotaryAxes.letters = hardware::splitAxisList(parsed.value("--rotary-axes", ""));
   options.speed = parseNumber(parsed.value("--speed", "1"), "--speed");
   if (!(options.speed > 0.0) || options.speed > 100000.0)
     throw UsageError("multidir simulate: --speed must be above 0 and at most 100000. Run 'multidir help simulate'.");
@@ -200,6 +215,16 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
   if (!(options.faultAtProgress >= 0.0) || options.faultAtProgress > 1.0)
     throw UsageError("multidir simulate: --fault-at must be between 0 and 1. Run 'multidir help simulate'.");
   options.apiKey = parsed.value("--api-key", hardware::kOctoPrintSimulatorApiKey);
+  if (octoPrint && parsed.has("--manual-stepper"))
+    throw UsageError(
+        "multidir simulate: --manual-stepper is Klipper's (--printer moonraker); the printer behind OctoPrint is a "
+        "Marlin, whose rotary axes are letters: --rotary-axes U,V. Run 'multidir help simulate'.");
+  if (!octoPrint && parsed.has("--rotary-axes"))
+    throw UsageError(
+        "multidir simulate: Klipper's G1 moves X, Y, Z and E only; its rotary axes are manual steppers: "
+        "--manual-stepper tilt,rotation. Run 'multidir help simulate'.");
+  options.rotaryAxes.letters = hardware::splitAxisList(parsed.value("--rotary-axes", ""));
+  options.rotaryAxes.manualSteppers = hardware::splitAxisList(parsed.value("--manual-stepper", ""));
   if (options.apiKey.empty())
     throw UsageError("multidir simulate: --api-key must not be empty. Run 'multidir help simulate'.");
 
@@ -255,7 +280,8 @@ int simulatePrinter(const ParsedArgs& parsed, std::ostream& out, std::ostream& e
 int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const ParsedArgs parsed = parseArgs(
       args,
-      {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key"},
+      {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key",
+       "--rotary-axes", "--manual-stepper"},
       {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
@@ -265,7 +291,8 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
     throw UsageError("multidir simulate: unexpected argument '" + parsed.positionals[0] +
                      "'. Run 'multidir help simulate'.");
   if (parsed.has("--printer")) return simulatePrinter(parsed, out, err);
-  for (const char* printerOnly : {"--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key"})
+  for (const char* printerOnly :
+       {"--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key", "--rotary-axes", "--manual-stepper"})
     if (parsed.has(printerOnly))
       throw UsageError(std::string("multidir simulate: ") + printerOnly +
                        " is for the printer simulator: add --printer moonraker, octoprint or marlin. Run "

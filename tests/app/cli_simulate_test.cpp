@@ -27,6 +27,22 @@ TEST(CliSimulate, PortOutOfRangeIsAUsageError) {
   EXPECT_NE(run.err.find("--port must be a whole number from 0 to 65535"), std::string::npos) << run.err;
 }
 
+// Each firmware's own kind of rotary axis: letters for Marlin (and OctoPrint's Marlin), manual steppers for Klipper.
+TEST(CliSimulate, RotaryAxesOfTheOtherFirmwaresKindAreAUsageError) {
+  const std::string dir = multidir::test::scratchDirectory("CliSimulate.RotaryAxes");
+  const CliRun klipperLetters = runCli("simulate --printer moonraker --port 0 --rotary-axes U,V", dir);
+  EXPECT_EQ(klipperLetters.exitCode, 2);
+  EXPECT_NE(klipperLetters.err.find("its rotary axes are manual steppers: --manual-stepper"), std::string::npos)
+      << klipperLetters.err;
+  const CliRun marlinSteppers = runCli("simulate --printer marlin --manual-stepper tilt", dir);
+  EXPECT_EQ(marlinSteppers.exitCode, 2);
+  EXPECT_NE(marlinSteppers.err.find("Marlin's rotary axes are letters: --rotary-axes U,V"), std::string::npos)
+      << marlinSteppers.err;
+  const CliRun badLetter = runCli("simulate --printer octoprint --port 0 --rotary-axes Q", dir);
+  EXPECT_EQ(badLetter.exitCode, 1);
+  EXPECT_NE(badLetter.err.find("'Q' is not a rotary axis letter"), std::string::npos) << badLetter.err;
+}
+
 TEST(CliSimulate, ListensOnLoopbackAndStopsCleanlyOnSigint) {
   const std::string dir = multidir::test::scratchDirectory("CliSimulate.Sigint");
   const CliRun run = runCli("simulate --port 0", dir, "timeout --preserve-status -s INT 1");

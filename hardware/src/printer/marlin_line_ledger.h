@@ -20,7 +20,19 @@ namespace multidir::hardware::marlin {
 // What a numbered line is for, so the link can act on its ok. A job ends with M400 (JobEnd: Marlin takes no
 // command after it until its planner is empty) and M114 (JobEndReport: its position report, which Marlin writes
 // once the M400 is done, ends the job).
-enum class LineRole { Reset, Poll, File, JobEnd, JobEndReport, CoolDown, CoolDownEnd, HeatersOff, HeatersOffEnd };
+// AxesReport: an M114 asked between jobs for the axes the firmware has (PrinterLink::readFirmwareAxes).
+enum class LineRole {
+  Reset,
+  Poll,
+  File,
+  JobEnd,
+  JobEndReport,
+  CoolDown,
+  CoolDownEnd,
+  HeatersOff,
+  HeatersOffEnd,
+  AxesReport
+};
 
 struct StreamLine {
   std::string command;

@@ -6,6 +6,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -49,6 +50,22 @@ std::future<T> readyFuture(T value) {
   std::promise<T> promise;
   promise.set_value(std::move(value));
   return promise.get_future();
+}
+
+// The axes of M114's report (report_logical_position: "X:1.00 Y:2.00 Z:3.00 U:0.00 V:0.00 E:0.00 Count X:..")
+// beyond X, Y, Z and E, in its order.
+FirmwareAxes axesOfPositionReport(const std::string& text) {
+  FirmwareAxes axes;
+  const std::string logical = text.substr(0, text.find("Count"));
+  std::size_t at = 0;
+  while ((at = logical.find(':', at)) != std::string::npos) {
+    std::size_t begin = at;
+    while (begin > 0 && std::isalpha(static_cast<unsigned char>(logical[begin - 1]))) --begin;
+    const std::string letter = logical.substr(begin, at - begin);
+    if (letter.size() == 1 && std::string("XYZE").find(letter) == std::string::npos) axes.letters.push_back(letter);
+    ++at;
+  }
+  return axes;
 }
 
 class MarlinLink : public PrinterLink {
@@ -100,6 +117,26 @@ class MarlinLink : public PrinterLink {
   std::future<core::Status> cancelPrint() override { return submit(Command::Cancel, "cancelling the print", false); }
   std::future<core::Status> switchHeatersOff() override {
     return submit(Command::HeatersOff, "switching the heaters off", false);
+  }
+
+  // M114 between jobs: its report lists every axis Marlin has ("X:.. Y:.. Z:.. U:.. V:.. E:.. Count ..."). Refused
+  // while a job streams (its lines hold the numbering) or while another such question waits.
+  std::future<core::Result<FirmwareAxes>> readFirmwareAxes() override {
+    std::promise<core::Result<FirmwareAxes>> promise;
+    std::future<core::Result<FirmwareAxes>> future = promise.get_future();
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if (!m_threads.running() || m_job || m_axesPromise) {
+        promise.set_value(invalid(!m_threads.running() ? "not connected: M114 was not sent"
+                                                       : "the printer is busy with a job or another M114: ask again later",
+                                  m_name));
+        return future;
+      }
+      m_axesPromise = std::move(promise);
+      m_axesQueried = false;
+    }
+    m_threads.workerWake().notify_all();
+    return future;
   }
 
   std::future<core::Status> emergencyStop() override {
@@ -196,6 +233,8 @@ class MarlinLink : public PrinterLink {
     m_cancelPromise.reset();
     m_heatersOffPromise.reset();
     m_heatersOffQueued = 0;
+    if (m_axesPromise) m_axesPromise->set_value(error);
+    m_axesPromise.reset();
   }
 
   // --- the port -------------------------------------------------------------------------------------------
@@ -369,7 +408,7 @@ class MarlinLink : public PrinterLink {
         onOk(reply);
         break;
       case marlin::Reply::Kind::Position:
-        onPosition();
+        onPosition(text);
         break;
       case marlin::Reply::Kind::Resend:
         onResend(reply.resendLine);
@@ -441,8 +480,13 @@ class MarlinLink : public PrinterLink {
 
   // m_mutex held: M114's position report. After the job's M114 was written it ends the job: Marlin ran the M400
   // before it, so the planner was empty and every move of the step done.
-  void onPosition() {
+  void onPosition(const std::string& text) {
     noteStatusRead();
+    if (m_axesPromise && m_axesQueried && !m_job) {
+      m_axesPromise->set_value(axesOfPositionReport(text));
+      m_axesPromise.reset();
+      return;
+    }
     if (!m_job || !m_job->reportSent || m_job->cancelling) return;
     m_status.state = PrinterJobState::Complete;
     m_status.progress = 1.0;
@@ -479,6 +523,7 @@ class MarlinLink : public PrinterLink {
       case Role::CoolDown:
         break;
       case Role::HeatersOff:
+      case Role::AxesReport:  // answered by its report (onPosition)
         break;
       case Role::HeatersOffEnd:
         m_heatersOffQueued = 0;
@@ -768,6 +813,11 @@ class MarlinLink : public PrinterLink {
         return true;
       }
     }
+    if (!m_job && m_axesPromise && !m_axesQueried) {
+      m_axesQueried = true;
+      m_ledger.append(Line{"M114", Role::AxesReport, 0});
+      return true;
+    }
     if (!m_job && m_heatersOffPromise) {
       const std::size_t count = sizeof kHeatersOffLines / sizeof kHeatersOffLines[0];
       if (m_heatersOffQueued < count) {
@@ -848,6 +898,8 @@ class MarlinLink : public PrinterLink {
   std::optional<std::promise<core::Status>> m_startPromise;
   std::optional<std::promise<core::Status>> m_cancelPromise;
   std::optional<std::promise<core::Status>> m_heatersOffPromise;
+  std::optional<std::promise<core::Result<FirmwareAxes>>> m_axesPromise;  // readFirmwareAxes(), until M114's report
+  bool m_axesQueried = false;                                             // ... and its M114 is numbered
   std::size_t m_heatersOffQueued = 0;  // of kHeatersOffLines numbered so far
   Clock::time_point m_openedAt{};
   Clock::time_point m_lastProtocolLine{};  // the last line in Marlin's protocol (worker clock)

@@ -2,6 +2,8 @@
 // Moonraker's requests and reply shapes.
 #include "multidir/hardware/moonraker_link.h"
 
+#include <future>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <utility>
 
@@ -40,6 +42,42 @@ class MoonrakerLink : public HttpPrinterLink {
     });
   }
 
+  // Klipper's loaded objects: each [manual_stepper NAME] is the object "manual_stepper NAME".
+  std::future<core::Result<FirmwareAxes>> readFirmwareAxes() override {
+    auto answer = std::make_shared<std::promise<core::Result<FirmwareAxes>>>();
+    std::future<core::Result<FirmwareAxes>> future = answer->get_future();
+    std::future<core::Status> asked =
+        submit("listing the printer's objects", false, [this, answer](const BoundedHttpClient& client) {
+          const std::string path = "/printer/objects/list";
+          const core::Result<Json> answered = reply(client.get(path, name()), "GET " + path);
+          if (!answered) {
+            answer->set_value(answered.error());
+            return core::Status(answered.error());
+          }
+          if (!answered->is_object() || !answered->contains("objects") || !(*answered)["objects"].is_array()) {
+            const core::Error error{core::ErrorCode::DeviceFault,
+                                    "the reply to GET " + path + " has no \"objects\" list: is this Moonraker?",
+                                    name()};
+            answer->set_value(error);
+            return core::Status(error);
+          }
+          FirmwareAxes axes;
+          const std::string prefix = "manual_stepper ";
+          for (const Json& object : (*answered)["objects"])
+            if (object.is_string() && object.get<std::string>().rfind(prefix, 0) == 0)
+              axes.manualSteppers.push_back(object.get<std::string>().substr(prefix.size()));
+          answer->set_value(axes);
+          return core::Status(core::Done{});
+        });
+    // A command the link refused or cancelled before it ran never reaches the lambda: its error answers.
+    return std::async(std::launch::async, [asked = std::move(asked), future = std::move(future)]() mutable {
+      const core::Status status = asked.get();
+      if (!status && future.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+        return core::Result<FirmwareAxes>(status.error());
+      return future.get();
+    });
+  }
+
  protected:
   core::Result<PrinterReading> readStatus(const BoundedHttpClient& client) override {
     const std::string path = "/printer/objects/query?webhooks&print_stats&virtual_sdcard&extruder&heater_bed";
@@ -47,7 +85,9 @@ class MoonrakerLink : public HttpPrinterLink {
     if (!answered) return answered.error();
     return readMoonrakerStatus(*answered, name());
   }
-  core::Status sendEmergencyStop(const BoundedHttpClient& client) override { return post(client, "/printer/emergency_stop"); }
+  core::Status sendEmergencyStop(const BoundedHttpClient& client) override {
+    return post(client, "/printer/emergency_stop");
+  }
   core::Status postStart(const BoundedHttpClient& client, const std::string& remoteName) override {
     return post(client, "/printer/print/start?filename=" + percentEncode(remoteName));
   }
@@ -57,7 +97,8 @@ class MoonrakerLink : public HttpPrinterLink {
   core::Result<Json> reply(const core::Result<HttpReply>& res, const std::string& request) const {
     if (!res) {
       if (res.error().code != core::ErrorCode::DeviceUnreachable)
-        return core::Error{res.error().code, "the reply to " + request + " was refused: " + res.error().message, name()};
+        return core::Error{res.error().code, "the reply to " + request + " was refused: " + res.error().message,
+                           name()};
       return core::Error{core::ErrorCode::DeviceUnreachable,
                          "no answer to " + request + " (" + res.error().message +
                              "): check that Moonraker runs, the address and the network",
@@ -82,11 +123,12 @@ class MoonrakerLink : public HttpPrinterLink {
     return core::Done{};
   }
 
-  core::Status postFile(const BoundedHttpClient& uploader, const std::string& content, const std::string& remoteName) override {
+  core::Status postFile(const BoundedHttpClient& uploader, const std::string& content,
+                        const std::string& remoteName) override {
     const std::vector<FormPart> parts = {{"file", content, remoteName, "application/octet-stream"},
                                          {"root", "gcodes", "", ""}};
-    const core::Result<Json> answered =
-        reply(uploader.postForm("/server/files/upload", parts, name()), "POST /server/files/upload (" + remoteName + ")");
+    const core::Result<Json> answered = reply(uploader.postForm("/server/files/upload", parts, name()),
+                                              "POST /server/files/upload (" + remoteName + ")");
     if (!answered) return answered.error();
     const Json& result = *answered;
     if (!result.is_object() || !result.contains("item") || !result["item"].is_object())

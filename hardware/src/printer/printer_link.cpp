@@ -22,6 +22,15 @@ const char* printerJobStateName(PrinterJobState state) {
   return "?";
 }
 
+std::future<core::Result<FirmwareAxes>> PrinterLink::readFirmwareAxes() {
+  std::promise<core::Result<FirmwareAxes>> promise;
+  promise.set_value(core::Error{core::ErrorCode::InvalidParameter,
+                                "this printer's link cannot ask the firmware which axes it has (OctoPrint relays no "
+                                "firmware reply to its API clients)",
+                                name()});
+  return promise.get_future();
+}
+
 core::Status validate(const PrinterLinkOptions& o) {
   const auto bad = [](const std::string& field, const std::string& rule) {
     return core::Error{core::ErrorCode::InvalidParameter, field + " " + rule, field};

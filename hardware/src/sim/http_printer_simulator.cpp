@@ -40,6 +40,7 @@ core::Status HttpPrinterSimulator::start() {
     return core::Error{core::ErrorCode::InvalidParameter, "the speed must be above 0 and at most 100000", "--speed"};
   if (!(m_options.faultAtProgress >= 0.0) || m_options.faultAtProgress > 1.0)
     return core::Error{core::ErrorCode::InvalidParameter, "the fault's progress must be between 0 and 1", "--fault-at"};
+  if (core::Status axes = validate(m_options.rotaryAxes, "rotaryAxes"); !axes) return axes;
   if (core::Status own = validateOwnOptions(); !own) return own;
   std::lock_guard<std::mutex> serverLock(m_serverMutex);
   if (m_server) return core::Done{};
@@ -123,6 +124,12 @@ SimulatedPrinterState HttpPrinterSimulator::state() {
   s.bed = m_printer.bed();
   s.files = m_printer.fileNames();
   return s;
+}
+
+SimulatedAxisLog HttpPrinterSimulator::axisLog() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  advanceLocked();
+  return m_printer.axisLog();
 }
 
 core::Status HttpPrinterSimulator::listen() {
@@ -306,5 +313,6 @@ void PrinterSimulator::setReplyDelay(std::chrono::milliseconds delay) { m_impl->
 std::vector<PrinterRequestRecord> PrinterSimulator::requests() const { return m_impl->requests(); }
 std::vector<PrinterJobEvent> PrinterSimulator::jobEvents() const { return m_impl->jobEvents(); }
 SimulatedPrinterState PrinterSimulator::state() const { return m_impl->state(); }
+SimulatedAxisLog PrinterSimulator::axisLog() const { return m_impl->axisLog(); }
 
 }  // namespace multidir::hardware

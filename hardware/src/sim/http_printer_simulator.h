@@ -43,6 +43,7 @@ class HttpPrinterSimulator {
   std::vector<PrinterRequestRecord> requests() const;
   std::vector<PrinterJobEvent> jobEvents() const;
   SimulatedPrinterState state();
+  SimulatedAxisLog axisLog();
 
  protected:
   using Clock = std::chrono::steady_clock;

@@ -32,6 +32,7 @@ constexpr std::chrono::milliseconds kLoopInterval{1};
 constexpr std::chrono::milliseconds kNoiseInterval{20};
 constexpr int kCommandBuffer = 4;                      // Marlin's BUFSIZE, for ADVANCED_OK's B
 const double kStepsPerMm[3] = {80.0, 80.0, 400.0};     // Marlin's DEFAULT_AXIS_STEPS_PER_UNIT, for M114's Count
+constexpr double kStepsPerDegree = 80.0;               // a rotary axis' steps per degree (the simulator's choice)
 const char* const kNoise = "\xf8\x1f~#x%\x7f&q?\xe0";  // what 115200 baud read at 250000 looks like
 const char* const kKilled = "Printer halted. kill() called!";
 const char* const kThermalRunaway = "Thermal Runaway, system stopped! Heater_ID: 0";
@@ -86,6 +87,11 @@ class MarlinSimulator::Impl {
                                      "not ") +
                              printerFaultName(m_options.fault),
                          "fault"};
+    if (core::Status axes = validate(m_options.rotaryAxes, "--rotary-axes"); !axes) return axes;
+    if (!m_options.rotaryAxes.manualSteppers.empty())
+      return core::Error{core::ErrorCode::InvalidParameter,
+                         "Marlin has rotary axes as G-code letters, not Klipper's manual steppers: give --rotary-axes",
+                         "--manual-stepper"};
     if (m_options.faultAtMove < 1)
       return core::Error{core::ErrorCode::InvalidParameter, "the fault's move must be 1 or later", "faultAtMove"};
     if (m_options.busyInterval.count() < 1 || m_options.temperatureInterval.count() < 1)
@@ -194,6 +200,11 @@ class MarlinSimulator::Impl {
     std::lock_guard<std::mutex> lock(m_mutex);
     return m_executed;
   }
+  SimulatedAxisLog axisLog() {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    advanceLocked();
+    return m_printer.axisLog();
+  }
   MarlinSimulatorState state() {
     std::lock_guard<std::mutex> lock(m_mutex);
     advanceLocked();
@@ -232,9 +243,11 @@ class MarlinSimulator::Impl {
 
   // m_mutex held: power on (or the reset button): a fresh printer at line 0, greeting the host as Marlin does.
   void bootPrinter() {
-    m_printer = sim::SimulatedPrinter{};
+    sim::SimulatedPrinterSettings settings;
+    settings.axes = axisSetup();
+    m_printer = sim::SimulatedPrinter{settings};
     m_printer.startStream("serial");
-    m_reader = sim::GcodeTimelineReader{};
+    m_reader = sim::GcodeTimelineReader{axisSetup()};
     m_halted = false;
     m_haltReason.clear();
     m_lastLine = 0;
@@ -245,6 +258,10 @@ class MarlinSimulator::Impl {
     m_autoReport = std::chrono::milliseconds{0};
     send("start");
     send("echo:Marlin 2.1.2 (MultiDir simulator)");
+  }
+
+  sim::RotaryAxisSetup axisSetup() const {
+    return {sim::RotaryAxisSetup::Firmware::Marlin, m_options.rotaryAxes.letters};
   }
 
   // m_mutex held.
@@ -275,13 +292,34 @@ class MarlinSimulator::Impl {
   }
 
   // m_mutex held: Marlin's M114 (report_current_position_projected): the planned position, logical and in steps.
+  // report_logical_position lists X Y Z, then the extra axes in Marlin's order (I J K U V W, named by
+  // AXIS4_NAME..; here the options' order), then E; the stepper counts follow for the axes, not E.
   std::string positionText() const {
-    char text[192];
-    std::snprintf(text, sizeof text, "X:%.2f Y:%.2f Z:%.2f E:%.2f Count X:%ld Y:%ld Z:%ld", m_reader.position(0),
-                  m_reader.position(1), m_reader.position(2), m_reader.position(3),
-                  std::lround(m_reader.position(0) * kStepsPerMm[0]),
-                  std::lround(m_reader.position(1) * kStepsPerMm[1]),
-                  std::lround(m_reader.position(2) * kStepsPerMm[2]));
+    char number[64];
+    std::string logical;
+    std::string counts = " Count";
+    const auto axis = [&](const std::string& letter, double value, double stepsPerUnit) {
+      std::snprintf(number, sizeof number, "%s%s:%.2f", logical.empty() ? "" : " ", letter.c_str(), value);
+      logical += number;
+      std::snprintf(number, sizeof number, " %s:%ld", letter.c_str(), std::lround(value * stepsPerUnit));
+      counts += number;
+    };
+    axis("X", m_reader.position(0), kStepsPerMm[0]);
+    axis("Y", m_reader.position(1), kStepsPerMm[1]);
+    axis("Z", m_reader.position(2), kStepsPerMm[2]);
+    for (std::size_t i = 0; i < m_options.rotaryAxes.letters.size(); ++i)
+      axis(m_options.rotaryAxes.letters[i], m_reader.axisPosition(i), kStepsPerDegree);
+    std::snprintf(number, sizeof number, " E:%.2f", m_reader.position(3));
+    return logical + number + counts;
+  }
+
+  // m_mutex held: M115's first line (GcodeSuite::M115): AXIS_COUNT only when the axes are not X, Y, Z alone.
+  std::string capabilityText() const {
+    std::string text =
+        "FIRMWARE_NAME:Marlin 2.1.2 (MultiDir simulator) SOURCE_CODE_URL:github.com/MarlinFirmware/Marlin "
+        "PROTOCOL_VERSION:1.0 MACHINE_TYPE:MultiDir simulator EXTRUDER_COUNT:1";
+    if (!m_options.rotaryAxes.letters.empty())
+      text += " AXIS_COUNT:" + std::to_string(3 + m_options.rotaryAxes.letters.size());
     return text;
   }
 
@@ -464,6 +502,9 @@ class MarlinSimulator::Impl {
     } else if (known && letter == 'M' && number == 114) {
       send(positionText());
       send(okFor(q));
+    } else if (known && letter == 'M' && number == 115) {
+      send(capabilityText());
+      send(okFor(q));
     } else if (known && letter == 'M' && number == 27) {
       send("Not SD printing");  // the job is streamed by the host, not read from the SD card
       send(okFor(q));
@@ -601,5 +642,6 @@ void MarlinSimulator::reportTemperatures(bool report) { m_impl->reportTemperatur
 std::vector<MarlinLineRecord> MarlinSimulator::received() const { return m_impl->received(); }
 std::vector<MarlinExecutedRecord> MarlinSimulator::executed() const { return m_impl->executed(); }
 MarlinSimulatorState MarlinSimulator::state() const { return m_impl->state(); }
+SimulatedAxisLog MarlinSimulator::axisLog() const { return m_impl->axisLog(); }
 
 }  // namespace multidir::hardware

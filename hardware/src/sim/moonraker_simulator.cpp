@@ -28,16 +28,38 @@ Json filtered(const Json& object, const std::string& attributes) {
   return out;
 }
 
+sim::SimulatedPrinterSettings klipper(const SimulatedRotaryAxes& axes) {
+  sim::SimulatedPrinterSettings settings;
+  settings.axes = {sim::RotaryAxisSetup::Firmware::Klipper, axes.manualSteppers};
+  return settings;
+}
+
 class MoonrakerServer : public sim::HttpPrinterSimulator {
  public:
   explicit MoonrakerServer(PrinterSimulatorOptions options)
-      : HttpPrinterSimulator(std::move(options), sim::SimulatedPrinterSettings{}) {}
+      : HttpPrinterSimulator(options, klipper(options.rotaryAxes)) {}
   ~MoonrakerServer() override { stop(); }
 
  protected:
+  core::Status validateOwnOptions() const override {
+    if (!m_options.rotaryAxes.letters.empty())
+      return core::Error{core::ErrorCode::InvalidParameter,
+                         "Klipper's G1 moves X, Y, Z and E only: its rotary axes are [manual_stepper]s, moved by "
+                         "MANUAL_STEPPER: give --manual-stepper",
+                         "--rotary-axes"};
+    return core::Done{};
+  }
+
   void configure(httplib::Server& server) override {
     server.Get("/printer/objects/query", handled("GET", [this](const httplib::Request& req, httplib::Response& res,
                                                                std::string&) { query(req, res); }));
+    // Klipper's loaded objects: the heaters and print objects, and one "manual_stepper NAME" per configured stepper.
+    server.Get("/printer/objects/list",
+               handled("GET", [this](const httplib::Request&, httplib::Response& res, std::string&) {
+                 Json objects = {"webhooks", "print_stats", "virtual_sdcard", "extruder", "heater_bed", "toolhead"};
+                 for (const std::string& name : m_printer.axes().names) objects.push_back("manual_stepper " + name);
+                 replyJson(res, 200, Json{{"result", {{"objects", objects}}}});
+               }));
     server.Get("/printer/info", handled("GET", [this](const httplib::Request&, httplib::Response& res, std::string&) {
                  replyJson(res, 200,
                            Json{{"result",
@@ -126,9 +148,14 @@ class MoonrakerServer : public sim::HttpPrinterSimulator {
           {"file_size", m_printer.fileSize(m_printer.currentFile())}}},
         {"extruder", {{"temperature", extruder.actualC}, {"target", extruder.targetC}, {"power", 0.0}}},
         {"heater_bed", {{"temperature", bed.actualC}, {"target", bed.targetC}, {"power", 0.0}}}};
+    // klippy/extras/manual_stepper.py get_status: the commanded position and whether the motor is enabled.
+    Json withSteppers = all;
+    for (std::size_t i = 0; i < m_printer.axes().names.size(); ++i)
+      withSteppers["manual_stepper " + m_printer.axes().names[i]] = {{"position", m_printer.axisPosition(i)},
+                                                                     {"enabled", m_printer.axisEnabled(i)}};
     Json status = Json::object();
     for (const auto& [name, attributes] : req.params)
-      if (all.contains(name)) status[name] = filtered(all[name], attributes);
+      if (withSteppers.contains(name)) status[name] = filtered(withSteppers[name], attributes);
     const double eventtime = std::chrono::duration<double>(now().time_since_epoch()).count();
     replyJson(res, 200, Json{{"result", {{"eventtime", eventtime}, {"status", status}}}});
   }

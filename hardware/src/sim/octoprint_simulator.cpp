@@ -32,22 +32,29 @@ bool isGcodeName(const std::string& name) {
   return false;
 }
 
-sim::SimulatedPrinterSettings marlin() {
+// The printer behind OctoPrint is a Marlin: its rotary axes are G-code letters.
+sim::SimulatedPrinterSettings marlin(const SimulatedRotaryAxes& axes) {
   sim::SimulatedPrinterSettings settings;
   settings.overTemperatureShutdown = "MAXTEMP triggered, system stopped! Heater_ID: 0";
+  settings.axes = {sim::RotaryAxisSetup::Firmware::Marlin, axes.letters};
   return settings;
 }
 
 class OctoPrintServer : public sim::HttpPrinterSimulator {
  public:
   explicit OctoPrintServer(OctoPrintSimulatorOptions options)
-      : HttpPrinterSimulator(options, marlin()), m_apiKey(std::move(options.apiKey)) {}
+      : HttpPrinterSimulator(options, marlin(options.rotaryAxes)), m_apiKey(std::move(options.apiKey)) {}
   ~OctoPrintServer() override { stop(); }
 
  protected:
   core::Status validateOwnOptions() const override {
     if (m_apiKey.empty())
       return core::Error{core::ErrorCode::InvalidParameter, "the simulated OctoPrint needs an API key", "--api-key"};
+    if (!m_options.rotaryAxes.manualSteppers.empty())
+      return core::Error{core::ErrorCode::InvalidParameter,
+                         "the printer behind OctoPrint is a Marlin, which has rotary axes as G-code letters, not "
+                         "Klipper's manual steppers: give --rotary-axes",
+                         "--manual-stepper"};
     return core::Done{};
   }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace multidir::hardware::sim {
 namespace {
@@ -42,7 +43,12 @@ std::string SimulatedPrinter::start(const std::string& name) {
   const auto it = m_files.find(name);
   if (it == m_files.end()) return "Unable to open file";
   m_file = name;
-  m_timeline = readGcodeTimeline(it->second);
+  m_timeline = readGcodeTimeline(it->second, m_settings.axes);
+  resetJob();
+  return {};
+}
+
+void SimulatedPrinter::resetJob() {
   m_line = 0;
   m_lineElapsed = 0.0;
   m_lineHeaterApplied = false;
@@ -50,20 +56,32 @@ std::string SimulatedPrinter::start(const std::string& name) {
   m_printSeconds = 0.0;
   m_message.clear();
   m_state = "printing";
-  return {};
+  m_axisLog = SimulatedAxisLog{};
+}
+
+void SimulatedPrinter::lineDone(const TimelineLine& line) {
+  m_axisNow = line.axisDegrees;
+  m_axisEnabled = line.enabledAxes;
+  m_axisLog.printSeconds = m_printSeconds;
+  if (!line.extrudes && !line.turns) return;
+  SimulatedMove move;
+  move.sequence = m_line;
+  move.endSeconds = m_printSeconds;
+  move.startSeconds = m_printSeconds - line.moveSeconds;
+  move.xMm = line.endMm[0];
+  move.yMm = line.endMm[1];
+  move.zMm = line.endMm[2];
+  move.axisDegrees.assign(line.axisDegrees.begin(),
+                          line.axisDegrees.begin() + static_cast<long>(m_settings.axes.names.size()));
+  (line.extrudes ? m_axisLog.extrusions : m_axisLog.turns).push_back(move);
+  if (line.extrudes && line.turns) m_axisLog.turns.push_back(move);
 }
 
 void SimulatedPrinter::startStream(const std::string& name) {
   m_streaming = true;
   m_file = name;
   m_timeline = GcodeTimeline{};
-  m_line = 0;
-  m_lineElapsed = 0.0;
-  m_lineHeaterApplied = false;
-  m_bytesDone = 0;
-  m_printSeconds = 0.0;
-  m_message.clear();
-  m_state = "printing";
+  resetJob();
 }
 
 void SimulatedPrinter::enqueue(const TimelineLine& line) {
@@ -160,6 +178,13 @@ void SimulatedPrinter::advance(double seconds) {
   while (seconds > 0.0 && m_state == "printing") {
     if (m_line >= m_timeline.lines.size()) break;
     const TimelineLine& line = m_timeline.lines[m_line];
+    if (!line.error.empty()) {
+      // Klipper's virtual_sdcard: a command's error ends the job (print_stats "error", its message).
+      m_state = "error";
+      m_message = line.error;
+      m_bytesDone = line.endByte;
+      break;
+    }
     if (line.heater != TimelineLine::Heater::None && !m_lineHeaterApplied) {
       (line.heater == TimelineLine::Heater::Extruder ? m_extruderTarget : m_bedTarget) = line.targetC;
       m_lineHeaterApplied = true;
@@ -172,6 +197,7 @@ void SimulatedPrinter::advance(double seconds) {
     m_lineElapsed += step;
     seconds -= step;
     if (step >= need) {
+      lineDone(line);
       m_bytesDone = line.endByte;
       ++m_line;
       m_lineElapsed = 0.0;

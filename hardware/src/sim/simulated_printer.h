@@ -3,10 +3,12 @@
 // G-code file line by line (moves timed by their feed rates, heater waits by the heating rate), two heaters,
 // and Klipper's shutdown (emergency stop, or a heater beyond its maximal temperature). Time only moves in
 // advance(); not thread-safe (the simulator holds its lock around every call).
+#include <array>
 #include <map>
 #include <string>
 
 #include "multidir/hardware/printer_link.h"
+#include "multidir/hardware/simulated_axes.h"
 #include "sim/gcode_timeline.h"
 
 namespace multidir::hardware::sim {
@@ -19,6 +21,7 @@ struct SimulatedPrinterSettings {
   double extruderMaxC = 280.0;          // Klipper's max_temp: beyond it the firmware shuts down
   // The firmware's words when a heater passes its maximum (Klipper's; Marlin says "MAXTEMP triggered").
   std::string overTemperatureShutdown = "MCU 'mcu' shutdown: ADC out of range";
+  RotaryAxisSetup axes;  // the rotary axes the firmware has (none unless configured)
 };
 
 class SimulatedPrinter {
@@ -67,11 +70,19 @@ class SimulatedPrinter {
   [[nodiscard]] double printSeconds() const { return m_printSeconds; }
   [[nodiscard]] HeaterReading extruder() const { return {m_extruder, m_extruderTarget}; }
   [[nodiscard]] HeaterReading bed() const { return {m_bed, m_bedTarget}; }
+  [[nodiscard]] const RotaryAxisSetup& axes() const { return m_settings.axes; }
+  // The rotary axes after the last line done (degrees, the setup's order), and which Klipper has enabled.
+  [[nodiscard]] double axisPosition(std::size_t index) const { return m_axisNow[index]; }
+  [[nodiscard]] bool axisEnabled(std::size_t index) const { return (m_axisEnabled & (1u << index)) != 0; }
+  // The extrusions and turns of the current job, each recorded when it ended.
+  [[nodiscard]] const SimulatedAxisLog& axisLog() const { return m_axisLog; }
 
  private:
   void heat(double seconds);
   void shutdown(const std::string& why);
   double secondsToReach(const TimelineLine& line) const;
+  void lineDone(const TimelineLine& line);
+  void resetJob();
 
   SimulatedPrinterSettings m_settings;
   std::map<std::string, std::string> m_files;
@@ -93,6 +104,9 @@ class SimulatedPrinter {
   double m_bedTarget = 0.0;
   bool m_runaway = false;
   bool m_streaming = false;
+  std::array<double, 3> m_axisNow = {0, 0, 0};
+  unsigned m_axisEnabled = 0;
+  SimulatedAxisLog m_axisLog;
 };
 
 }  // namespace multidir::hardware::sim

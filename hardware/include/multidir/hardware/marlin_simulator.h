@@ -21,6 +21,7 @@
 #include "multidir/core/common/result.h"
 #include "multidir/hardware/printer_link.h"
 #include "multidir/hardware/printer_simulator.h"
+#include "multidir/hardware/simulated_axes.h"
 
 namespace multidir::hardware {
 
@@ -37,6 +38,10 @@ struct MarlinSimulatorOptions {
   long faultAtMove = 10;
   // Marlin's ADVANCED_OK: every ok of a numbered line says which: "ok N<line> P<planner free> B<buffer free>".
   bool advancedOk = false;
+  // Rotary axes as Marlin 2.1 has them (AXIS4_NAME..): G-code letters, e.g. {"U", "V"} (--rotary-axes U,V).
+  // M114 reports them after Z ("X:.. Y:.. Z:.. U:.. V:.. E:.. Count X:.. Y:.. Z:.. U:.. V:..") and M115's
+  // first line says AXIS_COUNT:5. Manual steppers are Klipper's: refused.
+  SimulatedRotaryAxes rotaryAxes;
 };
 
 struct MarlinLineRecord {
@@ -105,6 +110,9 @@ class MarlinSimulator {
   [[nodiscard]] std::vector<MarlinLineRecord> received() const;
   [[nodiscard]] std::vector<MarlinExecutedRecord> executed() const;
   [[nodiscard]] MarlinSimulatorState state() const;
+  // The streamed job's extrusions and turns with the rotary axes' coordinates (simulated_axes.h); `sequence`
+  // counts the commands the printer ran since it was powered on (or reset).
+  [[nodiscard]] SimulatedAxisLog axisLog() const;
 
  private:
   class Impl;

@@ -20,6 +20,7 @@
 #include <functional>
 #include <future>
 #include <string>
+#include <vector>
 
 #include "multidir/core/common/result.h"
 #include "multidir/hardware/connection.h"
@@ -81,6 +82,12 @@ struct PrinterLinkOptions {
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
 };
 
+// The extra axes a printer's firmware has, as it reports them (docs/hardware.md, "The printer's own axes").
+struct FirmwareAxes {
+  std::vector<std::string> letters;         // Marlin: the axes M114 reports beyond X, Y, Z and E ("U", "V")
+  std::vector<std::string> manualSteppers;  // Klipper: NAME of each "manual_stepper NAME" object Moonraker lists
+};
+
 // Names the first option out of range (InvalidParameter).
 core::Status validate(const PrinterLinkOptions& options);
 
@@ -122,6 +129,11 @@ class PrinterLink {
   // OctoPrint, a reset of the printer and a Connect in OctoPrint (firmwareState "error").
   virtual core::Status clearStop() = 0;
 
+  // Asks the printer which extra axes its firmware has, for the checks before a program that turns them:
+  // Moonraker lists Klipper's objects (GET /printer/objects/list); Marlin answers M114 (asked between jobs; the
+  // answer's letters beyond X Y Z E). OctoPrint relays no firmware reply to its API clients, so it cannot be
+  // asked: the default answers InvalidParameter saying so.
+  virtual std::future<core::Result<FirmwareAxes>> readFirmwareAxes();
   [[nodiscard]] virtual PrinterStatus status() const = 0;
   // "Moonraker printer at 127.0.0.1:7125", "OctoPrint printer at 192.168.0.21:80".
   [[nodiscard]] virtual std::string name() const = 0;

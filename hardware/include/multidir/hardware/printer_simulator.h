@@ -15,6 +15,7 @@
 
 #include "multidir/core/common/result.h"
 #include "multidir/hardware/printer_link.h"
+#include "multidir/hardware/simulated_axes.h"
 
 namespace multidir::hardware {
 
@@ -45,6 +46,9 @@ struct PrinterSimulatorOptions {
   double faultAtProgress = 0.5;
   std::chrono::milliseconds linkDropFor{3000};
   std::chrono::milliseconds slowReplyDelay{3000};
+  // The printer's rotary axes (simulated_axes.h): Moonraker takes manual steppers (--manual-stepper tilt,rotation),
+  // OctoPrint G-code letters (--rotary-axes U,V); none by default.
+  SimulatedRotaryAxes rotaryAxes;
   // The clock of the records and of the simulated time; the system's steady clock unless a test injects one.
   std::function<std::chrono::steady_clock::time_point()> steadyNow;
 };
@@ -99,6 +103,8 @@ class PrinterSimulator {
   [[nodiscard]] std::vector<PrinterRequestRecord> requests() const;
   [[nodiscard]] std::vector<PrinterJobEvent> jobEvents() const;
   [[nodiscard]] SimulatedPrinterState state() const;
+  // The current (or last) job's extrusions and turns with the rotary axes' coordinates (simulated_axes.h).
+  [[nodiscard]] SimulatedAxisLog axisLog() const;
 
  protected:
   explicit PrinterSimulator(std::unique_ptr<sim::HttpPrinterSimulator> impl);
