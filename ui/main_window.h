@@ -27,8 +27,8 @@
 
 #include "ui/jobs/pose_search_job.h"
 #include "ui/jobs/search_job.h"
-#include "ui/loaded_model.h"
-#include "ui/up_pose.h"
+#include "ui/document/loaded_model.h"
+#include "ui/document/up_pose.h"
 #include "ui/project/dialog_folders.h"
 
 class QCloseEvent;

@@ -32,6 +32,7 @@
 #include "multidir/hardware/print_run.h"
 #include "ui/device/device_snapshot.h"
 #include "ui/device/plan_steps.h"
+#include "ui/document/print_job.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -51,12 +52,6 @@ class JobTimeline;
 class PrintRunDriver;
 class PrinterLinkOwner;
 class PrinterSection;
-
-// One step's G-code of the sliced job, and the slicer's estimate of its printing time.
-struct StepGcode {
-  std::string path;
-  double estimateSeconds = 0.0;
-};
 
 class HardwarePanel : public QWidget {
   Q_OBJECT
