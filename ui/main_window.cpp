@@ -183,6 +183,15 @@ void MainWindow::buildMenus() {
   });
   cancel->setShortcut(QKeySequence(Qt::Key_Escape));
 
+  search->addSeparator();
+  // Slicing from the menu and the keyboard as from the Plan dock's button: the same dialog, the same refusals.
+  QAction* slice = search->addAction(tr("S&lice the plan..."), m_slicing, &SliceSession::chooseAndSlice);
+  slice->setObjectName(QStringLiteral("slicePlan"));
+  slice->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+  slice->setStatusTip(tr("Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)"));
+  slice->setEnabled(false);
+  connect(m_slicing, &SliceSession::sliceableChanged, slice, &QAction::setEnabled);
+
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   QAction* about = help->addAction(tr("&About MultiDir Studio"), this, &MainWindow::showAbout);
   about->setObjectName(QStringLiteral("about"));
@@ -325,6 +334,8 @@ void MainWindow::buildUpBox() {
   bar->addWidget(label);
   m_upBox = new QComboBox(bar);
   m_upBox->setObjectName(QStringLiteral("upBox"));
+  // As wide as its entries: a pose's "Pose: 0.60, 0.00, 0.80" is read whole, not as "Po:".
+  m_upBox->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   m_upBox->setToolTip(tr("The direction the model is printed along: the platform is below, "
                          "overhangs are measured against it"));
   const struct {

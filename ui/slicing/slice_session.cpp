@@ -6,6 +6,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSlider>
 #include <QStatusBar>
 
@@ -65,6 +66,7 @@ void SliceSession::updateSliceable() {
   } else {
     m_panel->setSliceable(true);
   }
+  emit sliceableChanged(m_panel->sliceButton()->isEnabled());
 }
 
 void SliceSession::onPlanChanged() {
