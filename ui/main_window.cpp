@@ -18,6 +18,7 @@
 #include <QScrollArea>
 #include <QStatusBar>
 #include <QTimer>
+#include <QLayout>
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <QVector3D>
@@ -300,7 +301,13 @@ void MainWindow::buildDocks() {
   estopBar->setObjectName(QStringLiteral("emergencyStopToolBar"));
   estopBar->setMovable(false);
   estopBar->toggleViewAction()->setVisible(false);  // it cannot be hidden from the toolbar menu
-  hardwarePanel->addEmergencyStopTo(estopBar);
+  QAction* estop = hardwarePanel->addEmergencyStopTo(estopBar);
+  // The toolbar row is as tall without the E-STOP as with it: connecting does not push the view down.
+  if (QWidget* button = estopBar->widgetForAction(estop)) {
+    const QMargins margins = estopBar->contentsMargins();
+    estopBar->setMinimumHeight(button->sizeHint().height() + margins.top() + margins.bottom() +
+                               2 * estopBar->layout()->contentsMargins().top());
+  }
   // The sliced job's G-code and estimates become the document's sliced job; dropped with the slicing result.
   connect(m_slicing, &SliceSession::sliced, this, [this] {
     const std::optional<SliceOutcome>& outcome = m_slicing->outcome();

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
@@ -24,6 +25,7 @@
 #include "ui/panels/plane_edit_panel.h"
 #include "ui/panels/pose_search_box.h"
 #include "ui/studio_test_support.h"
+#include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
 namespace {
@@ -143,6 +145,25 @@ TEST(StudioDocumentViews, EditPlanFieldsShowNothingOfTheLastModelsPlan) {
   for (const char* name : {"planeTilt", "planeAzimuth", "planeRotary"})
     EXPECT_EQ(named<QDoubleSpinBox>(*window.planeEditPanel(), name)->cleanText(), QString()) << name;
   EXPECT_EQ(named<QTableWidget>(*window.planeEditPanel(), "planeTable")->rowCount(), 0);
+}
+
+// Issue 29 [cosmetic]: the toolbar's E-STOP, shown once a device is connected, does not push the view down.
+TEST(StudioEmergencyStopToolbar, ConnectingLeavesTheViewWhereItWas) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(test::showDefaultSample(window));
+  hardware::DeviceSimulator sim;
+  ASSERT_TRUE(sim.start().ok());
+  HardwarePanel* panel = hardwareOf(window);
+  ASSERT_NE(panel, nullptr);
+  QCoreApplication::processEvents();
+  const QRect before = window.viewer()->geometry();
+  ASSERT_NO_FATAL_FAILURE(connectTo(*panel, sim, 255));
+  auto* estop = window.findChild<QPushButton*>(QStringLiteral("windowEstopButton"));
+  ASSERT_NE(estop, nullptr);
+  ASSERT_TRUE(test::waitUntil([&] { return estop->isVisible(); }));
+  QCoreApplication::processEvents();
+  EXPECT_EQ(window.viewer()->geometry().top(), before.top());
+  EXPECT_EQ(window.viewer()->geometry().height(), before.height());
 }
 
 }  // namespace
