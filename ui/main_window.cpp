@@ -18,6 +18,7 @@
 #include <QScrollArea>
 #include <QStatusBar>
 #include <QTimer>
+#include <QLayout>
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <QVector3D>
@@ -34,7 +35,7 @@
 #include "multidir/core/search/search_options.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/edit/plan_editor.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 #include "ui/jobs/model_loader.h"
 #include "ui/jobs/support_regrowth.h"
 #include "ui/panels/machine_panel.h"
@@ -46,11 +47,11 @@
 #include "ui/project/project_session.h"
 #include "ui/project/window_state.h"
 #include "ui/slicing/slice_session.h"
-#include "ui/picture_file.h"
+#include "ui/common/picture_file.h"
 #include "ui/studio_startup.h"
 #include "ui/viewer/axis_picker.h"
 #include "ui/viewer/mesh_viewer_widget.h"
-#include "ui/wheel_needs_focus.h"
+#include "ui/common/wheel_needs_focus.h"
 
 namespace multidir::ui {
 namespace {
@@ -88,6 +89,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // First, so that every field built below is polished with it: the wheel changes a field only with focus.
   qApp->installEventFilter(new WheelNeedsFocus(this));
   setWindowTitle(tr("MultiDir Studio"));
+  m_document = new StudioDocument(this);
+  connect(m_document, &StudioDocument::planChanged, this, &MainWindow::onDocumentPlanChanged);
   m_viewer = new MeshViewerWidget(this);
   setCentralWidget(m_viewer);
   m_loader = new ModelLoader(this);
@@ -180,6 +183,15 @@ void MainWindow::buildMenus() {
     }
   });
   cancel->setShortcut(QKeySequence(Qt::Key_Escape));
+
+  search->addSeparator();
+  // Slicing from the menu and the keyboard as from the Plan dock's button: the same dialog, the same refusals.
+  QAction* slice = search->addAction(tr("S&lice the plan..."), m_slicing, &SliceSession::chooseAndSlice);
+  slice->setObjectName(QStringLiteral("slicePlan"));
+  slice->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+  slice->setStatusTip(tr("Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)"));
+  slice->setEnabled(false);
+  connect(m_slicing, &SliceSession::sliceableChanged, slice, &QAction::setEnabled);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   QAction* about = help->addAction(tr("&About MultiDir Studio"), this, &MainWindow::showAbout);
@@ -280,36 +292,37 @@ void MainWindow::buildDocks() {
           [this](const core::Vec3& axis) { m_machinePanel->setRotationAxis(axis, upDirection()); });
   connect(m_axisPicker, &AxisPicker::message, this, [this](const QString& text) { statusBar()->showMessage(text); });
 
-  // Hardware: the Machine panel's profile gives the device's limits; the plan shown is the one to run.
-  auto* hardwarePanel = new HardwarePanel(this);
+  // Hardware: it reads the document's machine (the device's limits) and the device session's job (the plan
+  // shown with its sliced G-code), which a print run pins while it lasts.
+  auto* hardwarePanel = new HardwarePanel(m_document, this);
   tabifyDockWidget(m_planDock, addDock(hardwarePanel, tr("Hardware"), QStringLiteral("hardwareDock"), false));
-  auto sendProfile = [this, hardwarePanel] {
-    if (m_upBox) hardwarePanel->setMachineProfile(m_machinePanel->machineSpec(upDirection()));
-  };
   // A second E-STOP, above everything, while a device is connected: the dock may be tabbed away or closed.
   QToolBar* estopBar = addToolBar(tr("Emergency stop"));
   estopBar->setObjectName(QStringLiteral("emergencyStopToolBar"));
   estopBar->setMovable(false);
   estopBar->toggleViewAction()->setVisible(false);  // it cannot be hidden from the toolbar menu
-  hardwarePanel->addEmergencyStopTo(estopBar);
-  QTimer::singleShot(0, hardwarePanel, sendProfile);  // once the Up box exists
-  connect(m_machinePanel, &MachinePanel::machineChanged, hardwarePanel, sendProfile);
-  connect(hardwarePanel, &HardwarePanel::connectRequested, hardwarePanel, sendProfile);  // the latest up too
-  connect(this, &MainWindow::planShown, hardwarePanel, [this, hardwarePanel] {
-    if (m_plan && m_plan->plan) hardwarePanel->setPlan(*m_plan->plan);
-  });
-  // The sliced job's G-code and estimates go with the plan to the printer; dropped with the slicing result.
-  connect(m_slicing, &SliceSession::sliced, hardwarePanel, [this, hardwarePanel] {
+  QAction* estop = hardwarePanel->addEmergencyStopTo(estopBar);
+  // The toolbar row is as tall without the E-STOP as with it: connecting does not push the view down.
+  if (QWidget* button = estopBar->widgetForAction(estop)) {
+    const QMargins margins = estopBar->contentsMargins();
+    estopBar->setMinimumHeight(button->sizeHint().height() + margins.top() + margins.bottom() +
+                               2 * estopBar->layout()->contentsMargins().top());
+  }
+  // The sliced job's G-code and estimates become the document's sliced job; dropped with the slicing result.
+  connect(m_slicing, &SliceSession::sliced, this, [this] {
     const std::optional<SliceOutcome>& outcome = m_slicing->outcome();
-    if (!outcome || !outcome->job) return;
-    std::vector<StepGcode> steps;
+    if (!outcome || !outcome->job || !plan()) return;
+    PrintJob job;
+    job.plan = plan()->plan;  // SliceSession reports only a job sliced from the plan shown
     for (const slicing::SlicedStep& step : outcome->job->steps)
-      steps.push_back({QDir(outcome->folderPath()).filePath(QString::fromStdString(step.gcodeFile)).toStdString(),
-                       step.estimate.printSeconds});
-    hardwarePanel->setJobGcode(std::move(steps), outcome->folder);
+      job.steps.push_back({QDir(outcome->folderPath()).filePath(QString::fromStdString(step.gcodeFile)).toStdString(),
+                           step.estimate.printSeconds});
+    job.files = outcome->folder;
+    if (const core::Status taken = m_document->setSlicedJob(std::move(job)); !taken)
+      statusBar()->showMessage(QString::fromStdString(taken.error().message));
   });
-  connect(m_slicing, &SliceSession::resultAvailable, hardwarePanel, [hardwarePanel](bool available) {
-    if (!available) hardwarePanel->setJobGcode({});
+  connect(m_slicing, &SliceSession::resultAvailable, m_document, [this](bool available) {
+    if (!available) m_document->clearSlicedJob();
   });
   // During a run the view shows what is on the platform: the regions printed so far and the one being
   // printed; all of them again when the run ends. Through the Plan panel, so its stepper agrees (and clamps).
@@ -328,6 +341,8 @@ void MainWindow::buildUpBox() {
   bar->addWidget(label);
   m_upBox = new QComboBox(bar);
   m_upBox->setObjectName(QStringLiteral("upBox"));
+  // As wide as its entries: a pose's "Pose: 0.60, 0.00, 0.80" is read whole, not as "Po:".
+  m_upBox->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   m_upBox->setToolTip(tr("The direction the model is printed along: the platform is below, "
                          "overhangs are measured against it"));
   const struct {
@@ -412,7 +427,7 @@ QString MainWindow::dialogFolder(FileKind kind) const {
   if (!remembered.isEmpty()) return remembered;
   if (kind != FileKind::Model && !m_project->projectPath().isEmpty())
     return QFileInfo(m_project->projectPath()).absolutePath();
-  if (m_model && !m_model->sourcePath.isEmpty()) return QFileInfo(m_model->sourcePath).absolutePath();
+  if (model() && !model()->sourcePath.isEmpty()) return QFileInfo(model()->sourcePath).absolutePath();
   return QString();
 }
 
@@ -423,6 +438,14 @@ void MainWindow::chooseFile() {
          "MultiDir projects (*.multidir);;All files (*)"));
   if (path.isEmpty()) return;
   m_project->openFromUser(path);
+}
+
+void MainWindow::applyUpEntry() {
+  const QVariant pose = m_upBox->itemData(m_upIndex, kPoseRole);
+  if (pose.isValid())
+    m_document->setUpPose(pose.value<UpPose>());
+  else
+    m_document->setUp(toVec3(m_upBox->itemData(m_upIndex).value<QVector3D>()));
 }
 
 void MainWindow::setUpDirection(const core::Vec3& up) {
@@ -461,7 +484,7 @@ int MainWindow::selectUpEntry(const core::Vec3& unit, const std::optional<UpPose
 
 void MainWindow::onUpBoxChosen(int index) {
   if (index == m_upIndex || index < 0) return;
-  const bool dropsWork = isSearching() || (m_plan.has_value() && m_project->isModified());
+  const bool dropsWork = isSearching() || (plan().has_value() && m_project->isModified());
   auto apply = [this, index] {
     if (index >= m_upBox->count()) return;
     {
@@ -483,18 +506,11 @@ void MainWindow::onUpBoxChosen(int index) {
   m_project->whenWorkMayBeReplaced(apply);
 }
 
-core::Vec3 MainWindow::upDirection() const {
-  // A pose's up is kept at full precision (the entry's own vector is a float one): saved and reopened, and
-  // compared with the pose search's trials, it stays bit for bit the same.
-  if (const std::optional<UpPose> pose = upPose()) return pose->up;
-  return toVec3(m_upBox->itemData(m_upIndex).value<QVector3D>()).normalized();
-}
+// The document's: a pose's up is kept at full precision (the Up box entry's own vector is a float one): saved
+// and reopened, and compared with the pose search's trials, it stays bit for bit the same.
+core::Vec3 MainWindow::upDirection() const { return m_document->up(); }
 
-std::optional<UpPose> MainWindow::upPose() const {
-  const QVariant pose = m_upBox->itemData(m_upIndex, kPoseRole);
-  if (!pose.isValid()) return std::nullopt;
-  return pose.value<UpPose>();
-}
+std::optional<UpPose> MainWindow::upPose() const { return m_document->upPose(); }
 
 void MainWindow::setUpPose(const UpPose& pose) {
   const double length = pose.up.norm();
@@ -511,17 +527,23 @@ void MainWindow::setUpPose(const UpPose& pose) {
 bool MainWindow::isLoading() const { return m_loader->isBusy(); }
 
 void MainWindow::showModel(const LoadedModel& model) {
-  m_model = model;
   m_previewUp.reset();  // setMesh below shows the model with its own up
   m_poseRun.reset();    // the poses listed were another model's
   m_machinePanel->poseBox()->clear();
-  // The up direction the model comes with is selected without redrawing: it is drawn once below. Only here:
+  // The document drops the last model's pose (its machine turns back with it), plan and job, and takes the up
+  // the model comes with. The Up box shows that up without redrawing: it is drawn once below. Only here:
   // whoever answers modelShown (a project applying its own up direction) must redraw.
-  auto selectUp = [this](const core::Vec3& up) {
-    if (up.allFinite() && up.norm() > 0.0) m_upIndex = selectUpEntry(up.normalized());
-  };
-  if (model.naturalUp) selectUp(*model.naturalUp);
-  if (m_pendingPlan) selectUp(m_pendingPlan->machine.up);
+  const bool hadPose = m_document->upPose().has_value();
+  m_document->setModel(model);
+  if (hadPose) m_machinePanel->setMachineSpec(m_document->machine());
+  if (m_pendingPlan) m_document->setUp(m_pendingPlan->machine.up);
+  {
+    // A pose entry of the Up box is the last model's pose: it goes with it.
+    const QSignalBlocker blocker(m_upBox);
+    for (int i = m_upBox->count() - 1; i >= kAxisEntries; --i)
+      if (m_upBox->itemData(i, kPoseRole).isValid()) m_upBox->removeItem(i);
+  }
+  m_upIndex = selectUpEntry(m_document->up());
   clearPlan();
   m_searchPanel->clearResult();
   m_viewer->setMesh(*model.mesh, upDirection());
@@ -553,7 +575,7 @@ void MainWindow::reportLoadError(const QString& source, const QString& headline,
                               QMessageBox::Ok, this);
   box->setObjectName(QStringLiteral("loadErrorBox"));
   QString informative = detail;
-  if (m_model) informative += QStringLiteral("\n\n") + tr("%1 is still open.").arg(m_model->name);
+  if (model()) informative += QStringLiteral("\n\n") + tr("%1 is still open.").arg(model()->name);
   box->setInformativeText(informative.trimmed());
   box->setAttribute(Qt::WA_DeleteOnClose);
   box->setModal(false);
@@ -562,26 +584,27 @@ void MainWindow::reportLoadError(const QString& source, const QString& headline,
 }
 
 void MainWindow::onUpChanged() {
+  applyUpEntry();       // the document drops the plan when the direction moved
   m_previewUp.reset();  // setMesh below shows the new up
   markPoseInUse();
   onMachineChanged();
   emit upDirectionChanged();
-  if (!m_model) return;
+  if (!model()) return;
   clearPlan();
-  m_viewer->setMesh(*m_model->mesh, upDirection());
+  m_viewer->setMesh(*model()->mesh, upDirection());
   updateModelStatus();
   updateOverhangs();
 }
 
 void MainWindow::updateModelStatus() {
-  if (!m_model) {
+  if (!model()) {
     m_fileLabel->setText(tr("No model"));
     m_trianglesLabel->clear();
     m_volumeLabel->clear();
     m_riskyLabel->clear();
     return;
   }
-  const LoadedModel& model = *m_model;
+  const LoadedModel& model = *this->model();
   m_fileLabel->setText(model.name);
   m_fileLabel->setToolTip(model.sourcePath);
   m_trianglesLabel->setText(
@@ -590,24 +613,24 @@ void MainWindow::updateModelStatus() {
 }
 
 void MainWindow::updateOverhangs() {
-  if (!m_model) {
+  if (!model()) {
     m_riskyLabel->clear();
     m_overhangPanel->showUnavailable(tr("No model"));
     return;
   }
   core::OverhangOptions options;
   options.alphaMaxDegrees = m_overhangPanel->alphaMaxDegrees();
-  const core::Result<core::OverhangAnalysis> overhang = core::analyzeOverhang(*m_model->mesh, upDirection(), options);
+  const core::Result<core::OverhangAnalysis> overhang = core::analyzeOverhang(*model()->mesh, upDirection(), options);
   if (!overhang) {
     const QString reason = QString::fromStdString(overhang.error().describe());
     m_riskyLabel->setText(tr("Risky area unavailable"));
     m_riskyLabel->setToolTip(reason);
     m_overhangPanel->showUnavailable(reason);
-    m_viewer->setRiskyFaces(std::vector<char>(m_model->mesh->faceCount(), 0));
+    m_viewer->setRiskyFaces(std::vector<char>(model()->mesh->faceCount(), 0));
     return;
   }
   m_viewer->setRiskyFaces(overhang->risky);
-  m_overhangPanel->showResult(overhang->riskyAreaMm2, overhang->riskyFaces, m_model->mesh->faceCount());
+  m_overhangPanel->showResult(overhang->riskyAreaMm2, overhang->riskyFaces, model()->mesh->faceCount());
   m_riskyLabel->setText(tr("Risky area (%1 up): %2 mm²")
                             .arg(m_upBox->currentText(), formatNumber(overhang->riskyAreaMm2, 1)));
   m_riskyLabel->setToolTip(tr("Area of the faces that overhang by more than %1° for this up direction")
@@ -615,6 +638,7 @@ void MainWindow::updateOverhangs() {
 }
 
 void MainWindow::onMachineChanged() {
+  m_document->setMachine(m_machinePanel->machineSpec(upDirection()));
   const bool valid = m_machinePanel->validateFor(upDirection());
   const bool rotary = m_machinePanel->kind() == core::MachineKind::RotaryPlatform;
   m_viewer->setRotationAxis(rotary ? m_machinePanel->rotationAxis() : std::nullopt);
@@ -625,7 +649,7 @@ void MainWindow::onMachineChanged() {
 }
 
 void MainWindow::updateRunnable() {
-  if (!m_model) {
+  if (!model()) {
     m_searchPanel->setRunnable(false, tr("Open a model first."));
   } else if (!m_machinePanel->errorText().isEmpty()) {
     m_searchPanel->setRunnable(false, tr("Fix the machine first: %1").arg(m_machinePanel->errorText()));
@@ -638,8 +662,8 @@ void MainWindow::updateRunnable() {
 }
 
 double MainWindow::modelSizeMm() const {
-  if (!m_model) return 0.0;
-  const auto box = core::boundingBox(*m_model->mesh);
+  if (!model()) return 0.0;
+  const auto box = core::boundingBox(*model()->mesh);
   return (box.max - box.min).norm();
 }
 
@@ -649,7 +673,7 @@ bool MainWindow::runSearch() {
   QString problem;
   if (m_search->isRunning()) problem = tr("A search is already running.");
   else if (m_poseSearch->isRunning()) problem = tr("A pose search is running: wait for it or cancel it.");
-  else if (!m_model) problem = tr("Open a model first.");
+  else if (!model()) problem = tr("Open a model first.");
   else if (!m_machinePanel->validateFor(upDirection())) problem = m_machinePanel->errorText();
   const core::SearchOptions options = m_searchPanel->searchOptions();
   if (problem.isEmpty()) {
@@ -664,16 +688,16 @@ bool MainWindow::runSearch() {
     return false;
   }
   const core::MachineSpec machine = m_machinePanel->machineSpec(upDirection());
-  m_searchModel = m_model->mesh;
+  m_searchModel = model()->mesh;
   m_searchUp = upDirection();
   core::OverhangOptions overhang;
   overhang.alphaMaxDegrees = options.alphaMaxDegrees;
   overhang.supportedBandMm = options.supportedBandMm;
-  const core::Result<core::OverhangAnalysis> before = core::analyzeOverhang(*m_model->mesh, m_searchUp, overhang);
-  if (!m_search->start(m_model->mesh, machine, options, m_searchPanel->axisSearchCount())) return false;
+  const core::Result<core::OverhangAnalysis> before = core::analyzeOverhang(*model()->mesh, m_searchUp, overhang);
+  if (!m_search->start(model()->mesh, machine, options, m_searchPanel->axisSearchCount())) return false;
   m_searchPanel->searchStarted(before ? before->riskyAreaMm2 : 0.0, core::maxSearchLevels(options));
   m_searchDock->raise();
-  statusBar()->showMessage(tr("Searching %1...").arg(m_model->name));
+  statusBar()->showMessage(tr("Searching %1...").arg(model()->name));
   return true;
 }
 
@@ -690,7 +714,7 @@ void MainWindow::onSearchFinished(const SearchRun& run) {
     m_searchModel.reset();
     return;
   }
-  const bool current = m_model && m_model->mesh == m_searchModel && (upDirection() - m_searchUp).norm() < 1e-9;
+  const bool current = model() && model()->mesh == m_searchModel && (upDirection() - m_searchUp).norm() < 1e-9;
   m_searchModel.reset();
   m_searchPanel->searchFinished(*run.plan);
   if (!current) {
@@ -718,7 +742,11 @@ void MainWindow::onSearchFailed(const QString& headline, const QString& detail) 
 
 void MainWindow::showPlan(const SearchRun& run, PlanChange change) {
   endPreview();
-  m_plan = run;
+  if (change == PlanChange::New)
+    m_document->setPlan(run);
+  else
+    m_document->setEditedPlan(run);
+  m_planShown = true;
   using Camera = MeshViewerWidget::Camera;
   m_viewer->setPlan(run.plan, change == PlanChange::Edit ? Camera::Keep : Camera::Fit);
   m_viewer->setSupports(run.supports);
@@ -726,7 +754,7 @@ void MainWindow::showPlan(const SearchRun& run, PlanChange change) {
   if (change == PlanChange::New) {
     m_viewer->setPrintingDirectionsVisible(true);
     m_planDock->raise();
-    m_planEditor->setPlan(m_model && m_model->mesh != m_regionsModel ? m_model->mesh : nullptr, run);
+    m_planEditor->setPlan(model() && model()->mesh != m_regionsModel ? model()->mesh : nullptr, run);
   }
   m_exportPlanAction->setEnabled(true);
   regrowSupportsIfMissing();
@@ -734,15 +762,15 @@ void MainWindow::showPlan(const SearchRun& run, PlanChange change) {
 }
 
 void MainWindow::regrowSupportsIfMissing() {
-  const bool needed = m_plan && m_plan->plan && m_plan->plan->jgAfterMm2 > 0.0 && !m_plan->supports;
+  const bool needed = plan() && plan()->plan && plan()->plan->jgAfterMm2 > 0.0 && !plan()->supports;
   // A plan shown over its own regions has no model to grow supports on: it keeps the ones saved with it.
-  const bool model = m_model && m_model->mesh != m_regionsModel;
-  if (!needed || !model) {
+  const bool modelAtHand = model() && model()->mesh != m_regionsModel;
+  if (!needed || !modelAtHand) {
     m_regrowth->cancel();
     return;
   }
-  if (m_regrowth->growingFor() == m_plan->plan) return;
-  m_regrowth->start(m_model->mesh, m_plan->plan, m_plan->machine);
+  if (m_regrowth->growingFor() == plan()->plan) return;
+  m_regrowth->start(model()->mesh, plan()->plan, plan()->machine);
   statusBar()->showMessage(tr("Growing supports for the plan..."));
 }
 
@@ -751,25 +779,28 @@ bool MainWindow::isGrowingSupports() const { return m_regrowth->growingFor() != 
 void MainWindow::onSupportsRegrown(const std::shared_ptr<const core::Decomposition>& plan,
                                    const std::shared_ptr<const std::vector<core::SupportSet>>& supports,
                                    const QString& note) {
-  if (!m_plan || m_plan->plan != plan) return;
-  m_plan->supports = supports;
-  m_plan->supportsNote = note;
+  if (!m_document->attachSupports(plan, supports, note)) return;
   m_viewer->setSupports(supports);
-  m_planPanel->setPlan(*plan, m_plan->machine.kind, supports ? *supports : std::vector<core::SupportSet>{});
+  m_planPanel->setPlan(*plan, m_document->plan()->machine.kind, supports ? *supports : std::vector<core::SupportSet>{});
   m_planEditor->adoptSupports(plan, supports, note);
   statusBar()->showMessage(note.isEmpty() ? tr("Supports grown for the plan.") : note);
   emit supportsRegrown();
 }
 
 void MainWindow::clearPlan() {
-  const bool hadPlan = m_plan.has_value();
-  m_plan.reset();
+  // The document drops the plan; onPlanChanged() clears what showed it.
+  m_document->clearPlan();
+}
+
+void MainWindow::onDocumentPlanChanged() {
+  if (plan() || !m_planShown) return;  // a plan shown is drawn by showPlan()
+  m_planShown = false;
   if (m_regrowth) m_regrowth->cancel();
   m_viewer->clearPlan();
   m_planPanel->clearPlan();
   if (m_planEditor) m_planEditor->clear();
   if (m_exportPlanAction) m_exportPlanAction->setEnabled(false);
-  if (hadPlan) emit planCleared();
+  emit planCleared();
 }
 
 void MainWindow::showRebuiltPlan(const SearchRun& run) { showPlan(run); }
@@ -788,9 +819,9 @@ bool MainWindow::exportPlan(const QString& directory, QString* error, QString* w
     if (error) *error = message;
     return false;
   };
-  if (!m_plan || !m_plan->plan) return fail(tr("There is no plan to export: run a search first."));
-  const bool needsSupports = m_plan->plan->jgAfterMm2 > 0.0;
-  if (needsSupports && !m_plan->supports && isGrowingSupports()) {
+  if (!plan() || !plan()->plan) return fail(tr("There is no plan to export: run a search first."));
+  const bool needsSupports = plan()->plan->jgAfterMm2 > 0.0;
+  if (needsSupports && !plan()->supports && isGrowingSupports()) {
     return fail(tr("The supports of this plan are still being grown: export it again when the status bar says "
                    "they are ready."));
   }
@@ -799,11 +830,11 @@ bool MainWindow::exportPlan(const QString& directory, QString* error, QString* w
                     .arg(QDir::toNativeSeparators(directory)));
   }
   core::PlanMetadata metadata;
-  metadata.up = m_plan->machine.up;
-  metadata.machine = m_plan->machine;
+  metadata.up = plan()->machine.up;
+  metadata.machine = plan()->machine;
   // A plan for the pose a pose search chose records it as the CLI's --pose auto does: up is the platform's
   // up the search started from, the machine the one turned to the pose.
-  if (const std::optional<UpPose> pose = upPose(); pose && (pose->up - m_plan->machine.up).norm() < 1e-9) {
+  if (const std::optional<UpPose> pose = upPose(); pose && (pose->up - plan()->machine.up).norm() < 1e-9) {
     core::PlanPose planPose;
     planPose.up = pose->up;
     planPose.rotation = core::poseRotation(pose->up, pose->pose.platformUp);
@@ -813,27 +844,27 @@ bool MainWindow::exportPlan(const QString& directory, QString* error, QString* w
     metadata.up = pose->pose.platformUp;
     metadata.pose = planPose;
   }
-  metadata.options = m_plan->options;
-  metadata.axisSearchCount = m_plan->axisSearchCount;
+  metadata.options = plan()->options;
+  metadata.axisSearchCount = plan()->axisSearchCount;
   metadata.multidirVersion = studioVersion().toStdString();
-  if (m_model && !m_model->sourcePath.isEmpty()) {
-    metadata.modelPath = localPath(m_model->sourcePath);
+  if (model() && !model()->sourcePath.isEmpty()) {
+    metadata.modelPath = localPath(model()->sourcePath);
     const core::Result<std::string> checksum = core::fileChecksum(metadata.modelPath);
     if (checksum) metadata.modelChecksum = checksum.value();
   }
   const std::vector<core::SupportSet> noSupports;
   const core::Status saved =
-      core::savePlan(*m_plan->plan, metadata, m_plan->supports ? *m_plan->supports : noSupports, localPath(directory));
+      core::savePlan(*plan()->plan, metadata, plan()->supports ? *plan()->supports : noSupports, localPath(directory));
   if (!saved) {
     return fail(tr("Could not export the plan to %1: %2 (%3)")
                     .arg(directory, errorHeadline(saved.error().code), QString::fromStdString(saved.error().describe())));
   }
-  if (needsSupports && !m_plan->supports) {
+  if (needsSupports && !plan()->supports) {
     // Written all the same (the regions are good), but never silently without them.
     const QString text =
         tr("Plan exported to %1 without supports although %2 mm² of risky area remains: %3")
-            .arg(directory, formatNumber(m_plan->plan->jgAfterMm2, 2),
-                 m_plan->supportsNote.isEmpty() ? tr("no supports were grown for it.") : m_plan->supportsNote);
+            .arg(directory, formatNumber(plan()->plan->jgAfterMm2, 2),
+                 plan()->supportsNote.isEmpty() ? tr("no supports were grown for it.") : plan()->supportsNote);
     statusBar()->showMessage(text);
     if (warning) *warning = text;
     return true;
@@ -911,7 +942,7 @@ bool MainWindow::loadMachineProfile(const QString& path, QString* error) {
 void MainWindow::chooseExportPlan() {
   // A folder name to write the plan into: an existing folder, or a new one that exportPlan creates (a folder
   // dialog would accept only folders that already exist).
-  const QString stem = m_model ? QFileInfo(m_model->name).completeBaseName() : QStringLiteral("multidir");
+  const QString stem = model() ? QFileInfo(model()->name).completeBaseName() : QStringLiteral("multidir");
   const QString directory = QFileDialog::getSaveFileName(
       this, tr("Export Plan to Folder"), QDir(dialogFolder(FileKind::Plan)).filePath(stem + tr("-plan")),
       tr("Plan folders (*)"), nullptr, QFileDialog::ShowDirsOnly | QFileDialog::DontConfirmOverwrite);
@@ -940,7 +971,7 @@ bool MainWindow::exportScreenshot(const QString& path, QString* error) {
 void MainWindow::chooseExportScreenshot() {
   const QString png = tr("PNG images (*.png)");
   const QString jpeg = tr("JPEG images (*.jpg *.jpeg)");
-  const QString name = m_model ? QFileInfo(m_model->name).completeBaseName() : QStringLiteral("multidir");
+  const QString name = model() ? QFileInfo(model()->name).completeBaseName() : QStringLiteral("multidir");
   QString filter = png;
   QString path = QFileDialog::getSaveFileName(this, tr("Export Screenshot"),
                                               QDir(dialogFolder(FileKind::Picture)).filePath(name + QStringLiteral(".png")),
@@ -983,7 +1014,7 @@ void MainWindow::chooseLoadMachine() {
   // A profile with another up direction drops the plan shown: asked about like any other replacement.
   const core::Result<core::MachineSpec> profile = core::loadMachineProfile(localPath(path));
   const bool turnsUp = profile && (profile->up.normalized() - upDirection()).norm() > 1e-9;
-  if (turnsUp && (m_plan || isSearching())) {
+  if (turnsUp && (plan() || isSearching())) {
     m_project->whenWorkMayBeReplaced(load);
   } else {
     load();

@@ -27,8 +27,9 @@
 
 #include "ui/jobs/pose_search_job.h"
 #include "ui/jobs/search_job.h"
-#include "ui/loaded_model.h"
-#include "ui/up_pose.h"
+#include "ui/document/loaded_model.h"
+#include "ui/document/studio_document.h"
+#include "ui/document/up_pose.h"
 #include "ui/project/dialog_folders.h"
 
 class QCloseEvent;
@@ -52,6 +53,7 @@ class PlaneEditPanel;
 class ProjectSession;
 class SearchPanel;
 class SliceSession;
+class StudioDocument;
 class SupportRegrowth;
 
 class MainWindow : public QMainWindow {
@@ -113,9 +115,11 @@ class MainWindow : public QMainWindow {
   void usePoseFromUser(int trial);
 
   [[nodiscard]] bool isLoading() const;
-  [[nodiscard]] bool hasModel() const { return m_model.has_value(); }
-  // The model shown (nullopt before the first successful load).
-  [[nodiscard]] const std::optional<LoadedModel>& model() const { return m_model; }
+  // What every dock and the viewer show: the model, up, machine, plan, sliced job and the device's job.
+  [[nodiscard]] StudioDocument* document() const { return m_document; }
+  [[nodiscard]] bool hasModel() const { return m_document->model().has_value(); }
+  // The model shown (nullopt before the first successful load): the document's.
+  [[nodiscard]] const std::optional<LoadedModel>& model() const { return m_document->model(); }
   [[nodiscard]] MeshViewerWidget* viewer() const { return m_viewer; }
   [[nodiscard]] OverhangPanel* overhangPanel() const { return m_overhangPanel; }
   [[nodiscard]] MachinePanel* machinePanel() const { return m_machinePanel; }
@@ -123,9 +127,9 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] PlanPanel* planPanel() const { return m_planPanel; }
   // The project (ui/project): Open/Save Project, unsaved changes, autosave and recovery, Open Recent, drops.
   [[nodiscard]] ProjectSession* projectSession() const { return m_project; }
-  // Plan editing (ui/edit): the Edit plan dock, its editor and the undo stack behind Edit > Undo/Redo. A new
-  // plan (searched or opened) or a new model clears the stack.
-  [[nodiscard]] QUndoStack* undoStack() const { return m_undoStack; }
+  // Plan editing (ui/edit): the Edit plan dock, its editor and the undo stack behind Edit > Undo/Redo (the
+  // document's edit history). A new plan (searched or opened) or a new model clears the stack.
+  [[nodiscard]] QUndoStack* undoStack() const { return m_document->editHistory(); }
   [[nodiscard]] PlanEditor* planEditor() const { return m_planEditor; }
   [[nodiscard]] PlaneEditPanel* planeEditPanel() const { return m_planeEditPanel; }
   // Slicing the plan shown into G-code (ui/slicing): the Slice button and estimates under the Plan dock,
@@ -139,8 +143,8 @@ class MainWindow : public QMainWindow {
   void cancelSearch();
   // A search or a pose search is running.
   [[nodiscard]] bool isSearching() const;
-  // The plan shown, with what it was computed with (nullopt: none).
-  [[nodiscard]] const std::optional<SearchRun>& plan() const { return m_plan; }
+  // The plan shown, with what it was computed with (nullopt: none): the document's.
+  [[nodiscard]] const std::optional<SearchRun>& plan() const { return m_document->plan(); }
   // Shows a plan made elsewhere (a project's plan rebuilt from its planes) as a new plan.
   void showRebuiltPlan(const SearchRun& run);
 
@@ -203,10 +207,14 @@ class MainWindow : public QMainWindow {
   // editor's plan replaces the one shown (the camera and the docks stay as they are).
   enum class PlanChange { New, Edit };
   void showPlan(const SearchRun& run, PlanChange change = PlanChange::New);
-  // Defined in ui/edit/main_window_editing.cpp.
+  // Defined in ui/main_window_editing.cpp.
   void buildPlanEditing();
   void buildEditMenu();
   void clearPlan();
+  // The document's plan changed: what showed a plan that is gone is cleared.
+  void onDocumentPlanChanged();
+  // The Up box's applied entry becomes the document's up (with its pose, when a pose search chose it).
+  void applyUpEntry();
   void onSearchFinished(const SearchRun& run);
   void onSearchFailed(const QString& headline, const QString& detail);
   void chooseExportPlan();
@@ -249,7 +257,8 @@ class MainWindow : public QMainWindow {
   QLabel* m_busyLabel = nullptr;
   QProgressBar* m_busyBar = nullptr;
   QString m_pendingName;
-  std::optional<LoadedModel> m_model;
+  StudioDocument* m_document = nullptr;
+  bool m_planShown = false;  // the views show a plan (the document's)
 
   SearchJob* m_search = nullptr;
   OverhangPanel* m_overhangPanel = nullptr;
@@ -261,7 +270,6 @@ class MainWindow : public QMainWindow {
   QMenu* m_viewMenu = nullptr;
   QAction* m_exportPlanAction = nullptr;
   AxisPicker* m_axisPicker = nullptr;
-  std::optional<SearchRun> m_plan;
   // What the running search was started for: its result is dropped when the model or up changed since.
   std::shared_ptr<const core::TriangleMesh> m_searchModel;
   core::Vec3 m_searchUp = core::Vec3::UnitZ();
@@ -269,7 +277,6 @@ class MainWindow : public QMainWindow {
   std::optional<SearchRun> m_pendingPlan;
   // A plan opened without its model is shown over this mesh of its regions: such a plan cannot be edited.
   std::shared_ptr<const core::TriangleMesh> m_regionsModel;
-  QUndoStack* m_undoStack = nullptr;
   PlanEditor* m_planEditor = nullptr;
   PlaneEditPanel* m_planeEditPanel = nullptr;
   ProjectSession* m_project = nullptr;

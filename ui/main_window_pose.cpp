@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "multidir/core/analysis/overhang.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 #include "ui/main_window.h"
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/overhang_panel.h"
@@ -53,7 +53,7 @@ void MainWindow::buildPoseSearch() {
 
 void MainWindow::updatePoseRunnable() {
   PoseSearchBox* box = m_machinePanel->poseBox();
-  if (!m_model) {
+  if (!model()) {
     box->setRunnable(false, tr("Open a model first."));
   } else if (!m_machinePanel->errorText().isEmpty()) {
     box->setRunnable(false, tr("Fix the machine first: %1").arg(m_machinePanel->errorText()));
@@ -71,8 +71,8 @@ bool MainWindow::findBestPose() {
   QString problem;
   if (m_poseSearch->isRunning()) problem = tr("A pose search is already running.");
   else if (m_search->isRunning()) problem = tr("A search is running: wait for it or cancel it.");
-  else if (!m_model) problem = tr("Open a model first.");
-  else if (m_model->mesh == m_regionsModel) problem = tr("This plan was opened without its model: open the model.");
+  else if (!model()) problem = tr("Open a model first.");
+  else if (model()->mesh == m_regionsModel) problem = tr("This plan was opened without its model: open the model.");
   else if (!m_machinePanel->validateFor(upDirection())) problem = m_machinePanel->errorText();
   const core::SearchOptions options = m_searchPanel->searchOptions();
   const core::PoseOptions poseOptions = box->poseOptions();
@@ -91,9 +91,9 @@ bool MainWindow::findBestPose() {
   endPreview();
   m_poseRun.reset();
   const core::MachineSpec machine = m_machinePanel->machineSpec(upDirection());
-  if (!m_poseSearch->start(m_model->mesh, machine, options, poseOptions)) return false;
+  if (!m_poseSearch->start(model()->mesh, machine, options, poseOptions)) return false;
   box->searchStarted();
-  statusBar()->showMessage(tr("Finding the best pose for %1...").arg(m_model->name));
+  statusBar()->showMessage(tr("Finding the best pose for %1...").arg(model()->name));
   return true;
 }
 
@@ -111,7 +111,7 @@ void MainWindow::onPoseSearchFinished(const PoseRun& run) {
   }
   PoseSearchBox* box = m_machinePanel->poseBox();
   // Never a plan of one model over another: a result for a model or an up no longer shown is dropped.
-  const bool current = m_model && m_model->mesh == run.model && (upDirection() - run.machine.up).norm() < 1e-9;
+  const bool current = model() && model()->mesh == run.model && (upDirection() - run.machine.up).norm() < 1e-9;
   if (!current) {
     box->clear();
     statusBar()->showMessage(tr("The pose search result was dropped: the model or its up direction changed."));
@@ -145,16 +145,16 @@ void MainWindow::onPoseSearchFailed(const QString& headline, const QString& deta
 }
 
 void MainWindow::previewPose(int trial) {
-  if (!m_poseRun || !m_model || m_model->mesh != m_poseRun->model) return;
+  if (!m_poseRun || !model() || model()->mesh != m_poseRun->model) return;
   const std::vector<core::PoseTrial>& trials = m_poseRun->result->trials;
   if (trial < 0 || trial >= static_cast<int>(trials.size())) return;
   const core::Vec3 up = trials[static_cast<std::size_t>(trial)].pose.up;
   m_previewUp = up;
   // The viewer shows the up as the platform below the model and up on screen: the model stands on the pose.
-  m_viewer->setMesh(*m_model->mesh, up);
+  m_viewer->setMesh(*model()->mesh, up);
   core::OverhangOptions overhang;
   overhang.alphaMaxDegrees = m_overhangPanel->alphaMaxDegrees();
-  if (const core::Result<core::OverhangAnalysis> risky = core::analyzeOverhang(*m_model->mesh, up, overhang); risky)
+  if (const core::Result<core::OverhangAnalysis> risky = core::analyzeOverhang(*model()->mesh, up, overhang); risky)
     m_viewer->setRiskyFaces(risky->risky);
   statusBar()->showMessage(tr("Showing pose %1 (up %2, %3, %4): the project is unchanged. \"Use this pose\" makes it "
                               "the model's up; \"Show current up\" goes back.")
@@ -171,23 +171,23 @@ void MainWindow::showCurrentUp() {
 }
 
 void MainWindow::endPreview() {
-  if (!m_previewUp || !m_model) {
+  if (!m_previewUp || !model()) {
     m_previewUp.reset();
     return;
   }
   m_previewUp.reset();
-  m_viewer->setMesh(*m_model->mesh, upDirection());
+  m_viewer->setMesh(*model()->mesh, upDirection());
   updateOverhangs();
-  if (m_plan && m_plan->plan) {
-    m_viewer->setPlan(m_plan->plan);
-    m_viewer->setSupports(m_plan->supports);
+  if (plan() && plan()->plan) {
+    m_viewer->setPlan(plan()->plan);
+    m_viewer->setSupports(plan()->supports);
   }
 }
 
 void MainWindow::usePoseFromUser(int trial) {
   if (!m_poseRun || trial < 0 || trial >= static_cast<int>(m_poseRun->result->trials.size())) return;
   // As the Up box: a running search or an unsaved plan is not dropped without asking.
-  const bool dropsWork = isSearching() || (m_plan.has_value() && m_project->isModified());
+  const bool dropsWork = isSearching() || (plan().has_value() && m_project->isModified());
   const std::shared_ptr<const core::PoseSearchResult> result = m_poseRun->result;
   auto apply = [this, trial, result] {
     // The question may have been answered after another pose search or model replaced this one.
@@ -202,7 +202,7 @@ void MainWindow::usePoseFromUser(int trial) {
 
 void MainWindow::applyPose(int trial) {
   const PoseRun run = *m_poseRun;  // a copy: showing the plan below may replace m_poseRun's owner state
-  if (!m_model || m_model->mesh != run.model) {
+  if (!model() || model()->mesh != run.model) {
     statusBar()->showMessage(tr("This pose belongs to another model: find the best pose again."));
     return;
   }

@@ -18,7 +18,7 @@
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/samples/samples.h"
 #include "ui/main_window.h"
-#include "ui/picture_file.h"
+#include "ui/common/picture_file.h"
 #include "ui/panels/overhang_panel.h"
 #include "ui/project/project_session.h"
 #include "ui/viewer/mesh_viewer_widget.h"
@@ -55,8 +55,6 @@ void setDefaultSurfaceFormat() {
   format.setSamples(0);
   QSurfaceFormat::setDefaultFormat(format);
 }
-
-QString studioVersion() { return QStringLiteral(MULTIDIR_VERSION); }
 
 StudioCommandLine parseStudioCommandLine(const QStringList& arguments) {
   StudioCommandLine result;

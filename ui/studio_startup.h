@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "multidir/core/mesh/triangle_mesh.h"
+#include "ui/common/studio_version.h"
 
 namespace multidir::ui {
 
@@ -15,9 +16,6 @@ class MainWindow;
 // Makes OpenGL 3.2 core (depth 24, stencil 8) the default surface format, as VTK's OpenGL2 backend needs.
 // Call before the QApplication is created.
 void setDefaultSurfaceFormat();
-
-// MultiDir's version ("0.1.0"), from the CMake project.
-QString studioVersion();
 
 struct StudioOptions {
   QString modelPath;              // empty: open the first sample

@@ -13,7 +13,7 @@
 #include "ui/jobs/preview_audit.h"
 #include "ui/panels/slice_panel.h"
 #include "ui/picture_census.h"
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/viewer/gcode_toolpaths.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 

@@ -23,6 +23,7 @@
 #include "ui/device/device_link.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/device/print_run_driver.h"
+#include "ui/document/studio_document.h"
 
 namespace multidir::ui {
 
@@ -66,7 +67,7 @@ class HardwarePanelTest : public ::testing::Test {
     profile.minAngleDegrees = -60.0;
     profile.maxAngleDegrees = 60.0;
     profile.angleStepDegrees = 1.0;
-    panel.setMachineProfile(profile);
+    document.setMachine(profile);
     panel.connectionForm()->setKind(DeviceKind::RotaryPlatform);
     panel.connectionForm()->setSettings(fastSettings(sim.port()));
     panel.connectionForm()->setRotarySpeedDegreesPerSecond(60.0);
@@ -114,8 +115,16 @@ class HardwarePanelTest : public ::testing::Test {
     press("goToButton");
   }
 
+  // The plan shown (the document's): what the panel runs.
+  void givePlan(core::Decomposition plan) {
+    SearchRun run;
+    run.plan = std::make_shared<const core::Decomposition>(std::move(plan));
+    document.setPlan(run);
+  }
+
   hardware::DeviceSimulator sim;
-  HardwarePanel panel;
+  StudioDocument document;
+  HardwarePanel panel{&document};
 };
 
 }  // namespace multidir::ui

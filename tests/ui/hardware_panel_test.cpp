@@ -74,7 +74,7 @@ TEST_F(HardwarePanelTest, TwoRegionPlanRunsToTheEndWithRegionDonePressed) {
   plan.regions.resize(2);
   plan.regions[0].angles.rotaryDegrees = 0.0;
   plan.regions[1].angles.rotaryDegrees = 10.0;
-  panel.setPlan(plan);
+  givePlan(plan);
   EXPECT_EQ(panel.planRegionCount(), 2);
   QSignalSpy regions(&panel, &HardwarePanel::currentRegionChanged);
 

@@ -35,7 +35,7 @@ class HardwarePanelTruth : public HardwarePanelTest {
 };
 
 TEST_F(HardwarePanelTruth, LinkLostDuringARunMarksEveryFieldStalePausesTheRunAndSaysSoInABanner) {
-  panel.setPlan(planWithAngles({0.0, 10.0}));
+  givePlan(planWithAngles({0.0, 10.0}));
   connectPanel();
   enableAndHome();
   // A first run to its end leaves its "finished" message; the second run must not show it.
@@ -154,11 +154,11 @@ TEST_F(HardwarePanelTruth, RobotArmEmergencyStopRecoveryAsksOnlyForWhatTheArmOff
 TEST_F(HardwarePanelTruth, DeviceFollowsTheMachineProfileWhileDisconnected) {
   core::MachineSpec arm;
   arm.kind = core::MachineKind::TiltRotate;
-  panel.setMachineProfile(arm);
+  document.setMachine(arm);
   EXPECT_EQ(panel.connectionForm()->kind(), DeviceKind::RobotArm);
   core::MachineSpec platform;
   platform.kind = core::MachineKind::RotaryPlatform;
-  panel.setMachineProfile(platform);
+  document.setMachine(platform);
   EXPECT_EQ(panel.connectionForm()->kind(), DeviceKind::RotaryPlatform);
 }
 
@@ -178,7 +178,7 @@ TEST_F(HardwarePanelTruth, FiveDofPlanOnTheRotaryPlatformIsRefusedForItsTiltsFir
     region.angles = core::machineAnglesFor(arm, region.printingDirection);
     plan.regions.push_back(region);
   }
-  panel.setPlan(plan);
+  givePlan(plan);
   connectPanel();
   press("startRunButton");
   EXPECT_TRUE(panel.messageIsError());

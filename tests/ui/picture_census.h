@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::test {

@@ -5,7 +5,7 @@
 
 #include "multidir/core/geometry/clipping.h"
 #include "support/primitives.h"
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/viewer/plan_geometry.h"
 
 namespace multidir::ui {

@@ -58,8 +58,11 @@ class PrinterPanelTest : public HardwarePanelTest {
       hardware::test::writeFile(path, hardware::test::shortGcode());
       steps.push_back({path, kStepEstimateSeconds});
     }
-    panel.setPlan(planWithAngles(angles));
-    panel.setJobGcode(std::move(steps));
+    givePlan(planWithAngles(angles));
+    PrintJob job;
+    job.plan = document.plan()->plan;
+    job.steps = std::move(steps);
+    ASSERT_TRUE(document.setSlicedJob(std::move(job)).ok());
   }
 
   // Connects both devices and starts the run; waits until the printer prints step 1 past its heating.

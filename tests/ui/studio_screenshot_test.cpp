@@ -12,7 +12,7 @@
 #include "support/test_models.h"
 #include "ui/main_window.h"
 #include "ui/picture_census.h"
-#include "ui/picture_file.h"
+#include "ui/common/picture_file.h"
 #include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 

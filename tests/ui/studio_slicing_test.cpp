@@ -22,12 +22,13 @@
 #include <QTest>
 
 #include "multidir/slicing/printer_profile.h"
+#include "support/test_models.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/jobs/slice_job_runner.h"
 #include "ui/main_window.h"
 #include "ui/panels/slice_panel.h"
 #include "ui/picture_census.h"
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/slicing/slice_dialog.h"
 #include "ui/slicing/slice_session.h"
 #include "ui/studio_test_support.h"
@@ -240,9 +241,10 @@ TEST_F(StudioSlicedSnowman, TheHardwarePanelGetsEveryStepsGcodeAndEstimateForThe
   auto* hardware = window.findChild<HardwarePanel*>();
   ASSERT_NE(hardware, nullptr);
   const auto& job = *window.sliceSession()->outcome()->job;
-  ASSERT_EQ(hardware->jobGcode().size(), job.steps.size());
+  const std::vector<StepGcode> gcode = hardware->jobGcode();
+  ASSERT_EQ(gcode.size(), job.steps.size());
   for (std::size_t k = 0; k < job.steps.size(); ++k) {
-    const StepGcode& step = hardware->jobGcode()[k];
+    const StepGcode& step = gcode[k];
     EXPECT_EQ(QFileInfo(QString::fromStdString(step.path)).fileName().toStdString(), job.steps[k].gcodeFile);
     EXPECT_TRUE(QFileInfo::exists(QString::fromStdString(step.path))) << step.path;
     EXPECT_DOUBLE_EQ(step.estimateSeconds, job.steps[k].estimate.printSeconds);
@@ -367,6 +369,27 @@ TEST_F(StudioSnowmanPlan, APartTooBigForTheBedIsRefusedBeforeSlicingSayingByHowM
   EXPECT_TRUE(shown.contains(QStringLiteral("scale the model by"))) << shown.toStdString();
   EXPECT_FALSE(session->outcome().has_value());
   EXPECT_TRUE(window.viewer()->hasPlan());
+}
+
+// Issue 29: the slicing result goes with the plan, and a model without a plan is not told to slice it again.
+TEST(StudioSlicingDocument, AnotherModelWithoutAPlanIsNotToldToSliceAgain) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(showSnowmanPlan(window));
+  SliceSession* session = window.sliceSession();
+  QSignalSpy sliced(session, &SliceSession::sliced);
+  QSignalSpy failed(session, &SliceSession::sliceFailed);
+  ASSERT_TRUE(session->slice(robotChoice()));
+  ASSERT_TRUE(test::waitUntil([&] { return !sliced.isEmpty() || !failed.isEmpty(); }, kSliceTimeoutMs));
+  ASSERT_TRUE(failed.isEmpty()) << failed.front().front().toString().toStdString();
+  ASSERT_TRUE(window.document()->slicedJob().has_value());
+  auto* message = slicePanelOf(window)->findChild<QLabel*>(QStringLiteral("sliceMessage"));
+  ASSERT_NE(message, nullptr);
+
+  ASSERT_NO_FATAL_FAILURE(
+      test::openModelFile(window, QString::fromStdString(test::sharedModelPath("bunny.off"))));
+  EXPECT_FALSE(window.document()->slicedJob().has_value());
+  EXPECT_FALSE(message->text().contains(QStringLiteral("slice it again"))) << message->text().toStdString();
+  EXPECT_TRUE(message->isHidden()) << message->text().toStdString();
 }
 
 }  // namespace

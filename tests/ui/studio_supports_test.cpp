@@ -17,7 +17,7 @@
 #include "ui/panels/plan_panel.h"
 #include "ui/panels/search_panel.h"
 #include "ui/picture_census.h"
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 

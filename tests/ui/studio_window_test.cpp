@@ -12,7 +12,7 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/samples/samples.h"
 #include "support/test_models.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 #include "ui/main_window.h"
 #include "ui/picture_census.h"
 #include "ui/studio_startup.h"

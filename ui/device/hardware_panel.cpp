@@ -27,6 +27,7 @@
 #include "ui/device/print_run_driver.h"
 #include "ui/device/printer_link_owner.h"
 #include "ui/device/printer_section.h"
+#include "ui/document/studio_document.h"
 
 namespace multidir::ui {
 namespace {
@@ -123,7 +124,7 @@ QString clockText(std::chrono::milliseconds elapsed) {
 
 }  // namespace
 
-HardwarePanel::HardwarePanel(QWidget* parent) : QWidget(parent) {
+HardwarePanel::HardwarePanel(StudioDocument* document, QWidget* parent) : QWidget(parent), m_document(document) {
   setObjectName(QStringLiteral("hardwarePanel"));
   m_link = new DeviceLink(this);
   m_run = new PrintRunDriver(this);
@@ -187,6 +188,12 @@ HardwarePanel::HardwarePanel(QWidget* parent) : QWidget(parent) {
 
   m_clockTimer.setInterval(250);
   connect(&m_clockTimer, &QTimer::timeout, this, &HardwarePanel::updateClockTexts);
+  connect(m_document, &StudioDocument::sessionJobChanged, this, [this] {
+    updateRunTexts();
+    updateControls();
+  });
+  connect(m_document, &StudioDocument::machineChanged, this, &HardwarePanel::onMachineChanged);
+  onMachineChanged();
 
   onSnapshot(m_link->snapshot());
   updateKindWidgets();
@@ -421,17 +428,18 @@ void HardwarePanel::updateBanner() {
 }
 
 core::MachineSpec HardwarePanel::machineForNextConnection() const {
-  return machineForDevice(m_form->kind(), m_profile);
+  return machineForDevice(m_form->kind(), m_document->machine());
 }
+
+int HardwarePanel::planRegionCount() const {
+  const PrintJob job = m_document->sessionJob();
+  return job.plan ? static_cast<int>(job.plan->regions.size()) : 0;
+}
+
+std::vector<StepGcode> HardwarePanel::jobGcode() const { return m_document->sessionJob().steps; }
 
 void HardwarePanel::setPrinterLinkOptions(const hardware::PrinterLinkOptions& options) {
   m_printerLink->setLinkOptions(options);
-}
-
-void HardwarePanel::setJobGcode(std::vector<StepGcode> steps, std::shared_ptr<const void> files) {
-  m_jobGcode = std::move(steps);
-  m_jobFiles = std::move(files);
-  updateRunTexts();
 }
 
 void HardwarePanel::emergencyStopAll() {
@@ -479,36 +487,26 @@ void HardwarePanel::updateStops() {
   m_stops->setVisible(!lines.isEmpty());
 }
 
-void HardwarePanel::setMachineProfile(const core::MachineSpec& profile) {
-  m_profile = profile;
-  // The device follows the machine the plans are made for; an open session keeps its device.
-  if (!m_link->isOpen()) {
-    if (profile.kind == core::MachineKind::RotaryPlatform) m_form->setKind(DeviceKind::RotaryPlatform);
-    if (profile.kind == core::MachineKind::TiltRotate) m_form->setKind(DeviceKind::RobotArm);
+void HardwarePanel::onMachineChanged() {
+  // The device choice follows the machine the plans are made for when its kind changes; any other edit of the
+  // machine (and Connect) leaves the device, transport and unit the operator chose as they are. An open
+  // session keeps its device.
+  const core::MachineKind kind = m_document->machine().kind;
+  if (kind != m_followedKind && !m_link->isOpen()) {
+    if (kind == core::MachineKind::RotaryPlatform) m_form->setKind(DeviceKind::RotaryPlatform);
+    if (kind == core::MachineKind::TiltRotate) m_form->setKind(DeviceKind::RobotArm);
+    m_followedKind = kind;
   }
   updateLimits();
 }
 
-void HardwarePanel::setPlan(const core::Decomposition& plan) {
-  m_planTargets = regionTargets(plan);
-  updateRunTexts();
-  updateControls();
-}
-
-void HardwarePanel::clearPlan() {
-  m_planTargets.clear();
-  updateRunTexts();
-  updateControls();
-}
-
 void HardwarePanel::connectDevice() {
-  emit connectRequested();
   DeviceLinkSettings settings;
   settings.kind = m_form->kind();
   settings.connection = m_form->settings();
   settings.rotarySpeedDegreesPerSecond = m_form->rotarySpeedDegreesPerSecond();
   settings.robotSpeedPercent = m_form->robotSpeedPercent();
-  settings.machine = machineForDevice(settings.kind, m_profile, &m_linkUsesProfile);
+  settings.machine = machineForDevice(settings.kind, m_document->machine(), &m_linkUsesProfile);
   const core::Status started = m_link->connectDevice(settings);
   if (!started.ok()) {
     setMessage(tr("Cannot connect with these settings: %1").arg(QString::fromStdString(started.error().describe())),
@@ -601,6 +599,8 @@ void HardwarePanel::onRunStateChanged(hardware::PrintRunState state) {
   else if (m_messageTopic == MessageTopic::Run)
     m_message->clear();  // the run went on: the previous run's outcome or stop no longer applies
   if (m_run->isActive()) m_clockTimer.start();
+  // The run is over (finished, aborted): the session's job follows the plan shown again.
+  if (!m_run->isActive()) m_document->unpinSessionJob();
   updateRunTexts();
   updateControls();
 }
@@ -642,40 +642,49 @@ void HardwarePanel::startRun() {
     setMessage(tr("Start run refused: not connected; connect to the device first."), true);
     return;
   }
-  // The limits the driver enforces are those it was connected with.
+  // The limits the driver enforces are those it was connected with; the job is the document's, pinned there
+  // for as long as the run lasts.
   const DeviceLinkSettings& settings = m_link->settings();
-  auto steps = printSteps(m_planTargets, settings.kind, settings.machine);
+  const core::Result<PrintJob> pinned = m_document->pinSessionJob();
+  if (!pinned) {
+    setMessage(tr("Start run refused: %1").arg(QString::fromStdString(pinned.error().message)), true);
+    return;
+  }
+  const PrintJob& job = pinned.value();
+  auto steps = printSteps(regionTargets(*job.plan), settings.kind, settings.machine);
   if (!steps) {
+    m_document->unpinSessionJob();
     setMessage(tr("Start run refused: %1").arg(QString::fromStdString(steps.error().message)), true);
     return;
   }
   // The printer prints the regions when it is connected and the sliced job has G-code for every region.
   std::shared_ptr<hardware::PrinterLink> printer = m_printerLink->link();
-  const bool gcodeFits = !m_jobGcode.empty() && m_jobGcode.size() == steps->size();
+  const bool gcodeFits = !job.steps.empty() && job.steps.size() == steps->size();
   std::vector<double> estimates;
   if (gcodeFits) {
     for (std::size_t k = 0; k < steps->size(); ++k) {
-      (*steps)[k].gcodePath = m_jobGcode[k].path;
-      (*steps)[k].regionFile = std::filesystem::path(m_jobGcode[k].path).filename().string();
-      estimates.push_back(m_jobGcode[k].estimateSeconds);
+      (*steps)[k].gcodePath = job.steps[k].path;
+      (*steps)[k].regionFile = std::filesystem::path(job.steps[k].path).filename().string();
+      estimates.push_back(job.steps[k].estimateSeconds);
     }
   }
   m_runLog->clear();
   m_prompt->clear();
   if (m_messageTopic == MessageTopic::Run) m_message->clear();
   m_printerSection->setRunEstimates(estimates);
-  m_runFiles = gcodeFits ? m_jobFiles : nullptr;
+  m_runFiles = gcodeFits ? job.files : nullptr;
   const core::Status started = m_run->start(m_link->positioner(), std::move(steps.value()), m_runOptions,
                                             gcodeFits ? printer : nullptr);
+  if (!started.ok() || !m_run->isActive()) m_document->unpinSessionJob();
   runEvent(tr("Start run"), started);
   if (started.ok() && printer && !gcodeFits)
-    setMessage(m_jobGcode.empty()
+    setMessage(job.steps.empty()
                    ? tr("The plan is not sliced: each region is printed by hand (Region done). Slice the plan "
                         "to have the printer print them.")
                    : tr("The sliced job has %1 steps, the plan %2 regions: each region is printed by hand "
                         "(Region done). Slice the plan again.")
-                         .arg(m_jobGcode.size())
-                         .arg(m_planTargets.size()),
+                         .arg(job.steps.size())
+                         .arg(job.plan->regions.size()),
                false, MessageTopic::Run);
 }
 
@@ -696,7 +705,8 @@ void HardwarePanel::updateLimits() {
   const bool open = m_link->isOpen();
   const DeviceKind kind = open ? m_link->settings().kind : m_form->kind();
   bool fromProfile = m_linkUsesProfile;
-  const core::MachineSpec spec = open ? m_link->settings().machine : machineForDevice(kind, m_profile, &fromProfile);
+  const core::MachineSpec& machine = m_document->machine();
+  const core::MachineSpec spec = open ? m_link->settings().machine : machineForDevice(kind, machine, &fromProfile);
   QString limits =
       kind == DeviceKind::RotaryPlatform
           ? tr("Limits: %1 to %2 in steps of %3")
@@ -705,11 +715,9 @@ void HardwarePanel::updateLimits() {
                 .arg(degrees(spec.maxTiltDegrees));
   if (fromProfile)
     limits += tr(" (machine profile)");
-  else if (m_profile)
-    limits += tr(" (defaults: the machine profile is for a %1 machine)")
-                  .arg(QString::fromLatin1(core::machineKindName(m_profile->kind)));
   else
-    limits += tr(" (defaults: no machine profile)");
+    limits += tr(" (defaults: the machine profile is for a %1 machine)")
+                  .arg(QString::fromLatin1(core::machineKindName(machine.kind)));
   if (open) limits += tr("; a changed profile applies at the next Connect");
   m_limits->setText(limits);
 }
@@ -769,7 +777,7 @@ void HardwarePanel::updateControls() {
   if (m_windowEstop) m_windowEstop->setEnabled(anyOpen);
   if (m_windowEstopAction) m_windowEstopAction->setVisible(anyOpen);
 
-  m_startRun->setEnabled(connected && !m_planTargets.empty() && !m_run->isActive());
+  m_startRun->setEnabled(connected && planRegionCount() > 0 && !m_run->isActive());
   // By hand: a region without a printer, or one whose print the printer interrupted (finished by hand).
   m_regionDone->setEnabled((runState == hardware::PrintRunState::Printing && !m_run->currentStepUsesPrinter()) ||
                            (runState == hardware::PrintRunState::Paused && m_run->printInterrupted()));
@@ -803,7 +811,7 @@ void HardwarePanel::updateRunTexts() {
   const int regions = planRegionCount();
   QString summary = regions == 0 ? tr("No plan: run a search or open a plan first.")
                                  : tr("Plan with %n region(s).", nullptr, regions);
-  if (regions > 0 && static_cast<int>(m_jobGcode.size()) == regions)
+  if (regions > 0 && static_cast<int>(jobGcode().size()) == regions)
     summary += QLatin1Char(' ') + tr("Sliced: a connected printer prints each region's G-code.");
   m_planSummary->setText(summary);
   if (!m_run->hasRun()) {

@@ -11,15 +11,21 @@
 // Stop and E-STOP sit above the scrolled part, so they stay in view at any dock height; the main window
 // can put a second E-STOP in a toolbar (addEmergencyStopTo) that shows while a device is connected.
 //
+// What it runs: the studio document's device-session job (StudioDocument::sessionJob: the plan shown and its
+// sliced G-code), read when needed and never copied; a print run pins that job in the document while it runs,
+// so no other model or plan shown meanwhile can change what the devices do. Without a plan Start run is
+// disabled.
+//
 // The printer (PrinterSection, PrinterLinkOwner): when one is connected, a print run has it print every step
-// the sliced job gave G-code for (setJobGcode) and follows its job; without a printer or G-code the operator
+// the sliced job gave G-code for and follows its job; without a printer or G-code the operator
 // prints each region and presses Region done. The job timeline lists every step with its state and times.
 // E-STOP covers both devices: it sends the platform's and the printer's emergency stops at once, and the
 // line under it shows each device's stop confirmed or still being resent.
 //
-// Limits: commands are checked by the driver against the machine profile given with setMachineProfile()
-// when it fits the device (a rotary platform profile for the platform, a tilt-rotate one for the arm),
-// otherwise against a default profile of the device's kind; the choice is made at Connect.
+// Limits: commands are checked by the driver against the document's machine when it fits the device (a rotary
+// platform profile for the platform, a tilt-rotate one for the arm), otherwise against a default profile of
+// the device's kind; the choice is made at Connect. The device chosen follows the machine when its kind
+// changes; Connect connects exactly the device, transport and unit entered.
 #include <QString>
 #include <QTimer>
 #include <QWidget>
@@ -32,6 +38,7 @@
 #include "multidir/hardware/print_run.h"
 #include "ui/device/device_snapshot.h"
 #include "ui/device/plan_steps.h"
+#include "ui/document/print_job.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -51,18 +58,14 @@ class JobTimeline;
 class PrintRunDriver;
 class PrinterLinkOwner;
 class PrinterSection;
-
-// One step's G-code of the sliced job, and the slicer's estimate of its printing time.
-struct StepGcode {
-  std::string path;
-  double estimateSeconds = 0.0;
-};
+class StudioDocument;
 
 class HardwarePanel : public QWidget {
   Q_OBJECT
 
  public:
-  explicit HardwarePanel(QWidget* parent = nullptr);
+  // Shows and runs `document`'s job; `document` (not owned) must outlive the panel.
+  explicit HardwarePanel(StudioDocument* document, QWidget* parent = nullptr);
   ~HardwarePanel() override;
   HardwarePanel(const HardwarePanel&) = delete;
   HardwarePanel& operator=(const HardwarePanel&) = delete;
@@ -80,15 +83,15 @@ class HardwarePanel : public QWidget {
   [[nodiscard]] QString promptText() const;
   // The limits the next Connect uses (see the header comment).
   [[nodiscard]] core::MachineSpec machineForNextConnection() const;
-  [[nodiscard]] int planRegionCount() const { return static_cast<int>(m_planTargets.size()); }
+  // Regions of the job the next (or running) print run runs; 0 without a plan.
+  [[nodiscard]] int planRegionCount() const;
   // Options of the next print run (settle time, move timeout, clocks).
   void setPrintRunOptions(const hardware::PrintRunOptions& options) { m_runOptions = options; }
   // Options of the next printer link (poll interval, timeouts).
   void setPrinterLinkOptions(const hardware::PrinterLinkOptions& options);
-  // The G-code of every region of the plan, in printing order, from the sliced job; `files` keeps them on disk
-  // while held (a run holds it until the next one). Empty: no G-code (the operator prints each region).
-  void setJobGcode(std::vector<StepGcode> steps, std::shared_ptr<const void> files = nullptr);
-  [[nodiscard]] const std::vector<StepGcode>& jobGcode() const { return m_jobGcode; }
+  // The G-code of every region of the job, in printing order (the document's session job). Empty: no G-code
+  // (the operator prints each region).
+  [[nodiscard]] std::vector<StepGcode> jobGcode() const;
   // Each device's stop under the E-STOP ("Platform: E-STOP confirmed. Printer: E-STOP being resent…"); empty
   // when no stop is latched.
   [[nodiscard]] QString stopsText() const;
@@ -98,10 +101,6 @@ class HardwarePanel : public QWidget {
   QAction* addEmergencyStopTo(QToolBar* bar);
 
  public slots:
-  void setMachineProfile(const core::MachineSpec& profile);
-  // The plan to run (its regions' machine angles); replaces the previous one for the next run.
-  void setPlan(const core::Decomposition& plan);
-  void clearPlan();
   // The Connect and Disconnect buttons.
   void connectDevice();
   void disconnectDevice();
@@ -112,9 +111,6 @@ class HardwarePanel : public QWidget {
  signals:
   // The region (index from 0) the run is at, for the viewer to highlight; -1 when no run is under way.
   void currentRegionChanged(int region);
-  // Connect was pressed; emitted before the machine profile is read, so a direct connection can still
-  // send the latest one with setMachineProfile().
-  void connectRequested();
   // A device session opened (Connect) or closed (Disconnect).
   void sessionOpenChanged(bool open);
 
@@ -144,6 +140,7 @@ class HardwarePanel : public QWidget {
   void updateClockTexts();
   void updateRunTexts();
   void updateStops();
+  void onMachineChanged();
 
   DeviceLink* m_link = nullptr;
   PrintRunDriver* m_run = nullptr;
@@ -151,9 +148,8 @@ class HardwarePanel : public QWidget {
   PrinterSection* m_printerSection = nullptr;
   JobTimeline* m_timeline = nullptr;
   QLabel* m_stops = nullptr;
-  std::vector<StepGcode> m_jobGcode;
-  std::shared_ptr<const void> m_jobFiles;
-  std::shared_ptr<const void> m_runFiles;  // the G-code of the last run started
+  StudioDocument* m_document;
+  std::shared_ptr<const void> m_runFiles;  // the G-code files of the last run started, kept until the next
   ConnectionForm* m_form = nullptr;
   QLabel* m_limits = nullptr;
   QPushButton* m_connect = nullptr;
@@ -205,9 +201,9 @@ class HardwarePanel : public QWidget {
   QPlainTextEdit* m_runLog = nullptr;
 
   QTimer m_clockTimer;  // refreshes the heartbeat age and the run's elapsed time from the last snapshot
-  std::optional<core::MachineSpec> m_profile;
+  // The machine kind the device choice last followed: only a change of kind moves the choice.
+  std::optional<core::MachineKind> m_followedKind;
   bool m_linkUsesProfile = false;  // the open link's limits are the profile's (not defaults)
-  std::vector<RegionTarget> m_planTargets;
   hardware::PrintRunOptions m_runOptions;
 };
 

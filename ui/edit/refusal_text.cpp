@@ -5,7 +5,7 @@
 #include <string>
 
 #include "ui/edit/plane_numbering.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 
 namespace multidir::ui {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "multidir/core/plan/checksum.h"
 #include "multidir/core/samples/samples.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 
 namespace multidir::ui {
 

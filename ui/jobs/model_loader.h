@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "ui/loaded_model.h"
+#include "ui/document/loaded_model.h"
 
 class QThread;
 

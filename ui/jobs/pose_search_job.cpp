@@ -6,7 +6,7 @@
 #include <new>
 #include <optional>
 
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 
 namespace multidir::ui {
 namespace {

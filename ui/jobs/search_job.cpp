@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "multidir/core/search/decompose.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 #include "ui/jobs/support_growth.h"
 
 namespace multidir::ui {

@@ -22,23 +22,11 @@
 #include "multidir/core/mesh/triangle_mesh.h"
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/supports/support_set.h"
+#include "ui/document/search_run.h"
 
 class QThread;
 
 namespace multidir::ui {
-
-// What one search was asked to do, and what it found.
-struct SearchRun {
-  core::MachineSpec machine;
-  core::SearchOptions options;
-  int axisSearchCount = 0;  // 4-DOF axes tried; 0: the machine's own axis only
-  std::shared_ptr<const core::Decomposition> plan;  // set in finished(); never null there
-  // One set per region in printing order; null when none were grown (J_G = 0, a cancelled search, or
-  // supportsNote).
-  std::shared_ptr<const std::vector<core::SupportSet>> supports;
-  // Why a plan with J_G > 0 has no supports (translated; empty otherwise).
-  QString supportsNote;
-};
 
 class SearchJob : public QObject {
   Q_OBJECT
@@ -87,4 +75,3 @@ class SearchJob : public QObject {
 }  // namespace multidir::ui
 
 Q_DECLARE_METATYPE(multidir::core::SearchProgress)
-Q_DECLARE_METATYPE(multidir::ui::SearchRun)

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "multidir/slicing/gcode_program.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 #include "ui/jobs/preview_audit.h"
 #include "ui/viewer/gcode_toolpaths.h"
 

@@ -4,7 +4,7 @@
 #include <new>
 
 #include "multidir/core/supports/projected_supports.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 #include "ui/jobs/search_job.h"
 
 namespace multidir::ui {

@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "multidir/core/analysis/overhang.h"
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 #include "ui/panels/pose_search_box.h"
 
 namespace multidir::ui {

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 
 namespace multidir::ui {
 namespace {

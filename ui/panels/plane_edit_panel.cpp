@@ -325,7 +325,18 @@ void PlaneEditPanel::refreshControls() {
   refreshOffsetNote();
   m_fiveDof->setVisible(machine.kind == core::MachineKind::TiltRotate);
   m_fourDof->setVisible(machine.kind == core::MachineKind::RotaryPlatform);
-  if (!hasSelection) return;
+  if (!hasSelection) {
+    // Greyed fields show nothing rather than a plane that is no longer selected (or another model's).
+    for (QDoubleSpinBox* field : {m_offset, m_tilt, m_azimuth, m_rotary}) {
+      const QSignalBlocker block(field);
+      field->clear();
+    }
+    for (QSlider* slide : {m_offsetSlider, m_tiltSlider, m_azimuthSlider, m_rotarySlider}) {
+      const QSignalBlocker block(slide);
+      slide->setValue(slide->minimum());
+    }
+    return;
+  }
 
   const core::Plane& plane = state.planes[static_cast<std::size_t>(selected)];
   const std::shared_ptr<const core::Decomposition> shown = m_editor->plan();

@@ -16,7 +16,7 @@
 #include <cmath>
 
 #include "multidir/slicing/estimates.h"
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 
 namespace multidir::ui {
 namespace {

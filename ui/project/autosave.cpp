@@ -12,7 +12,7 @@
 #include <QUuid>
 #include <algorithm>
 
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 
 namespace multidir::ui {
 namespace {

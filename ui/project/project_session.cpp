@@ -20,14 +20,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
+#include "ui/common/studio_version.h"
 #include "ui/main_window.h"
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/search_panel.h"
 #include "ui/project/autosave.h"
 #include "ui/project/dialog_folders.h"
 #include "ui/project/recent_files.h"
-#include "ui/studio_startup.h"
 
 namespace multidir::ui {
 namespace {

@@ -6,14 +6,15 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSlider>
 #include <QStatusBar>
 
 #include "multidir/core/plan/plan_file.h"
+#include "ui/common/studio_version.h"
 #include "ui/main_window.h"
 #include "ui/panels/slice_panel.h"
 #include "ui/slicing/gcode_export.h"
-#include "ui/studio_startup.h"
 #include "ui/viewer/gcode_toolpaths.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
@@ -65,6 +66,7 @@ void SliceSession::updateSliceable() {
   } else {
     m_panel->setSliceable(true);
   }
+  emit sliceableChanged(m_panel->sliceButton()->isEnabled());
 }
 
 void SliceSession::onPlanChanged() {
@@ -74,8 +76,10 @@ void SliceSession::onPlanChanged() {
     if (isSlicing()) {
       m_runner->cancel();
       m_panel->showMessage(tr("The plan changed: slicing was cancelled."), QString(), false);
-    } else if (m_outcome) {
+    } else if (m_outcome && run) {
       m_panel->showMessage(tr("The plan changed: slice it again for its G-code."), QString(), false);
+    } else if (!run) {
+      m_panel->showMessage(QString(), QString(), false);  // no plan (another model): nothing to slice again
     }
     dropResult();
   }

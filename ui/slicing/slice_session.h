@@ -63,6 +63,8 @@ class SliceSession : public QObject {
   void sliceCancelled();
   // A result is there to export (or no longer is).
   void resultAvailable(bool available);
+  // Slicing can be started now (a plan is shown, its supports are ready and no job runs), or no longer can.
+  void sliceableChanged(bool sliceable);
 
  private:
   void onPlanChanged();

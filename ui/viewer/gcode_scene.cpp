@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {

@@ -15,7 +15,7 @@
 #include <vtkTubeFilter.h>
 
 #include "multidir/core/common/units.h"
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/viewer/mesh_to_polydata.h"
 
 namespace multidir::ui {

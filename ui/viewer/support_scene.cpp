@@ -7,7 +7,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 #include "ui/viewer/mesh_to_polydata.h"
 
 namespace multidir::ui {

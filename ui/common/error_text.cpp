@@ -1,4 +1,4 @@
-#include "ui/error_text.h"
+#include "ui/common/error_text.h"
 
 #include <QCoreApplication>
 

@@ -17,8 +17,7 @@
 namespace multidir::ui {
 
 void MainWindow::buildPlanEditing() {
-  m_undoStack = new QUndoStack(this);
-  m_planEditor = new PlanEditor(m_undoStack, this);
+  m_planEditor = new PlanEditor(m_document->editHistory(), this);
   m_planeEditPanel = new PlaneEditPanel(m_planEditor, this);
   auto* dock = new QDockWidget(tr("Edit plan"), this);
   dock->setObjectName(QStringLiteral("editPlanDock"));
@@ -60,10 +59,10 @@ void MainWindow::buildPlanEditing() {
 void MainWindow::buildEditMenu() {
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
   // Their texts follow the stack: "Undo Move plane 2".
-  QAction* undo = m_undoStack->createUndoAction(this, tr("&Undo"));
+  QAction* undo = undoStack()->createUndoAction(this, tr("&Undo"));
   undo->setObjectName(QStringLiteral("undo"));
   undo->setShortcut(QKeySequence::Undo);
-  QAction* redo = m_undoStack->createRedoAction(this, tr("&Redo"));
+  QAction* redo = undoStack()->createRedoAction(this, tr("&Redo"));
   redo->setObjectName(QStringLiteral("redo"));
   redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
   edit->addAction(undo);

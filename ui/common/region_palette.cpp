@@ -1,4 +1,4 @@
-#include "ui/region_palette.h"
+#include "ui/common/region_palette.h"
 
 namespace multidir::ui {
 namespace {

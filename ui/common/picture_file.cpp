@@ -1,4 +1,4 @@
-#include "ui/picture_file.h"
+#include "ui/common/picture_file.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>

@@ -1,4 +1,4 @@
-#include "ui/wheel_needs_focus.h"
+#include "ui/common/wheel_needs_focus.h"
 
 #include <QAbstractSpinBox>
 #include <QComboBox>

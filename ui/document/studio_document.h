@@ -1,0 +1,123 @@
+#pragma once
+// The studio document: everything the studio's panels show and act on, held once. The model and where it
+// came from, the up direction (and the pose a pose search chose), the machine, the plan with its edit history
+// and supports, the sliced job, and the job the device session runs. Every dock and the viewer read it and
+// send their edits through it; none keeps a copy, so none can act on a stale model, plan or job.
+//
+// The invariants live here and nowhere else:
+//  - a new model clears the pose (the up goes back to the one the pose search started from), the plan, its
+//    supports, its edit history and the sliced job;
+//  - another up direction clears the plan (its regions were cut for the old one) and so the sliced job;
+//  - a new plan (searched, opened, rebuilt) clears the edit history and the sliced job; an edited plan keeps
+//    the history (its edits are on it) and clears the sliced job; supports attached later clear it too;
+//  - a sliced job is accepted only for the plan shown;
+//  - the device session's job follows the plan and its sliced job, except while a print run pins it
+//    (pinSessionJob): then nothing replaces it until the run unpins it, whatever the model or plan become.
+//
+// No widgets: the document is a value holder with change signals. Thread: GUI thread only.
+#include <QObject>
+#include <QString>
+#include <optional>
+
+#include "multidir/core/common/result.h"
+#include "multidir/core/search/machine.h"
+#include "ui/document/loaded_model.h"
+#include "ui/document/print_job.h"
+#include "ui/document/search_run.h"
+#include "ui/document/up_pose.h"
+
+class QUndoStack;
+
+namespace multidir::ui {
+
+class StudioDocument : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit StudioDocument(QObject* parent = nullptr);
+  StudioDocument(const StudioDocument&) = delete;
+  StudioDocument& operator=(const StudioDocument&) = delete;
+
+  // The model shown (nullopt before the first).
+  [[nodiscard]] const std::optional<LoadedModel>& model() const { return m_model; }
+  // A new model: the pose, plan, supports, edit history and sliced job go (see the header comment). The up
+  // becomes the model's natural up when it has one; a pose's up goes back to the up the pose search started
+  // from, and the machine turned with the pose turns back; an up the user chose stays.
+  void setModel(LoadedModel model);
+
+  // The printing (up) direction, unit length.
+  [[nodiscard]] const core::Vec3& up() const { return m_up; }
+  // How the up in force was chosen by a pose search (nullopt: the user chose it).
+  [[nodiscard]] const std::optional<UpPose>& upPose() const { return m_upPose; }
+  // An up the user chose; a zero or non-finite vector is ignored. Another direction clears the plan.
+  void setUp(const core::Vec3& up);
+  // The up a pose search chose, kept with its pose. Another direction clears the plan.
+  void setUpPose(const UpPose& pose);
+
+  // The machine the next search is for (its up is the document's). A changed machine does not clear the plan:
+  // the plan keeps the machine it was made with (plan()->machine).
+  [[nodiscard]] const core::MachineSpec& machine() const { return m_machine; }
+  void setMachine(const core::MachineSpec& machine);
+
+  // The plan shown, with what it was made with and its supports (nullopt: none).
+  [[nodiscard]] const std::optional<SearchRun>& plan() const { return m_plan; }
+  // A new plan (searched, opened or rebuilt): the edit history starts again and the sliced job goes.
+  // `run.plan` must not be null (ignored otherwise).
+  void setPlan(SearchRun run);
+  // The plan after an edit (or undo/redo): the edit history stays, the sliced job goes.
+  void setEditedPlan(SearchRun run);
+  // No plan: the edit history and the sliced job go too.
+  void clearPlan();
+  // Supports grown later for `plan`; ignored (false) when `plan` is no longer the one shown. The sliced job
+  // goes: it was sliced without them.
+  bool attachSupports(const std::shared_ptr<const core::Decomposition>& plan,
+                      std::shared_ptr<const std::vector<core::SupportSet>> supports, const QString& note);
+  // The plan's edit history (Edit > Undo/Redo); owned by the document.
+  [[nodiscard]] QUndoStack* editHistory() const { return m_editHistory; }
+
+  // The plan shown sliced into G-code (nullopt: not sliced).
+  [[nodiscard]] const std::optional<PrintJob>& slicedJob() const { return m_slicedJob; }
+  // Refused (naming why) when `job` was not sliced from the plan shown.
+  core::Status setSlicedJob(PrintJob job);
+  void clearSlicedJob();
+
+  // The job the device session runs: the pinned one while a print run holds it, else the plan shown with the
+  // sliced job's G-code (none when the plan is not sliced). Its plan is null when there is nothing to run.
+  [[nodiscard]] PrintJob sessionJob() const;
+  [[nodiscard]] bool isSessionJobPinned() const { return m_pinnedJob.has_value(); }
+  // A print run starts with the session's job: from now on it stays the job until unpinSessionJob(). Refused
+  // when there is no plan to run or a run already pins one.
+  core::Result<PrintJob> pinSessionJob();
+  // The run ended: the session's job follows the plan shown again.
+  void unpinSessionJob();
+
+ signals:
+  void modelChanged();
+  void upChanged();
+  void machineChanged();
+  // The plan shown changed: a new one, an edit, or none.
+  void planChanged();
+  // Supports were attached to the plan shown.
+  void supportsChanged();
+  void slicedJobChanged();
+  // What sessionJob() returns changed (or was pinned, or unpinned).
+  void sessionJobChanged();
+
+ private:
+  // Sets the up and pose; true when the direction changed (the plan then goes).
+  bool replaceUp(const core::Vec3& unit, std::optional<UpPose> pose);
+  // Drops the plan, its history and the sliced job, with their signals.
+  void dropPlan();
+  void dropSlicedJob();
+
+  std::optional<LoadedModel> m_model;
+  core::Vec3 m_up = core::Vec3::UnitZ();
+  std::optional<UpPose> m_upPose;
+  core::MachineSpec m_machine;
+  std::optional<SearchRun> m_plan;
+  QUndoStack* m_editHistory;
+  std::optional<PrintJob> m_slicedJob;
+  std::optional<PrintJob> m_pinnedJob;
+};
+
+}  // namespace multidir::ui
