@@ -43,7 +43,7 @@ core::Result<GcodePreview> previewOf(const slicing::SlicedJob& job, const std::s
     if (context.isCancelled()) return core::Error{core::ErrorCode::Cancelled, "slicing was cancelled", "slicing"};
     const core::Result<std::string> text = readText(folder + "/" + step.gcodeFile);
     if (!text) return text.error();
-    core::Result<slicing::GcodeProgram> program = slicing::parseGcode(*text, job.profile.rotaryAxis, step.gcodeFile);
+    core::Result<slicing::GcodeProgram> program = slicing::parseGcode(*text, slicing::rotaryAxisNames(job.profile), step.gcodeFile);
     if (!program) return program.error();
     steps.push_back({step.index, std::move(program).value(), step.modelToPrinter});
   }

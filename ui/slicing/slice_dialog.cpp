@@ -12,6 +12,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalBlocker>
+#include <QStandardItemModel>
 #include <QVBoxLayout>
 
 #include "ui/project/dialog_folders.h"
@@ -33,6 +34,25 @@ QString defaultPrinterFor(core::MachineKind machine) {
   return QStringLiteral("marlin-220");
 }
 
+// Why a printer cannot print a plan for `machine` (what sliceJob would refuse), or empty when it can.
+QString unsuitableReason(const slicing::PrinterProfile& profile, core::MachineKind machine) {
+  switch (profile.platform) {
+    case slicing::PlatformDrive::None:
+      if (machine != core::MachineKind::ThreeAxis)
+        return SliceDialog::tr("This printer cannot turn the part: it prints one-step (3-DOF) plans only.");
+      break;
+    case slicing::PlatformDrive::FirmwareAxis:
+      if (machine == core::MachineKind::TiltRotate)
+        return SliceDialog::tr("This printer turns the platform about one axis: it cannot print a 5-DOF plan. "
+                               "Choose a printer with two firmware axes or a robot arm.");
+      break;
+    case slicing::PlatformDrive::Modbus:
+    case slicing::PlatformDrive::FirmwareTwoAxis:
+      break;
+  }
+  return {};
+}
+
 QString platformText(const slicing::PrinterProfile& profile) {
   switch (profile.platform) {
     case slicing::PlatformDrive::FirmwareAxis:
@@ -41,8 +61,8 @@ QString platformText(const slicing::PrinterProfile& profile) {
     case slicing::PlatformDrive::Modbus:
       return SliceDialog::tr("MultiDir turns the platform over Modbus (Hardware dock): one program per step.");
     case slicing::PlatformDrive::FirmwareTwoAxis:
-      return SliceDialog::tr("The firmware tilts (axis %1) and rotates (axis %2) the platform; MultiDir does not "
-                             "write their program yet, so it prints one-step plans only.")
+      return SliceDialog::tr("The firmware tilts (axis %1) and rotates (axis %2) the platform: one program, job.gcode, "
+                             "with every step and the turns between them.")
           .arg(QString::fromStdString(profile.twoAxis.tilt.letter), QString::fromStdString(profile.twoAxis.rotation.letter));
     case slicing::PlatformDrive::None:
       break;
@@ -52,7 +72,7 @@ QString platformText(const slicing::PrinterProfile& profile) {
 
 }  // namespace
 
-SliceDialog::SliceDialog(core::MachineKind machine, QWidget* parent) : QDialog(parent) {
+SliceDialog::SliceDialog(core::MachineKind machine, QWidget* parent) : QDialog(parent), m_machine(machine) {
   setObjectName(QStringLiteral("sliceDialog"));
   setWindowTitle(tr("Slice the Plan"));
   m_printer = new QComboBox(this);
@@ -61,6 +81,13 @@ SliceDialog::SliceDialog(core::MachineKind machine, QWidget* parent) : QDialog(p
     const core::Result<slicing::PrinterProfile> profile = slicing::loadPrinterProfile(name);
     const QString id = QString::fromStdString(name);
     m_printer->addItem(profile ? QString::fromStdString(profile->name) : id, id);
+    // A printer that cannot print this plan is listed but cannot be chosen, and says why.
+    const QString reason = profile ? unsuitableReason(*profile, machine) : QString();
+    if (!reason.isEmpty()) {
+      if (auto* model = qobject_cast<QStandardItemModel*>(m_printer->model()))
+        model->item(m_printer->count() - 1)->setEnabled(false);
+      m_printer->setItemData(m_printer->count() - 1, reason, Qt::ToolTipRole);
+    }
   }
   m_printer->addItem(tr("Load a PrusaSlicer .ini..."));
   m_printer->setItemData(m_printer->count() - 1, true, kLoadIniRole);
@@ -115,7 +142,12 @@ SliceDialog::SliceDialog(core::MachineKind machine, QWidget* parent) : QDialog(p
   const QString dialect = settings.value(QStringLiteral("dialect")).toString();
   settings.endGroup();
   connect(m_printer, QOverload<int>::of(&QComboBox::activated), this, &SliceDialog::onPrinterChosen);
-  if (!selectPrinter(printer)) selectPrinter(defaultPrinterFor(machine));
+  // The printer used last, when it suits this plan (a Klipper platform remembered from a 4-DOF plan cannot
+  // print a 5-DOF one), else the one that suits the plan's machine.
+  if (!selectPrinter(printer)) {
+    selectPrinter(defaultPrinterFor(machine));
+    m_problem->hide();
+  }
   const int remembered = m_dialect->findText(dialect);
   if (remembered >= 0 && m_dialect->isEnabled()) m_dialect->setCurrentIndex(remembered);
 }
@@ -125,6 +157,11 @@ bool SliceDialog::selectPrinter(const QString& pathOrName) {
   const core::Result<slicing::PrinterProfile> profile = slicing::loadPrinterProfile(localPath(pathOrName));
   if (!profile) {
     m_problem->setText(tr("Cannot use the printer profile: %1").arg(QString::fromStdString(profile.error().describe())));
+    m_problem->show();
+    return false;
+  }
+  if (const QString reason = unsuitableReason(*profile, m_machine); !reason.isEmpty()) {
+    m_problem->setText(tr("%1: %2").arg(QString::fromStdString(profile->name), reason));
     m_problem->show();
     return false;
   }
@@ -140,7 +177,8 @@ bool SliceDialog::selectPrinter(const QString& pathOrName) {
   m_lastPrinter = index;
   m_profile = *profile;
   m_printerInfo->setText(platformText(*profile));
-  const bool firmwareAxis = profile->platform == slicing::PlatformDrive::FirmwareAxis;
+  const bool firmwareAxis = profile->platform == slicing::PlatformDrive::FirmwareAxis ||
+                            profile->platform == slicing::PlatformDrive::FirmwareTwoAxis;
   m_dialect->setEnabled(firmwareAxis);
   m_dialect->setCurrentIndex(m_dialect->findData(static_cast<int>(profile->dialect)));
   m_problem->hide();

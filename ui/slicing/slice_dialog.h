@@ -58,6 +58,7 @@ class SliceDialog : public QDialog {
   QLineEdit* m_slicer = nullptr;
   QLabel* m_problem = nullptr;
   int m_lastPrinter = 0;
+  core::MachineKind m_machine = core::MachineKind::TiltRotate;  // the plan's
   std::optional<slicing::PrinterProfile> m_profile;  // of the entry selected
 };
 
