@@ -4,9 +4,11 @@
 //   multidir_search_bench [--models kitten,bunny,...] [--machine 5dof|4dof] [--axes N] [--threads N]
 //                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--w W] [--scales S] [--refine ROUNDS]
 //                         [--min-region-height MM] [--min-plane-gain PERCENT] [--pose auto] [--poses N]
-//                         [--subdivide K] [--proxy-faces N]
+//                         [--subdivide K] [--proxy-faces N] [--normals N] [--polish 0|1] [--polish-effort E]
 // --subdivide K: each model subdivided K times first (4^K as many faces, the same surface): the scaling runs.
 // --proxy-faces N: search a decimated proxy of models above N faces (0: always the full mesh).
+// --polish 0: the search's plan unpolished (--no-polish); a polished plan gets a line "polish:" below its row with
+// J_G before and after polishing, the plans it evaluated and its seconds (part of the row's seconds).
 // --pose auto: after each --up y search, also the pose search (decomposeWithPoseSearch), on one line below:
 // the chosen up, regions, J_G after as a share of the up-y J_G before, its seconds and its time over up y's (wall,
 // and CPU: all threads' user and system time, which the machine's load does not change).
@@ -87,6 +89,8 @@ int main(int argc, char** argv) {
     else if (flag == "--verbose") verbose = value == "1";
     else if (flag == "--subdivide") subdivisions = std::atoi(value.c_str());
     else if (flag == "--proxy-faces") options.proxyFaces = std::atoi(value.c_str());
+    else if (flag == "--polish") options.polish = value != "0";
+    else if (flag == "--polish-effort") options.polishEffort = std::atoi(value.c_str());
     else if (flag == "--pose") autoPose = value == "auto";
     else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
     else if (flag == "--pose-searches") poseOptions.fullSearches = std::atoi(value.c_str());
@@ -98,10 +102,11 @@ int main(int argc, char** argv) {
   if (machine.kind == MachineKind::RotaryPlatform) machine.rotationAxis = Vec3::UnitX();
 
   std::printf("machine %s, scheme %s, beam width %d, alpha %.0f, normals %d, refinement rounds %d, offset step %.1f mm, "
-              "w %.0f, scales %d%s\n",
+              "w %.0f, scales %d, polish %s%s\n",
               machineKindName(machine.kind), schemeName(options.scheme), options.beamWidth, options.alphaMaxDegrees,
               options.candidates.normalSamples, options.refinementRounds, options.candidates.offsetStepMm, options.minVolumeDivisor,
-              options.volumeScales, axes ? (", axis search over " + std::to_string(axes) + " axes").c_str() : "");
+              options.volumeScales, options.polish ? ("effort " + std::to_string(options.polishEffort)).c_str() : "off",
+              axes ? (", axis search over " + std::to_string(axes) + " axes").c_str() : "");
   std::printf("%-12s %9s %11s %9s %9s %7s %12s %12s %8s %6s\n", "model", "triangles", "candidates", "seconds", "peak MiB",
               "regions", "J_G before", "J_G after", "after %", "saved");
   std::vector<double> shares;
@@ -146,6 +151,10 @@ int main(int argc, char** argv) {
                 plan->statistics.candidatesPerLevel, plan->statistics.seconds, peakMemoryMiB(), plan->regions.size(),
                 plan->jgBeforeMm2, plan->jgAfterMm2, share, saved.ok() ? "yes" : "NO");
     if (!saved.ok()) std::printf("    not saved: %s\n", saved.error().describe().c_str());
+    if (const SearchStatistics& st = plan->statistics; st.jgBeforePolishMm2 >= 0)
+      std::printf("  polish: J_G %.2f -> %.2f mm^2 (%.2f %% -> %.2f %%), %d plans evaluated, %.2f s\n",
+                  st.jgBeforePolishMm2, plan->jgAfterMm2, 100.0 * st.jgBeforePolishMm2 / plan->jgBeforeMm2, share,
+                  st.polishEvaluations, st.polishSeconds);
     if (verbose)
       for (const std::string& note : plan->statistics.notes) std::printf("    %s\n", note.c_str());
     if (verbose)

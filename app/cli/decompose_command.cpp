@@ -66,6 +66,11 @@ const char* const kDecomposeHelp =
     "                       cut the full model, and every number is the full model's. 1000 to 10000000\n"
     "                       (default: 50000)\n"
     "  --no-proxy           always search the full model (slow on models of a million faces)\n"
+    "  --polish             after the search, move every plane continuously (normal and offset) to lower\n"
+    "                       J_G further, every constraint kept (default: on)\n"
+    "  --no-polish          keep the search's planes as found\n"
+    "  --polish-effort E    how finely polishing goes, 1 to 6: its steps halve E - 1 times; each level costs\n"
+    "                       about as much as the one before (default: 1)\n"
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
     "  --no-supports        do not generate supports\n"
     "  --support-spacing MM overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"
@@ -83,8 +88,8 @@ const std::set<std::string> kDecomposeValueOptions = {
     "--alpha",   "--normals", "--refine",  "--offset-step",     "--w",               "--scales",
     "--min-region-height",    "--min-plane-gain",               "--min-plane-gain-area",
     "--threads", "--profile", "-o",        "--summary",         "--support-spacing", "--scale",
-    "--pose",    "--poses",   "--pose-searches",                "--proxy-faces"};
-const std::set<std::string> kDecomposeFlags = {"--help", "--no-supports", "--no-proxy"};
+    "--pose",    "--poses",   "--pose-searches",                "--proxy-faces",     "--polish-effort"};
+const std::set<std::string> kDecomposeFlags = {"--help", "--no-supports", "--no-proxy", "--polish", "--no-polish"};
 
 namespace {
 
@@ -194,6 +199,14 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
       throw UsageError(kCommand + ": --proxy-faces and --no-proxy contradict each other");
     options.proxyFaces = 0;
   }
+  if (parsed.has("--polish") && parsed.has("--no-polish"))
+    throw UsageError(kCommand + ": --polish and --no-polish contradict each other");
+  if (parsed.has("--no-polish")) {
+    if (parsed.has("--polish-effort"))
+      throw UsageError(kCommand + ": --polish-effort and --no-polish contradict each other");
+    options.polish = false;
+  }
+  apply("--polish-effort", [&](const std::string& t) { options.polishEffort = parseInteger(t, "--polish-effort"); });
   return options;
 }
 

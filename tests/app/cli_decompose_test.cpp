@@ -167,6 +167,25 @@ TEST(CliDecompose, MissingModelExitsWithOne) {
   EXPECT_NE(run.err.find("ghost.stl"), std::string::npos) << run.err;
 }
 
+TEST(CliDecompose, PolishOptionsThatContradictOrAreOutOfRangeAreUsageErrors) {
+  const std::string k = kitten() + " -o out ";
+  expectUsageError(k + "--polish --no-polish", "--polish and --no-polish contradict each other");
+  expectUsageError(k + "--no-polish --polish-effort 2", "--polish-effort and --no-polish contradict each other");
+  expectUsageError(k + "--polish-effort 7", "--polish-effort: polish effort must be between 1 and 6");
+}
+
+TEST(CliDecompose, NoPolishKeepsTheSearchsPlanAndPlanJsonSaysSo) {
+  const std::string dir = multidir::test::scratchDirectory("CliDecompose.NoPolish");
+  const CliRun run = runCli("decompose " + kitten() + " --up y --beam-width 2 --no-supports --no-polish -o '" + dir +
+                                "/plan'",
+                            dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json plan = nlohmann::json::parse(readAll(dir + "/plan/plan.json"));
+  EXPECT_EQ(plan["search"]["polish"], false);
+  EXPECT_EQ(plan["result"]["statistics"]["jgBeforePolishMm2"].get<double>(), -1.0);
+  EXPECT_EQ(plan["result"]["statistics"]["polishEvaluations"].get<int>(), 0);
+}
+
 TEST(CliDecompose, UsageErrorsExitWithTwoAndNameTheOption) {
   const std::string k = kitten() + " ";
   expectUsageError(k + "-o out --beam-width 0", "--beam-width: beam width must be between 1 and 1000");

@@ -97,6 +97,13 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   m_minPlaneGain->setToolTip(tr("A plane stays only if removing it would raise J_G by at least this share of J_G "
                                 "before (and by at least 1 mm²): each region costs a platform move and a seam"));
   m_axisCount = new QSpinBox(this);
+  m_polishEffort = new QSpinBox(this);
+  m_polishEffort->setObjectName(QStringLiteral("polishEffort"));
+  m_polishEffort->setRange(0, 6);
+  m_polishEffort->setValue(defaults.polish ? defaults.polishEffort : 0);
+  m_polishEffort->setSpecialValueText(tr("off"));
+  m_polishEffort->setToolTip(tr("After the search, move every plane continuously (normal and offset) to lower J_G "
+                                "further, every constraint kept; higher values refine more finely and take longer"));
   m_axisCount->setObjectName(QStringLiteral("axisCount"));
   m_axisCount->setRange(0, 180);
   m_axisCount->setValue(0);
@@ -115,6 +122,7 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   form->addRow(tr("Max. overhang angle α:"), m_alpha);
   form->addRow(tr("Min. region height:"), m_minRegionHeight);
   form->addRow(tr("Min. gain per plane:"), m_minPlaneGain);
+  form->addRow(tr("Polish the planes:"), m_polishEffort);
   m_axisCountLabel = new QLabel(tr("Axes to try:"), this);
   form->addRow(m_axisCountLabel, m_axisCount);
 
@@ -131,7 +139,7 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   connect(m_cancel, &QPushButton::clicked, this, &SearchPanel::cancelClicked);
   connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::updateBeamOnlyControls);
   connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::settingsChanged);
-  for (QSpinBox* box : {m_beamWidth, m_volumeScales, m_normals, m_axisCount})
+  for (QSpinBox* box : {m_beamWidth, m_volumeScales, m_normals, m_axisCount, m_polishEffort})
     connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
   for (QDoubleSpinBox* box : {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain})
     connect(box, &QDoubleSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
@@ -192,6 +200,8 @@ core::SearchOptions SearchPanel::searchOptions() const {
   options.alphaMaxDegrees = m_alpha->value();
   options.minRegionHeightMm = m_minRegionHeight->value();
   options.minPlaneGainPercent = m_minPlaneGain->value();
+  options.polish = m_polishEffort->value() > 0;
+  if (options.polish) options.polishEffort = m_polishEffort->value();
   return options;
 }
 
@@ -208,6 +218,7 @@ void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
   m_alpha->setValue(options.alphaMaxDegrees);
   m_minRegionHeight->setValue(options.minRegionHeightMm);
   m_minPlaneGain->setValue(options.minPlaneGainPercent);
+  m_polishEffort->setValue(options.polish ? options.polishEffort : 0);
   emit settingsChanged();  // also when only options the panel does not show changed
 }
 
@@ -236,7 +247,7 @@ void SearchPanel::setRunning(bool running) {
   m_run->setEnabled(m_runnable && !running);
   m_cancel->setEnabled(running);
   for (QWidget* w : std::initializer_list<QWidget*>{m_scheme, m_minVolumeDivisor, m_normals, m_offsetStep, m_alpha,
-                                                    m_minRegionHeight, m_minPlaneGain}) {
+                                                    m_minRegionHeight, m_minPlaneGain, m_polishEffort}) {
     w->setEnabled(!running);
   }
   updateBeamOnlyControls();
@@ -286,6 +297,7 @@ void SearchPanel::showProgress(const core::SearchProgress& progress) {
   if (progress.axisCount > 0) {
     m_level->setText(tr("%1 (axis %2 of %3)").arg(progress.level).arg(progress.axisIndex + 1).arg(progress.axisCount));
   }
+  if (progress.polishing) m_level->setText(tr("%1 (polishing)").arg(progress.level));
   m_beams->setText(QString::number(progress.beamsAlive));
   m_bestJg->setText(tr("%1 mm²").arg(area(progress.bestJgMm2)));
   m_candidates->setText(QLocale().toString(progress.candidatesScored));
@@ -306,6 +318,12 @@ void SearchPanel::updateProgressText() {
                            : tr("Scoring candidates... %1").arg(elapsed);
   } else {
     const core::SearchProgress& p = *m_latest;
+    if (p.polishing) {
+      m_progress->setFormat(tr("Polishing the planes: %1 % · best J_G %2 mm² · %3")
+                                .arg(qRound(100 * p.polishFraction))
+                                .arg(area(p.bestJgMm2), elapsed));
+      return;
+    }
     QString level = m_maxLevels > 0 ? tr("Level %1 of %2").arg(p.level).arg(m_maxLevels) : tr("Level %1").arg(p.level);
     if (p.axisCount > 0) level = tr("Axis %1 of %2, %3").arg(p.axisIndex + 1).arg(p.axisCount).arg(level);
     text = tr("%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5")

@@ -91,6 +91,7 @@ class SearchPanel : public QWidget {
   QDoubleSpinBox* m_alpha = nullptr;
   QDoubleSpinBox* m_minRegionHeight = nullptr;
   QDoubleSpinBox* m_minPlaneGain = nullptr;
+  QSpinBox* m_polishEffort = nullptr;  // 0: off, else SearchOptions::polishEffort
   QSpinBox* m_axisCount = nullptr;
   QLabel* m_axisCountLabel = nullptr;
   QPushButton* m_run = nullptr;

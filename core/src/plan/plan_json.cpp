@@ -44,6 +44,9 @@ ordered_json statisticsToJson(const SearchStatistics& s) {
           {"seconds", s.seconds},
           {"threads", s.threads},
           {"proxyFaces", s.proxyFaces},
+          {"jgBeforePolishMm2", s.jgBeforePolishMm2},
+          {"polishEvaluations", s.polishEvaluations},
+          {"polishSeconds", s.polishSeconds},
           {"notes", s.notes}};
 }
 
@@ -58,6 +61,11 @@ SearchStatistics statisticsFromJson(const JsonField& field) {
   s.threads = static_cast<int>(field["threads"].integer(1, kMaxCount));
   // Written since the proxy search; older plans have neither.
   if (const auto proxy = field.optional("proxyFaces")) s.proxyFaces = static_cast<int>(proxy->integer(0, kMaxCount));
+  // Written since polishing; older plans (and plans not polished, -1) have it unpolished.
+  if (const auto before = field.optional("jgBeforePolishMm2")) s.jgBeforePolishMm2 = before->numberAtLeast(-1.0);
+  if (const auto evaluations = field.optional("polishEvaluations"))
+    s.polishEvaluations = static_cast<int>(evaluations->integer(0, kMaxCount));
+  if (const auto seconds = field.optional("polishSeconds")) s.polishSeconds = seconds->numberAtLeast(0.0);
   if (const auto notes = field.optional("notes"))
     for (std::size_t i = 0; i < notes->arraySize(); ++i) s.notes.push_back(notes->element(i).string());
   return s;

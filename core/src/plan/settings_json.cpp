@@ -50,6 +50,8 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"minPlaneGainPercent", o.minPlaneGainPercent},
           {"minPlaneGainMm2", o.minPlaneGainMm2},
           {"proxyFaces", o.proxyFaces},
+          {"polish", o.polish},
+          {"polishEffort", o.polishEffort},
           {"platformToleranceMm", o.platformToleranceMm},
           {"threads", o.threads}};
 }
@@ -116,6 +118,10 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   // Plans saved before the proxy search ran on the full mesh.
   const auto proxy = field.optional("proxyFaces");
   o.proxyFaces = proxy ? static_cast<int>(proxy->integer(0, 10000000)) : 0;
+  // Plans saved before polishing existed were not polished.
+  const auto polish = field.optional("polish");
+  o.polish = polish ? polish->boolean() : false;
+  if (const auto effort = field.optional("polishEffort")) o.polishEffort = smallInteger(*effort);
   o.platformToleranceMm = field["platformToleranceMm"].number();
   o.threads = smallInteger(field["threads"]);
   if (Status valid = validate(o); !valid) field.failInside(valid.error().message, ErrorCode::InvalidParameter);

@@ -125,8 +125,12 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
   best->cancelled = job.isCancelled();
   total.threads = threads;
   total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The chosen axis's plan polished (not every axis's: each polish costs a good part of a search, and a
+  // polished runner-up would have to overtake the polished winner).
   best->statistics = total;
-  return std::move(*best);
+  Decomposition result = detail::polishedIfAsked(model, machine, options, std::move(*best), job, progress, platform);
+  result.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
 }
 
 }  // namespace

@@ -129,12 +129,15 @@ Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& ma
   if (detail::needsProxy(model, options)) {
     auto searched = detail::runProxyDecomposition(
         model, machine, options, job, [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
-          return Result<Decomposition>(runDecomposition(mesh, machine, o, job, progress, p));
+          return Result<Decomposition>(
+              detail::polishedIfAsked(mesh, machine, o, runDecomposition(mesh, machine, o, job, progress, p), job,
+                                      progress, p));
         });
     if (!searched.ok()) return searched.error();
     plan = std::move(*searched);
   } else {
-    plan = runDecomposition(model, machine, options, job, progress);
+    plan = detail::polishedIfAsked(model, machine, options, runDecomposition(model, machine, options, job, progress),
+                                   job, progress);
   }
   detail::returnFreedMemory();
   job.setProgress(1.0, "search done");

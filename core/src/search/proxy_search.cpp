@@ -130,6 +130,8 @@ Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const Mac
                 proxy->mesh.faceCount(), proxy->volumeChangePercent, decimationSeconds, proxyPlan.statistics.seconds,
                 model.faceCount(), secondsSince(cutsStart));
   notes.insert(notes.begin(), summary);
+  // The proxy search's own notes (its polishing) after the summary, before what the full mesh changed.
+  notes.insert(notes.begin() + 1, proxyPlan.statistics.notes.begin(), proxyPlan.statistics.notes.end());
   plan.statistics.notes = std::move(notes);
   plan.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return plan;

@@ -35,6 +35,19 @@ inline bool needsProxy(const TriangleMesh& model, const SearchOptions& options) 
   return options.proxyFaces > 0 && model.faceCount() > static_cast<std::size_t>(options.proxyFaces);
 }
 
+// polishPlan for checked inputs, on `platform` when given (a proxy's search polishes on the proxy, with the full
+// model's platform region). An error when a plane of `plan` is refused when cut again.
+Result<Decomposition> polishDecomposition(const TriangleMesh& model, const MachineSpec& machine,
+                                          const SearchOptions& options, Decomposition plan, JobContext& job,
+                                          const SearchProgressSink& progress,
+                                          const std::optional<PlatformRegion>& platform);
+
+// The plan polished when options.polish is set and the search was not cancelled; else (or when polishing
+// refuses the plan, which a note then says) the plan as it is.
+Decomposition polishedIfAsked(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                             Decomposition plan, JobContext& job, const SearchProgressSink& progress,
+                             const std::optional<PlatformRegion>& platform = std::nullopt);
+
 class SearchEngine;
 struct SearchNode;
 // Removes, one at a time, the plane whose removal raises J_G least while that rise stays below the plane-gain

@@ -44,6 +44,7 @@ Status validate(const SearchOptions& o) {
     return bad("minimum plane gain area", "must be between 0 and 1e9 mm^2");
   if (o.refinementRounds < 0 || o.refinementRounds > 10) return bad("refinement rounds", "must be between 0 (off) and 10");
   if (o.threads < 0 || o.threads > 256) return bad("threads", "must be between 0 (all) and 256");
+  if (o.polishEffort < 1 || o.polishEffort > 6) return bad("polish effort", "must be between 1 and 6");
   if (o.proxyFaces != 0 && (o.proxyFaces < 1000 || o.proxyFaces > 10000000))
     return bad("proxy faces", "must be 0 (search the full mesh) or between 1000 and 10000000");
   return validate(o.candidates);

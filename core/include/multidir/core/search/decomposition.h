@@ -28,6 +28,11 @@ struct SearchStatistics {
   int clipsPerformed = 0;
   double seconds = 0.0;
   int threads = 1;
+  // Polishing (SearchOptions::polish): the found plan's J_G before it (equal to J_G after when polishing
+  // changed nothing; negative when it did not run), the plans it evaluated and its seconds (in `seconds` too).
+  double jgBeforePolishMm2 = -1.0;
+  int polishEvaluations = 0;
+  double polishSeconds = 0.0;
   int proxyFaces = 0;  // faces of the decimated proxy the search ran on (0: it ran on the full mesh)
   // What happened between the proxy and the full mesh: planes polished, replaced or dropped, or why no proxy
   // was used. One sentence each, for the log and the studio.

@@ -58,6 +58,15 @@ struct SearchOptions {
   // found are then applied to the full mesh, each offset polished there, and every number is measured on the
   // full mesh (docs/search.md). 0: always search the full mesh. 0 or in [1000, 10^7].
   int proxyFaces = 50000;
+  // Polishing (docs/search.md, "Polishing"): after the search, every plane's normal and offset are moved
+  // continuously, one plane at a time in printing order, to lower J_G as the final plan measures it, with every
+  // constraint the search keeps. The search only sees sampled planes; the paper's Discussion names this as the
+  // way to the optimum between them.
+  bool polish = true;
+  // How finely polishing goes: its steps (2 degrees and half the offset step at first) halve this many times
+  // less one; each level costs about as much as the one before. 1 to 6. At 1, polishing took 0.1 to 0.95 of
+  // the search's own time on the shared models (median 0.4; docs/search.md, "Polishing").
+  int polishEffort = 1;
 };
 
 Status validate(const SearchOptions& options);
@@ -81,6 +90,9 @@ struct SearchProgress {
   long long candidatesScored = 0;
   int axisIndex = -1;            // 4-DOF axis search: which axis (else -1)
   int axisCount = 0;
+  // Polishing the found plan (after the search): true while it runs, with its share done in [0, 1].
+  bool polishing = false;
+  double polishFraction = 0.0;
 };
 using SearchProgressSink = std::function<void(const SearchProgress&)>;
 
