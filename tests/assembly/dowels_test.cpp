@@ -4,6 +4,8 @@
 #include <map>
 
 #include "multidir/assembly/dowels.h"
+#include "multidir/assembly/plates.h"
+#include "multidir/assembly/three_mf.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "multidir/core/search/decompose.h"
 #include "support/primitives.h"
@@ -170,4 +172,70 @@ TEST(Dowels, DrilledBoxesKeepTheirVolumeBalance) {
   for (const auto& dowel : drilled->dowels) volume += core::signedVolume(dowel);
   // Boxes have no curved faces: the balance is exact up to rounding.
   EXPECT_NEAR(volume, 60.0 * 40.0 * 60.0, 1e-6 * 60.0 * 40.0 * 60.0);
+}
+
+namespace {
+
+// The stacked boxes' parts and dowels, drilled and laid out on a 220 x 220 mm bed.
+struct Laid {
+  assembly::PlateOptions options;
+  assembly::PlateLayout layout;
+};
+
+Laid laidBoxes() {
+  const core::ApartPlan plan = stackedBoxes();
+  const assembly::DowelOptions dowelOptions;
+  const assembly::DowelLayout dowels = assembly::placeDowels(plan, dowelOptions);
+  const assembly::DrilledParts drilled = *assembly::drillParts(plan, dowels, dowelOptions);
+  std::vector<Vec3> directions, axes;
+  for (const core::ApartPart& part : plan.parts) directions.push_back(part.printingDirection);
+  for (const assembly::Dowel& dowel : dowels.dowels) axes.push_back(dowel.axis);
+  Laid laid;
+  laid.layout = *assembly::arrangeOnPlates(drilled.parts, directions, drilled.dowels, axes, laid.options);
+  return laid;
+}
+
+}  // namespace
+
+TEST(Plates, PartsLieCapDownWithinTheBedAndApart) {
+  const Laid laid = laidBoxes();
+  EXPECT_EQ(laid.layout.plates, 1);
+  ASSERT_EQ(laid.layout.items.size(), 4u);  // two parts, two dowels
+  std::vector<core::BoundingBox> boxes;
+  for (const assembly::PlateItem& item : laid.layout.items) {
+    const core::BoundingBox box = core::boundingBox(item.mesh);
+    EXPECT_NEAR(box.min.z(), 0.0, 1e-9) << item.name;  // on the bed
+    EXPECT_GE(box.min.x(), laid.options.marginMm - 1e-9) << item.name;
+    EXPECT_GE(box.min.y(), laid.options.marginMm - 1e-9) << item.name;
+    EXPECT_LE(box.max.x(), 220.0 - laid.options.marginMm + 1e-9) << item.name;
+    EXPECT_LE(box.max.y(), 220.0 - laid.options.marginMm + 1e-9) << item.name;
+    boxes.push_back(box);
+  }
+  // Both boxes' parts are 30 mm tall as laid, each on a cut face (the upper one upside down).
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(boxes[i].size().z(), 30.0, 1e-6);
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const bool apart = boxes[i].max.x() <= boxes[j].min.x() || boxes[j].max.x() <= boxes[i].min.x() ||
+                         boxes[i].max.y() <= boxes[j].min.y() || boxes[j].max.y() <= boxes[i].min.y();
+      EXPECT_TRUE(apart) << laid.layout.items[i].name << " overlaps " << laid.layout.items[j].name;
+    }
+}
+
+TEST(ThreeMf, ReadsBackTheSamePartsMeshesAndTransforms) {
+  const Laid laid = laidBoxes();
+  const std::string path = test::scratchDirectory("ThreeMfReadBack") + "/parts.3mf";
+  ASSERT_TRUE(assembly::write3mf(laid.layout, laid.options, path).ok());
+  const auto read = assembly::read3mf(path);
+  ASSERT_TRUE(read.ok()) << read.error().describe();
+  const std::vector<assembly::ThreeMfItem> written = assembly::threeMfItems(laid.layout, laid.options);
+  ASSERT_EQ(read->size(), written.size());
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    SCOPED_TRACE(written[i].name);
+    EXPECT_EQ((*read)[i].name, written[i].name);
+    EXPECT_EQ((*read)[i].vertices, written[i].vertices);
+    EXPECT_EQ((*read)[i].triangles, written[i].triangles);
+    // 3MF stores floats: a micrometre is plenty.
+    EXPECT_LT(((*read)[i].transform - written[i].transform).cwiseAbs().maxCoeff(), 1e-3);
+    EXPECT_NEAR((*read)[i].volumeMm3, written[i].volumeMm3, 1e-4 * written[i].volumeMm3);
+  }
 }
