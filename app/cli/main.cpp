@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "../common/heap_tuning.h"
+#include "apart_command.h"
 #include "audit_command.h"
 #include "cli_args.h"
 #include "decompose_command.h"
@@ -29,6 +30,8 @@ const char* const kUsage =
     "  decompose MODEL -o OUTDIR   cut a model into regions with printing directions; write the plan\n"
     "  export PLAN_DIR -o OUTDIR   the print job of a plan: one mesh per step, posed as the machine holds it\n"
     "  slice PLAN_OR_JOB --printer PROFILE -o OUTDIR   G-code for every step (PrusaSlicer), checked\n"
+    "  apart PLAN_OR_MODEL -o OUTDIR [--printer PROFILE]   print apart on an ordinary printer: parts on their\n"
+    "                              cut faces, joined by dowels; STL, 3MF and G-code per plate\n"
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
     "  simulate --printer moonraker|marlin   printer simulator: Klipper behind Moonraker, or Marlin on a pty\n"
@@ -60,6 +63,10 @@ int help(const std::vector<std::string>& args) {
   }
   if (args[0] == "export") {
     std::cout << kExportHelp;
+    return kExitOk;
+  }
+  if (args[0] == "apart") {
+    std::cout << kApartHelp;
     return kExitOk;
   }
   if (args[0] == "slice") {
@@ -104,6 +111,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "report") return runReport(rest, std::cout, std::cerr);
   if (command == "export") return runExport(rest, std::cout, std::cerr);
   if (command == "slice") return runSlice(rest, std::cout, std::cerr);
+  if (command == "apart") return runApart(rest, std::cout, std::cerr);
   if (command == "audit") return runAudit(rest, std::cout, std::cerr);
   if (command == "run") return runRun(rest, std::cout, std::cerr);
   if (!command.empty() && command[0] == '-')
