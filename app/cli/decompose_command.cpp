@@ -62,7 +62,7 @@ const char* const kDecomposeHelp =
     "  --min-plane-gain-area MM2\n"
     "                       ... and by at least this area (default: 1)\n"
     "  --part-cost MM2      apart: a plane stays only if removing it would raise J_G by at least this, the\n"
-    "                       risky area whose supports cost as much as one more part (default: see docs/apart.md)\n"
+    "                       risky area whose supports cost as much as one more part (default: 240; docs/apart.md)\n"
     "  --threads N          worker threads, 0 = all (default: 0)\n"
     "  --proxy-faces N      a model of more than N faces is searched on a simplified copy of at most N faces\n"
     "                       (and fewer where that changes the surface by less than 0.01 mm); its planes then\n"
