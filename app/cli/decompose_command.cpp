@@ -34,14 +34,16 @@ const char* const kDecomposeHelp =
     "Options:\n"
     "  -o OUTDIR            folder for the plan (created if missing; required)\n"
     "  --up DIRECTION       the model's up: x, y, z, -x, -y, -z or a,b,c (default: z, or the profile's)\n"
-    "  --machine KIND       3dof, 4dof or 5dof (default: 5dof, or the profile's)\n"
+    "  --machine KIND       3dof, 4dof, 5dof or apart (default: 5dof, or the profile's); apart: an ordinary\n"
+    "                       printer prints every region as a part of its own on its cut face, and the parts\n"
+    "                       are glued with dowels (multidir apart; docs/apart.md)\n"
     "  --axis X,Y,Z         4dof: the platform's rotation axis, perpendicular to up (default: x, or y if up is x)\n"
     "  --axis-search N      4dof: also try N rotation axes over 180 degrees and keep the best plan\n"
     "  --pose MODE          up: stand the model on --up (default); auto: choose the pose too, among the\n"
-    "                       poses the model stands in: on a patch of its convex hull that holds its centre\n"
-    "                       of mass (the given up included when it does)\n"
+    "                       given up and the poses the model stands in: on a patch of its convex hull that\n"
+    "                       holds its centre of mass (the given up is always tried, so never worse)\n"
     "  --poses N            --pose auto: candidate poses, 1 to 200 (default: 24)\n"
-    "  --pose-searches K    --pose auto: poses given the full search, 1 to N (default: 4)\n"
+    "  --pose-searches K    --pose auto: poses given the full search, 1 to N (default: 3)\n"
     "  --profile FILE       machine profile (JSON); --machine, --up and --axis override its fields\n"
     "  --scheme NAME        beam, greedy or cgreedy (default: beam)\n"
     "  --beam-width B       beams kept per level, 1 to 1000 (default: 10)\n"
@@ -60,6 +62,8 @@ const char* const kDecomposeHelp =
     "                       J_G before (default: 1) ...\n"
     "  --min-plane-gain-area MM2\n"
     "                       ... and by at least this area (default: 1)\n"
+    "  --part-cost MM2      apart: a plane stays only if removing it would raise J_G by at least this, the\n"
+    "                       risky area whose supports cost as much as one more part (default: 240; docs/apart.md)\n"
     "  --threads N          worker threads, 0 = all (default: 0)\n"
     "  --proxy-faces N      a model of more than N faces is searched on a simplified copy of at most N faces\n"
     "                       (and fewer where that changes the surface by less than 0.01 mm); its planes then\n"
@@ -86,7 +90,7 @@ const char* const kDecomposeHelp =
 const std::set<std::string> kDecomposeValueOptions = {
     "--up",      "--machine", "--axis",    "--axis-search",     "--scheme",          "--beam-width",
     "--alpha",   "--normals", "--refine",  "--offset-step",     "--w",               "--scales",
-    "--min-region-height",    "--min-plane-gain",               "--min-plane-gain-area",
+    "--min-region-height",    "--min-plane-gain",               "--min-plane-gain-area", "--part-cost",
     "--threads", "--profile", "-o",        "--summary",         "--support-spacing", "--scale",
     "--pose",    "--poses",   "--pose-searches",                "--proxy-faces",     "--polish-effort"};
 const std::set<std::string> kDecomposeFlags = {"--help", "--no-supports", "--no-proxy", "--polish", "--no-polish"};
@@ -192,6 +196,7 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
         [&](const std::string& t) { options.minPlaneGainPercent = parseNumber(t, "--min-plane-gain"); });
   apply("--min-plane-gain-area",
         [&](const std::string& t) { options.minPlaneGainMm2 = parseNumber(t, "--min-plane-gain-area"); });
+  apply("--part-cost", [&](const std::string& t) { options.partCostMm2 = parseNumber(t, "--part-cost"); });
   apply("--threads", [&](const std::string& t) { options.threads = parseInteger(t, "--threads"); });
   apply("--proxy-faces", [&](const std::string& t) { options.proxyFaces = parseInteger(t, "--proxy-faces"); });
   if (parsed.has("--no-proxy")) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "../common/heap_tuning.h"
+#include "apart_command.h"
 #include "audit_command.h"
 #include "batch_command.h"
 #include "cli_args.h"
@@ -32,6 +33,8 @@ const char* const kUsage =
     "                              one results table; --shard I/N, resumable\n"
     "  export PLAN_DIR -o OUTDIR   the print job of a plan: one mesh per step, posed as the machine holds it\n"
     "  slice PLAN_OR_JOB --printer PROFILE -o OUTDIR   G-code for every step (PrusaSlicer), checked\n"
+    "  apart PLAN_OR_MODEL -o OUTDIR [--printer PROFILE]   print apart on an ordinary printer: parts on their\n"
+    "                              cut faces, joined by dowels; STL, 3MF and G-code per plate\n"
     "  report MODEL...             support volume printed along up against the multi-directional plan\n"
     "  simulate [--port PORT]      run the Modbus simulator of the rotary platform and the robot arm\n"
     "  simulate --printer moonraker|marlin   printer simulator: Klipper behind Moonraker, or Marlin on a pty\n"
@@ -67,6 +70,10 @@ int help(const std::vector<std::string>& args) {
   }
   if (args[0] == "export") {
     std::cout << kExportHelp;
+    return kExitOk;
+  }
+  if (args[0] == "apart") {
+    std::cout << kApartHelp;
     return kExitOk;
   }
   if (args[0] == "slice") {
@@ -112,6 +119,7 @@ int run(const std::vector<std::string>& args) {
   if (command == "report") return runReport(rest, std::cout, std::cerr);
   if (command == "export") return runExport(rest, std::cout, std::cerr);
   if (command == "slice") return runSlice(rest, std::cout, std::cerr);
+  if (command == "apart") return runApart(rest, std::cout, std::cerr);
   if (command == "audit") return runAudit(rest, std::cout, std::cerr);
   if (command == "run") return runRun(rest, std::cout, std::cerr);
   if (!command.empty() && command[0] == '-')

@@ -23,6 +23,7 @@ std::string machineAnglesText(core::MachineKind kind, const core::MachineAngles&
     case core::MachineKind::RotaryPlatform:
       return "rotary " + formatNumber("%6.1f", angles.rotaryDegrees);
     case core::MachineKind::TiltRotate:
+    case core::MachineKind::Apart:
       return "tilt " + formatNumber("%5.1f", angles.tiltDegrees) + "  azimuth " +
              formatNumber("%6.1f", angles.azimuthDegrees);
   }

@@ -22,7 +22,7 @@ const char* const kReportHelp =
     "\n"
     "Options:\n"
     "  --up DIRECTION        the models' up: x, y, z, -x, -y, -z or a,b,c (default: z)\n"
-    "  --machine KIND        3dof, 4dof or 5dof (default: 5dof)\n"
+    "  --machine KIND        3dof, 4dof, 5dof or apart (default: 5dof)\n"
     "  --beam-width B        beams kept per level, 1 to 1000 (default: 10)\n"
     "  --normals N           candidate normals sampled on the sphere, 1 to 100000 (default: 250)\n"
     "  --threads N           worker threads of the search, 0 = all (default: 0)\n"

@@ -154,6 +154,7 @@ Vec3 chooseOffset(const core::PrintJob& job, const Extents& e, const PrinterProf
       return Vec3(t * along.x(), t * along.y(), 0.0);
     }
     case core::MachineKind::TiltRotate:
+    case core::MachineKind::Apart:
       break;
   }
   // 5-DOF: the plan centres the first region's footprint on the platform (the pivot), and every step moves by

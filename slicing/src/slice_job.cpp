@@ -392,6 +392,7 @@ core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const P
         break;
       }
       case core::MachineKind::TiltRotate:
+      case core::MachineKind::Apart:  // refused by sliceJob before it gets here
         top = anyTurnTopZ(points);
         break;
       case core::MachineKind::ThreeAxis:
@@ -412,6 +413,11 @@ core::Result<SlicedJob> sliceJob(const core::PrintJob& input, const PrinterProfi
     return Error{ErrorCode::InvalidParameter, "slicing needs the job in the machine frame (as the machine holds it)",
                  "print job"};
   if (input.steps.empty()) return Error{ErrorCode::InvalidParameter, "the job has no steps", "print job"};
+  if (input.machine.kind == core::MachineKind::Apart && input.steps.size() > 1)
+    return Error{ErrorCode::InvalidParameter,
+                 "a plan for the apart machine is printed as separate parts, not as one multi-step job: run "
+                 "'multidir apart PLAN -o OUT --printer PROFILE'",
+                 "print job"};
   // The settings given over the profile's (--set, the studio's Slice dialog) pass the profile's ranges too: the
   // slicer takes any number it is given (a temperature of 1e308 became M104 S1).
   for (const auto& [key, value] : options.settings)

@@ -138,6 +138,7 @@ void PlanPanel::setPlan(const core::Decomposition& plan, core::MachineKind kind,
         angles = tr("rotary %1°").arg(number(region.angles.rotaryDegrees, 1));
         break;
       case core::MachineKind::TiltRotate:
+      case core::MachineKind::Apart:
         angles = tr("tilt %1°, azimuth %2°").arg(number(region.angles.tiltDegrees, 1),
                                                   number(region.angles.azimuthDegrees, 1));
         break;

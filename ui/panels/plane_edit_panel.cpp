@@ -368,6 +368,7 @@ void PlaneEditPanel::refreshControls() {
     case core::MachineKind::ThreeAxis:
       break;
     case core::MachineKind::TiltRotate:
+    case core::MachineKind::Apart:
       m_tilt->setRange(0.0, machine.maxTiltDegrees);
       m_tiltSlider->setRange(0, static_cast<int>(std::floor(machine.maxTiltDegrees * kAngleScale)));
       m_tilt->setValue(angles.tiltDegrees);
@@ -445,6 +446,7 @@ void PlaneEditPanel::directionChanged(int dragSession) {
     case core::MachineKind::ThreeAxis:
       return;
     case core::MachineKind::TiltRotate:
+    case core::MachineKind::Apart:
       m_editor->setPlaneNormal(plane, tiltedDirection(machine.up, m_tilt->value(), m_azimuth->value()), dragSession);
       return;
     case core::MachineKind::RotaryPlatform:

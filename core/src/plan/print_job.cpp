@@ -132,6 +132,7 @@ ordered_json anglesToJson(MachineKind kind, const MachineAngles& angles) {
     case MachineKind::RotaryPlatform:
       return {{"rotaryDegrees", angles.rotaryDegrees}};
     case MachineKind::TiltRotate:
+    case MachineKind::Apart:
       return {{"tiltDegrees", angles.tiltDegrees}, {"azimuthDegrees", angles.azimuthDegrees}};
   }
   return ordered_json::object();

@@ -49,6 +49,7 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"minRegionHeightMm", o.minRegionHeightMm},
           {"minPlaneGainPercent", o.minPlaneGainPercent},
           {"minPlaneGainMm2", o.minPlaneGainMm2},
+          {"partCostMm2", o.partCostMm2},
           {"proxyFaces", o.proxyFaces},
           {"polish", o.polish},
           {"polishEffort", o.polishEffort},
@@ -60,7 +61,7 @@ MachineSpec machineFromJson(const JsonField& field, bool allRequired) {
   MachineSpec m;
   const JsonField kind = field["kind"];
   const Result<MachineKind> parsed = parseMachineKind(kind.string());
-  if (!parsed) kind.fail("must be \"3dof\", \"4dof\" or \"5dof\"");
+  if (!parsed) kind.fail("must be \"3dof\", \"4dof\", \"5dof\" or \"apart\"");
   m.kind = *parsed;
   if (auto f = member(field, "up", allRequired)) m.up = f->unitVector();
   if (auto f = member(field, "platformRadiusMm", allRequired)) m.platformRadiusMm = f->number();
@@ -115,6 +116,9 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   o.minPlaneGainPercent = gainPercent ? gainPercent->number() : 0.0;
   const auto gainArea = field.optional("minPlaneGainMm2");
   o.minPlaneGainMm2 = gainArea ? gainArea->number() : 0.0;
+  // Plans saved before the apart machine existed: no part was ever cost.
+  const auto partCost = field.optional("partCostMm2");
+  o.partCostMm2 = partCost ? partCost->number() : kDefaultPartCostMm2;
   // Plans saved before the proxy search ran on the full mesh.
   const auto proxy = field.optional("proxyFaces");
   o.proxyFaces = proxy ? static_cast<int>(proxy->integer(0, 10000000)) : 0;

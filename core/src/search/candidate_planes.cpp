@@ -56,7 +56,8 @@ std::vector<Vec3> candidateNormals(const MachineSpec& machine, const CandidateOp
       }
       break;
     }
-    case MachineKind::TiltRotate: {
+    case MachineKind::TiltRotate:
+    case MachineKind::Apart: {
       // The lattice is built around +Z; turn it so its pole is the machine's up.
       const Eigen::Quaterniond toUp = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), machine.up);
       for (const Vec3& p : fibonacciSphere(options.normalSamples)) {
@@ -78,7 +79,8 @@ double normalSpacingRadians(const MachineSpec& machine, const CandidateOptions& 
           std::max(1, static_cast<int>(std::round(options.rotarySpacingDegrees / machine.angleStepDegrees)));
       return degToRad(stride * machine.angleStepDegrees);
     }
-    case MachineKind::TiltRotate: return std::sqrt(4.0 * kPi / options.normalSamples);
+    case MachineKind::TiltRotate:
+    case MachineKind::Apart: return std::sqrt(4.0 * kPi / options.normalSamples);
   }
   return 0.0;
 }
@@ -101,7 +103,8 @@ std::vector<Vec3> neighbourNormals(const MachineSpec& machine, const Vec3& norma
       }
       break;
     }
-    case MachineKind::TiltRotate: {
+    case MachineKind::TiltRotate:
+    case MachineKind::Apart: {
       const Vec3 n = normal.normalized();
       const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
       const Vec3 u = n.cross(helper).normalized();
@@ -134,8 +137,10 @@ bool planeClearsPlatform(const Plane& plane, const PlatformRegion& platform, con
   return plane.offset > platformTopAlong(plane.normal, platform, up) + clearanceMm;
 }
 
-OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
-                            const Vec3& up, const CandidateOptions& options) {
+namespace {
+
+// Every offsetStepMm from just above max(the solid's lowest point, `floorMm`) to below its top.
+OffsetGrid offsetsAbove(const TriangleMesh& solid, const Vec3& normal, double floorMm, const CandidateOptions& options) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
   // Every vertex of a solid from loadMesh or clipByPlane belongs to a face.
   for (const Vec3& v : solid.vertices) {
@@ -145,7 +150,7 @@ OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const
   }
   OffsetGrid grid{0.0, options.offsetStepMm, 0};
   if (!(low < high)) return grid;
-  const double start = std::max(low, platformTopAlong(normal, platform, up) + options.platformClearanceMm);
+  const double start = std::max(low, floorMm);
   // Offsets on a lattice anchored at 0 so that the same plane is the same candidate at every level.
   const double first = (std::floor(start / options.offsetStepMm) + 1.0) * options.offsetStepMm;
   if (first >= high) return grid;
@@ -153,6 +158,17 @@ OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const
   const double count = std::ceil((high - first) / options.offsetStepMm);
   grid.count = static_cast<int>(std::min(count, static_cast<double>(kMaxCandidatesPerLevel)));
   return grid;
+}
+
+}  // namespace
+
+OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
+                            const Vec3& up, const CandidateOptions& options) {
+  return offsetsAbove(solid, normal, platformTopAlong(normal, platform, up) + options.platformClearanceMm, options);
+}
+
+OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const CandidateOptions& options) {
+  return offsetsAbove(solid, normal, -std::numeric_limits<double>::infinity(), options);
 }
 
 Status checkCandidateCount(const TriangleMesh& model, const MachineSpec& machine, const CandidateOptions& options) {

@@ -53,9 +53,11 @@ NodePtr rebuild(SearchEngine& engine, NodePtr start, const std::vector<Plane>& p
 
 }  // namespace
 
-// A plane is kept only if it pays for itself: each region costs a platform move and a seam.
+// A plane is kept only if it pays for itself: each region costs a platform move and a seam, and apart a part.
 NodePtr detail::withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOptions& o) {
-  const double threshold = std::max(o.minPlaneGainMm2, o.minPlaneGainPercent / 100.0 * engine.root()->riskyUpAreaMm2);
+  const double partCost = engine.sequenceFree() ? o.partCostMm2 : 0.0;
+  const double threshold =
+      std::max({o.minPlaneGainMm2, o.minPlaneGainPercent / 100.0 * engine.root()->riskyUpAreaMm2, partCost});
   std::vector<Plane> planes = planesOf(node);
   while (!planes.empty()) {
     // Without plane k, the first k cuts are unchanged: start from the node they made.

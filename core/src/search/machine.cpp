@@ -23,6 +23,7 @@ const char* machineKindName(MachineKind kind) {
     case MachineKind::ThreeAxis: return "3dof";
     case MachineKind::RotaryPlatform: return "4dof";
     case MachineKind::TiltRotate: return "5dof";
+    case MachineKind::Apart: return "apart";
   }
   return "?";
 }
@@ -31,7 +32,9 @@ Result<MachineKind> parseMachineKind(const std::string& text) {
   if (text == "3dof") return MachineKind::ThreeAxis;
   if (text == "4dof") return MachineKind::RotaryPlatform;
   if (text == "5dof") return MachineKind::TiltRotate;
-  return Error{ErrorCode::InvalidParameter, "'" + text + "' is not a machine: use 3dof, 4dof or 5dof", "machine"};
+  if (text == "apart") return MachineKind::Apart;
+  return Error{ErrorCode::InvalidParameter, "'" + text + "' is not a machine: use 3dof, 4dof, 5dof or apart",
+               "machine"};
 }
 
 Status validate(const MachineSpec& spec) {
@@ -114,7 +117,8 @@ Eigen::Matrix3d platformRotation(const MachineSpec& spec, const MachineAngles& a
       return Eigen::Matrix3d::Identity();
     case MachineKind::RotaryPlatform:
       return Eigen::AngleAxisd(-degToRad(angles.rotaryDegrees), spec.rotationAxis.normalized()).toRotationMatrix();
-    case MachineKind::TiltRotate: {
+    case MachineKind::TiltRotate:
+    case MachineKind::Apart: {
       const Vec3 x = platformFrameX(spec.up);
       const Vec3 y = spec.up.cross(x);
       const double azimuth = degToRad(angles.azimuthDegrees);
@@ -144,6 +148,8 @@ bool isRealizable(const MachineSpec& spec, const Vec3& direction, double toleran
         if (radToDeg(std::acos(std::clamp(d.dot(cone.axis), -1.0, 1.0))) < cone.halfAngleDegrees) return false;
       return true;
     }
+    case MachineKind::Apart:
+      return true;  // a part can be laid on the bed any way up
   }
   return false;
 }

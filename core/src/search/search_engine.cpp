@@ -151,7 +151,9 @@ std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, 
     if (m_job.isCancelled()) return;
     const int i = normalIndices[k];
     const Vec3& n = m_normals[i];
-    const OffsetGrid grid = candidateOffsets(*node.remaining, n, m_platform, m_machine.up, m_options.candidates);
+    const OffsetGrid grid = sequenceFree()
+                                ? candidateOffsets(*node.remaining, n, m_options.candidates)
+                                : candidateOffsets(*node.remaining, n, m_platform, m_machine.up, m_options.candidates);
     if (sweeps) (*sweeps)[k].grid = grid;
     if (grid.count == 0) return;
     offered[k] = grid.count;
@@ -225,17 +227,18 @@ std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std:
                                                                       const ScoredCandidate& candidate) {
   Plane plane = keptOffVertices(Plane{m_normals[candidate.normal], candidate.offsetMm}, *node->remaining);
   // Criterion II refuses most candidates on branchy models; this finds the certain refusals without a clip.
-  if (certainlyLeavesFloatingPiece(*node->remaining, plane, m_machine.up,
+  if (!sequenceFree() && certainlyLeavesFloatingPiece(*node->remaining, plane, m_machine.up,
                                    m_platform.heightMm + m_options.platformToleranceMm, m_clipMarginMm))
     return std::nullopt;
   bool keepsFloat = true;
   auto clipped = clipSavably(*node->remaining, plane, node->level, keepsFloat);
   if (!clipped.ok() || clipped->below.empty() || clipped->above.empty()) return std::nullopt;
-  if (!standsOnPlatform(clipped->below)) return std::nullopt;
+  if (!sequenceFree() && !standsOnPlatform(clipped->below)) return std::nullopt;
   if (!unprintableReason(*clipped, plane, keepsFloat).empty()) return std::nullopt;
   // Measured on the region itself, so J_G is what the saved region gives; the sweep ranked the candidate and
-  // agrees with this up to the few micrometres the plane was moved off vertices.
-  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(RegionBase::CutPlane));
+  // agrees with this up to the few micrometres the plane was moved off vertices (apart: and the band above
+  // the bed the region lies on, which the sweep does not count).
+  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(cutRegionBase()));
   if (!risky.ok()) return std::nullopt;
   const double regionRisky = risky->riskyAreaMm2;
   return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), regionRisky));
@@ -248,7 +251,7 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
   if (!isRealizable(m_machine, plane.normal, degToRad(0.01)))
     return Error{ErrorCode::InvalidParameter,
                  "the machine cannot print along this plane's normal: tilt it back within the machine's limits", where};
-  if (!planeClearsPlatform(plane, m_platform, m_machine.up))
+  if (!sequenceFree() && !planeClearsPlatform(plane, m_platform, m_machine.up))
     return Error{ErrorCode::InvalidParameter,
                  "the plane cuts the platform region (Criterion III): move it up or tilt it less", where};
   bool keepsFloat = true;
@@ -259,17 +262,23 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
                  where};
   if (clipped->below.empty())
     return Error{ErrorCode::InvalidParameter, "the plane leaves nothing below it to stand on the platform", where};
-  if (!standsOnPlatform(clipped->below))
+  if (!sequenceFree() && !standsOnPlatform(clipped->below))
     return Error{ErrorCode::InvalidParameter,
                  "after this cut a piece below the plane no longer stands on the platform (Criterion II): move or "
                  "tilt the plane so the part below stays in one piece on the platform",
                  where};
   if (const std::string why = unprintableReason(*clipped, plane, keepsFloat); !why.empty())
     return Error{ErrorCode::InvalidParameter, why, where};
-  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(RegionBase::CutPlane));
+  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(cutRegionBase()));
   if (!risky.ok()) return Error{risky.error().code, risky.error().message, where};
   const double regionRisky = risky->riskyAreaMm2;
   return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), regionRisky));
+}
+
+RegionBase SearchEngine::cutRegionBase() const {
+  // docs/jg-definition.md, "Printed apart": the bed lies under every part, so a region cut off stands on the
+  // bed at its base plane, not on the material below it.
+  return sequenceFree() ? RegionBase::Platform : RegionBase::CutPlane;
 }
 
 OverhangOptions SearchEngine::overhangOptions(RegionBase base) const {
@@ -339,7 +348,10 @@ std::string SearchEngine::unprintableReason(const ClipResult& clipped, const Pla
   if (regionHeight < minHeight)
     return "the region above the plane is only " + millimetres(regionHeight) + " tall along its printing direction (at least " +
            millimetres(minHeight) + " are needed to print it): move the plane down or remove it";
-  const double platformHeight = heightAbove(clipped.below, m_machine.up, m_platform.heightMm);
+  // Apart: what is left is laid on the bed at its own lowest point, wherever the cuts left it.
+  const double platformHeight = heightAbove(clipped.below, m_machine.up,
+                                            sequenceFree() ? -topAlong(clipped.below, -m_machine.up)
+                                                           : m_platform.heightMm);
   if (platformHeight < minHeight)
     return "the part left on the platform would be only " + millimetres(platformHeight) + " tall (at least " +
            millimetres(minHeight) + " are needed): move the plane up or tilt it less";
@@ -413,7 +425,7 @@ Decomposition SearchEngine::planOf(const SearchNode& node) const {
     region.volumeMm3 = signedVolume(mesh);
     // Printed on its base plane (or the platform), which is its lowest level along the direction.
     const auto analysis =
-        analyzeOverhang(mesh, direction, overhangOptions(base ? RegionBase::CutPlane : RegionBase::Platform));
+        analyzeOverhang(mesh, direction, overhangOptions(base ? cutRegionBase() : RegionBase::Platform));
     region.riskyAreaMm2 = analysis.ok() ? analysis->riskyAreaMm2 : 0.0;
     plan.jgAfterMm2 += region.riskyAreaMm2;
     plan.regions.push_back(std::move(region));

@@ -46,6 +46,8 @@ class SearchEngine {
   // Adds a normal beyond the lattice (refinement) and returns its index; a normal already there keeps its own.
   int addNormal(const Vec3& normal);
   const MachineSpec& machine() const { return m_machine; }
+  // The apart machine: no Criterion II or III, and every region stands on the bed (docs/jg-definition.md).
+  bool sequenceFree() const { return m_machine.kind == MachineKind::Apart; }
   const SearchOptions& options() const { return m_options; }
 
   // Clips the node by the candidate. Empty when the part below would not stand on the platform
@@ -88,6 +90,9 @@ class SearchEngine {
 
  private:
   OverhangOptions overhangOptions(RegionBase base) const;
+  // What a region cut off stands on when its risky area is measured: the material below (a multi-directional
+  // machine) or the bed (apart).
+  RegionBase cutRegionBase() const;
   // Clips by `plane`, moved a few micrometres more where the first placement would not survive a binary STL;
   // `plane` becomes the placement used. `keepsFloat` says whether the clip returned survives it (false: no
   // placement did, and the first clip is returned for unprintableReason to refuse).

@@ -51,7 +51,8 @@ Eigen::Isometry3d auditModelToFile(const AuditMachine& machine, const core::Mach
       return restPose(machine);
     case core::MachineKind::RotaryPlatform:
       return turnedAboutPivot(machine, machine.rotationAxis, -radians(angles.rotaryDegrees));
-    case core::MachineKind::TiltRotate: {
+    case core::MachineKind::TiltRotate:
+    case core::MachineKind::Apart: {
       const double a = radians(angles.azimuthDegrees);
       const Vec3 axisInFrame(std::sin(a), -std::cos(a), 0.0);
       return turnedAboutPivot(machine, platformFrame(machine.up) * axisInFrame, radians(angles.tiltDegrees));

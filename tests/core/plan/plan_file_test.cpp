@@ -404,7 +404,7 @@ INSTANTIATE_TEST_SUITE_P(
         EditCase{"RegionFileTwice", [](nlohmann::json& d) { d["regions"][1]["file"] = "region-01.stl"; },
                  "plan.json: regions[1].file names 'region-01.stl', which an earlier region already uses"},
         EditCase{"UnknownMachine", [](nlohmann::json& d) { d["machine"]["kind"] = "7dof"; },
-                 "plan.json: machine.kind must be \"3dof\", \"4dof\" or \"5dof\""},
+                 "plan.json: machine.kind must be \"3dof\", \"4dof\", \"5dof\" or \"apart\""},
         EditCase{"MachineFieldMissing", [](nlohmann::json& d) { d["machine"].erase("platformMarginMm"); },
                  "plan.json: machine.platformMarginMm is missing"},
         EditCase{"BeamWidthZero", [](nlohmann::json& d) { d["search"]["beamWidth"] = 0; },

@@ -63,5 +63,8 @@ Status checkCandidateCount(const TriangleMesh& model, const MachineSpec& machine
 // never overflows whatever the model's size.
 OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
                             const Vec3& up, const CandidateOptions& options);
+// The same without a platform region (the apart machine: Criterion III does not apply), from just above the
+// solid's lowest point along the normal.
+OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const CandidateOptions& options);
 
 }  // namespace multidir::core

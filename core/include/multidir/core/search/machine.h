@@ -7,7 +7,12 @@
 //  - 4-DOF: the platform turns about one axis r (a line in the platform plane) over an angle range, in
 //    whole steps of the stepper; a direction is up turned about r by a realizable angle;
 //  - 5-DOF: a robot arm tilts the platform up to a maximal angle from up, at any azimuth, except inside
-//    forbidden cones.
+//    forbidden cones;
+//  - apart: an ordinary printer that prints every region as a part of its own, laid on the bed on its cut
+//    face (the first on the model's own bottom), the parts glued together afterwards (docs/apart.md). Any
+//    direction is realizable (a part can be laid any way up), and the sequence criteria of a
+//    multi-directional machine (II: what is left stands on the platform; III: no plane cuts the platform
+//    region) do not apply: nothing is printed onto anything else.
 #include <string>
 #include <vector>
 
@@ -16,9 +21,9 @@
 
 namespace multidir::core {
 
-enum class MachineKind { ThreeAxis, RotaryPlatform, TiltRotate };
+enum class MachineKind { ThreeAxis, RotaryPlatform, TiltRotate, Apart };
 
-// "3dof", "4dof", "5dof" (as the command line and profiles spell them).
+// "3dof", "4dof", "5dof", "apart" (as the command line and profiles spell them).
 const char* machineKindName(MachineKind kind);
 Result<MachineKind> parseMachineKind(const std::string& text);
 
@@ -81,7 +86,7 @@ MachineAngles machineAnglesFor(const MachineSpec& spec, const Vec3& direction);
 //  - 3-DOF: the identity;
 //  - 4-DOF: the platform turns by -rotaryDegrees about rotationAxis r (a positive angle tilts the platform's
 //    top towards up x r), so rotaryDirection(spec, rotaryDegrees) ends up along up;
-//  - 5-DOF: the platform turns by tiltDegrees about the horizontal axis sin(a) x - cos(a) y of the platform
+//  - 5-DOF and apart (the part laid on the bed along the direction): the platform turns by tiltDegrees about the horizontal axis sin(a) x - cos(a) y of the platform
 //    frame (x = platformFrameX(up), y = up x x, a = azimuthDegrees): the direction tilted from up by the tilt
 //    towards the azimuth ends up along up, and the platform's top tilts towards the opposite azimuth, a + 180.
 // For every realizable direction d, platformRotation(spec, machineAnglesFor(spec, d)) * d == up.

@@ -18,6 +18,10 @@ enum class SearchScheme {
 const char* schemeName(SearchScheme scheme);  // "greedy", "cgreedy", "beam"
 Result<SearchScheme> parseScheme(const std::string& text);
 
+// The apart machine's cost of one more part, as the risky area whose supports cost as much print time (mm^2):
+// measured with PrusaSlicer, docs/apart.md ("The cost of a part").
+inline constexpr double kDefaultPartCostMm2 = 240.0;
+
 struct SearchOptions {
   SearchScheme scheme = SearchScheme::Beam;
   int beamWidth = 10;                       // b, >= 1
@@ -52,6 +56,10 @@ struct SearchOptions {
   // removed from the plan after the search.
   double minPlaneGainPercent = 1.0;
   double minPlaneGainMm2 = 1.0;
+  // The apart machine (docs/apart.md): each plane makes one more part, to print, fit with dowels and glue, so
+  // a plane is kept only if its removal would raise J_G by at least this as well. Ignored by other machines.
+  // [0, 1e9] mm^2.
+  double partCostMm2 = kDefaultPartCostMm2;
   double platformToleranceMm = kDefaultPlatformToleranceMm;  // how close a solid must reach to touch the platform
   int threads = 0;                          // 0: all hardware threads
   // Models with more faces than this are searched on a decimated proxy of about this many faces; the planes

@@ -1,0 +1,63 @@
+// multidir apart: a plan printed apart on an ordinary printer (docs/apart.md).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+#include "support/test_models.h"
+
+namespace fs = std::filesystem;
+using multidir::test::readAll;
+using multidir::test::runCli;
+using multidir::test::scratchDirectory;
+using multidir::test::sharedModelPath;
+
+TEST(CliApart, PrintsASavedPlanApartWithPartsDowelsPlatesAndA3mf) {
+  const std::string dir = scratchDirectory("CliApartPlan");
+  const auto plan = runCli("decompose '" + sharedModelPath("kitten.off") + "' --up y --machine apart --scheme greedy "
+                           "--no-supports -o '" + dir + "/plan'", dir);
+  ASSERT_EQ(plan.exitCode, 0) << plan.err;
+  const auto apart = runCli("apart '" + dir + "/plan' -o '" + dir + "/out' --printer marlin-220 --no-slice", dir);
+  ASSERT_EQ(apart.exitCode, 0) << apart.err;
+  const nlohmann::json summary = nlohmann::json::parse(readAll(dir + "/out/apart.json"));
+  const int parts = summary["parts"].get<int>();
+  EXPECT_GE(parts, 2);
+  EXPECT_GE(summary["dowels"].get<int>(), 2);
+  // The plan's regions come back from binary STL: the same J_G up to float rounding.
+  const double planJg = summary["jgPlanMm2"].get<double>();
+  EXPECT_LE(summary["jgApartMm2"].get<double>(), planJg + 1e-6 * std::max(1.0, planJg));
+  for (int p = 1; p <= parts; ++p) EXPECT_TRUE(fs::exists(dir + "/out/part-0" + std::to_string(p) + ".stl")) << p;
+  EXPECT_TRUE(fs::exists(dir + "/out/dowel-01.stl"));
+  EXPECT_TRUE(fs::exists(dir + "/out/plate-1.stl"));
+  EXPECT_TRUE(fs::exists(dir + "/out/parts.3mf"));
+  EXPECT_FALSE(fs::exists(dir + "/out/plate-1.gcode"));  // --no-slice
+}
+
+TEST(CliApart, RefusesAModelThatNeedsTooManyPartsForThePrinter) {
+  const std::string dir = scratchDirectory("CliApartTooLarge");
+  // The knight three times its size (243 x 405 x 123 mm) on a 220 x 220 mm bed, at most 4 parts.
+  const auto run = runCli("apart '" + sharedModelPath("knight.off") + "' --up y --scheme greedy --scale 3 "
+                          "--max-parts 4 --printer marlin-220 --no-slice -o '" + dir + "/out'", dir);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("more than 4 parts"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("larger printer"), std::string::npos) << run.err;
+}
+
+TEST(CliApart, SlicesEveryPlateAndTheWholeModelWithSupports) {
+  const std::string dir = scratchDirectory("CliApartSlice");
+  const auto run = runCli("apart '" + sharedModelPath("knight.off") + "' --up y --scheme greedy -o '" + dir +
+                              "/out' --printer marlin-220",
+                          dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json summary = nlohmann::json::parse(readAll(dir + "/out/apart.json"));
+  const int plates = summary["plates"].get<int>();
+  ASSERT_GE(plates, 1);
+  for (int p = 1; p <= plates; ++p) EXPECT_TRUE(fs::exists(dir + "/out/plate-" + std::to_string(p) + ".gcode"));
+  EXPECT_TRUE(fs::exists(dir + "/out/whole.gcode"));
+  EXPECT_GT(summary["apartSeconds"].get<double>(), 0.0);
+  EXPECT_GT(summary["wholeSeconds"].get<double>(), 0.0);
+  EXPECT_NE(run.out.find("One piece with supports"), std::string::npos) << run.out;
+}
