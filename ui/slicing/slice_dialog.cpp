@@ -29,13 +29,17 @@ QString defaultPrinterFor(core::MachineKind machine) {
   switch (machine) {
     case core::MachineKind::RotaryPlatform: return QStringLiteral("klipper-rotary");
     case core::MachineKind::TiltRotate: return QStringLiteral("robot-0.8");
-    case core::MachineKind::ThreeAxis: break;
+    case core::MachineKind::ThreeAxis:
+    case core::MachineKind::Apart: break;
   }
   return QStringLiteral("marlin-220");
 }
 
 // Why a printer cannot print a plan for `machine` (what sliceJob would refuse), or empty when it can.
 QString unsuitableReason(const slicing::PrinterProfile& profile, core::MachineKind machine) {
+  if (machine == core::MachineKind::Apart)
+    return SliceDialog::tr("A plan printed apart is sliced part by part on plates: use 'multidir apart' "
+                           "(docs/apart.md).");
   switch (profile.platform) {
     case slicing::PlatformDrive::None:
       if (machine != core::MachineKind::ThreeAxis)
