@@ -172,7 +172,10 @@ TEST_P(HttpTwoAxisPrint, PrintsEachStepAtItsAxisCoordinatesInTheTimeItsMovesTake
   ASSERT_TRUE(sim->start().ok());
   const TwoAxisProgram program = multidir::test::twoAxisProgram(klipper);
   const std::string path =
-      test::writeFile(std::filesystem::path(testing::TempDir()) / "two-axis-http" / "job.gcode", program.text);
+      // One folder per protocol: ctest runs the two side by side, and each writes its own program.
+      test::writeFile(std::filesystem::path(testing::TempDir()) / (klipper ? "two-axis-moonraker" : "two-axis-octoprint") /
+                          "job.gcode",
+                      program.text);
   auto link = test::printerLinkTo(GetParam(), sim->port());
   ASSERT_TRUE(link->connect().ok());
   ASSERT_TRUE(test::outcome(link->upload(path, "job.gcode")).ok());
