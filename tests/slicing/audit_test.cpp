@@ -755,7 +755,9 @@ namespace {
 // The kitten's 5-DOF plan sliced once for open5x-rrf (U tilt, V rotation, RepRapFirmware): the job folder.
 const std::string& kittenOnOpen5x() {
   static const std::string dir = [] {
-    const std::string out = test::scratchDirectory("AuditTwoAxisKitten.Open5x");
+    // Its own folder per test: ctest runs these tests as processes side by side, each slicing once.
+    const std::string out = test::scratchDirectory(std::string("AuditTwoAxisKitten.Open5x.") +
+                                                   testing::UnitTest::GetInstance()->current_test_info()->name());
     const core::Result<PrinterProfile> profile = loadPrinterProfile("open5x-rrf");
     const core::Result<core::LoadedMesh> kitten = core::loadMesh(test::sharedModelPath("kitten.off"));
     if (!profile || !kitten) throw std::runtime_error("open5x-rrf or the kitten cannot be loaded");
