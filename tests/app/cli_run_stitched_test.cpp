@@ -33,10 +33,16 @@ const char* const kCoarse =
     " --no-comparison --set 'layer_height=0.3 first_layer_height=0.3 perimeters=1 top_solid_layers=1 "
     "bottom_solid_layers=1 fill_density=0%'";
 
+// This test's own scratch folder NAME: ctest runs the tests as processes side by side, and a folder shared
+// between them would be emptied by one while another slices into it.
+std::string ownScratch(const std::string& name) {
+  return multidir::test::scratchDirectory(name + "." + testing::UnitTest::GetInstance()->current_test_info()->name());
+}
+
 // The kitten's 4-DOF plan (greedy), once per test process.
 const std::string& kittenPlan() {
   static const std::string plan = [] {
-    const std::string dir = multidir::test::scratchDirectory("CliRunStitched.Plan");
+    const std::string dir = ownScratch("CliRunStitched.Plan");
     const CliRun run = runCli("decompose " + shellQuoted(multidir::test::sharedModelPath("kitten.off")) +
                                   " --up y --machine 4dof --scheme greedy -o " + shellQuoted(dir + "/plan"),
                               dir);
@@ -52,8 +58,7 @@ const std::string& kittenJob(bool klipper) {
   static std::string jobs[2];
   std::string& job = jobs[klipper ? 1 : 0];
   if (!job.empty()) return job;
-  const std::string dir =
-      multidir::test::scratchDirectory(klipper ? "CliRunStitched.Klipper" : "CliRunStitched.Marlin");
+  const std::string dir = ownScratch(klipper ? "CliRunStitched.Klipper" : "CliRunStitched.Marlin");
   std::string printer = "klipper-rotary";
   if (!klipper) {
     std::string profile =
