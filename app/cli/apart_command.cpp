@@ -9,6 +9,7 @@
 
 #include "cli_args.h"
 #include "multidir/assembly/dowels.h"
+#include "multidir/assembly/part_labels.h"
 #include "multidir/assembly/plates.h"
 #include "multidir/assembly/three_mf.h"
 #include "multidir/core/analysis/overhang.h"
@@ -192,6 +193,12 @@ int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostre
   const assembly::DowelLayout layout = assembly::placeDowels(*apart, dowelOptions);
   const core::Result<assembly::DrilledParts> drilled = assembly::drillParts(*apart, layout, dowelOptions);
   if (!drilled) throw FileError(kCommand + ": " + drilled.error().describe());
+  // Each part's number sunk into a joint face that gluing hides, where there is room.
+  const assembly::LabelOptions labelOptions;
+  const std::vector<assembly::PartLabel> labels = assembly::placeLabels(*apart, layout, dowelOptions, labelOptions);
+  const core::Result<std::vector<core::TriangleMesh>> numbered =
+      assembly::debossLabels(drilled->parts, labels, labelOptions);
+  if (!numbered) throw FileError(kCommand + ": " + numbered.error().describe());
 
   std::vector<core::Vec3> directions, axes;
   for (const core::ApartPart& part : apart->parts) directions.push_back(part.printingDirection);
@@ -202,7 +209,7 @@ int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostre
     plates.maxHeightMm = 1e6;
   }
   const core::Result<assembly::PlateLayout> arranged =
-      assembly::arrangeOnPlates(drilled->parts, directions, drilled->dowels, axes, plates);
+      assembly::arrangeOnPlates(*numbered, directions, drilled->dowels, axes, plates);
   if (!arranged) throw FileError(kCommand + ": " + arranged.error().describe());
 
   fs::create_directories(folder);
@@ -226,6 +233,22 @@ int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostre
       << fixed(plan.jgAfterMm2, 2) << " mm^2)\n";
   for (const assembly::JointDowels& joint : layout.joints)
     if (!joint.note.empty()) out << "Joint " << joint.joint + 1 << ": " << joint.note << "\n";
+  int unnumbered = 0;
+  nlohmann::ordered_json labelRecords = nlohmann::ordered_json::array();
+  for (const assembly::PartLabel& label : labels) {
+    if (!label.placed) {
+      ++unnumbered;
+      out << "Part " << label.part + 1 << ": " << label.note << "\n";
+    }
+    nlohmann::ordered_json record = {{"part", label.part + 1}, {"number", label.text}, {"placed", label.placed}};
+    if (label.placed) {
+      record["joint"] = label.joint + 1;
+      record["heightMm"] = label.heightMm;
+    } else {
+      record["note"] = label.note;
+    }
+    labelRecords.push_back(record);
+  }
 
   nlohmann::ordered_json summary = {{"parts", apart->parts.size()},
                                     {"cutsToFit", apart->cutsToFit},
@@ -234,7 +257,9 @@ int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostre
                                     {"plates", arranged->plates},
                                     {"jgApartMm2", apart->jgMm2},
                                     {"jgPlanMm2", plan.jgAfterMm2},
-                                    {"jgBeforeMm2", plan.jgBeforeMm2}};
+                                    {"jgBeforeMm2", plan.jgBeforeMm2},
+                                    {"partsNumbered", static_cast<int>(labels.size()) - unnumbered},
+                                    {"labels", labelRecords}};
   if (profile) {
     for (int p = 0; p < arranged->plates; ++p) save(assembly::plateMesh(*arranged, p), folder / ("plate-" + std::to_string(p + 1) + ".stl"));
   }

@@ -61,3 +61,27 @@ TEST(CliApart, SlicesEveryPlateAndTheWholeModelWithSupports) {
   EXPECT_GT(summary["wholeSeconds"].get<double>(), 0.0);
   EXPECT_NE(run.out.find("One piece with supports"), std::string::npos) << run.out;
 }
+
+TEST(CliApart, NumbersEveryPartWithRoomAndNamesThoseWithout) {
+  const std::string dir = scratchDirectory("CliApartNumbers");
+  const auto run = runCli("apart '" + sharedModelPath("knight.off") + "' --up y --scheme greedy -o '" + dir +
+                              "/out' --printer marlin-220 --no-slice",
+                          dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json summary = nlohmann::json::parse(readAll(dir + "/out/apart.json"));
+  const nlohmann::json& labels = summary["labels"];
+  ASSERT_EQ(labels.size(), summary["parts"].get<std::size_t>());
+  int placed = 0;
+  for (std::size_t p = 0; p < labels.size(); ++p) {
+    EXPECT_EQ(labels[p]["number"].get<std::string>(), std::to_string(p + 1));
+    if (labels[p]["placed"].get<bool>()) {
+      ++placed;
+      EXPECT_GE(labels[p]["joint"].get<int>(), 1);
+    } else {
+      EXPECT_NE(run.out.find("Part " + std::to_string(p + 1) + ": " + labels[p]["note"].get<std::string>()),
+                std::string::npos);
+    }
+  }
+  EXPECT_GE(placed, 1);
+  EXPECT_EQ(summary["partsNumbered"].get<int>(), placed);
+}

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "multidir/assembly/dowels.h"
+#include "multidir/assembly/part_labels.h"
 #include "multidir/assembly/plates.h"
 #include "multidir/assembly/three_mf.h"
 #include "multidir/core/mesh/mesh_measure.h"
@@ -134,6 +135,25 @@ TEST_P(DowelsOnSharedModels, EachPartLosesExactlyItsHolesVolume) {
     const double removed = core::signedVolume(a.plan.parts[p].mesh) - core::signedVolume(a.drilled.parts[p]);
     EXPECT_NEAR(removed, holes, 1e-3 * holes + 1e-9 * a.plan.parts[p].volumeMm3) << "part " << p + 1;
   }
+}
+
+TEST_P(DowelsOnSharedModels, NumberedPartsStayClosedOrientedSolids) {
+  const Assembled& a = assembled(GetParam());
+  const assembly::DowelOptions dowels;
+  const assembly::LabelOptions options;
+  const std::vector<assembly::PartLabel> labels = assembly::placeLabels(a.plan, a.layout, dowels, options);
+  ASSERT_EQ(labels.size(), a.plan.parts.size());
+  const auto numbered = assembly::debossLabels(a.drilled.parts, labels, options);
+  ASSERT_TRUE(numbered.ok()) << numbered.error().describe();
+  int placed = 0;
+  for (std::size_t p = 0; p < numbered->size(); ++p) {
+    EXPECT_TRUE(closedOrientedSolid((*numbered)[p])) << "part " << p + 1;
+    EXPECT_NEAR(core::signedVolume(a.drilled.parts[p]) - core::signedVolume((*numbered)[p]),
+                assembly::labelVolumeMm3(labels[p], options), 1e-3)
+        << "part " << p + 1;
+    placed += labels[p].placed ? 1 : 0;
+  }
+  EXPECT_GT(placed, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(KittenAndBunny, DowelsOnSharedModels, ::testing::Values("kitten.off", "bunny.off"),
