@@ -104,6 +104,31 @@ TEST(ApartPlan, MultiDirectionalPlanPrintedApartHasNoMoreJg) {
   }
 }
 
+// The fertility statue is where the apart plan's J_G exceeds the 5-DOF plan's with the default part cost
+// (docs/apart.md, "Measured"): the two tests below hold what the comparison is at the same price per part.
+TEST(ApartSearch, WithoutAPartCostFertilityApartHasNoMoreJgThanItsFiveDofPlan) {
+  const TriangleMesh fertility = multidir::test::loadSharedModel("fertility.off");
+  const Decomposition fiveDof = searched(fertility, machineOf(MachineKind::TiltRotate, Vec3::UnitY()));
+  SearchOptions free;
+  free.partCostMm2 = 0.0;
+  const Decomposition apart = searched(fertility, machineOf(MachineKind::Apart, Vec3::UnitY()), free);
+  const Result<ApartPlan> parts = apartPlan(apart);
+  ASSERT_TRUE(parts.ok()) << parts.error().describe();
+  EXPECT_LE(parts->jgMm2, fiveDof.jgAfterMm2);
+}
+
+TEST(ApartSearch, PricedPerPartFertilityApartCostsNoMoreThanItsFiveDofPlanPrintedApart) {
+  const TriangleMesh fertility = multidir::test::loadSharedModel("fertility.off");
+  const SearchOptions options;  // the default part cost
+  const Result<ApartPlan> fiveDof = apartPlan(searched(fertility, machineOf(MachineKind::TiltRotate, Vec3::UnitY())));
+  const Result<ApartPlan> apart = apartPlan(searched(fertility, machineOf(MachineKind::Apart, Vec3::UnitY()), options));
+  ASSERT_TRUE(fiveDof.ok() && apart.ok());
+  auto priced = [&](const ApartPlan& plan) {
+    return plan.jgMm2 + options.partCostMm2 * static_cast<double>(plan.parts.size() - 1);
+  };
+  EXPECT_LE(priced(*apart), priced(*fiveDof));
+}
+
 TEST(ApartPlan, EveryPartIsAClosedSolidAndTheyAddUpToTheModel) {
   const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
   SearchOptions options;
