@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.h"
+#include "multidir/assembly/assembly_sheet.h"
 #include "multidir/assembly/dowels.h"
 #include "multidir/assembly/part_labels.h"
 #include "multidir/assembly/plates.h"
@@ -36,7 +37,8 @@ const char* const kApartHelp =
     "Writes to OUTDIR: part-NN.stl and dowel-NN.stl (each laid cap down, in its own frame), plate-K.stl (what\n"
     "one plate of the bed holds), parts.3mf (every part and dowel placed on its plate, read back and checked),\n"
     "with --printer plate-K.gcode (PrusaSlicer, no supports) and whole.gcode (the model in one piece with the\n"
-    "slicer's supports), and apart.json with every number the table shows.\n"
+    "slicer's supports), assembly.html with its pictures in sheet/ (the parts with their numbers, the order of\n"
+    "gluing, the plates and the estimates), and apart.json with every number the table shows.\n"
     "\n"
     "Options:\n"
     "  -o OUTDIR            folder for the files (created if missing; required)\n"
@@ -263,6 +265,7 @@ int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (profile) {
     for (int p = 0; p < arranged->plates; ++p) save(assembly::plateMesh(*arranged, p), folder / ("plate-" + std::to_string(p + 1) + ".stl"));
   }
+  std::vector<assembly::SheetEstimate> sheetEstimates;
   if (profile && !parsed.has("--no-slice")) {
     out << "Plate   time          filament cm^3\n";
     slicing::Estimate total;
@@ -273,7 +276,12 @@ int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostre
       total += s.estimate;
       out << std::setw(5) << p + 1 << "   " << std::setw(12) << slicing::durationText(s.estimate.printSeconds) << "  "
           << fixed(s.estimate.filamentCm3, 2) << "\n";
-      perPlate.push_back({{"plate", p + 1}, {"seconds", s.estimate.printSeconds}, {"filamentCm3", s.estimate.filamentCm3}});
+      perPlate.push_back({{"plate", p + 1},
+                          {"seconds", s.estimate.printSeconds},
+                          {"filamentCm3", s.estimate.filamentCm3},
+                          {"supportCm3", s.estimate.supportCm3}});
+      sheetEstimates.push_back({"Plate " + std::to_string(p + 1), s.estimate.printSeconds, s.estimate.filamentCm3,
+                                s.estimate.supportCm3});
     }
     // The whole model in one piece along up, centred on the bed, with the slicer's supports.
     core::TriangleMesh whole;
@@ -296,13 +304,40 @@ int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostre
     out << "Total   " << std::setw(12) << slicing::durationText(total.printSeconds) << "  " << fixed(total.filamentCm3, 2)
         << "\n";
     out << "One piece with supports " << slicing::durationText(one.estimate.printSeconds) << "  "
-        << fixed(one.estimate.filamentCm3, 2) << " cm^3\n";
+        << fixed(one.estimate.filamentCm3, 2) << " cm^3, of which support " << fixed(one.estimate.supportCm3, 2)
+        << " cm^3\n";
+    sheetEstimates.push_back({"All plates", total.printSeconds, total.filamentCm3, total.supportCm3});
+    sheetEstimates.push_back({"One piece with supports", one.estimate.printSeconds, one.estimate.filamentCm3,
+                              one.estimate.supportCm3});
     summary["platesSliced"] = perPlate;
     summary["apartSeconds"] = total.printSeconds;
     summary["apartFilamentCm3"] = total.filamentCm3;
+    summary["apartSupportCm3"] = total.supportCm3;
+    summary["wholeSupportCm3"] = one.estimate.supportCm3;
     summary["wholeSeconds"] = one.estimate.printSeconds;
     summary["wholeFilamentCm3"] = one.estimate.filamentCm3;
   }
+  // The assembly sheet: parts, gluing order, plates and estimates, with its pictures in sheet/.
+  assembly::SheetInput sheetInput;
+  sheetInput.title = "Assembly of " + fs::path(input).filename().string();
+  sheetInput.plan = &*apart;
+  sheetInput.layout = &layout;
+  sheetInput.dowelOptions = dowelOptions;
+  sheetInput.labels = &labels;
+  sheetInput.parts = &*numbered;
+  sheetInput.dowels = &drilled->dowels;
+  sheetInput.plates = &*arranged;
+  sheetInput.estimates = sheetEstimates;
+  const core::Result<assembly::Sheet> sheet = assembly::assemblySheet(sheetInput);
+  if (!sheet) throw FileError(kCommand + ": " + sheet.error().describe());
+  fs::create_directories(folder / "sheet");
+  for (const assembly::SheetPicture& picture : sheet->pictures)
+    if (core::Status s = core::writeTextFileAtomically((folder / picture.name).string(),
+                                                       std::string(picture.png.begin(), picture.png.end()));
+        !s)
+      throw FileError(kCommand + ": " + s.error().describe());
+  if (core::Status s = core::writeTextFileAtomically((folder / "assembly.html").string(), sheet->html); !s)
+    throw FileError(kCommand + ": " + s.error().describe());
   if (core::Status s = core::writeTextFileAtomically((folder / "apart.json").string(), summary.dump(2) + "\n"); !s)
     throw FileError(kCommand + ": " + s.error().describe());
   out << "Written to " << folder.string() << "\n";

@@ -61,6 +61,41 @@ std::string durationText(double seconds) {
   return text;
 }
 
+double supportFilamentMm(const std::string& gcode) {
+  double total = 0.0, lastE = 0.0;
+  bool absoluteE = true, support = false;
+  std::istringstream lines(gcode);
+  std::string line;
+  auto eWord = [](const std::string& code, double& e) {
+    for (std::size_t at = code.find(' '); at != std::string::npos; at = code.find(' ', at + 1))
+      if (at + 1 < code.size() && code[at + 1] == 'E') {
+        char* end = nullptr;
+        e = std::strtod(code.c_str() + at + 2, &end);
+        return end != code.c_str() + at + 2;
+      }
+    return false;
+  };
+  while (std::getline(lines, line)) {
+    if (line.rfind(";TYPE:", 0) == 0) {
+      support = line.rfind(";TYPE:Support material", 0) == 0;
+      continue;
+    }
+    const std::string code = line.substr(0, line.find(';'));
+    if (code.rfind("M82", 0) == 0) absoluteE = true;
+    if (code.rfind("M83", 0) == 0) absoluteE = false;
+    double e = 0.0;
+    if (code.rfind("G92", 0) == 0 && eWord(code, e)) lastE = e;
+    if ((code.rfind("G1 ", 0) == 0 || code.rfind("G0 ", 0) == 0) && eWord(code, e)) {
+      const double delta = absoluteE ? e - lastE : e;
+      if (absoluteE) lastE = e;
+      // Extrusion moves go somewhere; E-only moves are retracts and primes, which add nothing laid.
+      const bool moves = code.find(" X") != std::string::npos || code.find(" Y") != std::string::npos;
+      if (support && moves && delta > 0) total += delta;
+    }
+  }
+  return total;
+}
+
 core::Result<Estimate> parseEstimate(const std::string& gcode, const std::string& name) {
   Estimate estimate;
   std::string time;
@@ -74,6 +109,9 @@ core::Result<Estimate> parseEstimate(const std::string& gcode, const std::string
   commentNumber(gcode, "filament used [cm3]", estimate.filamentCm3);
   if (!commentNumber(gcode, "total filament used [g]", estimate.filamentGrams))
     commentNumber(gcode, "filament used [g]", estimate.filamentGrams);
+  estimate.supportFilamentMm = supportFilamentMm(gcode);
+  // The same filament: its volume per millimetre from the slicer's own totals.
+  if (estimate.filamentMm > 0) estimate.supportCm3 = estimate.supportFilamentMm * estimate.filamentCm3 / estimate.filamentMm;
   return estimate;
 }
 

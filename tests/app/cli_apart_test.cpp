@@ -85,3 +85,27 @@ TEST(CliApart, NumbersEveryPartWithRoomAndNamesThoseWithout) {
   EXPECT_GE(placed, 1);
   EXPECT_EQ(summary["partsNumbered"].get<int>(), placed);
 }
+
+TEST(CliApart, WritesAnAssemblySheetWhosePicturesArePngFilesBesideIt) {
+  const std::string dir = scratchDirectory("CliApartSheet");
+  const auto run = runCli("apart '" + sharedModelPath("knight.off") + "' --up y --scheme greedy -o '" + dir +
+                              "/out' --printer marlin-220 --no-slice",
+                          dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string html = readAll(dir + "/out/assembly.html");
+  const nlohmann::json summary = nlohmann::json::parse(readAll(dir + "/out/apart.json"));
+  const int parts = summary["parts"].get<int>();
+  int pictures = 0;
+  for (std::size_t at = html.find("src=\""); at != std::string::npos; at = html.find("src=\"", at + 1)) {
+    const std::string name = html.substr(at + 5, html.find('"', at + 5) - at - 5);
+    const std::string png = readAll(dir + "/out/" + name);
+    ASSERT_GE(png.size(), 8u) << name;
+    EXPECT_EQ(png.substr(1, 3), "PNG") << name;
+    ++pictures;
+  }
+  // The parts, a step for each part after the first, a plate at least.
+  EXPECT_GE(pictures, 1 + (parts - 1) + 1);
+  int steps = 0;
+  for (std::size_t at = html.find("<h3>Step "); at != std::string::npos; at = html.find("<h3>Step ", at + 1)) ++steps;
+  EXPECT_EQ(steps, parts - 1);
+}

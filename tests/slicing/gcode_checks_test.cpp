@@ -229,6 +229,21 @@ TEST(Estimates, PrusaSlicerCommentsGiveTimeAndFilament) {
   EXPECT_DOUBLE_EQ(e->filamentGrams, 4.47);
 }
 
+TEST(Estimates, SupportVolumeIsTheFilamentExtrudedUnderTheSupportFeatures) {
+  // Absolute E with a reset, then relative E: 2 + 1.5 mm under support, 3 + 4 mm elsewhere; 10.5 mm in all
+  // is 0.021 cm^3, so 3.5 mm is 0.007 cm^3.
+  const auto e = parseEstimate(
+      "M82\nG92 E0\n;TYPE:Perimeter\nG1 X1 E3\n;TYPE:Support material\nG1 X2 E5\nG1 E4.2\nG1 E5\nG92 E0\n"
+      "M83\n;TYPE:Support material interface\nG1 X3 E1.5\n;TYPE:Solid infill\nG1 X4 E4 ; support\n"
+      "; filament used [mm] = 10.5\n; filament used [cm3] = 0.021\n"
+      "; estimated printing time (normal mode) = 1m 0s\n",
+      "x.gcode");
+  ASSERT_TRUE(e.ok()) << e.error().describe();
+  // The retract (E5 -> E4.2) and its prime back to E5 add nothing.
+  EXPECT_NEAR(e->supportFilamentMm, 3.5, 1e-9);
+  EXPECT_NEAR(e->supportCm3, 0.007, 1e-12);
+}
+
 TEST(Estimates, GcodeWithoutEstimatesIsMalformed) {
   const auto e = parseEstimate("G1 X1\n", "x.gcode");
   ASSERT_FALSE(e.ok());

@@ -15,12 +15,18 @@ struct Estimate {
   double filamentMm = 0.0;
   double filamentCm3 = 0.0;
   double filamentGrams = 0.0;  // 0 when the profile has no filament density
+  // Of the filament, what the slicer lays as support (";TYPE:Support material" and its interface): the
+  // support volume the assembly sheet and docs/apart.md compare.
+  double supportFilamentMm = 0.0;
+  double supportCm3 = 0.0;
 
   Estimate& operator+=(const Estimate& other) {
     printSeconds += other.printSeconds;
     filamentMm += other.filamentMm;
     filamentCm3 += other.filamentCm3;
     filamentGrams += other.filamentGrams;
+    supportFilamentMm += other.supportFilamentMm;
+    supportCm3 += other.supportCm3;
     return *this;
   }
 };
@@ -33,6 +39,10 @@ std::string durationText(double seconds);
 
 // Reads the estimate comments of a PrusaSlicer G-code. Errors: MalformedFile naming `name` when the time or
 // the filament length is missing (a G-code not written by PrusaSlicer, or cut short).
+// The filament extruded under the slicer's support features (";TYPE:Support material", ";TYPE:Support material
+// interface") by moves in X or Y (retracts and primes excepted), following M82/M83 and G92 E (mm of filament).
+double supportFilamentMm(const std::string& gcode);
+
 core::Result<Estimate> parseEstimate(const std::string& gcode, const std::string& name);
 
 }  // namespace multidir::slicing
