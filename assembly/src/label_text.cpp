@@ -36,6 +36,9 @@ core::Status validate(const LabelOptions& o) {
   if (!(o.gapMm >= 0.1 && o.gapMm <= 5)) return bad("label gap", "must be between 0.1 and 5 mm");
   if (!(o.depthMm >= 0.1 && o.depthMm <= 10)) return bad("label depth", "must be between 0.1 and 10 mm");
   if (!(o.marginMm >= 0 && o.marginMm <= 20)) return bad("label margin", "must be between 0 and 20 mm");
+  for (double h : o.heightsMm)
+    if (!(o.widthShare * h - 2.0 * (strokeWidth(h, o) + o.gapMm) > 0))
+      return bad("label height", "leaves no room for a digit's horizontals between its verticals: make it taller");
   return core::Done{};
 }
 
@@ -48,7 +51,8 @@ Eigen::Vector2d textSize(const std::string& text, double heightMm, const LabelOp
 std::vector<Stroke> textStrokes(const std::string& text, double h, const LabelOptions& o) {
   std::vector<Stroke> strokes;
   const double w = o.widthShare * h, s = strokeWidth(h, o), g = o.gapMm;
-  // The horizontals span the digit; the verticals stand between them, a gap from each.
+  // The verticals run each half of the digit's height, a gap apart at the middle, so a 1 reads as one bar
+  // broken once; the horizontals stand between them, a gap from each.
   const double mid = 0.5 * h;
   for (std::size_t k = 0; k < text.size(); ++k) {
     if (text[k] < '0' || text[k] > '9') continue;
@@ -56,14 +60,15 @@ std::vector<Stroke> textStrokes(const std::string& text, double h, const LabelOp
     auto box = [&](double xa, double ya, double xb, double yb) {
       strokes.push_back({Eigen::Vector2d(x0 + xa, ya), Eigen::Vector2d(x0 + xb, yb)});
     };
+    const double inner0 = s + g, inner1 = w - s - g;
     for (const char* c = kSegments[static_cast<std::size_t>(text[k] - '0')]; *c; ++c) switch (*c) {
-        case 'a': box(0, h - s, w, h); break;
-        case 'd': box(0, 0, w, s); break;
-        case 'g': box(0, mid - 0.5 * s, w, mid + 0.5 * s); break;
-        case 'f': box(0, mid + 0.5 * s + g, s, h - s - g); break;
-        case 'b': box(w - s, mid + 0.5 * s + g, w, h - s - g); break;
-        case 'e': box(0, s + g, s, mid - 0.5 * s - g); break;
-        case 'c': box(w - s, s + g, w, mid - 0.5 * s - g); break;
+        case 'a': box(inner0, h - s, inner1, h); break;
+        case 'd': box(inner0, 0, inner1, s); break;
+        case 'g': box(inner0, mid - 0.5 * s, inner1, mid + 0.5 * s); break;
+        case 'f': box(0, mid + 0.5 * g, s, h); break;
+        case 'b': box(w - s, mid + 0.5 * g, w, h); break;
+        case 'e': box(0, 0, s, mid - 0.5 * g); break;
+        case 'c': box(w - s, 0, w, mid - 0.5 * g); break;
         default: break;
       }
   }

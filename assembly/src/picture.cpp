@@ -101,8 +101,8 @@ Image render(const std::vector<ColouredMesh>& meshes, const std::vector<Caption>
   // Captions: black seven-segment digits on a white box, over everything.
   const double textHeight = std::max(12.0, 0.06 * view.height);
   LabelOptions font;  // the parts' digits, their strokes and gaps in pixels at this height
-  font.minStrokeMm = 0.14 * textHeight;
-  font.gapMm = 0.06 * textHeight;
+  font.minStrokeMm = 0.12 * textHeight;
+  font.gapMm = 0.05 * textHeight;
   for (const Caption& caption : captions) {
     const Vec3 at = toPixel(caption.at);
     const Eigen::Vector2d size = textSize(caption.text, textHeight, font);

@@ -15,7 +15,7 @@ namespace multidir::assembly {
 
 struct LabelOptions {
   std::vector<double> heightsMm = {10.0, 8.0, 6.0};  // digit heights tried, largest first
-  double widthShare = 0.55;  // a digit's width per unit of height
+  double widthShare = 0.6;   // a digit's width per unit of height
   double spacingShare = 0.25;  // the space between two digits per unit of height
   double minStrokeMm = 0.8;  // two 0.4 mm perimeters, so a stroke prints as a groove
   double strokeShare = 0.125;  // a stroke's width per unit of height, at least minStrokeMm
