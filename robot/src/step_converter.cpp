@@ -108,6 +108,9 @@ struct CollisionSet {
     Eigen::Isometry3d baseToBox = Eigen::Isometry3d::Identity();  // boxes
     Eigen::Vector3d halfSizeMm = Eigen::Vector3d::Zero();
     CollisionCylinder cylinder;                                    // cylinders
+    // The body's extent along the nozzle axis from the tip: a point is inside only if its height above the tip,
+    // the files' z difference (the axis is the files' +Z), lies within; the one comparison that rules most out.
+    double axisMinMm = 0.0, axisMaxMm = 0.0;
     std::vector<Candidate> candidates;
   };
   std::vector<Body> bodies;
@@ -165,6 +168,19 @@ Eigen::Matrix3d nozzleFrame(const Eigen::Vector3d& axisIn) {
   frame.col(2) = axis;
   return frame;
 }
+
+namespace {
+
+// platformPoseFor with the turn (nozzle frame times the rotation about the axis) computed once per step.
+Eigen::Isometry3d poseWithTurn(const Cell& cell, const Eigen::Isometry3d& platformToFile, const Eigen::Matrix3d& turn,
+                               const Eigen::Vector3d& fileMm) {
+  Eigen::Isometry3d fileToBase = Eigen::Isometry3d::Identity();
+  fileToBase.linear() = turn;
+  fileToBase.translation() = cell.nozzleTipMm - turn * fileMm;
+  return fileToBase * platformToFile;
+}
+
+}  // namespace
 
 Eigen::Isometry3d platformPoseFor(const Cell& cell, const Eigen::Isometry3d& platformToFile, double rotationRad,
                                   const Eigen::Vector3d& fileMm) {
@@ -290,6 +306,17 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   std::vector<Eigen::AlignedBox3d> bodyBounds;
   for (const auto& b : cell.boxes) bodyBounds.push_back(boxBounds(b));
   for (const auto& c : cell.cylinders) bodyBounds.push_back(cylinderBounds(c));
+  for (std::size_t b = 0; b < bodyBounds.size(); ++b) {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (int c = 0; c < 8; ++c) {
+      const double h = (bodyBounds[b].corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - cell.nozzleTipMm)
+                           .dot(cell.nozzleAxis);
+      low = std::min(low, h);
+      high = std::max(high, h);
+    }
+    collisions.bodies[b].axisMinMm = low;
+    collisions.bodies[b].axisMaxMm = high;
+  }
   for (const auto& p : input.carried) {
     const Eigen::Vector3d s = input.platformToFile * p.platformMm;
     // world = tip + turn (s - f), f within bounds
@@ -312,7 +339,9 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   auto collisionAt = [&](const Eigen::Vector3d& f, const Eigen::Isometry3d& flange) -> std::string {
     for (const auto& body : collisions.bodies) {
       for (const auto& c : body.candidates) {
-        if (c.kind == CarriedPoint::Kind::ThisStep && c.fileMm.z() > f.z() + 1e-6) continue;  // not printed yet
+        const double height = c.fileMm.z() - f.z();
+        if (height < body.axisMinMm || height > body.axisMaxMm) continue;
+        if (c.kind == CarriedPoint::Kind::ThisStep && height > 1e-6) continue;  // not printed yet
         const Eigen::Vector3d world = cell.nozzleTipMm + nozzleTurn * (c.fileMm - f);
         bool inside = false;
         if (body.box) {
@@ -429,7 +458,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
     int loadJoint = 0;
     for (int s = 1; s <= samples; ++s) {
       const Eigen::Vector3d f = current + (target - current) * (static_cast<double>(s) / samples);
-      const Eigen::Isometry3d tcp = platformPoseFor(cell, input.platformToFile, bestRotation, f);
+      const Eigen::Isometry3d tcp = poseWithTurn(cell, input.platformToFile, nozzleTurn, f);
       const Eigen::Isometry3d flange = tcp * platformToFlange;
       Joints q{};
       switch (solveOnBranch(arm, flange, bestBranch, joints, q)) {
