@@ -43,6 +43,7 @@ const char* const kUsage =
     "  run JOB --printer URL --platform HOST:PORT --machine PROFILE.json   print a sliced job: platform and\n"
     "                              printer in the loop\n"
     "  cell check CELL             check a robot cell file (a UR arm carrying the platform, a fixed extruder)\n"
+    "  cell reach PLAN --cell CELL   where to put the extruder: nozzle positions scored by the plan's reach\n"
     "  robot-program JOB --cell CELL -o OUT   the robot cell's URScript programs of a job sliced with the\n"
     "                              cell's profile, every pose checked\n"
     "  help [COMMAND]              show this help, or a command's help\n"
