@@ -51,6 +51,7 @@
 #include "ui/studio_startup.h"
 #include "ui/viewer/axis_picker.h"
 #include "ui/viewer/mesh_viewer_widget.h"
+#include "ui/viewer/view_actions.h"
 #include "ui/common/wheel_needs_focus.h"
 
 namespace multidir::ui {
@@ -166,6 +167,9 @@ void MainWindow::buildMenus() {
   fit->setShortcut(QKeySequence(Qt::Key_F));
   QAction* modelView = m_viewMenu->addAction(tr("Show the &model (hide the plan)"), this, &MainWindow::clearPlan);
   modelView->setObjectName(QStringLiteral("showModel"));
+  QToolBar* viewBar = addToolBar(tr("View"));
+  viewBar->setObjectName(QStringLiteral("viewToolBar"));
+  addViewActions(m_viewer, m_viewMenu, viewBar);
   m_viewMenu->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) m_viewMenu->addAction(dock->toggleViewAction());
 
@@ -589,6 +593,7 @@ void MainWindow::onUpChanged() {
   markPoseInUse();
   onMachineChanged();
   emit upDirectionChanged();
+  m_viewer->setEmptyUp(upDirection());  // an empty view's axes marker follows the up too
   if (!model()) return;
   clearPlan();
   m_viewer->setMesh(*model()->mesh, upDirection());

@@ -513,6 +513,7 @@ void HardwarePanel::connectDevice() {
                true);
     return;
   }
+  if (settings.connection.transport == hardware::Transport::Tcp) m_form->rememberTcpAddress();  // the next session's
   setMessage(tr("Connecting to %1…").arg(m_link->deviceName()), false);
   m_clockTimer.start();
   updateLimits();

@@ -89,6 +89,11 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   m_layers->setToolTip(tr("Show the layers printed up to this one (all steps, in printing order)"));
   m_layerText = new QLabel(this);
   m_layerText->setObjectName(QStringLiteral("gcodeLayerText"));
+  m_layerZ = new QLabel(this);
+  m_layerZ->setObjectName(QStringLiteral("gcodeLayerZ"));
+  m_layerZ->setToolTip(tr("The layer's height: the nozzle's Z above the platform in its step's pose"));
+  // As wide as the widest height it will show, so the slider does not jump as the text changes.
+  m_layerZ->setMinimumWidth(m_layerZ->fontMetrics().horizontalAdvance(tr("Z %1 mm").arg(QLocale().toString(888.88, 'f', 2))));
   m_travel = new QCheckBox(tr("Travel moves"), this);
   m_travel->setObjectName(QStringLiteral("showTravelMoves"));
 
@@ -105,6 +110,7 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   auto* previewRow = new QHBoxLayout;
   previewRow->addWidget(new QLabel(tr("Layers:"), this));
   previewRow->addWidget(m_layers, 1);
+  previewRow->addWidget(m_layerZ);
   previewRow->addWidget(m_travel);
 
   auto* box = new QGroupBox(tr("G-code"), this);
@@ -220,6 +226,7 @@ void SlicePanel::clearResult() {
   }
   m_preview->setEnabled(false);
   m_layerText->clear();
+  m_layerZ->clear();
   updatePreviewControls();
 }
 
@@ -239,11 +246,16 @@ void SlicePanel::setPreviewShown(bool shown) {
 
 void SlicePanel::setLayerText(const QString& text) { m_layerText->setText(text); }
 
+void SlicePanel::setLayerZ(std::optional<double> zMm) {
+  m_layerZ->setText(zMm ? tr("Z %1 mm").arg(QLocale().toString(*zMm, 'f', 2)) : QString());
+}
+
 void SlicePanel::updatePreviewControls() {
   const bool on = m_hasResult && m_preview->isChecked();
   m_layers->setEnabled(on);
   m_travel->setEnabled(on);
   m_layerText->setVisible(on);
+  m_layerZ->setVisible(on);
 }
 
 }  // namespace multidir::ui
