@@ -19,6 +19,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QLayout>
+#include <QScreen>
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <QVector3D>
@@ -111,7 +112,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   buildStatusBar();
   updateModelStatus();
   onMachineChanged();
-  resize(1480, 900);
+  resize(initialWindowSize(screen() != nullptr ? screen()->availableGeometry().size() : kPreferredWindowSize));
   restoreWindowState(*this);
 }
 
