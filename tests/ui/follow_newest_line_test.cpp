@@ -3,6 +3,7 @@
 
 #include <QPlainTextEdit>
 #include <QScrollBar>
+#include <QTextDocument>
 #include <QTest>
 
 #include "ui/common/follow_newest_line.h"
@@ -47,14 +48,31 @@ TEST_F(FollowNewestLineTest, AReaderScrolledUpStaysWhereHeIs) {
   EXPECT_EQ(bar->value(), bar->maximum());
 }
 
-TEST_F(FollowNewestLineTest, ALogFilledWhileHiddenOpensOnItsNewestLine) {
-  appendLines(log, 300);  // the Hardware dock tabbed away during a run
+// The Hardware dock seen once, then tabbed away during a run: shown again, the log is on its newest line (Qt's
+// own follows only while the log is visible, and jumps to the cursor only on the very first show).
+TEST_F(FollowNewestLineTest, ALogFilledWhileHiddenShowsItsNewestLineAgain) {
+  log.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&log));
+  appendLines(log, 20);
+  log.hide();
+  appendLines(log, 300);
   log.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&log));
   QCoreApplication::processEvents();
   QScrollBar* bar = log.verticalScrollBar();
   ASSERT_GT(bar->maximum(), 0);
   EXPECT_EQ(bar->value(), bar->maximum());
+}
+
+// Past the log's 1,000 lines the oldest go as new ones come: the view stays on the newest.
+TEST_F(FollowNewestLineTest, ALogPastItsLineLimitStaysOnTheNewest) {
+  log.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&log));
+  for (int batch = 0; batch < 30; ++batch) appendLines(log, 50);
+  QScrollBar* bar = log.verticalScrollBar();
+  ASSERT_GT(bar->maximum(), 0);
+  EXPECT_EQ(bar->value(), bar->maximum());
+  EXPECT_EQ(log.document()->blockCount(), 1000);
 }
 
 }  // namespace
