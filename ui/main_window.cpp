@@ -256,7 +256,8 @@ void MainWindow::buildDocks() {
   tabifyDockWidget(machine, m_searchDock);
   tabifyDockWidget(m_searchDock, m_planDock);
   m_searchDock->raise();
-  resizeDocks({overhangs}, {430}, Qt::Horizontal);
+  // Wide enough for the pose and estimate tables without sideways scrolling (ui/common/table_columns.h).
+  resizeDocks({overhangs}, {540}, Qt::Horizontal);
 
   connect(m_overhangPanel, &OverhangPanel::alphaMaxChanged, this, [this] { updateOverhangs(); });
   // One alpha_max, shown in both panels: each follows the other (setting an equal value emits nothing).

@@ -17,6 +17,7 @@
 
 #include "multidir/slicing/estimates.h"
 #include "ui/common/region_palette.h"
+#include "ui/common/table_columns.h"
 
 namespace multidir::ui {
 namespace {
@@ -62,8 +63,7 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   m_table->setObjectName(QStringLiteral("estimatesTable"));
   m_table->setHorizontalHeaderLabels({tr("Step"), tr("Print time"), tr("Filament (m)"), tr("Filament (g)")});
   m_table->verticalHeader()->hide();
-  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  m_table->horizontalHeader()->setStretchLastSection(true);
+  fitColumnsToWidth(m_table, 0);  // the step's name, elided where the dock is narrow
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setMinimumHeight(120);
@@ -197,6 +197,7 @@ void SlicePanel::showResult(const slicing::SlicedJob& job, int layers) {
     m_table->item(m_table->rowCount() - 1, 0)
         ->setToolTip(tr("The whole model printed along up with PrusaSlicer's own supports: the comparison"));
   }
+  setTextTooltips(m_table, 0);
   m_hasResult = true;
   {
     const QSignalBlocker block(m_layers);
