@@ -80,5 +80,25 @@ TEST(StudioTableWidth, EstimatesTableFitsThePlanDockAtTheDefaultWindowSize) {
   expectFits(panel->estimatesTable());
 }
 
+// The step column may be elided: each of its cells says its whole text in its tooltip, unless it has one of its
+// own (the fixed-direction row explains the comparison).
+TEST(StudioTableWidth, ElidedStepNamesAreWholeInTheirTooltips) {
+  SlicePanel panel;
+  slicing::SlicedJob job;
+  slicing::SlicedStep step;
+  step.index = 1;
+  step.gcodeFile = "step-01.gcode";
+  step.estimate = {3600.0, 1000.0, 2.4, 3.0};
+  job.steps.push_back(step);
+  job.total = step.estimate;
+  job.fixedDirection = step.estimate;
+  panel.showResult(job, 1);
+  QTableWidget* table = panel.estimatesTable();
+  ASSERT_EQ(table->rowCount(), 3);
+  EXPECT_EQ(table->item(0, 0)->toolTip(), table->item(0, 0)->text());
+  EXPECT_NE(table->item(2, 0)->toolTip(), table->item(2, 0)->text());
+  EXPECT_FALSE(table->item(2, 0)->toolTip().isEmpty());
+}
+
 }  // namespace
 }  // namespace multidir::ui

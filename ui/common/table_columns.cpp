@@ -26,7 +26,8 @@ void fitColumnsToWidth(QTableWidget* table, int elidedColumn) {
 
 void setTextTooltips(QTableWidget* table, int column) {
   for (int row = 0; row < table->rowCount(); ++row)
-    if (QTableWidgetItem* item = table->item(row, column)) item->setToolTip(item->text());
+    if (QTableWidgetItem* item = table->item(row, column); item != nullptr && item->toolTip().isEmpty())
+      item->setToolTip(item->text());
 }
 
 }  // namespace multidir::ui

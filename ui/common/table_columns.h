@@ -8,7 +8,7 @@ namespace multidir::ui {
 
 // Call after the header labels are set.
 void fitColumnsToWidth(QTableWidget* table, int elidedColumn);
-// Each cell of `column` gets its text as its tooltip (call after filling the table).
+// Each cell of `column` without a tooltip of its own gets its text as its tooltip (call after filling the table).
 void setTextTooltips(QTableWidget* table, int column);
 
 }  // namespace multidir::ui
