@@ -192,139 +192,139 @@
 <context>
     <name>multidir::ui::ConnectionForm</name>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="36"/>
+        <location filename="../ui/device/connection_form.cpp" line="37"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>Drehplattform (4-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="37"/>
+        <location filename="../ui/device/connection_form.cpp" line="38"/>
         <source>Robot arm (5-DOF)</source>
         <translation>Roboterarm (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="41"/>
+        <location filename="../ui/device/connection_form.cpp" line="42"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="42"/>
+        <location filename="../ui/device/connection_form.cpp" line="43"/>
         <source>Modbus RTU (serial)</source>
         <translation>Modbus RTU (seriell)</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="51"/>
+        <location filename="../ui/device/connection_form.cpp" line="52"/>
         <source>Host:</source>
         <translation>Host:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="52"/>
+        <location filename="../ui/device/connection_form.cpp" line="53"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="53"/>
+        <location filename="../ui/device/connection_form.cpp" line="54"/>
         <source>Unit id:</source>
         <translation>Unit-ID:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="68"/>
+        <location filename="../ui/device/connection_form.cpp" line="69"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="69"/>
+        <location filename="../ui/device/connection_form.cpp" line="70"/>
         <source>Even</source>
         <translation>Gerade</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="70"/>
+        <location filename="../ui/device/connection_form.cpp" line="71"/>
         <source>Odd</source>
         <translation>Ungerade</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="74"/>
+        <location filename="../ui/device/connection_form.cpp" line="75"/>
         <source>Serial port:</source>
         <translation>Serielle Schnittstelle:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="75"/>
+        <location filename="../ui/device/connection_form.cpp" line="76"/>
         <source>Baud:</source>
         <translation>Baudrate:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="76"/>
+        <location filename="../ui/device/connection_form.cpp" line="77"/>
         <source>Parity:</source>
         <translation>Parität:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="77"/>
+        <location filename="../ui/device/connection_form.cpp" line="78"/>
         <source>Data bits:</source>
         <translation>Datenbits:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="78"/>
+        <location filename="../ui/device/connection_form.cpp" line="79"/>
         <source>Stop bits:</source>
         <translation>Stoppbits:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="79"/>
+        <location filename="../ui/device/connection_form.cpp" line="80"/>
         <source>Slave id:</source>
         <translation>Slave-ID:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="86"/>
-        <location filename="../ui/device/connection_form.cpp" line="89"/>
+        <location filename="../ui/device/connection_form.cpp" line="87"/>
+        <location filename="../ui/device/connection_form.cpp" line="90"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="87"/>
+        <location filename="../ui/device/connection_form.cpp" line="88"/>
         <source>How long to wait for the first byte of a reply, and for a TCP connection.</source>
         <translation>Wie lange auf das erste Byte einer Antwort und auf eine TCP-Verbindung gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="90"/>
+        <location filename="../ui/device/connection_form.cpp" line="91"/>
         <source>How long to wait between two bytes of one reply.</source>
         <translation>Wie lange zwischen zwei Bytes einer Antwort gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="99"/>
+        <location filename="../ui/device/connection_form.cpp" line="100"/>
         <source> °/s</source>
         <translation> °/s</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="100"/>
+        <location filename="../ui/device/connection_form.cpp" line="101"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="101"/>
+        <location filename="../ui/device/connection_form.cpp" line="102"/>
         <source>Of the robot program&apos;s maximal rotation speed.</source>
         <translation>Anteil an der größten Drehgeschwindigkeit des Roboterprogramms.</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="102"/>
         <location filename="../ui/device/connection_form.cpp" line="103"/>
+        <location filename="../ui/device/connection_form.cpp" line="104"/>
         <source>Speed:</source>
         <translation>Geschwindigkeit:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="107"/>
+        <location filename="../ui/device/connection_form.cpp" line="108"/>
         <source>Device:</source>
         <translation>Gerät:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="108"/>
+        <location filename="../ui/device/connection_form.cpp" line="109"/>
         <source>Transport:</source>
         <translation>Übertragung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="111"/>
+        <location filename="../ui/device/connection_form.cpp" line="112"/>
         <source>Response timeout:</source>
         <translation>Antwort-Timeout:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="112"/>
+        <location filename="../ui/device/connection_form.cpp" line="113"/>
         <source>Byte timeout:</source>
         <translation>Byte-Timeout:</translation>
     </message>
@@ -453,7 +453,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="576"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="578"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
@@ -486,87 +486,87 @@
 <context>
     <name>multidir::ui::ErrorText</name>
     <message>
-        <location filename="../ui/error_text.cpp" line="18"/>
+        <location filename="../ui/common/error_text.cpp" line="18"/>
         <source>The file does not exist or cannot be read.</source>
         <translation>Die Datei existiert nicht oder kann nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="20"/>
+        <location filename="../ui/common/error_text.cpp" line="20"/>
         <source>This file type is not supported: use STL, OBJ, OFF or PLY.</source>
         <translation>Dieser Dateityp wird nicht unterstützt: verwenden Sie STL, OBJ, OFF oder PLY.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="22"/>
+        <location filename="../ui/common/error_text.cpp" line="22"/>
         <source>The file is damaged or does not follow its format.</source>
         <translation>Die Datei ist beschädigt oder entspricht nicht ihrem Format.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="24"/>
+        <location filename="../ui/common/error_text.cpp" line="24"/>
         <source>The model is larger than MultiDir accepts.</source>
         <translation>Das Modell ist größer, als MultiDir annimmt.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="26"/>
+        <location filename="../ui/common/error_text.cpp" line="26"/>
         <source>The file could not be written.</source>
         <translation>Die Datei konnte nicht geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="28"/>
+        <location filename="../ui/common/error_text.cpp" line="28"/>
         <source>The file contains no triangles.</source>
         <translation>Die Datei enthält keine Dreiecke.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="30"/>
+        <location filename="../ui/common/error_text.cpp" line="30"/>
         <source>Some vertex coordinates are not numbers.</source>
         <translation>Einige Eckpunktkoordinaten sind keine Zahlen.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="32"/>
+        <location filename="../ui/common/error_text.cpp" line="32"/>
         <source>The surface is not a clean solid: some edges or vertices are shared by too many faces.</source>
         <translation>Die Oberfläche ist kein sauberer Körper: einige Kanten oder Eckpunkte gehören zu zu vielen Flächen.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="35"/>
+        <location filename="../ui/common/error_text.cpp" line="35"/>
         <source>The surface has holes, so it does not enclose a solid. Close them in a mesh repair tool.</source>
         <translation>Die Oberfläche hat Löcher und umschließt daher keinen Körper. Schließen Sie sie mit einem Netzreparaturwerkzeug.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="38"/>
+        <location filename="../ui/common/error_text.cpp" line="38"/>
         <source>The faces of the surface point in inconsistent directions.</source>
         <translation>Die Flächen der Oberfläche zeigen in widersprüchliche Richtungen.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="40"/>
+        <location filename="../ui/common/error_text.cpp" line="40"/>
         <source>A setting is out of its allowed range.</source>
         <translation>Eine Einstellung liegt außerhalb ihres zulässigen Bereichs.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="42"/>
+        <location filename="../ui/common/error_text.cpp" line="42"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="44"/>
+        <location filename="../ui/common/error_text.cpp" line="44"/>
         <source>The device does not answer: check its power, cable or network.</source>
         <translation>Das Gerät antwortet nicht: prüfen Sie Stromversorgung, Kabel oder Netzwerk.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="46"/>
+        <location filename="../ui/common/error_text.cpp" line="46"/>
         <source>The device reported an error.</source>
         <translation>Das Gerät hat einen Fehler gemeldet.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="48"/>
+        <location filename="../ui/common/error_text.cpp" line="48"/>
         <source>A program MultiDir runs (the slicer) is missing or failed.</source>
         <translation>Ein von MultiDir ausgeführtes Programm (der Slicer) fehlt oder ist fehlgeschlagen.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="50"/>
+        <location filename="../ui/common/error_text.cpp" line="50"/>
         <source>The produced G-code failed MultiDir&apos;s safety checks.</source>
         <translation>Der erzeugte G-Code hat die Sicherheitsprüfungen von MultiDir nicht bestanden.</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="54"/>
+        <location filename="../ui/common/error_text.cpp" line="54"/>
         <source>An internal error occurred: please report it with the model.</source>
         <translation>Ein interner Fehler ist aufgetreten: bitte melden Sie ihn zusammen mit dem Modell.</translation>
     </message>
@@ -574,515 +574,516 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
         <source>Reconnecting…</source>
         <translation>Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
         <source>Connecting…</source>
         <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="73"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
         <source>Fault</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="81"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
         <source>idle</source>
         <translation>im Leerlauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="83"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>turning the platform</source>
         <translation>Plattform wird gedreht</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="85"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>settling</source>
         <translation>Beruhigungszeit</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="87"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="89"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="91"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
         <source>finished</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="93"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="96"/>
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="95"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
         <source>stopped by a device problem</source>
         <translation>durch ein Geräteproblem angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="105"/>
         <source>angle %1</source>
         <translation>Winkel %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="103"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="106"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
         <source>tilt %1, azimuth %2</source>
         <translation>Neigung %1, Azimut %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="115"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>„Fehler löschen“, dann „Aktivieren“ und „Referenzfahrt“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="113"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="116"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>„Fehler löschen“; danach nimmt das Roboterprogramm wieder Fahrbefehle an</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="210"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="213"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="222"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="215"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="224"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>Schließt die Verbindung, ohne dem Gerät einen Befehl zu senden; sein Heartbeat-Watchdog hält es an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="242"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
         <source>Enabled:</source>
         <translation>Aktiviert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="243"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
         <source>Position:</source>
         <translation>Position:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Moving:</source>
         <translation>In Bewegung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Homed:</source>
         <translation>Referenziert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
         <source>Fault:</source>
         <translation>Fehler:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
         <source>Heartbeat:</source>
         <translation>Heartbeat:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
         <source>Last problem:</source>
         <translation>Letztes Problem:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
         <source>Controls</source>
         <translation>Steuerung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
         <source>Enable</source>
         <translation>Aktivieren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>Schaltet den Antrieb der Plattform ein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
         <source>Home</source>
         <translation>Referenzfahrt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>Drehplattform: sucht den Referenzschalter (0°). Roboterarm: richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
         <source>Clear fault</source>
         <translation>Fehler löschen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>Setzt das Gerät nach einem Fehler oder NOT-HALT zurück; danach erneut aktivieren und referenzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
         <source>Tilt</source>
         <translation>Neigung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
         <source>Azimuth</source>
         <translation>Azimut</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
         <source>Jog −</source>
         <translation>Tippen −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
         <source>Jog +</source>
         <translation>Tippen +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
         <source>Angle:</source>
         <translation>Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="270"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
         <source>Tilt:</source>
         <translation>Neigung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="280"/>
         <source>Azimuth:</source>
         <translation>Azimut:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
         <source>Go to</source>
         <translation>Anfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>Bremst ab und hält an; verwirft wartende Befehle.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="303"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="324"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="312"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
         <translation>Drücken, sobald der angeforderte Bereich gedruckt ist (nur beim Drucken von Hand: bei einem Bereich, den der verbundene Drucker druckt, geht es von selbst weiter).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="459"/>
         <source>the platform</source>
         <translation>die Plattform</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="449"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
         <source>the printer</source>
         <translation>den Drucker</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="451"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="462"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
         <translation>NOT-HALT an %1 gesendet. Zum Fortfahren: %2%3.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="463"/>
         <source> and </source>
         <translation> und </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="464"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
         <translation>; beim Drucker „Drucker-NOT-HALT aufheben“ und seine Firmware neu starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="468"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
         <source>Platform: stop confirmed by the device.</source>
         <translation>Plattform: Halt vom Gerät bestätigt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="469"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="480"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
         <translation>Plattform: Halt noch nicht bestätigt; MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="474"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="485"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
         <translation>Drucker: Not-Halt vom Drucker bestätigt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="486"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
         <translation>Drucker: Not-Halt noch nicht bestätigt (%1); MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (%2) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
         <source>Jog step:</source>
         <translation>Tippschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="343"/>
         <source>Print run</source>
         <translation>Drucklauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="336"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="670"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="345"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
         <source>Start run</source>
         <translation>Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="337"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>Dreht die Plattform in Druckreihenfolge in die Ausrichtung jedes Bereichs und fordert dazu auf, jeden Bereich zu drucken.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
         <source>Region done</source>
         <translation>Bereich fertig</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="349"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="389"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="380"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="390"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>Setzt einen pausierten Lauf fort oder wiederholt nach einem Geräteproblem den aktuellen Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="352"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="381"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="391"/>
         <source>Abort</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="366"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="376"/>
         <source>Step:</source>
         <translation>Schritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="367"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="377"/>
         <source>Elapsed:</source>
         <translation>Verstrichen:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="398"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>Die Verbindung zu %1 ist um %2 abgerissen. Die Werte unten stammen nicht mehr vom Gerät; MultiDir versucht weiter, die Verbindung wiederherzustellen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>Der Drucklauf ist pausiert: ein Bereich, der gerade gedruckt wird, darf fertig werden, aber kein neuer Bereich beginnt. Drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="405"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="415"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 antwortet nicht: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="418"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>Die Verbindung steht wieder. Der Drucklauf ist seit dem Verbindungsabbruch weiterhin pausiert: prüfen Sie die Plattform und drücken Sie dann „Fortsetzen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="514"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>Mit diesen Einstellungen ist keine Verbindung möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="520"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="527"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="529"/>
         <source>Disconnected.</source>
         <translation>Getrennt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="537"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>Verbindung um %1 abgerissen; Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
         <source>no: press Enable</source>
         <translation>nein: drücken Sie „Aktivieren“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="550"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
         <source>%1 (target %2)</source>
         <translation>%1 (Ziel %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
         <source>homing</source>
         <translation>Referenzfahrt läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
         <location filename="../ui/device/hardware_panel.cpp" line="551"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
         <source>not needed (robot arm)</source>
         <translation>nicht nötig (Roboterarm)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="565"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="577"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1: an das Gerät gesendet. Zum Weitermachen: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="581"/>
         <source>%1: sent to the device.</source>
         <translation>%1: an das Gerät gesendet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="585"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="587"/>
         <source>Connected to %1.</source>
         <translation>Verbunden mit %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>Der Drucklauf ist abgeschlossen: jeder Bereich wurde gedruckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="602"/>
         <source>The print run was aborted.</source>
         <translation>Der Drucklauf wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="610"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
         <translation>Bereich %1 wird von %2 gedruckt (%3); der Lauf geht weiter, sobald der Drucker ihn als fertig meldet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="615"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>Drucken Sie Bereich %1 (Datei %2) und drücken Sie dann „Bereich fertig“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="642"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>„Lauf starten“ abgelehnt: nicht verbunden; verbinden Sie zuerst das Gerät.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="654"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
         <source>Start run refused: %1</source>
         <translation>„Lauf starten“ abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="673"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="686"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
         <translation>Für den Plan gibt es kein Slicing-Ergebnis: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan, damit der Drucker die Bereiche druckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="675"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="688"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
         <translation>Das Slicing-Ergebnis hat %1 Schritte, der Plan %2 Bereiche: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="696"/>
         <source>%1 refused: %2</source>
         <translation>%1 abgelehnt: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>Grenzen: %1 bis %2 in Schritten von %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="704"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>Grenzen: Neigung bis %1, %n verbotener Kegel</numerusform>
@@ -1090,77 +1091,76 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
         <source> (machine profile)</source>
         <translation> (Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation> (Standardwerte: das Maschinenprofil gilt für eine %1-Maschine)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="712"/>
         <source> (defaults: no machine profile)</source>
-        <translation> (Standardwerte: kein Maschinenprofil)</translation>
+        <translation type="vanished"> (Standardwerte: kein Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="713"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="725"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>; ein geändertes Profil gilt ab dem nächsten Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="743"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>Not-Halt: schaltet die Endstufe der Plattform sofort ab. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="733"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="745"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>Not-Halt: hält das Roboterprogramm mit größter Verzögerung an. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="738"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>Setzt die Plattform nach einem Fehler oder NOT-HALT zurück; danach erneut „Aktivieren“ und „Referenzfahrt“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="739"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>Setzt das Roboterprogramm nach einem Fehler oder NOT-HALT zurück; danach nimmt es wieder Fahrbefehle an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="753"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>Sucht den Referenzschalter (0°); der Antrieb muss aktiviert sein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="742"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>Richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="790"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="802"/>
         <source>unknown since %1</source>
         <translation>unbekannt seit %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="792"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
         <source>not seen yet</source>
         <translation>noch nicht empfangen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="795"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
         <source>%1 s ago</source>
         <translation>vor %1 s</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="816"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>Kein Plan: starten Sie zuerst eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="805"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>Plan mit %n Bereich.</numerusform>
@@ -1168,12 +1168,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
         <translation>Slicing-Ergebnis vorhanden: ein verbundener Drucker druckt den G-Code jedes Bereichs.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="815"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="827"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>%n Bereich gedruckt: abgeschlossen</numerusform>
@@ -1181,17 +1181,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="829"/>
         <source>%1 of %2: %3</source>
         <translation>%1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="831"/>
         <source> (%1, %2)</source>
         <translation> (%1, %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="820"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="832"/>
         <source>; pausing after this region</source>
         <translation>; Pause nach diesem Bereich</translation>
     </message>
@@ -1280,6 +1280,29 @@
         <location filename="../ui/device/job_timeline.cpp" line="157"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::MachineKind</name>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="9"/>
+        <source>3-DOF</source>
+        <translation>3-DOF</translation>
+    </message>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="11"/>
+        <source>rotary platform (4-DOF)</source>
+        <translation>Drehplattform (4-DOF)</translation>
+    </message>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="13"/>
+        <source>tilting (5-DOF)</source>
+        <translation>kippend (5-DOF)</translation>
+    </message>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="15"/>
+        <source>printed apart</source>
+        <translation>getrennt gedruckt</translation>
     </message>
 </context>
 <context>
@@ -1403,182 +1426,197 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="87"/>
+        <location filename="../ui/main_window.cpp" line="93"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="116"/>
+        <location filename="../ui/main_window.cpp" line="124"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="117"/>
+        <location filename="../ui/main_window.cpp" line="125"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="135"/>
+        <location filename="../ui/main_window.cpp" line="143"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>Einen früher gespeicherten Plan anzeigen (ein Ordner mit plan.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="136"/>
+        <location filename="../ui/main_window.cpp" line="144"/>
         <source>&amp;Export plan...</source>
         <translation>Plan &amp;exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="138"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>Den angezeigten Plan speichern: plan.json und eine STL-Datei je Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="149"/>
+        <location filename="../ui/main_window.cpp" line="157"/>
         <source>&amp;Load machine profile...</source>
         <translation>Maschinenprofil &amp;laden...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="154"/>
+        <location filename="../ui/main_window.cpp" line="162"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="158"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="159"/>
+        <location filename="../ui/main_window.cpp" line="167"/>
         <source>&amp;Fit to View</source>
         <translation>In Ansicht ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="161"/>
+        <location filename="../ui/main_window.cpp" line="169"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>&amp;Modell zeigen (Plan ausblenden)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="166"/>
+        <location filename="../ui/main_window.cpp" line="177"/>
         <source>&amp;Search</source>
         <translation>&amp;Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="167"/>
+        <location filename="../ui/main_window.cpp" line="178"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="181"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="223"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
         <source>Overhangs</source>
         <translation>Überhänge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="224"/>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>Machine</source>
         <translation>Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="225"/>
+        <location filename="../ui/main_window.cpp" line="245"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="234"/>
+        <location filename="../ui/main_window.cpp" line="254"/>
         <source>Plan</source>
         <translation>Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="282"/>
+        <location filename="../ui/main_window.cpp" line="303"/>
         <source>Hardware</source>
         <translation>Hardware</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="341"/>
         <source>Printing direction</source>
         <translation>Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="323"/>
+        <location filename="../ui/main_window.cpp" line="344"/>
         <source>Up:</source>
         <translation>Oben:</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="328"/>
+        <location filename="../ui/main_window.cpp" line="351"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>Die Richtung, in der das Modell gedruckt wird: die Plattform liegt darunter, Überhänge werden daran gemessen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="333"/>
+        <location filename="../ui/main_window.cpp" line="356"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="333"/>
+        <location filename="../ui/main_window.cpp" line="356"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="357"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="357"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="335"/>
+        <location filename="../ui/main_window.cpp" line="358"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="335"/>
+        <location filename="../ui/main_window.cpp" line="358"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="120"/>
+        <location filename="../ui/main_window.cpp" line="128"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>Eine Netzdatei (STL, OBJ, OFF oder PLY) oder ein MultiDir-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="147"/>
+        <location filename="../ui/main_window.cpp" line="155"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>Die 3D-Ansicht wie angezeigt als PNG- oder JPEG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="151"/>
+        <location filename="../ui/main_window.cpp" line="159"/>
         <source>Save machine pro&amp;file...</source>
         <translation>Maschinenprofil &amp;speichern...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="181"/>
+        <location filename="../ui/main_window.cpp" line="171"/>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="194"/>
+        <source>S&amp;lice the plan...</source>
+        <translation>Plan s&amp;licen...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="197"/>
+        <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
+        <translation>Jeden Schritt des angezeigten Plans mit seinen Stützen in G-Code slicen (PrusaSlicer)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="201"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="182"/>
+        <location filename="../ui/main_window.cpp" line="202"/>
         <source>&amp;About MultiDir Studio</source>
         <translation>Ü&amp;ber MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
+        <location filename="../ui/main_window.cpp" line="209"/>
         <source>About MultiDir Studio</source>
         <translation>Über MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="190"/>
+        <location filename="../ui/main_window.cpp" line="210"/>
         <source>MultiDir Studio %1</source>
         <translation>MultiDir Studio %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="192"/>
+        <location filename="../ui/main_window.cpp" line="212"/>
         <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
 
 Qt %1</source>
@@ -1587,437 +1625,570 @@ Qt %1</source>
 Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="287"/>
+        <location filename="../ui/main_window.cpp" line="305"/>
         <source>Emergency stop</source>
         <translation>Not-Halt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>The pose search was stopped; its result is dropped.</source>
         <translation>Die Posensuche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="406"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>Die Suche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Open Model or Project</source>
         <translation>Modell oder Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>Netze und Projekte (*.stl *.obj *.off *.ply *.multidir);;Netze (*.stl *.obj *.off *.ply);;MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>%1, %2, %3</source>
         <translation>%1; %2; %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>Pose: %1</source>
         <translation>Pose: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>Benutzerdefiniert (%1, %2, %3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
+        <location filename="../ui/main_window.cpp" line="557"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="541"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>Repaired on load: %1</source>
         <translation>Beim Laden repariert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="555"/>
+        <location filename="../ui/main_window.cpp" line="575"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="579"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="583"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="585"/>
-        <location filename="../ui/main_window.cpp" line="602"/>
+        <location filename="../ui/main_window.cpp" line="607"/>
+        <location filename="../ui/main_window.cpp" line="624"/>
         <source>No model</source>
         <translation>Kein Modell</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="595"/>
+        <location filename="../ui/main_window.cpp" line="617"/>
         <source>Triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="596"/>
+        <location filename="../ui/main_window.cpp" line="618"/>
         <source>Volume: %1 mm³</source>
         <translation>Volumen: %1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="610"/>
+        <location filename="../ui/main_window.cpp" line="632"/>
         <source>Risky area unavailable</source>
         <translation>Risikofläche nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="618"/>
+        <location filename="../ui/main_window.cpp" line="640"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>Risikofläche (%1 oben): %2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="620"/>
+        <location filename="../ui/main_window.cpp" line="642"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>Fläche der Dreiecke, die bei dieser Aufwärtsrichtung um mehr als %1° überhängen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="636"/>
         <location filename="../ui/main_window.cpp" line="659"/>
-        <location filename="../ui/main_window_pose.cpp" line="56"/>
-        <location filename="../ui/main_window_pose.cpp" line="73"/>
+        <location filename="../ui/main_window.cpp" line="682"/>
+        <location filename="../ui/main_window_pose.cpp" line="57"/>
+        <location filename="../ui/main_window_pose.cpp" line="74"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="638"/>
-        <location filename="../ui/main_window_pose.cpp" line="58"/>
+        <location filename="../ui/main_window.cpp" line="661"/>
+        <location filename="../ui/main_window_pose.cpp" line="59"/>
         <source>Fix the machine first: %1</source>
         <translation>Korrigieren Sie zuerst die Maschine: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="640"/>
-        <location filename="../ui/main_window.cpp" line="658"/>
+        <location filename="../ui/main_window.cpp" line="663"/>
+        <location filename="../ui/main_window.cpp" line="681"/>
         <source>A pose search is running: wait for it or cancel it.</source>
         <translation>Eine Posensuche läuft: warten Sie, bis sie fertig ist, oder brechen Sie sie ab.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="657"/>
+        <location filename="../ui/main_window.cpp" line="680"/>
         <source>A search is already running.</source>
         <translation>Eine Suche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="664"/>
-        <location filename="../ui/main_window_pose.cpp" line="81"/>
+        <location filename="../ui/main_window.cpp" line="687"/>
+        <location filename="../ui/main_window_pose.cpp" line="82"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="668"/>
+        <location filename="../ui/main_window.cpp" line="691"/>
         <source>Cannot search: %1</source>
         <translation>Suche nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="669"/>
+        <location filename="../ui/main_window.cpp" line="692"/>
         <source>Cannot search.</source>
         <translation>Suche nicht möglich.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="683"/>
+        <location filename="../ui/main_window.cpp" line="706"/>
         <source>Searching %1...</source>
         <translation>Durchsuche %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="691"/>
+        <location filename="../ui/main_window.cpp" line="714"/>
         <source>Cancelling the search...</source>
         <translation>Suche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="704"/>
+        <location filename="../ui/main_window.cpp" line="727"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>Das Suchergebnis wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="707"/>
+        <location filename="../ui/main_window.cpp" line="730"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>Suche abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="708"/>
+        <location filename="../ui/main_window.cpp" line="731"/>
         <source>Search finished.</source>
         <translation>Suche beendet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="721"/>
+        <location filename="../ui/main_window.cpp" line="744"/>
         <source>Search failed: %1</source>
         <translation>Suche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="753"/>
+        <location filename="../ui/main_window.cpp" line="780"/>
         <source>Growing supports for the plan...</source>
         <translation>Stützen für den Plan werden erzeugt...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="767"/>
+        <location filename="../ui/main_window.cpp" line="792"/>
         <source>Supports grown for the plan.</source>
         <translation>Stützen für den Plan erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="798"/>
+        <location filename="../ui/main_window.cpp" line="828"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>Es gibt keinen Plan zum Exportieren: starten Sie zuerst eine Suche.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="801"/>
+        <location filename="../ui/main_window.cpp" line="831"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>Die Stützen dieses Plans werden noch erzeugt: exportieren Sie ihn erneut, sobald die Statusleiste meldet, dass sie fertig sind.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="805"/>
+        <location filename="../ui/main_window.cpp" line="835"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>Der Ordner %1 konnte nicht angelegt werden: prüfen Sie, ob der übergeordnete Ordner existiert und beschreibbar ist.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="835"/>
+        <location filename="../ui/main_window.cpp" line="865"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>Der Plan konnte nicht nach %1 exportiert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="841"/>
+        <location filename="../ui/main_window.cpp" line="871"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>Plan ohne Stützen nach %1 exportiert, obwohl %2 mm² Risikofläche verbleiben: %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="843"/>
+        <location filename="../ui/main_window.cpp" line="873"/>
         <source>no supports were grown for it.</source>
         <translation>für ihn wurden keine Stützen erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="848"/>
+        <location filename="../ui/main_window.cpp" line="878"/>
         <source>Plan exported to %1.</source>
         <translation>Plan nach %1 exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="855"/>
+        <location filename="../ui/main_window.cpp" line="885"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>Der Plan %1 konnte nicht geöffnet werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="902"/>
+        <location filename="../ui/main_window.cpp" line="932"/>
         <source>Machine profile saved to %1.</source>
         <translation>Maschinenprofil unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="914"/>
+        <location filename="../ui/main_window.cpp" line="944"/>
         <source>Machine profile %1 loaded.</source>
         <translation>Maschinenprofil %1 geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="923"/>
+        <location filename="../ui/main_window.cpp" line="953"/>
         <source>Export Plan to Folder</source>
         <translation>Plan in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="923"/>
+        <location filename="../ui/main_window.cpp" line="953"/>
         <source>-plan</source>
         <translation>-Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="924"/>
+        <location filename="../ui/main_window.cpp" line="954"/>
         <source>Plan folders (*)</source>
         <translation>Planordner (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="930"/>
-        <location filename="../ui/main_window.cpp" line="932"/>
+        <location filename="../ui/main_window.cpp" line="960"/>
+        <location filename="../ui/main_window.cpp" line="962"/>
         <source>Export Plan</source>
         <translation>Plan exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="943"/>
+        <location filename="../ui/main_window.cpp" line="973"/>
         <source>Screenshot saved to %1.</source>
         <translation>Bildschirmfoto unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="948"/>
+        <location filename="../ui/main_window.cpp" line="978"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="949"/>
+        <location filename="../ui/main_window.cpp" line="979"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG-Bilder (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="952"/>
-        <location filename="../ui/main_window.cpp" line="960"/>
+        <location filename="../ui/main_window.cpp" line="982"/>
+        <location filename="../ui/main_window.cpp" line="990"/>
         <source>Export Screenshot</source>
         <translation>Bildschirmfoto exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="965"/>
+        <location filename="../ui/main_window.cpp" line="995"/>
         <source>Open Plan Folder</source>
         <translation>Planordner öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="391"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>Open Plan</source>
         <translation>Plan öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="123"/>
+        <location filename="../ui/main_window.cpp" line="131"/>
         <source>Sa&amp;mples</source>
         <translation>Beis&amp;piele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="133"/>
+        <location filename="../ui/main_window.cpp" line="141"/>
         <source>Open pla&amp;n...</source>
         <translation>Pla&amp;n öffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="140"/>
+        <location filename="../ui/main_window.cpp" line="148"/>
         <source>Export &amp;G-code...</source>
         <translation>&amp;G-Code exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="142"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>Save the sliced plan&apos;s G-code (step-NN.gcode, job.gcode) and its print job</source>
         <translation>Den beim Slicen erzeugten G-Code des Plans (step-NN.gcode, job.gcode) und seinen Druckauftrag speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="145"/>
+        <location filename="../ui/main_window.cpp" line="153"/>
         <source>Export Screens&amp;hot...</source>
         <translation>Bildschirmfoto expo&amp;rtieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="971"/>
-        <location filename="../ui/main_window.cpp" line="977"/>
+        <location filename="../ui/main_window.cpp" line="1001"/>
+        <location filename="../ui/main_window.cpp" line="1007"/>
         <source>Save Machine Profile</source>
         <translation>Maschinenprofil speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="973"/>
+        <location filename="../ui/main_window.cpp" line="1003"/>
         <source>Machine profiles (*.json)</source>
         <translation>Maschinenprofile (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="981"/>
-        <location filename="../ui/main_window.cpp" line="988"/>
+        <location filename="../ui/main_window.cpp" line="1011"/>
+        <location filename="../ui/main_window.cpp" line="1018"/>
         <source>Load Machine Profile</source>
         <translation>Maschinenprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="983"/>
+        <location filename="../ui/main_window.cpp" line="1013"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>Maschinenprofile (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1001"/>
+        <location filename="../ui/main_window.cpp" line="1031"/>
         <source>Loading %1...</source>
         <translation>Lade %1...</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="23"/>
+        <location filename="../ui/main_window_editing.cpp" line="22"/>
         <source>Edit plan</source>
         <translation>Plan bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="61"/>
+        <location filename="../ui/main_window_editing.cpp" line="60"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="63"/>
+        <location filename="../ui/main_window_editing.cpp" line="62"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="66"/>
+        <location filename="../ui/main_window_editing.cpp" line="65"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="60"/>
-        <location filename="../ui/main_window_pose.cpp" line="72"/>
+        <location filename="../ui/main_window_pose.cpp" line="61"/>
+        <location filename="../ui/main_window_pose.cpp" line="73"/>
         <source>A search is running: wait for it or cancel it.</source>
         <translation>Eine Suche läuft: warten Sie, bis sie fertig ist, oder brechen Sie sie ab.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="71"/>
+        <location filename="../ui/main_window_pose.cpp" line="72"/>
         <source>A pose search is already running.</source>
         <translation>Eine Posensuche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="74"/>
+        <location filename="../ui/main_window_pose.cpp" line="75"/>
         <source>This plan was opened without its model: open the model.</source>
         <translation>Dieser Plan wurde ohne sein Modell geöffnet: öffnen Sie das Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="85"/>
+        <location filename="../ui/main_window_pose.cpp" line="86"/>
         <source>Cannot find the best pose: %1</source>
         <translation>Die beste Pose kann nicht gesucht werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="86"/>
+        <location filename="../ui/main_window_pose.cpp" line="87"/>
         <source>Cannot find the best pose.</source>
         <translation>Die beste Pose kann nicht gesucht werden.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="95"/>
+        <location filename="../ui/main_window_pose.cpp" line="96"/>
         <source>Finding the best pose for %1...</source>
         <translation>Beste Pose für %1 wird gesucht...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="103"/>
+        <location filename="../ui/main_window_pose.cpp" line="104"/>
         <source>Cancelling the pose search...</source>
         <translation>Posensuche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="116"/>
+        <location filename="../ui/main_window_pose.cpp" line="117"/>
         <source>The pose search result was dropped: the model or its up direction changed.</source>
         <translation>Das Ergebnis der Posensuche wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="126"/>
+        <location filename="../ui/main_window_pose.cpp" line="127"/>
         <source>Pose search cancelled: the poses that finished are listed; the plan shown is unchanged.</source>
         <translation>Posensuche abgebrochen: die fertigen Posen sind aufgelistet; der angezeigte Plan bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="130"/>
+        <location filename="../ui/main_window_pose.cpp" line="131"/>
         <source>Best pose found.</source>
         <translation>Beste Pose gefunden.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="140"/>
+        <location filename="../ui/main_window_pose.cpp" line="141"/>
         <source>Pose search cancelled before any pose finished: the plan shown is unchanged.</source>
         <translation>Posensuche abgebrochen, bevor eine Pose fertig war: der angezeigte Plan bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="142"/>
+        <location filename="../ui/main_window_pose.cpp" line="143"/>
         <source>Pose search failed: %1</source>
         <translation>Posensuche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="158"/>
+        <location filename="../ui/main_window_pose.cpp" line="159"/>
         <source>Showing pose %1 (up %2, %3, %4): the project is unchanged. &quot;Use this pose&quot; makes it the model&apos;s up; &quot;Show current up&quot; goes back.</source>
         <translation>Pose %1 wird angezeigt (Aufwärtsrichtung %2, %3, %4): das Projekt bleibt unverändert. „Diese Pose verwenden“ macht sie zur Aufwärtsrichtung des Modells; „Aktuelle Aufwärtsrichtung zeigen“ kehrt zurück.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="205"/>
+        <location filename="../ui/main_window_pose.cpp" line="206"/>
         <source>This pose belongs to another model: find the best pose again.</source>
         <translation>Diese Pose gehört zu einem anderen Modell: suchen Sie die beste Pose erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="221"/>
+        <location filename="../ui/main_window_pose.cpp" line="222"/>
         <source>The model now stands on the best pose; its plan is shown.</source>
         <translation>Das Modell steht jetzt in der besten Pose; sein Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="224"/>
+        <location filename="../ui/main_window_pose.cpp" line="225"/>
         <source>The model now stands on pose %1; searching its plan...</source>
         <translation>Das Modell steht jetzt in Pose %1; sein Plan wird gesucht...</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::MeshViewerWidget</name>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="365"/>
+        <source>Open a model (%1) or File &gt; Samples</source>
+        <translation>Modell öffnen (%1) oder Datei &gt; Beispiele</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="557"/>
+        <source>%1, %2, %3 mm</source>
+        <translation>%1; %2; %3 mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="561"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="563"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="564"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="565"/>
+        <source>Distance: %1</source>
+        <translation>Abstand: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="568"/>
+        <source>Click a second point on the model (Esc ends measuring)</source>
+        <translation>Einen zweiten Punkt auf dem Modell anklicken (Esc beendet das Messen)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="29"/>
+        <source>&amp;Front</source>
+        <translation>&amp;Vorne</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="29"/>
+        <source>Look at the model&apos;s front</source>
+        <translation>Das Modell von vorne ansehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="31"/>
+        <source>&amp;Back</source>
+        <translation>&amp;Hinten</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="31"/>
+        <source>Look at the model&apos;s back</source>
+        <translation>Das Modell von hinten ansehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="33"/>
+        <source>&amp;Left</source>
+        <translation>&amp;Links</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="33"/>
+        <source>Look at the model&apos;s left side</source>
+        <translation>Die linke Seite des Modells ansehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="35"/>
+        <source>&amp;Right</source>
+        <translation>&amp;Rechts</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="36"/>
+        <source>Look at the model&apos;s right side</source>
+        <translation>Die rechte Seite des Modells ansehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="37"/>
+        <source>&amp;Top</source>
+        <translation>&amp;Oben</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="38"/>
+        <source>Look down the printing direction (Up)</source>
+        <translation>Entgegen der Druckrichtung (Oben) auf das Modell sehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="39"/>
+        <source>Botto&amp;m</source>
+        <translation>U&amp;nten</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="40"/>
+        <source>Look up at the model from below the platform</source>
+        <translation>Das Modell von unterhalb der Plattform ansehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="41"/>
+        <source>&amp;Isometric</source>
+        <translation>&amp;Isometrisch</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="42"/>
+        <source>Look at the front, the right and the top equally</source>
+        <translation>Vorder-, rechte und Oberseite gleich stark verkürzt ansehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="45"/>
+        <source>&amp;Standard views</source>
+        <translation>&amp;Standardansichten</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="59"/>
+        <source>&amp;Orthographic</source>
+        <translation>&amp;Orthografisch</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="64"/>
+        <source>Parallel projection: equal lengths look equal wherever they are (5)</source>
+        <translation>Parallelprojektion: gleiche Längen erscheinen überall gleich lang (5)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="68"/>
+        <source>M&amp;easure distance</source>
+        <translation>Abstand m&amp;essen</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="73"/>
+        <source>Click two points on the model: their coordinates and the distance between them (M; Esc ends)</source>
+        <translation>Zwei Punkte auf dem Modell anklicken: ihre Koordinaten und ihr Abstand (M; Esc beendet)</translation>
     </message>
 </context>
 <context>
@@ -2049,7 +2220,7 @@ Qt %1</translation>
     <message>
         <location filename="../ui/panels/overhang_panel.cpp" line="65"/>
         <source>Risky faces (need support when printed along the up direction)</source>
-        <translation>Risikoflächen (brauchen Stützen beim Druck in Aufwärtsrichtung)</translation>
+        <translation>Dreiecke der Risikofläche (brauchen Stützen beim Druck in Aufwärtsrichtung)</translation>
     </message>
     <message>
         <location filename="../ui/panels/overhang_panel.cpp" line="68"/>
@@ -2064,7 +2235,7 @@ Qt %1</translation>
     <message>
         <location filename="../ui/panels/overhang_panel.cpp" line="70"/>
         <source>Risky faces:</source>
-        <translation>Risikoflächen:</translation>
+        <translation>Dreiecke der Risikofläche:</translation>
     </message>
     <message>
         <location filename="../ui/panels/overhang_panel.cpp" line="75"/>
@@ -2090,22 +2261,22 @@ Qt %1</translation>
 <context>
     <name>multidir::ui::PictureFile</name>
     <message>
-        <location filename="../ui/picture_file.cpp" line="32"/>
+        <location filename="../ui/common/picture_file.cpp" line="32"/>
         <source>Could not save %1: there is no picture to save.</source>
         <translation>%1 konnte nicht gespeichert werden: es gibt kein Bild zum Speichern.</translation>
     </message>
     <message>
-        <location filename="../ui/picture_file.cpp" line="35"/>
+        <location filename="../ui/common/picture_file.cpp" line="35"/>
         <source>Could not save %1: give the file name the extension .png or .jpg.</source>
         <translation>%1 konnte nicht gespeichert werden: geben Sie dem Dateinamen die Endung .png oder .jpg.</translation>
     </message>
     <message>
-        <location filename="../ui/picture_file.cpp" line="42"/>
+        <location filename="../ui/common/picture_file.cpp" line="42"/>
         <source>Could not save %1: the file cannot be written there; check that its folder exists and may be written to.</source>
         <translation>%1 konnte nicht gespeichert werden: die Datei kann dort nicht geschrieben werden; prüfen Sie, ob ihr Ordner existiert und beschreibbar ist.</translation>
     </message>
     <message>
-        <location filename="../ui/picture_file.cpp" line="45"/>
+        <location filename="../ui/common/picture_file.cpp" line="45"/>
         <source>Could not save %1: %2</source>
         <translation>%1 konnte nicht gespeichert werden: %2</translation>
     </message>
@@ -2114,7 +2285,7 @@ Qt %1</translation>
     <name>multidir::ui::PlanPanel</name>
     <message>
         <location filename="../ui/panels/plan_panel.cpp" line="46"/>
-        <location filename="../ui/panels/plan_panel.cpp" line="175"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="176"/>
         <source>No plan yet: run a search or open a plan.</source>
         <translation>Noch kein Plan: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
@@ -2131,7 +2302,7 @@ Qt %1</translation>
     <message>
         <location filename="../ui/panels/plan_panel.cpp" line="52"/>
         <source>Risky (mm²)</source>
-        <translation>Risiko (mm²)</translation>
+        <translation>Risikofläche (mm²)</translation>
     </message>
     <message>
         <location filename="../ui/panels/plan_panel.cpp" line="52"/>
@@ -2214,22 +2385,22 @@ Qt %1</translation>
         <translation>Drehung %1°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="141"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="142"/>
         <source>tilt %1°, azimuth %2°</source>
         <translation>Neigung %1°, Azimut %2°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="149"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="151"/>
         <source>No supports were grown for this plan</source>
         <translation>Für diesen Plan wurden keine Stützen erzeugt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/plan_panel.cpp" line="153"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="154"/>
         <source>%n region(s); J_G %1 mm² before, %2 mm² after.</source>
         <translation>
             <numerusform>%n Bereich; J_G vorher %1 mm², nachher %2 mm².</numerusform>
@@ -2237,7 +2408,7 @@ Qt %1</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="208"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="209"/>
         <source>of %1</source>
         <translation>von %1</translation>
     </message>
@@ -2342,7 +2513,7 @@ J_G after: %2 mm² (%3 mm² before editing)</source>
 J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="413"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="425"/>
         <source>Tilting turns the plane about the middle of its cut, so its offset (measured from the origin along the normal) went from %1 mm to %2 mm.</source>
         <translation>Beim Neigen dreht sich die Ebene um die Mitte ihrer Schnittfläche, daher hat sich ihr Versatz (vom Ursprung entlang der Normalen gemessen) von %1 mm auf %2 mm geändert.</translation>
     </message>
@@ -2360,68 +2531,67 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Ruhelage</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="31"/>
         <source>sampled</source>
-        <translation>abgetastet</translation>
+        <translation type="vanished">abgetastet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="38"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="37"/>
         <source>Best pose</source>
         <translation>Beste Pose</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="44"/>
         <source>Poses tried: the current up and the poses the model stands in on its own</source>
         <translation>Probierte Posen: die aktuelle Aufwärtsrichtung und die Posen, in denen das Modell von selbst steht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="50"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="49"/>
         <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
         <translation>Posen, die die volle Suche mit den Einstellungen der Registerkarte „Suche“ erhalten (die aktuelle Aufwärtsrichtung und die am besten bewerteten anderen); die übrigen werden mit einem schnellen gierigen Plan bewertet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="55"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="54"/>
         <source>Find best pose</source>
         <translation>Beste Pose finden</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="57"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="133"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="137"/>
         <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
         <translation>Ausprobieren, wie das Modell auf der Plattform stehen könnte, jede Pose mit ihrer eigenen Zerlegung, und die mit der kleinsten verbleibenden Risikofläche behalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="59"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Up</source>
         <translation>Oben</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Contact (mm²)</source>
         <translation>Auflage (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Margin (mm)</source>
         <translation>Reserve (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
         <translation>Fläche des Stücks der konvexen Hülle des Modells, das in dieser Pose auf der Plattform steht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
         <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
         <translation>Wie weit der Schwerpunkt innerhalb dieser Fläche liegt: das Modell steht nur, wenn der Wert positiv ist</translation>
     </message>
@@ -2441,99 +2611,99 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="79"/>
         <source>Risky area of the whole model printed along this up alone (J_G before)</source>
         <translation>Risikofläche des ganzen Modells, allein in dieser Aufwärtsrichtung gedruckt (J_G vorher)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="80"/>
         <source>J_G of the plan found for this pose</source>
         <translation>J_G des für diese Pose gefundenen Plans</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="83"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
         <source>Use this pose</source>
         <translation>Diese Pose verwenden</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="85"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
         <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
         <translation>Die ausgewählte Pose zur Aufwärtsrichtung des Modells machen; für die gewählte Pose wird ihr Plan angezeigt, für eine andere Pose wird gesucht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
         <source>Show current up</source>
         <translation>Aktuelle Aufwärtsrichtung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
         <source>End the preview of a pose: show the model with its up again</source>
         <translation>Die Vorschau einer Pose beenden: das Modell wieder mit seiner Aufwärtsrichtung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="92"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="96"/>
         <source>Poses to try:</source>
         <translation>Zu probierende Posen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="97"/>
         <source>Full searches:</source>
         <translation>Volle Suchen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="144"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="152"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="148"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="156"/>
         <source>Scoring poses with quick plans...</source>
         <translation>Posen werden mit schnellen Plänen bewertet...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="153"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="157"/>
         <source>Full searches of the best poses...</source>
         <translation>Volle Suchen für die besten Posen...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="154"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
         <source>Choosing the best pose...</source>
         <translation>Beste Pose wird gewählt...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="163"/>
         <source>Cancelling the pose search...</source>
         <translation>Posensuche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
         <source>full search</source>
         <translation>volle Suche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
         <source>quick plan</source>
         <translation>schneller Plan</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
         <source>not scored</source>
         <translation>nicht bewertet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="182"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
         <source>chosen</source>
         <translation>gewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="205"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>Beste Pose: Aufwärtsrichtung %1 (%2), J_G %3 mm², %n Bereich.</numerusform>
@@ -2541,12 +2711,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>Abgebrochen: die fertigen Posen sind aufgelistet. %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="228"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="234"/>
         <source>, in use</source>
         <translation>, in Verwendung</translation>
     </message>
@@ -3190,265 +3360,290 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SearchPanel</name>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="43"/>
+        <location filename="../ui/panels/search_panel.cpp" line="45"/>
         <source>Beam search (Algorithm 1)</source>
         <translation>Strahlsuche (Algorithmus 1)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="44"/>
+        <location filename="../ui/panels/search_panel.cpp" line="46"/>
         <source>Constrained greedy</source>
         <translation>Eingeschränkt gierig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="45"/>
+        <location filename="../ui/panels/search_panel.cpp" line="47"/>
         <source>Greedy</source>
         <translation>Gierig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="50"/>
+        <location filename="../ui/panels/search_panel.cpp" line="52"/>
         <source>How many partial plans each level keeps (b)</source>
         <translation>Wie viele Teilpläne jede Ebene behält (b)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="56"/>
+        <location filename="../ui/panels/search_panel.cpp" line="58"/>
         <source>w: every region cut off keeps at least the model&apos;s volume divided by w</source>
         <translation>w: jeder abgetrennte Bereich behält mindestens das Modellvolumen geteilt durch w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="61"/>
+        <location filename="../ui/panels/search_panel.cpp" line="63"/>
         <source>Beam search only: runs at this many region scales side by side, the smallest region V/w, V/2w, V/4w, ..., the beam width shared among them, and keeps the best plan. No single w suits every model. 1: one beam search at w</source>
         <translation>Nur Strahlsuche: läuft nebeneinander auf so vielen Regionsskalen (kleinste Region V/w, V/2w, V/4w, ...), teilt die Strahlbreite unter ihnen auf und behält den besten Plan. Kein einzelnes w passt zu jedem Modell. 1: eine Strahlsuche bei w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="68"/>
+        <location filename="../ui/panels/search_panel.cpp" line="70"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>Kandidatennormalen, auf der ganzen Kugel abgetastet (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="73"/>
-        <location filename="../ui/panels/search_panel.cpp" line="87"/>
+        <location filename="../ui/panels/search_panel.cpp" line="75"/>
+        <location filename="../ui/panels/search_panel.cpp" line="89"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="75"/>
+        <location filename="../ui/panels/search_panel.cpp" line="77"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>Abstand der Kandidatenebenen entlang jeder Normalen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="80"/>
+        <location filename="../ui/panels/search_panel.cpp" line="82"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="84"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>Größter selbsttragender Winkel, mit dem die Suche plant</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="89"/>
+        <location filename="../ui/panels/search_panel.cpp" line="91"/>
         <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
         <translation>Kein Bereich, auch nicht der auf der Plattform, ist entlang seiner Druckrichtung dünner als dieser Wert</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="95"/>
+        <location filename="../ui/panels/search_panel.cpp" line="97"/>
         <source> % of J_G</source>
         <translation> % von J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="97"/>
+        <location filename="../ui/panels/search_panel.cpp" line="99"/>
         <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
         <translation>Eine Ebene bleibt nur, wenn ihr Entfernen J_G um mindestens diesen Anteil des vorherigen J_G (und um mindestens 1 mm²) erhöhen würde: jeder Bereich kostet eine Plattformbewegung und eine Naht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="103"/>
+        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <source>After the search, move every plane continuously (normal and offset) to lower J_G further, every constraint kept; higher values refine more finely and take longer</source>
+        <translation>Nach der Suche jede Ebene stufenlos verschieben (Normale und Versatz), um J_G weiter zu senken, wobei alle Bedingungen eingehalten werden; höhere Werte verfeinern genauer und dauern länger</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="112"/>
         <source>machine&apos;s axis only</source>
         <translation>nur Achse der Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="104"/>
+        <location filename="../ui/panels/search_panel.cpp" line="113"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4-DOF: zusätzlich so viele über 180° verteilte Drehachsen probieren und die beste behalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <location filename="../ui/panels/search_panel.cpp" line="116"/>
         <source>Scheme:</source>
         <translation>Verfahren:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="108"/>
+        <location filename="../ui/panels/search_panel.cpp" line="117"/>
         <source>Beam width:</source>
         <translation>Strahlbreite:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="110"/>
+        <location filename="../ui/panels/search_panel.cpp" line="119"/>
         <source>Volume divisor w:</source>
         <translation>Volumenteiler w:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="111"/>
+        <location filename="../ui/panels/search_panel.cpp" line="120"/>
         <source>Scales:</source>
         <translation>Skalen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="113"/>
+        <location filename="../ui/panels/search_panel.cpp" line="122"/>
         <source>Normals:</source>
         <translation>Normalen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="114"/>
+        <location filename="../ui/panels/search_panel.cpp" line="123"/>
         <source>Offset step:</source>
         <translation>Versatzschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="115"/>
+        <location filename="../ui/panels/search_panel.cpp" line="124"/>
         <source>Max. overhang angle α:</source>
         <translation>Max. Überhangwinkel α:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="116"/>
+        <location filename="../ui/panels/search_panel.cpp" line="125"/>
         <source>Min. region height:</source>
         <translation>Min. Bereichshöhe:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="117"/>
+        <location filename="../ui/panels/search_panel.cpp" line="126"/>
         <source>Min. gain per plane:</source>
         <translation>Min. Gewinn je Ebene:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="118"/>
+        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <source>Polish the planes:</source>
+        <translation>Ebenen polieren:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="128"/>
         <source>Axes to try:</source>
         <translation>Zu probierende Achsen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="121"/>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
         <source>&amp;Run search</source>
         <translation>Suche &amp;starten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="124"/>
+        <location filename="../ui/panels/search_panel.cpp" line="134"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="149"/>
+        <location filename="../ui/panels/search_panel.cpp" line="161"/>
         <source>Progress</source>
         <translation>Fortschritt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="157"/>
+        <location filename="../ui/panels/search_panel.cpp" line="169"/>
         <source>Level:</source>
         <translation>Stufe:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="158"/>
+        <location filename="../ui/panels/search_panel.cpp" line="170"/>
         <source>Beams alive:</source>
         <translation>Aktive Strahlen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="159"/>
+        <location filename="../ui/panels/search_panel.cpp" line="171"/>
         <source>Best J_G:</source>
         <translation>Bestes J_G:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="160"/>
+        <location filename="../ui/panels/search_panel.cpp" line="172"/>
         <source>Candidates scored:</source>
         <translation>Bewertete Kandidaten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="181"/>
+        <location filename="../ui/panels/search_panel.cpp" line="193"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="230"/>
+        <location filename="../ui/panels/search_panel.cpp" line="245"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>Nach Schnittebenen suchen, mit denen das Modell mit weniger Stützen druckbar wird</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="301"/>
+        <location filename="../ui/panels/search_panel.cpp" line="304"/>
+        <source>%1 (polishing)</source>
+        <translation>%1 (Polieren)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="317"/>
         <source>Cancelling: keeping the best plan so far... %1</source>
         <translation>Abbruch: der bisher beste Plan wird behalten... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="303"/>
+        <location filename="../ui/panels/search_panel.cpp" line="319"/>
         <source>%1 %2 - %3</source>
         <translation>%1 %2 - %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="305"/>
+        <location filename="../ui/panels/search_panel.cpp" line="321"/>
         <source>Level 1 of %1: scoring candidates... %2</source>
         <translation>Stufe 1 von %1: Kandidaten werden bewertet... %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="306"/>
+        <location filename="../ui/panels/search_panel.cpp" line="322"/>
         <source>Scoring candidates... %1</source>
         <translation>Kandidaten werden bewertet... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="309"/>
+        <location filename="../ui/panels/search_panel.cpp" line="326"/>
+        <source>Polishing the planes: %1 % · best J_G %2 mm² · %3</source>
+        <translation>Ebenen polieren: %1 % · bestes J_G %2 mm² · %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="331"/>
         <source>Level %1 of %2</source>
         <translation>Stufe %1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="309"/>
+        <location filename="../ui/panels/search_panel.cpp" line="331"/>
         <source>Level %1</source>
         <translation>Ebene %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="310"/>
+        <location filename="../ui/panels/search_panel.cpp" line="332"/>
         <source>Axis %1 of %2, %3</source>
         <translation>Achse %1 von %2, %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="311"/>
+        <location filename="../ui/panels/search_panel.cpp" line="333"/>
         <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
         <translation>%1 · aktive Strahlen: %2 · bestes J_G %3 mm² · %4 Kandidaten · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="372"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
         <translation>Die Suche lief auf einer vereinfachten Kopie mit %1 Flächen; ihre Ebenen schneiden danach das vollständige Modell, und alle angezeigten Zahlen beziehen sich auf das vollständige Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="371"/>
+        <location filename="../ui/panels/search_panel.cpp" line="393"/>
         <source>Stopped</source>
         <translation>Angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="262"/>
-        <location filename="../ui/panels/search_panel.cpp" line="290"/>
-        <location filename="../ui/panels/search_panel.cpp" line="329"/>
+        <location filename="../ui/panels/search_panel.cpp" line="277"/>
+        <location filename="../ui/panels/search_panel.cpp" line="306"/>
+        <location filename="../ui/panels/search_panel.cpp" line="351"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="287"/>
+        <location filename="../ui/panels/search_panel.cpp" line="302"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1 (Achse %2 von %3)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="328"/>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="328"/>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>Done</source>
         <translation>Fertig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="334"/>
+        <location filename="../ui/panels/search_panel.cpp" line="356"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>Abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="338"/>
+        <location filename="../ui/panels/search_panel.cpp" line="360"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>Keine Verbesserung: keine Schnittebene verringert die Risikofläche (J_G bleibt %1 mm²). Versuchen Sie mehr Normalen, einen kleineren Versatzschritt, ein größeres w oder eine andere Maschine.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <location filename="../ui/panels/search_panel.cpp" line="365"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>Nicht stützenfrei: %1 mm² brauchen noch Stützen (vorher %2 mm²), in %n Bereich.</numerusform>
@@ -3456,7 +3651,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="347"/>
+        <location filename="../ui/panels/search_panel.cpp" line="369"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>Stützenfrei in %n Bereich (J_G war %1 mm²).</numerusform>
@@ -3464,12 +3659,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="363"/>
+        <location filename="../ui/panels/search_panel.cpp" line="385"/>
         <source>Failed</source>
         <translation>Fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="364"/>
+        <location filename="../ui/panels/search_panel.cpp" line="386"/>
         <source>%1
 %2</source>
         <translation>%1
@@ -3479,107 +3674,156 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SliceDialog</name>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="39"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
         <source>The firmware turns the platform (axis %1): one program, job.gcode, with every step.</source>
         <translation>Die Firmware dreht die Plattform (Achse %1): ein Programm, job.gcode, mit allen Schritten.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="42"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="84"/>
         <source>MultiDir turns the platform over Modbus (Hardware dock): one program per step.</source>
         <translation>MultiDir dreht die Plattform über Modbus (Fenster „Hardware“): ein Programm je Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="44"/>
         <source>The firmware tilts (axis %1) and rotates (axis %2) the platform; MultiDir does not write their program yet, so it prints one-step plans only.</source>
-        <translation>Die Firmware kippt (Achse %1) und dreht (Achse %2) die Plattform; MultiDir schreibt deren Programm noch nicht, daher druckt sie nur Pläne mit einem Schritt.</translation>
+        <translation type="vanished">Die Firmware kippt (Achse %1) und dreht (Achse %2) die Plattform; MultiDir schreibt deren Programm noch nicht, daher druckt sie nur Pläne mit einem Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="50"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="27"/>
+        <source>Klipper with tilt and rotation steppers, 0.4 mm nozzle</source>
+        <translation>Klipper mit Kipp- und Drehschrittmotor, 0,4-mm-Düse</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="28"/>
+        <source>Klipper with a rotary A axis, 0.4 mm nozzle</source>
+        <translation>Klipper mit einer Drehachse A, 0,4-mm-Düse</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="29"/>
+        <source>Generic Marlin 220x220, 0.4 mm nozzle (platform over Modbus)</source>
+        <translation>Generischer Marlin 220x220, 0,4-mm-Düse (Plattform über Modbus)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="30"/>
+        <source>Open5x-like Prusa i3, RepRapFirmware U tilt + V rotation, 0.4 mm nozzle</source>
+        <translation>Prusa i3 nach Art von Open5x, RepRapFirmware U kippen + V drehen, 0,4-mm-Düse</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="32"/>
+        <source>Robot arm platform, 0.8 mm nozzle (paper set-up)</source>
+        <translation>Roboterarm-Plattform, 0,8-mm-Düse (Aufbau aus dem Artikel)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="59"/>
+        <source>A plan printed apart is sliced part by part on plates: use &apos;multidir apart&apos; (docs/apart.md).</source>
+        <translation>Ein getrennt gedruckter Plan wird Teil für Teil auf Druckplatten gesliced: verwenden Sie „multidir apart“ (docs/apart.md).</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="64"/>
+        <source>This printer cannot turn the part: it prints one-step (3-DOF) plans only.</source>
+        <translation>Dieser Drucker kann das Teil nicht drehen: er druckt nur einstufige (3-DOF) Pläne.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="68"/>
+        <source>This printer turns the platform about one axis: it cannot print a 5-DOF plan. Choose a printer with two firmware axes or a robot arm.</source>
+        <translation>Dieser Drucker dreht die Plattform nur um eine Achse: er kann keinen 5-DOF-Plan drucken. Wählen Sie einen Drucker mit zwei Firmware-Achsen oder einen Roboterarm.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
+        <source>The firmware tilts (axis %1) and rotates (axis %2) the platform: one program, job.gcode, with every step and the turns between them.</source>
+        <translation>Die Firmware kippt (Achse %1) und dreht (Achse %2) die Plattform: ein Programm, job.gcode, mit allen Schritten und den Drehungen dazwischen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
         <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
         <translation>Ein gewöhnlicher Drucker: er kann das Teil nicht drehen und druckt daher nur Pläne mit einem Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="57"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
         <source>Slice the Plan</source>
         <translation>Plan slicen</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="65"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="114"/>
         <source>Load a PrusaSlicer .ini...</source>
         <translation>PrusaSlicer-.ini laden...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="75"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="124"/>
         <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
         <translation>Wie die Firmware die Plattform dreht: MANUAL_STEPPER bei Klipper oder G1 A bei Marlin und RepRapFirmware</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="80"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="129"/>
         <source>layer_height=0.3 fill_density=10%</source>
         <translation>layer_height=0.3 fill_density=10%</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="130"/>
         <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
         <translation>PrusaSlicer-Einstellungen, die die des Profils überschreiben, als KEY=VALUE durch Leerzeichen getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="131"/>
         <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
         <translation>Zusätzlich das ganze Modell in Aufwärtsrichtung mit den Stützen des Slicers slicen (Vergleich)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="135"/>
         <source>The prusa-slicer program: a name found on PATH, or a full path</source>
         <translation>Das Programm prusa-slicer: ein Name, der im PATH gefunden wird, oder ein vollständiger Pfad</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="94"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="143"/>
         <source>Printer:</source>
         <translation>Drucker:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="96"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="145"/>
         <source>Dialect:</source>
         <translation>Dialekt:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="146"/>
         <source>Slicer settings:</source>
         <translation>Slicer-Einstellungen:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="148"/>
         <source>Slicer program:</source>
         <translation>Slicer-Programm:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="101"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="150"/>
         <source>Slice</source>
         <translation>Slicen</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="127"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
         <source>Cannot use the printer profile: %1</source>
         <translation>Das Druckerprofil kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="162"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="186"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="222"/>
         <source>Load a PrusaSlicer Printer Profile</source>
         <translation>PrusaSlicer-Druckerprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="164"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="224"/>
         <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
         <translation>PrusaSlicer-Profile (*.ini);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="179"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="239"/>
         <source>Choose a printer profile.</source>
         <translation>Wählen Sie ein Druckerprofil.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="185"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="245"/>
         <source>Slicer settings: %1</source>
         <translation>Slicer-Einstellungen: %1</translation>
     </message>
@@ -3661,7 +3905,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
         <location filename="../ui/panels/slice_panel.cpp" line="45"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="148"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>Jeden Schritt des angezeigten Plans mit seinen Stützen zu G-Code slicen (PrusaSlicer)</translation>
     </message>
@@ -3716,7 +3960,18 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Die Schichten bis einschließlich dieser zeigen (alle Schritte, in Druckreihenfolge)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="92"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="94"/>
+        <source>The layer&apos;s height: the nozzle&apos;s Z above the platform in its step&apos;s pose</source>
+        <translation>Die Höhe der Schicht: das Z der Düse über der Plattform in der Lage ihres Schritts</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="96"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="250"/>
+        <source>Z %1 mm</source>
+        <translation>Z %1 mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="97"/>
         <source>Travel moves</source>
         <translation>Leerfahrten</translation>
     </message>
@@ -3726,57 +3981,57 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Extrusion, die auf nichts zuvor Gedrucktem aufliegt, wie die Prüfung sie findet (multidir audit, Prüfung b): in der G-Code-Vorschau magenta gezeichnet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="207"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="213"/>
         <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
         <translation>Ungestützte Extrusion: %1 mm (%2 %) in Magenta</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="106"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="111"/>
         <source>Layers:</source>
         <translation>Schichten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="110"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="116"/>
         <source>G-code</source>
         <translation>G-Code</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="136"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>Zeigen Sie zuerst einen Plan an: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="154"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="160"/>
         <source>Starting the slicer...</source>
         <translation>Slicer wird gestartet...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="177"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="185"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="191"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
         <source>Total (%1)</source>
         <translation>Gesamt (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="190"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="196"/>
         <source>Fixed direction, slicer supports</source>
         <translation>Feste Richtung, Slicer-Stützen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="192"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>Das ganze Modell in Aufwärtsrichtung mit den eigenen Stützen von PrusaSlicer gedruckt: der Vergleich</translation>
     </message>
@@ -3784,74 +4039,74 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SliceSession</name>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="45"/>
         <location filename="../ui/slicing/slice_session.cpp" line="46"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="47"/>
         <source>Slicing failed: %1</source>
         <translation>Slicen fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="52"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="53"/>
         <source>Slicing cancelled: nothing was written.</source>
         <translation>Slicen abgebrochen: nichts wurde geschrieben.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="53"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="54"/>
         <source>Slicing cancelled.</source>
         <translation>Slicen abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="62"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="63"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>Zeigen Sie zuerst einen Plan an: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="64"/>
-        <location filename="../ui/slicing/slice_session.cpp" line="118"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="65"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="122"/>
         <source>The plan&apos;s supports are still being grown: slice it when they are ready.</source>
         <translation>Die Stützen des Plans werden noch erzeugt: slicen Sie ihn, sobald sie fertig sind.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="76"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="78"/>
         <source>The plan changed: slicing was cancelled.</source>
         <translation>Der Plan hat sich geändert: das Slicen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="78"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="80"/>
         <source>The plan changed: slice it again for its G-code.</source>
         <translation>Der Plan hat sich geändert: slicen Sie ihn erneut, um seinen G-Code zu erhalten.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="110"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="114"/>
         <source>There is no plan to slice: run a search or open a plan.</source>
         <translation>Es gibt keinen Plan zum Slicen: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="114"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="118"/>
         <source>A slicing job is already running.</source>
         <translation>Ein Slicing-Auftrag läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="142"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="146"/>
         <source>Slicing without supports although the plan leaves risky area: %1</source>
         <translation>Slicen ohne Stützen, obwohl der Plan Risikofläche übrig lässt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="143"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="147"/>
         <source>no supports were grown for it.</source>
         <translation>für ihn wurden keine Stützen erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="148"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="152"/>
         <source>Slicing the plan for %1...</source>
         <translation>Slicen des Plans für %1...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="155"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="159"/>
         <source>Cancelling: stopping the slicer...</source>
         <translation>Abbruch: Slicer wird angehalten...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="170"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
         <source>Sliced for %1: %n step(s), %2 of printing.</source>
         <translation>
             <numerusform>Slicen für %1 abgeschlossen: %n Schritt, %2 Druckzeit.</numerusform>
@@ -3859,27 +4114,27 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="178"/>
         <source>Slicing finished.</source>
         <translation>Slicen abgeschlossen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="175"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="179"/>
         <source>Slicing finished; the audit failed.</source>
         <translation>Slicen abgeschlossen; die Prüfung ist fehlgeschlagen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="208"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
         <source>Layer %1 of %2: step %3, its layer %4</source>
         <translation>Schicht %1 von %2: Schritt %3, dessen Schicht %4</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="220"/>
         <source>There is no G-code to export: slice the plan first.</source>
         <translation>Es gibt keinen G-Code zum Exportieren: slicen Sie zuerst den Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="224"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="230"/>
         <source>G-code exported to %1 (%n file(s)).</source>
         <translation>
             <numerusform>G-Code nach %1 exportiert (%n Datei).</numerusform>
@@ -3887,28 +4142,28 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
         <source>Export G-code to Folder</source>
         <translation>G-Code in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
         <source>-gcode</source>
         <translation>-gcode</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="235"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
         <source>G-code folders (*)</source>
         <translation>G-Code-Ordner (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
-        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="247"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="254"/>
         <source>Export G-code</source>
         <translation>G-Code exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="242"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
         <source>%1 holds files that are not a MultiDir job (%2 is one).
 
 Write the job into this folder anyway? Files with the job&apos;s names are replaced; the others stay.</source>
@@ -3918,109 +4173,127 @@ Den Auftrag trotzdem in diesen Ordner schreiben? Dateien mit den Namen des Auftr
     </message>
 </context>
 <context>
+    <name>multidir::ui::StudioDocument</name>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="129"/>
+        <source>This job was sliced from another plan than the one shown: slice the plan shown again.</source>
+        <translation>Dieser Auftrag wurde aus einem anderen als dem angezeigten Plan gesliced: slicen Sie den angezeigten Plan erneut.</translation>
+    </message>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="158"/>
+        <source>A print run already holds the device session&apos;s job: stop it before starting another.</source>
+        <translation>Ein Drucklauf hält bereits den Auftrag der Gerätesitzung: beenden Sie ihn, bevor Sie einen anderen starten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="162"/>
+        <source>There is no plan to run: run a search or open a plan first.</source>
+        <translation>Es gibt keinen Plan zum Ausführen: führen Sie zuerst eine Suche aus oder öffnen Sie einen Plan.</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::StudioStartup</name>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="64"/>
+        <location filename="../ui/studio_startup.cpp" line="62"/>
         <source>MultiDir Studio: plans multi-directional 3D prints.</source>
         <translation>MultiDir Studio: plant mehrrichtige 3D-Drucke.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="68"/>
+        <location filename="../ui/studio_startup.cpp" line="66"/>
         <source>Printing (up) direction of the model: x, -y, +z or a,b,c. Default: +z.</source>
         <translation>Druckrichtung (oben) des Modells: x, -y, +z oder a,b,c. Standard: +z.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <location filename="../ui/studio_startup.cpp" line="67"/>
         <source>direction</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="71"/>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
         <source>Render the window to this PNG file and quit.</source>
         <translation>Das Fenster in diese PNG-Datei zeichnen und beenden.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="71"/>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
         <source>file</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="72"/>
+        <location filename="../ui/studio_startup.cpp" line="70"/>
         <source>Language of the user interface: de, zh_CN or en.</source>
         <translation>Sprache der Benutzeroberfläche: de, zh_CN oder en.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="73"/>
+        <location filename="../ui/studio_startup.cpp" line="71"/>
         <source>language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="75"/>
+        <location filename="../ui/studio_startup.cpp" line="73"/>
         <source>Run a search with the default settings once the model is shown.</source>
         <translation>Eine Suche mit den Standardeinstellungen starten, sobald das Modell angezeigt wird.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="76"/>
+        <location filename="../ui/studio_startup.cpp" line="74"/>
         <source>Maximal overhang angle in degrees (0-89).</source>
         <translation>Größter Überhangwinkel in Grad (0-89).</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="77"/>
+        <location filename="../ui/studio_startup.cpp" line="75"/>
         <source>degrees</source>
         <translation>Grad</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="84"/>
+        <location filename="../ui/studio_startup.cpp" line="82"/>
         <source>Mesh file (.stl .obj .off .ply) or MultiDir project (.multidir) to open. Default: the first sample.</source>
         <translation>Zu öffnende Netzdatei (.stl .obj .off .ply) oder MultiDir-Projekt (.multidir). Standard: das erste Beispiel.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="216"/>
+        <location filename="../ui/studio_startup.cpp" line="214"/>
         <source>The search or the project&apos;s plan did not finish within %1 s.</source>
         <translation>Die Suche oder der Plan des Projekts wurde nicht innerhalb von %1 s fertig.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="85"/>
+        <location filename="../ui/studio_startup.cpp" line="83"/>
         <source>[model]</source>
         <translation>[Modell]</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="90"/>
+        <location filename="../ui/studio_startup.cpp" line="88"/>
         <source>Try --help for usage.</source>
         <translation>Hinweise zur Verwendung mit --help.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="105"/>
+        <location filename="../ui/studio_startup.cpp" line="103"/>
         <source>Give at most one model; got %1.</source>
         <translation>Geben Sie höchstens ein Modell an; erhalten: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="109"/>
+        <location filename="../ui/studio_startup.cpp" line="107"/>
         <source>--up: %1</source>
         <translation>--up: %1</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="115"/>
+        <location filename="../ui/studio_startup.cpp" line="113"/>
         <source>--lang: &apos;%1&apos; is not available; use de, zh_CN or en.</source>
         <translation>--lang: „%1“ ist nicht verfügbar; verwenden Sie de, zh_CN oder en.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="122"/>
+        <location filename="../ui/studio_startup.cpp" line="120"/>
         <source>--alpha must be a number from 0 to 89.</source>
         <translation>--alpha muss eine Zahl von 0 bis 89 sein.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="127"/>
+        <location filename="../ui/studio_startup.cpp" line="125"/>
         <source>--screenshot needs a file name.</source>
         <translation>--screenshot braucht einen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="208"/>
+        <location filename="../ui/studio_startup.cpp" line="206"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>Das Modell wurde nicht innerhalb von %1 s fertig geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="230"/>
+        <location filename="../ui/studio_startup.cpp" line="228"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>Es wird kein Modell angezeigt; das Bildschirmfoto %1 zeigt das leere Fenster.</translation>
     </message>

@@ -192,139 +192,139 @@
 <context>
     <name>multidir::ui::ConnectionForm</name>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="36"/>
+        <location filename="../ui/device/connection_form.cpp" line="37"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>旋转平台（4 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="37"/>
+        <location filename="../ui/device/connection_form.cpp" line="38"/>
         <source>Robot arm (5-DOF)</source>
         <translation>机械臂（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="41"/>
+        <location filename="../ui/device/connection_form.cpp" line="42"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="42"/>
+        <location filename="../ui/device/connection_form.cpp" line="43"/>
         <source>Modbus RTU (serial)</source>
         <translation>Modbus RTU（串口）</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="51"/>
+        <location filename="../ui/device/connection_form.cpp" line="52"/>
         <source>Host:</source>
         <translation>主机：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="52"/>
+        <location filename="../ui/device/connection_form.cpp" line="53"/>
         <source>Port:</source>
         <translation>端口：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="53"/>
+        <location filename="../ui/device/connection_form.cpp" line="54"/>
         <source>Unit id:</source>
         <translation>单元 ID：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="68"/>
+        <location filename="../ui/device/connection_form.cpp" line="69"/>
         <source>None</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="69"/>
+        <location filename="../ui/device/connection_form.cpp" line="70"/>
         <source>Even</source>
         <translation>偶校验</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="70"/>
+        <location filename="../ui/device/connection_form.cpp" line="71"/>
         <source>Odd</source>
         <translation>奇校验</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="74"/>
+        <location filename="../ui/device/connection_form.cpp" line="75"/>
         <source>Serial port:</source>
         <translation>串口：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="75"/>
+        <location filename="../ui/device/connection_form.cpp" line="76"/>
         <source>Baud:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="76"/>
+        <location filename="../ui/device/connection_form.cpp" line="77"/>
         <source>Parity:</source>
         <translation>校验位：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="77"/>
+        <location filename="../ui/device/connection_form.cpp" line="78"/>
         <source>Data bits:</source>
         <translation>数据位：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="78"/>
+        <location filename="../ui/device/connection_form.cpp" line="79"/>
         <source>Stop bits:</source>
         <translation>停止位：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="79"/>
+        <location filename="../ui/device/connection_form.cpp" line="80"/>
         <source>Slave id:</source>
         <translation>从站 ID：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="86"/>
-        <location filename="../ui/device/connection_form.cpp" line="89"/>
+        <location filename="../ui/device/connection_form.cpp" line="87"/>
+        <location filename="../ui/device/connection_form.cpp" line="90"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="87"/>
+        <location filename="../ui/device/connection_form.cpp" line="88"/>
         <source>How long to wait for the first byte of a reply, and for a TCP connection.</source>
         <translation>等待应答的第一个字节以及等待 TCP 连接的时长。</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="90"/>
+        <location filename="../ui/device/connection_form.cpp" line="91"/>
         <source>How long to wait between two bytes of one reply.</source>
         <translation>同一应答中两个字节之间的最长等待时间。</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="99"/>
+        <location filename="../ui/device/connection_form.cpp" line="100"/>
         <source> °/s</source>
         <translation> °/秒</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="100"/>
+        <location filename="../ui/device/connection_form.cpp" line="101"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="101"/>
+        <location filename="../ui/device/connection_form.cpp" line="102"/>
         <source>Of the robot program&apos;s maximal rotation speed.</source>
         <translation>占机器人程序最大旋转速度的百分比。</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="102"/>
         <location filename="../ui/device/connection_form.cpp" line="103"/>
+        <location filename="../ui/device/connection_form.cpp" line="104"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="107"/>
+        <location filename="../ui/device/connection_form.cpp" line="108"/>
         <source>Device:</source>
         <translation>设备：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="108"/>
+        <location filename="../ui/device/connection_form.cpp" line="109"/>
         <source>Transport:</source>
         <translation>传输方式：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="111"/>
+        <location filename="../ui/device/connection_form.cpp" line="112"/>
         <source>Response timeout:</source>
         <translation>应答超时：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="112"/>
+        <location filename="../ui/device/connection_form.cpp" line="113"/>
         <source>Byte timeout:</source>
         <translation>字节超时：</translation>
     </message>
@@ -453,7 +453,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="576"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="578"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
@@ -486,87 +486,87 @@
 <context>
     <name>multidir::ui::ErrorText</name>
     <message>
-        <location filename="../ui/error_text.cpp" line="18"/>
+        <location filename="../ui/common/error_text.cpp" line="18"/>
         <source>The file does not exist or cannot be read.</source>
         <translation>文件不存在或无法读取。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="20"/>
+        <location filename="../ui/common/error_text.cpp" line="20"/>
         <source>This file type is not supported: use STL, OBJ, OFF or PLY.</source>
         <translation>不支持此文件类型：请使用 STL、OBJ、OFF 或 PLY。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="22"/>
+        <location filename="../ui/common/error_text.cpp" line="22"/>
         <source>The file is damaged or does not follow its format.</source>
         <translation>文件已损坏或不符合其格式。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="24"/>
+        <location filename="../ui/common/error_text.cpp" line="24"/>
         <source>The model is larger than MultiDir accepts.</source>
         <translation>模型超出了 MultiDir 可接受的大小。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="26"/>
+        <location filename="../ui/common/error_text.cpp" line="26"/>
         <source>The file could not be written.</source>
         <translation>无法写入文件。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="28"/>
+        <location filename="../ui/common/error_text.cpp" line="28"/>
         <source>The file contains no triangles.</source>
         <translation>文件不包含任何三角形。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="30"/>
+        <location filename="../ui/common/error_text.cpp" line="30"/>
         <source>Some vertex coordinates are not numbers.</source>
         <translation>部分顶点坐标不是数值。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="32"/>
+        <location filename="../ui/common/error_text.cpp" line="32"/>
         <source>The surface is not a clean solid: some edges or vertices are shared by too many faces.</source>
         <translation>表面不是干净的实体：某些边或顶点被过多的面共用。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="35"/>
+        <location filename="../ui/common/error_text.cpp" line="35"/>
         <source>The surface has holes, so it does not enclose a solid. Close them in a mesh repair tool.</source>
         <translation>表面有孔洞，因此不能围成实体。请用网格修复工具将其封闭。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="38"/>
+        <location filename="../ui/common/error_text.cpp" line="38"/>
         <source>The faces of the surface point in inconsistent directions.</source>
         <translation>表面的面朝向不一致。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="40"/>
+        <location filename="../ui/common/error_text.cpp" line="40"/>
         <source>A setting is out of its allowed range.</source>
         <translation>某项设置超出了允许范围。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="42"/>
+        <location filename="../ui/common/error_text.cpp" line="42"/>
         <source>Cancelled.</source>
         <translation>已取消。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="44"/>
+        <location filename="../ui/common/error_text.cpp" line="44"/>
         <source>The device does not answer: check its power, cable or network.</source>
         <translation>设备没有应答：请检查其电源、线缆或网络。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="46"/>
+        <location filename="../ui/common/error_text.cpp" line="46"/>
         <source>The device reported an error.</source>
         <translation>设备报告了一个错误。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="48"/>
+        <location filename="../ui/common/error_text.cpp" line="48"/>
         <source>A program MultiDir runs (the slicer) is missing or failed.</source>
         <translation>MultiDir 调用的程序（切片软件）缺失或运行失败。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="50"/>
+        <location filename="../ui/common/error_text.cpp" line="50"/>
         <source>The produced G-code failed MultiDir&apos;s safety checks.</source>
         <translation>生成的 G 代码未通过 MultiDir 的安全检查。</translation>
     </message>
     <message>
-        <location filename="../ui/error_text.cpp" line="54"/>
+        <location filename="../ui/common/error_text.cpp" line="54"/>
         <source>An internal error occurred: please report it with the model.</source>
         <translation>发生内部错误：请连同模型一起报告。</translation>
     </message>
@@ -574,621 +574,621 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="66"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
         <source>Disconnected</source>
         <translation>已断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="68"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
         <source>Reconnecting…</source>
         <translation>正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
         <source>Connected</source>
         <translation>已连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="73"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="81"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="83"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>turning the platform</source>
         <translation>正在转动平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="85"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>settling</source>
         <translation>正在稳定</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="87"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="89"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="91"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
         <source>finished</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="93"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="96"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="95"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
         <source>stopped by a device problem</source>
         <translation>因设备问题而停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="102"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="105"/>
         <source>angle %1</source>
         <translation>角度 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="103"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="106"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
         <source>tilt %1, azimuth %2</source>
         <translation>倾斜 %1，方位角 %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="112"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="115"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>按“清除故障”，然后按“使能”和“回零”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="113"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="116"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>按“清除故障”；之后机器人程序将重新接受运动指令</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="210"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="213"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="222"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="214"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="215"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="224"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>关闭链路而不向设备发送命令；设备的心跳看门狗会使其停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="229"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
         <source>Status</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="240"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="242"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
         <source>Enabled:</source>
         <translation>已使能：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="243"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="244"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Moving:</source>
         <translation>运动中：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="245"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
         <source>Homed:</source>
         <translation>已回零：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="246"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
         <source>Fault:</source>
         <translation>故障：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="247"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
         <source>Heartbeat:</source>
         <translation>心跳：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="248"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
         <source>Last problem:</source>
         <translation>最近的问题：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
         <source>Controls</source>
         <translation>控制</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
         <source>Enable</source>
         <translation>使能</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>接通平台的驱动。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
         <source>Home</source>
         <translation>回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>旋转平台：寻找原点开关（0°）。机械臂：将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
         <source>Clear fault</source>
         <translation>清除故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="258"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>在故障或急停后复位设备；之后请重新使能并回零。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
         <source>Tilt</source>
         <translation>倾斜</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
         <source>Azimuth</source>
         <translation>方位角</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
         <source>Jog −</source>
         <translation>点动 −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
         <source>Jog +</source>
         <translation>点动 +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
         <source>Angle:</source>
         <translation>角度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="270"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
         <source>Tilt:</source>
         <translation>倾斜：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="280"/>
         <source>Azimuth:</source>
         <translation>方位角：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
         <source>Go to</source>
         <translation>前往</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="302"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>减速并停止；取消排队中的命令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="303"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="324"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="312"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="347"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
         <translation>所要求的区域打印完成后按此按钮（仅用于手动打印：由已连接的打印机打印的区域会自动继续）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="459"/>
         <source>the platform</source>
         <translation>平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="449"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
         <source>the printer</source>
         <translation>打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="451"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="462"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
         <translation>已向%1发送急停。如需继续：%2%3。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="452"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="463"/>
         <source> and </source>
         <translation>和</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="453"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="464"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
         <translation>；对于打印机，请按“清除打印机急停”并重启其固件</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="468"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
         <source>Platform: stop confirmed by the device.</source>
         <translation>平台：设备已确认停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="469"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="480"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
         <translation>平台：尚未确认停止；MultiDir 会持续重发。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="474"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="485"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
         <translation>打印机：打印机已确认急停。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="475"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="486"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
         <translation>打印机：尚未确认急停（%1）；MultiDir 会持续重发。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>打印运行已停止：%1。请修复设备（%2），然后按“继续”重试此步骤，或按“中止”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
         <source>Jog step:</source>
         <translation>点动步长：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="334"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="343"/>
         <source>Print run</source>
         <translation>打印运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="336"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="670"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="345"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
         <source>Start run</source>
         <translation>开始运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="337"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>按打印顺序将平台转到每个区域的方向，并提示打印每个区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
         <source>Region done</source>
         <translation>区域完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="349"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="389"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="350"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="380"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="390"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="351"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>继续已暂停的运行，或在设备出现问题后重试当前步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="352"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="381"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="391"/>
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="366"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="376"/>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="367"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="377"/>
         <source>Elapsed:</source>
         <translation>已用时间：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="398"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>与 %1 的链路于 %2 中断。下方数值已不再反映设备的状态；MultiDir 会继续尝试重新连接。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="402"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>打印运行已暂停：正在打印的区域可以完成，但不会开始新的区域。链路恢复后请按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="405"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="415"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 没有应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="418"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>链路已恢复。由于链路曾中断，打印运行仍处于暂停状态：请检查平台，然后按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="514"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>无法用这些设置连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="518"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="520"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="527"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="529"/>
         <source>Disconnected.</source>
         <translation>已断开。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="537"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>无法访问；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>链路于 %1 中断；正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
         <source>no: press Enable</source>
         <translation>否：请按“使能”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="550"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
         <source>%1 (target %2)</source>
         <translation>%1（目标 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
         <source>homing</source>
         <translation>正在回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="549"/>
         <location filename="../ui/device/hardware_panel.cpp" line="551"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="555"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
         <source>not needed (robot arm)</source>
         <translation>不需要（机械臂）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="565"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="577"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1：已发送到设备。如需继续：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="581"/>
         <source>%1: sent to the device.</source>
         <translation>%1：已发送到设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="585"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="587"/>
         <source>Connected to %1.</source>
         <translation>已连接到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="598"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>打印运行已完成：所有区域均已打印。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="602"/>
         <source>The print run was aborted.</source>
         <translation>打印运行已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="610"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
         <translation>区域 %1 正由 %2 打印（%3）；打印机报告完成后运行将继续。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="615"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>请打印区域 %1（文件 %2），然后按“区域完成”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="642"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>开始运行被拒绝：未连接；请先连接设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="649"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="654"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
         <source>Start run refused: %1</source>
         <translation>开始运行被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="673"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="686"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
         <translation>方案尚未切片：每个区域需手动打印（“区域完成”）。请对方案切片，以便由打印机打印各区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="675"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="688"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
         <translation>切片作业有 %1 个步骤，方案有 %2 个区域：每个区域需手动打印（“区域完成”）。请重新对方案切片。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="696"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>限制：%1 至 %2，步长 %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="704"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>限制：倾斜最多 %1，%n 个禁止锥</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="707"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
         <source> (machine profile)</source>
         <translation>（机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation>（默认值：该机器配置适用于 %1 机器）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="712"/>
         <source> (defaults: no machine profile)</source>
-        <translation>（默认值：无机器配置）</translation>
+        <translation type="vanished">（默认值：无机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="713"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="725"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>；更改后的配置在下次连接时生效</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="743"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>急停：立即切断平台的功率级。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="733"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="745"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>急停：以最大减速度停止机器人程序。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="738"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>在故障或急停后复位平台；之后请重新“使能”并“回零”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="739"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>在故障或急停后复位机器人程序；之后它将重新接受运动指令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="753"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>寻找原点开关（0°）；驱动必须已使能。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="742"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="790"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="802"/>
         <source>unknown since %1</source>
         <translation>自 %1 起未知</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="792"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
         <source>not seen yet</source>
         <translation>尚未收到</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="795"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
         <source>%1 s ago</source>
         <translation>%1 秒前</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="816"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>无方案：请先运行搜索或打开方案。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="805"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>方案包含 %n 个区域。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
         <translation>已切片：已连接的打印机将打印每个区域的 G 代码。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="815"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="827"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>全部 %n 个区域已打印：完成</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="829"/>
         <source>%1 of %2: %3</source>
         <translation>%1 / %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="831"/>
         <source> (%1, %2)</source>
         <translation>（%1，%2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="820"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="832"/>
         <source>; pausing after this region</source>
         <translation>；此区域完成后暂停</translation>
     </message>
@@ -1277,6 +1277,29 @@
         <location filename="../ui/device/job_timeline.cpp" line="157"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::MachineKind</name>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="9"/>
+        <source>3-DOF</source>
+        <translation>3-DOF</translation>
+    </message>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="11"/>
+        <source>rotary platform (4-DOF)</source>
+        <translation>旋转平台(4-DOF)</translation>
+    </message>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="13"/>
+        <source>tilting (5-DOF)</source>
+        <translation>倾斜式(5-DOF)</translation>
+    </message>
+    <message>
+        <location filename="../ui/common/machine_kind_text.cpp" line="15"/>
+        <source>printed apart</source>
+        <translation>分开打印</translation>
     </message>
 </context>
 <context>
@@ -1400,182 +1423,197 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="87"/>
+        <location filename="../ui/main_window.cpp" line="93"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="116"/>
+        <location filename="../ui/main_window.cpp" line="124"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="117"/>
+        <location filename="../ui/main_window.cpp" line="125"/>
         <source>&amp;Open...</source>
         <translation>打开(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="135"/>
+        <location filename="../ui/main_window.cpp" line="143"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="136"/>
+        <location filename="../ui/main_window.cpp" line="144"/>
         <source>&amp;Export plan...</source>
         <translation>导出方案(&amp;E)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="138"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>保存当前方案：plan.json 以及每个区域一个 STL 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="149"/>
+        <location filename="../ui/main_window.cpp" line="157"/>
         <source>&amp;Load machine profile...</source>
         <translation>加载机器配置(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="154"/>
+        <location filename="../ui/main_window.cpp" line="162"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="158"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="159"/>
+        <location filename="../ui/main_window.cpp" line="167"/>
         <source>&amp;Fit to View</source>
         <translation>适应视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="161"/>
+        <location filename="../ui/main_window.cpp" line="169"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>显示模型(&amp;M)（隐藏方案）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="166"/>
+        <location filename="../ui/main_window.cpp" line="177"/>
         <source>&amp;Search</source>
         <translation>搜索(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="167"/>
+        <location filename="../ui/main_window.cpp" line="178"/>
         <source>&amp;Run</source>
         <translation>运行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="181"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="223"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
         <source>Overhangs</source>
         <translation>悬垂</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="224"/>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>Machine</source>
         <translation>机器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="225"/>
+        <location filename="../ui/main_window.cpp" line="245"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="234"/>
+        <location filename="../ui/main_window.cpp" line="254"/>
         <source>Plan</source>
         <translation>方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="282"/>
+        <location filename="../ui/main_window.cpp" line="303"/>
         <source>Hardware</source>
         <translation>硬件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="341"/>
         <source>Printing direction</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="323"/>
+        <location filename="../ui/main_window.cpp" line="344"/>
         <source>Up:</source>
         <translation>向上：</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="328"/>
+        <location filename="../ui/main_window.cpp" line="351"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="333"/>
+        <location filename="../ui/main_window.cpp" line="356"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="333"/>
+        <location filename="../ui/main_window.cpp" line="356"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="357"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="357"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="335"/>
+        <location filename="../ui/main_window.cpp" line="358"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="335"/>
+        <location filename="../ui/main_window.cpp" line="358"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="120"/>
+        <location filename="../ui/main_window.cpp" line="128"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>打开网格文件（STL、OBJ、OFF 或 PLY）或 MultiDir 项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="147"/>
+        <location filename="../ui/main_window.cpp" line="155"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>将当前显示的 3D 视图保存为 PNG 或 JPEG 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="151"/>
+        <location filename="../ui/main_window.cpp" line="159"/>
         <source>Save machine pro&amp;file...</source>
         <translation>保存机器配置(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="181"/>
+        <location filename="../ui/main_window.cpp" line="171"/>
+        <source>View</source>
+        <translation>视图</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="194"/>
+        <source>S&amp;lice the plan...</source>
+        <translation>切片此方案(&amp;L)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="197"/>
+        <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
+        <translation>将所示方案的每一步连同支撑切片为 G 代码(PrusaSlicer)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="201"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="182"/>
+        <location filename="../ui/main_window.cpp" line="202"/>
         <source>&amp;About MultiDir Studio</source>
         <translation>关于 MultiDir Studio(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
+        <location filename="../ui/main_window.cpp" line="209"/>
         <source>About MultiDir Studio</source>
         <translation>关于 MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="190"/>
+        <location filename="../ui/main_window.cpp" line="210"/>
         <source>MultiDir Studio %1</source>
         <translation>MultiDir Studio %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="192"/>
+        <location filename="../ui/main_window.cpp" line="212"/>
         <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
 
 Qt %1</source>
@@ -1584,437 +1622,570 @@ Qt %1</source>
 Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="287"/>
+        <location filename="../ui/main_window.cpp" line="305"/>
         <source>Emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>The pose search was stopped; its result is dropped.</source>
         <translation>姿态搜索已停止；其结果已丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="406"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>搜索已停止；其结果已丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Open Model or Project</source>
         <translation>打开模型或项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>网格和项目 (*.stl *.obj *.off *.ply *.multidir);;网格 (*.stl *.obj *.off *.ply);;MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>%1, %2, %3</source>
         <translation>%1, %2, %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>Pose: %1</source>
         <translation>姿态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>自定义（%1, %2, %3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
+        <location filename="../ui/main_window.cpp" line="557"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="541"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>Repaired on load: %1</source>
         <translation>加载时已修复：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="555"/>
+        <location filename="../ui/main_window.cpp" line="575"/>
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="579"/>
         <source>Could not open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="583"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="585"/>
-        <location filename="../ui/main_window.cpp" line="602"/>
+        <location filename="../ui/main_window.cpp" line="607"/>
+        <location filename="../ui/main_window.cpp" line="624"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="595"/>
+        <location filename="../ui/main_window.cpp" line="617"/>
         <source>Triangles: %1</source>
         <translation>三角形：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="596"/>
+        <location filename="../ui/main_window.cpp" line="618"/>
         <source>Volume: %1 mm³</source>
         <translation>体积：%1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="610"/>
+        <location filename="../ui/main_window.cpp" line="632"/>
         <source>Risky area unavailable</source>
         <translation>风险面积不可用</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="618"/>
+        <location filename="../ui/main_window.cpp" line="640"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>风险面积（%1 向上）：%2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="620"/>
+        <location filename="../ui/main_window.cpp" line="642"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="636"/>
         <location filename="../ui/main_window.cpp" line="659"/>
-        <location filename="../ui/main_window_pose.cpp" line="56"/>
-        <location filename="../ui/main_window_pose.cpp" line="73"/>
+        <location filename="../ui/main_window.cpp" line="682"/>
+        <location filename="../ui/main_window_pose.cpp" line="57"/>
+        <location filename="../ui/main_window_pose.cpp" line="74"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="638"/>
-        <location filename="../ui/main_window_pose.cpp" line="58"/>
+        <location filename="../ui/main_window.cpp" line="661"/>
+        <location filename="../ui/main_window_pose.cpp" line="59"/>
         <source>Fix the machine first: %1</source>
         <translation>请先修正机器设置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="640"/>
-        <location filename="../ui/main_window.cpp" line="658"/>
+        <location filename="../ui/main_window.cpp" line="663"/>
+        <location filename="../ui/main_window.cpp" line="681"/>
         <source>A pose search is running: wait for it or cancel it.</source>
         <translation>姿态搜索正在运行：请等待其完成或将其取消。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="657"/>
+        <location filename="../ui/main_window.cpp" line="680"/>
         <source>A search is already running.</source>
         <translation>已有搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="664"/>
-        <location filename="../ui/main_window_pose.cpp" line="81"/>
+        <location filename="../ui/main_window.cpp" line="687"/>
+        <location filename="../ui/main_window_pose.cpp" line="82"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="668"/>
+        <location filename="../ui/main_window.cpp" line="691"/>
         <source>Cannot search: %1</source>
         <translation>无法搜索：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="669"/>
+        <location filename="../ui/main_window.cpp" line="692"/>
         <source>Cannot search.</source>
         <translation>无法搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="683"/>
+        <location filename="../ui/main_window.cpp" line="706"/>
         <source>Searching %1...</source>
         <translation>正在搜索 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="691"/>
+        <location filename="../ui/main_window.cpp" line="714"/>
         <source>Cancelling the search...</source>
         <translation>正在取消搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="704"/>
+        <location filename="../ui/main_window.cpp" line="727"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="707"/>
+        <location filename="../ui/main_window.cpp" line="730"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>搜索已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="708"/>
+        <location filename="../ui/main_window.cpp" line="731"/>
         <source>Search finished.</source>
         <translation>搜索完成。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="721"/>
+        <location filename="../ui/main_window.cpp" line="744"/>
         <source>Search failed: %1</source>
         <translation>搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="753"/>
+        <location filename="../ui/main_window.cpp" line="780"/>
         <source>Growing supports for the plan...</source>
         <translation>正在为方案生成支撑...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="767"/>
+        <location filename="../ui/main_window.cpp" line="792"/>
         <source>Supports grown for the plan.</source>
         <translation>已为方案生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="798"/>
+        <location filename="../ui/main_window.cpp" line="828"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>没有可导出的方案：请先运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="801"/>
+        <location filename="../ui/main_window.cpp" line="831"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>此方案的支撑仍在生成中：请在状态栏提示支撑已就绪后重新导出。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="805"/>
+        <location filename="../ui/main_window.cpp" line="835"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>无法创建文件夹 %1：请检查其上级文件夹是否存在且可写入。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="835"/>
+        <location filename="../ui/main_window.cpp" line="865"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>无法将方案导出到 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="841"/>
+        <location filename="../ui/main_window.cpp" line="871"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>方案已导出到 %1，但未包含支撑，尽管仍剩余 %2 mm² 风险面积：%3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="843"/>
+        <location filename="../ui/main_window.cpp" line="873"/>
         <source>no supports were grown for it.</source>
         <translation>未为其生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="848"/>
+        <location filename="../ui/main_window.cpp" line="878"/>
         <source>Plan exported to %1.</source>
         <translation>方案已导出到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="855"/>
+        <location filename="../ui/main_window.cpp" line="885"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>无法打开方案 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="902"/>
+        <location filename="../ui/main_window.cpp" line="932"/>
         <source>Machine profile saved to %1.</source>
         <translation>机器配置已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="914"/>
+        <location filename="../ui/main_window.cpp" line="944"/>
         <source>Machine profile %1 loaded.</source>
         <translation>已加载机器配置 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="923"/>
+        <location filename="../ui/main_window.cpp" line="953"/>
         <source>Export Plan to Folder</source>
         <translation>将方案导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="923"/>
+        <location filename="../ui/main_window.cpp" line="953"/>
         <source>-plan</source>
         <translation>-方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="924"/>
+        <location filename="../ui/main_window.cpp" line="954"/>
         <source>Plan folders (*)</source>
         <translation>方案文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="930"/>
-        <location filename="../ui/main_window.cpp" line="932"/>
+        <location filename="../ui/main_window.cpp" line="960"/>
+        <location filename="../ui/main_window.cpp" line="962"/>
         <source>Export Plan</source>
         <translation>导出方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="943"/>
+        <location filename="../ui/main_window.cpp" line="973"/>
         <source>Screenshot saved to %1.</source>
         <translation>截图已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="948"/>
+        <location filename="../ui/main_window.cpp" line="978"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="949"/>
+        <location filename="../ui/main_window.cpp" line="979"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG 图像 (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="952"/>
-        <location filename="../ui/main_window.cpp" line="960"/>
+        <location filename="../ui/main_window.cpp" line="982"/>
+        <location filename="../ui/main_window.cpp" line="990"/>
         <source>Export Screenshot</source>
         <translation>导出截图</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="965"/>
+        <location filename="../ui/main_window.cpp" line="995"/>
         <source>Open Plan Folder</source>
         <translation>打开方案文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="391"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>Open Plan</source>
         <translation>打开方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="123"/>
+        <location filename="../ui/main_window.cpp" line="131"/>
         <source>Sa&amp;mples</source>
         <translation>示例(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="133"/>
+        <location filename="../ui/main_window.cpp" line="141"/>
         <source>Open pla&amp;n...</source>
         <translation>打开方案(&amp;N)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="140"/>
+        <location filename="../ui/main_window.cpp" line="148"/>
         <source>Export &amp;G-code...</source>
         <translation>导出 G 代码(&amp;G)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="142"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>Save the sliced plan&apos;s G-code (step-NN.gcode, job.gcode) and its print job</source>
         <translation>保存已切片方案的 G 代码（step-NN.gcode、job.gcode）及其打印作业</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="145"/>
+        <location filename="../ui/main_window.cpp" line="153"/>
         <source>Export Screens&amp;hot...</source>
         <translation>导出截图(&amp;H)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="971"/>
-        <location filename="../ui/main_window.cpp" line="977"/>
+        <location filename="../ui/main_window.cpp" line="1001"/>
+        <location filename="../ui/main_window.cpp" line="1007"/>
         <source>Save Machine Profile</source>
         <translation>保存机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="973"/>
+        <location filename="../ui/main_window.cpp" line="1003"/>
         <source>Machine profiles (*.json)</source>
         <translation>机器配置 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="981"/>
-        <location filename="../ui/main_window.cpp" line="988"/>
+        <location filename="../ui/main_window.cpp" line="1011"/>
+        <location filename="../ui/main_window.cpp" line="1018"/>
         <source>Load Machine Profile</source>
         <translation>加载机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="983"/>
+        <location filename="../ui/main_window.cpp" line="1013"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>机器配置 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1001"/>
+        <location filename="../ui/main_window.cpp" line="1031"/>
         <source>Loading %1...</source>
         <translation>正在加载 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="23"/>
+        <location filename="../ui/main_window_editing.cpp" line="22"/>
         <source>Edit plan</source>
         <translation>编辑方案</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="61"/>
+        <location filename="../ui/main_window_editing.cpp" line="60"/>
         <source>&amp;Edit</source>
         <translation>编辑(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="63"/>
+        <location filename="../ui/main_window_editing.cpp" line="62"/>
         <source>&amp;Undo</source>
         <translation>撤销(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../ui/edit/main_window_editing.cpp" line="66"/>
+        <location filename="../ui/main_window_editing.cpp" line="65"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="60"/>
-        <location filename="../ui/main_window_pose.cpp" line="72"/>
+        <location filename="../ui/main_window_pose.cpp" line="61"/>
+        <location filename="../ui/main_window_pose.cpp" line="73"/>
         <source>A search is running: wait for it or cancel it.</source>
         <translation>搜索正在运行：请等待其完成或将其取消。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="71"/>
+        <location filename="../ui/main_window_pose.cpp" line="72"/>
         <source>A pose search is already running.</source>
         <translation>已有姿态搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="74"/>
+        <location filename="../ui/main_window_pose.cpp" line="75"/>
         <source>This plan was opened without its model: open the model.</source>
         <translation>此方案是在没有其模型的情况下打开的：请打开模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="85"/>
+        <location filename="../ui/main_window_pose.cpp" line="86"/>
         <source>Cannot find the best pose: %1</source>
         <translation>无法查找最佳姿态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="86"/>
+        <location filename="../ui/main_window_pose.cpp" line="87"/>
         <source>Cannot find the best pose.</source>
         <translation>无法查找最佳姿态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="95"/>
+        <location filename="../ui/main_window_pose.cpp" line="96"/>
         <source>Finding the best pose for %1...</source>
         <translation>正在为 %1 查找最佳姿态...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="103"/>
+        <location filename="../ui/main_window_pose.cpp" line="104"/>
         <source>Cancelling the pose search...</source>
         <translation>正在取消姿态搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="116"/>
+        <location filename="../ui/main_window_pose.cpp" line="117"/>
         <source>The pose search result was dropped: the model or its up direction changed.</source>
         <translation>姿态搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="126"/>
+        <location filename="../ui/main_window_pose.cpp" line="127"/>
         <source>Pose search cancelled: the poses that finished are listed; the plan shown is unchanged.</source>
         <translation>姿态搜索已取消：已完成的姿态已列出；当前显示的方案未改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="130"/>
+        <location filename="../ui/main_window_pose.cpp" line="131"/>
         <source>Best pose found.</source>
         <translation>已找到最佳姿态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="140"/>
+        <location filename="../ui/main_window_pose.cpp" line="141"/>
         <source>Pose search cancelled before any pose finished: the plan shown is unchanged.</source>
         <translation>姿态搜索在任何姿态完成之前被取消：当前显示的方案未改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="142"/>
+        <location filename="../ui/main_window_pose.cpp" line="143"/>
         <source>Pose search failed: %1</source>
         <translation>姿态搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="158"/>
+        <location filename="../ui/main_window_pose.cpp" line="159"/>
         <source>Showing pose %1 (up %2, %3, %4): the project is unchanged. &quot;Use this pose&quot; makes it the model&apos;s up; &quot;Show current up&quot; goes back.</source>
         <translation>正在显示姿态 %1（向上方向 %2, %3, %4）：项目未改变。“使用此姿态”将其设为模型的向上方向；“显示当前向上方向”可返回。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="205"/>
+        <location filename="../ui/main_window_pose.cpp" line="206"/>
         <source>This pose belongs to another model: find the best pose again.</source>
         <translation>此姿态属于另一个模型：请重新查找最佳姿态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="221"/>
+        <location filename="../ui/main_window_pose.cpp" line="222"/>
         <source>The model now stands on the best pose; its plan is shown.</source>
         <translation>模型现已按最佳姿态摆放；显示其方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="224"/>
+        <location filename="../ui/main_window_pose.cpp" line="225"/>
         <source>The model now stands on pose %1; searching its plan...</source>
         <translation>模型现已按姿态 %1 摆放；正在搜索其方案...</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::MeshViewerWidget</name>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="365"/>
+        <source>Open a model (%1) or File &gt; Samples</source>
+        <translation>打开模型(%1)或 文件 &gt; 示例</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="557"/>
+        <source>%1, %2, %3 mm</source>
+        <translation>%1, %2, %3 mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="561"/>
+        <source>A: %1</source>
+        <translation>A:%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="563"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="564"/>
+        <source>B: %1</source>
+        <translation>B:%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="565"/>
+        <source>Distance: %1</source>
+        <translation>距离:%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="568"/>
+        <source>Click a second point on the model (Esc ends measuring)</source>
+        <translation>在模型上点击第二个点(Esc 结束测量)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="29"/>
+        <source>&amp;Front</source>
+        <translation>前视(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="29"/>
+        <source>Look at the model&apos;s front</source>
+        <translation>从前方查看模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="31"/>
+        <source>&amp;Back</source>
+        <translation>后视(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="31"/>
+        <source>Look at the model&apos;s back</source>
+        <translation>从后方查看模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="33"/>
+        <source>&amp;Left</source>
+        <translation>左视(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="33"/>
+        <source>Look at the model&apos;s left side</source>
+        <translation>查看模型左侧</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="35"/>
+        <source>&amp;Right</source>
+        <translation>右视(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="36"/>
+        <source>Look at the model&apos;s right side</source>
+        <translation>查看模型右侧</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="37"/>
+        <source>&amp;Top</source>
+        <translation>俯视(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="38"/>
+        <source>Look down the printing direction (Up)</source>
+        <translation>沿打印方向(向上)向下看</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="39"/>
+        <source>Botto&amp;m</source>
+        <translation>仰视(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="40"/>
+        <source>Look up at the model from below the platform</source>
+        <translation>从平台下方向上查看模型</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="41"/>
+        <source>&amp;Isometric</source>
+        <translation>等轴测(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="42"/>
+        <source>Look at the front, the right and the top equally</source>
+        <translation>同等地查看前面、右面和顶面</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="45"/>
+        <source>&amp;Standard views</source>
+        <translation>标准视图(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="59"/>
+        <source>&amp;Orthographic</source>
+        <translation>正交投影(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="64"/>
+        <source>Parallel projection: equal lengths look equal wherever they are (5)</source>
+        <translation>平行投影:等长的线段无论在何处看起来都等长(5)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="68"/>
+        <source>M&amp;easure distance</source>
+        <translation>测量距离(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../ui/viewer/view_actions.cpp" line="73"/>
+        <source>Click two points on the model: their coordinates and the distance between them (M; Esc ends)</source>
+        <translation>在模型上点击两个点:显示它们的坐标及其间距离(M;Esc 结束)</translation>
     </message>
 </context>
 <context>
@@ -2087,22 +2258,22 @@ Qt %1</translation>
 <context>
     <name>multidir::ui::PictureFile</name>
     <message>
-        <location filename="../ui/picture_file.cpp" line="32"/>
+        <location filename="../ui/common/picture_file.cpp" line="32"/>
         <source>Could not save %1: there is no picture to save.</source>
         <translation>无法保存 %1：没有可保存的图像。</translation>
     </message>
     <message>
-        <location filename="../ui/picture_file.cpp" line="35"/>
+        <location filename="../ui/common/picture_file.cpp" line="35"/>
         <source>Could not save %1: give the file name the extension .png or .jpg.</source>
         <translation>无法保存 %1：请给文件名加上扩展名 .png 或 .jpg。</translation>
     </message>
     <message>
-        <location filename="../ui/picture_file.cpp" line="42"/>
+        <location filename="../ui/common/picture_file.cpp" line="42"/>
         <source>Could not save %1: the file cannot be written there; check that its folder exists and may be written to.</source>
         <translation>无法保存 %1：无法在该位置写入文件；请检查其所在文件夹是否存在且可写入。</translation>
     </message>
     <message>
-        <location filename="../ui/picture_file.cpp" line="45"/>
+        <location filename="../ui/common/picture_file.cpp" line="45"/>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
     </message>
@@ -2111,7 +2282,7 @@ Qt %1</translation>
     <name>multidir::ui::PlanPanel</name>
     <message>
         <location filename="../ui/panels/plan_panel.cpp" line="46"/>
-        <location filename="../ui/panels/plan_panel.cpp" line="175"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="176"/>
         <source>No plan yet: run a search or open a plan.</source>
         <translation>尚无方案：请运行搜索或打开方案。</translation>
     </message>
@@ -2211,29 +2382,29 @@ Qt %1</translation>
         <translation>旋转 %1°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="141"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="142"/>
         <source>tilt %1°, azimuth %2°</source>
         <translation>倾斜 %1°，方位角 %2°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="149"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="151"/>
         <source>No supports were grown for this plan</source>
         <translation>未为此方案生成支撑</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/plan_panel.cpp" line="153"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="154"/>
         <source>%n region(s); J_G %1 mm² before, %2 mm² after.</source>
         <translation>
             <numerusform>%n 个区域；J_G 之前 %1 mm²，之后 %2 mm²。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="208"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="209"/>
         <source>of %1</source>
         <translation>共 %1</translation>
     </message>
@@ -2338,7 +2509,7 @@ J_G after: %2 mm² (%3 mm² before editing)</source>
 J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plane_edit_panel.cpp" line="413"/>
+        <location filename="../ui/panels/plane_edit_panel.cpp" line="425"/>
         <source>Tilting turns the plane about the middle of its cut, so its offset (measured from the origin along the normal) went from %1 mm to %2 mm.</source>
         <translation>倾斜时平面绕其切口中心旋转，因此其偏移（从原点沿法向测量）由 %1 mm 变为 %2 mm。</translation>
     </message>
@@ -2356,68 +2527,67 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>稳定放置</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="31"/>
         <source>sampled</source>
-        <translation>采样</translation>
+        <translation type="vanished">采样</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="38"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="37"/>
         <source>Best pose</source>
         <translation>最佳姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="45"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="44"/>
         <source>Poses tried: the current up and the poses the model stands in on its own</source>
         <translation>尝试的姿态：当前向上方向以及模型能自行站立的姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="50"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="49"/>
         <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
         <translation>以“搜索”选项卡的设置进行完整搜索的姿态（当前向上方向及评分最佳的其他姿态）；其余姿态用快速贪心方案评分</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="55"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="54"/>
         <source>Find best pose</source>
         <translation>查找最佳姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="57"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="133"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="137"/>
         <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
         <translation>尝试模型在平台上的各种摆放方式，每个姿态各自分解，并保留剩余风险面积最小的姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="59"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Up</source>
         <translation>向上方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Contact (mm²)</source>
         <translation>接触面积 (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
         <source>Margin (mm)</source>
         <translation>余量 (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
         <translation>在此姿态下模型凸包与平台接触部分的面积</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
         <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
         <translation>重心投影位于该接触面内的距离：仅当其为正时模型才能站稳</translation>
     </message>
@@ -2437,111 +2607,111 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="79"/>
         <source>Risky area of the whole model printed along this up alone (J_G before)</source>
         <translation>整个模型仅沿此向上方向打印时的风险面积（J_G 之前）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="80"/>
         <source>J_G of the plan found for this pose</source>
         <translation>为此姿态找到的方案的 J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="83"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
         <source>Use this pose</source>
         <translation>使用此姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="85"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
         <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
         <translation>将所选姿态设为模型的向上方向；选定的姿态直接显示其方案，其他姿态将重新搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
         <source>Show current up</source>
         <translation>显示当前向上方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
         <source>End the preview of a pose: show the model with its up again</source>
         <translation>结束姿态预览：重新按模型的向上方向显示模型</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="92"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="96"/>
         <source>Poses to try:</source>
         <translation>尝试的姿态数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="97"/>
         <source>Full searches:</source>
         <translation>完整搜索数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="144"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="152"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="148"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="156"/>
         <source>Scoring poses with quick plans...</source>
         <translation>正在用快速方案评估姿态...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="153"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="157"/>
         <source>Full searches of the best poses...</source>
         <translation>正在对最佳姿态进行完整搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="154"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
         <source>Choosing the best pose...</source>
         <translation>正在选择最佳姿态...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="163"/>
         <source>Cancelling the pose search...</source>
         <translation>正在取消姿态搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
         <source>full search</source>
         <translation>完整搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
         <source>quick plan</source>
         <translation>快速方案</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="177"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
         <source>not scored</source>
         <translation>未评估</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="182"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
         <source>chosen</source>
         <translation>选定</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="205"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>最佳姿态：向上方向 %1（%2），J_G %3 mm²，%n 个区域。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>已取消：已完成的姿态已列出。%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="228"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="234"/>
         <source>, in use</source>
         <translation>，使用中</translation>
     </message>
@@ -3185,284 +3355,309 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SearchPanel</name>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="43"/>
+        <location filename="../ui/panels/search_panel.cpp" line="45"/>
         <source>Beam search (Algorithm 1)</source>
         <translation>束搜索（算法 1）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="44"/>
+        <location filename="../ui/panels/search_panel.cpp" line="46"/>
         <source>Constrained greedy</source>
         <translation>受约束贪心</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="45"/>
+        <location filename="../ui/panels/search_panel.cpp" line="47"/>
         <source>Greedy</source>
         <translation>贪心</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="50"/>
+        <location filename="../ui/panels/search_panel.cpp" line="52"/>
         <source>How many partial plans each level keeps (b)</source>
         <translation>每一层保留的部分方案数量 (b)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="56"/>
+        <location filename="../ui/panels/search_panel.cpp" line="58"/>
         <source>w: every region cut off keeps at least the model&apos;s volume divided by w</source>
         <translation>w：每个切下的区域至少保留模型体积除以 w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="61"/>
+        <location filename="../ui/panels/search_panel.cpp" line="63"/>
         <source>Beam search only: runs at this many region scales side by side, the smallest region V/w, V/2w, V/4w, ..., the beam width shared among them, and keeps the best plan. No single w suits every model. 1: one beam search at w</source>
         <translation>仅限束搜索：在这么多个区域尺度上并行运行（最小区域为 V/w、V/2w、V/4w……），束宽在它们之间分配，保留最佳方案。没有一个 w 适合所有模型。1：在 w 上进行一次束搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="68"/>
+        <location filename="../ui/panels/search_panel.cpp" line="70"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>在整个球面上采样的候选法向（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="73"/>
-        <location filename="../ui/panels/search_panel.cpp" line="87"/>
+        <location filename="../ui/panels/search_panel.cpp" line="75"/>
+        <location filename="../ui/panels/search_panel.cpp" line="89"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="75"/>
+        <location filename="../ui/panels/search_panel.cpp" line="77"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>沿每个法向的候选平面间距</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="80"/>
+        <location filename="../ui/panels/search_panel.cpp" line="82"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="84"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>搜索所依据的最大自支撑角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="89"/>
+        <location filename="../ui/panels/search_panel.cpp" line="91"/>
         <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
         <translation>任何区域（包括平台上的区域）沿其打印方向的厚度都不小于此值</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="95"/>
+        <location filename="../ui/panels/search_panel.cpp" line="97"/>
         <source> % of J_G</source>
         <translation> % 的 J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="97"/>
+        <location filename="../ui/panels/search_panel.cpp" line="99"/>
         <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
         <translation>仅当移除某个平面会使 J_G 至少增加移除前 J_G 的这一比例（且至少 1 mm²）时，才保留该平面：每个区域都需要一次平台移动并产生一条接缝</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="103"/>
+        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <source>After the search, move every plane continuously (normal and offset) to lower J_G further, every constraint kept; higher values refine more finely and take longer</source>
+        <translation>搜索之后,在满足所有约束的前提下连续移动每个平面(法向与偏移)以进一步降低 J_G;数值越高细化越精、耗时越长</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="112"/>
         <source>machine&apos;s axis only</source>
         <translation>仅机器自身的轴</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="104"/>
+        <location filename="../ui/panels/search_panel.cpp" line="113"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4 自由度：另外尝试这么多分布在 180° 内的旋转轴，并保留最佳的</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <location filename="../ui/panels/search_panel.cpp" line="116"/>
         <source>Scheme:</source>
         <translation>方案类型：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="108"/>
+        <location filename="../ui/panels/search_panel.cpp" line="117"/>
         <source>Beam width:</source>
         <translation>束宽：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="110"/>
+        <location filename="../ui/panels/search_panel.cpp" line="119"/>
         <source>Volume divisor w:</source>
         <translation>体积除数 w：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="111"/>
+        <location filename="../ui/panels/search_panel.cpp" line="120"/>
         <source>Scales:</source>
         <translation>尺度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="113"/>
+        <location filename="../ui/panels/search_panel.cpp" line="122"/>
         <source>Normals:</source>
         <translation>法向数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="114"/>
+        <location filename="../ui/panels/search_panel.cpp" line="123"/>
         <source>Offset step:</source>
         <translation>偏移步长：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="115"/>
+        <location filename="../ui/panels/search_panel.cpp" line="124"/>
         <source>Max. overhang angle α:</source>
         <translation>最大悬垂角 α：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="116"/>
+        <location filename="../ui/panels/search_panel.cpp" line="125"/>
         <source>Min. region height:</source>
         <translation>最小区域高度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="117"/>
+        <location filename="../ui/panels/search_panel.cpp" line="126"/>
         <source>Min. gain per plane:</source>
         <translation>每个平面的最小增益：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="118"/>
+        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <source>Polish the planes:</source>
+        <translation>平面精修:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="128"/>
         <source>Axes to try:</source>
         <translation>尝试的轴数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="121"/>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
         <source>&amp;Run search</source>
         <translation>运行搜索(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="124"/>
+        <location filename="../ui/panels/search_panel.cpp" line="134"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="149"/>
+        <location filename="../ui/panels/search_panel.cpp" line="161"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="157"/>
+        <location filename="../ui/panels/search_panel.cpp" line="169"/>
         <source>Level:</source>
         <translation>层级：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="158"/>
+        <location filename="../ui/panels/search_panel.cpp" line="170"/>
         <source>Beams alive:</source>
         <translation>存活束：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="159"/>
+        <location filename="../ui/panels/search_panel.cpp" line="171"/>
         <source>Best J_G:</source>
         <translation>最佳 J_G：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="160"/>
+        <location filename="../ui/panels/search_panel.cpp" line="172"/>
         <source>Candidates scored:</source>
         <translation>已评估候选：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="181"/>
+        <location filename="../ui/panels/search_panel.cpp" line="193"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="230"/>
+        <location filename="../ui/panels/search_panel.cpp" line="245"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>搜索能让模型以更少支撑打印的切割平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="301"/>
+        <location filename="../ui/panels/search_panel.cpp" line="304"/>
+        <source>%1 (polishing)</source>
+        <translation>%1(精修中)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="317"/>
         <source>Cancelling: keeping the best plan so far... %1</source>
         <translation>正在取消：保留目前的最佳方案... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="303"/>
+        <location filename="../ui/panels/search_panel.cpp" line="319"/>
         <source>%1 %2 - %3</source>
         <translation>%1 %2 - %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="305"/>
+        <location filename="../ui/panels/search_panel.cpp" line="321"/>
         <source>Level 1 of %1: scoring candidates... %2</source>
         <translation>层级 1 / %1：正在评估候选... %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="306"/>
+        <location filename="../ui/panels/search_panel.cpp" line="322"/>
         <source>Scoring candidates... %1</source>
         <translation>正在评估候选... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="309"/>
+        <location filename="../ui/panels/search_panel.cpp" line="326"/>
+        <source>Polishing the planes: %1 % · best J_G %2 mm² · %3</source>
+        <translation>平面精修:%1 % · 最佳 J_G %2 mm² · %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="331"/>
         <source>Level %1 of %2</source>
         <translation>层级 %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="309"/>
+        <location filename="../ui/panels/search_panel.cpp" line="331"/>
         <source>Level %1</source>
         <translation>层级 %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="310"/>
+        <location filename="../ui/panels/search_panel.cpp" line="332"/>
         <source>Axis %1 of %2, %3</source>
         <translation>第 %1 / %2 个轴，%3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="311"/>
+        <location filename="../ui/panels/search_panel.cpp" line="333"/>
         <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
         <translation>%1 · 存活束：%2 · 最佳 J_G %3 mm² · %4 个候选 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="372"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
         <translation>搜索在有 %1 个面的简化副本上进行；随后用其平面切割完整模型，显示的所有数值均针对完整模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="371"/>
+        <location filename="../ui/panels/search_panel.cpp" line="393"/>
         <source>Stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="262"/>
-        <location filename="../ui/panels/search_panel.cpp" line="290"/>
-        <location filename="../ui/panels/search_panel.cpp" line="329"/>
+        <location filename="../ui/panels/search_panel.cpp" line="277"/>
+        <location filename="../ui/panels/search_panel.cpp" line="306"/>
+        <location filename="../ui/panels/search_panel.cpp" line="351"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="287"/>
+        <location filename="../ui/panels/search_panel.cpp" line="302"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1（第 %2 / %3 个轴）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="328"/>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="328"/>
+        <location filename="../ui/panels/search_panel.cpp" line="350"/>
         <source>Done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="334"/>
+        <location filename="../ui/panels/search_panel.cpp" line="356"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="338"/>
+        <location filename="../ui/panels/search_panel.cpp" line="360"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>没有改进：没有切割平面能减少风险面积（J_G 仍为 %1 mm²）。请尝试更多法向、更小的偏移步长、更大的 w 或其他机器。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="343"/>
+        <location filename="../ui/panels/search_panel.cpp" line="365"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>并非无支撑：仍有 %1 mm² 需要支撑（原为 %2 mm²），共 %n 个区域。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="347"/>
+        <location filename="../ui/panels/search_panel.cpp" line="369"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>分为 %n 个区域后无需支撑（J_G 原为 %1 mm²）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="363"/>
+        <location filename="../ui/panels/search_panel.cpp" line="385"/>
         <source>Failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="364"/>
+        <location filename="../ui/panels/search_panel.cpp" line="386"/>
         <source>%1
 %2</source>
         <translation>%1
@@ -3472,107 +3667,156 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SliceDialog</name>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="39"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
         <source>The firmware turns the platform (axis %1): one program, job.gcode, with every step.</source>
         <translation>由固件转动平台（轴 %1）：一个包含所有步骤的程序 job.gcode。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="42"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="84"/>
         <source>MultiDir turns the platform over Modbus (Hardware dock): one program per step.</source>
         <translation>由 MultiDir 通过 Modbus 转动平台（“硬件”停靠窗口）：每个步骤一个程序。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="44"/>
         <source>The firmware tilts (axis %1) and rotates (axis %2) the platform; MultiDir does not write their program yet, so it prints one-step plans only.</source>
-        <translation>由固件倾斜（轴 %1）并旋转（轴 %2）平台；MultiDir 尚不能编写其程序，因此只打印单步计划。</translation>
+        <translation type="vanished">由固件倾斜（轴 %1）并旋转（轴 %2）平台；MultiDir 尚不能编写其程序，因此只打印单步计划。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="50"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="27"/>
+        <source>Klipper with tilt and rotation steppers, 0.4 mm nozzle</source>
+        <translation>带倾斜与旋转步进电机的 Klipper,0.4 mm 喷嘴</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="28"/>
+        <source>Klipper with a rotary A axis, 0.4 mm nozzle</source>
+        <translation>带 A 旋转轴的 Klipper,0.4 mm 喷嘴</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="29"/>
+        <source>Generic Marlin 220x220, 0.4 mm nozzle (platform over Modbus)</source>
+        <translation>通用 Marlin 220x220,0.4 mm 喷嘴(平台经 Modbus)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="30"/>
+        <source>Open5x-like Prusa i3, RepRapFirmware U tilt + V rotation, 0.4 mm nozzle</source>
+        <translation>类 Open5x 的 Prusa i3,RepRapFirmware U 倾斜 + V 旋转,0.4 mm 喷嘴</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="32"/>
+        <source>Robot arm platform, 0.8 mm nozzle (paper set-up)</source>
+        <translation>机械臂平台,0.8 mm 喷嘴(论文中的装置)</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="59"/>
+        <source>A plan printed apart is sliced part by part on plates: use &apos;multidir apart&apos; (docs/apart.md).</source>
+        <translation>分开打印的方案需逐个零件在打印板上切片:请使用 “multidir apart”(docs/apart.md)。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="64"/>
+        <source>This printer cannot turn the part: it prints one-step (3-DOF) plans only.</source>
+        <translation>此打印机无法转动零件:只能打印单步(3-DOF)方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="68"/>
+        <source>This printer turns the platform about one axis: it cannot print a 5-DOF plan. Choose a printer with two firmware axes or a robot arm.</source>
+        <translation>此打印机只能绕一个轴转动平台:无法打印 5-DOF 方案。请选择具有两个固件轴的打印机或机械臂。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
+        <source>The firmware tilts (axis %1) and rotates (axis %2) the platform: one program, job.gcode, with every step and the turns between them.</source>
+        <translation>固件倾斜(轴 %1)并旋转(轴 %2)平台:一个程序 job.gcode,包含所有步骤及其间的转动。</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
         <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
         <translation>普通打印机：无法转动零件，因此只能打印单步骤方案。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="57"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
         <source>Slice the Plan</source>
         <translation>对方案切片</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="65"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="114"/>
         <source>Load a PrusaSlicer .ini...</source>
         <translation>加载 PrusaSlicer .ini...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="75"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="124"/>
         <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
         <translation>固件转动平台的方式：Klipper 的 MANUAL_STEPPER，或 Marlin 和 RepRapFirmware 的 G1 A</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="80"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="129"/>
         <source>layer_height=0.3 fill_density=10%</source>
         <translation>layer_height=0.3 fill_density=10%</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="130"/>
         <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
         <translation>覆盖打印机配置的 PrusaSlicer 设置，格式为 KEY=VALUE，以空格分隔</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="131"/>
         <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
         <translation>同时沿向上方向用切片软件的支撑对整个模型切片（用于比较）</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="135"/>
         <source>The prusa-slicer program: a name found on PATH, or a full path</source>
         <translation>prusa-slicer 程序：可在 PATH 中找到的名称，或完整路径</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="94"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="143"/>
         <source>Printer:</source>
         <translation>打印机：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="96"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="145"/>
         <source>Dialect:</source>
         <translation>固件方言：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="97"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="146"/>
         <source>Slicer settings:</source>
         <translation>切片设置：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="148"/>
         <source>Slicer program:</source>
         <translation>切片程序：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="101"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="150"/>
         <source>Slice</source>
         <translation>切片</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="127"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
         <source>Cannot use the printer profile: %1</source>
         <translation>无法使用打印机配置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="162"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="186"/>
+        <source>%1: %2</source>
+        <translation>%1:%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="222"/>
         <source>Load a PrusaSlicer Printer Profile</source>
         <translation>加载 PrusaSlicer 打印机配置</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="164"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="224"/>
         <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
         <translation>PrusaSlicer 配置 (*.ini);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="179"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="239"/>
         <source>Choose a printer profile.</source>
         <translation>请选择打印机配置。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="185"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="245"/>
         <source>Slicer settings: %1</source>
         <translation>切片设置：%1</translation>
     </message>
@@ -3654,7 +3898,7 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
         <location filename="../ui/panels/slice_panel.cpp" line="45"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="148"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>将当前方案的每个步骤连同其支撑切片为 G 代码（PrusaSlicer）</translation>
     </message>
@@ -3709,7 +3953,18 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>显示截至此层已打印的各层（所有步骤，按打印顺序）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="92"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="94"/>
+        <source>The layer&apos;s height: the nozzle&apos;s Z above the platform in its step&apos;s pose</source>
+        <translation>该层的高度:在其步骤的姿态下喷嘴高于平台的 Z 值</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="96"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="250"/>
+        <source>Z %1 mm</source>
+        <translation>Z %1 mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/slice_panel.cpp" line="97"/>
         <source>Travel moves</source>
         <translation>空驶移动</translation>
     </message>
@@ -3719,57 +3974,57 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>未落在任何先前打印内容上的挤出（multidir audit 检查 b 的结果）：在 G 代码预览中以品红色绘制</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="207"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="213"/>
         <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
         <translation>无支撑挤出：%1 mm（%2 %），以品红色显示</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="106"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="111"/>
         <source>Layers:</source>
         <translation>层：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="110"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="116"/>
         <source>G-code</source>
         <translation>G 代码</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="136"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>请先显示方案：运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="154"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="160"/>
         <source>Starting the slicer...</source>
         <translation>正在启动切片软件...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="177"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="185"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="191"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
         <source>Total</source>
         <translation>合计</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="187"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
         <source>Total (%1)</source>
         <translation>合计（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="190"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="196"/>
         <source>Fixed direction, slicer supports</source>
         <translation>固定方向，切片软件支撑</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="192"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>整个模型沿向上方向打印并使用 PrusaSlicer 自身的支撑：用于比较</translation>
     </message>
@@ -3777,129 +4032,129 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SliceSession</name>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="45"/>
         <location filename="../ui/slicing/slice_session.cpp" line="46"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="47"/>
         <source>Slicing failed: %1</source>
         <translation>切片失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="52"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="53"/>
         <source>Slicing cancelled: nothing was written.</source>
         <translation>切片已取消：未写入任何内容。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="53"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="54"/>
         <source>Slicing cancelled.</source>
         <translation>切片已取消。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="62"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="63"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>请先显示方案：运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="64"/>
-        <location filename="../ui/slicing/slice_session.cpp" line="118"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="65"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="122"/>
         <source>The plan&apos;s supports are still being grown: slice it when they are ready.</source>
         <translation>方案的支撑仍在生成中：请在支撑就绪后再切片。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="76"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="78"/>
         <source>The plan changed: slicing was cancelled.</source>
         <translation>方案已更改：切片已取消。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="78"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="80"/>
         <source>The plan changed: slice it again for its G-code.</source>
         <translation>方案已更改：请重新切片以获得其 G 代码。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="110"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="114"/>
         <source>There is no plan to slice: run a search or open a plan.</source>
         <translation>没有可切片的方案：请运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="114"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="118"/>
         <source>A slicing job is already running.</source>
         <translation>已有切片作业正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="142"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="146"/>
         <source>Slicing without supports although the plan leaves risky area: %1</source>
         <translation>方案仍剩余风险面积，但将不带支撑切片：%1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="143"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="147"/>
         <source>no supports were grown for it.</source>
         <translation>未为其生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="148"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="152"/>
         <source>Slicing the plan for %1...</source>
         <translation>正在为 %1 对方案切片...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="155"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="159"/>
         <source>Cancelling: stopping the slicer...</source>
         <translation>正在取消：正在停止切片软件...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="170"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
         <source>Sliced for %1: %n step(s), %2 of printing.</source>
         <translation>
             <numerusform>已为 %1 完成切片：%n 个步骤，打印用时 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="178"/>
         <source>Slicing finished.</source>
         <translation>切片完成。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="175"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="179"/>
         <source>Slicing finished; the audit failed.</source>
         <translation>切片完成；审核失败。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="208"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
         <source>Layer %1 of %2: step %3, its layer %4</source>
         <translation>第 %1 / %2 层：步骤 %3 的第 %4 层</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="220"/>
         <source>There is no G-code to export: slice the plan first.</source>
         <translation>没有可导出的 G 代码：请先对方案切片。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="224"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="230"/>
         <source>G-code exported to %1 (%n file(s)).</source>
         <translation>
             <numerusform>G 代码已导出到 %1（%n 个文件）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
         <source>Export G-code to Folder</source>
         <translation>将 G 代码导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="234"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
         <source>-gcode</source>
         <translation>-gcode</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="235"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
         <source>G-code folders (*)</source>
         <translation>G 代码文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
-        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="247"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="254"/>
         <source>Export G-code</source>
         <translation>导出 G 代码</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="242"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
         <source>%1 holds files that are not a MultiDir job (%2 is one).
 
 Write the job into this folder anyway? Files with the job&apos;s names are replaced; the others stay.</source>
@@ -3909,109 +4164,127 @@ Write the job into this folder anyway? Files with the job&apos;s names are repla
     </message>
 </context>
 <context>
+    <name>multidir::ui::StudioDocument</name>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="129"/>
+        <source>This job was sliced from another plan than the one shown: slice the plan shown again.</source>
+        <translation>此作业是由另一个方案切片得到的,而非当前所示方案:请重新切片当前方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="158"/>
+        <source>A print run already holds the device session&apos;s job: stop it before starting another.</source>
+        <translation>已有打印运行占用设备会话的作业:请先停止它再开始另一个。</translation>
+    </message>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="162"/>
+        <source>There is no plan to run: run a search or open a plan first.</source>
+        <translation>没有可运行的方案:请先运行搜索或打开一个方案。</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::StudioStartup</name>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="64"/>
+        <location filename="../ui/studio_startup.cpp" line="62"/>
         <source>MultiDir Studio: plans multi-directional 3D prints.</source>
         <translation>MultiDir Studio：规划多方向 3D 打印。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="68"/>
+        <location filename="../ui/studio_startup.cpp" line="66"/>
         <source>Printing (up) direction of the model: x, -y, +z or a,b,c. Default: +z.</source>
         <translation>模型的打印（向上）方向：x、-y、+z 或 a,b,c。默认：+z。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="69"/>
+        <location filename="../ui/studio_startup.cpp" line="67"/>
         <source>direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="71"/>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
         <source>Render the window to this PNG file and quit.</source>
         <translation>将窗口渲染到此 PNG 文件后退出。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="71"/>
+        <location filename="../ui/studio_startup.cpp" line="69"/>
         <source>file</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="72"/>
+        <location filename="../ui/studio_startup.cpp" line="70"/>
         <source>Language of the user interface: de, zh_CN or en.</source>
         <translation>界面语言：de、zh_CN 或 en。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="73"/>
+        <location filename="../ui/studio_startup.cpp" line="71"/>
         <source>language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="75"/>
+        <location filename="../ui/studio_startup.cpp" line="73"/>
         <source>Run a search with the default settings once the model is shown.</source>
         <translation>模型显示后立即以默认设置运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="76"/>
+        <location filename="../ui/studio_startup.cpp" line="74"/>
         <source>Maximal overhang angle in degrees (0-89).</source>
         <translation>最大悬垂角，单位为度（0-89）。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="77"/>
+        <location filename="../ui/studio_startup.cpp" line="75"/>
         <source>degrees</source>
         <translation>度</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="84"/>
+        <location filename="../ui/studio_startup.cpp" line="82"/>
         <source>Mesh file (.stl .obj .off .ply) or MultiDir project (.multidir) to open. Default: the first sample.</source>
         <translation>要打开的网格文件（.stl .obj .off .ply）或 MultiDir 项目（.multidir）。默认：第一个示例。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="216"/>
+        <location filename="../ui/studio_startup.cpp" line="214"/>
         <source>The search or the project&apos;s plan did not finish within %1 s.</source>
         <translation>搜索或项目方案未在 %1 秒内完成。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="85"/>
+        <location filename="../ui/studio_startup.cpp" line="83"/>
         <source>[model]</source>
         <translation>[模型]</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="90"/>
+        <location filename="../ui/studio_startup.cpp" line="88"/>
         <source>Try --help for usage.</source>
         <translation>使用 --help 查看用法。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="105"/>
+        <location filename="../ui/studio_startup.cpp" line="103"/>
         <source>Give at most one model; got %1.</source>
         <translation>最多只能指定一个模型；收到 %1 个。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="109"/>
+        <location filename="../ui/studio_startup.cpp" line="107"/>
         <source>--up: %1</source>
         <translation>--up：%1</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="115"/>
+        <location filename="../ui/studio_startup.cpp" line="113"/>
         <source>--lang: &apos;%1&apos; is not available; use de, zh_CN or en.</source>
         <translation>--lang：“%1”不可用；请使用 de、zh_CN 或 en。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="122"/>
+        <location filename="../ui/studio_startup.cpp" line="120"/>
         <source>--alpha must be a number from 0 to 89.</source>
         <translation>--alpha 必须是 0 到 89 之间的数。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="127"/>
+        <location filename="../ui/studio_startup.cpp" line="125"/>
         <source>--screenshot needs a file name.</source>
         <translation>--screenshot 需要一个文件名。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="208"/>
+        <location filename="../ui/studio_startup.cpp" line="206"/>
         <source>The model did not finish loading within %1 s.</source>
         <translation>模型未在 %1 秒内加载完成。</translation>
     </message>
     <message>
-        <location filename="../ui/studio_startup.cpp" line="230"/>
+        <location filename="../ui/studio_startup.cpp" line="228"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>未显示任何模型；截图 %1 显示的是空窗口。</translation>
     </message>

@@ -19,6 +19,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QLayout>
+#include <QScreen>
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <QVector3D>
@@ -51,6 +52,7 @@
 #include "ui/studio_startup.h"
 #include "ui/viewer/axis_picker.h"
 #include "ui/viewer/mesh_viewer_widget.h"
+#include "ui/viewer/view_actions.h"
 #include "ui/common/wheel_needs_focus.h"
 
 namespace multidir::ui {
@@ -110,7 +112,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   buildStatusBar();
   updateModelStatus();
   onMachineChanged();
-  resize(1480, 900);
+  resize(initialWindowSize(screen() != nullptr ? screen()->availableGeometry().size() : kPreferredWindowSize));
   restoreWindowState(*this);
 }
 
@@ -166,6 +168,9 @@ void MainWindow::buildMenus() {
   fit->setShortcut(QKeySequence(Qt::Key_F));
   QAction* modelView = m_viewMenu->addAction(tr("Show the &model (hide the plan)"), this, &MainWindow::clearPlan);
   modelView->setObjectName(QStringLiteral("showModel"));
+  QToolBar* viewBar = addToolBar(tr("View"));
+  viewBar->setObjectName(QStringLiteral("viewToolBar"));
+  addViewActions(m_viewer, m_viewMenu, viewBar);
   m_viewMenu->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) m_viewMenu->addAction(dock->toggleViewAction());
 
@@ -251,7 +256,8 @@ void MainWindow::buildDocks() {
   tabifyDockWidget(machine, m_searchDock);
   tabifyDockWidget(m_searchDock, m_planDock);
   m_searchDock->raise();
-  resizeDocks({overhangs}, {430}, Qt::Horizontal);
+  // Wide enough for the pose and estimate tables without sideways scrolling (ui/common/table_columns.h).
+  resizeDocks({overhangs}, {540}, Qt::Horizontal);
 
   connect(m_overhangPanel, &OverhangPanel::alphaMaxChanged, this, [this] { updateOverhangs(); });
   // One alpha_max, shown in both panels: each follows the other (setting an equal value emits nothing).
@@ -589,6 +595,7 @@ void MainWindow::onUpChanged() {
   markPoseInUse();
   onMachineChanged();
   emit upDirectionChanged();
+  m_viewer->setEmptyUp(upDirection());  // an empty view's axes marker follows the up too
   if (!model()) return;
   clearPlan();
   m_viewer->setMesh(*model()->mesh, upDirection());

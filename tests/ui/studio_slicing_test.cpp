@@ -210,6 +210,31 @@ TEST_F(StudioSlicedSnowman, PreviewDrawsEachStepInItsColourTheLayerSliderLimitsI
   slider->setValue(slider->maximum());
 }
 
+TEST_F(StudioSlicedSnowman, LayerSliderShowsItsLayersZBesideIt) {
+  MainWindow& window = *s_window;
+  SlicePanel* panel = slicePanelOf(window);
+  panel->previewButton()->click();
+  ASSERT_TRUE(window.viewer()->hasGcodePreview());
+  QSlider* slider = panel->layerSlider();
+  QLabel* z = panel->layerZLabel();
+  ASSERT_NE(z, nullptr);
+  EXPECT_TRUE(z->isVisibleTo(panel));
+  // Beside the slider: on its row, to its right.
+  const QRect sliderRect(slider->mapTo(panel, QPoint(0, 0)), slider->size());
+  const QRect zRect(z->mapTo(panel, QPoint(0, 0)), z->size());
+  EXPECT_GE(zRect.left(), sliderRect.right());
+  EXPECT_TRUE(zRect.top() <= sliderRect.center().y() && sliderRect.center().y() <= zRect.bottom());
+  const GcodePreview& preview = *window.sliceSession()->outcome()->preview;
+  for (const int layer : {1, slider->maximum() / 2, slider->maximum()}) {
+    slider->setValue(layer);
+    const double zMm = preview.layers[static_cast<std::size_t>(layer - 1)].printerZMm;
+    EXPECT_EQ(z->text(), QStringLiteral("Z %1 mm").arg(QLocale().toString(zMm, 'f', 2))) << "layer " << layer;
+  }
+  EXPECT_NE(preview.layers.front().printerZMm, preview.layers[static_cast<std::size_t>(slider->maximum() / 2 - 1)].printerZMm);
+  panel->previewButton()->click();
+  EXPECT_FALSE(z->isVisibleTo(panel));
+}
+
 TEST_F(StudioSlicedSnowman, ExportGcodeWritesTheStepProgramsAndTheJobIntoANewFolder) {
   MainWindow& window = *s_window;
   QTemporaryDir scratch;

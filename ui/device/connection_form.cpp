@@ -6,6 +6,7 @@
 #include <QIntValidator>
 #include <QLabel>
 #include <QLineEdit>
+#include <QSettings>
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
@@ -182,7 +183,35 @@ void ConnectionForm::onKindChanged() {
   m_rotarySpeedLabel->setVisible(now == DeviceKind::RotaryPlatform);
   m_robotSpeed->setVisible(now == DeviceKind::RobotArm);
   m_robotSpeedLabel->setVisible(now == DeviceKind::RobotArm);
+  restoreTcpAddress();
   emit kindChanged(now);
+}
+
+namespace {
+
+// The settings group of `kind`'s remembered address: a stable name, not the translated one.
+QString addressGroup(DeviceKind kind) {
+  return kind == DeviceKind::RobotArm ? QStringLiteral("device/robotArm") : QStringLiteral("device/rotaryPlatform");
+}
+
+}  // namespace
+
+void ConnectionForm::rememberTcpAddress() const {
+  QSettings settings;
+  settings.beginGroup(addressGroup(kind()));
+  settings.setValue(QStringLiteral("host"), m_host->text().trimmed());
+  settings.setValue(QStringLiteral("port"), m_port->value());
+}
+
+void ConnectionForm::restoreTcpAddress() {
+  QSettings settings;
+  settings.beginGroup(addressGroup(kind()));
+  const QString host = settings.value(QStringLiteral("host")).toString();
+  bool portRead = false;
+  const int port = settings.value(QStringLiteral("port")).toInt(&portRead);
+  if (host.isEmpty() || !portRead || port < m_port->minimum() || port > m_port->maximum()) return;
+  m_host->setText(host);
+  m_port->setValue(port);
 }
 
 void ConnectionForm::onTransportChanged() {

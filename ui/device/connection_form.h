@@ -32,6 +32,10 @@ class ConnectionForm : public QWidget {
   void setRotarySpeedDegreesPerSecond(double speed);
   [[nodiscard]] int robotSpeedPercent() const;
   void setRobotSpeedPercent(int percent);
+  // Keeps the TCP host and port entered for the device kind chosen (QSettings "device/<kind>/host", "port"), as
+  // the Hardware panel does on Connect; a form made later (the next session) starts with them, and choosing a
+  // kind brings back its own.
+  void rememberTcpAddress() const;
 
  signals:
   void kindChanged(multidir::ui::DeviceKind kind);
@@ -39,6 +43,7 @@ class ConnectionForm : public QWidget {
  private:
   void onKindChanged();
   void onTransportChanged();
+  void restoreTcpAddress();
 
   QComboBox* m_kind = nullptr;
   QComboBox* m_transport = nullptr;

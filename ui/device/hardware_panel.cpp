@@ -19,6 +19,8 @@
 #include <filesystem>
 #include <utility>
 
+#include "ui/common/follow_newest_line.h"
+#include "ui/common/machine_kind_text.h"
 #include "ui/device/connection_form.h"
 #include "ui/device/device_link.h"
 #include "ui/device/device_reading.h"
@@ -363,6 +365,7 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   m_runLog->setReadOnly(true);
   m_runLog->setMaximumBlockCount(1000);
   m_runLog->setMinimumHeight(80);
+  new FollowNewestLine(m_runLog);  // the newest line in view, unless the operator scrolled up
 
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(m_regionDone);
@@ -513,6 +516,7 @@ void HardwarePanel::connectDevice() {
                true);
     return;
   }
+  if (settings.connection.transport == hardware::Transport::Tcp) m_form->rememberTcpAddress();  // the next session's
   setMessage(tr("Connecting to %1…").arg(m_link->deviceName()), false);
   m_clockTimer.start();
   updateLimits();
@@ -717,7 +721,7 @@ void HardwarePanel::updateLimits() {
     limits += tr(" (machine profile)");
   else
     limits += tr(" (defaults: the machine profile is for a %1 machine)")
-                  .arg(QString::fromLatin1(core::machineKindName(machine.kind)));
+                  .arg(machineKindText(machine.kind));
   if (open) limits += tr("; a changed profile applies at the next Connect");
   m_limits->setText(limits);
 }

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ui/common/table_columns.h"
+
 namespace multidir::ui {
 namespace {
 
@@ -81,7 +83,7 @@ PoseSearchBox::PoseSearchBox(QWidget* parent) : QGroupBox(tr("Best pose"), paren
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setSelectionMode(QAbstractItemView::SingleSelection);
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  fitColumnsToWidth(m_table, UpColumn);  // the up's three numbers, elided where the dock is narrow
   m_table->setMinimumHeight(140);
 
   m_use = new QPushButton(tr("Use this pose"), this);
@@ -201,6 +203,7 @@ void PoseSearchBox::showResult(const core::PoseSearchResult& result, bool cancel
     rowNames << (row == m_chosen ? tr("chosen") : QString::number(row + 1));
   }
   m_table->setVerticalHeaderLabels(rowNames);
+  setTextTooltips(m_table, UpColumn);
   const core::PoseTrial& chosen = result.trials[m_chosen];
   const QString best = tr("Best pose: up %1 (%2), J_G %3 mm², %n region(s).", nullptr, chosen.regions)
                            .arg(upText(chosen.pose.up), sourceText(chosen.pose.source), area(chosen.jgAfterMm2));

@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -13,6 +14,7 @@
 #include <QSpinBox>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "ui/panels/jg_chart.h"
@@ -152,7 +154,9 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   m_progress->setObjectName(QStringLiteral("searchProgress"));
   m_progress->setRange(0, 1000);
   m_progress->setValue(0);
-  m_progress->setFormat(QStringLiteral("%p%"));
+  setProgressText(QStringLiteral("%p%"));
+  m_progress->installEventFilter(this);
+  connect(m_progress, &QProgressBar::valueChanged, this, &SearchPanel::showProgressText);
 
   auto* readout = new QGroupBox(tr("Progress"), this);
   auto* grid = new QGridLayout(readout);
@@ -278,7 +282,7 @@ void SearchPanel::searchStarted(double jgBeforeMm2, int maxLevels) {
 
 void SearchPanel::resetReadout() {
   m_progress->setValue(0);
-  m_progress->setFormat(QStringLiteral("%p%"));
+  setProgressText(QStringLiteral("%p%"));
   for (QLabel* value : {m_level, m_beams, m_bestJg, m_candidates}) value->setText(QStringLiteral("-"));
   m_chart->clear();
   m_notice->hide();
@@ -319,7 +323,7 @@ void SearchPanel::updateProgressText() {
   } else {
     const core::SearchProgress& p = *m_latest;
     if (p.polishing) {
-      m_progress->setFormat(tr("Polishing the planes: %1 % · best J_G %2 mm² · %3")
+      setProgressText(tr("Polishing the planes: %1 % · best J_G %2 mm² · %3")
                                 .arg(qRound(100 * p.polishFraction))
                                 .arg(area(p.bestJgMm2), elapsed));
       return;
@@ -330,7 +334,7 @@ void SearchPanel::updateProgressText() {
                .arg(level, QLocale().toString(p.beamsAlive), area(p.bestJgMm2),
                     QLocale().toString(p.candidatesScored), elapsed);
   }
-  m_progress->setFormat(text);
+  setProgressText(text);
 }
 
 void SearchPanel::cancelRequested() {
@@ -343,7 +347,7 @@ void SearchPanel::searchFinished(const core::Decomposition& plan) {
   setRunning(false);
   m_tick->stop();
   m_progress->setValue(m_progress->maximum());
-  m_progress->setFormat(plan.cancelled ? tr("Cancelled") : tr("Done"));
+  setProgressText(plan.cancelled ? tr("Cancelled") : tr("Done"));
   m_bestJg->setText(tr("%1 mm²").arg(area(plan.jgAfterMm2)));
   const int regions = static_cast<int>(plan.regions.size());
   QStringList lines;
@@ -378,7 +382,7 @@ void SearchPanel::searchFailed(const QString& headline, const QString& detail) {
   setRunning(false);
   m_tick->stop();
   m_progress->setValue(0);
-  m_progress->setFormat(tr("Failed"));
+  setProgressText(tr("Failed"));
   showNotice(detail.isEmpty() ? headline : tr("%1\n%2").arg(headline, detail), true);
 }
 
@@ -386,7 +390,7 @@ void SearchPanel::searchDropped() {
   setRunning(false);
   m_tick->stop();
   resetReadout();
-  m_progress->setFormat(tr("Stopped"));
+  setProgressText(tr("Stopped"));
 }
 
 void SearchPanel::clearResult() {
@@ -409,7 +413,29 @@ QString SearchPanel::readoutText() const {
   return QStringList{m_level->text(), m_beams->text(), m_bestJg->text(), m_candidates->text()}.join(QLatin1Char('|'));
 }
 
-QString SearchPanel::progressText() const { return m_progress->text(); }
+QString SearchPanel::progressText() const { return m_progress->toolTip(); }
+
+void SearchPanel::setProgressText(const QString& text) {
+  m_progressText = text;
+  showProgressText();
+}
+
+void SearchPanel::showProgressText() {
+  const int span = m_progress->maximum() - m_progress->minimum();
+  const int percent = span > 0 ? qRound(100.0 * (m_progress->value() - m_progress->minimum()) / span) : 0;
+  QString whole = m_progressText;
+  whole.replace(QStringLiteral("%p"), QString::number(percent));
+  m_progress->setToolTip(whole);
+  // A bar's text never wraps: what does not fit is cut off at both ends. Elided, it says where it was cut.
+  constexpr int kTextMarginPixels = 12;
+  const int room = std::max(0, m_progress->contentsRect().width() - kTextMarginPixels);
+  m_progress->setFormat(m_progress->fontMetrics().elidedText(whole, Qt::ElideRight, room));
+}
+
+bool SearchPanel::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == m_progress && event->type() == QEvent::Resize) showProgressText();
+  return QWidget::eventFilter(watched, event);
+}
 
 int SearchPanel::chartPointCount() const { return m_chart->pointCount(); }
 

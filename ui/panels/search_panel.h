@@ -60,7 +60,7 @@ class SearchPanel : public QWidget {
   // What the notice line says (for tests and the status bar).
   [[nodiscard]] QString noticeText() const;
   [[nodiscard]] QString readoutText() const;
-  // The progress bar's text as shown.
+  // The progress bar's text, whole (the bar shows it elided to its width, and whole in its tooltip).
   [[nodiscard]] QString progressText() const;
   // Points on the best-J_G chart.
   [[nodiscard]] int chartPointCount() const;
@@ -78,6 +78,11 @@ class SearchPanel : public QWidget {
   void updateBeamOnlyControls();
   void showNotice(const QString& text, bool warning);
   void updateProgressText();
+  // The progress bar says `text` ("%p" stands for the percentage), elided to its width when it does not fit,
+  // whole in its tooltip.
+  void setProgressText(const QString& text);
+  void showProgressText();
+  bool eventFilter(QObject* watched, QEvent* event) override;
   void resetReadout();
 
   QComboBox* m_scheme = nullptr;
@@ -97,6 +102,7 @@ class SearchPanel : public QWidget {
   QPushButton* m_run = nullptr;
   QPushButton* m_cancel = nullptr;
   QProgressBar* m_progress = nullptr;
+  QString m_progressText;  // whole, "%p" not yet replaced
   QLabel* m_level = nullptr;
   QLabel* m_beams = nullptr;
   QLabel* m_bestJg = nullptr;

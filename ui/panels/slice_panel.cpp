@@ -17,6 +17,7 @@
 
 #include "multidir/slicing/estimates.h"
 #include "ui/common/region_palette.h"
+#include "ui/common/table_columns.h"
 
 namespace multidir::ui {
 namespace {
@@ -62,8 +63,7 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   m_table->setObjectName(QStringLiteral("estimatesTable"));
   m_table->setHorizontalHeaderLabels({tr("Step"), tr("Print time"), tr("Filament (m)"), tr("Filament (g)")});
   m_table->verticalHeader()->hide();
-  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  m_table->horizontalHeader()->setStretchLastSection(true);
+  fitColumnsToWidth(m_table, 0);  // the step's name, elided where the dock is narrow
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setMinimumHeight(120);
@@ -89,6 +89,11 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   m_layers->setToolTip(tr("Show the layers printed up to this one (all steps, in printing order)"));
   m_layerText = new QLabel(this);
   m_layerText->setObjectName(QStringLiteral("gcodeLayerText"));
+  m_layerZ = new QLabel(this);
+  m_layerZ->setObjectName(QStringLiteral("gcodeLayerZ"));
+  m_layerZ->setToolTip(tr("The layer's height: the nozzle's Z above the platform in its step's pose"));
+  // As wide as the widest height it will show, so the slider does not jump as the text changes.
+  m_layerZ->setMinimumWidth(m_layerZ->fontMetrics().horizontalAdvance(tr("Z %1 mm").arg(QLocale().toString(888.88, 'f', 2))));
   m_travel = new QCheckBox(tr("Travel moves"), this);
   m_travel->setObjectName(QStringLiteral("showTravelMoves"));
 
@@ -105,6 +110,7 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   auto* previewRow = new QHBoxLayout;
   previewRow->addWidget(new QLabel(tr("Layers:"), this));
   previewRow->addWidget(m_layers, 1);
+  previewRow->addWidget(m_layerZ);
   previewRow->addWidget(m_travel);
 
   auto* box = new QGroupBox(tr("G-code"), this);
@@ -191,6 +197,7 @@ void SlicePanel::showResult(const slicing::SlicedJob& job, int layers) {
     m_table->item(m_table->rowCount() - 1, 0)
         ->setToolTip(tr("The whole model printed along up with PrusaSlicer's own supports: the comparison"));
   }
+  setTextTooltips(m_table, 0);
   m_hasResult = true;
   {
     const QSignalBlocker block(m_layers);
@@ -220,6 +227,7 @@ void SlicePanel::clearResult() {
   }
   m_preview->setEnabled(false);
   m_layerText->clear();
+  m_layerZ->clear();
   updatePreviewControls();
 }
 
@@ -239,11 +247,16 @@ void SlicePanel::setPreviewShown(bool shown) {
 
 void SlicePanel::setLayerText(const QString& text) { m_layerText->setText(text); }
 
+void SlicePanel::setLayerZ(std::optional<double> zMm) {
+  m_layerZ->setText(zMm ? tr("Z %1 mm").arg(QLocale().toString(*zMm, 'f', 2)) : QString());
+}
+
 void SlicePanel::updatePreviewControls() {
   const bool on = m_hasResult && m_preview->isChecked();
   m_layers->setEnabled(on);
   m_travel->setEnabled(on);
   m_layerText->setVisible(on);
+  m_layerZ->setVisible(on);
 }
 
 }  // namespace multidir::ui

@@ -8,6 +8,7 @@
 // The panel only shows and collects; SliceSession (ui/slicing) runs the job and drives the viewer.
 #include <QString>
 #include <QWidget>
+#include <optional>
 
 #include "multidir/slicing/slice_job.h"
 
@@ -50,6 +51,9 @@ class SlicePanel : public QWidget {
   void setPreviewShown(bool shown);
   // The layer slider's position (1..layers) and what that layer is.
   void setLayerText(const QString& text);
+  // The height of the slider's layer (the nozzle's printer Z in its step's pose, mm; docs/slicing.md,
+  // "Preview"), shown beside the slider; nullopt shows nothing.
+  void setLayerZ(std::optional<double> zMm);
 
   [[nodiscard]] QTableWidget* estimatesTable() const { return m_table; }
   [[nodiscard]] QPushButton* sliceButton() const { return m_slice; }
@@ -57,6 +61,7 @@ class SlicePanel : public QWidget {
   [[nodiscard]] QPushButton* exportButton() const { return m_export; }
   [[nodiscard]] QPushButton* previewButton() const { return m_preview; }
   [[nodiscard]] QSlider* layerSlider() const { return m_layers; }
+  [[nodiscard]] QLabel* layerZLabel() const { return m_layerZ; }
   [[nodiscard]] QCheckBox* travelBox() const { return m_travel; }
   [[nodiscard]] QLabel* messageLabel() const { return m_message; }
   [[nodiscard]] QLabel* stageLabel() const { return m_stage; }
@@ -84,6 +89,7 @@ class SlicePanel : public QWidget {
   QPushButton* m_preview = nullptr;
   QSlider* m_layers = nullptr;
   QLabel* m_layerText = nullptr;
+  QLabel* m_layerZ = nullptr;
   QCheckBox* m_travel = nullptr;
   bool m_sliceable = false;
   bool m_running = false;

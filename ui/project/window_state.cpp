@@ -17,6 +17,14 @@ void saveWindowState(const QMainWindow& window) {
   settings.setValue(kStateKey, window.saveState());
 }
 
+QSize initialWindowSize(const QSize& available) {
+  // What a window manager usually adds: a title bar of up to ~40 px and borders of a few px each side.
+  constexpr int kFrameWidth = 16;
+  constexpr int kFrameHeight = 48;
+  return kPreferredWindowSize.boundedTo(QSize(available.width() - kFrameWidth, available.height() - kFrameHeight))
+      .expandedTo(QSize(1, 1));
+}
+
 bool restoreWindowState(QMainWindow& window) {
   const QSettings settings;
   const QByteArray geometry = settings.value(kGeometryKey).toByteArray();

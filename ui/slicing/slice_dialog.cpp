@@ -2,6 +2,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QFile>
 #include <QFileDialog>
@@ -19,6 +20,23 @@
 
 namespace multidir::ui {
 namespace {
+
+// The built-in printers' names (resources/printers/*.ini, "multidir.name"), marked for translation; a printer
+// profile of the user's own keeps the name it was given.
+const char* const kBuiltinPrinterNames[] = {
+    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "Klipper with tilt and rotation steppers, 0.4 mm nozzle"),
+    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "Klipper with a rotary A axis, 0.4 mm nozzle"),
+    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "Generic Marlin 220x220, 0.4 mm nozzle (platform over Modbus)"),
+    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog",
+                      "Open5x-like Prusa i3, RepRapFirmware U tilt + V rotation, 0.4 mm nozzle"),
+    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "Robot arm platform, 0.8 mm nozzle (paper set-up)"),
+};
+
+QString printerNameText(const std::string& name) {
+  for (const char* builtin : kBuiltinPrinterNames)
+    if (name == builtin) return QCoreApplication::translate("multidir::ui::SliceDialog", builtin);
+  return QString::fromStdString(name);
+}
 
 const QString kGroup = QStringLiteral("slicing");
 constexpr int kLoadIniRole = Qt::UserRole + 1;
@@ -84,7 +102,7 @@ SliceDialog::SliceDialog(core::MachineKind machine, QWidget* parent) : QDialog(p
   for (const std::string& name : slicing::builtinPrinterNames()) {
     const core::Result<slicing::PrinterProfile> profile = slicing::loadPrinterProfile(name);
     const QString id = QString::fromStdString(name);
-    m_printer->addItem(profile ? QString::fromStdString(profile->name) : id, id);
+    m_printer->addItem(profile ? printerNameText(profile->name) : id, id);
     // A printer that cannot print this plan is listed but cannot be chosen, and says why.
     const QString reason = profile ? unsuitableReason(*profile, machine) : QString();
     if (!reason.isEmpty()) {
@@ -170,7 +188,7 @@ bool SliceDialog::selectPrinter(const QString& pathOrName) {
     return false;
   }
   if (index < 0) {
-    m_printer->insertItem(m_printer->count() - 1, QString::fromStdString(profile->name), pathOrName);
+    m_printer->insertItem(m_printer->count() - 1, printerNameText(profile->name), pathOrName);
     m_printer->setItemData(m_printer->count() - 2, pathOrName, Qt::ToolTipRole);
     index = m_printer->count() - 2;
   }

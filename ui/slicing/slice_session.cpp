@@ -206,9 +206,11 @@ void SliceSession::showLayer(int layers) {
   const GcodePreview& preview = *m_outcome->preview;
   if (layers < 1 || layers > preview.layerCount()) {
     m_panel->setLayerText(QString());
+    m_panel->setLayerZ(std::nullopt);
     return;
   }
   const ToolpathLayer& layer = preview.layers[static_cast<std::size_t>(layers - 1)];
+  m_panel->setLayerZ(layer.printerZMm);
   m_panel->setLayerText(tr("Layer %1 of %2: step %3, its layer %4").arg(layers).arg(preview.layerCount())
                             .arg(layer.step).arg(layer.layerInStep));
 }

@@ -1,8 +1,12 @@
 #include "ui/viewer/mesh_viewer_widget.h"
 
 #include <QKeyEvent>
+#include <QKeySequence>
+#include <QLabel>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
@@ -12,12 +16,14 @@
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellPicker.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkCylinderSource.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkOpenGLState.h>
 #include <vtkOrientationMarkerWidget.h>
@@ -32,6 +38,7 @@
 
 #include "multidir/core/common/units.h"
 #include "ui/viewer/gcode_scene.h"
+#include "ui/viewer/measure_scene.h"
 #include "ui/viewer/mesh_to_polydata.h"
 #include "ui/viewer/plan_scene.h"
 #include "ui/viewer/platform_geometry.h"
@@ -53,6 +60,10 @@ constexpr double kPickMarkerRgb[3] = {0.95, 0.25, 0.85};
 constexpr unsigned char kTravelRgb[3] = {0, 150, 255};
 // A pick marker's radius as a fraction of the platform's.
 constexpr double kPickMarkerFraction = 0.025;
+// A measured point's marker radius as a fraction of the model's bounding diagonal.
+constexpr double kMeasureMarkerFraction = 0.008;
+// The cell picker's tolerance (a fraction of the window's diagonal): a click on a face's edge still picks.
+constexpr double kCellPickTolerance = 0.0005;
 // A press and release this close (logical pixels) are a click, which picks; farther apart they are a drag.
 constexpr double kClickSlopPixels = 4.0;
 constexpr double kGridRgb[3] = {0.38, 0.38, 0.40};
@@ -70,13 +81,6 @@ core::Vec3 unitOrZ(const core::Vec3& v) {
   const double length = v.norm();
   if (!std::isfinite(length) || length == 0.0) return core::Vec3::UnitZ();
   return v / length;
-}
-
-// The side the camera looks from by default: -Y for Z-up models (the usual "front" of a part on a
-// printer bed), +Z for everything else (the front of a Y-up scanned model).
-core::Vec3 frontSide(const core::Vec3& up) {
-  const core::Vec3 reference = std::abs(up.z()) > 0.9 ? core::Vec3(0.0, -1.0, 0.0) : core::Vec3::UnitZ();
-  return (reference - reference.dot(up) * up).normalized();
 }
 
 // A transform taking VTK's Y-axis sources (cylinder, and the grid built in the XZ plane) to the platform:
@@ -168,6 +172,12 @@ struct MeshViewerWidget::Impl {
   std::unique_ptr<PlanScene> plan;
   std::unique_ptr<SupportScene> supports;
   std::unique_ptr<GcodeScene> gcode;
+  std::unique_ptr<MeasureScene> measure;
+  bool measuring = false;
+  Measurement measurement;
+  std::vector<core::Vec3> measuredWorld;  // the measurement's points where they are drawn
+  QLabel* emptyHint = nullptr;            // owned by the widget
+  StandardView pendingView = StandardView::Home;
   bool picking = false;
   std::optional<QPointF> clickPress;  // where the left button went down, until it moved away: a click
   std::vector<vtkSmartPointer<vtkActor>> pickMarkers;
@@ -188,6 +198,7 @@ struct MeshViewerWidget::Impl {
     plan = std::make_unique<PlanScene>(renderer, overlay);
     supports = std::make_unique<SupportScene>(renderer);
     gcode = std::make_unique<GcodeScene>(renderer);
+    measure = std::make_unique<MeasureScene>(overlay);
     renderer->GradientBackgroundOn();
     renderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
     renderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
@@ -230,6 +241,7 @@ struct MeshViewerWidget::Impl {
     // Mostly ambient: seen at a grazing angle under the headlight it would otherwise look like a shadow.
     platform->SetAmbient(0.6);
     platform->SetDiffuse(0.4);
+    platformActor->PickableOff();  // measuring picks the model's faces only
     gridActor->SetMapper(gridMapper);
     gridActor->GetProperty()->SetColor(kGridRgb[0], kGridRgb[1], kGridRgb[2]);
     gridActor->GetProperty()->LightingOff();
@@ -310,17 +322,23 @@ struct MeshViewerWidget::Impl {
 
   void applyFit() {
     vtkCamera* camera = renderer->GetActiveCamera();
+    const StandardView view = pendingView;
+    pendingView = StandardView::Home;
+    core::Vec3 modelUp = up;
+    if (hasMesh && turnWithMachine && plan->hasPlan()) {
+      modelUp = unitOrZ(plan->plan()->regions[static_cast<std::size_t>(plan->shownRegions() - 1)].printingDirection);
+    }
+    const ViewOrientation orientation = orientationOf(view, modelUp);
+    const core::Vec3& direction = orientation.fromCentre;
+    viewUp = orientation.screenUp;
     if (!hasMesh) {
-      renderer->ResetCamera();
+      // Nothing to frame, but the axes marker turns with the camera: it shows the empty session's up, up.
+      camera->SetFocalPoint(0.0, 0.0, 0.0);
+      camera->SetPosition(direction.x(), direction.y(), direction.z());
+      camera->SetViewUp(viewUp.x(), viewUp.y(), viewUp.z());
+      camera->OrthogonalizeViewUp();
       return;
     }
-    viewUp = up;
-    if (turnWithMachine && plan->hasPlan()) {
-      viewUp = unitOrZ(plan->plan()->regions[static_cast<std::size_t>(plan->shownRegions() - 1)].printingDirection);
-    }
-    const core::Vec3 front = frontSide(viewUp);
-    const core::Vec3 right = (-front).cross(viewUp);
-    const core::Vec3 direction = (front + 0.55 * right + 0.45 * viewUp).normalized();
     double bounds[6];
     if (plan->hasPlan()) {
       renderer->ComputeVisiblePropBounds(bounds);
@@ -342,6 +360,17 @@ struct MeshViewerWidget::Impl {
 MeshViewerWidget::MeshViewerWidget(QWidget* parent) : QOpenGLWidget(parent), m_impl(std::make_unique<Impl>()) {
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(200, 150);
+  // A Qt label over the view (not drawn by VTK, so it never appears in an exported screenshot).
+  m_impl->emptyHint = new QLabel(
+      tr("Open a model (%1) or File > Samples").arg(QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText)),
+      this);
+  m_impl->emptyHint->setObjectName(QStringLiteral("emptyViewHint"));
+  m_impl->emptyHint->setAlignment(Qt::AlignCenter);
+  m_impl->emptyHint->setWordWrap(true);
+  m_impl->emptyHint->setAttribute(Qt::WA_TransparentForMouseEvents);
+  m_impl->emptyHint->setStyleSheet(QStringLiteral("color: #e6e6e6; background: transparent; font-size: 15pt;"));
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(m_impl->emptyHint, 0, Qt::AlignCenter);
 }
 
 MeshViewerWidget::~MeshViewerWidget() {
@@ -384,6 +413,7 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
   m.gridActor->SetUserTransform(platformFrame(disc, 0.5 * kPlatformGap * disc.radiusMm));
   m.gridActor->SetVisibility(!mesh.empty());
   m.hasMesh = !mesh.empty();
+  m.emptyHint->setVisible(!m.hasMesh);
   m.placeRotationAxis();
   fitView();
 }
@@ -403,12 +433,142 @@ void MeshViewerWidget::clear() {
   m.platformActor->VisibilityOff();
   m.gridActor->VisibilityOff();
   m.hasMesh = false;
+  m.emptyHint->setVisible(true);
   update();
 }
 
-void MeshViewerWidget::fitView() {
+void MeshViewerWidget::fitView() { setStandardView(StandardView::Home); }
+
+void MeshViewerWidget::setStandardView(StandardView view) {
   // The camera's framing depends on the viewport's aspect ratio, known for sure only when painting.
+  m_impl->pendingView = view;
   m_impl->fitPending = true;
+  update();
+}
+
+void MeshViewerWidget::setOrthographic(bool orthographic) {
+  vtkCamera* camera = m_impl->renderer->GetActiveCamera();
+  if ((camera->GetParallelProjection() != 0) == orthographic) return;
+  if (orthographic) {
+    // The parallel view as wide at the focal point as the perspective one was: the model keeps its size.
+    camera->SetParallelScale(camera->GetDistance() * std::tan(core::degToRad(0.5 * camera->GetViewAngle())));
+  }
+  camera->SetParallelProjection(orthographic ? 1 : 0);
+  update();
+}
+
+bool MeshViewerWidget::isOrthographic() const {
+  return m_impl->renderer->GetActiveCamera()->GetParallelProjection() != 0;
+}
+
+core::Vec3 MeshViewerWidget::cameraDirection() const {
+  double direction[3];
+  m_impl->renderer->GetActiveCamera()->GetDirectionOfProjection(direction);
+  return core::Vec3(direction[0], direction[1], direction[2]).normalized();
+}
+
+core::Vec3 MeshViewerWidget::cameraUp() const {
+  double up[3];
+  m_impl->renderer->GetActiveCamera()->GetViewUp(up);
+  return core::Vec3(up[0], up[1], up[2]).normalized();
+}
+
+void MeshViewerWidget::setEmptyUp(const core::Vec3& up) {
+  if (m_impl->hasMesh) return;
+  m_impl->up = unitOrZ(up);
+  fitView();
+}
+
+bool MeshViewerWidget::isEmptyHintShown() const { return !m_impl->emptyHint->isHidden(); }
+
+QString MeshViewerWidget::emptyHintText() const { return m_impl->emptyHint->text(); }
+
+void MeshViewerWidget::setMeasuring(bool on) {
+  Impl& m = *m_impl;
+  if (m.measuring == on) return;
+  if (on && m.picking) {
+    setPlatformPicking(false);
+    emit platformPickCancelled();
+  }
+  m.measuring = on;
+  m.clickPress.reset();
+  m.measurement = {};
+  m.measuredWorld.clear();
+  if (on) {
+    setCursor(Qt::CrossCursor);
+  } else {
+    unsetCursor();
+  }
+  showMeasurement();
+  emit measuringChanged(on);
+  emit measurementChanged();
+}
+
+bool MeshViewerWidget::isMeasuring() const { return m_impl->measuring; }
+
+const Measurement& MeshViewerWidget::measurement() const { return m_impl->measurement; }
+
+int MeshViewerWidget::measureMarkersShown() const { return m_impl->measure->markersShown(); }
+
+bool MeshViewerWidget::measureLineShown() const { return m_impl->measure->lineShown(); }
+
+namespace {
+
+// A picked surface point: in the model's coordinates, and where it is drawn (the exploded plan view moves a
+// region's actor away from the model's coordinates).
+struct SurfacePick {
+  core::Vec3 model;
+  core::Vec3 world;
+};
+
+std::optional<SurfacePick> pickSurface(vtkRenderer* renderer, vtkRenderWindow* window, const QWidget* widget,
+                                       const QPointF& position) {
+  // VTK's display coordinates: device pixels, origin bottom left (as setMouseInformation hands clicks over).
+  const qreal ratio = widget->devicePixelRatioF();
+  vtkNew<vtkCellPicker> picker;
+  picker->SetTolerance(kCellPickTolerance);
+  if (picker->Pick(position.x() * ratio, window->GetSize()[1] - 1 - position.y() * ratio, 0.0, renderer) == 0)
+    return std::nullopt;
+  vtkActor* actor = picker->GetActor();
+  if (actor == nullptr || picker->GetCellId() < 0) return std::nullopt;
+  double world[4] = {0.0, 0.0, 0.0, 1.0};
+  picker->GetPickPosition(world);
+  vtkNew<vtkMatrix4x4> toModel;
+  vtkMatrix4x4::Invert(actor->GetMatrix(), toModel);
+  double model[4];
+  toModel->MultiplyPoint(world, model);
+  return SurfacePick{core::Vec3(model[0], model[1], model[2]) / model[3], core::Vec3(world[0], world[1], world[2])};
+}
+
+QString formatMm(double value) { return QLocale().toString(value, 'f', 2); }
+
+}  // namespace
+
+std::optional<core::Vec3> MeshViewerWidget::modelPointAt(const QPointF& position) const {
+  if (!m_impl->hasMesh) return std::nullopt;
+  const std::optional<SurfacePick> pick = pickSurface(m_impl->renderer, m_impl->window, this, position);
+  if (!pick) return std::nullopt;
+  return pick->model;
+}
+
+void MeshViewerWidget::showMeasurement() {
+  Impl& m = *m_impl;
+  const auto point = [](const core::Vec3& p) {
+    return tr("%1, %2, %3 mm").arg(formatMm(p.x()), formatMm(p.y()), formatMm(p.z()));
+  };
+  QString corner;
+  QString label;
+  if (m.measurement.first) corner = tr("A: %1").arg(point(*m.measurement.first));
+  if (m.measurement.second) {
+    const QString distance = tr("%1 mm").arg(formatMm(*m.measurement.distanceMm()));
+    corner += QLatin1Char('\n') + tr("B: %1").arg(point(*m.measurement.second)) + QLatin1Char('\n') +
+              tr("Distance: %1").arg(distance);
+    label = distance;
+  } else if (m.measurement.first) {
+    corner += QLatin1Char('\n') + tr("Click a second point on the model (Esc ends measuring)");
+  }
+  m.measure->show(m.measuredWorld, kMeasureMarkerFraction * (m.modelSizeMm > 0.0 ? m.modelSizeMm : 100.0),
+                  corner.toStdString(), label.toStdString());
   update();
 }
 
@@ -442,6 +602,7 @@ PlatformDisc MeshViewerWidget::platform() const { return m_impl->platform; }
 
 void MeshViewerWidget::setPlatformPicking(bool on) {
   Impl& m = *m_impl;
+  if (on) setMeasuring(false);
   m.picking = on;
   m.clickPress.reset();
   if (on) {
@@ -455,6 +616,7 @@ void MeshViewerWidget::setPlatformPicking(bool on) {
 bool MeshViewerWidget::isPlatformPicking() const { return m_impl->picking; }
 
 void MeshViewerWidget::endPickingOnNewScene() {
+  setMeasuring(false);
   if (!m_impl->picking) return;
   setPlatformPicking(false);
   emit platformPickCancelled();
@@ -537,6 +699,7 @@ void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan, 
     clearPlan();
     return;
   }
+  setMeasuring(false);
   m.endGcodePreview();
   m.plan->setPlan(std::move(plan), m.platform.center, m.modelSizeMm);
   m.supports->clear();
@@ -552,6 +715,7 @@ void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan, 
 void MeshViewerWidget::clearPlan() {
   Impl& m = *m_impl;
   if (!m.plan->hasPlan()) return;
+  setMeasuring(false);
   m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
@@ -612,6 +776,13 @@ int MeshViewerWidget::clippingPlaneAt(const QPointF& position) const {
 }
 
 void MeshViewerWidget::setExplodeDistance(double distanceMm) {
+  // Measured points stay where they were picked: a new explosion starts a new measurement.
+  if (m_impl->measuring && m_impl->plan->explodeDistance() != distanceMm) {
+    m_impl->measurement = {};
+    m_impl->measuredWorld.clear();
+    showMeasurement();
+    emit measurementChanged();
+  }
   m_impl->plan->setExplodeDistance(distanceMm);
   placeSupports();
   update();
@@ -822,7 +993,21 @@ void MeshViewerWidget::mouseReleaseEvent(QMouseEvent* event) {
   // A click without movement picks; the view has not turned, so what is picked is what the cursor shows.
   if (event->button() != Qt::LeftButton || !m_impl->clickPress) return;
   m_impl->clickPress.reset();
-  if (m_impl->picking) {
+  if (m_impl->measuring) {
+    const std::optional<SurfacePick> pick =
+        m_impl->hasMesh ? pickSurface(m_impl->renderer, m_impl->window, this, event->position()) : std::nullopt;
+    if (!pick) return;
+    Measurement& measurement = m_impl->measurement;
+    if (!measurement.first || measurement.second) {
+      measurement = {pick->model, std::nullopt};
+      m_impl->measuredWorld = {pick->world};
+    } else {
+      measurement.second = pick->model;
+      m_impl->measuredWorld.push_back(pick->world);
+    }
+    showMeasurement();
+    emit measurementChanged();
+  } else if (m_impl->picking) {
     const PlatformHit hit = platformHitAt(event->position());
     if (hit.kind == PlatformHitKind::Hit) {
       emit platformPointPicked(hit.point);
@@ -866,6 +1051,11 @@ void MeshViewerWidget::keyPressEvent(QKeyEvent* event) {
       event->accept();
       return;
     case Qt::Key_Escape:
+      if (m_impl->measuring) {
+        setMeasuring(false);
+        event->accept();
+        return;
+      }
       if (!m_impl->picking) break;
       setPlatformPicking(false);
       event->accept();
@@ -891,8 +1081,8 @@ void MeshViewerWidget::keyPressEvent(QKeyEvent* event) {
 }
 
 bool MeshViewerWidget::event(QEvent* event) {
-  // While picking, Esc ends picking here rather than triggering the window's Esc shortcut.
-  if (event->type() == QEvent::ShortcutOverride && m_impl->picking &&
+  // While picking or measuring, Esc ends it here rather than triggering the window's Esc shortcut.
+  if (event->type() == QEvent::ShortcutOverride && (m_impl->picking || m_impl->measuring) &&
       static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
     event->accept();
     return true;

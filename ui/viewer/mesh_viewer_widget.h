@@ -17,8 +17,10 @@
 #include "multidir/core/mesh/triangle_mesh.h"
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/supports/support_set.h"
+#include "ui/viewer/measurement.h"
 #include "ui/viewer/platform_geometry.h"
 #include "ui/viewer/platform_picker.h"
+#include "ui/viewer/standard_view.h"
 
 namespace multidir::ui {
 
@@ -36,10 +38,40 @@ class MeshViewerWidget : public QOpenGLWidget {
   // Shows `mesh` (copied into the view), flat-shaded, on a platform through its lowest point along `up`,
   // with `up` pointing up on screen, and fits the view. A zero or non-finite `up` counts as +Z.
   void setMesh(const core::TriangleMesh& mesh, const core::Vec3& up);
-  // Removes the model and the platform; the background and the axes marker stay.
+  // Removes the model and the platform; the background and the axes marker stay, and the empty view's hint
+  // shows again.
   void clear();
   // Looks at the whole model and platform from the front, slightly from above and to the right.
   void fitView();
+  // Looks at the whole model and platform from `view` (ui/viewer/standard_view.h), relative to the model's up.
+  void setStandardView(StandardView view);
+  // Parallel (orthographic) projection instead of perspective; the framing stays.
+  void setOrthographic(bool orthographic);
+  [[nodiscard]] bool isOrthographic() const;
+  // The camera as drawn now: the unit direction it looks along, and what points up on screen (unit).
+  [[nodiscard]] core::Vec3 cameraDirection() const;
+  [[nodiscard]] core::Vec3 cameraUp() const;
+  // The up direction of an empty view (no model): the axes marker shows it up on screen, so an empty session
+  // agrees with the Up box. setMesh brings the model's own up.
+  void setEmptyUp(const core::Vec3& up);
+  // The hint an empty view shows ("Open a model..."): shown exactly while there is no model.
+  [[nodiscard]] bool isEmptyHintShown() const;
+  [[nodiscard]] QString emptyHintText() const;
+
+  // Measuring (View > Measure distance): while on, the cursor is a cross and each left click without
+  // movement on the model (or the plan's regions) picks a point on the face under the cursor; the second
+  // pick completes a measurement (both points, the line and the distance drawn), a third starts a new one.
+  // Drags still turn the view. Esc ends it (measuringChanged(false)), and so do a new model, plan or clear();
+  // ending clears the measurement.
+  void setMeasuring(bool on);
+  [[nodiscard]] bool isMeasuring() const;
+  [[nodiscard]] const Measurement& measurement() const;
+  // The point of the model's surface under `position` (widget coordinates, logical pixels), in the model's
+  // coordinates (mm); nullopt when the ray meets no face of the model or the plan's regions.
+  [[nodiscard]] std::optional<core::Vec3> modelPointAt(const QPointF& position) const;
+  // Markers of the measurement drawn now (0, 1 or 2), and whether its line is drawn.
+  [[nodiscard]] int measureMarkersShown() const;
+  [[nodiscard]] bool measureLineShown() const;
 
   // Overhangs: faces flagged in `risky` (one flag per face of the mesh shown, cell i = face i) are drawn in
   // riskyColor(), the others in modelColor(). Only the per-face colour array is rewritten, nothing else of
@@ -143,6 +175,10 @@ class MeshViewerWidget : public QOpenGLWidget {
  signals:
   // Emitted after each rendered frame.
   void frameRendered();
+  // Measuring began or ended (setMeasuring, Esc, a new scene).
+  void measuringChanged(bool on);
+  // A point was picked (or the measurement cleared): measurement() has it.
+  void measurementChanged();
   // Platform picking (setPlatformPicking): a click hit the platform at `point` (mm).
   void platformPointPicked(const multidir::core::Vec3& point);
   // Platform picking: a click missed the platform.
@@ -170,6 +206,7 @@ class MeshViewerWidget : public QOpenGLWidget {
  private:
   void releaseGraphics();
   void endPickingOnNewScene();
+  void showMeasurement();
   void placeSupports();
 
   struct Impl;
