@@ -123,7 +123,8 @@ void UrController::tick() {
   const robot::Joints before = m_q;
   if (m_robotMode == UrRobotMode::PowerOn && m_time - m_poweredOnAt >= kPowerOnSeconds - 1e-9)
     m_robotMode = UrRobotMode::Idle;
-  const double setPoint = m_analogOut[1] * kNozzleFullScaleC;
+  // A set point below the room's temperature is the heater off: the nozzle cools to the room, not below it.
+  const double setPoint = std::max(m_analogOut[1] * kNozzleFullScaleC, kAmbientC);
   m_nozzleC += std::clamp(setPoint - m_nozzleC, -kNozzleCoolingCPerS * kUrTickSeconds,
                           kNozzleHeatingCPerS * kUrTickSeconds);
   if (m_activity == Activity::Braking)
@@ -349,7 +350,7 @@ void UrController::beginBraking() {
   m_brakeFromQd = m_qd;
   m_brakeDuration = 0.0;
   for (std::size_t i = 0; i < 6; ++i)
-    m_brakeDuration = std::max(m_brakeDuration, std::abs(m_qd[i]) / m_arm.limits[i].maxAccelRadPerS2);
+    m_brakeDuration = std::max(m_brakeDuration, std::abs(m_qd[i]) / kStopDecelerationRadPerS2);
   m_elapsed = 0.0;
   if (m_brakeDuration <= 0.0) {
     m_activity = Activity::None;
@@ -371,11 +372,11 @@ void UrController::haltProgram(UrProgramState state) {
   if (state == UrProgramState::Stopped) m_program.reset();
 }
 
-void UrController::fault(UrSafetyMode mode, const std::string& words, int code) {
+void UrController::fault(UrSafetyMode mode, const std::string& words, int code, int argument) {
   m_safetyMode = mode;
   m_lastFault = words;
   if (mode == UrSafetyMode::ProtectiveStop) m_protectiveStopAt = m_time;
-  message(Kind::ErrorCode, words, 0, 0, code, 0);
+  message(Kind::ErrorCode, words, 0, 0, code, argument);
   haltProgram(UrProgramState::Stopped);
 }
 

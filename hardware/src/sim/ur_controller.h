@@ -9,8 +9,8 @@
 // (orientation by the shortest rotation) on a trapezoidal profile at a and v, and solves the inverse kinematics
 // every tick on the branch nearest the current joints. Moves end at rest (blend radii are read, not blended).
 // Every tick is checked against the arm's joint position and speed limits: a violation is a protective stop.
-// Stops (stop, pause, protective stop, power off, emergency stop) brake every joint to rest together at the
-// arm's joint acceleration limits from the speeds of the last tick.
+// Stops (stop, pause, protective stop, power off, emergency stop) brake every joint to rest together, at
+// kStopDecelerationRadPerS2 for the joint that takes longest, from the speeds of the last tick.
 #include <Eigen/Geometry>
 #include <array>
 #include <deque>
@@ -33,6 +33,10 @@ constexpr double kNozzleFullScaleC = 300.0;
 constexpr double kAmbientC = 25.0;
 // UR lets a protective stop be unlocked 5 s after it happened (dashboard "unlock protective stop").
 constexpr double kProtectiveStopUnlockSeconds = 5.0;
+// Every stop (stop, pause, protective stop, power off, emergency stop) brakes each joint at this deceleration, a
+// category 1/2 stop as UR's arms make it in a few tenths of a second from full speed; the arm's own acceleration
+// limit (movej's 1.4 rad/s^2) is for planned motion, far gentler than a stop.
+constexpr double kStopDecelerationRadPerS2 = 10.0;
 // Powering on takes the arm through POWER_ON to IDLE.
 constexpr double kPowerOnSeconds = 0.5;
 
@@ -104,7 +108,7 @@ class UrController {
   void advanceActivity();
   void beginBraking();
   void haltProgram(ur::UrProgramState state);
-  void fault(ur::UrSafetyMode mode, const std::string& words, int code);
+  void fault(ur::UrSafetyMode mode, const std::string& words, int code, int argument = 0);
   bool checkLimits(const robot::Joints& next, bool positionOnly);
   void message(ur::UrRobotMessage::Kind kind, const std::string& text, int line = 0, int column = 0, int code = 0,
                int argument = 0);

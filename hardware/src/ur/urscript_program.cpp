@@ -39,8 +39,14 @@ class Reader {
  public:
   Reader(const std::string& text, int firstColumn) : m_text(text), m_first(firstColumn) {}
 
-  [[noreturn]] void refuse(const std::string& message) const {
-    throw Refusal{m_first + static_cast<int>(m_at), message};
+  [[noreturn]] void refuse(const std::string& message) const { refuseAt(m_at, message); }
+  [[noreturn]] void refuseAt(std::size_t at, const std::string& message) const {
+    throw Refusal{m_first + static_cast<int>(at), message};
+  }
+  // Where the next token starts (for a refusal naming it after it was read).
+  std::size_t mark() {
+    skipSpace();
+    return m_at;
   }
   void skipSpace() {
     while (m_at < m_text.size() && m_text[m_at] == ' ') ++m_at;
@@ -111,13 +117,14 @@ void moveArguments(Reader& reader, UrStatement& statement, bool blend) {
   bool seenV = false;
   bool seenR = false;
   while (reader.accept(",")) {
+    const std::size_t at = reader.mark();
     const std::string name = reader.identifier();
     reader.expect("=", "after " + name);
     bool* seen = name == "a" ? &seenA : name == "v" ? &seenV : (blend && name == "r") ? &seenR : nullptr;
     if (seen == nullptr)
-      reader.refuse("'" + name + "' is not an argument MultiDir's programs give " +
+      reader.refuseAt(at, "'" + name + "' is not an argument MultiDir's programs give " +
                     (blend ? std::string("movel (a, v, r)") : std::string("movej (a, v)")));
-    if (*seen) reader.refuse("'" + name + "' is given twice");
+    if (*seen) reader.refuseAt(at, "'" + name + "' is given twice");
     *seen = true;
     const double value = reader.number(name);
     if (name == "a") statement.a = value;
@@ -132,6 +139,7 @@ void moveArguments(Reader& reader, UrStatement& statement, bool blend) {
 UrStatement statementOf(Reader& reader, int line) {
   UrStatement s;
   s.line = line;
+  const std::size_t nameAt = reader.mark();
   const std::string name = reader.identifier();
   reader.expect("(", "after " + name);
   if (name == "set_tcp") {
@@ -184,9 +192,9 @@ UrStatement statementOf(Reader& reader, int line) {
     s.text = reader.quoted();
     reader.expect(")", "to close the call");
   } else {
-    throw Refusal{1, "'" + name + "' is not in the URScript subset MultiDir's programs use (set_tcp, "
+    reader.refuseAt(nameAt, "'" + name + "' is not in the URScript subset MultiDir's programs use (set_tcp, "
                       "set_standard_analog_out, set_standard_digital_out, movej, movel, sleep, textmsg and the "
-                      "heat wait loop)"};
+                      "heat wait loop)");
   }
   if (!reader.done()) reader.refuse("unexpected text after the statement");
   return s;
