@@ -16,6 +16,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <tuple>
 
 #include "multidir/robot/ur_kinematics.h"
 #include "sim/listen_socket.h"
@@ -345,25 +346,32 @@ class UrSimulator::Impl {
     }
     const double target = std::chrono::duration<double>(now - m_started).count() * m_options.speed;
     int ticks = 0;
+    // A real controller sends every tick's package; faster than real time the newest is sent, and with it every
+    // tick whose modes or program state changed, so a client sees every program start and end.
+    std::string packages;
+    const auto modes = [&] {
+      return std::make_tuple(m_controller->programState(), m_controller->robotMode(), m_controller->safetyMode());
+    };
     while (m_controller->time() + sim::kUrTickSeconds <= target + 1e-9 && ticks < kMaxTicksPerLoop) {
       injectScheduledFault(now);
+      const auto before = modes();
       m_controller->tick();
       ++ticks;
       if (!m_firstProgramAt && !m_controller->programName().empty()) m_firstProgramAt = m_controller->time();
       for (sim::UrTraceSample& sample : m_controller->takeTrace()) keep(sample);
+      const bool last = !(m_controller->time() + sim::kUrTickSeconds <= target + 1e-9 && ticks < kMaxTicksPerLoop);
+      if (modes() != before || last) {
+        const std::vector<std::uint8_t> bytes = ur::encodeRealtime(m_controller->realtime());
+        packages.append(bytes.begin(), bytes.end());
+      }
     }
     std::string messages;
     for (const ur::UrRobotMessage& message : m_controller->takeMessages()) {
       const std::vector<std::uint8_t> bytes = ur::encodeRobotMessage(message);
       messages.append(bytes.begin(), bytes.end());
     }
-    std::string package;
-    if (ticks > 0) {
-      const std::vector<std::uint8_t> bytes = ur::encodeRealtime(m_controller->realtime());
-      package.assign(bytes.begin(), bytes.end());
-    }
     for (Client& client : m_clients) {
-      if (client.port == Port::Realtime && !package.empty()) queue(client, package);
+      if (client.port == Port::Realtime && !packages.empty()) queue(client, packages);
       if (client.port == Port::Secondary && !messages.empty()) queue(client, messages);
     }
     if (ticks > 0) m_advanced.notify_all();

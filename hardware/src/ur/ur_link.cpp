@@ -406,7 +406,11 @@ class UrLink::Impl {
     m_status.controllerTime = s->time;
     m_status.robotMode = ur::urRobotModeName(s->robotMode);
     m_status.safetyMode = ur::urSafetyModeName(s->safetyMode);
+    const std::string previous = m_status.programState;
     m_status.programState = ur::urProgramStateName(s->programState);
+    if (previous != "PLAYING" && previous != "PAUSED" && m_status.programState == "PLAYING") ++m_status.programStarts;
+    if ((previous == "PLAYING" || previous == "PAUSED") && m_status.programState == "STOPPED")
+      ++m_status.programEnds;
     m_status.joints = s->qActual;
     m_status.jointSpeeds = s->qdActual;
     m_status.tcp = s->toolVectorActual;

@@ -55,6 +55,9 @@ struct UrLinkStatus {
   std::array<double, 6> jointSpeeds{};  // rad/s
   std::array<double, 6> tcp{};          // x, y, z (m), rotation vector (rad)
   bool atRest = true;                   // every joint speed below 1e-6 rad/s
+  // Program starts (into PLAYING) and ends (back to STOPPED) seen in the real-time stream since connect().
+  std::uint64_t programStarts = 0;
+  std::uint64_t programEnds = 0;
   StopLatch stop;
 };
 
