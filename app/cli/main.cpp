@@ -13,6 +13,7 @@
 #include "export_command.h"
 #include "info_command.h"
 #include "report_command.h"
+#include "robot_commands.h"
 #include "run_command.h"
 #include "simulate_command.h"
 #include "slice_command.h"
@@ -43,6 +44,9 @@ const char* const kUsage =
     "  run JOB --printer URL --platform HOST:PORT --machine PROFILE.json   print a sliced job: platform and\n"
     "                              printer in the loop\n"
     "  run OUT --robot HOST[:PORT] run a robot cell's job on a UR controller\n"
+    "  cell check CELL             check a robot cell file (a UR arm carrying the platform, a fixed extruder)\n"
+    "  robot-program JOB --cell CELL -o OUT   the robot cell's URScript programs of a job sliced with the\n"
+    "                              cell's profile, every pose checked\n"
     "  help [COMMAND]              show this help, or a command's help\n"
     "\n"
     "Options:\n"
@@ -98,6 +102,14 @@ int help(const std::vector<std::string>& args) {
     std::cout << kRunHelp;
     return kExitOk;
   }
+  if (args[0] == "cell") {
+    std::cout << kCellHelp;
+    return kExitOk;
+  }
+  if (args[0] == "robot-program") {
+    std::cout << kRobotProgramHelp;
+    return kExitOk;
+  }
   throw UsageError("multidir help: unknown command '" + args[0] + "'. Run 'multidir --help' for the list.");
 }
 
@@ -124,6 +136,8 @@ int run(const std::vector<std::string>& args) {
   if (command == "apart") return runApart(rest, std::cout, std::cerr);
   if (command == "audit") return runAudit(rest, std::cout, std::cerr);
   if (command == "run") return runRun(rest, std::cout, std::cerr);
+  if (command == "cell") return runCell(rest, std::cout, std::cerr);
+  if (command == "robot-program") return runRobotProgram(rest, std::cout, std::cerr);
   if (!command.empty() && command[0] == '-')
     throw UsageError("multidir: unknown option '" + command + "'. Run 'multidir --help' for the list.");
   throw UsageError("multidir: unknown command '" + command + "'. Run 'multidir --help' for the list.");

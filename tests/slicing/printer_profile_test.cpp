@@ -39,7 +39,14 @@ TEST(PrinterProfile, ShippedProfilesLoadByName) {
   ASSERT_TRUE(robot.ok()) << robot.error().describe();
   EXPECT_DOUBLE_EQ(robot->nozzleDiameterMm, 0.8);
   EXPECT_EQ(builtinPrinterNames(),
-            (std::vector<std::string>{"klipper-2axis", "klipper-rotary", "marlin-220", "open5x-rrf", "robot-0.8"}));
+            (std::vector<std::string>{"klipper-2axis", "klipper-rotary", "marlin-220", "open5x-rrf", "robot-0.8",
+                                      "ur5-cell-0.8"}));
+  // The robot cell's profile: G-code relative to the platform centre, on the platform plane at rest.
+  const auto cell = loadPrinterProfile("ur5-cell-0.8");
+  ASSERT_TRUE(cell.ok()) << cell.error().describe();
+  EXPECT_EQ(cell->platformCenter, Eigen::Vector2d(0, 0));
+  EXPECT_DOUBLE_EQ(cell->platformZMm, 0.0);
+  EXPECT_DOUBLE_EQ(cell->nozzleDiameterMm, 0.8);
 }
 
 TEST(PrinterProfile, BedWithoutAreaIsRefusedNamingTheKey) {

@@ -1,0 +1,61 @@
+#pragma once
+// A sliced job turned into the robot cell's programs (`multidir robot-program JOB --cell CELL -o OUT`,
+// docs/robot-cell.md "Programs"): every G-code move of every step becomes a platform pose that puts the fixed
+// nozzle tip at the move's point of the part with the step's printing direction along the nozzle axis, checked
+// (reach, joint limits, one arm configuration per step, joint jumps, singularity margins, joint speeds,
+// collisions with the extruder's bodies and the table) and written as URScript, one program per step.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "multidir/core/common/job_context.h"
+#include "multidir/core/common/result.h"
+#include "multidir/robot/cell.h"
+
+namespace multidir::robot {
+
+struct RobotProgramOptions {
+  double rotationStepDegrees = 10.0;  // the free rotation about the nozzle axis is sampled this finely per step
+  double sampleMm = 5.0;              // moves are checked at points this far apart (and at both ends)
+};
+
+struct RobotStepSummary {
+  int step = 1;
+  std::string program;              // "step-01.script"
+  double seconds = 0.0;             // the robot's own time estimate (trapezoid per move), heating waits excluded
+  double filamentMm = 0.0;          // what the program's analog out 0 drives the extruder to push
+  double gcodeFilamentMm = 0.0;     // the G-code's E of the step's extrusion moves
+  double slicerSeconds = 0.0;       // the slicer's estimate, for comparison
+  int moves = 0;                    // movel commands
+  int gcodeMoves = 0;               // G-code moves converted (XY or Z motion)
+  double reachMarginMm = 0.0;       // least over the step: the wrist centre from the workspace's edges
+  double wristMarginDegrees = 0.0;  // least over the step: q5 from 0 and 180 deg
+  int slowestJoint = 0;             // 1..6: the joint nearest its speed limit at the requested feeds
+  double slowestJointLoad = 0.0;    // its speed over its limit, before slowing (> 1: slowed)
+  int slowdowns = 0;                // moves slowed below the G-code's feed for a joint's speed or the extruder's
+  double slowdownSeconds = 0.0;     // time the slowdowns add
+  double rotationDegrees = 0.0;     // the chosen rotation about the nozzle axis
+  int branch = 0;                   // the arm configuration (ur_kinematics.h) the whole step uses
+};
+
+struct RobotJob {
+  std::string robot;                        // "ur5"
+  std::vector<RobotStepSummary> steps;
+  std::vector<std::string> scripts;         // URScript text per step
+  double conversionSeconds = 0.0;           // wall time of the conversion
+};
+
+// Errors: those of reading the job (FileNotFound, MalformedFile, InvalidParameter for a job never sliced),
+// CheckFailed listing every refusal: "step 2, line 345 (step-02.gcode): ..." with the reason and what to do.
+core::Result<RobotJob> planRobotJob(const std::filesystem::path& jobDirectory, const Cell& cell,
+                                    const RobotProgramOptions& options, core::JobContext context);
+
+// Writes OUT/robot-job.json, OUT/cell.json (a copy of `cellFile`), OUT/step-NN.script and OUT/summary.txt
+// through a staged folder that takes OUT's place only once complete. Errors: WriteFailed naming the path.
+core::Status writeRobotJob(const RobotJob& job, const std::filesystem::path& cellFile,
+                           const std::filesystem::path& outDirectory);
+
+// The summary table (summary.txt and the command's output).
+std::string robotJobSummary(const RobotJob& job);
+
+}  // namespace multidir::robot
