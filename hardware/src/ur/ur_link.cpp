@@ -220,7 +220,7 @@ class UrLink::Impl {
                                " is latched: no program is sent until it is cleared",
                            "program"};
     }
-    std::lock_guard<std::mutex> streams(m_streamMutex);
+    std::lock_guard<std::mutex> sending(m_sendMutex);
     if (m_fd[1] < 0) return unreachable("secondary interface", "the link to the robot is down: " + problem());
     std::string text = script;
     if (text.empty() || text.back() != '\n') text += '\n';
@@ -294,6 +294,7 @@ class UrLink::Impl {
       return false;
     }
     std::lock_guard<std::mutex> dash(m_dashboardMutex);
+    std::lock_guard<std::mutex> sending(m_sendMutex);
     std::lock_guard<std::mutex> streams(m_streamMutex);
     for (int i = 0; i < 3; ++i) m_fd[i] = fds[i];
     m_buffer[0].clear();
@@ -304,6 +305,7 @@ class UrLink::Impl {
 
   void closeAll() {
     std::lock_guard<std::mutex> dash(m_dashboardMutex);
+    std::lock_guard<std::mutex> sending(m_sendMutex);
     std::lock_guard<std::mutex> streams(m_streamMutex);
     for (int& fd : m_fd) {
       if (fd >= 0) ::close(fd);
@@ -337,10 +339,12 @@ class UrLink::Impl {
   // Reads what the secondary and real-time interfaces sent, waiting at most `waitMs`; false when one closed
   // or sent what is not UR's format (the reason in m_lost).
   bool readStreams(int waitMs) {
-    std::lock_guard<std::mutex> streams(m_streamMutex);
+    // Only the worker (or connect() before it starts) reads and replaces the descriptors, so the wait needs no
+    // lock: a sender or a dashboard request is never held up by it.
     if (m_fd[1] < 0 || m_fd[2] < 0) return false;
     pollfd fds[2] = {{m_fd[1], POLLIN, 0}, {m_fd[2], POLLIN, 0}};
     ::poll(fds, 2, waitMs);
+    std::lock_guard<std::mutex> streams(m_streamMutex);
     const char* names[2] = {"the secondary interface", "the real-time interface"};
     for (int i = 0; i < 2; ++i) {
       char buffer[65536];
@@ -515,7 +519,8 @@ class UrLink::Impl {
   UrLinkSettings m_settings;
   mutable std::mutex m_mutex;        // m_status, m_messages, m_nextStopSend, m_stopSentAtPackage
   std::mutex m_dashboardMutex;       // the dashboard socket: one request and its reply at a time
-  std::mutex m_streamMutex;          // the secondary and real-time sockets
+  std::mutex m_sendMutex;            // writes to the secondary interface: one program at a time
+  std::mutex m_streamMutex;          // reads of the secondary and real-time interfaces and their buffers
   int m_fd[3] = {-1, -1, -1};        // dashboard, secondary, real-time
   std::string m_buffer[2];           // secondary, real-time bytes not yet a whole package
   std::atomic<std::uint64_t> m_packages{0};
