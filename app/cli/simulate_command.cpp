@@ -24,7 +24,7 @@ const char* const kSimulateHelp =
     "                         [--manual-stepper NAME,... (moonraker) | --rotary-axes LETTERS (octoprint)]\n"
     "       multidir simulate --printer marlin [--speed X] [--fault NAME [--fault-at-line N]] [--rotary-axes U,V]\n"
     "       multidir simulate --ur MODEL [--port P] [--speed X] [--fault NAME [--fault-at S | --fault-at-line N]]\n"
-    "                         [--trace FILE]\n"
+    "                         [--cell CELL] [--trace FILE]\n"
     "\n"
     "Runs a Modbus TCP simulator of MultiDir's devices until Ctrl-C: the rotary platform controller and the\n"
     "Universal Robots arm's registers 128-255 with the behaviour of multidir_platform.script (register maps:\n"
@@ -75,6 +75,7 @@ const char* const kSimulateHelp =
     "the model's kinematics at the programs' a and v; a joint limit is a protective stop. Give it to\n"
     "'multidir run OUT --robot 127.0.0.1:P'.\n"
     "  --ur MODEL        simulate this arm\n"
+    "  --cell CELL       the robot cell's file: the arm gets its joint limits and starts at its home\n"
     "  --fault NAME      inject once: protective-stop, emergency-stop, link-drop (3 s), program-error, at\n"
     "  --fault-at S      S simulated seconds after the first program started (default: 5), or\n"
     "  --fault-at-line N when a program reaches line N\n"
@@ -297,7 +298,7 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
   const ParsedArgs parsed = parseArgs(
       args,
       {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key",
-       "--rotary-axes", "--manual-stepper", "--ur", "--trace"},
+       "--rotary-axes", "--manual-stepper", "--ur", "--trace", "--cell"},
       {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
@@ -307,8 +308,9 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
     throw UsageError("multidir simulate: unexpected argument '" + parsed.positionals[0] +
                      "'. Run 'multidir help simulate'.");
   if (parsed.has("--ur")) return simulateUr(parsed, out, err);
-  if (parsed.has("--trace"))
-    throw UsageError("multidir simulate: --trace is for --ur MODEL. Run 'multidir help simulate'.");
+  for (const char* urOnly : {"--trace", "--cell"})
+    if (parsed.has(urOnly))
+      throw UsageError(std::string("multidir simulate: ") + urOnly + " is for --ur MODEL. Run 'multidir help simulate'.");
   if (parsed.has("--printer")) return simulatePrinter(parsed, out, err);
   for (const char* printerOnly :
        {"--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key", "--rotary-axes", "--manual-stepper"})

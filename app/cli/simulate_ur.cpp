@@ -59,6 +59,7 @@ int simulateUr(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
   if (!(options.speed > 0.0) || options.speed > 100000.0)
     throw UsageError("multidir simulate: --speed must be above 0 and at most 100000. Run 'multidir help simulate'.");
   options.tracePath = parsed.value("--trace", "");
+  options.cellPath = parsed.value("--cell", "");
   if (parsed.has("--fault")) {
     core::Result<hardware::UrSimulatorFault> fault = hardware::parseUrSimulatorFault(parsed.value("--fault", ""));
     if (!fault) throw UsageError("multidir simulate: " + fault.error().describe() + ". Run 'multidir help simulate'.");
@@ -111,6 +112,7 @@ int simulateUr(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
     out << ", fault " << hardware::urSimulatorFaultName(options.fault)
         << (options.faultAtLine > 0 ? " at line " + std::to_string(options.faultAtLine)
                                     : " " + std::to_string(options.faultAtSeconds) + " s after the first program");
+  if (!options.cellPath.empty()) out << ", the joint limits and home of " << options.cellPath;
   if (!options.tracePath.empty()) out << ", trace " << options.tracePath;
   out << ". Use 'multidir run OUT --robot " << options.listenAddress << ":" << simulator->dashboardPort()
       << "'. Ctrl-C stops it.\n"

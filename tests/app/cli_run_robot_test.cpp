@@ -4,14 +4,18 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <regex>
+#include <sstream>
 #include <string>
 
 #include "multidir/hardware/ur_simulator.h"
+#include "multidir/robot/cell.h"
 #include "multidir/robot/ur_kinematics.h"
 #include "support/cli_runner.h"
 #include "support/test_models.h"
@@ -141,6 +145,80 @@ TEST(CliRunRobot, AProtectiveStopEndsTheRunWithTheRobotsWords) {
       << run.err;
   EXPECT_NE(run.err.find("safety mode PROTECTIVE_STOP"), std::string::npos) << run.err;
   EXPECT_EQ(simulator->state().programsFinished, 0u);
+}
+
+// The paper's cell file with its platform the plan's platform region (docs/robot-cell.md, "The platform").
+std::string cellForJob(const std::string& jobDir, const std::string& cellPath) {
+  const std::string job = multidir::test::readAll(jobDir + "/print-job.json");
+  std::smatch radius;
+  if (!std::regex_search(job, radius, std::regex("\"pivot\"[^}]*\"platformRadiusMm\": *([0-9.eE+-]+)"))) return "";
+  std::string cell = multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json");
+  cell = std::regex_replace(cell, std::regex("\"platformRadiusMm\": *[0-9.]+"),
+                            "\"platformRadiusMm\": " + radius[1].str());
+  writeFile(cellPath, cell);
+  return cellPath;
+}
+
+// The TCP target of the last movel in a step's program (mm; the cell's TCP is the platform centre).
+Eigen::Vector3d lastMovelTarget(const std::string& script) {
+  const std::size_t at = script.rfind("movel(p[");
+  std::istringstream numbers(script.substr(at + 8));
+  double x = 0, y = 0, z = 0;
+  char comma = 0;
+  numbers >> x >> comma >> y >> comma >> z;
+  return Eigen::Vector3d(x, y, z) * 1000.0;
+}
+
+// The kitten (half size, 5-DOF) decomposed, sliced with the cell's profile and converted by 'multidir
+// robot-program', run on the simulated UR5 of the paper's cell at 1000 times real time.
+TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.Kitten");
+  ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") + "' --up y --scale 0.5 --machine "
+                   "5dof -o " + dir + "/plan", dir).exitCode, 0);
+  const CliRun sliced = runCli("slice " + dir + "/plan --printer ur5-cell-0.8 -o " + dir + "/job", dir);
+  ASSERT_EQ(sliced.exitCode, 0) << sliced.err;
+  const std::string cellPath = cellForJob(dir + "/job", dir + "/cell.json");
+  ASSERT_FALSE(cellPath.empty());
+  const CliRun converted = runCli("robot-program " + dir + "/job --cell " + cellPath + " -o " + dir + "/out", dir);
+  ASSERT_EQ(converted.exitCode, 0) << converted.err;
+  hw::UrSimulatorOptions options;
+  options.speed = 1000.0;
+  options.keepTrace = true;
+  options.cellPath = cellPath;
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run = runCli("run " + dir + "/out --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()),
+                            dir, "timeout 240");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_EQ(simulator->state().programsFinished, 4u);
+  const robot::ArmModel arm = robot::loadCell(cellPath)->arm;
+  const auto trace = simulator->trace();
+  for (std::size_t k = 1; k < trace.size(); ++k) {
+    const double dt = trace[k].time - trace[k - 1].time;
+    if (dt > 0.0081) continue;  // not consecutive ticks (between two programs)
+    for (std::size_t j = 0; j < 6; ++j) {
+      ASSERT_LE(std::abs(trace[k].joints[j] - trace[k - 1].joints[j]) / dt, arm.limits[j].maxSpeedRadPerS)
+          << "joint " << j + 1 << " at " << trace[k].time << " s";
+      ASSERT_GE(trace[k].joints[j], arm.limits[j].minRad);
+      ASSERT_LE(trace[k].joints[j], arm.limits[j].maxRad);
+    }
+  }
+  for (int step = 1; step <= 4; ++step) {
+    const std::string name = "multidir_step_0" + std::to_string(step);
+    const std::string script = multidir::test::readAll(dir + "/out/step-0" + std::to_string(step) + ".script");
+    // The tick the last movel ends in is the first one traced at the statement after it (the final movej home).
+    const int homeLine =
+        1 + static_cast<int>(std::count(script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
+    const hw::UrTraceRecord* ended = nullptr;
+    for (const hw::UrTraceRecord& record : trace)
+      if (record.program == name && record.line == homeLine) {
+        ended = &record;
+        break;
+      }
+    ASSERT_NE(ended, nullptr) << name << " line " << homeLine;
+    const Eigen::Vector3d target = lastMovelTarget(script);
+    EXPECT_LT((Eigen::Vector3d(ended->tcp[0], ended->tcp[1], ended->tcp[2]) - target).norm(), 0.01) << name;
+  }
 }
 
 TEST(CliRunRobot, AnUnknownArmModelIsAUsageErrorNamingTheKnownOnes) {

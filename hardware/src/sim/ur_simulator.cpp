@@ -18,6 +18,7 @@
 #include <thread>
 #include <tuple>
 
+#include "multidir/robot/cell.h"
 #include "multidir/robot/ur_kinematics.h"
 #include "sim/listen_socket.h"
 #include "sim/ur_controller.h"
@@ -107,7 +108,17 @@ class UrSimulator::Impl {
       return invalid("fault", "a fault needs a time (seconds after the first program started) or a line");
     robot::Joints initial{};
     std::copy(m_options.initialJoints.begin(), m_options.initialJoints.end(), initial.begin());
-    m_controller.emplace(*arm, initial);
+    robot::ArmModel model = *arm;
+    if (!m_options.cellPath.empty()) {
+      core::Result<robot::Cell> cell = robot::loadCell(m_options.cellPath);
+      if (!cell) return invalid("--cell", cell.error().describe());
+      if (cell->arm.name != m_options.model)
+        return invalid("--cell", "the cell " + m_options.cellPath + " is for a " + cell->arm.name + ", not a " +
+                                     m_options.model + ": simulate --ur " + cell->arm.name);
+      model = cell->arm;
+      initial = cell->home;
+    }
+    m_controller.emplace(model, initial);
     if (!m_options.tracePath.empty()) {
       m_traceFile.open(m_options.tracePath, std::ios::trunc);
       if (!m_traceFile)
