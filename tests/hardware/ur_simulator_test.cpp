@@ -8,7 +8,9 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <chrono>
 #include <string>
 #include <thread>
@@ -16,6 +18,7 @@
 #include "hardware_test_support.h"
 #include "multidir/hardware/ur_link.h"
 #include "multidir/hardware/ur_simulator.h"
+#include "multidir/robot/cell.h"
 
 namespace {
 
@@ -243,6 +246,46 @@ TEST(UrLink, ALinkDropIsReportedAndTheStopIsResentAfterReconnecting) {
   EXPECT_GE(link.status().reconnects, 1u);
   EXPECT_EQ(simulator.state().programState, "STOPPED");
   EXPECT_TRUE(simulator.state().atRest);
+}
+
+// With the cell, the trace says where the fixed nozzle is on the platform: the tip (base frame) in the frame of
+// the platform pose the cell's own kinematics give for the traced joints; and the extruder's filament speed.
+TEST(UrSimulator, WithACellTheTraceHasTheNozzleInThePlatformFrameAndTheFilamentSpeed) {
+  const std::string cellPath = std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json";
+  const auto cell = multidir::robot::loadCell(cellPath);
+  ASSERT_TRUE(cell.ok()) << cell.error().describe();
+  SteppedClock clock;
+  UrSimulatorOptions options = optionsOn(clock);
+  options.cellPath = cellPath;
+  UrSimulator simulator(options);
+  ASSERT_TRUE(simulator.start().ok());
+  UrLink link(linkTo(simulator));
+  ASSERT_TRUE(link.connect().ok());
+  ASSERT_TRUE(link.powerOn(5000ms).ok());
+  // The cell's TCP (its flangeToPlatform), the extruder at half speed, a turn of the base.
+  const Eigen::Vector3d t = cell->flangeToPlatform.translation() / 1000.0;
+  const Eigen::AngleAxisd r(cell->flangeToPlatform.linear());
+  const Eigen::Vector3d rv = r.axis() * r.angle();
+  char tcp[160];
+  std::snprintf(tcp, sizeof tcp, "  set_tcp(p[%.9f, %.9f, %.9f, %.12f, %.12f, %.12f])\n", t.x(), t.y(), t.z(), rv.x(),
+                rv.y(), rv.z());
+  std::string program = "def turn():\n" + std::string(tcp) + "  set_standard_analog_out(0, 0.5)\n  movej([";
+  for (int j = 0; j < 6; ++j)
+    program += std::to_string(cell->home[static_cast<std::size_t>(j)] + (j == 0 ? 0.3 : 0.0)) + (j < 5 ? ", " : "");
+  program += "], a=1.4, v=1.05)\nend\n";
+  ASSERT_TRUE(link.sendProgram(program).ok());
+  ASSERT_TRUE(eventually([&] { return simulator.state().programsFinished == 1; }, 5000ms));
+  const auto trace = simulator.trace();
+  ASSERT_GT(trace.size(), 10u);
+  for (const auto& record : trace) {
+    ASSERT_TRUE(record.hasCell);
+    multidir::robot::Joints q{};
+    std::copy(record.joints.begin(), record.joints.end(), q.begin());
+    const Eigen::Vector3d expected = multidir::robot::platformPose(*cell, q).inverse() * cell->nozzleTipMm;
+    const Eigen::Vector3d traced(record.nozzleInPlatform[0], record.nozzleInPlatform[1], record.nozzleInPlatform[2]);
+    EXPECT_LT((traced - expected).norm(), 1e-6) << record.time;
+  }
+  EXPECT_DOUBLE_EQ(trace.back().filamentMmPerS, 0.5 * cell->maxFilamentMmPerS);
 }
 
 }  // namespace

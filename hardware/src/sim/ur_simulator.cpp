@@ -117,6 +117,8 @@ class UrSimulator::Impl {
                                      m_options.model + ": simulate --ur " + cell->arm.name);
       model = cell->arm;
       initial = cell->home;
+      m_nozzleTip = cell->nozzleTipMm;
+      m_maxFilamentMmPerS = cell->maxFilamentMmPerS;
     }
     m_controller.emplace(model, initial);
     if (!m_options.tracePath.empty()) {
@@ -126,7 +128,8 @@ class UrSimulator::Impl {
                            "cannot write the trace file: check that its folder exists and is writable",
                            m_options.tracePath};
       m_traceFile << "time_s,q1_rad,q2_rad,q3_rad,q4_rad,q5_rad,q6_rad,x_mm,y_mm,z_mm,rx_rad,ry_rad,rz_rad,"
-                     "analog_out0,analog_out1,nozzle_c,program,line\n";
+                     "analog_out0,analog_out1,nozzle_c,program,line,nozzle_x_mm,nozzle_y_mm,nozzle_z_mm,"
+                     "filament_mm_s\n";
     }
     const int ports[3] = {m_options.dashboardPort, m_options.secondaryPort, m_options.realtimePort};
     for (int i = 0; i < 3; ++i) {
@@ -416,12 +419,25 @@ class UrSimulator::Impl {
   }
 
   void keep(const sim::UrTraceSample& sample) {
+    std::array<double, 3> nozzle{};
+    if (m_nozzleTip) {
+      std::array<double, 6> metres = sample.tcp;
+      for (std::size_t i = 0; i < 3; ++i) metres[i] /= 1000.0;
+      const Eigen::Vector3d inPlatform = sim::urPoseToIsometry(metres).inverse() * *m_nozzleTip;
+      nozzle = {inPlatform.x(), inPlatform.y(), inPlatform.z()};
+    }
+    const double filament = sample.analogOut0 * m_maxFilamentMmPerS;
     if (m_traceFile.is_open()) {
       std::string row = csvNumber(sample.time, 3);
       for (double q : sample.q) row += "," + csvNumber(q, 9);
       for (std::size_t i = 0; i < 6; ++i) row += "," + csvNumber(sample.tcp[i], i < 3 ? 6 : 9);
       row += "," + csvNumber(sample.analogOut0, 6) + "," + csvNumber(sample.analogOut1, 6) + "," +
-             csvNumber(sample.nozzleC, 2) + "," + sample.program + "," + std::to_string(sample.line) + "\n";
+             csvNumber(sample.nozzleC, 2) + "," + sample.program + "," + std::to_string(sample.line);
+      if (m_nozzleTip)
+        row += "," + csvNumber(nozzle[0], 6) + "," + csvNumber(nozzle[1], 6) + "," + csvNumber(nozzle[2], 6) + "," +
+               csvNumber(filament, 6) + "\n";
+      else
+        row += ",,,,\n";
       m_traceFile << row;
     }
     if (!m_options.keepTrace) return;
@@ -434,6 +450,9 @@ class UrSimulator::Impl {
     record.nozzleC = sample.nozzleC;
     record.program = sample.program;
     record.line = sample.line;
+    record.hasCell = m_nozzleTip.has_value();
+    record.nozzleInPlatform = nozzle;
+    record.filamentMmPerS = filament;
     m_trace.push_back(std::move(record));
   }
 
@@ -461,6 +480,8 @@ class UrSimulator::Impl {
   std::vector<UrDashboardRecord> m_dashboardLog;
   std::vector<std::string> m_programs;
   std::ofstream m_traceFile;
+  std::optional<Eigen::Vector3d> m_nozzleTip;  // base frame, mm (with a cell)
+  double m_maxFilamentMmPerS = 0.0;
 };
 
 UrSimulator::UrSimulator(UrSimulatorOptions options) : m_impl(std::make_unique<Impl>(std::move(options))) {}

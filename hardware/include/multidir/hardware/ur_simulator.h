@@ -66,6 +66,11 @@ struct UrTraceRecord {
   double nozzleC = 0.0;
   std::string program;               // running program ("" while the arm brakes after it)
   int line = 0;
+  // With a cell (UrSimulatorOptions::cellPath): the fixed nozzle's tip in the platform's frame (the TCP's,
+  // mm: where the nozzle is on the part) and the filament speed analog out 0 commands (mm/s).
+  bool hasCell = false;
+  std::array<double, 3> nozzleInPlatform{};
+  double filamentMmPerS = 0.0;
 };
 
 struct UrDashboardRecord {
