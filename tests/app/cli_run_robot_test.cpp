@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <future>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -219,6 +221,40 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
     const Eigen::Vector3d target = lastMovelTarget(script);
     EXPECT_LT((Eigen::Vector3d(ended->tcp[0], ended->tcp[1], ended->tcp[2]) - target).norm(), 0.01) << name;
   }
+}
+
+// Ctrl-C while a step's program moves the arm: the run stops the program (the dashboard's stop, latched until
+// the robot's state confirms it) and says where it stopped; the arm is at rest and nothing else is sent.
+TEST(CliRunRobot, CtrlCStopsTheProgramAndWaitsForTheRobotToConfirmIt) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.CtrlC");
+  writeRobotJob(dir);
+  hw::UrSimulatorOptions options;
+  options.speed = 1.0;  // real time: the signal lands while the arm moves
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const std::string pidFile = dir + "/pid";
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, prefix);
+  });
+  const bool interrupted = multidir::test::signalCliWhen(pidFile, SIGINT, [&] {
+    const hw::UrSimulatorState s = simulator->state();
+    return s.programName == "multidir_step_01" && s.programState == "PLAYING" && !s.atRest;
+  });
+  const CliRun run = cli.get();
+  ASSERT_TRUE(interrupted) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.out.find("the robot confirmed the stop"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("the run stopped at step 1: stopped by Ctrl-C"), std::string::npos) << run.err;
+  const hw::UrSimulatorState s = simulator->state();
+  EXPECT_EQ(s.programState, "STOPPED");
+  EXPECT_TRUE(s.atRest);
+  EXPECT_EQ(s.programsFinished, 0u);
+  EXPECT_EQ(simulator->programsReceived().size(), 1u);  // step 2 never went out
+  bool stopSent = false;
+  for (const hw::UrDashboardRecord& record : simulator->dashboardLog())
+    stopSent = stopSent || (record.command == "stop" && record.reply == "Stopped");
+  EXPECT_TRUE(stopSent);
 }
 
 TEST(CliRunRobot, AnUnknownArmModelIsAUsageErrorNamingTheKnownOnes) {
