@@ -45,6 +45,7 @@ const char* const kUsage =
     "                              printer in the loop\n"
     "  run OUT --robot HOST[:PORT] run a robot cell's job on a UR controller\n"
     "  cell check CELL             check a robot cell file (a UR arm carrying the platform, a fixed extruder)\n"
+    "  cell reach PLAN --cell CELL   where to put the extruder: nozzle positions scored by the plan's reach\n"
     "  robot-program JOB --cell CELL -o OUT   the robot cell's URScript programs of a job sliced with the\n"
     "                              cell's profile, every pose checked\n"
     "  help [COMMAND]              show this help, or a command's help\n"

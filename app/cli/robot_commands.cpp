@@ -5,14 +5,25 @@
 #include <sstream>
 
 #include "cli_args.h"
+#include "multidir/core/plan/plan_file.h"
 #include "multidir/robot/cell.h"
+#include "multidir/robot/reach_map.h"
 #include "multidir/robot/robot_program.h"
 
 namespace multidir::cli {
 
 const char* const kCellHelp =
     "Usage: multidir cell check CELL\n"
+    "       multidir cell reach PLAN --cell CELL [-o MAP.ply] [--grid MM]\n"
     "\n"
+    "cell reach: where to put the extruder. Nozzle positions are sampled on a grid (--grid, default 100 mm) over\n"
+    "the arm's workspace, the nozzle axis as the cell has it, and each is scored by the share of the plan's\n"
+    "needed platform poses (every step's region and supports: the corners and centre of their bounding box, at\n"
+    "the step's best rotation about the nozzle axis and arm configuration) reachable within the joint limits\n"
+    "with the cell's reach and wrist margins. Prints the best position and the cell's own; -o writes the map as\n"
+    "a PLY point cloud with the scores (docs/robot-cell.md, \"Reach map\").\n"
+    "\n"
+    "cell check:\n"
     "Checks a robot cell file (docs/robot-cell.md, \"The cell file\"): a known robot model, the nozzle axis a\n"
     "unit vector, joint limits ordered within +-360 deg, home within the limits, reachable and holding the\n"
     "platform above the table, the flange-to-platform transform sane, collision bodies well formed, the table\n"
@@ -74,6 +85,48 @@ int cellCheck(const std::vector<std::string>& args, std::ostream& out) {
   return kExitOk;
 }
 
+int cellReach(const std::vector<std::string>& args, std::ostream& out) {
+  const std::string command = "multidir cell reach";
+  const ParsedArgs parsed = parseArgs(args, {"--cell", "-o", "--grid"}, {"-h", "--help"}, command);
+  if (parsed.has("-h") || parsed.has("--help")) {
+    out << kCellHelp;
+    return kExitOk;
+  }
+  const std::string planPath = onlyPositional(parsed, command, "plan", "multidir cell reach PLAN --cell CELL");
+  if (!parsed.has("--cell")) throw UsageError(command + ": --cell CELL is required (the robot cell file)");
+  robot::ReachMapOptions options;
+  if (parsed.has("--grid")) {
+    options.gridMm = parseNumber(parsed.value("--grid", ""), "--grid");
+    if (!(options.gridMm >= 10.0 && options.gridMm <= 500.0)) throw UsageError(command + ": --grid must be from 10 to 500 mm");
+  }
+  const auto cell = robot::loadCell(parsed.value("--cell", ""));
+  if (!cell) throw FileError(command + ": " + cell.error().describe());
+  const auto plan = core::loadPlan(planPath);
+  if (!plan) throw FileError(command + ": " + plan.error().describe());
+  const auto steps = robot::reachStepsOfPlan(plan.value());
+  if (!steps) throw FileError(command + ": " + steps.error().describe());
+  const auto map = robot::reachMap(steps.value(), cell.value(), options, core::JobContext());
+  if (!map) throw FileError(command + ": " + map.error().describe());
+  const robot::ReachPoint own = robot::reachScore(steps.value(), cell.value(), cell->nozzleTipMm, options);
+  out << std::fixed << std::setprecision(1);
+  out << "Reach map of " << planPath << " (" << steps->size() << " steps) for a " << cell->arm.name << ": "
+      << map->points.size() << " nozzle positions every " << options.gridMm << " mm\n";
+  out << "  best position   (" << map->best.nozzleTipMm.x() << ", " << map->best.nozzleTipMm.y() << ", "
+      << map->best.nozzleTipMm.z() << ") mm: " << 100.0 * map->best.score << " % of the needed poses reachable, least reach margin "
+      << map->best.leastMarginMm << " mm\n";
+  out << "  the cell's own  (" << own.nozzleTipMm.x() << ", " << own.nozzleTipMm.y() << ", " << own.nozzleTipMm.z()
+      << ") mm: " << 100.0 * own.score << " %, least reach margin " << own.leastMarginMm << " mm\n";
+  int full = 0;
+  for (const auto& p : map->points) full += p.score >= 1.0 ? 1 : 0;
+  out << "  positions reaching every pose: " << full << "\n";
+  if (parsed.has("-o")) {
+    const auto written = robot::writeReachPly(map.value(), parsed.value("-o", ""));
+    if (!written) throw FileError(command + ": " + written.error().describe());
+    out << "  map saved in " << parsed.value("-o", "") << "\n";
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int runCell(const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
@@ -83,6 +136,7 @@ int runCell(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "check") return cellCheck(rest, out);
+  if (args[0] == "reach") return cellReach(rest, out);
   throw UsageError("multidir cell: unknown subcommand '" + args[0] + "'. Run 'multidir help cell'.");
 }
 

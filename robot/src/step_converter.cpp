@@ -327,6 +327,10 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
       if (swept.intersects(bodyBounds[b])) collisions.bodies[b].candidates.push_back({s, p.kind});
     if (swept.min().z() < cell.tableZMm + margins.tableClearanceMm) collisions.nearTable.push_back({s, p.kind});
   }
+  // Sorted by height, so a sample tests only the candidates within the body's extent along the axis.
+  for (auto& body : collisions.bodies)
+    std::sort(body.candidates.begin(), body.candidates.end(),
+              [](const CollisionSet::Candidate& a, const CollisionSet::Candidate& b) { return a.fileMm.z() < b.fileMm.z(); });
   auto inNozzleZone = [&](const Eigen::Vector3d& world) {
     const Eigen::Vector3d d = world - cell.nozzleTipMm;
     const double h = d.dot(cell.nozzleAxis);
@@ -338,9 +342,13 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   // A collision at nozzle point f (files' frame), or an empty string.
   auto collisionAt = [&](const Eigen::Vector3d& f, const Eigen::Isometry3d& flange) -> std::string {
     for (const auto& body : collisions.bodies) {
-      for (const auto& c : body.candidates) {
+      const auto first = std::lower_bound(
+          body.candidates.begin(), body.candidates.end(), f.z() + body.axisMinMm,
+          [](const CollisionSet::Candidate& c, double z) { return c.fileMm.z() < z; });
+      for (auto it = first; it != body.candidates.end(); ++it) {
+        const CollisionSet::Candidate& c = *it;
         const double height = c.fileMm.z() - f.z();
-        if (height < body.axisMinMm || height > body.axisMaxMm) continue;
+        if (height > body.axisMaxMm) break;
         if (c.kind == CarriedPoint::Kind::ThisStep && height > 1e-6) continue;  // not printed yet
         const Eigen::Vector3d world = cell.nozzleTipMm + nozzleTurn * (c.fileMm - f);
         bool inside = false;

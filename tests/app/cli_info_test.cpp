@@ -75,6 +75,9 @@ TEST(CliInfo, HelpListsEveryCommand) {
   EXPECT_NE(run.out.find("export PLAN_DIR -o OUTDIR"), std::string::npos);
   EXPECT_NE(run.out.find("report MODEL"), std::string::npos);
   EXPECT_NE(run.out.find("simulate"), std::string::npos);
+  EXPECT_NE(run.out.find("cell check CELL"), std::string::npos);
+  EXPECT_NE(run.out.find("cell reach PLAN --cell CELL"), std::string::npos);
+  EXPECT_NE(run.out.find("robot-program JOB --cell CELL -o OUT"), std::string::npos);
   const CliRun info = runCli("help info", dir);
   EXPECT_EQ(info.exitCode, 0);
   EXPECT_NE(info.out.find("--alpha DEGREES"), std::string::npos);
