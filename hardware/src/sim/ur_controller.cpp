@@ -121,6 +121,8 @@ std::vector<UrTraceSample> UrController::takeTrace() {
 void UrController::tick() {
   m_time += kUrTickSeconds;
   const robot::Joints before = m_q;
+  // A program that ends within this tick still owns the tick's motion in the trace.
+  m_tickProgram = m_programState == UrProgramState::Playing ? m_programName : std::string();
   if (m_robotMode == UrRobotMode::PowerOn && m_time - m_poweredOnAt >= kPowerOnSeconds - 1e-9)
     m_robotMode = UrRobotMode::Idle;
   // A set point below the room's temperature is the heater off: the nozzle cools to the room, not below it.
@@ -128,10 +130,16 @@ void UrController::tick() {
   m_nozzleC += std::clamp(setPoint - m_nozzleC, -kNozzleCoolingCPerS * kUrTickSeconds,
                           kNozzleHeatingCPerS * kUrTickSeconds);
   if (m_activity == Activity::Braking)
-    advanceActivity();
+    advanceActivity(kUrTickSeconds);
   else if (m_programState == UrProgramState::Playing)
     runProgram();
-  for (std::size_t i = 0; i < 6; ++i) m_qd[i] = (m_q[i] - before[i]) / kUrTickSeconds;
+  // The joint speed limits hold for each tick's whole change (a tick can end one move and begin the next): a
+  // tick that would exceed one is not taken, and the arm brakes from the last tick's speeds.
+  if (m_activity != Activity::Braking) checkSpeeds(before);
+  // A stop that began this tick brakes from the last tick's speeds (kept) from the next tick on.
+  const bool brakingBegan = m_activity == Activity::Braking && m_elapsed == 0.0;
+  if (!brakingBegan)
+    for (std::size_t i = 0; i < 6; ++i) m_qd[i] = (m_q[i] - before[i]) / kUrTickSeconds;
   m_qTarget = m_q;
   if (m_nextProgram && m_activity == Activity::None) {
     m_program = std::move(m_nextProgram);
@@ -146,7 +154,7 @@ void UrController::tick() {
 void UrController::record() {
   const bool moving = !atRest();
   const bool running = m_programState == UrProgramState::Playing || m_programState == UrProgramState::Paused;
-  if (!moving && !running) return;
+  if (!moving && !running && m_tickProgram.empty()) return;
   UrTraceSample sample;
   sample.time = m_time;
   sample.q = m_q;
@@ -154,14 +162,16 @@ void UrController::record() {
   sample.analogOut0 = m_analogOut[0];
   sample.analogOut1 = m_analogOut[1];
   sample.nozzleC = m_nozzleC;
-  sample.program = running ? m_programName : std::string();
+  sample.program = running ? m_programName : m_tickProgram;
   sample.line = running ? currentLine() : 0;
   m_trace.push_back(std::move(sample));
 }
 
 void UrController::runProgram() {
-  // Statements that take no time run in the tick that reaches them; the first that takes time gets the tick.
-  while (m_programState == UrProgramState::Playing && m_program) {
+  // Statements that take no time run in the tick that reaches them; those that take time share the tick: what
+  // one leaves of it when it ends goes to the next, so a program's time is not rounded up to ticks per move.
+  double budget = kUrTickSeconds;
+  while (m_programState == UrProgramState::Playing && m_program && budget > 1e-12) {
     if (m_activity == Activity::None) {
       if (m_pc >= m_program->statements.size()) {
         m_programState = UrProgramState::Stopped;
@@ -174,8 +184,7 @@ void UrController::runProgram() {
         continue;
       }
     }
-    advanceActivity();
-    return;
+    budget = advanceActivity(budget);
   }
 }
 
@@ -210,7 +219,7 @@ bool UrController::startStatement(const ur::UrStatement& s) {
       std::copy(s.pose.begin(), s.pose.end(), target.begin());
       double longest = 0.0;
       for (std::size_t i = 0; i < 6; ++i) longest = std::max(longest, std::abs(target[i] - m_q[i]));
-      if (!checkLimits(target, /*positionOnly=*/true)) return false;
+      if (!checkLimits(target)) return false;
       if (longest == 0.0) return false;
       m_fromQ = m_q;
       m_toQ = target;
@@ -237,7 +246,7 @@ bool UrController::startStatement(const ur::UrStatement& s) {
   return false;
 }
 
-bool UrController::checkLimits(const robot::Joints& next, bool positionOnly) {
+bool UrController::checkLimits(const robot::Joints& next) {
   for (std::size_t i = 0; i < 6; ++i) {
     const robot::JointLimits& limit = m_arm.limits[i];
     if (next[i] < limit.minRad - 1e-12 || next[i] > limit.maxRad + 1e-12) {
@@ -249,11 +258,15 @@ bool UrController::checkLimits(const robot::Joints& next, bool positionOnly) {
       return false;
     }
   }
-  if (positionOnly) return true;
+  return true;
+}
+
+bool UrController::checkSpeeds(const robot::Joints& before) {
   for (std::size_t i = 0; i < 6; ++i) {
-    const double speed = std::abs(next[i] - m_q[i]) / kUrTickSeconds;
+    const double speed = std::abs(m_q[i] - before[i]) / kUrTickSeconds;
     const double limit = m_arm.limits[i].maxSpeedRadPerS;
     if (speed > limit * (1.0 + 1e-9)) {
+      m_q = before;  // the tick is not taken
       fault(UrSafetyMode::ProtectiveStop,
             "Protective stop: Joint Speed Limit violated: joint " + std::to_string(i + 1) + " (" + kJointNames[i] +
                 ") would turn at " + number(speed, 3) + " rad/s, above its limit of " + number(limit, 3) + " rad/s",
@@ -264,36 +277,38 @@ bool UrController::checkLimits(const robot::Joints& next, bool positionOnly) {
   return true;
 }
 
-void UrController::advanceActivity() {
-  m_elapsed += kUrTickSeconds;
+double UrController::advanceActivity(double budget) {
+  m_elapsed += budget;
+  // What is left of the budget once an activity of `duration` ends.
+  const auto finish = [&](double duration) {
+    m_activity = Activity::None;
+    ++m_pc;
+    return std::max(0.0, m_elapsed - duration);
+  };
   switch (m_activity) {
     case Activity::None:
-      return;
-    case Activity::Sleep:
-      if (m_elapsed >= m_program->statements[m_pc].value - 1e-9) {
-        m_activity = Activity::None;
-        ++m_pc;
-      }
-      return;
+      return budget;
+    case Activity::Sleep: {
+      const double duration = m_program->statements[m_pc].value;
+      return m_elapsed >= duration - 1e-12 ? finish(duration) : 0.0;
+    }
     case Activity::Wait:
+      // The loop's condition is read as the tick reaches it; sync() ends the tick while it holds.
       if (m_nozzleC / kNozzleFullScaleC >= m_waitBelow) {
         m_activity = Activity::None;
         ++m_pc;
+        return budget;
       }
-      return;
+      return 0.0;
     case Activity::MoveJ: {
       const double t = std::min(m_elapsed, m_profile.duration());
       const double fraction = m_profile.at(t) / m_profile.distance;
       robot::Joints next{};
       for (std::size_t i = 0; i < 6; ++i) next[i] = m_fromQ[i] + fraction * (m_toQ[i] - m_fromQ[i]);
       if (m_elapsed >= m_profile.duration()) next = m_toQ;
-      if (!checkLimits(next, false)) return;
+      if (!checkLimits(next)) return 0.0;
       m_q = next;
-      if (m_elapsed >= m_profile.duration()) {
-        m_activity = Activity::None;
-        ++m_pc;
-      }
-      return;
+      return m_elapsed >= m_profile.duration() ? finish(m_profile.duration()) : 0.0;
     }
     case Activity::MoveL: {
       const double t = std::min(m_elapsed, m_profile.duration());
@@ -309,7 +324,7 @@ void UrController::advanceActivity() {
               "Protective stop: no inverse kinematics solution: the movel's path leaves the arm's reach at line " +
                   std::to_string(currentLine()),
               kCodeProtectiveStop, 0);
-        return;
+        return 0.0;
       }
       const std::optional<robot::Joints> next = robot::nearestWithinLimits(m_arm, solutions, m_q);
       if (!next) {
@@ -317,15 +332,10 @@ void UrController::advanceActivity() {
               "Protective stop: Joint Position Limit violated: every joint solution of the movel's pose at line " +
                   std::to_string(currentLine()) + " is outside the joint limits",
               kCodeProtectiveStop, 0);
-        return;
+        return 0.0;
       }
-      if (!checkLimits(*next, false)) return;
       m_q = *next;
-      if (m_elapsed >= m_profile.duration()) {
-        m_activity = Activity::None;
-        ++m_pc;
-      }
-      return;
+      return m_elapsed >= m_profile.duration() ? finish(m_profile.duration()) : 0.0;
     }
     case Activity::Braking: {
       const double t = std::min(m_elapsed, m_brakeDuration);
@@ -340,9 +350,10 @@ void UrController::advanceActivity() {
           m_powerOffAfterBraking = false;
         }
       }
-      return;
+      return 0.0;
     }
   }
+  return 0.0;
 }
 
 void UrController::beginBraking() {

@@ -105,11 +105,12 @@ class UrController {
   static Profile profile(double distance, double speed, double acceleration);
   void runProgram();
   bool startStatement(const ur::UrStatement& statement);  // true when it takes time
-  void advanceActivity();
+  double advanceActivity(double budget);  // returns the part of `budget` left when the activity ended
   void beginBraking();
   void haltProgram(ur::UrProgramState state);
   void fault(ur::UrSafetyMode mode, const std::string& words, int code, int argument = 0);
-  bool checkLimits(const robot::Joints& next, bool positionOnly);
+  bool checkLimits(const robot::Joints& next);        // position limits; a fault when violated
+  bool checkSpeeds(const robot::Joints& before);      // this tick's change against the speed limits
   void message(ur::UrRobotMessage::Kind kind, const std::string& text, int line = 0, int column = 0, int code = 0,
                int argument = 0);
   void record();
@@ -131,6 +132,7 @@ class UrController {
   std::optional<ur::UrProgram> m_program;
   std::optional<ur::UrProgram> m_nextProgram;  // received while the arm still braked
   std::string m_programName;
+  std::string m_tickProgram;  // the program playing when the current tick began
   std::size_t m_pc = 0;  // the statement running, or the next one
   std::size_t m_programsFinished = 0;
 
