@@ -28,9 +28,9 @@ extern "C" void onRobotRunSignal(int) { g_robotInterrupts.fetch_add(1); }
 
 struct RobotStep {
   int step = 0;
-  std::string program;  // file name in the job folder
-  std::string script;   // its text
-  double seconds = 0.0; // the job's estimate
+  std::string program;   // file name in the job folder
+  std::string script;    // its text
+  double seconds = 0.0;  // the job's estimate
 };
 
 struct RobotJob {
@@ -47,11 +47,14 @@ std::string clockText() {
   return text;
 }
 
-void logLine(std::ostream& out, const std::string& text) { out << "[" << clockText() << "] " << text << "\n" << std::flush; }
+void logLine(std::ostream& out, const std::string& text) {
+  out << "[" << clockText() << "] " << text << "\n" << std::flush;
+}
 
 std::string readText(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError("multidir run: " + path.string() + " cannot be read: check that it exists and its permissions");
+  if (!in)
+    throw FileError("multidir run: " + path.string() + " cannot be read: check that it exists and its permissions");
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
@@ -70,12 +73,13 @@ RobotJob readRobotJob(const std::string& folderText) {
                     "): write it again with 'multidir robot-program'");
   }
   const auto bad = [&](const std::string& what) {
-    return FileError("multidir run: " + jobFile.string() + ": " + what + ": write it again with 'multidir robot-program'");
+    return FileError("multidir run: " + jobFile.string() + ": " + what +
+                     ": write it again with 'multidir robot-program'");
   };
   if (!json.is_object() || json.value("format", "") != "multidir-robot-job")
     throw bad("not a robot job (its \"format\" is not \"multidir-robot-job\")");
-  if (json.value("version", 0) != 1) throw bad("version " + json.value("version", nlohmann::json()).dump() +
-                                               " is not one this MultiDir reads (1)");
+  if (json.value("version", 0) != 1)
+    throw bad("version " + json.value("version", nlohmann::json()).dump() + " is not one this MultiDir reads (1)");
   RobotJob job;
   job.robot = json.value("robot", "");
   if (!json.contains("steps") || !json["steps"].is_array() || json["steps"].empty()) throw bad("it has no steps");
@@ -110,8 +114,8 @@ std::string describeMessages(const std::vector<hardware::UrLinkMessage>& message
 }  // namespace
 
 int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
-  for (const char* other : {"--printer", "--platform", "--machine", "--unit", "--api-key", "--api-key-file",
-                            "--settle", "--printer-profile", "--yes-axes-configured"})
+  for (const char* other : {"--printer", "--platform", "--machine", "--unit", "--api-key", "--api-key-file", "--settle",
+                            "--printer-profile", "--yes-axes-configured"})
     if (parsed.has(other))
       throw UsageError(std::string("multidir run: ") + other +
                        " is not for --robot (the arm carries the part under the cell's fixed extruder; the "
@@ -183,8 +187,8 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
                                          "): check the arm by hand");
     }
     err << "multidir run: the run stopped at step " << step << ": " << why << "; when the cause is fixed, "
-        << "continue with --from " << step << " (the step's program runs again from its start) or --from "
-        << step + 1 << " if the step is complete\n";
+        << "continue with --from " << step << " (the step's program runs again from its start) or --from " << step + 1
+        << " if the step is complete\n";
     return kExitRunStopped;
   };
 
@@ -214,19 +218,21 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
         // Let the state that goes with the message arrive, so the run reports both.
         std::this_thread::sleep_for(100ms);
         const hardware::UrLinkStatus after = link.status();
-        return stopAndEnd(k, "the robot reports: " + faults + " (robot mode " + after.robotMode + ", safety mode " +
-                                 after.safetyMode + ")",
+        return stopAndEnd(k,
+                          "the robot reports: " + faults + " (robot mode " + after.robotMode + ", safety mode " +
+                              after.safetyMode + ")",
                           false);
       }
       if (now.linkLost)
-        return stopAndEnd(k, "the link to the robot is lost (" + now.linkProblem +
-                                 "); the program may still run on the controller, and the stop is sent as soon as the "
-                                 "link is back",
+        return stopAndEnd(k,
+                          "the link to the robot is lost (" + now.linkProblem +
+                              "); the program may still run on the controller, and the stop is sent as soon as the "
+                              "link is back",
                           false);
       if (now.safetyMode != "NORMAL" || now.robotMode != "RUNNING")
-        return stopAndEnd(k, "the robot left normal operation (robot mode " + now.robotMode + ", safety mode " +
-                                 now.safetyMode + ")",
-                          false);
+        return stopAndEnd(
+            k, "the robot left normal operation (robot mode " + now.robotMode + ", safety mode " + now.safetyMode + ")",
+            false);
       started = started || now.programStarts > before.programStarts;
       if (now.programEnds > before.programEnds && now.atRest) break;
       if (Clock::now() >= nextProgress && started) {

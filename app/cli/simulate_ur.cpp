@@ -47,8 +47,8 @@ int freePort() {
 }  // namespace
 
 int simulateUr(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
-  for (const char* other : {"--printer", "--rotary", "--robot", "--unit", "--api-key", "--rotary-axes",
-                            "--manual-stepper"})
+  for (const char* other :
+       {"--printer", "--rotary", "--robot", "--unit", "--api-key", "--rotary-axes", "--manual-stepper"})
     if (parsed.has(other))
       throw UsageError(std::string("multidir simulate: ") + other +
                        " is not for --ur (a Universal Robots controller). Run 'multidir help simulate'.");
@@ -69,11 +69,13 @@ int simulateUr(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
     else
       options.faultAtSeconds = parseNumber(parsed.value("--fault-at", "5"), "--fault-at");
     if (!parsed.has("--fault-at-line") && !(options.faultAtSeconds >= 0.0))
-      throw UsageError("multidir simulate: --fault-at (seconds after the first program started) must not be "
-                       "negative. Run 'multidir help simulate'.");
+      throw UsageError(
+          "multidir simulate: --fault-at (seconds after the first program started) must not be "
+          "negative. Run 'multidir help simulate'.");
   } else if (parsed.has("--fault-at") || parsed.has("--fault-at-line")) {
-    throw UsageError("multidir simulate: --fault-at and --fault-at-line need --fault NAME. Run 'multidir help "
-                     "simulate'.");
+    throw UsageError(
+        "multidir simulate: --fault-at and --fault-at-line need --fault NAME. Run 'multidir help "
+        "simulate'.");
   }
   const bool portGiven = parsed.has("--port");
   const int port = portGiven ? wholeNumber(parsed.value("--port", ""), "--port", 0, 65533) : -1;

@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
-#include <future>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <memory>
 #include <regex>
 #include <sstream>
@@ -105,8 +105,8 @@ TEST(CliRunRobot, ATwoStepRobotJobRunsToItsEndAndTheTraceShowsBothProgramsMoves)
   options.initialJoints = {0.0, -1.0, 1.3, -1.9, -1.5707963267948966, 0.0};
   auto simulator = startSimulator(options);
   ASSERT_TRUE(simulator);
-  const CliRun run = runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir,
-                            "timeout 120");
+  const CliRun run =
+      runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 120");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("powering the arm on"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("robot: textmsg: multidir step 2 layer 1"), std::string::npos) << run.out;
@@ -138,8 +138,8 @@ TEST(CliRunRobot, AProtectiveStopEndsTheRunWithTheRobotsWords) {
   options.faultAtLine = 12;  // step 1's second movel
   auto simulator = startSimulator(options);
   ASSERT_TRUE(simulator);
-  const CliRun run = runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir,
-                            "timeout 120");
+  const CliRun run =
+      runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 120");
   EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
   EXPECT_NE(run.err.find("the run stopped at step 1: the robot reports: C153: Protective stop: the simulator's "
                          "injected fault"),
@@ -154,7 +154,8 @@ std::string cellForJob(const std::string& jobDir, const std::string& cellPath) {
   const std::string job = multidir::test::readAll(jobDir + "/print-job.json");
   std::smatch radius;
   if (!std::regex_search(job, radius, std::regex("\"pivot\"[^}]*\"platformRadiusMm\": *([0-9.eE+-]+)"))) return "";
-  std::string cell = multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json");
+  std::string cell =
+      multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json");
   cell = std::regex_replace(cell, std::regex("\"platformRadiusMm\": *[0-9.]+"),
                             "\"platformRadiusMm\": " + radius[1].str());
   writeFile(cellPath, cell);
@@ -175,8 +176,13 @@ Eigen::Vector3d lastMovelTarget(const std::string& script) {
 // robot-program', run on the simulated UR5 of the paper's cell at 1000 times real time.
 TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
   const std::string dir = multidir::test::scratchDirectory("CliRunRobot.Kitten");
-  ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") + "' --up y --scale 0.5 --machine "
-                   "5dof -o " + dir + "/plan", dir).exitCode, 0);
+  ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") +
+                       "' --up y --scale 0.5 --machine "
+                       "5dof -o " +
+                       dir + "/plan",
+                   dir)
+                .exitCode,
+            0);
   const CliRun sliced = runCli("slice " + dir + "/plan --printer ur5-cell-0.8 -o " + dir + "/job", dir);
   ASSERT_EQ(sliced.exitCode, 0) << sliced.err;
   const std::string cellPath = cellForJob(dir + "/job", dir + "/cell.json");
@@ -189,8 +195,8 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
   options.cellPath = cellPath;
   auto simulator = startSimulator(options);
   ASSERT_TRUE(simulator);
-  const CliRun run = runCli("run " + dir + "/out --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()),
-                            dir, "timeout 240");
+  const CliRun run =
+      runCli("run " + dir + "/out --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 240");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   EXPECT_EQ(simulator->state().programsFinished, 4u);
   const robot::ArmModel arm = robot::loadCell(cellPath)->arm;
@@ -209,8 +215,8 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
     const std::string name = "multidir_step_0" + std::to_string(step);
     const std::string script = multidir::test::readAll(dir + "/out/step-0" + std::to_string(step) + ".script");
     // The tick the last movel ends in is the first one traced at the statement after it (the final movej home).
-    const int homeLine =
-        1 + static_cast<int>(std::count(script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
+    const int homeLine = 1 + static_cast<int>(std::count(
+                                 script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
     const hw::UrTraceRecord* ended = nullptr;
     for (const hw::UrTraceRecord& record : trace)
       if (record.program == name && record.line == homeLine) {

@@ -1,6 +1,8 @@
 // The simulated UR controller's physics, stepped tick by tick (no sockets, no clock): moves reach their targets
 // within the joint limits, a limit is a protective stop in UR's words, an emergency stop brakes the arm at once,
 // the nozzle follows its set point.
+#include "sim/ur_controller.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <string>
 
 #include "multidir/robot/ur_kinematics.h"
-#include "sim/ur_controller.h"
 
 namespace {
 

@@ -1,23 +1,23 @@
 // The UR simulator on loopback and the link to it: the dashboard's replies in UR's words, a program outside the
 // subset reported with its line, an emergency stop that stops the arm within 200 ms of the call (on the
 // injected clock) with nothing moving after it, a dropped link reported and the stop resent after reconnecting.
-#include <gtest/gtest.h>
+#include "multidir/hardware/ur_simulator.h"
 
 #include <arpa/inet.h>
+#include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
-#include <cstdio>
 #include <chrono>
+#include <cstdio>
 #include <string>
 #include <thread>
 
 #include "hardware_test_support.h"
 #include "multidir/hardware/ur_link.h"
-#include "multidir/hardware/ur_simulator.h"
 #include "multidir/robot/cell.h"
 
 namespace {
@@ -114,8 +114,8 @@ class DashboardClient {
 void startLongMove(UrLink& link) {
   ASSERT_TRUE(link.connect().ok());
   ASSERT_TRUE(link.powerOn(5000ms).ok()) << link.status().robotMode;
-  ASSERT_TRUE(link.sendProgram("def long_move():\n  movej([2.5, -1.0, 1.2, -1.7, -1.2, 0.5], a=3.0, v=1.5)\nend\n")
-                  .ok());
+  ASSERT_TRUE(
+      link.sendProgram("def long_move():\n  movej([2.5, -1.0, 1.2, -1.7, -1.2, 0.5], a=3.0, v=1.5)\nend\n").ok());
   ASSERT_TRUE(eventually([&] { return !link.status().atRest; }, 3000ms));
 }
 

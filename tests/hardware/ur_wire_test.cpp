@@ -1,9 +1,9 @@
 // UR's binary formats: the real-time package's size and field offsets, robot messages read back as written.
+#include "ur/ur_wire.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
-
-#include "ur/ur_wire.h"
 
 namespace {
 

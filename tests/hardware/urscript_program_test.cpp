@@ -1,8 +1,8 @@
 // The URScript subset the UR simulator runs: MultiDir's programs are read whole, anything else is refused with
 // its line and column, as the controller's compile error names them.
-#include <gtest/gtest.h>
-
 #include "ur/urscript_program.h"
+
+#include <gtest/gtest.h>
 
 namespace {
 

@@ -127,8 +127,8 @@ void UrController::tick() {
     m_robotMode = UrRobotMode::Idle;
   // A set point below the room's temperature is the heater off: the nozzle cools to the room, not below it.
   const double setPoint = std::max(m_analogOut[1] * kNozzleFullScaleC, kAmbientC);
-  m_nozzleC += std::clamp(setPoint - m_nozzleC, -kNozzleCoolingCPerS * kUrTickSeconds,
-                          kNozzleHeatingCPerS * kUrTickSeconds);
+  m_nozzleC +=
+      std::clamp(setPoint - m_nozzleC, -kNozzleCoolingCPerS * kUrTickSeconds, kNozzleHeatingCPerS * kUrTickSeconds);
   if (m_activity == Activity::Braking)
     advanceActivity(kUrTickSeconds);
   else if (m_programState == UrProgramState::Playing)
@@ -521,9 +521,9 @@ ur::UrRealtimeState UrController::realtime() const {
   s.toolVectorActual = tool;
   s.toolVectorTarget = tool;
   s.robotMode = m_robotMode;
-  const double jointMode = m_robotMode == UrRobotMode::Running ? ur::kJointModeRunning
+  const double jointMode = m_robotMode == UrRobotMode::Running    ? ur::kJointModeRunning
                            : m_robotMode == UrRobotMode::PowerOff ? ur::kJointModePowerOff
-                                                                   : ur::kJointModeIdle;
+                                                                  : ur::kJointModeIdle;
   s.jointModes.fill(jointMode);
   s.safetyMode = m_safetyMode;
   s.digitalOutputs = static_cast<double>(m_digitalOut);

@@ -69,8 +69,8 @@ class UrController {
 
   // Faults, now.
   void protectiveStop(const std::string& reason);
-  void pressEmergencyStop();    // the teach pendant's e-stop button
-  void releaseEmergencyStop();  // released: the arm stays powered off until "power on"
+  void pressEmergencyStop();                   // the teach pendant's e-stop button
+  void releaseEmergencyStop();                 // released: the arm stays powered off until "power on"
   void programError(const std::string& text);  // a runtime exception in the running program's current line
 
   // Observation.
@@ -105,12 +105,12 @@ class UrController {
   static Profile profile(double distance, double speed, double acceleration);
   void runProgram();
   bool startStatement(const ur::UrStatement& statement);  // true when it takes time
-  double advanceActivity(double budget);  // returns the part of `budget` left when the activity ended
+  double advanceActivity(double budget);                  // returns the part of `budget` left when the activity ended
   void beginBraking();
   void haltProgram(ur::UrProgramState state);
   void fault(ur::UrSafetyMode mode, const std::string& words, int code, int argument = 0);
-  bool checkLimits(const robot::Joints& next);        // position limits; a fault when violated
-  bool checkSpeeds(const robot::Joints& before);      // this tick's change against the speed limits
+  bool checkLimits(const robot::Joints& next);    // position limits; a fault when violated
+  bool checkSpeeds(const robot::Joints& before);  // this tick's change against the speed limits
   void message(ur::UrRobotMessage::Kind kind, const std::string& text, int line = 0, int column = 0, int code = 0,
                int argument = 0);
   void record();
@@ -118,8 +118,8 @@ class UrController {
   robot::ArmModel m_arm;
   double m_time = 0.0;
   robot::Joints m_q{};
-  robot::Joints m_qd{};       // speeds of the last tick
-  robot::Joints m_qTarget{};  // where the planner wants the arm this tick
+  robot::Joints m_qd{};                                     // speeds of the last tick
+  robot::Joints m_qTarget{};                                // where the planner wants the arm this tick
   Eigen::Isometry3d m_tcp = Eigen::Isometry3d::Identity();  // TCP in the flange frame (mm)
   ur::UrRobotMode m_robotMode = ur::UrRobotMode::PowerOff;
   ur::UrSafetyMode m_safetyMode = ur::UrSafetyMode::Normal;
@@ -133,7 +133,7 @@ class UrController {
   std::optional<ur::UrProgram> m_nextProgram;  // received while the arm still braked
   std::string m_programName;
   std::string m_tickProgram;  // the program playing when the current tick began
-  std::size_t m_pc = 0;  // the statement running, or the next one
+  std::size_t m_pc = 0;       // the statement running, or the next one
   std::size_t m_programsFinished = 0;
 
   Activity m_activity = Activity::None;

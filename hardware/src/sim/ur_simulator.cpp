@@ -70,19 +70,24 @@ bool programComplete(const std::string& text) {
 
 const char* urSimulatorFaultName(UrSimulatorFault fault) {
   switch (fault) {
-    case UrSimulatorFault::None: return "none";
-    case UrSimulatorFault::ProtectiveStop: return "protective-stop";
-    case UrSimulatorFault::EmergencyStop: return "emergency-stop";
-    case UrSimulatorFault::LinkDrop: return "link-drop";
-    case UrSimulatorFault::ProgramError: return "program-error";
+    case UrSimulatorFault::None:
+      return "none";
+    case UrSimulatorFault::ProtectiveStop:
+      return "protective-stop";
+    case UrSimulatorFault::EmergencyStop:
+      return "emergency-stop";
+    case UrSimulatorFault::LinkDrop:
+      return "link-drop";
+    case UrSimulatorFault::ProgramError:
+      return "program-error";
   }
   return "none";
 }
 
 core::Result<UrSimulatorFault> parseUrSimulatorFault(const std::string& name) {
-  for (UrSimulatorFault fault : {UrSimulatorFault::None, UrSimulatorFault::ProtectiveStop,
-                                 UrSimulatorFault::EmergencyStop, UrSimulatorFault::LinkDrop,
-                                 UrSimulatorFault::ProgramError})
+  for (UrSimulatorFault fault :
+       {UrSimulatorFault::None, UrSimulatorFault::ProtectiveStop, UrSimulatorFault::EmergencyStop,
+        UrSimulatorFault::LinkDrop, UrSimulatorFault::ProgramError})
     if (name == urSimulatorFaultName(fault)) return fault;
   return invalid("--fault", "'" + name +
                                 "' is not a fault of the UR simulator: protective-stop, emergency-stop, link-drop or "
@@ -141,7 +146,8 @@ class UrSimulator::Impl {
       m_listen[i] = *fd;
       sockaddr_in bound{};
       socklen_t length = sizeof bound;
-      if (getsockname(m_listen[i], reinterpret_cast<sockaddr*>(&bound), &length) == 0) m_port[i] = ntohs(bound.sin_port);
+      if (getsockname(m_listen[i], reinterpret_cast<sockaddr*>(&bound), &length) == 0)
+        m_port[i] = ntohs(bound.sin_port);
     }
     m_started = m_options.steadyNow();
     m_quit = false;

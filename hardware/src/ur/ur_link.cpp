@@ -95,10 +95,12 @@ bool sendAll(int fd, const std::string& bytes, std::chrono::milliseconds limit) 
 
 std::string UrLinkMessage::describe() const {
   switch (kind) {
-    case Kind::Text: return "textmsg: " + text;
+    case Kind::Text:
+      return "textmsg: " + text;
     case Kind::RuntimeException:
       return "runtime exception at line " + std::to_string(line) + ", column " + std::to_string(column) + ": " + text;
-    case Kind::ErrorCode: return "C" + std::to_string(code) + ": " + text;
+    case Kind::ErrorCode:
+      return "C" + std::to_string(code) + ": " + text;
   }
   return text;
 }
@@ -117,8 +119,9 @@ core::Result<UrLinkSettings> parseUrAddress(const std::string& text) {
     const long port = std::strtol(portText.c_str(), &end, 10);
     if (portText.empty() || *end != '\0' || port < 1 || port > 65533)
       return core::Error{core::ErrorCode::InvalidParameter,
-                         "the port in '" + text + "' must be a whole number from 1 to 65533 (the dashboard's; the "
-                         "secondary and real-time interfaces are the next two)",
+                         "the port in '" + text +
+                             "' must be a whole number from 1 to 65533 (the dashboard's; the "
+                             "secondary and real-time interfaces are the next two)",
                          "--robot"};
     settings.dashboardPort = static_cast<int>(port);
     settings.secondaryPort = static_cast<int>(port) + 1;
@@ -235,8 +238,8 @@ class UrLink::Impl {
     if (m_status.stop.kind == StopKind::EmergencyStop) return;
     m_status.stop.kind = kind;
     m_status.stop.confirmed = false;
-    m_status.stop.problem = m_status.connected ? "sent, waiting for the robot to stop" : "the link is down: " +
-                                                                                          m_status.linkProblem;
+    m_status.stop.problem =
+        m_status.connected ? "sent, waiting for the robot to stop" : "the link is down: " + m_status.linkProblem;
     m_nextStopSend = Clock::now();  // the worker sends it at once
   }
 
@@ -245,8 +248,8 @@ class UrLink::Impl {
     if (!m_status.stop.latched()) return core::Done{};
     if (!m_status.stop.confirmed)
       return core::Error{core::ErrorCode::InvalidParameter,
-                         std::string("the ") + stopKindName(m_status.stop.kind) +
-                             " is not confirmed yet (" + m_status.stop.problem + "): it stays latched",
+                         std::string("the ") + stopKindName(m_status.stop.kind) + " is not confirmed yet (" +
+                             m_status.stop.problem + "): it stays latched",
                          "stop"};
     m_status.stop = StopLatch{};
     return core::Done{};
@@ -278,8 +281,8 @@ class UrLink::Impl {
       std::string reason;
       fds[i] = connectTcp(m_settings.host, ports[i], m_settings.replyTimeout, reason);
       if (fds[i] < 0) {
-        why = std::string(names[i]) + " at " + m_settings.host + ":" + std::to_string(ports[i]) + " cannot be reached (" +
-              reason + ")";
+        why = std::string(names[i]) + " at " + m_settings.host + ":" + std::to_string(ports[i]) +
+              " cannot be reached (" + reason + ")";
         for (int fd : fds)
           if (fd >= 0) ::close(fd);
         return false;
@@ -370,8 +373,8 @@ class UrLink::Impl {
         const auto* bytes = reinterpret_cast<const std::uint8_t*>(data.data() + at);
         const std::uint32_t size = ur::packageSize(bytes, data.size() - at);
         if (size < 5 || size > kMaxPackage) {
-          m_lost = std::string(names[i]) + " sent a package of " + std::to_string(size) +
-                   " bytes, which is not UR's format";
+          m_lost =
+              std::string(names[i]) + " sent a package of " + std::to_string(size) + " bytes, which is not UR's format";
           return false;
         }
         if (data.size() - at < size) break;
@@ -390,7 +393,7 @@ class UrLink::Impl {
     const std::optional<ur::UrRobotMessage> m = ur::decodeRobotMessage(bytes, size);
     if (!m || m->kind == ur::UrRobotMessage::Kind::Version) return;
     UrLinkMessage message;
-    message.kind = m->kind == ur::UrRobotMessage::Kind::Text             ? UrLinkMessage::Kind::Text
+    message.kind = m->kind == ur::UrRobotMessage::Kind::Text               ? UrLinkMessage::Kind::Text
                    : m->kind == ur::UrRobotMessage::Kind::RuntimeException ? UrLinkMessage::Kind::RuntimeException
                                                                            : UrLinkMessage::Kind::ErrorCode;
     message.text = m->text;
@@ -413,8 +416,7 @@ class UrLink::Impl {
     const std::string previous = m_status.programState;
     m_status.programState = ur::urProgramStateName(s->programState);
     if (previous != "PLAYING" && previous != "PAUSED" && m_status.programState == "PLAYING") ++m_status.programStarts;
-    if ((previous == "PLAYING" || previous == "PAUSED") && m_status.programState == "STOPPED")
-      ++m_status.programEnds;
+    if ((previous == "PLAYING" || previous == "PAUSED") && m_status.programState == "STOPPED") ++m_status.programEnds;
     m_status.joints = s->qActual;
     m_status.jointSpeeds = s->qdActual;
     m_status.tcp = s->toolVectorActual;
@@ -492,7 +494,8 @@ class UrLink::Impl {
           {
             std::lock_guard<std::mutex> lock(m_mutex);
             m_status.linkProblem = why;
-            if (m_status.stop.latched()) m_status.stop.problem = "the link is down (" + why + "): resent when it is back";
+            if (m_status.stop.latched())
+              m_status.stop.problem = "the link is down (" + why + "): resent when it is back";
           }
           const auto until = Clock::now() + m_settings.reconnectInterval;
           while (!m_quit && Clock::now() < until) std::this_thread::sleep_for(10ms);
@@ -517,12 +520,12 @@ class UrLink::Impl {
   }
 
   UrLinkSettings m_settings;
-  mutable std::mutex m_mutex;        // m_status, m_messages, m_nextStopSend, m_stopSentAtPackage
-  std::mutex m_dashboardMutex;       // the dashboard socket: one request and its reply at a time
-  std::mutex m_sendMutex;            // writes to the secondary interface: one program at a time
-  std::mutex m_streamMutex;          // reads of the secondary and real-time interfaces and their buffers
-  int m_fd[3] = {-1, -1, -1};        // dashboard, secondary, real-time
-  std::string m_buffer[2];           // secondary, real-time bytes not yet a whole package
+  mutable std::mutex m_mutex;   // m_status, m_messages, m_nextStopSend, m_stopSentAtPackage
+  std::mutex m_dashboardMutex;  // the dashboard socket: one request and its reply at a time
+  std::mutex m_sendMutex;       // writes to the secondary interface: one program at a time
+  std::mutex m_streamMutex;     // reads of the secondary and real-time interfaces and their buffers
+  int m_fd[3] = {-1, -1, -1};   // dashboard, secondary, real-time
+  std::string m_buffer[2];      // secondary, real-time bytes not yet a whole package
   std::atomic<std::uint64_t> m_packages{0};
   Clock::time_point m_lastPackageAt{};
   std::string m_lost;

@@ -42,29 +42,46 @@ double getDouble(const std::uint8_t* at) {
 
 const char* urRobotModeName(UrRobotMode mode) {
   switch (mode) {
-    case UrRobotMode::Disconnected: return "DISCONNECTED";
-    case UrRobotMode::ConfirmSafety: return "CONFIRM_SAFETY";
-    case UrRobotMode::Booting: return "BOOTING";
-    case UrRobotMode::PowerOff: return "POWER_OFF";
-    case UrRobotMode::PowerOn: return "POWER_ON";
-    case UrRobotMode::Idle: return "IDLE";
-    case UrRobotMode::Backdrive: return "BACKDRIVE";
-    case UrRobotMode::Running: return "RUNNING";
+    case UrRobotMode::Disconnected:
+      return "DISCONNECTED";
+    case UrRobotMode::ConfirmSafety:
+      return "CONFIRM_SAFETY";
+    case UrRobotMode::Booting:
+      return "BOOTING";
+    case UrRobotMode::PowerOff:
+      return "POWER_OFF";
+    case UrRobotMode::PowerOn:
+      return "POWER_ON";
+    case UrRobotMode::Idle:
+      return "IDLE";
+    case UrRobotMode::Backdrive:
+      return "BACKDRIVE";
+    case UrRobotMode::Running:
+      return "RUNNING";
   }
   return "UNKNOWN";
 }
 
 const char* urSafetyModeName(UrSafetyMode mode) {
   switch (mode) {
-    case UrSafetyMode::Normal: return "NORMAL";
-    case UrSafetyMode::Reduced: return "REDUCED";
-    case UrSafetyMode::ProtectiveStop: return "PROTECTIVE_STOP";
-    case UrSafetyMode::Recovery: return "RECOVERY";
-    case UrSafetyMode::SafeguardStop: return "SAFEGUARD_STOP";
-    case UrSafetyMode::SystemEmergencyStop: return "SYSTEM_EMERGENCY_STOP";
-    case UrSafetyMode::RobotEmergencyStop: return "ROBOT_EMERGENCY_STOP";
-    case UrSafetyMode::Violation: return "VIOLATION";
-    case UrSafetyMode::Fault: return "FAULT";
+    case UrSafetyMode::Normal:
+      return "NORMAL";
+    case UrSafetyMode::Reduced:
+      return "REDUCED";
+    case UrSafetyMode::ProtectiveStop:
+      return "PROTECTIVE_STOP";
+    case UrSafetyMode::Recovery:
+      return "RECOVERY";
+    case UrSafetyMode::SafeguardStop:
+      return "SAFEGUARD_STOP";
+    case UrSafetyMode::SystemEmergencyStop:
+      return "SYSTEM_EMERGENCY_STOP";
+    case UrSafetyMode::RobotEmergencyStop:
+      return "ROBOT_EMERGENCY_STOP";
+    case UrSafetyMode::Violation:
+      return "VIOLATION";
+    case UrSafetyMode::Fault:
+      return "FAULT";
   }
   return "UNDEFINED_SAFETY_MODE";
 }
@@ -72,11 +89,14 @@ const char* urSafetyModeName(UrSafetyMode mode) {
 const char* urProgramStateName(UrProgramState state) {
   switch (state) {
     case UrProgramState::Playing:
-    case UrProgramState::Resuming: return "PLAYING";
+    case UrProgramState::Resuming:
+      return "PLAYING";
     case UrProgramState::Pausing:
-    case UrProgramState::Paused: return "PAUSED";
+    case UrProgramState::Paused:
+      return "PAUSED";
     case UrProgramState::Stopping:
-    case UrProgramState::Stopped: return "STOPPED";
+    case UrProgramState::Stopped:
+      return "STOPPED";
   }
   return "STOPPED";
 }

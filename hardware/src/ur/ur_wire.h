@@ -24,11 +24,28 @@ namespace multidir::hardware::ur {
 constexpr std::size_t kRealtimePackageBytes = 1108;
 
 // UR's robot modes (real-time "Robot Mode", dashboard "robotmode").
-enum class UrRobotMode : int { Disconnected = 0, ConfirmSafety = 1, Booting = 2, PowerOff = 3, PowerOn = 4,
-                               Idle = 5, Backdrive = 6, Running = 7 };
+enum class UrRobotMode : int {
+  Disconnected = 0,
+  ConfirmSafety = 1,
+  Booting = 2,
+  PowerOff = 3,
+  PowerOn = 4,
+  Idle = 5,
+  Backdrive = 6,
+  Running = 7
+};
 // UR's safety modes (real-time "Safety Mode", dashboard "safetymode").
-enum class UrSafetyMode : int { Normal = 1, Reduced = 2, ProtectiveStop = 3, Recovery = 4, SafeguardStop = 5,
-                                SystemEmergencyStop = 6, RobotEmergencyStop = 7, Violation = 8, Fault = 9 };
+enum class UrSafetyMode : int {
+  Normal = 1,
+  Reduced = 2,
+  ProtectiveStop = 3,
+  Recovery = 4,
+  SafeguardStop = 5,
+  SystemEmergencyStop = 6,
+  RobotEmergencyStop = 7,
+  Violation = 8,
+  Fault = 9
+};
 // The program's state as RTDE's runtime_state numbers it (real-time "Program state").
 enum class UrProgramState : int { Stopping = 0, Stopped = 1, Playing = 2, Pausing = 3, Paused = 4, Resuming = 5 };
 // UR's joint modes: 253 running, 239 power off, 255 idle (brakes on, powered).
@@ -36,8 +53,8 @@ constexpr double kJointModeRunning = 253.0;
 constexpr double kJointModePowerOff = 239.0;
 constexpr double kJointModeIdle = 255.0;
 
-const char* urRobotModeName(UrRobotMode mode);    // "RUNNING", as the dashboard says it
-const char* urSafetyModeName(UrSafetyMode mode);  // "PROTECTIVE_STOP"
+const char* urRobotModeName(UrRobotMode mode);         // "RUNNING", as the dashboard says it
+const char* urSafetyModeName(UrSafetyMode mode);       // "PROTECTIVE_STOP"
 const char* urProgramStateName(UrProgramState state);  // "PLAYING" (the dashboard's word; Stopping is "STOPPED")
 
 struct UrRealtimeState {
@@ -68,13 +85,13 @@ struct UrRobotMessage {
   Kind kind = Kind::Text;
   std::uint64_t timestampUs = 0;
   std::int8_t source = -2;
-  std::string text;                // text, error code text, runtime exception text; version: project name
-  std::int32_t line = 0;           // runtime exception: script line
-  std::int32_t column = 0;         // runtime exception: script column
-  std::int32_t code = 0;           // error code: UR's code (the C number)
-  std::int32_t argument = 0;       // error code: its argument (A number)
-  std::int32_t reportLevel = 3;    // error code: 3 violation, 4 fault
-  std::uint8_t versionMajor = 5;   // version
+  std::string text;               // text, error code text, runtime exception text; version: project name
+  std::int32_t line = 0;          // runtime exception: script line
+  std::int32_t column = 0;        // runtime exception: script column
+  std::int32_t code = 0;          // error code: UR's code (the C number)
+  std::int32_t argument = 0;      // error code: its argument (A number)
+  std::int32_t reportLevel = 3;   // error code: 3 violation, 4 fault
+  std::uint8_t versionMajor = 5;  // version
   std::uint8_t versionMinor = 9;
 };
 

@@ -123,7 +123,7 @@ void moveArguments(Reader& reader, UrStatement& statement, bool blend) {
     bool* seen = name == "a" ? &seenA : name == "v" ? &seenV : (blend && name == "r") ? &seenR : nullptr;
     if (seen == nullptr)
       reader.refuseAt(at, "'" + name + "' is not an argument MultiDir's programs give " +
-                    (blend ? std::string("movel (a, v, r)") : std::string("movej (a, v)")));
+                              (blend ? std::string("movel (a, v, r)") : std::string("movej (a, v)")));
     if (*seen) reader.refuseAt(at, "'" + name + "' is given twice");
     *seen = true;
     const double value = reader.number(name);
@@ -192,9 +192,11 @@ UrStatement statementOf(Reader& reader, int line) {
     s.text = reader.quoted();
     reader.expect(")", "to close the call");
   } else {
-    reader.refuseAt(nameAt, "'" + name + "' is not in the URScript subset MultiDir's programs use (set_tcp, "
-                      "set_standard_analog_out, set_standard_digital_out, movej, movel, sleep, textmsg and the "
-                      "heat wait loop)");
+    reader.refuseAt(nameAt,
+                    "'" + name +
+                        "' is not in the URScript subset MultiDir's programs use (set_tcp, "
+                        "set_standard_analog_out, set_standard_digital_out, movej, movel, sleep, textmsg and the "
+                        "heat wait loop)");
   }
   if (!reader.done()) reader.refuse("unexpected text after the statement");
   return s;
@@ -240,8 +242,9 @@ UrScriptParse parseUrScript(const std::string& text) {
             break;
           }
           if (reader.accept("while ")) {
-            reader.expect("get_standard_analog_in(", "(the only loop is the heat wait: while "
-                                                     "get_standard_analog_in(0) < X:)");
+            reader.expect("get_standard_analog_in(",
+                          "(the only loop is the heat wait: while "
+                          "get_standard_analog_in(0) < X:)");
             const double index = reader.number("the input");
             if (index != 0.0) reader.refuse("the heat wait reads analog input 0 (the nozzle temperature)");
             reader.expect(")", "to close the call");

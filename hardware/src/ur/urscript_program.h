@@ -13,13 +13,13 @@
 namespace multidir::hardware::ur {
 
 enum class UrStatementKind {
-  SetTcp,          // pose = the TCP in the flange frame
-  SetAnalogOut,    // index 0..1, value 0..1
-  SetDigitalOut,   // index 0..7, flag
-  MoveJ,           // pose = joints (rad), a (rad/s^2), v (rad/s)
-  MoveL,           // pose = TCP target in the base frame (m, rotation vector), a (m/s^2), v (m/s), r (m)
-  Sleep,           // value = seconds
-  TextMsg,         // text
+  SetTcp,             // pose = the TCP in the flange frame
+  SetAnalogOut,       // index 0..1, value 0..1
+  SetDigitalOut,      // index 0..7, flag
+  MoveJ,              // pose = joints (rad), a (rad/s^2), v (rad/s)
+  MoveL,              // pose = TCP target in the base frame (m, rotation vector), a (m/s^2), v (m/s), r (m)
+  Sleep,              // value = seconds
+  TextMsg,            // text
   WaitAnalogInBelow,  // while get_standard_analog_in(index) < value: sync() end
 };
 

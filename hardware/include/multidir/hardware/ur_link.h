@@ -32,8 +32,8 @@ struct UrLinkSettings {
   int dashboardPort = 29999;
   int secondaryPort = 30002;
   int realtimePort = 30003;
-  std::chrono::milliseconds replyTimeout{2000};         // a dashboard reply
-  std::chrono::milliseconds silenceLimit{1000};         // no real-time package this long: the link is lost
+  std::chrono::milliseconds replyTimeout{2000};  // a dashboard reply
+  std::chrono::milliseconds silenceLimit{1000};  // no real-time package this long: the link is lost
   std::chrono::milliseconds reconnectInterval{250};
   std::chrono::milliseconds stopResendInterval{200};
 };
@@ -43,14 +43,14 @@ struct UrLinkSettings {
 core::Result<UrLinkSettings> parseUrAddress(const std::string& text);
 
 struct UrLinkStatus {
-  bool connected = false;       // all three interfaces up and the real-time stream flowing
-  bool linkLost = false;        // was connected, is not now
-  std::string linkProblem;      // why not ("" when connected)
-  std::uint64_t reconnects = 0; // times the link came back after a loss
-  double controllerTime = 0.0;  // the real-time package's time (s)
-  std::string robotMode;        // "POWER_OFF", "IDLE", "RUNNING", ...
-  std::string safetyMode;       // "NORMAL", "PROTECTIVE_STOP", ...
-  std::string programState;     // "STOPPED", "PLAYING", "PAUSED"
+  bool connected = false;               // all three interfaces up and the real-time stream flowing
+  bool linkLost = false;                // was connected, is not now
+  std::string linkProblem;              // why not ("" when connected)
+  std::uint64_t reconnects = 0;         // times the link came back after a loss
+  double controllerTime = 0.0;          // the real-time package's time (s)
+  std::string robotMode;                // "POWER_OFF", "IDLE", "RUNNING", ...
+  std::string safetyMode;               // "NORMAL", "PROTECTIVE_STOP", ...
+  std::string programState;             // "STOPPED", "PLAYING", "PAUSED"
   std::array<double, 6> joints{};       // rad
   std::array<double, 6> jointSpeeds{};  // rad/s
   std::array<double, 6> tcp{};          // x, y, z (m), rotation vector (rad)
@@ -69,7 +69,7 @@ struct UrLinkMessage {
   std::string text;  // the controller's own text
   int line = 0;      // runtime exception
   int column = 0;
-  int code = 0;      // error code
+  int code = 0;  // error code
   [[nodiscard]] std::string describe() const;
 };
 

@@ -58,13 +58,13 @@ struct UrSimulatorOptions {
 
 // One tick the simulator traced.
 struct UrTraceRecord {
-  double time = 0.0;                 // simulated seconds since start
-  std::array<double, 6> joints{};    // rad
-  std::array<double, 6> tcp{};       // x, y, z (mm), rotation vector (rad), base frame
-  double analogOut0 = 0.0;           // extruder speed (fraction)
-  double analogOut1 = 0.0;           // nozzle set point (fraction of 300 C)
+  double time = 0.0;               // simulated seconds since start
+  std::array<double, 6> joints{};  // rad
+  std::array<double, 6> tcp{};     // x, y, z (mm), rotation vector (rad), base frame
+  double analogOut0 = 0.0;         // extruder speed (fraction)
+  double analogOut1 = 0.0;         // nozzle set point (fraction of 300 C)
   double nozzleC = 0.0;
-  std::string program;               // running program ("" while the arm brakes after it)
+  std::string program;  // running program ("" while the arm brakes after it)
   int line = 0;
   // With a cell (UrSimulatorOptions::cellPath): the fixed nozzle's tip in the platform's frame (the TCP's,
   // mm: where the nozzle is on the part) and the filament speed analog out 0 commands (mm/s).
@@ -118,7 +118,7 @@ class UrSimulator {
   void pressEmergencyStop();
   void releaseEmergencyStop();
   void programError(const std::string& text);
-  void dropLinks();     // closes every connection and refuses new ones until restoreLinks()
+  void dropLinks();  // closes every connection and refuses new ones until restoreLinks()
   void restoreLinks();
 
   // Observation.
