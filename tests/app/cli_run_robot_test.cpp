@@ -214,7 +214,9 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
   for (int step = 1; step <= 4; ++step) {
     const std::string name = "multidir_step_0" + std::to_string(step);
     const std::string script = multidir::test::readAll(dir + "/out/step-0" + std::to_string(step) + ".script");
-    // The tick the last movel ends in is the first one traced at the statement after it (the final movej home).
+    // The tick the last movel ends in is the first one traced at the statement after it (the final movej home),
+    // which carries the rest of that tick into the movej: at most 8 ms from rest at 1.4 rad/s^2, 45 urad, under
+    // 0.05 mm at the platform (the movel's own end is checked to 0.01 mm in UrController's test).
     const int homeLine = 1 + static_cast<int>(std::count(
                                  script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
     const hw::UrTraceRecord* ended = nullptr;
@@ -225,7 +227,7 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
       }
     ASSERT_NE(ended, nullptr) << name << " line " << homeLine;
     const Eigen::Vector3d target = lastMovelTarget(script);
-    EXPECT_LT((Eigen::Vector3d(ended->tcp[0], ended->tcp[1], ended->tcp[2]) - target).norm(), 0.01) << name;
+    EXPECT_LT((Eigen::Vector3d(ended->tcp[0], ended->tcp[1], ended->tcp[2]) - target).norm(), 0.05) << name;
   }
 }
 
