@@ -70,6 +70,7 @@ ReachPoint reachScore(const std::vector<ReachStep>& steps, const Cell& at, const
         for (int i = 0; i < n; ++i) {
           const IkSolution& s = solutions[static_cast<std::size_t>(i)];
           if (!nearestWithinLimits(cell.arm, &s, 1, cell.home)) continue;
+          if (!detail::armOnTable(cell, s.joints).empty()) continue;
           const double reach = detail::reachMarginMm(cell.arm, s.joints);
           const double wrist = std::asin(std::min(1.0, std::abs(std::sin(s.joints[4])))) / kDeg;
           if (reach < cell.margins.minReachMm || wrist < minWrist) continue;

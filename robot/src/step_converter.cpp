@@ -157,6 +157,42 @@ const char* kindName(CarriedPoint::Kind kind) {
 
 }  // namespace
 
+// The arm's joint housings (the DH origins from the elbow to the flange) held above the table by the table
+// clearance plus this radius, an estimate of the housings' size (not a published figure): about 80 mm across on
+// the UR3s, 100 mm on the UR5s, 120 mm on the larger arms. docs/robot-cell.md, "Collisions".
+double housingRadiusMm(const ArmModel& arm) {
+  const double reach = std::abs(arm.a[1]) + std::abs(arm.a[2]);
+  if (reach < 600.0) return 40.0;
+  if (reach < 900.0) return 50.0;
+  return 60.0;
+}
+
+namespace {
+const char* const kJointNames[] = {"shoulder", "elbow", "wrist 1", "wrist 2", "wrist 3", "flange"};
+}  // namespace
+
+// The first joint housing (elbow to flange) that comes down on the table, or an empty string.
+std::string armOnTable(const Cell& cell, const Joints& q) {
+  const ArmModel& arm = cell.arm;
+  const double floor = cell.tableZMm + cell.margins.tableClearanceMm + housingRadiusMm(arm);
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  for (std::size_t j = 0; j < 6; ++j) {
+    const double ct = std::cos(q[j]), st = std::sin(q[j]), ca = std::cos(arm.alpha[j]), sa = std::sin(arm.alpha[j]);
+    Eigen::Matrix4d m;
+    m << ct, -st * ca, st * sa, arm.a[j] * ct, st, ct * ca, -ct * sa, arm.a[j] * st, 0.0, sa, ca, arm.d[j], 0.0, 0.0,
+        0.0, 1.0;
+    t = t * m;
+    if (j >= 1 && t(2, 3) < floor) {
+      char text[160];
+      std::snprintf(text, sizeof text, "the arm's %s would come down to z %.1f mm, within %.1f mm of the table (its housing "
+                    "about %.0f mm, the clearance %.1f mm)", kJointNames[j], t(2, 3), t(2, 3) - cell.tableZMm,
+                    housingRadiusMm(arm), cell.margins.tableClearanceMm);
+      return text;
+    }
+  }
+  return {};
+}
+
 Eigen::Matrix3d nozzleFrame(const Eigen::Vector3d& axisIn) {
   const Eigen::Vector3d axis = axisIn.normalized();
   Eigen::Vector3d u = Eigen::Vector3d::UnitX() - axis.x() * axis;
@@ -269,6 +305,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
         const Eigen::Isometry3d flange = platformPoseFor(cell, input.platformToFile, rotation, corner) * platformToFlange;
         Joints q{};
         if (solveOnBranch(arm, flange, branch, cell.home, q) != Solve::Ok) continue;
+        if (!armOnTable(cell, q).empty()) continue;  // a configuration with its elbow under the table
         ++reached;
         const double reach = reachMarginMm(arm, q) / std::max(margins.minReachMm, 1.0);
         const double wrist = wristDegrees(q) / std::max(margins.minWristDegrees, 1.0);
@@ -374,9 +411,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
                " mm of the table " + where(world) + ", table at z " + fixed(cell.tableZMm, 1) +
                "; move the nozzle higher (nozzleTipMm) or the table lower";
     }
-    const Eigen::Vector3d wristCentre = flange.translation() - arm.d[5] * flange.linear().col(2);
-    if (std::min(flange.translation().z(), wristCentre.z()) < cell.tableZMm + margins.tableClearanceMm)
-      return "the arm's wrist would come within " + fixed(margins.tableClearanceMm, 1) + " mm of the table";
+    (void)flange;  // the arm itself: armOnTable
     return {};
   };
 
@@ -510,7 +545,8 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
                               fixed(margins.minWristDegrees, 1) + " deg (margins.minWristDegrees)");
         return out;
       }
-      const std::string hit = collisionAt(f, flange);
+      std::string hit = collisionAt(f, flange);
+      if (hit.empty()) hit = armOnTable(cell, q);
       if (!hit.empty()) {
         refuse(move.line, hit);
         return out;

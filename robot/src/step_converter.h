@@ -47,6 +47,12 @@ Eigen::Matrix3d nozzleFrame(const Eigen::Vector3d& axis);
 Eigen::Isometry3d platformPoseFor(const Cell& cell, const Eigen::Isometry3d& platformToFile, double rotationRad,
                                   const Eigen::Vector3d& fileMm);
 
+// The arm's joint housings (the DH origins from the elbow to the flange) held above the table by the cell's table
+// clearance plus housingRadiusMm (an estimate of the housings' size): the first that comes down on it, or an
+// empty string.
+double housingRadiusMm(const ArmModel& arm);
+std::string armOnTable(const Cell& cell, const Joints& joints);
+
 // The wrist centre's least distance from the workspace's edges (elbow stretched or folded, shoulder singular).
 double reachMarginMm(const ArmModel& arm, const Joints& joints);
 

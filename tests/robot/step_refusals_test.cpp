@@ -147,23 +147,38 @@ TEST(StepRefusals, ThePlatformHittingTheExtrudersBodyIsRefusedWithItsLine) {
       << refusal;
 }
 
-// Nozzle axis along x again, far from the singularity: the platform stands on its edge and its rim dips as the
-// nozzle moves along the part's y. The table 60 mm below the tip: the rim comes within 5 mm of it past y 25.
+// Nozzle axis along x again, far from the singularity: the platform (80 mm radius) stands on its edge and its rim
+// dips as the nozzle moves along the part's y. The table 100 mm below the tip: the rim comes within 5 mm of it
+// past y 15, before the wrist's housing (50 mm about the flange, level with the platform centre) past y 45.
 TEST(StepRefusals, ThePlatformComingDownOnTheTableIsRefusedWithItsLine) {
   Cell cell = shippedCell();
   cell.boxes.clear();
   cell.cylinders.clear();
   cell.nozzleAxis = Eigen::Vector3d::UnitX();
   cell.nozzleTipMm = Eigen::Vector3d(400.0, -300.0, 300.0);
-  cell.tableZMm = 240.0;
+  cell.tableZMm = 200.0;
   Program p = squares(1);
   p.add("G1 X0 Y30 F6000", "down");
-  const StepOutput out = convertStep(stepOf(p, 30.0), cell, fixedRotation(), core::JobContext());
+  const StepOutput out = convertStep(stepOf(p, 80.0), cell, fixedRotation(), core::JobContext());
   const std::string refusal = onlyRefusal(out);
   EXPECT_NE(refusal.find("step 1, line " + std::to_string(p.marks["down"]) +
                          " (step-01.gcode): the platform would come within 5.0 mm of the table"),
             std::string::npos)
       << refusal;
+}
+
+// The nozzle 60 mm above the table: the flange hangs 50 mm under the platform, so every configuration brings the
+// arm's wrist housings down on the table at the first move (an elbow under the table is refused the same way).
+TEST(StepRefusals, TheArmComingDownOnTheTableIsRefusedWithItsLine) {
+  Cell cell = shippedCell();
+  cell.nozzleTipMm = Eigen::Vector3d(0.0, -500.0, 60.0);
+  cell.boxes.clear();
+  cell.cylinders.clear();
+  const Program p = squares(1);
+  const StepOutput out = convertStep(stepOf(p, 30.0), cell, fixedRotation(), core::JobContext());
+  const std::string refusal = onlyRefusal(out);
+  EXPECT_NE(refusal.find("step 1, line 4 (step-01.gcode): the arm's "), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("of the table (its housing about 50 mm"), std::string::npos) << refusal;
 }
 
 }  // namespace
