@@ -25,6 +25,7 @@
 #include "multidir/slicing/estimates.h"
 #include "run_job_checks.h"
 #include "run_job_file.h"
+#include "run_robot.h"
 #include "run_stitched.h"
 
 namespace multidir::cli {
@@ -32,6 +33,7 @@ namespace multidir::cli {
 const char* const kRunHelp =
     "Usage: multidir run JOB --printer URL --platform HOST:PORT --machine PROFILE.json [options]\n"
     "       multidir run JOB --printer URL [--yes-axes-configured] [options]   (a job the printer's axes turn)\n"
+    "       multidir run OUT --robot HOST[:PORT] [--from STEP]   (a robot cell's job: 'multidir robot-program')\n"
     "\n"
     "Runs a sliced print job headless (JOB: the folder written by 'multidir slice' for a profile whose platform\n"
     "is driven over Modbus, or its print-job.json). For each step: turns the platform (4-DOF rotary controller\n"
@@ -73,7 +75,18 @@ const char* const kRunHelp =
     "printer, which needs a reset and a Connect in OctoPrint's Connection panel; Marlin a reset; the platform a\n"
     "clear fault and homing).\n"
     "\n"
+    "With --robot, OUT is the folder 'multidir robot-program' wrote (robot-job.json and one URScript program per\n"
+    "step) for a cell whose Universal Robots arm carries the part under a fixed extruder: the run connects to\n"
+    "the controller's dashboard server (PORT, default 29999), secondary interface (PORT+1, default 30002) and\n"
+    "real-time interface (PORT+2, default 30003), powers the arm on and releases its brakes when needed, sends\n"
+    "each step's program in order and waits until it has ended with the arm at rest, logging the programs'\n"
+    "textmsg lines, progress and the job's time left from robot-job.json's per-step seconds. A protective\n"
+    "stop, an emergency stop, a program error or a lost link stops the run with the robot's own words. Ctrl-C\n"
+    "stops the program (the dashboard's stop, latched and resent until the robot's state shows the program\n"
+    "stopped and the arm at rest, and again after a reconnect); a second Ctrl-C powers the arm off.\n"
+    "\n"
     "Options:\n"
+    "  --robot HOST[:PORT]  the UR controller (docs/hardware.md, \"UR controller\")\n"
     "  --printer URL        the printer: Klipper through Moonraker at http://HOST:PORT (default port 80),\n"
     "                       moonraker://HOST:PORT or HOST:PORT (7125 when absent); OctoPrint at\n"
     "                       octoprint://HOST:PORT (default port 80; OctoPrint's own server uses 5000); Marlin\n"
@@ -429,12 +442,13 @@ std::string howToGoOn(const hardware::PrintRun& run, const hardware::PrinterStat
 int runRun(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const ParsedArgs parsed = parseArgs(args,
                                       {"--printer", "--platform", "--unit", "--api-key", "--api-key-file", "--log",
-                                       "--settle", "--from", "--machine", "--printer-profile"},
+                                       "--settle", "--from", "--machine", "--printer-profile", "--robot"},
                                       {"--help", "--yes-axes-configured"}, "run");
   if (parsed.has("--help")) {
     out << kRunHelp;
     return kExitOk;
   }
+  if (parsed.has("--robot")) return runRobotJob(parsed, out, err);
   const std::string jobPath =
       onlyPositional(parsed, "run", "job", "multidir run JOB --printer URL --platform HOST:PORT");
   if (!parsed.has("--printer"))

@@ -13,6 +13,7 @@
 #include "multidir/hardware/marlin_simulator.h"
 #include "multidir/hardware/moonraker_simulator.h"
 #include "multidir/hardware/octoprint_simulator.h"
+#include "simulate_ur.h"
 
 namespace multidir::cli {
 
@@ -22,6 +23,8 @@ const char* const kSimulateHelp =
     "                         [--fault NAME [--fault-at FRACTION]] [--api-key KEY]\n"
     "                         [--manual-stepper NAME,... (moonraker) | --rotary-axes LETTERS (octoprint)]\n"
     "       multidir simulate --printer marlin [--speed X] [--fault NAME [--fault-at-line N]] [--rotary-axes U,V]\n"
+    "       multidir simulate --ur MODEL [--port P] [--speed X] [--fault NAME [--fault-at S | --fault-at-line N]]\n"
+    "                         [--cell CELL] [--trace FILE]\n"
     "\n"
     "Runs a Modbus TCP simulator of MultiDir's devices until Ctrl-C: the rotary platform controller and the\n"
     "Universal Robots arm's registers 128-255 with the behaviour of multidir_platform.script (register maps:\n"
@@ -64,6 +67,20 @@ const char* const kSimulateHelp =
     "  --printer marlin  simulate a Marlin printer over USB serial\n"
     "  --fault NAME      as above, or serial-resend (one line arrives damaged: the printer asks for it again);\n"
     "                    injected once, when the printer has received --fault-at-line lines (default: 100)\n"
+    "\n"
+    "With --ur MODEL (ur3 ur5 ur10 ur3e ur5e ur10e ur16e) it runs a Universal Robots controller instead, the\n"
+    "interfaces MultiDir's robot cell uses in UR's formats (docs/hardware.md, \"UR controller\"): the dashboard\n"
+    "server on P, the secondary interface (URScript programs; MultiDir's subset) on P+1, the real-time state\n"
+    "on P+2 (without --port UR's own 29999, 30002 and 30003; --port 0 picks three free ones). The arm moves by\n"
+    "the model's kinematics at the programs' a and v; a joint limit is a protective stop. Give it to\n"
+    "'multidir run OUT --robot 127.0.0.1:P'.\n"
+    "  --ur MODEL        simulate this arm\n"
+    "  --cell CELL       the robot cell's file: the arm gets its joint limits and starts at its home\n"
+    "  --fault NAME      inject once: protective-stop, emergency-stop, link-drop (3 s), program-error, at\n"
+    "  --fault-at S      S simulated seconds after the first program started (default: 5), or\n"
+    "  --fault-at-line N when a program reaches line N\n"
+    "  --trace FILE      write every tick a program runs or the arm moves as CSV: time, joints, TCP pose (mm,\n"
+    "                    rotation vector), analog out 0 (extruder) and 1 (nozzle set point), nozzle C, program\n"
     "  -h, --help        show this help\n"
     "\n"
     "Exit codes: 0 stopped by Ctrl-C, 1 cannot listen on the address and port, 2 usage error.\n";
@@ -281,7 +298,7 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
   const ParsedArgs parsed = parseArgs(
       args,
       {"--listen", "--port", "--unit", "--printer", "--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key",
-       "--rotary-axes", "--manual-stepper"},
+       "--rotary-axes", "--manual-stepper", "--ur", "--trace", "--cell"},
       {"--rotary", "--robot", "--help"}, "simulate");
   if (parsed.has("--help")) {
     out << kSimulateHelp;
@@ -290,6 +307,10 @@ int runSimulate(const std::vector<std::string>& args, std::ostream& out, std::os
   if (!parsed.positionals.empty())
     throw UsageError("multidir simulate: unexpected argument '" + parsed.positionals[0] +
                      "'. Run 'multidir help simulate'.");
+  if (parsed.has("--ur")) return simulateUr(parsed, out, err);
+  for (const char* urOnly : {"--trace", "--cell"})
+    if (parsed.has(urOnly))
+      throw UsageError(std::string("multidir simulate: ") + urOnly + " is for --ur MODEL. Run 'multidir help simulate'.");
   if (parsed.has("--printer")) return simulatePrinter(parsed, out, err);
   for (const char* printerOnly :
        {"--speed", "--fault", "--fault-at", "--fault-at-line", "--api-key", "--rotary-axes", "--manual-stepper"})

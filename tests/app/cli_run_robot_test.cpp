@@ -1,0 +1,284 @@
+// `multidir run OUT --robot HOST:PORT` and `multidir simulate --ur`: a small hand-written robot job (two steps
+// of a few movel each, as `multidir robot-program` writes them) runs to its end on the UR simulator, whose trace
+// shows both programs' moves; a protective stop ends the run with the robot's words.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <memory>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "multidir/hardware/ur_simulator.h"
+#include "multidir/robot/cell.h"
+#include "multidir/robot/ur_kinematics.h"
+#include "support/cli_runner.h"
+#include "support/test_models.h"
+
+namespace {
+
+using multidir::test::CliRun;
+using multidir::test::runCli;
+namespace robot = multidir::robot;
+namespace hw = multidir::hardware;
+
+const robot::Joints kStart{0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0};
+
+std::string urPose(const Eigen::Isometry3d& p) {
+  const Eigen::AngleAxisd aa(p.linear());
+  const Eigen::Vector3d r = aa.axis() * aa.angle();
+  const Eigen::Vector3d t = p.translation() / 1000.0;
+  char text[200];
+  std::snprintf(text, sizeof text, "p[%.9f, %.9f, %.9f, %.12f, %.12f, %.12f]", t.x(), t.y(), t.z(), r.x(), r.y(),
+                r.z());
+  return text;
+}
+
+// The TCP (the platform centre, 50 mm off the flange) at kStart moved by `offset` (mm).
+Eigen::Isometry3d tcpAt(const Eigen::Vector3d& offset) {
+  Eigen::Isometry3d pose = robot::forwardKinematics(*robot::armModel("ur5"), kStart);
+  pose.translation() += pose.linear() * Eigen::Vector3d(0, 0, 50.0) + offset;
+  return pose;
+}
+
+// Step k: heat a little, move to the start, a square of movel in the TCP's own plane, the last at `last`.
+std::string stepProgram(int k, const std::vector<Eigen::Vector3d>& corners) {
+  std::string text = "def multidir_step_0" + std::to_string(k) + "():\n";
+  text += "  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
+  text += "  set_standard_analog_out(1, 0.0900)\n";
+  text += "  while get_standard_analog_in(0) < 0.0890:\n    sync()\n  end\n";
+  text += "  movej([0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0], a=1.4, v=1.05)\n";
+  text += "  textmsg(\"multidir step " + std::to_string(k) + " layer 1\")\n";
+  for (const Eigen::Vector3d& c : corners) {
+    text += "  set_standard_analog_out(0, 0.2500)\n";
+    text += "  movel(" + urPose(tcpAt(c)) + ", a=1.2, v=0.05, r=0.0005)\n";
+  }
+  text += "  set_standard_analog_out(0, 0.0000)\nend\n";
+  return text;
+}
+
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+}
+
+// A robot job folder of two steps; returns the last corner of each step.
+std::vector<Eigen::Vector3d> writeRobotJob(const std::string& dir) {
+  const std::vector<Eigen::Vector3d> first{{20, 0, 0}, {20, 20, 0}, {0, 20, 0}};
+  const std::vector<Eigen::Vector3d> second{{0, 0, 10}, {-20, 0, 10}, {-20, -20, 10}, {0, -20, 10}};
+  writeFile(std::filesystem::path(dir) / "step-01.script", stepProgram(1, first));
+  writeFile(std::filesystem::path(dir) / "step-02.script", stepProgram(2, second));
+  writeFile(std::filesystem::path(dir) / "robot-job.json",
+            R"({ "format": "multidir-robot-job", "version": 1, "robot": "ur5", "cell": "cell.json",
+  "steps": [ { "step": 1, "program": "step-01.script", "seconds": 3.5, "filamentMm": 12.0, "moves": 3,
+               "reachMarginMm": 40.0, "slowestJoint": 5, "slowdowns": 0 },
+             { "step": 2, "program": "step-02.script", "seconds": 4.0, "filamentMm": 14.0, "moves": 4,
+               "reachMarginMm": 40.0, "slowestJoint": 5, "slowdowns": 0 } ] })");
+  return {first.back(), second.back()};
+}
+
+// A UR simulator on three consecutive free ports (the --robot HOST:PORT convention).
+std::unique_ptr<hw::UrSimulator> startSimulator(hw::UrSimulatorOptions options) {
+  for (int base = 41000 + static_cast<int>(::getpid() % 200) * 30; base < 65000; base += 7) {
+    options.dashboardPort = base;
+    options.secondaryPort = base + 1;
+    options.realtimePort = base + 2;
+    auto simulator = std::make_unique<hw::UrSimulator>(options);
+    if (simulator->start().ok()) return simulator;
+  }
+  return nullptr;
+}
+
+TEST(CliRunRobot, ATwoStepRobotJobRunsToItsEndAndTheTraceShowsBothProgramsMoves) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.TwoSteps");
+  const std::vector<Eigen::Vector3d> lastCorners = writeRobotJob(dir);
+  hw::UrSimulatorOptions options;
+  options.speed = 20.0;
+  options.keepTrace = true;
+  options.initialJoints = {0.0, -1.0, 1.3, -1.9, -1.5707963267948966, 0.0};
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run =
+      runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 120");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("powering the arm on"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("robot: textmsg: multidir step 2 layer 1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("done: 2 steps printed"), std::string::npos) << run.out;
+  EXPECT_EQ(simulator->state().programsFinished, 2u);
+  const auto trace = simulator->trace();
+  for (int k = 1; k <= 2; ++k) {
+    const std::string name = "multidir_step_0" + std::to_string(k);
+    const hw::UrTraceRecord* last = nullptr;
+    int moving = 0;
+    for (std::size_t i = 1; i < trace.size(); ++i)
+      if (trace[i].program == name) {
+        last = &trace[i];
+        if (trace[i].tcp != trace[i - 1].tcp) ++moving;
+      }
+    ASSERT_NE(last, nullptr) << name;
+    EXPECT_GT(moving, 100) << name;
+    const Eigen::Vector3d target = tcpAt(lastCorners[static_cast<std::size_t>(k - 1)]).translation();
+    EXPECT_LT((Eigen::Vector3d(last->tcp[0], last->tcp[1], last->tcp[2]) - target).norm(), 0.01) << name;
+  }
+}
+
+TEST(CliRunRobot, AProtectiveStopEndsTheRunWithTheRobotsWords) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.ProtectiveStop");
+  writeRobotJob(dir);
+  hw::UrSimulatorOptions options;
+  options.speed = 20.0;
+  options.fault = hw::UrSimulatorFault::ProtectiveStop;
+  options.faultAtLine = 12;  // step 1's second movel
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run =
+      runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 120");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("the run stopped at step 1: the robot reports: C153: Protective stop: the simulator's "
+                         "injected fault"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("safety mode PROTECTIVE_STOP"), std::string::npos) << run.err;
+  EXPECT_EQ(simulator->state().programsFinished, 0u);
+}
+
+// The paper's cell file with its platform the plan's platform region (docs/robot-cell.md, "The platform").
+std::string cellForJob(const std::string& jobDir, const std::string& cellPath) {
+  const std::string job = multidir::test::readAll(jobDir + "/print-job.json");
+  std::smatch radius;
+  if (!std::regex_search(job, radius, std::regex("\"pivot\"[^}]*\"platformRadiusMm\": *([0-9.eE+-]+)"))) return "";
+  std::string cell =
+      multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json");
+  cell = std::regex_replace(cell, std::regex("\"platformRadiusMm\": *[0-9.]+"),
+                            "\"platformRadiusMm\": " + radius[1].str());
+  writeFile(cellPath, cell);
+  return cellPath;
+}
+
+// The TCP target of the last movel in a step's program (mm; the cell's TCP is the platform centre).
+Eigen::Vector3d lastMovelTarget(const std::string& script) {
+  const std::size_t at = script.rfind("movel(p[");
+  std::istringstream numbers(script.substr(at + 8));
+  double x = 0, y = 0, z = 0;
+  char comma = 0;
+  numbers >> x >> comma >> y >> comma >> z;
+  return Eigen::Vector3d(x, y, z) * 1000.0;
+}
+
+// The kitten (half size, 5-DOF) decomposed, sliced with the cell's profile and converted by 'multidir
+// robot-program', run on the simulated UR5 of the paper's cell at 1000 times real time.
+TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.Kitten");
+  ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") +
+                       "' --up y --scale 0.5 --machine "
+                       "5dof -o " +
+                       dir + "/plan",
+                   dir)
+                .exitCode,
+            0);
+  const CliRun sliced = runCli("slice " + dir + "/plan --printer ur5-cell-0.8 -o " + dir + "/job", dir);
+  ASSERT_EQ(sliced.exitCode, 0) << sliced.err;
+  const std::string cellPath = cellForJob(dir + "/job", dir + "/cell.json");
+  ASSERT_FALSE(cellPath.empty());
+  const CliRun converted = runCli("robot-program " + dir + "/job --cell " + cellPath + " -o " + dir + "/out", dir);
+  ASSERT_EQ(converted.exitCode, 0) << converted.err;
+  hw::UrSimulatorOptions options;
+  options.speed = 1000.0;
+  options.keepTrace = true;
+  options.cellPath = cellPath;
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run =
+      runCli("run " + dir + "/out --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 240");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_EQ(simulator->state().programsFinished, 4u);
+  const robot::ArmModel arm = robot::loadCell(cellPath)->arm;
+  const auto trace = simulator->trace();
+  for (std::size_t k = 1; k < trace.size(); ++k) {
+    const double dt = trace[k].time - trace[k - 1].time;
+    if (dt > 0.0081) continue;  // not consecutive ticks (between two programs)
+    for (std::size_t j = 0; j < 6; ++j) {
+      ASSERT_LE(std::abs(trace[k].joints[j] - trace[k - 1].joints[j]) / dt, arm.limits[j].maxSpeedRadPerS)
+          << "joint " << j + 1 << " at " << trace[k].time << " s";
+      ASSERT_GE(trace[k].joints[j], arm.limits[j].minRad);
+      ASSERT_LE(trace[k].joints[j], arm.limits[j].maxRad);
+    }
+  }
+  for (int step = 1; step <= 4; ++step) {
+    const std::string name = "multidir_step_0" + std::to_string(step);
+    const std::string script = multidir::test::readAll(dir + "/out/step-0" + std::to_string(step) + ".script");
+    // The tick the last movel ends in is the first one traced at the statement after it (the final movej home),
+    // which carries the rest of that tick into the movej: at most 8 ms from rest at 1.4 rad/s^2, 45 urad, under
+    // 0.05 mm at the platform (the movel's own end is checked to 0.01 mm in UrController's test).
+    const int homeLine = 1 + static_cast<int>(std::count(
+                                 script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
+    const hw::UrTraceRecord* ended = nullptr;
+    for (const hw::UrTraceRecord& record : trace)
+      if (record.program == name && record.line == homeLine) {
+        ended = &record;
+        break;
+      }
+    ASSERT_NE(ended, nullptr) << name << " line " << homeLine;
+    const Eigen::Vector3d target = lastMovelTarget(script);
+    EXPECT_LT((Eigen::Vector3d(ended->tcp[0], ended->tcp[1], ended->tcp[2]) - target).norm(), 0.05) << name;
+  }
+}
+
+// Ctrl-C while a step's program moves the arm: the run stops the program (the dashboard's stop, latched until
+// the robot's state confirms it) and says where it stopped; the arm is at rest and nothing else is sent.
+TEST(CliRunRobot, CtrlCStopsTheProgramAndWaitsForTheRobotToConfirmIt) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.CtrlC");
+  writeRobotJob(dir);
+  hw::UrSimulatorOptions options;
+  options.speed = 1.0;  // real time: the signal lands while the arm moves
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const std::string pidFile = dir + "/pid";
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, prefix);
+  });
+  const bool interrupted = multidir::test::signalCliWhen(pidFile, SIGINT, [&] {
+    const hw::UrSimulatorState s = simulator->state();
+    return s.programName == "multidir_step_01" && s.programState == "PLAYING" && !s.atRest;
+  });
+  const CliRun run = cli.get();
+  ASSERT_TRUE(interrupted) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.out.find("the robot confirmed the stop"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("the run stopped at step 1: stopped by Ctrl-C"), std::string::npos) << run.err;
+  const hw::UrSimulatorState s = simulator->state();
+  EXPECT_EQ(s.programState, "STOPPED");
+  EXPECT_TRUE(s.atRest);
+  EXPECT_EQ(s.programsFinished, 0u);
+  EXPECT_EQ(simulator->programsReceived().size(), 1u);  // step 2 never went out
+  bool stopSent = false;
+  for (const hw::UrDashboardRecord& record : simulator->dashboardLog())
+    stopSent = stopSent || (record.command == "stop" && record.reply == "Stopped");
+  EXPECT_TRUE(stopSent);
+}
+
+TEST(CliRunRobot, AnUnknownArmModelIsAUsageErrorNamingTheKnownOnes) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.UnknownModel");
+  const CliRun run = runCli("simulate --ur ur7 --port 0", dir, "timeout -s INT 5");
+  EXPECT_EQ(run.exitCode, 2) << run.out << run.err;
+  EXPECT_NE(run.err.find("ur5"), std::string::npos) << run.err;
+}
+
+TEST(CliRunRobot, SimulateUrPrintsItsThreePortsAndStopsOnSigint) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.SimulatePorts");
+  const CliRun run = runCli("simulate --ur ur5e --port 0", dir, "timeout --preserve-status -s INT 1");
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("UR controller simulator (ur5e) on 127.0.0.1: dashboard "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("robot: POWER_OFF, safety NORMAL, program STOPPED"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("Simulator stopped."), std::string::npos) << run.out;
+}
+
+}  // namespace
