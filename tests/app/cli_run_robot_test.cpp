@@ -11,10 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <iostream>
 #include <memory>
 #include <regex>
 #include <sstream>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "multidir/hardware/ur_simulator.h"
 #include "multidir/robot/cell.h"
@@ -228,6 +231,46 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
     ASSERT_NE(ended, nullptr) << name << " line " << homeLine;
     const Eigen::Vector3d target = lastMovelTarget(script);
     EXPECT_LT((Eigen::Vector3d(ended->tcp[0], ended->tcp[1], ended->tcp[2]) - target).norm(), 0.05) << name;
+  }
+}
+
+// The filament the extruder really pushes (its commanded speed over the simulated arm's own time, tick by tick)
+// is the G-code's E of each step: the extrusion rate follows the moves as the controller runs them.
+TEST(CliRunRobot, TheExtruderPushesEachStepsGcodeFilamentWhileTheArmRunsItsProgram) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.KittenFilament");
+  ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") +
+                       "' --up y --scale 0.5 --machine 5dof -o " + dir + "/plan",
+                   dir)
+                .exitCode,
+            0);
+  const CliRun sliced = runCli("slice " + dir + "/plan --printer ur5-cell-0.8 -o " + dir + "/job", dir);
+  ASSERT_EQ(sliced.exitCode, 0) << sliced.err;
+  const std::string cellPath = cellForJob(dir + "/job", dir + "/cell.json");
+  ASSERT_FALSE(cellPath.empty());
+  const CliRun converted = runCli("robot-program " + dir + "/job --cell " + cellPath + " -o " + dir + "/out", dir);
+  ASSERT_EQ(converted.exitCode, 0) << converted.err;
+  hw::UrSimulatorOptions options;
+  options.speed = 1000.0;
+  options.keepTrace = true;
+  options.cellPath = cellPath;
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run =
+      runCli("run " + dir + "/out --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 240");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  const auto job = nlohmann::json::parse(multidir::test::readAll(dir + "/out/robot-job.json"));
+  const auto trace = simulator->trace();
+  ASSERT_FALSE(trace.empty());
+  ASSERT_TRUE(trace.front().hasCell);
+  for (std::size_t step = 0; step < job["steps"].size(); ++step) {
+    const std::string name = "multidir_step_0" + std::to_string(step + 1);
+    double pushed = 0.0;
+    for (std::size_t k = 1; k < trace.size(); ++k)
+      if (trace[k].program == name) pushed += trace[k].filamentMmPerS * (trace[k].time - trace[k - 1].time);
+    const double gcode = job["steps"][step]["gcodeFilamentMm"].get<double>();
+    ASSERT_GT(gcode, 0.0) << name;
+    std::cout << "[ measured ] " << name << ": extruder pushed " << pushed << " mm, G-code E " << gcode << " mm\n";
+    EXPECT_NEAR(pushed / gcode, 1.0, 0.005) << name;
   }
 }
 

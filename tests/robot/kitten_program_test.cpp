@@ -59,6 +59,8 @@ struct ScriptMove {
   Eigen::Isometry3d tcp;  // mm
   double speedMmPerS = 0.0;
   double analog0 = 0.0;   // in effect while the move runs
+  double accelMmPerS2 = 0.0;
+  double blendMm = 0.0;
 };
 
 struct Script {
@@ -93,7 +95,7 @@ Script readScript(const std::string& text) {
       if (port == 0) analog0 = value;
     } else if (std::sscanf(s.c_str(), "movel(p[%lf, %lf, %lf, %lf, %lf, %lf], a=%lf, v=%lf, r=%lf)", &v[0], &v[1],
                            &v[2], &v[3], &v[4], &v[5], &a, &speed, &r) == 9) {
-      script.movel.push_back({poseFrom(v), speed * 1000.0, analog0});
+      script.movel.push_back({poseFrom(v), speed * 1000.0, analog0, a * 1000.0, r * 1000.0});
     } else if (std::sscanf(s.c_str(), "movej([%lf, %lf, %lf, %lf, %lf, %lf]", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]) == 6) {
       script.movej.push_back({v[0], v[1], v[2], v[3], v[4], v[5]});
     }
@@ -186,7 +188,15 @@ TEST(KittenRobotProgram, ExtruderFilamentPerStepMatchesTheGcodesETo05Percent) {
     double pushed = 0.0;
     for (std::size_t i = 1; i < script.movel.size(); ++i) {
       const double length = (script.movel[i].tcp.translation() - script.movel[i - 1].tcp.translation()).norm();
-      pushed += script.movel[i].analog0 * c.cell.maxFilamentMmPerS * length / script.movel[i].speedMmPerS;
+      // The move's own duration as the controller runs it: a trapezoid when it stops at both ends, about
+      // length / speed when blended into a neighbour.
+      const ScriptMove& m = script.movel[i];
+      const bool blended = m.blendMm > 0.0 || script.movel[i - 1].blendMm > 0.0;
+      const double cruise = m.speedMmPerS * m.speedMmPerS / m.accelMmPerS2;
+      const double seconds = blended           ? length / m.speedMmPerS
+                             : length >= cruise ? length / m.speedMmPerS + m.speedMmPerS / m.accelMmPerS2
+                                                : 2.0 * std::sqrt(length / m.accelMmPerS2);
+      pushed += m.analog0 * c.cell.maxFilamentMmPerS * seconds;
     }
     // The first move (the descent from the approach) never extrudes.
     EXPECT_EQ(script.movel.front().analog0, 0.0);

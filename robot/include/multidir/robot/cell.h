@@ -42,7 +42,7 @@ struct CellMargins {
 struct CellMotion {
   double travelSpeedMmPerS = 250.0;     // movel speed of travel moves
   double toolAccelMmPerS2 = 1200.0;     // movel acceleration
-  double blendRadiusMm = 0.2;           // movel blend radius of extrusion moves (0: stop at each point)
+  double blendRadiusMm = 0.0;           // movel blend radius of extrusion moves (0: stop at each point; docs/robot-cell.md)
   double jointSpeedDegreesPerS = 60.0;  // movej between steps
   double jointAccelDegreesPerS2 = 80.0;
 };
