@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "multidir/core/search/decompose.h"
+#include "support/primitives.h"
 #include "support/test_models.h"
 
 using namespace multidir::core;
@@ -43,4 +47,67 @@ TEST(AxisSearch, IsNeverWorseThanTheFullSearchOnTheGivenAxis) {
   const auto given = decompose(multidir::test::loadSharedModel("bumpy.off"), rotaryUpY(), SearchOptions{}, job);
   ASSERT_TRUE(given.ok());
   EXPECT_LE(axisSearch(0).jgAfterMm2, given->jgAfterMm2 + 1e-9);
+}
+
+namespace {
+
+// An arm reaching out from a stem, its underside rising by 30 degrees towards its end (x), 10 mm deep (y): risky
+// along up (+Z), and printable without risk along up turned 20 degrees towards +x, about the y axis; about the
+// x axis no turn within 20 degrees saves it.
+TriangleMesh slantedArm() {
+  const double rise = 20.0 * std::tan(30.0 * kPi / 180.0);
+  return multidir::test::makeExtrudedProfile(
+      {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(10, 0, 20), Vec3(30, 0, 20 + rise), Vec3(30, 0, 40), Vec3(0, 0, 40)},
+      10.0);
+}
+
+}  // namespace
+
+TEST(AxisSearch, AnAxisThatCannotBeatTheBestPlanByItsBoundIsNotSearchedInFull) {
+  MachineSpec machine;
+  machine.kind = MachineKind::RotaryPlatform;
+  machine.up = Vec3::UnitZ();
+  machine.rotationAxis = Vec3::UnitX();
+  machine.minAngleDegrees = -20.0;
+  machine.maxAngleDegrees = 20.0;
+  SearchOptions options;
+  options.threads = 1;  // axes in order: y (axis 3 of 6) comes before 150 degrees (axis 5)
+  options.polish = false;
+  JobContext job;
+  const auto plan = decomposeWithAxisSearch(slantedArm(), machine, options, 6, job);
+  ASSERT_TRUE(plan.ok()) << plan.error().describe();
+  EXPECT_LT(plan->jgAfterMm2, 1.0);  // printed along a turn about an axis near y
+  bool skipped = false;
+  for (const std::string& note : plan->statistics.notes)
+    skipped = skipped || note.find("not searched in full") != std::string::npos;
+  EXPECT_TRUE(skipped);
+}
+
+TEST(AxisSearch, ScreenedOnACopyFindsTheBestAxisOfTheFullSearchOnEveryAxisOfTheKitten) {
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
+  MachineSpec machine = rotaryUpY();
+  SearchOptions options;
+  options.polish = false;
+  options.volumeScales = 1;  // a smaller search: the test is about the choice of axes, not the search on one
+  options.beamWidth = 4;
+  constexpr int kAxes = 12;  // more than the second stage searches in full: both stages run
+  JobContext job;
+  const auto screened = decomposeWithAxisSearch(kitten, machine, options, kAxes, job);
+  ASSERT_TRUE(screened.ok()) << screened.error().describe();
+  bool onACopy = false;
+  for (const std::string& note : screened->statistics.notes)
+    onACopy = onACopy || note.find("screened 12 axes on a copy") != std::string::npos;
+  EXPECT_TRUE(onACopy);
+  // Every axis searched in full, the axes as the axis search spreads them.
+  const Vec3 first = machine.rotationAxis, second = machine.up.cross(first);
+  double bestJg = INFINITY;
+  for (int a = 0; a < kAxes; ++a) {
+    const double angle = kPi * a / kAxes;
+    MachineSpec spec = machine;
+    spec.rotationAxis = (std::cos(angle) * first + std::sin(angle) * second).normalized();
+    const auto plan = decompose(kitten, spec, options, job);
+    ASSERT_TRUE(plan.ok());
+    bestJg = std::min(bestJg, plan->jgAfterMm2);
+  }
+  EXPECT_LE(screened->jgAfterMm2, bestJg + 1e-9);
 }
