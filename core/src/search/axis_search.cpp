@@ -154,8 +154,10 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
                       : runDecomposition(model, machineFor(a), screening, job, {}, platform);
     std::lock_guard<std::mutex> lock(resultMutex);
     job.setProgress(++finished / steps, "axis search");
-    if (result.cancelled) {  // a partial screen ranks nothing; a partial full search stands when no axis finished
-      if (!screeningMesh && !best) offer(std::move(result), a);
+    // After a cancel nothing more is ranked or reported (a partial screen ranks nothing); a plan of the model
+    // itself still stands when it is complete or no axis finished.
+    if (result.cancelled || job.isCancelled()) {
+      if (!screeningMesh && (!result.cancelled || !best)) offer(std::move(result), a);
       return;
     }
     account(result);
@@ -184,12 +186,12 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
       }
       Decomposition result = runDecomposition(model, machineFor(chosen[k]), perAxis, job, {}, platform);
       std::lock_guard<std::mutex> lock(resultMutex);
-      // A cancelled search's partial plan stands only when no axis finished.
+      // A cancelled search's partial plan stands only when no axis finished; after a cancel nothing is reported.
       if (result.cancelled && best) return;
       account(result);
       finished += 5;
       job.setProgress(finished / steps, "axis search");
-      report(chosen[k], result);
+      if (!job.isCancelled()) report(chosen[k], result);
       offer(std::move(result), chosen[k]);
     });
   }

@@ -111,3 +111,25 @@ TEST(AxisSearch, ScreenedOnACopyFindsTheBestAxisOfTheFullSearchOnEveryAxisOfTheK
   }
   EXPECT_LE(screened->jgAfterMm2, bestJg + 1e-9);
 }
+
+TEST(AxisSearch, CancelledAfterTheFirstAxisReportsNoOtherAxisAndSaysSo) {
+  SearchOptions options;
+  options.threads = 2;
+  JobContext job;
+  int axesReported = 0;
+  int reportedAfterCancel = 0;
+  const auto plan = decomposeWithAxisSearch(multidir::test::loadSharedModel("bumpy.off"), rotaryUpY(), options, 12, job,
+                                            [&](const SearchProgress& p) {
+                                              if (p.axisIndex < 0) return;
+                                              if (job.isCancelled()) ++reportedAfterCancel;
+                                              ++axesReported;
+                                              job.cancel();
+                                            });
+  // The axis the other thread is on stops part-way; a partial search is no result for its axis.
+  EXPECT_EQ(axesReported, 1);
+  EXPECT_EQ(reportedAfterCancel, 0);
+  if (plan.ok())
+    EXPECT_TRUE(plan->cancelled);
+  else
+    EXPECT_EQ(plan.error().code, ErrorCode::Cancelled);
+}
