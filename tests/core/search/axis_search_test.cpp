@@ -133,3 +133,25 @@ TEST(AxisSearch, CancelledAfterTheFirstAxisReportsNoOtherAxisAndSaysSo) {
   else
     EXPECT_EQ(plan.error().code, ErrorCode::Cancelled);
 }
+
+TEST(AxisSearch, ScreenedOnACopyOneAndTwoThreadsChooseTheSameAxisAndPlan) {
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");  // above 5,000 faces: a copy screens
+  auto search = [&](int threads) {
+    SearchOptions options;
+    options.threads = threads;
+    options.volumeScales = 1;  // a smaller search: the test is about the order of the work, not the plan's quality
+    options.beamWidth = 4;
+    JobContext job;
+    auto plan = decomposeWithAxisSearch(kitten, rotaryUpY(), options, 12, job);
+    if (!plan.ok()) throw std::runtime_error(plan.error().describe());
+    return std::move(plan).value();
+  };
+  const Decomposition one = search(1), two = search(2);
+  EXPECT_EQ(one.rotationAxis, two.rotationAxis);
+  EXPECT_EQ(one.jgAfterMm2, two.jgAfterMm2);
+  ASSERT_EQ(one.clippingPlanes.size(), two.clippingPlanes.size());
+  for (std::size_t i = 0; i < one.clippingPlanes.size(); ++i) {
+    EXPECT_EQ(one.clippingPlanes[i].normal, two.clippingPlanes[i].normal);
+    EXPECT_EQ(one.clippingPlanes[i].offset, two.clippingPlanes[i].offset);
+  }
+}
