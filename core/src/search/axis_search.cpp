@@ -23,7 +23,9 @@ using detail::runDecomposition;
 namespace {
 
 // The axis search's second stage: the full beam search on this many axes (the given one and the best-scored).
-constexpr int kAxesSearchedInFull = 8;
+// 4 and 8 gave the same plan on every shared model over 36 axes (docs/search.md, "4-DOF: the axis search"); the
+// full searches are most of the time left once the screen runs on a copy.
+constexpr int kAxesSearchedInFull = 4;
 // The first stage screens every axis on a decimated copy of about this many faces (when the model has more than
 // twice as many): the screen only ranks the axes, and a beam of width 1 on a quarter of the kitten's faces ranks
 // them as on the whole (the same best axis, docs/search.md "4-DOF: the axis search"); its cost is linear in the
