@@ -22,10 +22,13 @@ using detail::runDecomposition;
 
 namespace {
 
-// The axis search's second stage: the full beam search on this many axes (the given one and the best-scored).
-// 4 and 8 gave the same plan on every shared model over 36 axes (docs/search.md, "4-DOF: the axis search"); the
-// full searches are most of the time left once the screen runs on a copy.
+// The axis search's second stage: the full beam search on this many axes (the given one and the best-scored),
+// one more per kAxesPerExtraFullSearch axes: the more axes are screened, the more nearly equal screens compete
+// for the first places. Over 36 axes, 4 and 8 gave the same plan on every shared model; over 180, 4 lost the
+// kitten's best plan (1.22 % against 1.18 %) and 8 kept it (docs/search.md, "4-DOF: the axis search"). The full
+// searches are most of the time left once the screen runs on a copy.
 constexpr int kAxesSearchedInFull = 4;
+constexpr int kAxesPerExtraFullSearch = 45;
 // The first stage screens every axis on a decimated copy of about this many faces (when the model has more than
 // twice as many): the screen only ranks the axes, and a beam of width 1 on a quarter of the kitten's faces ranks
 // them as on the whole (the same best axis, docs/search.md "4-DOF: the axis search"); its cost is linear in the
@@ -113,7 +116,8 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
   // 180 axes (bench, idle, before the screening copy): kitten 15.8 s and the same plan as the full search on
   // every axis (66 s); bunny 31.6 s for 809 mm^2 against 757 mm^2 in 104 s; the greedy schemes as screens missed
   // the bunny's best axes (977 mm^2 with 36 axes searched in full).
-  const bool twoStages = options.scheme == SearchScheme::Beam && axisCount > kAxesSearchedInFull;
+  const int fullSearches = kAxesSearchedInFull + axisCount / kAxesPerExtraFullSearch;
+  const bool twoStages = options.scheme == SearchScheme::Beam && axisCount > fullSearches;
   SearchOptions screening = perAxis;
   if (twoStages) {
     screening.beamWidth = 1;
@@ -139,7 +143,7 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
   };
   std::vector<std::tuple<double, std::size_t, int>> scores(static_cast<std::size_t>(axisCount),
                                                            {INFINITY, std::size_t{0}, 0});
-  const double steps = axisCount + (twoStages ? 5.0 * kAxesSearchedInFull : 0.0);
+  const double steps = axisCount + (twoStages ? 5.0 * fullSearches : 0.0);
   int finished = 0;
   int skipped = 0;
   detail::parallelFor(axisCount, threads, [&](int a) {
@@ -173,7 +177,7 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
     std::sort(ranked.begin(), ranked.end());
     std::vector<int> chosen{0};
     for (const auto& score : ranked)
-      if (static_cast<int>(chosen.size()) < kAxesSearchedInFull && std::isfinite(std::get<0>(score)))
+      if (static_cast<int>(chosen.size()) < fullSearches && std::isfinite(std::get<0>(score)))
         chosen.push_back(std::get<2>(score));
     // In rank order (parallelFor hands out items in order): the likely winners first, so their J_G lets the
     // bound skip more of the others.
