@@ -12,6 +12,7 @@
 #include "detail/freed_memory.h"
 #include "detail/parallel.h"
 #include "multidir/core/mesh/mesh_resolution.h"
+#include "multidir/core/search/plan_from_planes.h"
 #include "search/axis_bound.h"
 #include "search/run_decomposition.h"
 
@@ -146,6 +147,10 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
   const double steps = axisCount + (twoStages ? 5.0 * fullSearches : 0.0);
   int finished = 0;
   int skipped = 0;
+  // The best screen's planes: cut on the model, the plan delivered when the search is cancelled before any full
+  // search finished (cancelling keeps the best plan reached).
+  int bestScreenAxis = -1;
+  std::vector<Plane> bestScreenPlanes;
   detail::parallelFor(axisCount, threads, [&](int a) {
     if (job.isCancelled()) return;
     if (!twoStages && a != 0 && cannotWin(a)) {
@@ -169,6 +174,11 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
     account(result);
     report(a, result);
     scores[static_cast<std::size_t>(a)] = key(result.jgAfterMm2, result.regions.size(), a);
+    if (screeningMesh && (bestScreenAxis < 0 || scores[static_cast<std::size_t>(a)] <
+                                                    scores[static_cast<std::size_t>(bestScreenAxis)])) {
+      bestScreenAxis = a;
+      bestScreenPlanes = result.clippingPlanes;
+    }
     // A plan of the screening copy is not the model's: it only ranks its axis.
     if (!screeningMesh) offer(std::move(result), a);
   });
@@ -202,6 +212,15 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
     });
   }
 
+  if (!best && job.isCancelled() && bestScreenAxis >= 0) {
+    // The copy's planes on the model, every criterion checked there; refused, the uncut model stands.
+    auto cut = planFromClippingPlanes(model, machineFor(bestScreenAxis), perAxis, bestScreenPlanes);
+    if (!cut.ok()) cut = planFromClippingPlanes(model, machineFor(bestScreenAxis), perAxis, {});
+    if (cut.ok()) {
+      total.notes.push_back("cancelled while screening: the best-screened axis's planes cut on the model");
+      offer(std::move(*cut), bestScreenAxis);
+    }
+  }
   if (!best) {
     if (job.isCancelled()) return Error{ErrorCode::Cancelled, "the axis search was cancelled before any axis finished", "axis search"};
     return Error{ErrorCode::Internal, "no axis gave a plan", "axis search"};

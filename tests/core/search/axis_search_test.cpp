@@ -4,6 +4,7 @@
 #include <string>
 
 #include "multidir/core/search/decompose.h"
+#include "multidir/core/search/plan_from_planes.h"
 #include "support/primitives.h"
 #include "support/test_models.h"
 
@@ -155,4 +156,23 @@ TEST(AxisSearch, ScreenedOnACopyOneAndTwoThreadsChooseTheSameAxisAndPlan) {
     EXPECT_EQ(one.clippingPlanes[i].normal, two.clippingPlanes[i].normal);
     EXPECT_EQ(one.clippingPlanes[i].offset, two.clippingPlanes[i].offset);
   }
+}
+
+TEST(AxisSearch, CancelledWhileScreeningOnACopyDeliversTheBestScreensPlanesCutOnTheModel) {
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");  // above 5,000 faces: a copy screens
+  SearchOptions options;
+  options.threads = 2;
+  JobContext job;
+  const auto plan = decomposeWithAxisSearch(kitten, rotaryUpY(), options, 12, job, [&](const SearchProgress& p) {
+    if (p.axisIndex >= 0) job.cancel();
+  });
+  ASSERT_TRUE(plan.ok()) << plan.error().describe();
+  EXPECT_TRUE(plan->cancelled);
+  ASSERT_FALSE(plan->regions.empty());
+  // A plan of the model: its planes cut the kitten itself to the same J_G.
+  MachineSpec machine = rotaryUpY();
+  machine.rotationAxis = plan->rotationAxis;
+  const auto again = planFromClippingPlanes(kitten, machine, options, plan->clippingPlanes);
+  ASSERT_TRUE(again.ok()) << again.error().describe();
+  EXPECT_NEAR(again->jgAfterMm2, plan->jgAfterMm2, 1e-6);
 }
