@@ -127,7 +127,8 @@ void addNoise(TriangleMesh& mesh, double amplitudeMm) {
 
 TEST(ProxyTolerance, ScanNoiseAPrinterCannotResolveIsSimplifiedAwayAndTheNoteSaysWhatItMoved) {
   // The knight with 64 times its faces and 0.02 mm of noise: no collapse of the noisy surface moves it by less
-  // than 0.01 mm, every one of its noise facets by less than half a 0.2 mm layer.
+  // than 0.01 mm (a proxy at that tolerance kept 19,872 faces), while its noise lies within half a 0.2 mm
+  // layer: the proxy goes down to the floor of 10,000 faces.
   TriangleMesh noisy = subdivided(multidir::test::loadSharedModel("knight.off"), 3).value();
   addNoise(noisy, 0.02);
   SearchOptions options;
@@ -135,7 +136,7 @@ TEST(ProxyTolerance, ScanNoiseAPrinterCannotResolveIsSimplifiedAwayAndTheNoteSay
   options.polish = false;
   const Decomposition plan = run(noisy, options);
   EXPECT_GT(plan.statistics.proxyFaces, 0);
-  EXPECT_LT(plan.statistics.proxyFaces, 5000);
+  EXPECT_LE(plan.statistics.proxyFaces, 10000);
   ASSERT_FALSE(plan.statistics.notes.empty());
   EXPECT_NE(plan.statistics.notes.front().find("of the risky area along up"), std::string::npos);
 }
