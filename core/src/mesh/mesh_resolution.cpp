@@ -45,7 +45,8 @@ Result<TriangleMesh> subdivided(const TriangleMesh& mesh, int levels) {
 }
 
 Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm,
-                                   double maxVolumeChangePercent, int threads) {
+                                   double maxVolumeChangePercent, int threads, std::size_t fineBelowFaces,
+                                   double fineToleranceMm) {
   if (targetFaces < 100)
     return Error{ErrorCode::InvalidParameter, "decimate to at least 100 faces", "decimate"};
   if (!(freeToleranceMm >= 0.0 && std::isfinite(freeToleranceMm)))
@@ -54,7 +55,8 @@ Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetF
   // The decimator checks the input is a closed oriented 2-manifold on its own (a mesh from loadMesh is, but a
   // caller may pass any mesh), from the vertex lists it builds anyway; the census, which sorts every
   // half-edge, only runs to say what is wrong.
-  std::optional<TriangleMesh> simplified = detail::quadricDecimation(mesh, targetFaces, freeToleranceMm, threads);
+  std::optional<TriangleMesh> simplified = detail::quadricDecimation(mesh, targetFaces, freeToleranceMm, threads, fineBelowFaces,
+                                                                            fineToleranceMm);
   if (!simplified) {
     const std::int32_t vertexCount = static_cast<std::int32_t>(mesh.vertices.size());
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f)

@@ -153,8 +153,9 @@ class Decimator {
     return std::all_of(blockOk.begin(), blockOk.end(), [](char ok) { return ok != 0; });
   }
 
-  void run(std::size_t targetFaces, double freeToleranceMm) {
+  void run(std::size_t targetFaces, double freeToleranceMm, std::size_t fineBelowFaces, double fineToleranceMm) {
     const double freeMeanSquared = freeToleranceMm * freeToleranceMm;
+    const double fineMeanSquared = std::min(fineToleranceMm, freeToleranceMm) * std::min(fineToleranceMm, freeToleranceMm);
     std::vector<Candidate> candidates;
     bool first = true;
     while (m_faces > kMinFaces) {
@@ -188,7 +189,9 @@ class Decimator {
       for (std::size_t i = 0; i < share && m_faces > kMinFaces; ++i) {
         if (m_touched[candidates[i].a] || m_touched[candidates[i].b]) continue;
         const Collapse c = planned(candidates[i].a, candidates[i].b);
-        if (m_faces <= targetFaces && c.meanSquaredDistance > freeMeanSquared) continue;
+        if (m_faces <= targetFaces &&
+            c.meanSquaredDistance > (m_faces <= fineBelowFaces ? fineMeanSquared : freeMeanSquared))
+          continue;
         if (!allowed(c)) continue;
         collapse(c);
         ++collapsed;
@@ -406,10 +409,10 @@ class Decimator {
 }  // namespace
 
 std::optional<TriangleMesh> quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm,
-                                              int threads) {
+                                              int threads, std::size_t fineBelowFaces, double fineToleranceMm) {
   Decimator decimator(mesh, threads);
   if (!decimator.prepare()) return std::nullopt;
-  decimator.run(targetFaces, freeToleranceMm);
+  decimator.run(targetFaces, freeToleranceMm, fineBelowFaces, fineToleranceMm);
   return decimator.result();
 }
 

@@ -27,7 +27,8 @@ namespace multidir::core::detail {
 // The scoring of the edges, the vertex quadrics and the check run on `threads` threads
 // (0: all); each item writes its own slot and every sum keeps its order, so the result is the same, bit for
 // bit, for any thread count. The collapses themselves run in order on one thread.
+// Below fineBelowFaces faces, only collapses within fineToleranceMm (when smaller than freeToleranceMm).
 std::optional<TriangleMesh> quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm,
-                                              int threads);
+                                              int threads, std::size_t fineBelowFaces = 0, double fineToleranceMm = 0.0);
 
 }  // namespace multidir::core::detail

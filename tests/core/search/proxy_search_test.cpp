@@ -104,3 +104,39 @@ TEST_F(ProxySearch, AnAxisSearchOfAHugeModelRunsOnTheProxyAndCutsTheFullMesh) {
   ASSERT_TRUE(again.ok()) << again.error().describe();
   EXPECT_NEAR(again->jgAfterMm2, plan->jgAfterMm2, 1e-9 * plan->jgBeforeMm2);
 }
+
+namespace {
+
+// Scan-like noise: every vertex moved along its normal by a pseudo-random amount in [-amplitude, amplitude]
+// (the bench's noisy_surface.h, a hash of the vertex index).
+void addNoise(TriangleMesh& mesh, double amplitudeMm) {
+  std::vector<Vec3> normals(mesh.vertices.size(), Vec3::Zero());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (std::int32_t v : mesh.triangles[f]) normals[static_cast<std::size_t>(v)] += mesh.areaNormal(f);
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    std::uint64_t h = v * 0x9e3779b97f4a7c15ull;
+    h ^= h >> 31;
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 29;
+    const double unit = static_cast<double>(h % 2000001) / 1000000.0 - 1.0;
+    mesh.vertices[v] += amplitudeMm * unit * normals[v].normalized();
+  }
+}
+
+}  // namespace
+
+TEST(ProxyTolerance, ScanNoiseAPrinterCannotResolveIsSimplifiedAwayAndTheNoteSaysWhatItMoved) {
+  // The knight with 64 times its faces and 0.02 mm of noise: no collapse of the noisy surface moves it by less
+  // than 0.01 mm (a proxy at that tolerance kept 19,872 faces), while its noise lies within half a 0.2 mm
+  // layer: the proxy goes down to the floor of 10,000 faces.
+  TriangleMesh noisy = subdivided(multidir::test::loadSharedModel("knight.off"), 3).value();
+  addNoise(noisy, 0.02);
+  SearchOptions options;
+  options.proxyFaces = 20000;
+  options.polish = false;
+  const Decomposition plan = run(noisy, options);
+  EXPECT_GT(plan.statistics.proxyFaces, 0);
+  EXPECT_LE(plan.statistics.proxyFaces, 10000);
+  ASSERT_FALSE(plan.statistics.notes.empty());
+  EXPECT_NE(plan.statistics.notes.front().find("of the risky area along up"), std::string::npos);
+}

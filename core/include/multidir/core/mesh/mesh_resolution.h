@@ -30,7 +30,10 @@ struct DecimationResult {
 // NotManifold (not a closed oriented 2-manifold; the message has edgeCensus's counts), CheckFailed when the
 // result is not closed any more or its volume differs by more than maxVolumeChangePercent: then the model is
 // not one to decimate, and the caller uses the full mesh.
+// Below `fineBelowFaces` faces, only collapses that move the surface by at most `fineToleranceMm` (when smaller
+// than freeToleranceMm) are taken: the proxy's floor (core/src/search/proxy_search.cpp).
 Result<DecimationResult> decimated(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm = 0.0,
-                                   double maxVolumeChangePercent = 0.5, int threads = 0);
+                                   double maxVolumeChangePercent = 0.5, int threads = 0, std::size_t fineBelowFaces = 0,
+                                   double fineToleranceMm = 0.0);
 
 }  // namespace multidir::core

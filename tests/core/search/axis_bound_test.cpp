@@ -1,0 +1,64 @@
+// The 4-DOF axis search's bound: the risky area no direction of one axis's range can save. It must never exceed
+// the J_G of a plan on that axis (or the axis search would skip a winner), and it must see what it claims to.
+#include <gtest/gtest.h>
+
+#include "multidir/core/search/decompose.h"
+#include "search/axis_bound.h"
+#include "support/primitives.h"
+#include "support/test_models.h"
+
+using namespace multidir::core;
+using multidir::core::detail::unavoidableRiskyAreaMm2;
+
+namespace {
+
+MachineSpec rotaryUpZ(const Vec3& axis, double rangeDegrees) {
+  MachineSpec machine;
+  machine.kind = MachineKind::RotaryPlatform;
+  machine.up = Vec3::UnitZ();
+  machine.rotationAxis = axis;
+  machine.minAngleDegrees = -rangeDegrees;
+  machine.maxAngleDegrees = rangeDegrees;
+  return machine;
+}
+
+// A T on its stem, bar 40 x 10, stem 10 wide, 10 deep: the bar's undersides (2 x 15 x 10 = 300 mm^2) face
+// straight down, 20 mm above the bed.
+TriangleMesh tBar() { return multidir::test::makeTBar(10.0, 20.0, 40.0, 5.0, 10.0); }
+
+}  // namespace
+
+TEST(UnavoidableRiskyArea, IsTheDownFacingAreaWhenNoTurnWithinTheRangeReachesAlphaMax) {
+  // Turned by at most 30 degrees, a face looking straight down still faces down by 60 > 45 degrees.
+  EXPECT_NEAR(unavoidableRiskyAreaMm2(tBar(), rotaryUpZ(Vec3::UnitX(), 30.0), 45.0, 1.0), 300.0, 1e-9);
+  EXPECT_NEAR(unavoidableRiskyAreaMm2(tBar(), rotaryUpZ(Vec3::UnitY(), 30.0), 45.0, 1.0), 300.0, 1e-9);
+}
+
+TEST(UnavoidableRiskyArea, IsZeroWhenSomeTurnWithinTheRangeSavesEveryFace) {
+  // Turned by 50 degrees, a face looking straight down faces down by 40 < 45 degrees.
+  EXPECT_EQ(unavoidableRiskyAreaMm2(tBar(), rotaryUpZ(Vec3::UnitX(), 50.0), 45.0, 1.0), 0.0);
+}
+
+TEST(UnavoidableRiskyArea, LeavesOutFacesWithinTheBedsBand) {
+  // The box's bottom looks straight down, but lies on the bed.
+  const TriangleMesh box = multidir::test::makeBox(Vec3(0, 0, 0), Vec3(10, 10, 10));
+  EXPECT_EQ(unavoidableRiskyAreaMm2(box, rotaryUpZ(Vec3::UnitX(), 10.0), 45.0, 1.0), 0.0);
+}
+
+TEST(UnavoidableRiskyArea, NeverExceedsTheJgOfTheKittensPlanOnANarrowRange) {
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
+  MachineSpec machine;
+  machine.kind = MachineKind::RotaryPlatform;
+  machine.up = Vec3::UnitY();
+  machine.rotationAxis = platformFrameX(machine.up);
+  machine.minAngleDegrees = -20.0;
+  machine.maxAngleDegrees = 20.0;
+  SearchOptions options;
+  options.polish = false;
+  JobContext job;
+  const auto plan = decompose(kitten, machine, options, job);
+  ASSERT_TRUE(plan.ok()) << plan.error().describe();
+  const double bound = unavoidableRiskyAreaMm2(kitten, machine, options.alphaMaxDegrees, options.supportedBandMm);
+  EXPECT_GT(bound, 0.0);  // the narrow range leaves some of the kitten's overhang unavoidable
+  EXPECT_LE(bound, plan->jgAfterMm2);
+}
