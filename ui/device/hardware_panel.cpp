@@ -9,6 +9,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -599,6 +600,11 @@ void HardwarePanel::onRunStateChanged(hardware::PrintRunState state) {
   else if (m_messageTopic == MessageTopic::Run)
     m_message->clear();  // the run went on: the previous run's outcome or stop no longer applies
   if (m_run->isActive()) m_clockTimer.start();
+  // An aborted run can be resumed from the first step it did not finish, while the job is the same one.
+  if (state == hardware::PrintRunState::Aborted)
+    m_aborted = AbortedRun{m_document->sessionJob().plan, m_run->currentStep(), m_run->stepCount()};
+  else if (state == hardware::PrintRunState::Completed)
+    m_aborted.reset();
   // The run is over (finished, aborted): the session's job follows the plan shown again.
   if (!m_run->isActive()) m_document->unpinSessionJob();
   updateRunTexts();
@@ -637,7 +643,71 @@ void HardwarePanel::goTo() {
     m_link->moveToOrientation(m_targetTilt->value(), m_targetAzimuth->value());
 }
 
+bool HardwarePanel::isRunUnderWay() const { return m_run->isActive(); }
+
+QString HardwarePanel::runStepText() const { return m_runStep->text(); }
+
+void HardwarePanel::stopDevicesForQuit() {
+  if (m_run->isActive()) runEvent(tr("Abort"), m_run->abort());
+  if (m_link->isOpen()) m_link->stop();
+}
+
+std::optional<std::size_t> HardwarePanel::resumableStep() const {
+  if (!m_aborted || !m_aborted->plan || m_aborted->plan != m_document->sessionJob().plan) return std::nullopt;
+  return m_aborted->firstStepNotDone;
+}
+
 void HardwarePanel::startRun() {
+  const std::optional<std::size_t> resumable = resumableStep();
+  if (!resumable || !m_link->isOpen()) {
+    startRunFrom(0);
+    return;
+  }
+  // After an abort the platform may hold a half-printed region or whatever stopped the run: the operator
+  // confirms it is clear before anything moves, and chooses where to go on from.
+  const auto step = static_cast<int>(*resumable) + 1;
+  auto* box = new QMessageBox(QMessageBox::Question, tr("Start Run"),
+                              tr("The last run of this plan was aborted at step %1 of %2.")
+                                  .arg(step)
+                                  .arg(static_cast<int>(m_aborted->stepCount)),
+                              QMessageBox::NoButton, this);
+  box->setObjectName(QStringLiteral("restartRunBox"));
+  box->setInformativeText(
+      step > 1 ? tr("Steps 1 to %1 were printed. Before the platform moves, make sure it is clear: take off what "
+                    "step %2 left half printed and anything in the platform's way.")
+                     .arg(step - 1)
+                     .arg(step)
+               : tr("Before the platform moves, make sure it is clear: take off what step 1 left half printed and "
+                    "anything in the platform's way."));
+  QPushButton* resume = nullptr;
+  if (step > 1) {
+    resume = box->addButton(tr("Platform Clear: &Resume from Step %1").arg(step), QMessageBox::AcceptRole);
+    resume->setObjectName(QStringLiteral("resumeFromStepButton"));
+  }
+  QPushButton* restart = box->addButton(tr("Platform Clear: &Start from Step 1"), QMessageBox::AcceptRole);
+  restart->setObjectName(QStringLiteral("startFromFirstStepButton"));
+  box->addButton(QMessageBox::Cancel);
+  box->setDefaultButton(QMessageBox::Cancel);
+  box->setWindowModality(Qt::WindowModal);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::finished, this, [this, box, resume, restart, first = *resumable] {
+    const QAbstractButton* clicked = box->clickedButton();
+    if (clicked == nullptr || (clicked != resume && clicked != restart)) return;
+    const std::size_t from = clicked == resume ? first : 0;
+    QTimer::singleShot(0, this, [this, from] {
+      // The job may have changed while the question was open: a resume is only for the job it was asked of.
+      if (from > 0 && resumableStep() != from) {
+        setMessage(tr("Start run refused: the plan changed since the question was asked; press Start run again."),
+                   true);
+        return;
+      }
+      startRunFrom(from);
+    });
+  });
+  box->open();
+}
+
+void HardwarePanel::startRunFrom(std::size_t firstStep) {
   if (!m_link->isOpen()) {
     setMessage(tr("Start run refused: not connected; connect to the device first."), true);
     return;
@@ -674,7 +744,7 @@ void HardwarePanel::startRun() {
   m_printerSection->setRunEstimates(estimates);
   m_runFiles = gcodeFits ? job.files : nullptr;
   const core::Status started = m_run->start(m_link->positioner(), std::move(steps.value()), m_runOptions,
-                                            gcodeFits ? printer : nullptr);
+                                            gcodeFits ? printer : nullptr, firstStep);
   if (!started.ok() || !m_run->isActive()) m_document->unpinSessionJob();
   runEvent(tr("Start run"), started);
   if (started.ok() && printer && !gcodeFits)
