@@ -148,6 +148,24 @@ TEST_F(HardwarePanelTest, StartRunAfterAnAbortOffersToResumeFromTheFirstStepNotD
   EXPECT_TRUE(label("runStepText").startsWith(QStringLiteral("2 of 3"))) << label("runStepText").toStdString();
 }
 
+TEST_F(HardwarePanelTest, StartRunRefusalIsSaidRightUnderTheButton) {
+  givePlan(planWithAngles({0.0, 70.0}));  // beyond the profile's 60 degrees
+  connectPanel();
+  enableAndHome();
+  press("startRunButton");
+  auto* refusal = panel.findChild<QLabel*>(QStringLiteral("startRunRefusal"));
+  ASSERT_NE(refusal, nullptr);
+  ASSERT_TRUE(refusal->isVisible()) << panel.messageText().toStdString();
+  EXPECT_TRUE(refusal->text().startsWith(QStringLiteral("Start run refused"))) << refusal->text().toStdString();
+  // Where the operator looks: just below the button, not the panel's message line far above it.
+  QPushButton* start = buttonNamed("startRunButton");
+  const QRect button(start->mapTo(&panel, QPoint(0, 0)), start->size());
+  const QRect said(refusal->mapTo(&panel, QPoint(0, 0)), refusal->size());
+  EXPECT_GE(said.top(), button.bottom());
+  EXPECT_LE(said.top() - button.bottom(), 24) << "button bottom " << button.bottom() << ", refusal top " << said.top();
+  EXPECT_FALSE(panel.printRunDriver()->isActive());
+}
+
 TEST_F(HardwarePanelTest, RobotArmTiltsThePlatformToTheOrientationAsked) {
   panel.connectionForm()->setKind(DeviceKind::RobotArm);
   hardware::ConnectionSettings settings = fastSettings(sim.port());

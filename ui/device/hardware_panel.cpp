@@ -344,6 +344,11 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   m_startRun = button(group, QStringLiteral("startRunButton"), tr("Start run"),
                       tr("Turns the platform to each region's orientation in printing order and asks for each "
                          "region to be printed."));
+  // Why Start run was refused, right under the button the operator just pressed (the panel's message line is
+  // far above it, often out of view).
+  m_startRunRefusal = valueLabel(group, QStringLiteral("startRunRefusal"));
+  m_startRunRefusal->setStyleSheet(QStringLiteral("color: #c62828;"));
+  m_startRunRefusal->hide();
   m_runStep = valueLabel(group, QStringLiteral("runStepText"));
   m_runElapsed = valueLabel(group, QStringLiteral("runElapsedText"));
   m_prompt = valueLabel(group, QStringLiteral("runPrompt"));
@@ -376,6 +381,7 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   auto* layout = new QVBoxLayout(group);
   layout->addWidget(m_planSummary);
   layout->addWidget(m_startRun);
+  layout->addWidget(m_startRunRefusal);
   layout->addLayout(form);
   layout->addWidget(m_prompt);
   layout->addLayout(buttons);
@@ -697,8 +703,7 @@ void HardwarePanel::startRun() {
     QTimer::singleShot(0, this, [this, from] {
       // The job may have changed while the question was open: a resume is only for the job it was asked of.
       if (from > 0 && resumableStep() != from) {
-        setMessage(tr("Start run refused: the plan changed since the question was asked; press Start run again."),
-                   true);
+        refuseStart(tr("Start run refused: the plan changed since the question was asked; press Start run again."));
         return;
       }
       startRunFrom(from);
@@ -707,9 +712,16 @@ void HardwarePanel::startRun() {
   box->open();
 }
 
+void HardwarePanel::refuseStart(const QString& text) {
+  setMessage(text, true);
+  m_startRunRefusal->setText(text);
+  m_startRunRefusal->show();
+}
+
 void HardwarePanel::startRunFrom(std::size_t firstStep) {
+  m_startRunRefusal->hide();
   if (!m_link->isOpen()) {
-    setMessage(tr("Start run refused: not connected; connect to the device first."), true);
+    refuseStart(tr("Start run refused: not connected; connect to the device first."));
     return;
   }
   // The limits the driver enforces are those it was connected with; the job is the document's, pinned there
@@ -717,14 +729,14 @@ void HardwarePanel::startRunFrom(std::size_t firstStep) {
   const DeviceLinkSettings& settings = m_link->settings();
   const core::Result<PrintJob> pinned = m_document->pinSessionJob();
   if (!pinned) {
-    setMessage(tr("Start run refused: %1").arg(QString::fromStdString(pinned.error().message)), true);
+    refuseStart(tr("Start run refused: %1").arg(QString::fromStdString(pinned.error().message)));
     return;
   }
   const PrintJob& job = pinned.value();
   auto steps = printSteps(regionTargets(*job.plan), settings.kind, settings.machine);
   if (!steps) {
     m_document->unpinSessionJob();
-    setMessage(tr("Start run refused: %1").arg(QString::fromStdString(steps.error().message)), true);
+    refuseStart(tr("Start run refused: %1").arg(QString::fromStdString(steps.error().message)));
     return;
   }
   // The printer prints the regions when it is connected and the sliced job has G-code for every region.
@@ -746,6 +758,7 @@ void HardwarePanel::startRunFrom(std::size_t firstStep) {
   const core::Status started = m_run->start(m_link->positioner(), std::move(steps.value()), m_runOptions,
                                             gcodeFits ? printer : nullptr, firstStep);
   if (!started.ok() || !m_run->isActive()) m_document->unpinSessionJob();
+  if (!started.ok()) refuseStart(tr("Start run refused: %1").arg(QString::fromStdString(started.error().message)));
   runEvent(tr("Start run"), started);
   if (started.ok() && printer && !gcodeFits)
     setMessage(job.steps.empty()

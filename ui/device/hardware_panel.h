@@ -143,6 +143,8 @@ class HardwarePanel : public QWidget {
   // start again, either once the operator confirmed the platform is clear: "restartRunBox").
   void startRun();
   void startRunFrom(std::size_t firstStep);
+  // Says why Start run was refused, in the message line and under the button.
+  void refuseStart(const QString& text);
   void runEvent(const QString& event, const core::Status& status);
   void setMessage(const QString& text, bool error, MessageTopic topic = MessageTopic::General);
   void updateBanner();
@@ -204,6 +206,7 @@ class HardwarePanel : public QWidget {
 
   QLabel* m_planSummary = nullptr;
   QPushButton* m_startRun = nullptr;
+  QLabel* m_startRunRefusal = nullptr;
   QLabel* m_runStep = nullptr;
   QLabel* m_runElapsed = nullptr;
   QLabel* m_prompt = nullptr;

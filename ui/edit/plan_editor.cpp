@@ -251,7 +251,9 @@ void PlanEditor::onRefused(quint64 ticket, const core::Error& error) {
   if (!m_awaited || m_awaited->ticket != ticket) return;
   const Awaited awaited = std::move(*m_awaited);
   m_awaited.reset();
-  setRefusal(refusalText(error, static_cast<int>(awaited.state.planes.size())),
+  // A deletion leaves no edited plane in the list to name.
+  const bool namesPlane = awaited.edit && *awaited.edit != EditKind::Delete;
+  setRefusal(refusalText(error, static_cast<int>(awaited.state.planes.size()), namesPlane ? awaited.plane : -1),
              QString::fromStdString(error.describe()));
   if (!awaited.edit) {
     // A state undo or redo reached could not be rebuilt: keep showing (and offering) the plan shown.
