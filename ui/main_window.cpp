@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QStatusBar>
 #include <QTimer>
@@ -175,7 +176,8 @@ void MainWindow::buildMenus() {
   for (QDockWidget* dock : findChildren<QDockWidget*>()) m_viewMenu->addAction(dock->toggleViewAction());
 
   QMenu* search = menuBar()->addMenu(tr("&Search"));
-  QAction* run = search->addAction(tr("&Run"), this, [this] { runSearch(); });
+  QAction* run = search->addAction(tr("&Run"), this, &MainWindow::runSearchFromUser);
+  run->setObjectName(QStringLiteral("runSearch"));
   run->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
   // Esc also ends picking the rotation axis, wherever the focus is.
   QAction* cancel = search->addAction(tr("&Cancel"), this, [this] {
@@ -264,7 +266,7 @@ void MainWindow::buildDocks() {
   connect(m_overhangPanel, &OverhangPanel::alphaMaxChanged, m_searchPanel, &SearchPanel::setAlphaMaxDegrees);
   connect(m_searchPanel, &SearchPanel::alphaMaxChanged, m_overhangPanel, &OverhangPanel::setAlphaMaxDegrees);
   connect(m_machinePanel, &MachinePanel::machineChanged, this, &MainWindow::onMachineChanged);
-  connect(m_searchPanel, &SearchPanel::runClicked, this, [this] { runSearch(); });
+  connect(m_searchPanel, &SearchPanel::runClicked, this, &MainWindow::runSearchFromUser);
   connect(m_searchPanel, &SearchPanel::cancelClicked, this, &MainWindow::cancelSearch);
   // A search being abandoned reports nothing more: the panel already shows another model.
   connect(m_search, &SearchJob::progressed, this, [this](const core::SearchProgress& progress) {
@@ -301,6 +303,7 @@ void MainWindow::buildDocks() {
   // Hardware: it reads the document's machine (the device's limits) and the device session's job (the plan
   // shown with its sliced G-code), which a print run pins while it lasts.
   auto* hardwarePanel = new HardwarePanel(m_document, this);
+  m_hardwarePanel = hardwarePanel;
   tabifyDockWidget(m_planDock, addDock(hardwarePanel, tr("Hardware"), QStringLiteral("hardwareDock"), false));
   // A second E-STOP, above everything, while a device is connected: the dock may be tabbed away or closed.
   QToolBar* estopBar = addToolBar(tr("Emergency stop"));
@@ -708,6 +711,33 @@ bool MainWindow::runSearch() {
   return true;
 }
 
+void MainWindow::runSearchFromUser() {
+  // An edited plan that is not saved is asked about first: the search replaces it (Undo brings it back).
+  if (m_search->isRunning() || !m_planEditor->isEdited() || !m_project->isModified()) {
+    runSearch();
+    return;
+  }
+  if (m_replaceQuestion) {
+    m_replaceQuestion->raise();
+    return;
+  }
+  auto* box = new QMessageBox(QMessageBox::Question, tr("Replace the Edited Plan"),
+                              tr("The plan shown has edits that are not saved."), QMessageBox::NoButton, this);
+  box->setObjectName(QStringLiteral("replaceEditedPlanBox"));
+  box->setInformativeText(tr("A new search replaces it; Edit > Undo brings it back. Search now?"));
+  QPushButton* search = box->addButton(tr("&Search"), QMessageBox::AcceptRole);
+  search->setObjectName(QStringLiteral("searchAnyway"));
+  box->addButton(QMessageBox::Cancel);
+  box->setDefaultButton(QMessageBox::Cancel);
+  box->setWindowModality(Qt::WindowModal);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::finished, this, [this, box, search] {
+    if (box->clickedButton() == search) QTimer::singleShot(0, this, [this] { runSearch(); });
+  });
+  m_replaceQuestion = box;
+  box->open();
+}
+
 void MainWindow::cancelSearch() {
   if (!m_search->isRunning()) return;
   m_search->cancel();
@@ -728,10 +758,29 @@ void MainWindow::onSearchFinished(const SearchRun& run) {
     statusBar()->showMessage(tr("The search result was dropped: the model or its up direction changed."));
     return;
   }
+  // A plan shown of this model, which editing knows: the search's plan replaces it as one undo step.
+  const bool replacesShown = m_planShown && plan() && plan()->plan && m_planEditor->canEdit();
+  if (replacesShown && run.plan->cancelled && plan()->plan->jgAfterMm2 < run.plan->jgAfterMm2) {
+    // A search cut short found less than the plan shown has: that plan stays, and the panel says so.
+    const QString text = tr("Search cancelled: its best plan so far (J_G %1 mm²) is worse than the plan shown (J_G %2 mm²), "
+                            "which is kept.")
+                             .arg(formatNumber(run.plan->jgAfterMm2, 1), formatNumber(plan()->plan->jgAfterMm2, 1));
+    m_searchPanel->noteKeptPlan(text);
+    statusBar()->showMessage(text);
+    emit searchFinished(run);
+    return;
+  }
   statusBar()->showMessage(run.plan->cancelled ? tr("Search cancelled: showing the best plan found so far.")
                                                : tr("Search finished."));
   if (!run.supportsNote.isEmpty()) statusBar()->showMessage(run.supportsNote);
-  showPlan(run);
+  if (replacesShown) {
+    endPreview();
+    m_planEditor->replacePlan(run);  // shown through planEvaluated, as an edit is
+    m_viewer->setPrintingDirectionsVisible(true);
+    m_planDock->raise();
+  } else {
+    showPlan(run);
+  }
   emit searchFinished(run);
 }
 
@@ -813,12 +862,46 @@ void MainWindow::onDocumentPlanChanged() {
 void MainWindow::showRebuiltPlan(const SearchRun& run) { showPlan(run); }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  // A print run first: the devices are stopped (after asking) before the unsaved-changes question, whose
+  // Discard must never leave a run paused with nobody watching it.
+  if (m_hardwarePanel->isRunUnderWay()) {
+    event->ignore();
+    askToStopRunBeforeQuitting();
+    return;
+  }
   if (!m_project->confirmClose()) {
     event->ignore();
     return;
   }
   saveWindowState(*this);
   QMainWindow::closeEvent(event);
+}
+
+void MainWindow::askToStopRunBeforeQuitting() {
+  if (m_runQuitQuestion) {
+    m_runQuitQuestion->raise();
+    return;
+  }
+  auto* box = new QMessageBox(QMessageBox::Warning, tr("Print Run Under Way"),
+                              tr("A print run is under way: step %1.").arg(m_hardwarePanel->runStepText()),
+                              QMessageBox::NoButton, this);
+  box->setObjectName(QStringLiteral("printRunQuitBox"));
+  box->setInformativeText(tr("Quitting stops the platform and the printer first: the run is aborted (Start run "
+                             "offers to resume it from the step it stopped at). Stop the devices and quit?"));
+  QPushButton* stop = box->addButton(tr("S&top the Devices and Quit"), QMessageBox::DestructiveRole);
+  stop->setObjectName(QStringLiteral("stopDevicesAndQuit"));
+  box->addButton(QMessageBox::Cancel);
+  box->setDefaultButton(QMessageBox::Cancel);
+  box->setWindowModality(Qt::WindowModal);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::finished, this, [this, box, stop] {
+    if (box->clickedButton() != stop) return;
+    m_hardwarePanel->stopDevicesForQuit();
+    // After the box has gone: the unsaved-changes question (if any) comes next, then the window closes.
+    QTimer::singleShot(0, this, [this] { close(); });
+  });
+  m_runQuitQuestion = box;
+  box->open();
 }
 
 bool MainWindow::exportPlan(const QString& directory, QString* error, QString* warning) {

@@ -21,6 +21,7 @@
 // without them (a reopened or recovered project, a cancelled search) gets them regrown (SupportRegrowth), and
 // exportPlan() refuses while they are being grown.
 #include <QMainWindow>
+#include <QPointer>
 #include <QString>
 #include <cstddef>
 #include <optional>
@@ -37,12 +38,14 @@ class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QMessageBox;
 class QProgressBar;
 class QUndoStack;
 
 namespace multidir::ui {
 
 class AxisPicker;
+class HardwarePanel;
 class MachinePanel;
 class MeshViewerWidget;
 class ModelLoader;
@@ -125,6 +128,8 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] MachinePanel* machinePanel() const { return m_machinePanel; }
   [[nodiscard]] SearchPanel* searchPanel() const { return m_searchPanel; }
   [[nodiscard]] PlanPanel* planPanel() const { return m_planPanel; }
+  // The Hardware dock: devices and the print run.
+  [[nodiscard]] HardwarePanel* hardwarePanel() const { return m_hardwarePanel; }
   // The project (ui/project): Open/Save Project, unsaved changes, autosave and recovery, Open Recent, drops.
   [[nodiscard]] ProjectSession* projectSession() const { return m_project; }
   // Plan editing (ui/edit): the Edit plan dock, its editor and the undo stack behind Edit > Undo/Redo (the
@@ -139,6 +144,11 @@ class MainWindow : public QMainWindow {
   // Starts a search of the model with the Machine and Search panels' settings; false (with the reason in
   // the status bar) when there is no model, the machine is invalid or a search is running.
   bool runSearch();
+  // The same from Search > Run and the Search panel: when the plan shown has unsaved edits, asks first (a
+  // window-modal, asynchronous box named "replaceEditedPlanBox"). A search's plan replacing a plan shown of the
+  // same model is one undo step ("New search"): Undo brings back the plan it replaced. A cancelled search whose
+  // best plan is worse (higher J_G) than the plan shown does not replace it, and says so.
+  void runSearchFromUser();
   // Asks the running search to stop; it finishes with the best plan found so far.
   void cancelSearch();
   // A search or a pose search is running.
@@ -167,7 +177,8 @@ class MainWindow : public QMainWindow {
   bool loadMachineProfile(const QString& path, QString* error = nullptr);
 
  signals:
-  // A search ended and its plan is shown (run.plan->cancelled tells a cancelled one).
+  // A search ended and its plan is shown (run.plan->cancelled tells a cancelled one), except a cancelled
+  // search's plan worse than the plan shown: plan() then keeps the better one.
   void searchFinished(const multidir::ui::SearchRun& run);
   // A search could not run or failed; `message` is what the Search panel says.
   void searchFailed(const QString& message);
@@ -192,10 +203,13 @@ class MainWindow : public QMainWindow {
   void supportsRegrown();
 
  protected:
-  // Asks about unsaved project changes first (ProjectSession::confirmClose); saves the window's layout.
+  // During a print run asks first whether to stop the devices ("printRunQuitBox"): Stop aborts the run through
+  // its stop path before anything else happens; Cancel keeps the window and the run. Then asks about unsaved
+  // project changes (ProjectSession::confirmClose); saves the window's layout.
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  void askToStopRunBeforeQuitting();
   void buildMenus();
   void buildUpBox();
   void buildStatusBar();
@@ -284,6 +298,9 @@ class MainWindow : public QMainWindow {
   SliceSession* m_slicing = nullptr;
   int m_upIndex = -1;               // the Up box entry applied (the box shows another one while asking)
   bool m_dropSearchResult = false;  // abandonSearch(): the running search's result is not shown
+  QPointer<QMessageBox> m_replaceQuestion;  // "replace the edited plan?" while it is asked
+  QPointer<QMessageBox> m_runQuitQuestion;  // "stop the devices and quit?" while it is asked
+  HardwarePanel* m_hardwarePanel = nullptr;
   PoseSearchJob* m_poseSearch = nullptr;
   std::optional<PoseRun> m_poseRun;
   std::optional<core::Vec3> m_previewUp;

@@ -221,13 +221,18 @@ void PrintRun::beginMove() {
   enter(PrintRunState::Moving, stepLabel() + ": moving " + m_positioner.name());
 }
 
-core::Status PrintRun::start() {
+core::Status PrintRun::start(std::size_t firstStep) {
   if (m_state != PrintRunState::Idle) return refuse("start");
   if (m_steps.empty())
     return core::Error{core::ErrorCode::InvalidParameter, "the print run has no steps: plan the regions first",
                        "print run"};
+  if (firstStep >= m_steps.size())
+    return core::Error{core::ErrorCode::InvalidParameter,
+                       "there is no step " + std::to_string(firstStep + 1) + " to start from: the run has " +
+                           std::to_string(m_steps.size()) + " steps",
+                       "print run"};
   m_started = m_options.steadyNow();
-  m_step = 0;
+  m_step = firstStep;
   beginMove();
   return core::Done{};
 }

@@ -129,6 +129,32 @@ TEST_F(PrintRunTest, RunsEachStepMoveSettlePrintInOrderAndCompletes) {
   EXPECT_DOUBLE_EQ(device.moves[2].rotaryDegrees, -45.0);
 }
 
+TEST_F(PrintRunTest, StartedFromAStepMovesToThatStepFirstAndPrintsOnlyFromThere) {
+  PrintRun run(device, threeSteps(), options());
+  std::vector<std::size_t> printed;
+  run.setPrintRequestCallback([&](std::size_t step, const PrintStep&) { printed.push_back(step); });
+  ASSERT_TRUE(run.start(1).ok());
+  EXPECT_EQ(run.currentStep(), 1u);
+  ASSERT_EQ(device.moves.size(), 1u);
+  EXPECT_DOUBLE_EQ(device.moves[0].rotaryDegrees, 30.0);
+  for (std::size_t i = 1; i < 3; ++i) {
+    settle(run);
+    ASSERT_EQ(run.state(), PrintRunState::Printing);
+    ASSERT_TRUE(run.regionDone(i).ok());
+  }
+  EXPECT_EQ(run.state(), PrintRunState::Completed);
+  EXPECT_EQ(printed, (std::vector<std::size_t>{1, 2}));
+}
+
+TEST_F(PrintRunTest, StartFromAStepPastTheLastIsRefusedAndNothingMoves) {
+  PrintRun run(device, threeSteps(), options());
+  const core::Status started = run.start(3);
+  ASSERT_FALSE(started.ok());
+  EXPECT_NE(started.error().message.find("no step 4"), std::string::npos) << started.error().message;
+  EXPECT_EQ(run.state(), PrintRunState::Idle);
+  EXPECT_TRUE(device.moves.empty());
+}
+
 TEST_F(PrintRunTest, PrintingWaitsUntilTheTargetWasHeldForTheSettleTime) {
   PrintRun run(device, threeSteps(), options());
   ASSERT_TRUE(run.start().ok());

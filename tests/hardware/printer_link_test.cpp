@@ -248,5 +248,20 @@ TEST_P(PrinterLinkTest, EmergencyStopWaitsForTheLinkIsResentAndRefusesStartsUnti
   EXPECT_TRUE(link->clearStop().ok());
 }
 
+TEST_P(PrinterLinkTest, RestartFirmwareAfterAnEmergencyStopBringsTheShutDownPrinterBackToReady) {
+  auto link = connected();
+  ASSERT_TRUE(outcome(link->emergencyStop()).ok());
+  ASSERT_EQ(sim->state().firmwareState, "shutdown");
+  ASSERT_TRUE(eventually([&] { return link->status().firmwareState != "ready"; }));
+
+  const core::Status restarted = outcome(link->restartFirmware());
+  ASSERT_TRUE(restarted.ok()) << messageOf(restarted);
+  EXPECT_EQ(sim->state().firmwareState, "ready");
+  EXPECT_TRUE(eventually([&] { return link->status().firmwareState == "ready"; })) << link->status().firmwareState;
+  // The latch still holds starts until the operator clears it.
+  EXPECT_TRUE(link->status().stop.latched());
+  EXPECT_TRUE(link->clearStop().ok());
+}
+
 }  // namespace
 }  // namespace multidir::hardware

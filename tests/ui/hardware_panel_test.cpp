@@ -2,6 +2,7 @@
 // operator would, outcomes read from the panel's labels and the simulator's own state.
 #include <gtest/gtest.h>
 
+#include <QMessageBox>
 #include <QSignalSpy>
 
 #include "ui/hardware_panel_fixture.h"
@@ -99,6 +100,70 @@ TEST_F(HardwarePanelTest, TwoRegionPlanRunsToTheEndWithRegionDonePressed) {
   EXPECT_EQ(regions.at(0).at(0).toInt(), 0);
   EXPECT_EQ(regions.at(regions.count() - 2).at(0).toInt(), 1);
   EXPECT_EQ(regions.last().at(0).toInt(), -1);
+}
+
+TEST_F(HardwarePanelTest, StartRunAfterAnAbortOffersToResumeFromTheFirstStepNotDoneOnceThePlatformIsClear) {
+  givePlan(planWithAngles({0.0, 10.0, 20.0}));
+  connectPanel();
+  enableAndHome();
+  press("startRunButton");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.promptText().contains(QStringLiteral("region-01.stl")); }, kWaitMs))
+      << panel.messageText().toStdString();
+  press("regionDoneButton");
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.promptText().contains(QStringLiteral("region-02.stl")); }, kWaitMs))
+      << panel.messageText().toStdString();
+  press("abortButton");
+  ASSERT_EQ(panel.printRunDriver()->state(), hardware::PrintRunState::Aborted);
+
+  auto restartBox = [this] {
+    QMessageBox* box = nullptr;
+    (void)QTest::qWaitFor([&] {
+      box = panel.findChild<QMessageBox*>(QStringLiteral("restartRunBox"));
+      return box != nullptr && box->isVisible();
+    }, kWaitMs);
+    return box;
+  };
+  // Start run asks first; nothing moves until the operator answers.
+  press("startRunButton");
+  QMessageBox* box = restartBox();
+  ASSERT_NE(box, nullptr) << "Start run after an abort should ask where to go on from";
+  EXPECT_TRUE(box->text().contains(QStringLiteral("step 2 of 3"))) << box->text().toStdString();
+  EXPECT_TRUE(box->informativeText().contains(QStringLiteral("clear"))) << box->informativeText().toStdString();
+  EXPECT_EQ(panel.printRunDriver()->state(), hardware::PrintRunState::Aborted);
+  box->button(QMessageBox::Cancel)->click();
+  QTest::qWait(50);
+  EXPECT_EQ(panel.printRunDriver()->state(), hardware::PrintRunState::Aborted);
+
+  press("startRunButton");
+  box = restartBox();
+  ASSERT_NE(box, nullptr);
+  auto* resume = box->findChild<QPushButton*>(QStringLiteral("resumeFromStepButton"));
+  ASSERT_NE(resume, nullptr);
+  EXPECT_TRUE(resume->text().contains(QStringLiteral("Step 2"))) << resume->text().toStdString();
+  resume->click();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.promptText().contains(QStringLiteral("region-02.stl")); }, kWaitMs))
+      << panel.messageText().toStdString();
+  EXPECT_EQ(panel.printRunDriver()->currentStep(), 1u);
+  EXPECT_NEAR(sim.rotaryState().angleDegrees, 10.0, 1e-9);
+  EXPECT_TRUE(label("runStepText").startsWith(QStringLiteral("2 of 3"))) << label("runStepText").toStdString();
+}
+
+TEST_F(HardwarePanelTest, StartRunRefusalIsSaidRightUnderTheButton) {
+  givePlan(planWithAngles({0.0, 70.0}));  // beyond the profile's 60 degrees
+  connectPanel();
+  enableAndHome();
+  press("startRunButton");
+  auto* refusal = panel.findChild<QLabel*>(QStringLiteral("startRunRefusal"));
+  ASSERT_NE(refusal, nullptr);
+  ASSERT_TRUE(refusal->isVisible()) << panel.messageText().toStdString();
+  EXPECT_TRUE(refusal->text().startsWith(QStringLiteral("Start run refused"))) << refusal->text().toStdString();
+  // Where the operator looks: just below the button, not the panel's message line far above it.
+  QPushButton* start = buttonNamed("startRunButton");
+  const QRect button(start->mapTo(&panel, QPoint(0, 0)), start->size());
+  const QRect said(refusal->mapTo(&panel, QPoint(0, 0)), refusal->size());
+  EXPECT_GE(said.top(), button.bottom());
+  EXPECT_LE(said.top() - button.bottom(), 24) << "button bottom " << button.bottom() << ", refusal top " << said.top();
+  EXPECT_FALSE(panel.printRunDriver()->isActive());
 }
 
 TEST_F(HardwarePanelTest, RobotArmTiltsThePlatformToTheOrientationAsked) {

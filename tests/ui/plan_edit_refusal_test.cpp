@@ -46,6 +46,20 @@ TEST(PlanEditRefusal, APlaneAboveWhatIsLeftCutsNothing) {
   EXPECT_EQ(refusalText(error, 2), QStringLiteral("Plane 1 would cut nothing off: move it into the part it cuts."));
 }
 
+TEST(PlanEditRefusal, AnEditThatMakesAnotherPlaneFailNamesThePlaneEditedAndThePlaneRefused) {
+  // The user moved plane 2 (printing order; core's first cut) so that plane 1, cut after it, cuts nothing.
+  const core::Error error = refusalOf(tBar(), narrowPlatform(),
+                                      {core::Plane{core::Vec3::UnitX(), 5.0}, core::Plane{core::Vec3::UnitX(), 100.0}});
+  ASSERT_EQ(refusedPlaneNumber(error), 2);
+  EXPECT_EQ(refusalText(error, 2, 0),
+            QStringLiteral("Plane 2 was not changed: with it there, plane 1 is refused. Plane 1 would cut nothing "
+                           "off: move it into the part it cuts."));
+  // The plane edited is the one refused: named once.
+  EXPECT_EQ(refusalText(error, 2, 1), QStringLiteral("Plane 1 would cut nothing off: move it into the part it cuts."));
+  // A deletion names no edited plane.
+  EXPECT_EQ(refusalText(error, 2, -1), refusalText(error, 2));
+}
+
 TEST(PlanEditRefusal, ADirectionTheMachineCannotPrintAlongIsNamed) {
   core::MachineSpec rotary;
   rotary.kind = core::MachineKind::RotaryPlatform;

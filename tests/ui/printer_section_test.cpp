@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QToolBar>
@@ -120,6 +122,21 @@ TEST_F(PrinterSectionTest, WhilePrintingTheProgressAndTheJobsTimeLeftFollowTheEs
   press("abortButton");
 }
 
+TEST_F(PrinterSectionTest, TheJobsTimeLeftIsUnknownWhileThePrinterLinkIsLost) {
+  startPrinter(20.0);
+  givePlanWithGcode(2);
+  ASSERT_NO_FATAL_FAILURE(runUntilPrinting());
+  ASSERT_TRUE(label("printerEtaValue").contains(QStringLiteral("of printing"))) << label("printerEtaValue").toStdString();
+  printer->dropLink();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.printerLink()->staleSince().has_value(); }, kWaitMs));
+  QTest::qWait(200);  // a few redraws while lost
+  EXPECT_TRUE(label("printerEtaValue").startsWith(QStringLiteral("unknown since "))) << label("printerEtaValue").toStdString();
+  EXPECT_FALSE(label("printerEtaValue").contains(QStringLiteral("of printing")));
+  printer->restoreLink();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return !panel.printerLink()->staleSince(); }, kWaitMs));
+  press("abortButton");
+}
+
 TEST_F(PrinterSectionTest, ThermalRunawayShowsThePrintersMessageAndTheRunPaused) {
   startPrinter(20.0);
   givePlanWithGcode(2);
@@ -228,6 +245,46 @@ TEST_F(PrinterSectionTest, EmergencyStopWithoutARunStillStopsBothDevices) {
   EXPECT_TRUE(buttonNamed("printerClearStopButton")->isEnabled());
   press("printerClearStopButton");
   EXPECT_FALSE(panel.stopsText().contains(QStringLiteral("Printer:"))) << panel.stopsText().toStdString();
+}
+
+TEST_F(PrinterSectionTest, AfterAnEmergencyStopRestartFirmwareAsksFirstThenTheKlipperPrinterIsReadyAndTheRestartTextGoes) {
+  startPrinter(1.0);
+  connectPanel();
+  connectPrinter();
+  EXPECT_FALSE(buttonNamed("printerRestartFirmwareButton")->isEnabled());  // ready: nothing to restart
+  press("estopButton");
+  ASSERT_TRUE(QTest::qWaitFor(
+      [&] { return panel.stopsText().contains(QStringLiteral("Printer: emergency stop confirmed")); }, kWaitMs))
+      << panel.stopsText().toStdString();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return label("printerFirmwareValue") == QStringLiteral("shutdown"); }, kWaitMs))
+      << label("printerFirmwareValue").toStdString();
+  press("printerClearStopButton");
+  EXPECT_TRUE(panel.printerSection()->messageText().contains(QStringLiteral("FIRMWARE_RESTART")))
+      << panel.printerSection()->messageText().toStdString();
+
+  // Asked first: nothing reaches the printer before the operator confirms.
+  press("printerRestartFirmwareButton");
+  QMessageBox* box = nullptr;
+  ASSERT_TRUE(QTest::qWaitFor(
+      [&] {
+        box = panel.findChild<QMessageBox*>(QStringLiteral("restartFirmwareBox"));
+        return box != nullptr && box->isVisible();
+      },
+      kWaitMs));
+  QTest::qWait(100);
+  EXPECT_EQ(printer->state().firmwareState, "shutdown");
+  auto* confirm = box->findChild<QPushButton*>(QStringLiteral("restartFirmwareConfirm"));
+  ASSERT_NE(confirm, nullptr);
+  confirm->click();
+
+  ASSERT_TRUE(QTest::qWaitFor([&] { return printer->state().firmwareState == "ready"; }, kWaitMs));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return label("printerFirmwareValue") == QStringLiteral("ready"); }, kWaitMs));
+  const QString message = panel.printerSection()->messageText();
+  EXPECT_FALSE(message.contains(QStringLiteral("FIRMWARE_RESTART"))) << message.toStdString();
+  EXPECT_FALSE(message.contains(QStringLiteral("restart"), Qt::CaseInsensitive)) << message.toStdString();
+  EXPECT_FALSE(panel.printerSection()->bannerText().contains(QStringLiteral("firmware")))
+      << panel.printerSection()->bannerText().toStdString();
+  EXPECT_FALSE(buttonNamed("printerRestartFirmwareButton")->isEnabled());
 }
 
 TEST_F(PrinterSectionTest, AnEmergencyStopThePrinterCannotHearIsShownAsBeingResentUntilItArrives) {

@@ -9,6 +9,7 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLocale>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
 #include <QStatusBar>
@@ -25,6 +26,7 @@
 #include "ui/panels/plan_panel.h"
 #include "ui/panels/plane_edit_panel.h"
 #include "ui/panels/search_panel.h"
+#include "ui/project/project_session.h"
 #include "ui/studio_test_support.h"
 #include "ui/viewer/mesh_viewer_widget.h"
 
@@ -446,18 +448,85 @@ TEST(StudioPlanEdit, SelectingAPlaneHighlightsItsDiscInTheView) {
   EXPECT_FALSE(window.viewer()->selectedPlaneShown());
 }
 
-TEST(StudioPlanEdit, ANewSearchClearsTheUndoStack) {
+TEST(StudioPlanEdit, ANewSearchIsOneUndoStepAndUndoBringsTheEditedPlanBack) {
+  MainWindow window;
+  showSearchedSnowman(window);
+  const std::shared_ptr<const core::Decomposition> searched = shownPlan(window);
+  PlanEditor& editor = *window.planEditor();
+  editor.movePlane(0, searched->clippingPlanes[0].offset + 2.0);
+  ASSERT_TRUE(settle(editor));
+  const std::shared_ptr<const core::Decomposition> edited = shownPlan(window);
+  ASSERT_NE(edited, searched);
+  ASSERT_EQ(window.undoStack()->count(), 1);
+
+  ASSERT_TRUE(test::runQuickSearch(window).plan);
+  ASSERT_TRUE(settle(editor));
+  expectSamePlanes(shownPlan(window)->clippingPlanes, searched->clippingPlanes);  // the same search again
+  EXPECT_EQ(window.undoStack()->count(), 2);
+  ASSERT_TRUE(action(window, "undo")->isEnabled());
+  EXPECT_EQ(action(window, "undo")->text(), QStringLiteral("&Undo New search"));
+
+  action(window, "undo")->trigger();
+  ASSERT_TRUE(settle(editor));
+  EXPECT_EQ(shownPlan(window), edited) << "Undo should show the edited plan the search replaced";
+  EXPECT_EQ(editor.plan(), edited);
+  EXPECT_TRUE(editor.isEdited());
+  EXPECT_TRUE(window.viewer()->hasPlan());
+
+  // The edit under it is still there to undo, back to the first search's plan.
+  action(window, "undo")->trigger();
+  ASSERT_TRUE(settle(editor));
+  expectSamePlanes(shownPlan(window)->clippingPlanes, searched->clippingPlanes);
+  EXPECT_NEAR(shownPlan(window)->jgAfterMm2, searched->jgAfterMm2, 1e-9);
+}
+
+TEST(StudioPlanEdit, SearchRunOverAnEditedUnsavedPlanAsksFirst) {
   MainWindow window;
   showSearchedSnowman(window);
   PlanEditor& editor = *window.planEditor();
   editor.movePlane(0, shownPlan(window)->clippingPlanes[0].offset + 2.0);
   ASSERT_TRUE(settle(editor));
-  ASSERT_EQ(window.undoStack()->count(), 1);
+  const std::shared_ptr<const core::Decomposition> edited = shownPlan(window);
+  ASSERT_TRUE(window.projectSession()->isModified());
 
-  ASSERT_TRUE(test::runQuickSearch(window).plan);
-  EXPECT_EQ(window.undoStack()->count(), 0);
-  EXPECT_FALSE(action(window, "undo")->isEnabled());
-  EXPECT_EQ(editor.plan(), shownPlan(window));
+  action(window, "runSearch")->trigger();
+  QMessageBox* box = test::waitForMessageBox(window, QStringLiteral("replaceEditedPlanBox"));
+  ASSERT_NE(box, nullptr) << "Search > Run over an edited plan that is not saved should ask first";
+  EXPECT_FALSE(window.isSearching());
+  box->button(QMessageBox::Cancel)->click();
+  QTest::qWait(50);
+  EXPECT_FALSE(window.isSearching());
+  EXPECT_EQ(shownPlan(window), edited);
+
+  QSignalSpy finished(&window, &MainWindow::searchFinished);
+  action(window, "runSearch")->trigger();
+  box = test::waitForMessageBox(window, QStringLiteral("replaceEditedPlanBox"));
+  ASSERT_NE(box, nullptr);
+  box->findChild<QPushButton*>(QStringLiteral("searchAnyway"))->click();
+  ASSERT_TRUE(test::waitUntil([&window] { return window.isSearching() || !window.searchPanel()->noticeText().isEmpty(); }));
+  ASSERT_TRUE(finished.wait(test::kSearchTimeoutMs));
+  ASSERT_TRUE(settle(editor));
+  EXPECT_NE(shownPlan(window), edited);
+}
+
+TEST(StudioPlanEdit, ACancelledSearchWorseThanThePlanShownKeepsThePlanShownAndSaysSo) {
+  MainWindow window;
+  showSearchedSnowman(window);
+  const std::shared_ptr<const core::Decomposition> kept = shownPlan(window);
+  window.searchPanel()->setSearchOptions(test::longSearchOptions());
+  QSignalSpy finished(&window, &MainWindow::searchFinished);
+  ASSERT_TRUE(window.runSearch());
+  window.cancelSearch();  // at once: its best plan so far is far from the finished search's
+  ASSERT_TRUE(finished.wait(test::kSearchTimeoutMs));
+  const SearchRun cancelled = finished.front().front().value<SearchRun>();
+  ASSERT_TRUE(cancelled.plan && cancelled.plan->cancelled);
+  ASSERT_GT(cancelled.plan->jgAfterMm2, kept->jgAfterMm2) << "the cancelled search should have found less";
+
+  EXPECT_EQ(shownPlan(window), kept);
+  EXPECT_EQ(window.planEditor()->plan(), kept);
+  EXPECT_TRUE(window.searchPanel()->noticeText().contains(QStringLiteral("which is kept")))
+      << window.searchPanel()->noticeText().toStdString();
+  EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("which is kept")));
 }
 
 TEST(StudioPlanEdit, ANewModelEndsEditing) {

@@ -9,6 +9,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -345,6 +346,11 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   m_startRun = button(group, QStringLiteral("startRunButton"), tr("Start run"),
                       tr("Turns the platform to each region's orientation in printing order and asks for each "
                          "region to be printed."));
+  // Why Start run was refused, right under the button the operator just pressed (the panel's message line is
+  // far above it, often out of view).
+  m_startRunRefusal = valueLabel(group, QStringLiteral("startRunRefusal"));
+  m_startRunRefusal->setStyleSheet(QStringLiteral("color: #c62828;"));
+  m_startRunRefusal->hide();
   m_runStep = valueLabel(group, QStringLiteral("runStepText"));
   m_runElapsed = valueLabel(group, QStringLiteral("runElapsedText"));
   m_prompt = valueLabel(group, QStringLiteral("runPrompt"));
@@ -378,6 +384,7 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   auto* layout = new QVBoxLayout(group);
   layout->addWidget(m_planSummary);
   layout->addWidget(m_startRun);
+  layout->addWidget(m_startRunRefusal);
   layout->addLayout(form);
   layout->addWidget(m_prompt);
   layout->addLayout(buttons);
@@ -603,6 +610,11 @@ void HardwarePanel::onRunStateChanged(hardware::PrintRunState state) {
   else if (m_messageTopic == MessageTopic::Run)
     m_message->clear();  // the run went on: the previous run's outcome or stop no longer applies
   if (m_run->isActive()) m_clockTimer.start();
+  // An aborted run can be resumed from the first step it did not finish, while the job is the same one.
+  if (state == hardware::PrintRunState::Aborted)
+    m_aborted = AbortedRun{m_document->sessionJob().plan, m_run->currentStep(), m_run->stepCount()};
+  else if (state == hardware::PrintRunState::Completed)
+    m_aborted.reset();
   // The run is over (finished, aborted): the session's job follows the plan shown again.
   if (!m_run->isActive()) m_document->unpinSessionJob();
   updateRunTexts();
@@ -641,9 +653,79 @@ void HardwarePanel::goTo() {
     m_link->moveToOrientation(m_targetTilt->value(), m_targetAzimuth->value());
 }
 
+bool HardwarePanel::isRunUnderWay() const { return m_run->isActive(); }
+
+QString HardwarePanel::runStepText() const { return m_runStep->text(); }
+
+void HardwarePanel::stopDevicesForQuit() {
+  if (m_run->isActive()) runEvent(tr("Abort"), m_run->abort());
+  if (m_link->isOpen()) m_link->stop();
+}
+
+std::optional<std::size_t> HardwarePanel::resumableStep() const {
+  if (!m_aborted || !m_aborted->plan || m_aborted->plan != m_document->sessionJob().plan) return std::nullopt;
+  return m_aborted->firstStepNotDone;
+}
+
 void HardwarePanel::startRun() {
+  const std::optional<std::size_t> resumable = resumableStep();
+  if (!resumable || !m_link->isOpen()) {
+    startRunFrom(0);
+    return;
+  }
+  // After an abort the platform may hold a half-printed region or whatever stopped the run: the operator
+  // confirms it is clear before anything moves, and chooses where to go on from.
+  const auto step = static_cast<int>(*resumable) + 1;
+  auto* box = new QMessageBox(QMessageBox::Question, tr("Start Run"),
+                              tr("The last run of this plan was aborted at step %1 of %2.")
+                                  .arg(step)
+                                  .arg(static_cast<int>(m_aborted->stepCount)),
+                              QMessageBox::NoButton, this);
+  box->setObjectName(QStringLiteral("restartRunBox"));
+  box->setInformativeText(
+      step > 1 ? tr("Steps 1 to %1 were printed. Before the platform moves, make sure it is clear: take off what "
+                    "step %2 left half printed and anything in the platform's way.")
+                     .arg(step - 1)
+                     .arg(step)
+               : tr("Before the platform moves, make sure it is clear: take off what step 1 left half printed and "
+                    "anything in the platform's way."));
+  QPushButton* resume = nullptr;
+  if (step > 1) {
+    resume = box->addButton(tr("Platform Clear: &Resume from Step %1").arg(step), QMessageBox::AcceptRole);
+    resume->setObjectName(QStringLiteral("resumeFromStepButton"));
+  }
+  QPushButton* restart = box->addButton(tr("Platform Clear: &Start from Step 1"), QMessageBox::AcceptRole);
+  restart->setObjectName(QStringLiteral("startFromFirstStepButton"));
+  box->addButton(QMessageBox::Cancel);
+  box->setDefaultButton(QMessageBox::Cancel);
+  box->setWindowModality(Qt::WindowModal);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::finished, this, [this, box, resume, restart, first = *resumable] {
+    const QAbstractButton* clicked = box->clickedButton();
+    if (clicked == nullptr || (clicked != resume && clicked != restart)) return;
+    const std::size_t from = clicked == resume ? first : 0;
+    QTimer::singleShot(0, this, [this, from] {
+      // The job may have changed while the question was open: a resume is only for the job it was asked of.
+      if (from > 0 && resumableStep() != from) {
+        refuseStart(tr("Start run refused: the plan changed since the question was asked; press Start run again."));
+        return;
+      }
+      startRunFrom(from);
+    });
+  });
+  box->open();
+}
+
+void HardwarePanel::refuseStart(const QString& text) {
+  setMessage(text, true);
+  m_startRunRefusal->setText(text);
+  m_startRunRefusal->show();
+}
+
+void HardwarePanel::startRunFrom(std::size_t firstStep) {
+  m_startRunRefusal->hide();
   if (!m_link->isOpen()) {
-    setMessage(tr("Start run refused: not connected; connect to the device first."), true);
+    refuseStart(tr("Start run refused: not connected; connect to the device first."));
     return;
   }
   // The limits the driver enforces are those it was connected with; the job is the document's, pinned there
@@ -651,14 +733,14 @@ void HardwarePanel::startRun() {
   const DeviceLinkSettings& settings = m_link->settings();
   const core::Result<PrintJob> pinned = m_document->pinSessionJob();
   if (!pinned) {
-    setMessage(tr("Start run refused: %1").arg(QString::fromStdString(pinned.error().message)), true);
+    refuseStart(tr("Start run refused: %1").arg(QString::fromStdString(pinned.error().message)));
     return;
   }
   const PrintJob& job = pinned.value();
   auto steps = printSteps(regionTargets(*job.plan), settings.kind, settings.machine);
   if (!steps) {
     m_document->unpinSessionJob();
-    setMessage(tr("Start run refused: %1").arg(QString::fromStdString(steps.error().message)), true);
+    refuseStart(tr("Start run refused: %1").arg(QString::fromStdString(steps.error().message)));
     return;
   }
   // The printer prints the regions when it is connected and the sliced job has G-code for every region.
@@ -678,8 +760,9 @@ void HardwarePanel::startRun() {
   m_printerSection->setRunEstimates(estimates);
   m_runFiles = gcodeFits ? job.files : nullptr;
   const core::Status started = m_run->start(m_link->positioner(), std::move(steps.value()), m_runOptions,
-                                            gcodeFits ? printer : nullptr);
+                                            gcodeFits ? printer : nullptr, firstStep);
   if (!started.ok() || !m_run->isActive()) m_document->unpinSessionJob();
+  if (!started.ok()) refuseStart(tr("Start run refused: %1").arg(QString::fromStdString(started.error().message)));
   runEvent(tr("Start run"), started);
   if (started.ok() && printer && !gcodeFits)
     setMessage(job.steps.empty()

@@ -97,6 +97,16 @@ class HardwarePanel : public QWidget {
   [[nodiscard]] QString stopsText() const;
   // The banner above the panel (link lost, device not reachable, run held); empty when hidden.
   [[nodiscard]] QString bannerText() const;
+  // A print run is under way: started and neither finished nor aborted (paused and faulted runs too).
+  [[nodiscard]] bool isRunUnderWay() const;
+  // Where the run is, as the Step line says it ("2 of 3: paused (region-02.stl, ...)").
+  [[nodiscard]] QString runStepText() const;
+  // Before the studio quits during a run: the run is aborted through its own stop path (the platform's stop
+  // latched, the printer's job cancelled and its heaters off) and the platform is sent Stop as well.
+  void stopDevicesForQuit();
+  // The step (0-based) a run of the session's job would resume from: the first one the last run of this same
+  // job did not finish before it was aborted; nullopt when the last run of it was not aborted.
+  [[nodiscard]] std::optional<std::size_t> resumableStep() const;
   // Adds an E-STOP button to `bar` that is shown while a device is connected; returns its action.
   QAction* addEmergencyStopTo(QToolBar* bar);
 
@@ -129,7 +139,12 @@ class HardwarePanel : public QWidget {
   void onPrintRequested(int region, const QString& regionFile);
   void jog(double direction);
   void goTo();
+  // Start run: after an aborted run of the same job, asks first (resume from the first step not done, or
+  // start again, either once the operator confirmed the platform is clear: "restartRunBox").
   void startRun();
+  void startRunFrom(std::size_t firstStep);
+  // Says why Start run was refused, in the message line and under the button.
+  void refuseStart(const QString& text);
   void runEvent(const QString& event, const core::Status& status);
   void setMessage(const QString& text, bool error, MessageTopic topic = MessageTopic::General);
   void updateBanner();
@@ -191,6 +206,7 @@ class HardwarePanel : public QWidget {
 
   QLabel* m_planSummary = nullptr;
   QPushButton* m_startRun = nullptr;
+  QLabel* m_startRunRefusal = nullptr;
   QLabel* m_runStep = nullptr;
   QLabel* m_runElapsed = nullptr;
   QLabel* m_prompt = nullptr;
@@ -205,6 +221,13 @@ class HardwarePanel : public QWidget {
   std::optional<core::MachineKind> m_followedKind;
   bool m_linkUsesProfile = false;  // the open link's limits are the profile's (not defaults)
   hardware::PrintRunOptions m_runOptions;
+  // The last run that was aborted: its job's plan and the first step it did not finish.
+  struct AbortedRun {
+    std::shared_ptr<const core::Decomposition> plan;
+    std::size_t firstStepNotDone = 0;
+    std::size_t stepCount = 0;
+  };
+  std::optional<AbortedRun> m_aborted;
 };
 
 }  // namespace multidir::ui

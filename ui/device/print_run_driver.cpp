@@ -40,7 +40,7 @@ PrintRunDriver::~PrintRunDriver() {
 
 core::Status PrintRunDriver::start(std::shared_ptr<hardware::Positioner> positioner,
                                    std::vector<hardware::PrintStep> steps, hardware::PrintRunOptions options,
-                                   std::shared_ptr<hardware::PrinterLink> printer) {
+                                   std::shared_ptr<hardware::PrinterLink> printer, std::size_t firstStep) {
   if (isActive())
     return core::Error{core::ErrorCode::InvalidParameter, "a print run is under way: abort it first", "print run"};
   if (!positioner) return core::Error{core::ErrorCode::InvalidParameter, "no device is connected", "print run"};
@@ -67,7 +67,7 @@ core::Status PrintRunDriver::start(std::shared_ptr<hardware::Positioner> positio
   m_heldForLostLink = false;
   m_clock.start();
   emit runStarting(m_run->steps());
-  const core::Status started = m_run->start();
+  const core::Status started = m_run->start(firstStep);
   afterEvent();
   return started;
 }

@@ -36,10 +36,12 @@ class PrintRunDriver : public QObject {
   PrintRunDriver& operator=(const PrintRunDriver&) = delete;
 
   // Starts a new run of `steps` on `positioner`, printing the steps with G-code on `printer` when given (a
-  // finished run is replaced). InvalidParameter when a run is still under way, there is no positioner or no
+  // finished run is replaced), from step `firstStep` (0-based: the steps before it were printed by a run that
+  // was aborted). InvalidParameter when a run is still under way, there is no positioner or no
   // step; the sequencer's own refusal otherwise.
   core::Status start(std::shared_ptr<hardware::Positioner> positioner, std::vector<hardware::PrintStep> steps,
-                     hardware::PrintRunOptions options = {}, std::shared_ptr<hardware::PrinterLink> printer = nullptr);
+                     hardware::PrintRunOptions options = {}, std::shared_ptr<hardware::PrinterLink> printer = nullptr,
+                     std::size_t firstStep = 0);
   // Operator events, forwarded to the sequencer (see the transition table in hardware/print_run.h).
   core::Status regionDone();  // for the current step
   core::Status pause();

@@ -111,6 +111,7 @@ void PrinterLinkOwner::disconnectPrinter() {
   m_hasRead = false;
   m_staleSince.reset();
   m_stop = {};
+  m_restart = {};
   emit openChanged(false);
   emit statusChanged();
 }
@@ -131,6 +132,15 @@ core::Status PrinterLinkOwner::clearStop() {
   const core::Status cleared = m_link->clearStop();
   readStatus();
   return cleared;
+}
+
+void PrinterLinkOwner::restartFirmware() {
+  if (!m_link) {
+    emit commandFailed(tr("Restart firmware"), tr("Restart firmware refused: no printer is connected."));
+    return;
+  }
+  m_restart = m_link->restartFirmware();
+  readStatus();
 }
 
 QString PrinterLinkOwner::printerName() const {
@@ -154,6 +164,15 @@ void PrinterLinkOwner::readStatus() {
       sent = core::Error{core::ErrorCode::Cancelled, e.what(), "printer"};
     }
     if (!sent.ok()) emit commandFailed(tr("Printer E-STOP"), QString::fromStdString(sent.error().describe()));
+  }
+  if (m_restart.valid() && m_restart.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    core::Status restarted = core::Done{};
+    try {
+      restarted = m_restart.get();
+    } catch (const std::exception& e) {  // a broken promise: the link went away
+      restarted = core::Error{core::ErrorCode::Cancelled, e.what(), "printer"};
+    }
+    emit firmwareRestartFinished(restarted.ok() ? QString() : QString::fromStdString(restarted.error().describe()));
   }
   emit statusChanged();
 }

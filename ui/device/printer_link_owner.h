@@ -53,6 +53,10 @@ class PrinterLinkOwner : public QObject {
   void emergencyStop();
   // The operator allows jobs again after an emergency stop; the link's refusal (not confirmed yet) otherwise.
   core::Status clearStop();
+  // Restarts the printer's firmware after an emergency stop shut it down (PrinterLink::restartFirmware: Klipper's
+  // FIRMWARE_RESTART, OctoPrint's reconnect); firmwareRestartFinished() tells how it ended. Refused
+  // (commandFailed) without a link.
+  void restartFirmware();
 
   [[nodiscard]] bool isOpen() const { return m_link != nullptr; }
   [[nodiscard]] std::shared_ptr<hardware::PrinterLink> link() const { return m_link; }
@@ -72,6 +76,8 @@ class PrinterLinkOwner : public QObject {
   void connectFinished(bool connected, const QString& problem);
   // A command ended badly: `command` is its translated name, `problem` what went wrong in the link's words.
   void commandFailed(const QString& command, const QString& problem);
+  // A firmware restart was answered: `problem` is empty when the printer took it, else the link's words.
+  void firmwareRestartFinished(const QString& problem);
   // A link was opened (connectPrinter) or closed (disconnectPrinter).
   void openChanged(bool open);
 
@@ -88,6 +94,7 @@ class PrinterLinkOwner : public QObject {
   bool m_hasRead = false;
   std::optional<QDateTime> m_staleSince;
   std::future<core::Status> m_stop;  // the latest emergency stop sent from here
+  std::future<core::Status> m_restart;  // the latest firmware restart asked for from here
   QTimer m_readTimer;
   std::vector<QThread*> m_threads;
   std::uint64_t m_generation = 0;

@@ -4,6 +4,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QLineEdit>
 #include <QLocale>
 #include <QPushButton>
@@ -87,8 +88,12 @@ PrinterSection::PrinterSection(PrinterLinkOwner* printer, const PrintRunDriver* 
   m_disconnect = button(this, QStringLiteral("printerDisconnectButton"), tr("Disconnect printer"),
                         tr("Closes the link without commanding the printer: a job on it goes on."));
   m_clearStop = button(this, QStringLiteral("printerClearStopButton"), tr("Clear printer E-STOP"),
-                       tr("Allows jobs again once the printer confirmed the emergency stop. A Klipper printer "
-                          "also needs FIRMWARE_RESTART on its console."));
+                       tr("Allows jobs again once the printer confirmed the emergency stop. A printer whose "
+                          "firmware the stop shut down also needs Restart firmware."));
+  m_restartFirmware =
+      button(this, QStringLiteral("printerRestartFirmwareButton"), tr("Restart firmware"),
+             tr("After an emergency stop: Klipper's FIRMWARE_RESTART (through Moonraker), or OctoPrint connecting "
+                "to the printer again (which resets its board). Asks first."));
   m_banner = valueLabel(this, QStringLiteral("printerBanner"));
   m_banner->hide();
   m_state = valueLabel(this, QStringLiteral("printerStateValue"));
@@ -125,12 +130,24 @@ PrinterSection::PrinterSection(PrinterLinkOwner* printer, const PrintRunDriver* 
   layout->addLayout(buttons);
   layout->addWidget(m_banner);
   layout->addLayout(values);
-  layout->addWidget(m_clearStop);
+  auto* stopButtons = new QHBoxLayout;
+  stopButtons->addWidget(m_clearStop);
+  stopButtons->addWidget(m_restartFirmware);
+  layout->addLayout(stopButtons);
   layout->addWidget(m_message);
 
   connect(m_connect, &QPushButton::clicked, this, &PrinterSection::connectPrinter);
   connect(m_disconnect, &QPushButton::clicked, this, &PrinterSection::disconnectPrinter);
   connect(m_clearStop, &QPushButton::clicked, this, &PrinterSection::clearStop);
+  connect(m_restartFirmware, &QPushButton::clicked, this, &PrinterSection::askToRestartFirmware);
+  connect(m_printer, &PrinterLinkOwner::firmwareRestartFinished, this, [this](const QString& problem) {
+    if (problem.isEmpty())
+      setMessage(tr("%1 is restarting its firmware; the Firmware line shows \"ready\" once it is back.")
+                     .arg(m_printer->printerName()),
+                 false, true);
+    else
+      setMessage(tr("Restart firmware refused: %1").arg(problem), true);
+  });
   connect(m_printer, &PrinterLinkOwner::statusChanged, this, &PrinterSection::refresh);
   connect(m_printer, &PrinterLinkOwner::connectFinished, this, [this](bool connected, const QString& problem) {
     if (connected)
@@ -182,13 +199,40 @@ void PrinterSection::disconnectPrinter() {
 
 void PrinterSection::clearStop() {
   const core::Status cleared = m_printer->clearStop();
-  if (cleared.ok())
-    setMessage(tr("Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job."), false);
+  if (cleared.ok() && firmwareReady(m_printer->status()))
+    setMessage(tr("Printer E-STOP cleared."), false);
+  else if (cleared.ok())
+    setMessage(tr("Printer E-STOP cleared. Its firmware is %1: it needs Restart firmware (Klipper's "
+                  "FIRMWARE_RESTART) before its next job.")
+                   .arg(QString::fromStdString(m_printer->status().firmwareState)),
+               false, true);
   else
     setMessage(tr("Clear printer E-STOP refused: %1").arg(QString::fromStdString(cleared.error().message)), true);
 }
 
-void PrinterSection::setMessage(const QString& text, bool error) {
+void PrinterSection::askToRestartFirmware() {
+  auto* box = new QMessageBox(QMessageBox::Warning, tr("Restart Printer Firmware"),
+                              tr("Restart the firmware of %1?").arg(m_printer->printerName()), QMessageBox::NoButton,
+                              this);
+  box->setObjectName(QStringLiteral("restartFirmwareBox"));
+  box->setInformativeText(tr("The firmware takes the heaters and motors back: make sure whatever caused the "
+                             "emergency stop is fixed and nothing is in the printer's way."));
+  QPushButton* restart = box->addButton(tr("&Restart Firmware"), QMessageBox::AcceptRole);
+  restart->setObjectName(QStringLiteral("restartFirmwareConfirm"));
+  box->addButton(QMessageBox::Cancel);
+  box->setDefaultButton(QMessageBox::Cancel);
+  box->setWindowModality(Qt::WindowModal);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::finished, this, [this, box, restart] {
+    if (box->clickedButton() != restart) return;
+    setMessage(tr("Restarting the firmware of %1…").arg(m_printer->printerName()), false, true);
+    m_printer->restartFirmware();
+  });
+  box->open();
+}
+
+void PrinterSection::setMessage(const QString& text, bool error, bool awaitsReady) {
+  m_messageAwaitsReady = awaitsReady;
   m_message->setText(text);
   m_message->setStyleSheet(error ? QString::fromLatin1(DeviceReading::kFaultStyle) : QString());
 }
@@ -259,7 +303,12 @@ void PrinterSection::refresh() {
     if (!firmwareReady(s) || s.state == hardware::PrinterJobState::Error)
       m_says->setStyleSheet(QString::fromLatin1(DeviceReading::kFaultStyle));
   }
-  m_eta->setText(etaText(stale ? 0.0 : stepProgress));
+  // With the link lost the printer's progress is not known: neither live nor the whole step's estimate.
+  if (open && stale && m_run->isActive())
+    m_eta->setText(tr("unknown since %1: the printer's link is lost").arg(DeviceReading::clockTime(*stale)));
+  else
+    m_eta->setText(etaText(stepProgress));
+  m_eta->setStyleSheet(open && stale && m_run->isActive() ? QString::fromLatin1(DeviceReading::kStaleStyle) : QString());
   m_problem->setText(!open || s.lastError.empty() ? tr("none") : QString::fromStdString(s.lastError));
   m_problem->setStyleSheet(open && !s.lastError.empty() ? QString::fromLatin1(DeviceReading::kFaultStyle) : QString());
 
@@ -268,6 +317,14 @@ void PrinterSection::refresh() {
   m_connect->setEnabled(!open);
   m_disconnect->setEnabled(open);
   m_clearStop->setEnabled(open && s.stop.latched());
+  const bool ready = read && !stale && firmwareReady(s);
+  m_restartFirmware->setEnabled(open && read && !stale && !firmwareReady(s));
+  // A message that the firmware must restart is taken back once it reports ready again.
+  if (m_messageAwaitsReady && ready) {
+    m_messageAwaitsReady = false;
+    m_message->setText(tr("%1's firmware is ready again.").arg(m_printer->printerName()));
+    m_message->setStyleSheet(QString());
+  }
   updateBanner();
 }
 

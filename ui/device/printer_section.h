@@ -1,7 +1,9 @@
 #pragma once
 // The Printer section of the Hardware panel: connect to the printer by its address (and API key), watch it
 // live (job, firmware and its message, extruder and bed temperatures, file, the current step's progress, the
-// whole job's time left from the slicer's estimates), and clear its emergency stop.
+// whole job's time left from the slicer's estimates), clear its emergency stop and, once the operator confirmed
+// it ("restartFirmwareBox"), restart the firmware an emergency stop shut down (Klipper's FIRMWARE_RESTART,
+// OctoPrint's reconnect; a Marlin printer is told to press its reset button).
 //
 // Truthfulness, as for the platform: no printer value is shown before the first good read; once the link is
 // lost every value is greyed and marked "unknown since HH:MM:SS" and a banner says so; the printer's
@@ -52,7 +54,9 @@ class PrinterSection : public QGroupBox {
 
  private:
   void clearStop();
-  void setMessage(const QString& text, bool error);
+  void askToRestartFirmware();
+  // `awaitsReady`: the message says the firmware must restart; refresh() takes it back once it is ready.
+  void setMessage(const QString& text, bool error, bool awaitsReady = false);
   void updateBanner();
   QString progressText(double* stepProgress) const;
   QString etaText(double stepProgress) const;
@@ -66,6 +70,8 @@ class PrinterSection : public QGroupBox {
   QPushButton* m_connect = nullptr;
   QPushButton* m_disconnect = nullptr;
   QPushButton* m_clearStop = nullptr;
+  QPushButton* m_restartFirmware = nullptr;
+  bool m_messageAwaitsReady = false;
   QLabel* m_banner = nullptr;
   QLabel* m_state = nullptr;
   QLabel* m_job = nullptr;

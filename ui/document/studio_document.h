@@ -9,7 +9,9 @@
 //    supports, its edit history and the sliced job;
 //  - another up direction clears the plan (its regions were cut for the old one) and so the sliced job;
 //  - a new plan (searched, opened, rebuilt) clears the edit history and the sliced job; an edited plan keeps
-//    the history (its edits are on it) and clears the sliced job; supports attached later clear it too;
+//    the history (its edits are on it) and clears the sliced job; supports attached later clear it too. A
+//    search's plan replacing a plan of the same model comes as an edit (the editor's "New search" step), so
+//    Undo brings back the plan it replaced;
 //  - a sliced job is accepted only for the plan shown;
 //  - the device session's job follows the plan and its sliced job, except while a print run pins it
 //    (pinSessionJob): then nothing replaces it until the run unpins it, whatever the model or plan become.

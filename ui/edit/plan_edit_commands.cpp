@@ -55,4 +55,11 @@ DeletePlaneCommand::DeletePlaneCommand(PlanEditTarget& target, PlanEditState bef
   setText(tr("Delete plane %1").arg(planeNumber(plane, static_cast<int>(m_before.planes.size()))));
 }
 
+ReplacePlanCommand::ReplacePlanCommand(PlanReplaceTarget& target, PlanBasis before, PlanBasis after)
+    : QUndoCommand(tr("New search")), m_target(target), m_before(std::move(before)), m_after(std::move(after)) {}
+
+void ReplacePlanCommand::undo() { m_target.applyPlanBasis(m_before); }
+
+void ReplacePlanCommand::redo() { m_target.applyPlanBasis(m_after); }
+
 }  // namespace multidir::ui

@@ -9,6 +9,7 @@
 #include <QCoreApplication>
 #include <QUndoCommand>
 
+#include "ui/document/search_run.h"
 #include "ui/edit/plan_edit_state.h"
 
 namespace multidir::ui {
@@ -83,6 +84,47 @@ class AddPlaneCommand : public PlanEditCommand {
 
  public:
   AddPlaneCommand(PlanEditTarget& target, PlanEditState before, PlanEditState after, int plane);
+};
+
+// What a plan's edits stand on: the plan shown (with the machine and settings it was made with), the edit state
+// that names it, and the plan its edits started from (a search's result), whose planes and J_G tell whether it
+// was edited and by how much.
+struct PlanBasis {
+  SearchRun run;  // run.plan: the plan shown; never null
+  PlanEditState state;
+  std::vector<core::Plane> startPlanes;
+  double startJgMm2 = 0.0;
+};
+
+// What a ReplacePlanCommand calls: shows `basis` and edits from there on.
+class PlanReplaceTarget {
+ public:
+  virtual ~PlanReplaceTarget() = default;
+  virtual void applyPlanBasis(const PlanBasis& basis) = 0;
+
+ protected:
+  PlanReplaceTarget() = default;
+  PlanReplaceTarget(const PlanReplaceTarget&) = default;
+  PlanReplaceTarget& operator=(const PlanReplaceTarget&) = default;
+};
+
+// A new search's plan replacing the plan shown (searched or edited): one undo step, so Undo brings back the
+// plan the search replaced, its edits' undo steps below it still in order.
+class ReplacePlanCommand : public QUndoCommand {
+  Q_DECLARE_TR_FUNCTIONS(ReplacePlanCommand)
+
+ public:
+  ReplacePlanCommand(PlanReplaceTarget& target, PlanBasis before, PlanBasis after);
+
+  void undo() override;
+  void redo() override;
+  [[nodiscard]] const PlanBasis& before() const { return m_before; }
+  [[nodiscard]] const PlanBasis& after() const { return m_after; }
+
+ private:
+  PlanReplaceTarget& m_target;
+  PlanBasis m_before;
+  PlanBasis m_after;
 };
 
 // Plane `plane` removed.

@@ -45,13 +45,50 @@ void PlanEditor::setPlan(std::shared_ptr<const core::TriangleMesh> model, const 
   m_machine = run.machine;
   if (m_machine.kind == core::MachineKind::RotaryPlatform) m_machine.rotationAxis = run.plan->rotationAxis;
   m_startJgMm2 = run.plan->jgAfterMm2;
+  m_startPlanes = run.plan->clippingPlanes;
   resetState();
+}
+
+void PlanEditor::replacePlan(const SearchRun& run) {
+  if (!run.plan) return;
+  if (!m_run) {
+    setPlan(m_model, run);
+    return;
+  }
+  PlanBasis before{*m_run, m_stackState, m_startPlanes, m_startJgMm2};
+  PlanBasis after{run, PlanEditState{run.plan->clippingPlanes, -1}, run.plan->clippingPlanes, run.plan->jgAfterMm2};
+  // Pushing runs redo(), which shows the new plan.
+  m_undoStack->push(new ReplacePlanCommand(*this, std::move(before), std::move(after)));
+}
+
+bool PlanEditor::isEdited() const { return m_run.has_value() && !samePlanes(m_stackState.planes, m_startPlanes); }
+
+void PlanEditor::applyPlanBasis(const PlanBasis& basis) {
+  if (!basis.run.plan) return;
+  m_job->discard();
+  m_awaited.reset();
+  // Plans of another basis were cut with other settings: none of them stands for this basis's planes.
+  m_cache.clear();
+  m_activeDrag = 0;
+  m_dragPivot.reset();
+  m_run = basis.run;
+  m_machine = basis.run.machine;
+  if (m_machine.kind == core::MachineKind::RotaryPlatform) m_machine.rotationAxis = basis.run.plan->rotationAxis;
+  m_startJgMm2 = basis.startJgMm2;
+  m_startPlanes = basis.startPlanes;
+  remember(basis.state.planes, EvaluatedPlan{basis.run.plan, basis.run.supports, basis.run.supportsNote});
+  m_shown = basis.state;
+  m_stackState = basis.state;
+  setDesired(basis.state);
+  setRefusal(QString(), QString());
+  emit planEvaluated(*m_run);
 }
 
 void PlanEditor::clear() {
   m_model.reset();
   m_run.reset();
   m_startJgMm2 = 0.0;
+  m_startPlanes.clear();
   resetState();
 }
 
@@ -214,7 +251,9 @@ void PlanEditor::onRefused(quint64 ticket, const core::Error& error) {
   if (!m_awaited || m_awaited->ticket != ticket) return;
   const Awaited awaited = std::move(*m_awaited);
   m_awaited.reset();
-  setRefusal(refusalText(error, static_cast<int>(awaited.state.planes.size())),
+  // A deletion leaves no edited plane in the list to name.
+  const bool namesPlane = awaited.edit && *awaited.edit != EditKind::Delete;
+  setRefusal(refusalText(error, static_cast<int>(awaited.state.planes.size()), namesPlane ? awaited.plane : -1),
              QString::fromStdString(error.describe()));
   if (!awaited.edit) {
     // A state undo or redo reached could not be rebuilt: keep showing (and offering) the plan shown.

@@ -13,7 +13,9 @@
 //  Undo and redo apply the command's state: from a small cache of recent plans at once (so undoing a recent
 //  step restores exactly the plan that was shown, the searched one included), else by evaluating it again.
 //
-// A new plan (setPlan: a search result, an opened plan) is a new start: the undo stack is cleared.
+// A new plan (setPlan: an opened plan, a search of another model) is a new start: the undo stack is cleared. A
+// new search's plan replacing the plan shown (replacePlan) is one undo step instead: Undo brings back the plan
+// it replaced, edited or not, and the edits before it stay on the stack.
 //
 // Thread: GUI thread only.
 #include <QObject>
@@ -33,7 +35,7 @@ class QUndoStack;
 
 namespace multidir::ui {
 
-class PlanEditor : public QObject, public PlanEditTarget {
+class PlanEditor : public QObject, public PlanEditTarget, public PlanReplaceTarget {
   Q_OBJECT
 
  public:
@@ -46,6 +48,9 @@ class PlanEditor : public QObject, public PlanEditTarget {
   // A new start: `run`'s plan, cut from `model`. A null model (a plan shown over its own regions) cannot be
   // edited. Clears the undo stack and drops evaluations under way.
   void setPlan(std::shared_ptr<const core::TriangleMesh> model, const SearchRun& run);
+  // A new search's `run`, of the model being edited, replaces the plan shown as one undo step ("New search");
+  // without a plan to edit it is a new start (setPlan with the model kept).
+  void replacePlan(const SearchRun& run);
   // No plan: nothing to edit; clears the undo stack.
   void clear();
   // Supports grown later for the plan shown (MainWindow regrows them for a plan opened or recovered without
@@ -62,6 +67,8 @@ class PlanEditor : public QObject, public PlanEditTarget {
   [[nodiscard]] const core::MachineSpec& machine() const { return m_machine; }
   // J_G of the plan at the start (the searched or opened one), mm².
   [[nodiscard]] double startJgMm2() const { return m_startJgMm2; }
+  // The plan shown is not the one editing started from: edits changed its planes.
+  [[nodiscard]] bool isEdited() const;
 
   // What the controls show: the planes last asked for and the selected plane.
   [[nodiscard]] const PlanEditState& state() const { return m_desired; }
@@ -89,6 +96,8 @@ class PlanEditor : public QObject, public PlanEditTarget {
 
   // PlanEditTarget: what the commands' undo() and redo() call.
   void applyEditState(const PlanEditState& state) override;
+  // PlanReplaceTarget: what a ReplacePlanCommand's undo() and redo() call.
+  void applyPlanBasis(const PlanBasis& basis) override;
 
  signals:
   // A plan to show: an edit evaluated, or undo/redo reached another state. run.plan is never null; the
@@ -130,6 +139,7 @@ class PlanEditor : public QObject, public PlanEditTarget {
   std::optional<SearchRun> m_run;  // run.plan: the plan shown
   core::MachineSpec m_machine;
   double m_startJgMm2 = 0.0;
+  std::vector<core::Plane> m_startPlanes;  // of the plan editing started from
   PlanEditState m_shown;       // the plan shown's state
   PlanEditState m_stackState;  // the state the undo stack's index stands for
   PlanEditState m_desired;     // the state last asked for

@@ -57,4 +57,16 @@ QString refusalText(const core::Error& error, int planeCount) {
   return PlanEditRefusal::tr("Plane %1 was refused: %2").arg(plane).arg(QString::fromStdString(error.message));
 }
 
+QString refusalText(const core::Error& error, int planeCount, int editedPlane) {
+  const QString text = refusalText(error, planeCount);
+  const int clippingNumber = refusedPlaneNumber(error);
+  if (editedPlane < 0 || editedPlane >= planeCount || clippingNumber <= 0 || clippingNumber > planeCount ||
+      clippingNumber - 1 == editedPlane || error.code != core::ErrorCode::InvalidParameter)
+    return text;
+  return PlanEditRefusal::tr("Plane %1 was not changed: with it there, plane %2 is refused. %3")
+      .arg(planeNumber(editedPlane, planeCount))
+      .arg(planeNumber(clippingNumber - 1, planeCount))
+      .arg(text);
+}
+
 }  // namespace multidir::ui

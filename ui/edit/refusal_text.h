@@ -15,5 +15,10 @@ namespace multidir::ui {
 // `planeCount` planes: the plane is named by its number in printing order (ui/edit/plane_numbering.h), as the
 // Edit plan table shows it.
 [[nodiscard]] QString refusalText(const core::Error& error, int planeCount);
+// The same for an edit of plane `editedPlane` (0-based, clipping order; -1: none, as for a deletion). Core
+// cuts the planes in clipping order, the reverse of the printing order the table numbers them in, so moving
+// plane 2 can make the cut of plane 1 fail: the sentence then names both ("Plane 2 was not changed: with it
+// there, plane 1 is refused. Plane 1 would cut nothing off: ..."), never only the plane the user did not touch.
+[[nodiscard]] QString refusalText(const core::Error& error, int planeCount, int editedPlane);
 
 }  // namespace multidir::ui

@@ -378,6 +378,8 @@ void SearchPanel::searchFinished(const core::Decomposition& plan) {
   showNotice(lines.join(QLatin1Char('\n')), warning);
 }
 
+void SearchPanel::noteKeptPlan(const QString& text) { showNotice(text, true); }
+
 void SearchPanel::searchFailed(const QString& headline, const QString& detail) {
   setRunning(false);
   m_tick->stop();

@@ -52,6 +52,8 @@ class SearchPanel : public QWidget {
   // The search ended with `plan` (complete or cancelled), or failed.
   void searchFinished(const core::Decomposition& plan);
   void searchFailed(const QString& headline, const QString& detail);
+  // After searchFinished: its plan was not shown, the plan shown was kept; the notice says `text` (why).
+  void noteKeptPlan(const QString& text);
   // The search was stopped and its result dropped (another model is being opened): nothing of it stays.
   void searchDropped();
   // A new model is shown: the read-out, chart and notice of the previous model's search are cleared.

@@ -75,6 +75,10 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
       tr("Extrusion that rests on nothing printed before it, as the audit finds it (multidir audit, check b): "
          "drawn in magenta in the G-code preview"));
   m_unsupported->hide();
+  m_slowerNote = new QLabel(this);
+  m_slowerNote->setObjectName(QStringLiteral("slowerThanFixedNote"));
+  m_slowerNote->setWordWrap(true);
+  m_slowerNote->hide();
 
   m_export = new QPushButton(tr("Export G-code..."), this);
   m_export->setObjectName(QStringLiteral("exportGcodeButton"));
@@ -120,6 +124,7 @@ SlicePanel::SlicePanel(QWidget* parent) : QWidget(parent) {
   inner->addWidget(m_stage);
   inner->addWidget(m_message);
   inner->addWidget(m_table, 1);
+  inner->addWidget(m_slowerNote);
   inner->addWidget(m_unsupported);
   inner->addLayout(exportRow);
   inner->addLayout(previewRow);
@@ -198,6 +203,15 @@ void SlicePanel::showResult(const slicing::SlicedJob& job, int layers) {
         ->setToolTip(tr("The whole model printed along up with PrusaSlicer's own supports: the comparison"));
   }
   setTextTooltips(m_table, 0);
+  // Beside the estimates, when the comparison surprises: why multi-directional printing takes longer here.
+  const bool slower = job.fixedDirection && job.total.printSeconds > job.fixedDirection->printSeconds;
+  m_slowerNote->setText(
+      slower ? tr("Slower than the fixed direction: each of the %n steps starts anew (the platform turns, the "
+                  "nozzle lifts and primes, a first layer on the step's base), and here that costs more time than "
+                  "the slicer's supports it avoids.",
+                  nullptr, static_cast<int>(job.steps.size()))
+             : QString());
+  m_slowerNote->setVisible(slower);
   m_hasResult = true;
   {
     const QSignalBlocker block(m_layers);
@@ -219,6 +233,7 @@ void SlicePanel::showUnsupported(bool audited, double unsupportedMm, double perc
 void SlicePanel::clearResult() {
   m_hasResult = false;
   m_table->setRowCount(0);
+  m_slowerNote->hide();
   showUnsupported(false, 0.0, 0.0);
   m_export->setEnabled(false);
   {

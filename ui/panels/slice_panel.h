@@ -85,6 +85,7 @@ class SlicePanel : public QWidget {
   QLabel* m_message = nullptr;
   QTableWidget* m_table = nullptr;
   QLabel* m_unsupported = nullptr;
+  QLabel* m_slowerNote = nullptr;  // why the multi-directional job takes longer than the fixed direction
   QPushButton* m_export = nullptr;
   QPushButton* m_preview = nullptr;
   QSlider* m_layers = nullptr;

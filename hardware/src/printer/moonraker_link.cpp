@@ -42,6 +42,11 @@ class MoonrakerLink : public HttpPrinterLink {
     });
   }
 
+  // Klipper's FIRMWARE_RESTART: out of "shutdown" (after an emergency stop) back to "ready".
+  std::future<core::Status> restartFirmware() override {
+    return submit("restarting the firmware", false,
+                  [this](const BoundedHttpClient& client) { return post(client, "/printer/firmware_restart"); });
+  }
   // Klipper's loaded objects: each [manual_stepper NAME] is the object "manual_stepper NAME".
   std::future<core::Result<FirmwareAxes>> readFirmwareAxes() override {
     auto answer = std::make_shared<std::promise<core::Result<FirmwareAxes>>>();

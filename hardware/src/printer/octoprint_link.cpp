@@ -80,6 +80,12 @@ class OctoPrintLink : public HttpPrinterLink {
     if (!answered) return answered.error();
     return core::Done{};
   }
+  // OctoPrint closed the serial port after M112: connecting again opens it, which resets the printer's board.
+  std::future<core::Status> restartFirmware() override {
+    return submit("reconnecting OctoPrint to the printer", false, [this](const BoundedHttpClient& client) {
+      return postJson(client, "/api/connection", {{"command", "connect"}});
+    });
+  }
   core::Status postStart(const BoundedHttpClient& client, const std::string& remoteName) override {
     return postJson(client, "/api/files/local/" + percentEncode(remoteName), {{"command", "select"}, {"print", true}});
   }

@@ -31,6 +31,15 @@ std::future<core::Result<FirmwareAxes>> PrinterLink::readFirmwareAxes() {
   return promise.get_future();
 }
 
+std::future<core::Status> PrinterLink::restartFirmware() {
+  std::promise<core::Status> promise;
+  promise.set_value(core::Error{core::ErrorCode::InvalidParameter,
+                                "this printer cannot be restarted over its link (Marlin halted by M112 answers no "
+                                "command): press the printer's reset button or switch it off and on",
+                                name()});
+  return promise.get_future();
+}
+
 core::Status validate(const PrinterLinkOptions& o) {
   const auto bad = [](const std::string& field, const std::string& rule) {
     return core::Error{core::ErrorCode::InvalidParameter, field + " " + rule, field};

@@ -12,7 +12,7 @@
 //
 //   from      | event / condition (tick)                    | to        | action
 //   ----------+---------------------------------------------+-----------+-----------------------------------
-//   Idle      | start()                                     | Moving    | startMove(step 0)
+//   Idle      | start(k)                                    | Moving    | startMove(step k; 0 by default)
 //   Moving    | tick: positioner reached the target         | Settling  |
 //   Moving    | tick: fault, link down, move timeout        | Faulted   | stopMotion()
 //   Moving    | start of move refused, or the printer busy  | Faulted   | (nothing moves)
@@ -193,7 +193,9 @@ class PrintRun {
   PrintRun(Positioner& positioner, std::vector<PrintStep> steps, PrintRunOptions options = {},
            PrinterLink* printer = nullptr);
 
-  core::Status start();
+  // From step `firstStep` (0-based; the steps before it were printed by an earlier run that was aborted):
+  // its move is the first. InvalidParameter when there is no such step.
+  core::Status start(std::size_t firstStep = 0);
   core::Status pause();
   core::Status resume();
   core::Status abort();

@@ -129,6 +129,15 @@ class PrinterLink {
   // OctoPrint, a reset of the printer and a Connect in OctoPrint (firmwareState "error").
   virtual core::Status clearStop() = 0;
 
+  // Brings the printer's firmware back after an emergency stop shut it down, once the operator confirmed it is
+  // safe: Moonraker POST /printer/firmware_restart (Klipper's FIRMWARE_RESTART, firmwareState "shutdown" ->
+  // "ready"); OctoPrint POST /api/connection {"command": "connect"} (opening the serial port resets the
+  // printer's board, firmwareState "error" -> "ready"). Not refused while an emergency stop is latched: it
+  // starts no job, and the latch still holds uploads and starts until clearStop(). Marlin halted by M112 (kill())
+  // answers nothing on its serial line until its reset button or a power cycle: the default answers
+  // InvalidParameter saying so.
+  virtual std::future<core::Status> restartFirmware();
+
   // Asks the printer which extra axes its firmware has, for the checks before a program that turns them:
   // Moonraker lists Klipper's objects (GET /printer/objects/list); Marlin answers M114 (asked between jobs; the
   // answer's letters beyond X Y Z E). OctoPrint relays no firmware reply to its API clients, so it cannot be
