@@ -3709,8 +3709,13 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
     </message>
     <message>
         <location filename="../ui/slicing/slice_dialog.cpp" line="32"/>
-        <source>Robot arm platform, 0.8 mm nozzle (paper set-up)</source>
-        <translation>Roboterarm-Plattform, 0,8-mm-Düse (Aufbau aus dem Artikel)</translation>
+        <source>Robot arm tilting the platform, printer head moving, 0.8 mm nozzle</source>
+        <translation>Roboterarm neigt die Plattform, Druckkopf bewegt sich, 0,8-mm-Düse</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="33"/>
+        <source>UR5 robot cell, fixed 0.8 mm extruder</source>
+        <translation>UR5-Roboterzelle, feststehender 0,8-mm-Extruder</translation>
     </message>
     <message>
         <location filename="../ui/slicing/slice_dialog.cpp" line="59"/>

@@ -3702,8 +3702,13 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
     </message>
     <message>
         <location filename="../ui/slicing/slice_dialog.cpp" line="32"/>
-        <source>Robot arm platform, 0.8 mm nozzle (paper set-up)</source>
-        <translation>机械臂平台,0.8 mm 喷嘴(论文中的装置)</translation>
+        <source>Robot arm tilting the platform, printer head moving, 0.8 mm nozzle</source>
+        <translation>机械臂倾转平台,打印头移动,0.8 mm 喷嘴</translation>
+    </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="33"/>
+        <source>UR5 robot cell, fixed 0.8 mm extruder</source>
+        <translation>UR5 机器人单元,固定 0.8 mm 挤出机</translation>
     </message>
     <message>
         <location filename="../ui/slicing/slice_dialog.cpp" line="59"/>

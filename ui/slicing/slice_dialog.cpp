@@ -29,7 +29,8 @@ const char* const kBuiltinPrinterNames[] = {
     QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "Generic Marlin 220x220, 0.4 mm nozzle (platform over Modbus)"),
     QT_TRANSLATE_NOOP("multidir::ui::SliceDialog",
                       "Open5x-like Prusa i3, RepRapFirmware U tilt + V rotation, 0.4 mm nozzle"),
-    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "Robot arm platform, 0.8 mm nozzle (paper set-up)"),
+    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "Robot arm tilting the platform, printer head moving, 0.8 mm nozzle"),
+    QT_TRANSLATE_NOOP("multidir::ui::SliceDialog", "UR5 robot cell, fixed 0.8 mm extruder"),
 };
 
 QString printerNameText(const std::string& name) {

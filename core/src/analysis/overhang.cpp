@@ -81,6 +81,17 @@ Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& p
   return out;
 }
 
+Result<double> riskyAreaOnPlatform(const TriangleMesh& solid, const Vec3& direction, double alphaMaxDegrees,
+                                   double supportedBandMm) {
+  OverhangOptions options;
+  options.alphaMaxDegrees = alphaMaxDegrees;
+  options.supportedBandMm = supportedBandMm;
+  options.base = RegionBase::Platform;
+  auto analysis = analyzeOverhang(solid, direction, options);
+  if (!analysis.ok()) return analysis.error();
+  return analysis->riskyAreaMm2;
+}
+
 Result<Vec3> parseDirection(const std::string& text) {
   std::string s = text;
   double sign = 1.0;

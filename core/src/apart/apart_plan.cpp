@@ -157,13 +157,8 @@ std::vector<ApartJoint> jointsOf(const std::vector<ApartPart>& parts, const std:
 
 }  // namespace
 
-double riskyAreaOnBed(const TriangleMesh& part, const Vec3& direction, const ApartOptions& options) {
-  OverhangOptions overhang;
-  overhang.alphaMaxDegrees = options.alphaMaxDegrees;
-  overhang.supportedBandMm = options.supportedBandMm;
-  overhang.base = RegionBase::Platform;
-  const auto analysis = analyzeOverhang(part, direction, overhang);
-  return analysis.ok() ? analysis->riskyAreaMm2 : 0.0;
+Result<double> riskyAreaOnBed(const TriangleMesh& part, const Vec3& direction, const ApartOptions& options) {
+  return riskyAreaOnPlatform(part, direction, options.alphaMaxDegrees, options.supportedBandMm);
 }
 
 Result<ApartPlan> apartPlan(const Decomposition& plan, const ApartOptions& options) {
@@ -189,7 +184,9 @@ Result<ApartPlan> apartPlan(const Decomposition& plan, const ApartOptions& optio
     if (pose.fits) {
       ApartPart part;
       part.volumeMm3 = signedVolume(next.mesh);
-      part.riskyAreaMm2 = riskyAreaOnBed(next.mesh, next.direction, options);
+      auto risky = riskyAreaOnBed(next.mesh, next.direction, options);
+      if (!risky.ok()) return risky.error();
+      part.riskyAreaMm2 = *risky;
       part.mesh = std::move(next.mesh);
       part.printingDirection = next.direction;
       part.region = next.region;

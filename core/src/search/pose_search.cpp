@@ -37,15 +37,6 @@ bool closeToAny(const std::vector<PoseCandidate>& poses, const Vec3& up) {
   return std::any_of(poses.begin(), poses.end(), [&](const PoseCandidate& p) { return p.up.dot(up) > cosDistinct; });
 }
 
-double riskyAreaFor(const TriangleMesh& model, const Vec3& up, const SearchOptions& options) {
-  OverhangOptions o;
-  o.alphaMaxDegrees = options.alphaMaxDegrees;
-  o.supportedBandMm = options.supportedBandMm;
-  o.base = RegionBase::Platform;
-  const auto analysis = analyzeOverhang(model, up, o);
-  return analysis.ok() ? analysis->riskyAreaMm2 : 0.0;
-}
-
 // The hull a model stands on and its centre of mass, found once for all its poses.
 struct StandingModel {
   ConvexHull hull;
@@ -65,14 +56,16 @@ struct StandingModel {
   }
 };
 
-PoseCandidate candidateOn(const ContactPatch& patch, PoseSource source, const TriangleMesh& model,
-                          const SearchOptions& options) {
+Result<PoseCandidate> candidateOn(const ContactPatch& patch, PoseSource source, const TriangleMesh& model,
+                                  const SearchOptions& options) {
+  auto risky = riskyAreaOnPlatform(model, patch.up, options.alphaMaxDegrees, options.supportedBandMm);
+  if (!risky.ok()) return risky.error();
   PoseCandidate pose;
   pose.up = patch.up;
   pose.source = source;
   pose.contactAreaMm2 = patch.areaMm2;
   pose.stabilityMarginMm = patch.stabilityMarginMm;
-  pose.riskyAreaMm2 = riskyAreaFor(model, pose.up, options);
+  pose.riskyAreaMm2 = *risky;
   return pose;
 }
 
@@ -109,8 +102,11 @@ Result<std::vector<PoseCandidate>> restingPoses(const TriangleMesh& model, doubl
   auto standing = StandingModel::of(model);
   if (!standing.ok()) return standing.error();
   std::vector<PoseCandidate> poses;
-  for (const ContactPatch& patch : standingPatches(standing->hull, standing->centreOfMass, mergeDegrees))
-    poses.push_back(candidateOn(patch, PoseSource::Resting, model, options));
+  for (const ContactPatch& patch : standingPatches(standing->hull, standing->centreOfMass, mergeDegrees)) {
+    auto pose = candidateOn(patch, PoseSource::Resting, model, options);
+    if (!pose.ok()) return pose.error();
+    poses.push_back(std::move(*pose));
+  }
   return poses;
 }
 
@@ -121,8 +117,10 @@ Result<std::vector<PoseCandidate>> candidatePoses(const TriangleMesh& model, con
   auto standing = StandingModel::of(model);
   if (!standing.ok()) return standing.error();
   std::vector<PoseCandidate> poses;
-  poses.push_back(candidateOn(contactPatch(standing->hull, givenUp, standing->centreOfMass), PoseSource::Given, model,
-                              options));
+  auto given = candidateOn(contactPatch(standing->hull, givenUp, standing->centreOfMass), PoseSource::Given, model,
+                           options);
+  if (!given.ok()) return given.error();
+  poses.push_back(std::move(*given));
   std::vector<ContactPatch> resting =
       standingPatches(standing->hull, standing->centreOfMass, poseOptions.mergeDegrees);
   // The largest contacts take up to two thirds of the slots; the rest go to the standing poses farthest from
@@ -133,7 +131,9 @@ Result<std::vector<PoseCandidate>> candidatePoses(const TriangleMesh& model, con
   for (std::size_t i = 0; i < resting.size(); ++i) {
     if (static_cast<int>(poses.size()) >= std::min(poseOptions.poses, restingSlots)) break;
     if (closeToAny(poses, resting[i].up)) continue;
-    poses.push_back(candidateOn(resting[i], PoseSource::Resting, model, options));
+    auto pose = candidateOn(resting[i], PoseSource::Resting, model, options);
+    if (!pose.ok()) return pose.error();
+    poses.push_back(std::move(*pose));
     taken[i] = 1;
   }
   while (static_cast<int>(poses.size()) < poseOptions.poses) {
@@ -147,7 +147,9 @@ Result<std::vector<PoseCandidate>> candidatePoses(const TriangleMesh& model, con
     }
     if (farthest < 0) break;
     taken[farthest] = 1;
-    poses.push_back(candidateOn(resting[farthest], PoseSource::Resting, model, options));
+    auto pose = candidateOn(resting[farthest], PoseSource::Resting, model, options);
+    if (!pose.ok()) return pose.error();
+    poses.push_back(std::move(*pose));
   }
   return poses;
 }

@@ -48,6 +48,12 @@ Status validate(const OverhangOptions& options);
 Result<OverhangAnalysis> analyzeOverhang(const TriangleMesh& mesh, const Vec3& printingDirection,
                                          const OverhangOptions& options = {});
 
+// The risky area (mm^2) of a solid printed alone along `direction`, standing on the platform or bed at its
+// lowest level (rule 2 of docs/jg-definition.md): the J_G of a pose, and of a part printed apart. An analysis
+// that fails is an error, never "no risky area". Errors: InvalidParameter.
+Result<double> riskyAreaOnPlatform(const TriangleMesh& solid, const Vec3& direction, double alphaMaxDegrees,
+                                   double supportedBandMm);
+
 // Area of a triangle (given its corners' heights and its area) that lies above `level`.
 double triangleAreaAbove(std::array<double, 3> heights, double area, double level);
 

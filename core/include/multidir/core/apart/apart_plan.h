@@ -64,6 +64,6 @@ Result<ApartPlan> apartPlan(const Decomposition& plan, const ApartOptions& optio
 
 // J_G of a solid printed alone along `direction` on the bed at its lowest level (rule 2 of
 // docs/jg-definition.md for every part).
-double riskyAreaOnBed(const TriangleMesh& part, const Vec3& direction, const ApartOptions& options);
+Result<double> riskyAreaOnBed(const TriangleMesh& part, const Vec3& direction, const ApartOptions& options);
 
 }  // namespace multidir::core
