@@ -229,10 +229,21 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
                               "); the program may still run on the controller, and the stop is sent as soon as the "
                               "link is back",
                           false);
-      if (now.safetyMode != "NORMAL" || now.robotMode != "RUNNING")
-        return stopAndEnd(
-            k, "the robot left normal operation (robot mode " + now.robotMode + ", safety mode " + now.safetyMode + ")",
-            false);
+      if (now.safetyMode != "NORMAL" || now.robotMode != "RUNNING") {
+        // The controller's words about it come on another interface than its state, and may arrive a little
+        // later: wait up to half a second for them, so the operator reads the robot's reason, not only its mode.
+        std::string words;
+        for (int wait = 0; wait < 50 && words.empty(); ++wait) {
+          std::this_thread::sleep_for(10ms);
+          const std::vector<hardware::UrLinkMessage> later = link.takeMessages();
+          for (const hardware::UrLinkMessage& m : later)
+            if (m.kind == hardware::UrLinkMessage::Kind::Text) logLine(out, "robot: " + m.describe());
+          words = describeMessages(later);
+        }
+        const std::string modes = "(robot mode " + now.robotMode + ", safety mode " + now.safetyMode + ")";
+        if (!words.empty()) return stopAndEnd(k, "the robot reports: " + words + " " + modes, false);
+        return stopAndEnd(k, "the robot left normal operation " + modes, false);
+      }
       started = started || now.programStarts > before.programStarts;
       if (now.programEnds > before.programEnds && now.atRest) break;
       if (Clock::now() >= nextProgress && started) {

@@ -4,6 +4,7 @@
 // (SimulatedPrinterUnderTest), so that one test runs against every protocol (TEST_P over PrinterProtocol).
 #include <algorithm>
 #include <chrono>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -44,9 +45,20 @@ inline std::string writeFile(const std::filesystem::path& path, const std::strin
   return path.string();
 }
 
-// shortGcode() written as `folder`/step-01.gcode in the test's temporary directory; its path.
+// The running test's own folder name ("Suite_Name_Param"): ctest runs tests as processes side by side, and a
+// file they shared was truncated by one while another uploaded it (the printer then ran an empty job).
+inline std::string runningTestFolder() {
+  const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = info == nullptr ? "no-test" : std::string(info->test_suite_name()) + "_" + info->name();
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+// shortGcode() written as `folder`/step-01.gcode in the running test's own temporary folder; its path.
 inline std::string shortGcodeFile(const std::string& folder) {
-  return writeFile(std::filesystem::path(testing::TempDir()) / folder / "step-01.gcode", shortGcode());
+  return writeFile(std::filesystem::path(testing::TempDir()) / runningTestFolder() / folder / "step-01.gcode",
+                   shortGcode());
 }
 
 // The commands of a G-code text as a printer receives them (comments and blank lines dropped).
