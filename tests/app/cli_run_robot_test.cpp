@@ -175,32 +175,49 @@ Eigen::Vector3d lastMovelTarget(const std::string& script) {
   return Eigen::Vector3d(x, y, z) * 1000.0;
 }
 
-// The kitten (half size, 5-DOF) decomposed, sliced with the cell's profile and converted by 'multidir
-// robot-program', run on the simulated UR5 of the paper's cell at 1000 times real time.
-TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
-  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.Kitten");
+// The kitten (half size, 5-DOF) decomposed, sliced with the cell's profile, converted by 'multidir
+// robot-program' and run by 'multidir run --robot' on the simulated UR5 of the paper's cell at 1000 times real
+// time, in the scratch folder `scratch`; the simulator (with its trace) stays for the test to read.
+struct KittenOnTheCell {
+  std::string dir;
+  std::string cellPath;
+  std::unique_ptr<hw::UrSimulator> simulator;
+};
+
+void runKittenOnTheCell(const std::string& scratch, KittenOnTheCell& kitten) {
+  const std::string dir = multidir::test::scratchDirectory(scratch);
+  kitten.dir = dir;
   ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") +
-                       "' --up y --scale 0.5 --machine "
-                       "5dof -o " +
-                       dir + "/plan",
+                       "' --up y --scale 0.5 --machine 5dof -o " + dir + "/plan",
                    dir)
                 .exitCode,
             0);
   const CliRun sliced = runCli("slice " + dir + "/plan --printer ur5-cell-0.8 -o " + dir + "/job", dir);
   ASSERT_EQ(sliced.exitCode, 0) << sliced.err;
-  const std::string cellPath = cellForJob(dir + "/job", dir + "/cell.json");
-  ASSERT_FALSE(cellPath.empty());
-  const CliRun converted = runCli("robot-program " + dir + "/job --cell " + cellPath + " -o " + dir + "/out", dir);
+  kitten.cellPath = cellForJob(dir + "/job", dir + "/cell.json");
+  ASSERT_FALSE(kitten.cellPath.empty());
+  const CliRun converted =
+      runCli("robot-program " + dir + "/job --cell " + kitten.cellPath + " -o " + dir + "/out", dir);
   ASSERT_EQ(converted.exitCode, 0) << converted.err;
   hw::UrSimulatorOptions options;
   options.speed = 1000.0;
   options.keepTrace = true;
-  options.cellPath = cellPath;
-  auto simulator = startSimulator(options);
-  ASSERT_TRUE(simulator);
-  const CliRun run =
-      runCli("run " + dir + "/out --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 240");
+  options.cellPath = kitten.cellPath;
+  kitten.simulator = startSimulator(options);
+  ASSERT_TRUE(kitten.simulator);
+  const CliRun run = runCli(
+      "run " + dir + "/out --robot 127.0.0.1:" + std::to_string(kitten.simulator->dashboardPort()), dir, "timeout 240");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+}
+
+// The kitten's converted job runs on the cell's arm without a joint beyond its limits or its speed, and each
+// step's program ends where its last movel says.
+TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
+  KittenOnTheCell kitten;
+  ASSERT_NO_FATAL_FAILURE(runKittenOnTheCell("CliRunRobot.Kitten", kitten));
+  const std::string& dir = kitten.dir;
+  const std::string& cellPath = kitten.cellPath;
+  const std::unique_ptr<hw::UrSimulator>& simulator = kitten.simulator;
   EXPECT_EQ(simulator->state().programsFinished, 4u);
   const robot::ArmModel arm = robot::loadCell(cellPath)->arm;
   const auto trace = simulator->trace();
@@ -237,27 +254,10 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
 // The filament the extruder really pushes (its commanded speed over the simulated arm's own time, tick by tick)
 // is the G-code's E of each step: the extrusion rate follows the moves as the controller runs them.
 TEST(CliRunRobot, TheExtruderPushesEachStepsGcodeFilamentWhileTheArmRunsItsProgram) {
-  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.KittenFilament");
-  ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") +
-                       "' --up y --scale 0.5 --machine 5dof -o " + dir + "/plan",
-                   dir)
-                .exitCode,
-            0);
-  const CliRun sliced = runCli("slice " + dir + "/plan --printer ur5-cell-0.8 -o " + dir + "/job", dir);
-  ASSERT_EQ(sliced.exitCode, 0) << sliced.err;
-  const std::string cellPath = cellForJob(dir + "/job", dir + "/cell.json");
-  ASSERT_FALSE(cellPath.empty());
-  const CliRun converted = runCli("robot-program " + dir + "/job --cell " + cellPath + " -o " + dir + "/out", dir);
-  ASSERT_EQ(converted.exitCode, 0) << converted.err;
-  hw::UrSimulatorOptions options;
-  options.speed = 1000.0;
-  options.keepTrace = true;
-  options.cellPath = cellPath;
-  auto simulator = startSimulator(options);
-  ASSERT_TRUE(simulator);
-  const CliRun run =
-      runCli("run " + dir + "/out --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 240");
-  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  KittenOnTheCell kitten;
+  ASSERT_NO_FATAL_FAILURE(runKittenOnTheCell("CliRunRobot.KittenFilament", kitten));
+  const std::string& dir = kitten.dir;
+  const std::unique_ptr<hw::UrSimulator>& simulator = kitten.simulator;
   const auto job = nlohmann::json::parse(multidir::test::readAll(dir + "/out/robot-job.json"));
   const auto trace = simulator->trace();
   ASSERT_FALSE(trace.empty());
