@@ -206,14 +206,18 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
     bool started = false;
     auto nextProgress = Clock::now() + 1s;
     std::string lastProgress;
+    // The robot's messages since the last call: its texts logged, its faults described ("" when none).
+    auto takeFaults = [&] {
+      const std::vector<hardware::UrLinkMessage> messages = link.takeMessages();
+      for (const hardware::UrLinkMessage& m : messages)
+        if (m.kind == hardware::UrLinkMessage::Kind::Text) logLine(out, "robot: " + m.describe());
+      return describeMessages(messages);
+    };
     while (true) {
       std::this_thread::sleep_for(10ms);
       if (g_robotInterrupts.load() > 0) return stopAndEnd(k, "stopped by Ctrl-C", true);
       const hardware::UrLinkStatus now = link.status();
-      const std::vector<hardware::UrLinkMessage> messages = link.takeMessages();
-      for (const hardware::UrLinkMessage& m : messages)
-        if (m.kind == hardware::UrLinkMessage::Kind::Text) logLine(out, "robot: " + m.describe());
-      const std::string faults = describeMessages(messages);
+      const std::string faults = takeFaults();
       if (!faults.empty()) {
         // Let the state that goes with the message arrive, so the run reports both.
         std::this_thread::sleep_for(100ms);
@@ -235,10 +239,7 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
         std::string words;
         for (int wait = 0; wait < 50 && words.empty(); ++wait) {
           std::this_thread::sleep_for(10ms);
-          const std::vector<hardware::UrLinkMessage> later = link.takeMessages();
-          for (const hardware::UrLinkMessage& m : later)
-            if (m.kind == hardware::UrLinkMessage::Kind::Text) logLine(out, "robot: " + m.describe());
-          words = describeMessages(later);
+          words = takeFaults();
         }
         const std::string modes = "(robot mode " + now.robotMode + ", safety mode " + now.safetyMode + ")";
         if (!words.empty()) return stopAndEnd(k, "the robot reports: " + words + " " + modes, false);
