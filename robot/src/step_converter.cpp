@@ -29,7 +29,6 @@ struct Converted {
   Eigen::Isometry3d tcp;         // platform pose, base frame
   double lengthMm = 0.0;
   double speedMmPerS = 0.0;      // after any slowdown
-  double analog0 = 0.0;          // extruder speed fraction while this move runs (0: travel), set when written
   double filamentMm = 0.0;       // the G-code's E of this move
   bool extrudes = false;
   std::vector<std::string> before;  // statements to write before the movel (outputs, messages)
@@ -626,30 +625,33 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   script += movej(cell.home, approachJoints);
   const double accel = motion.toolAccelMmPerS2;
   double written = 0.0;
+  double blendIn = 0.0;  // the blend radius of the move before, into this one
   for (std::size_t i = 0; i < converted.size(); ++i) {
-    Converted& c = converted[i];
+    const Converted& c = converted[i];
     for (const auto& line : c.before) script += "  " + line + "\n";
     double blend = 0.0;
     if (c.extrudes && i + 1 < converted.size() && converted[i + 1].extrudes)
       blend = std::min({motion.blendRadiusMm, 0.45 * c.lengthMm, 0.45 * converted[i + 1].lengthMm});
-    const bool blendedIn = i > 0 && converted[i - 1].extrudes && c.extrudes && motion.blendRadiusMm > 0.0;
     // The extruder runs at one rate through a move, so the rate is the move's E over the time the move really
     // takes: a move that stops at both ends (no blend) speeds up and brakes on its trapezoid; only a blended one
     // keeps about its tool speed. (The rate at the tool speed over-extruded 1.2-2x on the kitten's short moves,
     // measured on the simulated controller.) Rounded as written, so the summary's filament is what it pushes.
-    const double moveSeconds = blend > 0.0 || blendedIn ? c.lengthMm / c.speedMmPerS
-                                                        : trapezoidSeconds(c.lengthMm, c.speedMmPerS, accel);
+    const double moveSeconds = blend > 0.0 || blendIn > 0.0 ? c.lengthMm / c.speedMmPerS
+                                                            : trapezoidSeconds(c.lengthMm, c.speedMmPerS, accel);
+    blendIn = blend;
+    // The extruder's speed fraction while this move runs (0: travel).
+    double analog0 = 0.0;
     if (c.extrudes && moveSeconds > 0.0)
-      c.analog0 = std::stod(number(c.filamentMm / moveSeconds / cell.maxFilamentMmPerS, 6));
-    if (c.analog0 != written) {
-      script += "  set_standard_analog_out(0, " + number(c.analog0, 6) + ")\n";
-      written = c.analog0;
+      analog0 = std::stod(number(c.filamentMm / moveSeconds / cell.maxFilamentMmPerS, 6));
+    if (analog0 != written) {
+      script += "  set_standard_analog_out(0, " + number(analog0, 6) + ")\n";
+      written = analog0;
     }
     script += "  movel(" + poseText(c.tcp) + ", a=" + number(accel / 1000.0, 4) + ", v=" + number(c.speedMmPerS / 1000.0, 6) +
               ", r=" + number(blend / 1000.0, 6) + ")\n";
     ++summary.moves;
     summary.seconds += trapezoidSeconds(c.lengthMm, c.speedMmPerS, accel);
-    summary.filamentMm += c.analog0 * cell.maxFilamentMmPerS * moveSeconds;
+    summary.filamentMm += analog0 * cell.maxFilamentMmPerS * moveSeconds;
   }
   summary.gcodeMoves = static_cast<int>(moves.size());
   script += movej(retreatJoints, cell.home);
