@@ -157,10 +157,6 @@ std::vector<ApartJoint> jointsOf(const std::vector<ApartPart>& parts, const std:
 
 }  // namespace
 
-Result<double> riskyAreaOnBed(const TriangleMesh& part, const Vec3& direction, const ApartOptions& options) {
-  return riskyAreaOnPlatform(part, direction, options.alphaMaxDegrees, options.supportedBandMm);
-}
-
 Result<ApartPlan> apartPlan(const Decomposition& plan, const ApartOptions& options) {
   if (plan.regions.empty()) return Error{ErrorCode::InvalidParameter, "the plan has no regions", "plan"};
   ApartPlan apart;
@@ -184,7 +180,8 @@ Result<ApartPlan> apartPlan(const Decomposition& plan, const ApartOptions& optio
     if (pose.fits) {
       ApartPart part;
       part.volumeMm3 = signedVolume(next.mesh);
-      auto risky = riskyAreaOnBed(next.mesh, next.direction, options);
+      // Rule 2 of docs/jg-definition.md: each part printed alone on the bed.
+      auto risky = riskyAreaOnPlatform(next.mesh, next.direction, options.alphaMaxDegrees, options.supportedBandMm);
       if (!risky.ok()) return risky.error();
       part.riskyAreaMm2 = *risky;
       part.mesh = std::move(next.mesh);

@@ -62,8 +62,4 @@ struct ApartPlan {
 // cannot be cut to fit (thinner than the cut could print).
 Result<ApartPlan> apartPlan(const Decomposition& plan, const ApartOptions& options = {});
 
-// J_G of a solid printed alone along `direction` on the bed at its lowest level (rule 2 of
-// docs/jg-definition.md for every part).
-Result<double> riskyAreaOnBed(const TriangleMesh& part, const Vec3& direction, const ApartOptions& options);
-
 }  // namespace multidir::core
