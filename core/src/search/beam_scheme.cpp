@@ -30,7 +30,7 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
   long long scoredBefore = engine.candidatesScored();
   std::vector<long long> scaleScored(static_cast<std::size_t>(scales), 0);
 
-  std::vector<BestPlan> found(static_cast<std::size_t>(searches));
+  std::vector<BestPlan> found(static_cast<std::size_t>(searches), BestPlan(engine.sequenceFree()));
   std::vector<int> reached(static_cast<std::size_t>(searches), 0);
   std::vector<char> stopped(static_cast<std::size_t>(searches), 0);
   std::vector<BeamWork> done(static_cast<std::size_t>(searches));
@@ -101,6 +101,7 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
   for (int task = 0; task < searches; ++task) {
     const auto k = static_cast<std::size_t>(task);
     if (found[k].node()) best.offer(found[k].node());
+    best.offerFinalistsOf(found[k]);
     levels = std::max(levels, reached[k]);
     cancelled = cancelled || stopped[k];
     work.candidatesScored += done[k].candidatesScored;

@@ -9,6 +9,7 @@
 #include "detail/freed_memory.h"
 #include "detail/parallel.h"
 #include "multidir/core/mesh/mesh_measure.h"
+#include "search/apart_search.h"
 #include "search/run_decomposition.h"
 #include "search/search_engine.h"
 #include "search/search_schemes.h"
@@ -92,10 +93,10 @@ Status detail::checkSearchInputs(const TriangleMesh& model, const MachineSpec& m
 
 Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                JobContext& job, const SearchProgressSink& progress,
-                               const std::optional<PlatformRegion>& platform) {
+                               const std::optional<PlatformRegion>& platform, std::vector<Decomposition>* finalists) {
   const auto start = std::chrono::steady_clock::now();
   SearchEngine engine(model, machine, options, job, platform);
-  BestPlan best;
+  BestPlan best(finalists != nullptr);
   int levels = 0;
   bool cancelled = false;
   BeamWork scaleWork;
@@ -108,7 +109,28 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
       cancelled = runGreedy(engine, true, engine.minRegionVolume(options.minVolumeDivisor), best, progress, levels);
       break;
   }
-  Decomposition plan = engine.planOf(*withoutUnpaidPlanes(engine, best.node(), options));
+  const NodePtr chosen = withoutUnpaidPlanes(engine, best.node(), options);
+  Decomposition plan = engine.planOf(*chosen);
+  if (finalists && !cancelled) {
+    std::vector<std::vector<Plane>> taken{planesOf(chosen)};
+    // Each as found and without its unpaid planes: removing them lowers the price, but may raise J_G apart
+    // above the bound the choice keeps.
+    for (const NodePtr& finalist : best.finalists()) {
+      if (!finalist || job.isCancelled()) continue;
+      for (const NodePtr& node : {finalist, withoutUnpaidPlanes(engine, finalist, options)}) {
+        std::vector<Plane> planes = planesOf(node);
+        const bool seen = std::any_of(taken.begin(), taken.end(), [&](const std::vector<Plane>& other) {
+          return other.size() == planes.size() &&
+                 std::equal(other.begin(), other.end(), planes.begin(), [](const Plane& a, const Plane& b) {
+                   return a.normal == b.normal && a.offset == b.offset;
+                 });
+        });
+        if (seen) continue;
+        taken.push_back(std::move(planes));
+        finalists->push_back(engine.planOf(*node));
+      }
+    }
+  }
   plan.cancelled = cancelled;
   plan.rotationAxis = machine.rotationAxis;
   plan.statistics.candidatesScored = engine.candidatesScored() + scaleWork.candidatesScored;
@@ -127,20 +149,11 @@ using detail::runDecomposition;
 Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                 JobContext& job, const SearchProgressSink& progress) {
   if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
-  Decomposition plan;
-  if (detail::needsProxy(model, options)) {
-    auto searched = detail::runProxyDecomposition(
-        model, machine, options, job, [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
-          return Result<Decomposition>(
-              detail::polishedIfAsked(mesh, machine, o, runDecomposition(mesh, machine, o, job, progress, p), job,
-                                      progress, p));
-        });
-    if (!searched.ok()) return searched.error();
-    plan = std::move(*searched);
-  } else {
-    plan = detail::polishedIfAsked(model, machine, options, runDecomposition(model, machine, options, job, progress),
-                                   job, progress);
-  }
+  // The apart machine adds its bound: never more J_G apart than the default 5-DOF plan (docs/apart.md).
+  Result<Decomposition> plan = machine.kind == MachineKind::Apart
+                                   ? detail::decomposeApart(model, machine, options, job, progress)
+                                   : detail::searchedAndPolished(model, machine, options, job, progress);
+  if (!plan.ok()) return plan.error();
   detail::returnFreedMemory();
   job.setProgress(1.0, "search done");
   return plan;

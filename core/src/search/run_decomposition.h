@@ -15,10 +15,13 @@ Status checkSearchInputs(const TriangleMesh& model, const MachineSpec& machine, 
 
 // The search itself, for checked inputs; reports levels but leaves the job's overall progress alone. Always
 // returns a plan (the uncut model at least); `cancelled` is set when the job was cancelled.
-// `platform`: as for SearchEngine.
+// `platform`: as for SearchEngine. `finalists`, when given (the apart machine's priced choice), receives the
+// best plan the search found for every number of cuts, each as found and without its unpaid planes,
+// unpolished, in the order of the cuts the search made, none equal to the plan returned or to another.
 Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                JobContext& job, const SearchProgressSink& progress,
-                               const std::optional<PlatformRegion>& platform = std::nullopt);
+                               const std::optional<PlatformRegion>& platform = std::nullopt,
+                               std::vector<Decomposition>* finalists = nullptr);
 
 // The same on a decimated proxy of a huge model (options.proxyFaces), its planes then applied to the full mesh
 // with their offsets polished there; every number of the plan is the full mesh's. Falls back to the full

@@ -13,19 +13,42 @@ namespace multidir::core::detail {
 
 using NodePtr = std::shared_ptr<const SearchNode>;
 
-// Keeps the best plan seen: least J_G, then fewer regions (Criterion IV), then first found.
+// Keeps the best plan seen: least J_G, then fewer regions (Criterion IV), then first found. With
+// `keepFinalists` (the apart machine, which prices every part: docs/apart.md) it also keeps the best plan of
+// every number of cuts, the candidates a priced choice picks from.
 class BestPlan {
  public:
+  explicit BestPlan(bool keepFinalists = false) : m_keepFinalists(keepFinalists) {}
+
   void offer(const NodePtr& node) {
-    constexpr double kTie = 1e-9;
-    if (!m_node || node->jg() < m_node->jg() - kTie ||
-        (std::abs(node->jg() - m_node->jg()) <= kTie && node->level < m_node->level))
-      m_node = node;
+    if (better(node, m_node)) m_node = node;
+    offerFinalist(node);
+  }
+  // Another search's finalists, as if offered here (only the finalists: node() keeps its own order).
+  void offerFinalistsOf(const BestPlan& other) {
+    for (const NodePtr& node : other.m_finalists)
+      if (node) offerFinalist(node);
   }
   const NodePtr& node() const { return m_node; }  // null before anything was offered
+  // By number of cuts (index), the least J_G seen, first found on ties; null where none was offered.
+  const std::vector<NodePtr>& finalists() const { return m_finalists; }
 
  private:
+  static bool better(const NodePtr& node, const NodePtr& than) {
+    constexpr double kTie = 1e-9;
+    return !than || node->jg() < than->jg() - kTie ||
+           (std::abs(node->jg() - than->jg()) <= kTie && node->level < than->level);
+  }
+  void offerFinalist(const NodePtr& node) {
+    if (!m_keepFinalists) return;
+    const auto level = static_cast<std::size_t>(node->level);
+    if (m_finalists.size() <= level) m_finalists.resize(level + 1);
+    if (better(node, m_finalists[level])) m_finalists[level] = node;
+  }
+
+  bool m_keepFinalists = false;
   NodePtr m_node;
+  std::vector<NodePtr> m_finalists;
 };
 
 // One scale of the beam search: the smallest region it may cut off, its beams and its levels.

@@ -74,16 +74,21 @@ TEST(ApartSearch, APlaneMayCutThroughThePlatformRegionAndTurnThePartBelowOver) {
   EXPECT_FALSE(planFromClippingPlanes(pyramid, fiveDof, SearchOptions{}, planes).ok());
 }
 
-TEST(ApartSearch, APartCostsItsPartCostInSupportSaved) {
+TEST(ApartSearch, APartCostsItsPartCostInSupportSavedDownToTheFiveDofPlansSupport) {
   const TriangleMesh pyramid = pyramidOnItsTip();
   SearchOptions options;
   options.partCostMm2 = 0;
   const Decomposition free = searched(pyramid, machineOf(MachineKind::Apart), options);
   ASSERT_GE(free.regions.size(), 2u);
-  // A part that costs more than all the support it could save is never made.
+  // A part that costs more than all the support it could save is made only where the plan would otherwise
+  // leave more support than the 5-DOF plan printed apart, and then as few as keep to that.
   options.partCostMm2 = 2.0 * free.jgBeforeMm2;
   const Decomposition dear = searched(pyramid, machineOf(MachineKind::Apart), options);
-  EXPECT_EQ(dear.regions.size(), 1u);
+  const Decomposition fiveDof = searched(pyramid, machineOf(MachineKind::TiltRotate), options);
+  const Result<ApartPlan> dearApart = apartPlan(dear), fiveDofApart = apartPlan(fiveDof);
+  ASSERT_TRUE(dearApart.ok() && fiveDofApart.ok());
+  EXPECT_LE(dearApart->jgMm2, fiveDofApart->jgMm2 + 1e-6);
+  EXPECT_LT(dearApart->parts.size(), fiveDofApart->parts.size());
 }
 
 TEST(ApartPlan, MultiDirectionalPlanPrintedApartHasNoMoreJg) {

@@ -1,0 +1,23 @@
+#pragma once
+// The apart machine's search (docs/apart.md, "Never more support than the multi-directional plan"). Internal
+// to core: decompose() runs it for MachineKind::Apart.
+#include "multidir/core/common/job_context.h"
+#include "multidir/core/search/decomposition.h"
+
+namespace multidir::core::detail {
+
+// A checked model's plan for the same model's search and polish on any machine, as decompose() makes it,
+// without the job's final progress (the proxy search for a model of more than options.proxyFaces faces).
+Result<Decomposition> searchedAndPolished(const TriangleMesh& model, const MachineSpec& machine,
+                                          const SearchOptions& options, JobContext& job,
+                                          const SearchProgressSink& progress);
+
+// The apart machine's plan: the apart search's plans (its best, polished, and its best for every number of
+// cuts, as found and without its unpaid planes) and the model's default 5-DOF plan (MachineSpec's defaults with the same up, and the same options)
+// cut again on the apart machine; of those whose J_G apart (core::apartPlan) is at most that 5-DOF plan's,
+// the one with the least J_G apart + options.partCostMm2 x (parts - 1). statistics.notes says which and why.
+// A cancelled search returns the best plan so far, with `cancelled` set.
+Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                                     JobContext& job, const SearchProgressSink& progress);
+
+}  // namespace multidir::core::detail
