@@ -27,6 +27,7 @@ std::string mm2(double value) {
 }
 
 std::string partsText(int parts) { return std::to_string(parts) + (parts == 1 ? " part" : " parts"); }
+std::string cutsText(std::size_t cuts) { return std::to_string(cuts) + (cuts == 1 ? " cut" : " cuts"); }
 
 // The plan printed apart on a printer without a size limit: J_G apart and the parts.
 Result<ApartCandidate> measuredApart(const Decomposition& plan, const SearchOptions& options, std::string name) {
@@ -138,7 +139,7 @@ Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpe
     const std::string name = i == 0                  ? "the apart search's best"
                              : i + 1 == plans.size() ? "the 5-DOF plan printed apart"
                                                      : "the apart search's plan with " +
-                                                           std::to_string(plans[i].clippingPlanes.size()) + " cuts";
+                                                           cutsText(plans[i].clippingPlanes.size());
     Result<ApartCandidate> measured = measuredApart(plans[i], options, name);
     if (!measured.ok()) return measured.error();
     candidates.push_back(std::move(*measured));

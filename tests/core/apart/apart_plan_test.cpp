@@ -109,8 +109,9 @@ TEST(ApartPlan, MultiDirectionalPlanPrintedApartHasNoMoreJg) {
   }
 }
 
-// The fertility statue is where the apart plan's J_G exceeds the 5-DOF plan's with the default part cost
-// (docs/apart.md, "Measured"): the two tests below hold what the comparison is at the same price per part.
+// The fertility statue is where the apart search's own plan had more J_G than the 5-DOF plan with the default
+// part cost, before the bound (docs/apart.md, "Never more support than the multi-directional plan"; the bound
+// itself: apart_bound_test.cpp). The two tests below hold the comparison at the same price per part.
 TEST(ApartSearch, WithoutAPartCostFertilityApartHasNoMoreJgThanItsFiveDofPlan) {
   const TriangleMesh fertility = multidir::test::loadSharedModel("fertility.off");
   const Decomposition fiveDof = searched(fertility, machineOf(MachineKind::TiltRotate, Vec3::UnitY()));
