@@ -78,8 +78,10 @@ std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& 
                             const ApartCandidate& bound, double partCostMm2) {
   std::string note = chosen.name + " (J_G apart " + mm2(chosen.jgApartMm2) + " mm^2, " + partsText(chosen.parts) +
                      "; priced " + mm2(pricedMm2(chosen, partCostMm2)) + " mm^2 at " + mm2(partCostMm2) +
-                     " mm^2 per part after the first) is the cheapest plan with no more J_G apart than the 5-DOF plan "
-                     "printed apart (" + mm2(bound.jgApartMm2) + " mm^2, " + partsText(bound.parts) + ")";
+                     " mm^2 per part after the first) is the cheapest plan with no more J_G apart than ";
+  note += chosen.name == bound.name ? "itself, the bound"
+                                    : "the 5-DOF plan printed apart (" + mm2(bound.jgApartMm2) + " mm^2, " +
+                                          partsText(bound.parts) + ")";
   if (chosen.name == searchBest.name) return note;
   note += ": the apart search's best (J_G apart " + mm2(searchBest.jgApartMm2) + " mm^2, " +
           partsText(searchBest.parts) + ") ";
