@@ -9,7 +9,7 @@ namespace multidir::core::detail {
 
 // One plan the apart machine may return, as printed apart (core::apartPlan, no build volume).
 struct ApartCandidate {
-  std::string name;      // for the plan's notes: "the apart search's best", "the 5-DOF plan printed apart"
+  std::string name;  // for the plan's notes: "the apart search's best", "the 5-DOF plan printed apart"
   double jgApartMm2 = 0.0;
   int parts = 1;
 };
@@ -23,7 +23,7 @@ int chooseApartCandidate(const std::vector<ApartCandidate>& candidates, double p
 
 // The sentence the plan's notes carry: which candidate was chosen, and why, against the apart search's best
 // (`searchBest`) and the bound's plan (`bound`).
-std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& searchBest,
-                            const ApartCandidate& bound, double partCostMm2);
+std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& searchBest, const ApartCandidate& bound,
+                            double partCostMm2);
 
 }  // namespace multidir::core::detail

@@ -3,6 +3,8 @@
 // may end with more J_G than a 5-DOF arm's plan, which pays nothing per region. The choice below keeps the
 // price per part and adds the bound: the cheapest plan, priced, among those with no more J_G apart than the
 // 5-DOF plan printed apart (which is always one of them).
+#include "search/apart_search.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -11,7 +13,6 @@
 #include "multidir/core/apart/apart_plan.h"
 #include "multidir/core/search/plan_from_planes.h"
 #include "search/apart_choice.h"
-#include "search/apart_search.h"
 #include "search/run_decomposition.h"
 
 namespace multidir::core::detail {
@@ -74,14 +75,14 @@ int chooseApartCandidate(const std::vector<ApartCandidate>& candidates, double p
   return chosen;
 }
 
-std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& searchBest,
-                            const ApartCandidate& bound, double partCostMm2) {
+std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& searchBest, const ApartCandidate& bound,
+                            double partCostMm2) {
   std::string note = chosen.name + " (J_G apart " + mm2(chosen.jgApartMm2) + " mm^2, " + partsText(chosen.parts) +
                      "; priced " + mm2(pricedMm2(chosen, partCostMm2)) + " mm^2 at " + mm2(partCostMm2) +
                      " mm^2 per part after the first) is the cheapest plan with no more J_G apart than ";
-  note += chosen.name == bound.name ? "itself, the bound"
-                                    : "the 5-DOF plan printed apart (" + mm2(bound.jgApartMm2) + " mm^2, " +
-                                          partsText(bound.parts) + ")";
+  note += chosen.name == bound.name
+              ? "itself, the bound"
+              : "the 5-DOF plan printed apart (" + mm2(bound.jgApartMm2) + " mm^2, " + partsText(bound.parts) + ")";
   if (chosen.name == searchBest.name) return note;
   note += ": the apart search's best (J_G apart " + mm2(searchBest.jgApartMm2) + " mm^2, " +
           partsText(searchBest.parts) + ") ";
@@ -98,15 +99,16 @@ Result<Decomposition> searchedAndPolished(const TriangleMesh& model, const Machi
   if (needsProxy(model, options))
     return runProxyDecomposition(
         model, machine, options, job, [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
-          return Result<Decomposition>(
-              polishedIfAsked(mesh, machine, o, runDecomposition(mesh, machine, o, job, progress, p), job, progress, p));
+          return Result<Decomposition>(polishedIfAsked(
+              mesh, machine, o, runDecomposition(mesh, machine, o, job, progress, p), job, progress, p));
         });
   return polishedIfAsked(model, machine, options, runDecomposition(model, machine, options, job, progress), job,
                          progress);
 }
 
-Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
-                                     JobContext& job, const SearchProgressSink& progress) {
+Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine,
+                                     const SearchOptions& options, JobContext& job,
+                                     const SearchProgressSink& progress) {
   const auto start = std::chrono::steady_clock::now();
   // The apart search's plans: its best (polished) and, on the full mesh, its best for every other number of cuts.
   std::vector<Decomposition> plans;
@@ -138,17 +140,18 @@ Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpe
   plans.push_back(std::move(boundPlan));
   std::vector<ApartCandidate> candidates;
   for (std::size_t i = 0; i < plans.size(); ++i) {
-    const std::string name = i == 0                  ? "the apart search's best"
-                             : i + 1 == plans.size() ? "the 5-DOF plan printed apart"
-                                                     : "the apart search's plan with " +
-                                                           cutsText(plans[i].clippingPlanes.size());
+    const std::string name = i == 0 ? "the apart search's best"
+                             : i + 1 == plans.size()
+                                 ? "the 5-DOF plan printed apart"
+                                 : "the apart search's plan with " + cutsText(plans[i].clippingPlanes.size());
     Result<ApartCandidate> measured = measuredApart(plans[i], options, name);
     if (!measured.ok()) return measured.error();
     candidates.push_back(std::move(*measured));
   }
   const ApartCandidate bound = candidates.back();
   // Never -1: the 5-DOF plan printed apart keeps its own bound.
-  const auto chosenPlan = static_cast<std::size_t>(chooseApartCandidate(candidates, options.partCostMm2, bound.jgApartMm2));
+  const auto chosenPlan =
+      static_cast<std::size_t>(chooseApartCandidate(candidates, options.partCostMm2, bound.jgApartMm2));
   ApartCandidate chosenCandidate = candidates[chosenPlan];
 
   Decomposition plan = std::move(plans[chosenPlan]);
@@ -166,8 +169,8 @@ Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpe
   }
   plan.cancelled = job.isCancelled() || fiveDofCancelled;
   plan.statistics.notes.push_back(apartChoiceNote(chosenCandidate, candidates.front(), bound, options.partCostMm2));
-  plan.statistics.notes.push_back("the apart search took " + mm2(searchSeconds) + " s, the 5-DOF search for the bound " +
-                                  mm2(fiveDofSeconds) + " s");
+  plan.statistics.notes.push_back("the apart search took " + mm2(searchSeconds) +
+                                  " s, the 5-DOF search for the bound " + mm2(fiveDofSeconds) + " s");
   plan.statistics.seconds = secondsSince(start);
   return plan;
 }

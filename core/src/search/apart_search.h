@@ -6,18 +6,19 @@
 
 namespace multidir::core::detail {
 
-// A checked model's plan for the same model's search and polish on any machine, as decompose() makes it,
-// without the job's final progress (the proxy search for a model of more than options.proxyFaces faces).
+// decompose()'s search and polish for checked inputs, on any machine (on a proxy for a model of more than
+// options.proxyFaces faces), without the job's final progress: the apart machine runs two of them.
 Result<Decomposition> searchedAndPolished(const TriangleMesh& model, const MachineSpec& machine,
                                           const SearchOptions& options, JobContext& job,
                                           const SearchProgressSink& progress);
 
 // The apart machine's plan: the apart search's plans (its best, polished, and its best for every number of
-// cuts, as found and without its unpaid planes) and the model's default 5-DOF plan (MachineSpec's defaults with the same up, and the same options)
-// cut again on the apart machine; of those whose J_G apart (core::apartPlan) is at most that 5-DOF plan's,
-// the one with the least J_G apart + options.partCostMm2 x (parts - 1). statistics.notes says which and why.
+// cuts, as found and without its unpaid planes) and the model's default 5-DOF plan (MachineSpec's defaults
+// with the same up, and the same options) cut again on the apart machine; of those whose J_G apart
+// (core::apartPlan) is at most that 5-DOF plan's, the one with the least J_G apart + options.partCostMm2 x
+// (parts - 1). statistics.notes says which and why.
 // A cancelled search returns the best plan so far, with `cancelled` set.
-Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
-                                     JobContext& job, const SearchProgressSink& progress);
+Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine,
+                                     const SearchOptions& options, JobContext& job, const SearchProgressSink& progress);
 
 }  // namespace multidir::core::detail

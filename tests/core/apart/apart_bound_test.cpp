@@ -52,16 +52,15 @@ TEST(ApartSearch, ScrewdriverApartHasNoMoreJgThanItsFiveDofPlan) { expectApartNo
 TEST(ApartSearch, TheKittensOwnApartPlanIsKeptWhereItHasLessJgAndCostsLess) {
   // The kitten apart: J_G 0 with 3 parts; its 5-DOF plan printed apart has J_G > 0 with as many parts.
   const Decomposition plan = searched("kitten.off", MachineKind::Apart);
-  EXPECT_TRUE(std::any_of(plan.statistics.notes.begin(), plan.statistics.notes.end(), [](const std::string& note) {
-    return note.rfind("the apart search's best (", 0) == 0;
-  }));
+  EXPECT_TRUE(std::any_of(plan.statistics.notes.begin(), plan.statistics.notes.end(),
+                          [](const std::string& note) { return note.rfind("the apart search's best (", 0) == 0; }));
 }
 
 TEST(ApartChoice, TheCheapestPricedPlanAmongThoseThatKeepTheBoundIsChosen) {
   const std::vector<ApartCandidate> candidates{
-      {"the apart search's best", 100.0, 5},         // priced at 240: 100 + 4 x 240 = 1,060
+      {"the apart search's best", 100.0, 5},              // priced at 240: 100 + 4 x 240 = 1,060
       {"the apart search's plan with 1 cuts", 300.0, 2},  // 540, but more J_G than the bound
-      {"the 5-DOF plan printed apart", 200.0, 8},    // the bound; 1,880
+      {"the 5-DOF plan printed apart", 200.0, 8},         // the bound; 1,880
   };
   EXPECT_EQ(chooseApartCandidate(candidates, 240.0, candidates.back().jgApartMm2), 0);
   // Parts free: the least J_G under the bound.
