@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "multidir/core/common/result.h"
+#include "multidir/robot/robot_program.h"
 
 namespace multidir::cli {
 
@@ -24,7 +25,7 @@ core::Result<StepScript> parseStepScript(const std::string& text, const std::str
 // What the pause and resume programs need from the cell (OUT/cell.json).
 struct PauseGeometry {
   std::array<double, 3> nozzleAxis{0.0, 0.0, 1.0};  // unit, base frame, from the tip up into the extruder
-  double liftMm = 30.0;                             // the platform backs off the nozzle this far, as at a step's ends
+  double liftMm = robot::kStepApproachLiftMm;       // the platform backs off the nozzle this far, as at a step's ends
   double travelSpeedMmPerS = 200.0;
   double toolAccelMmPerS2 = 1200.0;
 };

@@ -28,7 +28,7 @@ using namespace std::chrono_literals;
 
 std::atomic<int> g_robotInterrupts{0};
 extern "C" void onRobotRunSignal(int) { g_robotInterrupts.fetch_add(1); }
-// Ctrl-Z (SIGTSTP): an odd count asks for a pause, an even one for the resume (docs/robot-cell.md, "Pause").
+// Ctrl-Z (SIGTSTP): while a step runs, a pause; while paused, the resume (docs/robot-cell.md, "Pause and resume").
 std::atomic<int> g_robotPauses{0};
 extern "C" void onRobotPauseSignal(int) { g_robotPauses.fetch_add(1); }
 
@@ -343,12 +343,12 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
       }
       started = started || now.programStarts > before.programStarts;
       if (now.programEnds > before.programEnds && now.atRest) break;
-      if (g_robotPauses.load() != pausesSeen) {
+      if (g_robotPauses.load() != pausesSeen) {  // Ctrl-Z while the step runs: pause
         pausesSeen = g_robotPauses.load();
-        if (pausesSeen % 2 == 1 && !job.canPause)
+        if (!job.canPause)
           logLine(out, "cannot pause: " + job.whyNoPause + "; Ctrl-C stops the run");
         else
-          pausePending = pausesSeen % 2 == 1;
+          pausePending = true;
       }
       if (pausePending && started && Clock::now() >= nextPauseTry) {
         const PauseOutcome paused = pauseAtSafePoint(link, job, step, layerLine, out);
@@ -371,7 +371,7 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
                                   (still.linkLost ? " (the link to the robot is lost: " + still.linkProblem + ")" : "") +
                                   " (robot mode " + still.robotMode + ", safety mode " + still.safetyMode + ")",
                               false);
-          if (g_robotPauses.load() % 2 == 0) break;
+          if (g_robotPauses.load() != pausesSeen) break;  // Ctrl-Z again: resume
         }
         pausesSeen = g_robotPauses.load();
         const std::string resumed = resumeProgram(paused.script, job.pause, paused.movel);

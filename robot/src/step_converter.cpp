@@ -22,7 +22,7 @@ constexpr double kTemperatureFullScaleC = 300.0;
 // M109 waits until analog in 0 reads this much below the set point.
 constexpr double kHeatWaitBelowC = 2.0;
 // Before the first move and after the last, the platform stands this far from the nozzle along its axis.
-constexpr double kRetreatMm = 30.0;
+constexpr double kRetreatMm = kStepApproachLiftMm;
 
 struct Converted {
   int line = 0;
