@@ -89,6 +89,10 @@ double segmentDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, Dista
   return std::min({f1, f2, distance(a), distance(b)});
 }
 
+// Beyond this distance of a body's bounding sphere a link's clearance from the body is that distance (a lower
+// bound, enough for every use: a collision is at zero, the motion bound between samples is a few mm).
+constexpr double kExactWithinMm = 50.0;
+
 }  // namespace
 
 std::array<ArmLinkSolid, kArmLinkCount> armLinkSolids(const ArmModel& arm, const Joints& q) {
@@ -120,6 +124,10 @@ ArmClearance armClearance(const Cell& cell, const Joints& q) {
       const double sphere = 0.5 * box.sizeMm.norm();
       const double bound = pointToSegment(box.pose.translation(), l.fromMm, l.toMm) - sphere - l.radiusMm;
       if (bound >= least.mm) continue;
+      if (bound > kExactWithinMm) {
+        consider(bound, i, box.name);
+        continue;
+      }
       const Eigen::Isometry3d baseToBox = box.pose.inverse();
       consider(segmentDistance(l.fromMm, l.toMm,
                                [&](const Eigen::Vector3d& p) { return pointToBox(box, baseToBox, p); }) -
@@ -131,6 +139,10 @@ ArmClearance armClearance(const Cell& cell, const Joints& q) {
       const double sphere = std::hypot(0.5 * c.lengthMm, c.radiusMm);
       const double bound = pointToSegment(centre, l.fromMm, l.toMm) - sphere - l.radiusMm;
       if (bound >= least.mm) continue;
+      if (bound > kExactWithinMm) {
+        consider(bound, i, c.name);
+        continue;
+      }
       consider(segmentDistance(l.fromMm, l.toMm, [&](const Eigen::Vector3d& p) { return pointToCylinder(c, p); }) -
                    l.radiusMm,
                i, c.name);

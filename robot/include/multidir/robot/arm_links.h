@@ -31,7 +31,8 @@ constexpr int kArmLinkCount = 5;
 std::array<ArmLinkSolid, kArmLinkCount> armLinkSolids(const ArmModel& arm, const Joints& joints);
 
 // The least distance between the links' surfaces and the cell's bodies (boxes and cylinders) or the table plane
-// raised by margins.tableClearanceMm; at or below zero they touch. `link` indexes armLinkSolids, `body` names the
+// raised by margins.tableClearanceMm; at or below zero they touch. Exact within 50 mm of a body's bounding sphere;
+// farther, the distance to that sphere (a lower bound). `link` indexes armLinkSolids, `body` names the
 // body ("the table" for the plane).
 struct ArmClearance {
   double mm = 0.0;
