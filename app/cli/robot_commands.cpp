@@ -1,10 +1,14 @@
 #include "robot_commands.h"
 
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
 #include "cli_args.h"
+#include "multidir/assembly/picture.h"
+#include "multidir/core/common/atomic_file.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/robot/cell.h"
 #include "multidir/robot/reach_map.h"
@@ -123,6 +127,21 @@ int cellReach(const std::vector<std::string>& args, std::ostream& out) {
     const auto written = robot::writeReachPly(map.value(), parsed.value("-o", ""));
     if (!written) throw FileError(command + ": " + written.error().describe());
     out << "  map saved in " << parsed.value("-o", "") << "\n";
+    // Beside the PLY: the slice through the best position as a PNG (docs/robot-cell.md, "Reach map").
+    const robot::ReachSlice slice = robot::reachSlice(map.value(), options.gridMm);
+    assembly::Image image;
+    image.width = slice.width;
+    image.height = slice.height;
+    image.rgb = slice.rgb;
+    const std::vector<std::uint8_t> png = assembly::encodePng(image);
+    const std::string pngPath = std::filesystem::path(parsed.value("-o", "")).replace_extension(".png").string();
+    const auto pictured = core::writeFileAtomically(pngPath, pngPath, [&](std::ostream& stream) -> core::Status {
+      stream.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+      return core::Done{};
+    });
+    if (!pictured) throw FileError(command + ": " + pictured.error().describe());
+    out << "  slice at z " << slice.zMm << " mm (through the best position, seen from above) saved in " << pngPath
+        << "\n";
   }
   return kExitOk;
 }

@@ -1,5 +1,6 @@
 #include "run_robot.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -13,7 +14,9 @@
 #include <thread>
 
 #include "multidir/hardware/ur_link.h"
+#include "multidir/robot/cell.h"
 #include "multidir/slicing/estimates.h"
+#include "robot_pause.h"
 #include "run_command.h"
 
 namespace multidir::cli {
@@ -25,6 +28,9 @@ using namespace std::chrono_literals;
 
 std::atomic<int> g_robotInterrupts{0};
 extern "C" void onRobotRunSignal(int) { g_robotInterrupts.fetch_add(1); }
+// Ctrl-Z (SIGTSTP): while a step runs, a pause; while paused, the resume (docs/robot-cell.md, "Pause and resume").
+std::atomic<int> g_robotPauses{0};
+extern "C" void onRobotPauseSignal(int) { g_robotPauses.fetch_add(1); }
 
 struct RobotStep {
   int step = 0;
@@ -36,6 +42,10 @@ struct RobotStep {
 struct RobotJob {
   std::string robot;
   std::vector<RobotStep> steps;
+  // From the job's copy of its cell (cell.json): what a pause needs; absent, the run cannot pause.
+  bool canPause = false;
+  std::string whyNoPause;
+  PauseGeometry pause;
 };
 
 std::string clockText() {
@@ -101,6 +111,18 @@ RobotJob readRobotJob(const std::string& folderText) {
     step.script = readText(program);
     job.steps.push_back(std::move(step));
   }
+  const std::string cellName = json.value("cell", "");
+  const fs::path cellFile = base / cellName;
+  if (cellName.empty() || cellName.find('/') != std::string::npos || !fs::is_regular_file(cellFile)) {
+    job.whyNoPause = "the job has no copy of its cell (cell.json), which gives the nozzle axis to lift along";
+  } else if (auto cell = robot::parseCell(cellFile); !cell) {
+    job.whyNoPause = "its cell.json cannot be read: " + cell.error().describe();
+  } else {
+    job.canPause = true;
+    job.pause.nozzleAxis = {cell->nozzleAxis.x(), cell->nozzleAxis.y(), cell->nozzleAxis.z()};
+    job.pause.travelSpeedMmPerS = cell->motion.travelSpeedMmPerS;
+    job.pause.toolAccelMmPerS2 = cell->motion.toolAccelMmPerS2;
+  }
   return job;
 }
 
@@ -109,6 +131,67 @@ std::string describeMessages(const std::vector<hardware::UrLinkMessage>& message
   for (const hardware::UrLinkMessage& m : messages)
     if (m.kind != hardware::UrLinkMessage::Kind::Text) text += (text.empty() ? "" : "; ") + m.describe();
   return text;
+}
+
+// A pause asked for during a step: the arm brought to a safe point (docs/robot-cell.md, "Pause and resume").
+struct PauseOutcome {
+  enum class Kind { Paused, NotInAMove, Failed } kind = Kind::Failed;
+  std::string why;    // Failed
+  StepScript script;  // Paused: the step's program read, and the movel after which it resumes
+  int movel = -1;
+};
+
+// The dashboard's pause (the arm brakes on its way, the program holds), then, from where the arm stands, the
+// movel under way: the pause program finishes it, stops the extruder and lifts the platform off the nozzle.
+// When the arm is in a joint move (no movel under way), the program plays on and the pause is tried again later.
+PauseOutcome pauseAtSafePoint(hardware::UrLink& link, const RobotJob& job, const RobotStep& step, int layerLine,
+                              std::ostream& out) {
+  PauseOutcome outcome;
+  auto script = parseStepScript(step.script, step.program);
+  if (!script) return {PauseOutcome::Kind::Failed, "cannot pause: " + script.error().describe(), {}, -1};
+  outcome.script = std::move(script.value());
+  if (auto reply = link.dashboard("pause"); !reply || reply.value() != "Pausing program")
+    return {PauseOutcome::Kind::Failed,
+            "the robot did not pause (" + (reply ? reply.value() : reply.error().describe()) + ")", {}, -1};
+  // Wait for the arm to stand still.
+  const auto deadline = Clock::now() + 5s;
+  hardware::UrLinkStatus now = link.status();
+  while (Clock::now() < deadline && !(now.programState == "PAUSED" && now.atRest)) {
+    std::this_thread::sleep_for(5ms);
+    now = link.status();
+  }
+  if (!(now.programState == "PAUSED" && now.atRest))
+    return {PauseOutcome::Kind::Failed, "the arm did not come to rest after the pause (program " + now.programState + ")",
+            {}, -1};
+  // Where it stands, on the program's movels: within 0.2 mm (the arm brakes on its path).
+  const std::array<double, 3> tcpMm = {now.tcp[0] * 1000.0, now.tcp[1] * 1000.0, now.tcp[2] * 1000.0};
+  outcome.movel = movelUnderWay(outcome.script, job.pause, tcpMm, 0.2, layerLine);
+  if (outcome.movel < 0) {
+    (void)link.dashboard("play");
+    outcome.kind = PauseOutcome::Kind::NotInAMove;
+    return outcome;
+  }
+  if (core::Status sent = link.sendProgram(pauseProgram(outcome.script, job.pause, outcome.movel)); !sent)
+    return {PauseOutcome::Kind::Failed, "the pause program could not be sent: " + sent.error().describe(), {}, -1};
+  // It runs to its end: the dashboard names the last program with its state.
+  const auto until = Clock::now() + 120s;
+  while (Clock::now() < until) {
+    std::this_thread::sleep_for(20ms);
+    const hardware::UrLinkStatus s = link.status();
+    if (s.safetyMode != "NORMAL" || s.robotMode != "RUNNING" || s.linkLost)
+      return {PauseOutcome::Kind::Failed, "the pause program did not finish (robot mode " + s.robotMode +
+                                              ", safety mode " + s.safetyMode + ")", {}, -1};
+    auto state = link.dashboard("programState");
+    if (state && state.value() == "STOPPED multidir_pause" && s.atRest) {
+      logLine(out, "paused at a safe point: step " + std::to_string(step.step) + " after movel " +
+                       std::to_string(outcome.movel + 1) + " of " + std::to_string(outcome.script.movels.size()) +
+                       " (the extruder stopped, the platform " + std::to_string(static_cast<int>(job.pause.liftMm)) +
+                       " mm off the nozzle); Ctrl-Z again (kill -TSTP) resumes, Ctrl-C stops");
+      outcome.kind = PauseOutcome::Kind::Paused;
+      return outcome;
+    }
+  }
+  return {PauseOutcome::Kind::Failed, "the pause program did not finish within 120 s", {}, -1};
 }
 
 }  // namespace
@@ -135,17 +218,20 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
   }
 
   g_robotInterrupts = 0;
+  g_robotPauses = 0;
+  auto previousTstp = std::signal(SIGTSTP, onRobotPauseSignal);
   auto previousInt = std::signal(SIGINT, onRobotRunSignal);
   auto previousTerm = std::signal(SIGTERM, onRobotRunSignal);
   auto previousHup = std::signal(SIGHUP, onRobotRunSignal);
   struct Restore {
-    void (*i)(int), (*t)(int), (*h)(int);
+    void (*i)(int), (*t)(int), (*h)(int), (*z)(int);
     ~Restore() {
       std::signal(SIGINT, i);
       std::signal(SIGTERM, t);
       std::signal(SIGHUP, h);
+      std::signal(SIGTSTP, z);
     }
-  } restore{previousInt, previousTerm, previousHup};
+  } restore{previousInt, previousTerm, previousHup, previousTstp};
 
   const std::string where = settings->host + ":" + std::to_string(settings->dashboardPort);
   hardware::UrLink link(*settings);
@@ -198,7 +284,7 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
     const RobotStep& step = job.steps[static_cast<std::size_t>(k - 1)];
     remainingAfter -= step.seconds;
     (void)link.takeMessages();
-    const hardware::UrLinkStatus before = link.status();
+    hardware::UrLinkStatus before = link.status();
     logLine(out, "step " + std::to_string(k) + "/" + std::to_string(steps) + ": sending " + step.program);
     if (core::Status sent = link.sendProgram(step.script); !sent)
       return stopAndEnd(k, "the program could not be sent: " + sent.error().describe(), false);
@@ -206,13 +292,23 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
     bool started = false;
     auto nextProgress = Clock::now() + 1s;
     std::string lastProgress;
-    // The robot's messages since the last call: its texts logged, its faults described ("" when none).
+    // The robot's messages since the last call: its texts logged, its faults described ("" when none). The
+    // program's layer messages say where it is: the line of the last one bounds where a pause can have landed.
+    int layerLine = 0;
     auto takeFaults = [&] {
       const std::vector<hardware::UrLinkMessage> messages = link.takeMessages();
       for (const hardware::UrLinkMessage& m : messages)
-        if (m.kind == hardware::UrLinkMessage::Kind::Text) logLine(out, "robot: " + m.describe());
+        if (m.kind == hardware::UrLinkMessage::Kind::Text) {
+          logLine(out, "robot: " + m.describe());
+          const std::size_t at = step.script.find("textmsg(\"" + m.text + "\")");
+          if (m.text.rfind("multidir step ", 0) == 0 && at != std::string::npos)
+            layerLine = static_cast<int>(std::count(step.script.begin(), step.script.begin() + static_cast<long>(at), '\n'));
+        }
       return describeMessages(messages);
     };
+    int pausesSeen = g_robotPauses.load();
+    bool pausePending = false;
+    auto nextPauseTry = Clock::now();
     while (true) {
       std::this_thread::sleep_for(10ms);
       if (g_robotInterrupts.load() > 0) return stopAndEnd(k, "stopped by Ctrl-C", true);
@@ -247,6 +343,46 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
       }
       started = started || now.programStarts > before.programStarts;
       if (now.programEnds > before.programEnds && now.atRest) break;
+      if (g_robotPauses.load() != pausesSeen) {  // Ctrl-Z while the step runs: pause
+        pausesSeen = g_robotPauses.load();
+        if (!job.canPause)
+          logLine(out, "cannot pause: " + job.whyNoPause + "; Ctrl-C stops the run");
+        else
+          pausePending = true;
+      }
+      if (pausePending && started && Clock::now() >= nextPauseTry) {
+        const PauseOutcome paused = pauseAtSafePoint(link, job, step, layerLine, out);
+        if (paused.kind == PauseOutcome::Kind::NotInAMove) {
+          nextPauseTry = Clock::now() + 300ms;  // in a joint move (home, the approach): again at the next movel
+          continue;
+        }
+        pausePending = false;
+        if (paused.kind == PauseOutcome::Kind::Failed) return stopAndEnd(k, paused.why, false);
+        // Paused: wait for the resume, a stop or a fault.
+        while (true) {
+          std::this_thread::sleep_for(10ms);
+          if (g_robotInterrupts.load() > 0) return stopAndEnd(k, "stopped by Ctrl-C while paused", true);
+          const std::string words = takeFaults();
+          const hardware::UrLinkStatus still = link.status();
+          if (!words.empty() || still.linkLost || still.safetyMode != "NORMAL" || still.robotMode != "RUNNING")
+            return stopAndEnd(k,
+                              "while paused, " +
+                                  (words.empty() ? std::string("the robot left normal operation") : "the robot reports: " + words) +
+                                  (still.linkLost ? " (the link to the robot is lost: " + still.linkProblem + ")" : "") +
+                                  " (robot mode " + still.robotMode + ", safety mode " + still.safetyMode + ")",
+                              false);
+          if (g_robotPauses.load() != pausesSeen) break;  // Ctrl-Z again: resume
+        }
+        pausesSeen = g_robotPauses.load();
+        const std::string resumed = resumeProgram(paused.script, job.pause, paused.movel);
+        before = link.status();
+        logLine(out, "resuming step " + std::to_string(k) + " after movel " + std::to_string(paused.movel + 1) +
+                         ": back down to the nozzle, then the rest of " + step.program);
+        if (core::Status sent = link.sendProgram(resumed); !sent)
+          return stopAndEnd(k, "the resumed program could not be sent: " + sent.error().describe(), false);
+        started = false;
+        continue;
+      }
       if (Clock::now() >= nextProgress && started) {
         nextProgress = Clock::now() + 1s;
         const double elapsed = now.controllerTime - startedAt;

@@ -138,10 +138,9 @@ core::Status writeReachPly(const ReachMap& map, const std::filesystem::path& pat
                      "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
   char line[160];
   for (const auto& p : map.points) {
-    const int red = static_cast<int>(std::lround(255 * (1.0 - p.score)));
-    const int blue = static_cast<int>(std::lround(255 * p.score));
-    std::snprintf(line, sizeof line, "%.1f %.1f %.1f %.4f %d 0 %d\n", p.nozzleTipMm.x(), p.nozzleTipMm.y(),
-                  p.nozzleTipMm.z(), p.score, red, blue);
+    const auto colour = reachColour(p.score);
+    std::snprintf(line, sizeof line, "%.1f %.1f %.1f %.4f %d %d %d\n", p.nozzleTipMm.x(), p.nozzleTipMm.y(),
+                  p.nozzleTipMm.z(), p.score, colour[0], colour[1], colour[2]);
     text += line;
   }
   return core::writeTextFileAtomically(path.string(), text);

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "gcode_events.h"
+#include "multidir/robot/arm_links.h"
 #include "multidir/slicing/gcode_program.h"
 
 namespace multidir::robot::detail {
@@ -21,7 +22,7 @@ constexpr double kTemperatureFullScaleC = 300.0;
 // M109 waits until analog in 0 reads this much below the set point.
 constexpr double kHeatWaitBelowC = 2.0;
 // Before the first move and after the last, the platform stands this far from the nozzle along its axis.
-constexpr double kRetreatMm = 30.0;
+constexpr double kRetreatMm = kStepApproachLiftMm;
 
 struct Converted {
   int line = 0;
@@ -216,6 +217,42 @@ Eigen::Isometry3d poseWithTurn(const Cell& cell, const Eigen::Isometry3d& platfo
   return fileToBase * platformToFile;
 }
 
+// Below this much path between two poses the links' check stops splitting (docs/robot-cell.md, "Collisions").
+constexpr double kFinestLinkSplitMm = 0.05;
+
+std::string describeArmHit(const Cell& cell, const Joints& q, const ArmClearance& c, const Eigen::Vector3d& f) {
+  const std::string link = armLinkSolids(cell.arm, q)[static_cast<std::size_t>(c.link)].name;
+  const std::string at = " with the nozzle at the part's (" + fixed(f.x(), 2) + ", " + fixed(f.y(), 2) + ", " +
+                         fixed(f.z(), 2) + ")";
+  if (c.body == "the table")
+    return "the arm's " + link + " would come within " + fixed(cell.margins.tableClearanceMm, 1) +
+           " mm of the table" + at + "; move the nozzle higher (nozzleTipMm) or the table lower";
+  return "the arm's " + link + " would hit the extruder's body \"" + c.body + "\"" + at +
+         "; move the body or the nozzle (multidir cell reach), or turn the step another way";
+}
+
+// The arm's links between two poses of a straight move: clear when the clearances at the ends add up to more than
+// the most any link point can move between them (armMotionBoundMm), else split the path in two and look again,
+// down to kFinestLinkSplitMm. The first hit, or an empty string.
+std::string armLinksBetween(const Cell& cell, const Eigen::Isometry3d& platformToFile, const Eigen::Matrix3d& turn,
+                            const Eigen::Isometry3d& platformToFlange, int branch, const Eigen::Vector3d& fa,
+                            const Joints& qa, const ArmClearance& ca, const Eigen::Vector3d& fb, const Joints& qb,
+                            const ArmClearance& cb) {
+  if (cb.mm <= 0.0) return describeArmHit(cell, qb, cb, fb);
+  if (ca.mm + cb.mm > armMotionBoundMm(cell.arm, qa, qb)) return {};
+  if ((fb - fa).norm() < kFinestLinkSplitMm) return {};
+  const Eigen::Vector3d fm = 0.5 * (fa + fb);
+  Joints qm{};
+  if (solveOnBranch(cell.arm, poseWithTurn(cell, platformToFile, turn, fm) * platformToFlange, branch, qa, qm) !=
+      Solve::Ok)
+    return {};  // the move's own samples report what is out of reach
+  const ArmClearance cm = armClearance(cell, qm);
+  if (cm.mm <= 0.0) return describeArmHit(cell, qm, cm, fm);
+  std::string hit = armLinksBetween(cell, platformToFile, turn, platformToFlange, branch, fa, qa, ca, fm, qm, cm);
+  if (hit.empty()) hit = armLinksBetween(cell, platformToFile, turn, platformToFlange, branch, fm, qm, cm, fb, qb, cb);
+  return hit;
+}
+
 }  // namespace
 
 Eigen::Isometry3d platformPoseFor(const Cell& cell, const Eigen::Isometry3d& platformToFile, double rotationRad,
@@ -292,6 +329,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   // branch within the limits, the least margin (each over the cell's minimum) the largest.
   double bestScore = -std::numeric_limits<double>::infinity();
   int bestReached = -1;
+  bool bestClear = false;
   double bestRotation = 0.0;
   int bestBranch = 0;
   const int rotations = std::max(1, static_cast<int>(std::lround(360.0 / options.rotationStepDegrees)));
@@ -299,6 +337,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
     const double rotation = r * options.rotationStepDegrees * kDeg;
     for (int branch = 0; branch < 8; ++branch) {
       int reached = 0;
+      int clearCorners = 0;
       double score = std::numeric_limits<double>::infinity();
       for (int c = 0; c < 8; ++c) {
         const Eigen::Vector3d corner = bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
@@ -307,12 +346,17 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
         if (solveOnBranch(arm, flange, branch, cell.home, q) != Solve::Ok) continue;
         if (!armOnTable(cell, q).empty()) continue;  // a configuration with its elbow under the table
         ++reached;
+        if (armClearance(cell, q).mm > 0.0) ++clearCorners;  // no link in the extruder's body or on the table
         const double reach = reachMarginMm(arm, q) / std::max(margins.minReachMm, 1.0);
         const double wrist = wristDegrees(q) / std::max(margins.minWristDegrees, 1.0);
         score = std::min({score, reach, wrist});
       }
-      if (reached == 8 ? (bestReached < 8 || score > bestScore) : (bestReached < 8 && reached > bestReached)) {
+      // Reaching every corner first, then the arm's links clear of the bodies at every corner, then the margin.
+      const bool clear = reached == 8 && clearCorners == 8;
+      if (reached == 8 ? (bestReached < 8 || (clear && !bestClear) || (clear == bestClear && score > bestScore))
+                       : (bestReached < 8 && reached > bestReached)) {
         bestReached = reached;
+        bestClear = clear;
         bestScore = reached == 8 ? score : bestScore;
         bestRotation = rotation;
         bestBranch = branch;
@@ -430,6 +474,15 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
       return out;
   }
   const Joints approachJoints = joints;
+  ArmClearance lastClearance = armClearance(cell, joints);
+  {
+    std::string hit = armOnTable(cell, joints);
+    if (hit.empty() && lastClearance.mm <= 0.0) hit = describeArmHit(cell, joints, lastClearance, approach);
+    if (!hit.empty()) {
+      refuse(moves.front()->line, hit);
+      return out;
+    }
+  }
   Eigen::Vector3d current = approach;
   std::size_t nextEvent = 0;
   std::size_t nextLayer = 0;
@@ -547,6 +600,13 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
       }
       std::string hit = collisionAt(f, flange);
       if (hit.empty()) hit = armOnTable(cell, q);
+      if (hit.empty()) {
+        const ArmClearance clearance = armClearance(cell, q);
+        const Eigen::Vector3d before = current + (target - current) * (static_cast<double>(s - 1) / samples);
+        hit = armLinksBetween(cell, input.platformToFile, nozzleTurn, platformToFlange, bestBranch, before, joints,
+                              lastClearance, f, q, clearance);
+        lastClearance = clearance;
+      }
       if (!hit.empty()) {
         refuse(move.line, hit);
         return out;
@@ -597,6 +657,13 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   Joints retreatJoints{};
   if (solveOnBranch(arm, back.tcp * platformToFlange, bestBranch, joints, retreatJoints) != Solve::Ok) {
     refuse(back.line, "the platform cannot back " + fixed(kRetreatMm, 0) + " mm off the nozzle after the step");
+    return out;
+  }
+  const std::string retreatHit =
+      armLinksBetween(cell, input.platformToFile, nozzleTurn, platformToFlange, bestBranch, current, joints,
+                      lastClearance, retreat, retreatJoints, armClearance(cell, retreatJoints));
+  if (!retreatHit.empty()) {
+    refuse(back.line, retreatHit);
     return out;
   }
   converted.push_back(std::move(back));

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -16,6 +17,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -184,7 +186,8 @@ struct KittenOnTheCell {
   std::unique_ptr<hw::UrSimulator> simulator;
 };
 
-void runKittenOnTheCell(const std::string& scratch, KittenOnTheCell& kitten) {
+// The kitten's job converted for the cell and the simulator started (1000 times real time, its trace kept).
+void prepareKittenOnTheCell(const std::string& scratch, KittenOnTheCell& kitten) {
   const std::string dir = multidir::test::scratchDirectory(scratch);
   kitten.dir = dir;
   ASSERT_EQ(runCli("decompose '" + multidir::test::sharedModelPath("kitten.off") +
@@ -205,6 +208,11 @@ void runKittenOnTheCell(const std::string& scratch, KittenOnTheCell& kitten) {
   options.cellPath = kitten.cellPath;
   kitten.simulator = startSimulator(options);
   ASSERT_TRUE(kitten.simulator);
+}
+
+void runKittenOnTheCell(const std::string& scratch, KittenOnTheCell& kitten) {
+  ASSERT_NO_FATAL_FAILURE(prepareKittenOnTheCell(scratch, kitten));
+  const std::string& dir = kitten.dir;
   const CliRun run = runCli(
       "run " + dir + "/out --robot 127.0.0.1:" + std::to_string(kitten.simulator->dashboardPort()), dir, "timeout 240");
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
@@ -306,6 +314,183 @@ TEST(CliRunRobot, CtrlCStopsTheProgramAndWaitsForTheRobotToConfirmIt) {
   for (const hw::UrDashboardRecord& record : simulator->dashboardLog())
     stopSent = stopSent || (record.command == "stop" && record.reply == "Stopped");
   EXPECT_TRUE(stopSent);
+}
+
+// A step's program read as its movel: the nozzle's point in the platform's (the part's) frame at each movel's
+// end, and whether the extruder runs during the movel (analog out 0 in effect above 0).
+struct NozzleSegment {
+  Eigen::Vector3d from, to;
+  bool extrudes;
+  double tickTravelMm;  // the most the nozzle moves along it in two 8 ms ticks of the controller, plus 0.05 mm
+};
+
+std::vector<NozzleSegment> nozzleSegments(const std::string& script, const Eigen::Vector3d& nozzleTipMm) {
+  std::vector<NozzleSegment> segments;
+  std::istringstream lines(script);
+  double analog0 = 0.0;
+  bool first = true;
+  Eigen::Vector3d previous = Eigen::Vector3d::Zero();
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("set_standard_analog_out(0, ") != std::string::npos)
+      analog0 = std::stod(line.substr(line.find("(0, ") + 4));
+    const std::size_t at = line.find("movel(p[");
+    if (at == std::string::npos) continue;
+    std::string numbers = line.substr(at + 8, line.find(']') - at - 8);
+    std::replace(numbers.begin(), numbers.end(), ',', ' ');
+    std::istringstream in(numbers);
+    double v[6];
+    for (double& x : v) in >> x;
+    const Eigen::Vector3d rv(v[3], v[4], v[5]);
+    Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
+    if (rv.norm() > 0.0) tcp.linear() = Eigen::AngleAxisd(rv.norm(), rv.normalized()).toRotationMatrix();
+    tcp.translation() = Eigen::Vector3d(v[0], v[1], v[2]) * 1000.0;
+    const Eigen::Vector3d nozzle = tcp.inverse() * nozzleTipMm;
+    const double speedMmPerS = 1000.0 * std::stod(line.substr(line.find(", v=") + 4));
+    if (!first) segments.push_back({previous, nozzle, analog0 > 0.0, speedMmPerS * 0.016 + 0.05});
+    first = false;
+    previous = nozzle;
+  }
+  return segments;
+}
+
+// Ctrl-Z mid-step: the arm finishes the move under way, the extruder stops and the platform backs off the nozzle,
+// and then the arm stays still with the extruder off; Ctrl-Z again: the step goes on from the next move. Every
+// tick the simulated extruder ran in step 2 (its program, the pause's, the resumed one) puts the nozzle within
+// 0.05 mm of one of the step's extrusion moves, in the program's order and never back along it (no duplicate),
+// and every extrusion move is covered from its start to its end with no jump along it longer than two ticks'
+// travel (no gap; a tick that ends one statement carries the rest of its time into the next).
+TEST(CliRunRobot, PauseMidStepHoldsTheArmWithTheExtruderOffAndResumeLeavesNoGapOrDuplicate) {
+  KittenOnTheCell kitten;
+  ASSERT_NO_FATAL_FAILURE(prepareKittenOnTheCell("CliRunRobot.PauseResume", kitten));
+  hw::UrSimulator& simulator = *kitten.simulator;
+  const std::string script = multidir::test::readAll(kitten.dir + "/out/step-02.script");
+  const int firstMovelLine =
+      1 + static_cast<int>(std::count(script.begin(), script.begin() + static_cast<long>(script.find("movel(")), '\n'));
+  const std::string pidFile = kitten.dir + "/pid";
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile, 240);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run " + kitten.dir + "/out --robot 127.0.0.1:" + std::to_string(simulator.dashboardPort()),
+                  kitten.dir, prefix);
+  });
+  const bool pauseSent = multidir::test::signalCliWhen(pidFile, SIGTSTP, [&] {
+    const hw::UrSimulatorState s = simulator.state();
+    return s.programName == "multidir_step_02" && s.programState == "PLAYING" && s.line > firstMovelLine + 200;
+  });
+  ASSERT_TRUE(pauseSent);
+  bool pausedStill = false;
+  for (int wait = 0; wait < 3000 && !pausedStill; ++wait) {
+    const hw::UrSimulatorState s = simulator.state();
+    pausedStill = s.programName == "multidir_pause" && s.programState == "STOPPED" && s.atRest;
+    if (!pausedStill) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_TRUE(pausedStill);
+  const hw::UrSimulatorState paused = simulator.state();
+  EXPECT_EQ(paused.analogOut[0], 0.0);  // the extruder off
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // 300 s of the simulated cell
+  const hw::UrSimulatorState later = simulator.state();
+  EXPECT_GT(later.time, paused.time + 100.0);
+  EXPECT_EQ(later.joints, paused.joints);  // the arm still
+  EXPECT_TRUE(later.atRest);
+  EXPECT_EQ(later.analogOut[0], 0.0);
+  EXPECT_EQ(later.programState, "STOPPED");
+  EXPECT_TRUE(multidir::test::signalCliWhen(pidFile, SIGTSTP, [] { return true; }));
+  const CliRun run = cli.get();
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("paused at a safe point: step 2 after movel "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("resuming step 2 after movel "), std::string::npos) << run.out;
+  EXPECT_EQ(simulator.state().programsFinished, 5u);  // steps 1, 3 and 4, the pause, the resumed step 2
+  // Where the pause landed: movel k of the program is segment k - 2 (the first movel comes from the approach).
+  const std::size_t landed = run.out.find("paused at a safe point: step 2 after movel ");
+  const int pausedMovel = landed == std::string::npos ? 0 : std::atoi(run.out.c_str() + landed + 43);
+
+  const Eigen::Vector3d tip = robot::loadCell(kitten.cellPath)->nozzleTipMm;
+  const std::vector<NozzleSegment> segments = nozzleSegments(script, tip);
+  std::vector<double> reachedFrom(segments.size(), 1e9), reachedTo(segments.size(), -1e9);
+  std::size_t at = 0;
+  double along = 0.0;
+  int extruding = 0;
+  const auto trace = simulator.trace();
+  for (std::size_t k = 1; k < trace.size(); ++k) {
+    const hw::UrTraceRecord& r = trace[k];
+    if (r.filamentMmPerS <= 0.0) continue;
+    if (r.program != "multidir_step_02" && r.program != "multidir_pause") continue;
+    const Eigen::Vector3d p(r.nozzleInPlatform[0], r.nozzleInPlatform[1], r.nozzleInPlatform[2]);
+    ++extruding;
+    bool placed = false;
+    for (std::size_t i = at; i < segments.size() && !placed; ++i) {
+      if (!segments[i].extrudes) continue;
+      const Eigen::Vector3d d = segments[i].to - segments[i].from;
+      const double length = d.norm();
+      const double t = length > 0.0 ? std::clamp((p - segments[i].from).dot(d) / (length * length), 0.0, 1.0) : 0.0;
+      if ((segments[i].from + t * d - p).norm() > 0.05) continue;
+      if (i == at && t * length < along - 0.05) continue;  // back along the move: a duplicate
+      placed = true;
+      if (i == at && reachedTo[i] > -1.0) {
+        EXPECT_LE(t * length - along, segments[i].tickTravelMm)
+            << "a gap along extrusion move " << i + 1 << " at " << r.time << " s (" << r.program << " line " << r.line
+            << ")";
+      }
+      at = i;
+      along = t * length;
+      reachedFrom[i] = std::min(reachedFrom[i], along);
+      reachedTo[i] = std::max(reachedTo[i], along);
+    }
+    ASSERT_TRUE(placed) << "tick at " << r.time << " s (" << r.program << " line " << r.line << "): the nozzle at ("
+                        << p.transpose() << ") on no extrusion move at or after move " << at + 1;
+  }
+  EXPECT_GT(extruding, 1000);
+  ASSERT_GE(pausedMovel, 2);
+  const NozzleSegment& pausedIn = segments[static_cast<std::size_t>(pausedMovel - 2)];
+  std::cout << "[ measured ] paused in movel " << pausedMovel << " of step 2, "
+            << (pausedIn.extrudes ? "an extrusion" : "a travel") << " of " << (pausedIn.to - pausedIn.from).norm()
+            << " mm\n";
+  // Each extrusion move reached from near its start to near its end: within two ticks' travel at its speed. A
+  // move shorter than that can begin and end between two ticks.
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (!segments[i].extrudes) continue;
+    const double length = (segments[i].to - segments[i].from).norm();
+    const double tick = segments[i].tickTravelMm;
+    if (length < tick) continue;
+    EXPECT_LE(reachedFrom[i], tick) << "extrusion move " << i + 1 << " of " << segments.size();
+    EXPECT_GE(reachedTo[i], length - tick) << "extrusion move " << i + 1 << " of " << segments.size();
+  }
+}
+
+// Ctrl-C while paused: the run ends with the stop latched until the robot confirms it, and nothing more is sent
+// (the step's program and the pause's only).
+TEST(CliRunRobot, CtrlCWhilePausedStopsTheRunOnceTheRobotConfirmsTheStop) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.CtrlCWhilePaused");
+  writeRobotJob(dir);
+  writeFile(std::filesystem::path(dir) / "cell.json",
+            multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json"));
+  hw::UrSimulatorOptions options;
+  options.speed = 1.0;  // real time: the pause lands while the arm moves
+  options.initialJoints = {0.0, -1.0, 1.3, -1.9, -1.5707963267948966, 0.0};
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const std::string pidFile = dir + "/pid";
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, prefix);
+  });
+  const bool pauseSent = multidir::test::signalCliWhen(pidFile, SIGTSTP, [&] {
+    const hw::UrSimulatorState s = simulator->state();
+    return s.programName == "multidir_step_01" && s.programState == "PLAYING" && s.line >= 11 && !s.atRest;
+  });
+  const bool stopSent = multidir::test::signalCliWhen(pidFile, SIGINT, [&] {
+    const hw::UrSimulatorState s = simulator->state();
+    return s.programName == "multidir_pause" && s.programState == "STOPPED" && s.atRest;
+  });
+  const CliRun run = cli.get();
+  ASSERT_TRUE(pauseSent) << run.out << run.err;
+  ASSERT_TRUE(stopSent) << run.out << run.err;
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.out.find("paused at a safe point: step 1 after movel "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("the robot confirmed the stop"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("the run stopped at step 1: stopped by Ctrl-C while paused"), std::string::npos) << run.err;
+  EXPECT_EQ(simulator->programsReceived().size(), 2u);
+  EXPECT_TRUE(simulator->state().atRest);
+  EXPECT_EQ(simulator->state().analogOut[0], 0.0);
 }
 
 TEST(CliRunRobot, AnUnknownArmModelIsAUsageErrorNamingTheKnownOnes) {

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <optional>
 #include <sstream>
 
+#include "multidir/robot/arm_links.h"
 #include "multidir/robot/cell.h"
 #include "step_converter.h"
 
@@ -179,6 +181,94 @@ TEST(StepRefusals, TheArmComingDownOnTheTableIsRefusedWithItsLine) {
   const std::string refusal = onlyRefusal(out);
   EXPECT_NE(refusal.find("step 1, line 4 (step-01.gcode): the arm's "), std::string::npos) << refusal;
   EXPECT_NE(refusal.find("of the table (its housing about 50 mm"), std::string::npos) << refusal;
+}
+
+// An extruder mount strut put where the arm's forearm passes while the squares print: the joints kept within a
+// quarter turn of the configuration the step uses without it (so no other configuration can dodge it), a 30 mm
+// cube about the forearm's middle at the first layer. The platform and the part stay clear of it; the forearm
+// does not.
+TEST(StepRefusals, AnExtruderMountWhereTheForearmPassesIsRefusedNamingTheLink) {
+  Cell cell = shippedCell();
+  const Program p = squares(2);
+  const StepOutput clear = convertStep(stepOf(p, 30.0), cell, fixedRotation(), core::JobContext());
+  ASSERT_TRUE(clear.refusals.empty()) << clear.refusals.front();
+  const Eigen::Isometry3d flange =
+      platformPoseFor(cell, Eigen::Isometry3d::Identity(), 0.0, Eigen::Vector3d(-10.0, -10.0, 0.4)) *
+      cell.flangeToPlatform.inverse();
+  std::optional<Joints> q;
+  for (const IkSolution& s : inverseKinematics(cell.arm, flange))
+    if (s.branch == clear.summary.branch) q = nearestWithinLimits(cell.arm, {s}, cell.home);
+  ASSERT_TRUE(q.has_value());
+  for (std::size_t j = 0; j < 6; ++j) {
+    cell.arm.limits[j].minRad = (*q)[j] - kPi / 2;
+    cell.arm.limits[j].maxRad = (*q)[j] + kPi / 2;
+  }
+  const ArmLinkSolid forearm = armLinkSolids(cell.arm, *q)[1];
+  ASSERT_STREQ(forearm.name, "forearm");
+  CollisionBox strut;
+  strut.name = "mount strut";
+  strut.pose.translation() = 0.5 * (forearm.fromMm + forearm.toMm);
+  strut.sizeMm = Eigen::Vector3d(30.0, 30.0, 30.0);
+  cell.boxes.push_back(strut);
+  const StepOutput out = convertStep(stepOf(p, 30.0), cell, fixedRotation(), core::JobContext());
+  const std::string refusal = onlyRefusal(out);
+  EXPECT_NE(refusal.find("step 1, line " + std::to_string(p.marks.at("layer0")) +
+                         " (step-01.gcode): the arm's forearm would hit the extruder's body \"mount strut\""),
+            std::string::npos)
+      << refusal;
+}
+
+// The links are checked between the samples too: one 60 mm extrusion checked only at its ends (--sample-mm 500),
+// and a 4 mm block 1 mm inside the forearm's surface where the forearm stands half way, out of its reach at either
+// end. The move is refused naming the forearm: the clearances at the ends do not cover how far the forearm can
+// move between them, so the path is split until the block is met.
+TEST(StepRefusals, TheForearmMeetingABodyBetweenTwoSamplesIsRefused) {
+  Cell cell = shippedCell();
+  Program p;
+  p.add("G90");
+  p.add("M82");
+  p.add("G92 E0");
+  p.add("G1 X-30 Y0 F6000");
+  p.add("G1 Z0.4 F600");
+  p.add("G1 X30 Y0 E2 F1200", "long line");
+  RobotProgramOptions options = fixedRotation();
+  options.sampleMm = 500.0;
+  const StepOutput clear = convertStep(stepOf(p, 30.0), cell, options, core::JobContext());
+  ASSERT_TRUE(clear.refusals.empty()) << clear.refusals.front();
+  auto jointsAt = [&](double x) {
+    const Eigen::Isometry3d flange =
+        platformPoseFor(cell, Eigen::Isometry3d::Identity(), 0.0, Eigen::Vector3d(x, 0.0, 0.4)) *
+        cell.flangeToPlatform.inverse();
+    std::optional<Joints> q;
+    for (const IkSolution& s : inverseKinematics(cell.arm, flange))
+      if (s.branch == clear.summary.branch) q = nearestWithinLimits(cell.arm, {s}, cell.home);
+    EXPECT_TRUE(q.has_value());
+    return q.value_or(Joints{});
+  };
+  const ArmLinkSolid start = armLinkSolids(cell.arm, jointsAt(-30.0))[1];
+  const ArmLinkSolid middle = armLinkSolids(cell.arm, jointsAt(0.0))[1];
+  const ArmLinkSolid end = armLinkSolids(cell.arm, jointsAt(30.0))[1];
+  // Out from the forearm's axis, across the way it moves.
+  const Eigen::Vector3d axis = (middle.toMm - middle.fromMm).normalized();
+  const Eigen::Vector3d travel = (end.fromMm + end.toMm - start.fromMm - start.toMm).normalized();
+  const Eigen::Vector3d out = axis.cross(travel).normalized();
+  CollisionBox block;
+  block.name = "cable clamp";
+  block.pose.translation() = 0.5 * (middle.fromMm + middle.toMm) + (middle.radiusMm + 1.0) * out;
+  block.sizeMm = Eigen::Vector3d(4.0, 4.0, 4.0);
+  block.pose.linear().col(0) = out;
+  block.pose.linear().col(1) = axis;
+  block.pose.linear().col(2) = out.cross(axis);
+  cell.boxes.push_back(block);
+  ASSERT_GT(armClearance(cell, jointsAt(-30.0)).mm, 0.0);
+  ASSERT_GT(armClearance(cell, jointsAt(30.0)).mm, 0.0);
+  ASSERT_LT(armClearance(cell, jointsAt(0.0)).mm, 0.0);
+  const StepOutput refused = convertStep(stepOf(p, 30.0), cell, options, core::JobContext());
+  const std::string refusal = onlyRefusal(refused);
+  EXPECT_NE(refusal.find("step 1, line " + std::to_string(p.marks.at("long line")) +
+                         " (step-01.gcode): the arm's forearm would hit the extruder's body \"cable clamp\""),
+            std::string::npos)
+      << refusal;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 // is scored by the share of the plan's needed platform poses that are reachable with the cell's margins.
 #include <Eigen/Geometry>
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -56,5 +58,29 @@ core::Result<ReachMap> reachMap(const std::vector<ReachStep>& steps, const Cell&
 
 // The map as an ASCII PLY point cloud: x y z (mm, base frame), the score and a colour from red (0) to blue (1).
 core::Status writeReachPly(const ReachMap& map, const std::filesystem::path& path);
+
+// The colour of a score, the PLY's and the slice's: red 255 (1 - score), green 0, blue 255 score (rounded).
+std::array<std::uint8_t, 3> reachColour(double score);
+
+// A horizontal slice of the map through the best position as a picture (docs/robot-cell.md, "Reach map"): seen
+// from above (base x to the right, y up), one square of kPixelsPerCell pixels per grid position of the plane
+// z = the best position's, in its score's colour (light grey where no position was sampled: out of the arm's reach
+// or too near the table); the best position's cell framed in black; a colour bar with its 0, 50 and 100 % marks
+// on the right. The grid's cell with the least x and the greatest y of the whole map is the top-left one, its
+// square kMarginPixels in from the picture's corner.
+struct ReachSlice {
+  static constexpr int kPixelsPerCell = 8;
+  static constexpr int kMarginPixels = 10;
+  double zMm = 0.0;        // the plane, base frame
+  double gridMm = 0.0;     // the map's spacing
+  double leftXMm = 0.0;    // x of the leftmost column of cells
+  double topYMm = 0.0;     // y of the top row of cells
+  int columns = 0, rows = 0;
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // row by row from the top, three bytes a pixel
+  // The pixel at the centre of the cell of (x, y) in the plane.
+  std::array<int, 2> pixelOf(double xMm, double yMm) const;
+};
+ReachSlice reachSlice(const ReachMap& map, double gridMm);
 
 }  // namespace multidir::robot

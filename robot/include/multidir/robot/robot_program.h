@@ -14,6 +14,10 @@
 
 namespace multidir::robot {
 
+// Before a step's first move and after its last, the platform stands this far off the nozzle along its axis (the
+// approach and retreat); a paused step backs off and comes back down by the same (docs/robot-cell.md).
+constexpr double kStepApproachLiftMm = 30.0;
+
 struct RobotProgramOptions {
   double rotationStepDegrees = 10.0;  // the free rotation about the nozzle axis is sampled this finely per step
   double sampleMm = 5.0;              // moves are checked at points this far apart (and at both ends)
