@@ -317,7 +317,7 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     }
   }
   if (proxy) {
-    char summary[256];
+    char summary[512];
     std::snprintf(summary, sizeof summary,
                   "searched the poses on a proxy of %zu faces (volume within %.3f %%, %s; made in %.2f s), each "
                   "fully searched pose's plan cut on the full mesh of %zu faces; the other poses' J_G are the "
