@@ -4,6 +4,7 @@
 //
 //   multidir_scaling_bench [--models kitten,bunny,fertility] [--levels 0,1,2,3] [--million] [--full]
 //                          [--noise MM] [--keep DIR] [--repeat R] [--normals N1,N2,...]
+//                          [--machine 5dof|4dof] [--axes N] [--pose auto]
 //
 // --levels: subdivision levels (0: the model as shared; 3: 64x the faces).
 // --million: also the knight subdivided 5 times (1,024,000 faces), smooth and with --noise (default 0.02 mm)
@@ -15,7 +16,10 @@
 //   The search's plan moves by tens of percent with changes smaller than its candidate spacing (docs/search.md),
 //   so comparing the proxy with the full search on one draw compares two draws of that spread; with several
 //   counts a summary at the end gives each model's and mode's median J_G after / before over the draws.
-// Columns: faces, the proxy's faces (0: none), wall seconds of the whole command, the search's seconds, peak
+// --machine 4dof --axes N: every run a 4-DOF search over N rotation axes (`--machine 4dof --axis-search N`).
+// --pose auto: every run a pose search (`--pose auto`).
+// Columns: faces, the proxy's faces (0: none), wall seconds of the whole command, its CPU seconds (user and
+// system, all threads: what the machine's load changes least), the search's seconds, peak
 // resident MiB (getrusage of the child), regions, J_G after / before, and the wall time over the same model's
 // at level 0 in the same mode. The models are written to a temporary folder (or --keep DIR) as binary STL.
 #include <sys/resource.h>
@@ -63,7 +67,7 @@ struct Case {
 
 struct Outcome {
   bool ok = false;
-  double wallSeconds = 0, searchSeconds = 0, peakMiB = 0, jgBefore = 0, jgAfter = 0;
+  double wallSeconds = 0, cpuSeconds = 0, searchSeconds = 0, peakMiB = 0, jgBefore = 0, jgAfter = 0;
   long long faces = 0, proxyFaces = 0, regions = 0;
   std::string error;
 };
@@ -89,7 +93,14 @@ bool writeCase(Case& c, const fs::path& folder) {
   return true;
 }
 
-Outcome run(const Case& c, bool full, int normals, const fs::path& folder) {
+// How every run searches, beyond the CLI's defaults.
+struct SearchMode {
+  std::string machine;  // empty: the CLI's default (5-DOF)
+  int axes = 0;         // 4-DOF axis search over this many axes
+  bool autoPose = false;
+};
+
+Outcome run(const Case& c, bool full, int normals, const SearchMode& mode, const fs::path& folder) {
   Outcome out;
   const fs::path plan = folder / ("plan-" + fs::path(c.file).stem().string() + (full ? "-full" : ""));
   const fs::path summary = plan.string() + ".json";
@@ -99,6 +110,18 @@ Outcome run(const Case& c, bool full, int normals, const fs::path& folder) {
   if (normals > 0) {
     args.emplace_back("--normals");
     args.push_back(std::to_string(normals));
+  }
+  if (!mode.machine.empty()) {
+    args.emplace_back("--machine");
+    args.push_back(mode.machine);
+  }
+  if (mode.axes > 0) {
+    args.emplace_back("--axis-search");
+    args.push_back(std::to_string(mode.axes));
+  }
+  if (mode.autoPose) {
+    args.emplace_back("--pose");
+    args.emplace_back("auto");
   }
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
@@ -118,6 +141,8 @@ Outcome run(const Case& c, bool full, int normals, const fs::path& folder) {
   wait4(child, &status, 0, &usage);
   out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  out.cpuSeconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                   1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     out.error = "multidir decompose failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
                 "): see " + log;
@@ -146,17 +171,20 @@ double median(std::vector<double> values) {
 }
 
 // The run repeated: the first run's plan (every run gives the same plan), the median seconds.
-Outcome runRepeated(const Case& c, bool full, int normals, int repeat, const fs::path& folder) {
-  Outcome first = run(c, full, normals, folder);
-  std::vector<double> wall{first.wallSeconds}, search{first.searchSeconds};
+Outcome runRepeated(const Case& c, bool full, int normals, const SearchMode& mode, int repeat,
+                    const fs::path& folder) {
+  Outcome first = run(c, full, normals, mode, folder);
+  std::vector<double> wall{first.wallSeconds}, cpu{first.cpuSeconds}, search{first.searchSeconds};
   for (int r = 1; first.ok && r < repeat; ++r) {
-    const Outcome again = run(c, full, normals, folder);
+    const Outcome again = run(c, full, normals, mode, folder);
     if (!again.ok) return again;
     wall.push_back(again.wallSeconds);
+    cpu.push_back(again.cpuSeconds);
     search.push_back(again.searchSeconds);
     first.peakMiB = std::max(first.peakMiB, again.peakMiB);
   }
   first.wallSeconds = median(wall);
+  first.cpuSeconds = median(cpu);
   first.searchSeconds = median(search);
   return first;
 }
@@ -171,6 +199,7 @@ int main(int argc, char** argv) {
   int repeat = 1;
   std::vector<int> normalCounts{0};  // 0: the CLI's default
   std::string keep;
+  SearchMode searchMode;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "--million") million = true;
@@ -178,6 +207,9 @@ int main(int argc, char** argv) {
     else if (i + 1 < argc && flag == "--models") models = split(argv[++i]);
     else if (i + 1 < argc && flag == "--noise") noiseMm = std::atof(argv[++i]);
     else if (i + 1 < argc && flag == "--keep") keep = argv[++i];
+    else if (i + 1 < argc && flag == "--machine") searchMode.machine = argv[++i];
+    else if (i + 1 < argc && flag == "--axes") searchMode.axes = std::atoi(argv[++i]);
+    else if (i + 1 < argc && flag == "--pose") searchMode.autoPose = std::string(argv[++i]) == "auto";
     else if (i + 1 < argc && flag == "--repeat") repeat = std::max(1, std::atoi(argv[++i]));
     else if (i + 1 < argc && flag == "--normals") {
       normalCounts.clear();
@@ -203,8 +235,8 @@ int main(int argc, char** argv) {
     cases.push_back({"knight 1024x noisy", "knight", 5, noiseMm, ""});
   }
 
-  std::printf("%-20s %5s %7s %10s %8s %8s %8s %9s %7s %8s %9s\n", "model", "mode", "normals", "faces", "proxy",
-              "wall s", "search s", "peak MiB", "regions", "after %", "x of 1x");
+  std::printf("%-20s %5s %7s %10s %8s %8s %8s %8s %9s %7s %8s %9s\n", "model", "mode", "normals", "faces", "proxy",
+              "wall s", "CPU s", "search s", "peak MiB", "regions", "after %", "x of 1x");
   std::map<std::string, double> baseline;  // model + mode + normals -> wall seconds at level 0
   std::map<std::string, std::vector<double>> draws;  // case + mode -> J_G after / before (%) per normal count
   std::vector<std::string> drawOrder;
@@ -212,7 +244,7 @@ int main(int argc, char** argv) {
     if (!writeCase(c, folder)) return 1;
     for (const int normals : normalCounts)
       for (const bool fullSearch : full ? std::vector<bool>{false, true} : std::vector<bool>{false}) {
-        const Outcome o = runRepeated(c, fullSearch, normals, repeat, folder);
+        const Outcome o = runRepeated(c, fullSearch, normals, searchMode, repeat, folder);
         const char* mode = fullSearch ? "full" : "proxy";
         const std::string normalsText = normals > 0 ? std::to_string(normals) : "default";
         if (!o.ok) {
@@ -224,8 +256,8 @@ int main(int argc, char** argv) {
         char ratio[32] = "-";
         if (baseline.count(key)) std::snprintf(ratio, sizeof ratio, "%.1f", o.wallSeconds / baseline[key]);
         const double afterPercent = o.jgBefore > 0 ? 100.0 * o.jgAfter / o.jgBefore : 0.0;
-        std::printf("%-20s %5s %7s %10lld %8lld %8.2f %8.2f %9.0f %7lld %8.2f %9s\n", c.name.c_str(), mode,
-                    normalsText.c_str(), o.faces, o.proxyFaces, o.wallSeconds, o.searchSeconds, o.peakMiB, o.regions,
+        std::printf("%-20s %5s %7s %10lld %8lld %8.2f %8.2f %8.2f %9.0f %7lld %8.2f %9s\n", c.name.c_str(), mode,
+                    normalsText.c_str(), o.faces, o.proxyFaces, o.wallSeconds, o.cpuSeconds, o.searchSeconds, o.peakMiB, o.regions,
                     afterPercent, ratio);
         std::fflush(stdout);
         const std::string drawKey = c.name + " " + mode;

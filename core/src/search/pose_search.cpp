@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "multidir/core/common/units.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "multidir/core/search/contact_patch.h"
+#include "search/axis_bound.h"
 #include "search/run_decomposition.h"
 
 namespace multidir::core {
@@ -70,12 +72,14 @@ Result<PoseCandidate> candidateOn(const ContactPatch& patch, PoseSource source, 
 }
 
 // The better of two finished searches: least J_G, then fewer regions, then larger contact, then earlier.
+// J_G closer than this are equal (mm^2).
+constexpr double kTieMm2 = 1e-6;
+
 bool better(const PoseTrial& a, const PoseTrial& b) {
-  constexpr double kTie = 1e-6;  // mm^2
-  if (a.jgAfterMm2 < b.jgAfterMm2 - kTie) return true;
-  if (a.jgAfterMm2 > b.jgAfterMm2 + kTie) return false;
+  if (a.jgAfterMm2 < b.jgAfterMm2 - kTieMm2) return true;
+  if (a.jgAfterMm2 > b.jgAfterMm2 + kTieMm2) return false;
   if (a.regions != b.regions) return a.regions < b.regions;
-  return a.pose.contactAreaMm2 > b.pose.contactAreaMm2 + kTie;
+  return a.pose.contactAreaMm2 > b.pose.contactAreaMm2 + kTieMm2;
 }
 
 }  // namespace
@@ -200,22 +204,56 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   SearchOptions cheap = single;
   cheap.scheme = poseOptions.cheapScheme;
 
+  // A huge model is searched on one proxy, made once for every pose (its tolerance checked along each
+  // candidate's up); each fully searched pose's plan is then cut on the full mesh, so the plans compared and the
+  // one returned are the full mesh's (docs/search.md, "The pose search").
+  std::optional<detail::SearchProxy> proxy;
+  std::vector<std::string> notes;
+  if (detail::needsProxy(model, options)) {
+    std::vector<Vec3> ups;
+    for (const PoseCandidate& pose : candidates) ups.push_back(pose.up);
+    SearchOptions making = options;
+    making.threads = threads;
+    auto made = detail::makeSearchProxy(model, ups, making);
+    if (made.ok()) proxy = std::move(*made);
+    else notes.push_back("searched the full mesh: no faithful proxy (" + made.error().message + ")");
+  }
+  // Per pose: the mesh searched, with its options and platform region (the full model's, on a proxy).
+  std::vector<std::optional<detail::ProxySearchSetup>> setups(count);
+  if (proxy)
+    for (int i = 0; i < count; ++i)
+      setups[i] = detail::proxySearchSetup(model, proxy->mesh, machineForPose(machine, candidates[i].up), single);
+  auto searchPose = [&](int i, const SearchOptions& o) {
+    const MachineSpec posed = machineForPose(machine, candidates[i].up);
+    if (!setups[i]) return detail::runDecomposition(model, posed, o, job, {});
+    SearchOptions onProxy = setups[i]->options;
+    onProxy.scheme = o.scheme;
+    return detail::runDecomposition(proxy->mesh, posed, onProxy, job, {}, setups[i]->platform);
+  };
+
   std::vector<PoseTrial> trials(count);
-  std::vector<std::optional<Decomposition>> plans(count);
+  std::vector<std::optional<Decomposition>> cheapPlans(count);  // on a proxy, the proxy's cheap plans
+  std::vector<std::optional<Decomposition>> plans(count);       // of the model
   const int searches = std::min(poseOptions.fullSearches, count);
   std::atomic<int> finished{0};
   const double steps = count + 4.0 * searches;  // a full search costs a few cheap ones
-  // 1. Cheap score per pose.
+  // The plan of pose i on the model: a proxy's plan cut on the full mesh, else the plan itself.
+  auto onModel = [&](int i, Decomposition plan) {
+    if (!setups[i]) return plan;
+    return detail::cutOnFullMesh(model, machineForPose(machine, candidates[i].up), single, job, setups[i]->platform,
+                                 plan);
+  };
+  // 1. Cheap score per pose (on a proxy: the proxy's J_G, which only ranks the poses).
   detail::parallelFor(count, threads, [&](int i) {
     if (job.isCancelled()) return;
     const auto t0 = std::chrono::steady_clock::now();
     PoseTrial& trial = trials[i];
     trial.pose = candidates[i];
-    Decomposition plan = detail::runDecomposition(model, machineForPose(machine, trial.pose.up), cheap, job, {});
+    Decomposition plan = searchPose(i, cheap);
     trial.cheapJgMm2 = trial.jgAfterMm2 = plan.jgAfterMm2;
     trial.regions = static_cast<int>(plan.regions.size());
     trial.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    plans[i] = std::move(plan);
+    (proxy ? cheapPlans[i] : plans[i]) = std::move(plan);  // without a proxy, the model's own plan
     job.setProgress(++finished / steps, "pose scores");
   });
   for (int i = 0; i < count; ++i) trials[i].pose = candidates[i];
@@ -223,29 +261,74 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   // 2. The full search on the given up and the best-scored others.
   std::vector<int> order;
   for (int i = givenStands ? 1 : 0; i < count; ++i)
-    if (plans[i]) order.push_back(i);
+    if (cheapPlans[i] || plans[i]) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return trials[a].cheapJgMm2 < trials[b].cheapJgMm2; });
   std::vector<int> chosen;
   if (givenStands) chosen.push_back(0);
   for (int i : order)
     if (static_cast<int>(chosen.size()) < searches) chosen.push_back(i);
-  if (options.scheme != poseOptions.cheapScheme) {
+  // On a rotary platform no plan of a pose has a J_G below that pose's unavoidable risky area (search/axis_bound.h,
+  // measured on the full mesh): a pose whose bound is above the best searched plan's J_G is not searched, which
+  // cannot change the choice (it could not win), whatever order the searches finish in.
+  std::vector<double> bounds(count, 0.0);
+  if (machine.kind == MachineKind::RotaryPlatform)
     detail::parallelFor(static_cast<int>(chosen.size()), threads, [&](int k) {
-      if (job.isCancelled()) return;
-      const int i = chosen[k];
-      const auto t0 = std::chrono::steady_clock::now();
-      Decomposition plan = detail::runDecomposition(model, machineForPose(machine, trials[i].pose.up), single, job, {});
-      if (plan.cancelled) return;  // keep the finished cheap plan
-      trials[i].searched = true;
-      trials[i].jgAfterMm2 = plan.jgAfterMm2;
-      trials[i].regions = static_cast<int>(plan.regions.size());
-      trials[i].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      plans[i] = std::move(plan);
-      job.setProgress((finished += 4) / steps, "pose searches");
+      bounds[chosen[k]] = detail::unavoidableRiskyAreaMm2(model, machineForPose(machine, candidates[chosen[k]].up),
+                                                          options.alphaMaxDegrees, options.supportedBandMm);
     });
-  } else {
-    for (int i : chosen) trials[i].searched = static_cast<bool>(plans[i]);
+  std::mutex bestMutex;
+  double bestSearchedJg = INFINITY;
+  int skipped = 0;
+  detail::parallelFor(static_cast<int>(chosen.size()), threads, [&](int k) {
+    if (job.isCancelled()) return;
+    const int i = chosen[k];
+    {
+      std::lock_guard<std::mutex> lock(bestMutex);
+      if (bounds[i] > bestSearchedJg + kTieMm2) {
+        ++skipped;
+        job.setProgress((finished += 4) / steps, "pose searches");
+        return;
+      }
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    // The cheap scheme's plan is already this pose's search when the search asked for is that scheme.
+    Decomposition plan = options.scheme != poseOptions.cheapScheme ? searchPose(i, single)
+                                                                   : *(proxy ? cheapPlans[i] : plans[i]);
+    if (plan.cancelled) return;  // keep the finished cheap plan
+    plan = onModel(i, std::move(plan));
+    std::lock_guard<std::mutex> lock(bestMutex);
+    trials[i].searched = true;
+    trials[i].jgAfterMm2 = plan.jgAfterMm2;
+    trials[i].regions = static_cast<int>(plan.regions.size());
+    trials[i].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    bestSearchedJg = std::min(bestSearchedJg, plan.jgAfterMm2);
+    plans[i] = std::move(plan);
+    job.setProgress((finished += 4) / steps, "pose searches");
+  });
+  // Cancelled on a proxy before any pose was searched in full: the best cheap plan, cut on the model.
+  if (proxy && std::none_of(plans.begin(), plans.end(), [](const auto& p) { return p.has_value(); })) {
+    int cheapest = -1;
+    for (int i = 0; i < count; ++i)
+      if (cheapPlans[i] && (cheapest < 0 || trials[i].cheapJgMm2 < trials[cheapest].cheapJgMm2)) cheapest = i;
+    if (cheapest >= 0) {
+      plans[cheapest] = onModel(cheapest, *cheapPlans[cheapest]);
+      trials[cheapest].jgAfterMm2 = plans[cheapest]->jgAfterMm2;
+      trials[cheapest].regions = static_cast<int>(plans[cheapest]->regions.size());
+    }
   }
+  if (proxy) {
+    char summary[512];
+    std::snprintf(summary, sizeof summary,
+                  "searched the poses on a proxy of %zu faces (volume within %.3f %%, %s; made in %.2f s), each "
+                  "fully searched pose's plan cut on the full mesh of %zu faces; the other poses' J_G are the "
+                  "proxy's cheap scores",
+                  proxy->mesh.faceCount(), proxy->volumeChangePercent, proxy->toleranceNote.c_str(), proxy->seconds,
+                  model.faceCount());
+    notes.insert(notes.begin(), summary);
+  }
+  if (skipped > 0)
+    notes.push_back(std::to_string(skipped) +
+                    " poses not searched in full: their unavoidable risky area is above the best plan's J_G");
 
   // 3. The best fully searched plan; when cancelled, the best plan that finished.
   int best = -1;
@@ -265,7 +348,10 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.plan.statistics.seconds = result.seconds;  // the whole pose search, as the time it took to get the plan
   result.plan.statistics.threads = threads;
-  if (!refusal.empty()) result.plan.statistics.notes.push_back(refusal);
+  if (proxy) result.plan.statistics.proxyFaces = static_cast<int>(proxy->mesh.faceCount());
+  std::vector<std::string>& planNotes = result.plan.statistics.notes;
+  planNotes.insert(planNotes.begin(), notes.begin(), notes.end());
+  if (!refusal.empty()) planNotes.push_back(refusal);
   job.setProgress(1.0, "pose search done");
   return result;
 }

@@ -54,11 +54,11 @@ constexpr double kStrictProxyToleranceMm = 0.01;
 constexpr double kProxyMaxVolumeChangePercent = 0.5;
 
 // J_G before of a mesh: its risky area printed along up on the bed (docs/jg-definition.md).
-double riskyAlongUp(const TriangleMesh& mesh, const MachineSpec& machine, const SearchOptions& options) {
+double riskyAlongUp(const TriangleMesh& mesh, const Vec3& up, const SearchOptions& options) {
   OverhangOptions overhang;
   overhang.alphaMaxDegrees = options.alphaMaxDegrees;
   overhang.supportedBandMm = options.supportedBandMm;
-  const auto analysis = analyzeOverhang(mesh, machine.up, overhang);
+  const auto analysis = analyzeOverhang(mesh, up, overhang);
   return analysis.ok() ? analysis->riskyAreaMm2 : 0.0;
 }
 
@@ -83,51 +83,54 @@ std::string millimetres(double value) {
 
 }  // namespace
 
-Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
-                                            const SearchOptions& options, JobContext& job, const ProxySearchRun& search) {
+Result<SearchProxy> makeSearchProxy(const TriangleMesh& model, const std::vector<Vec3>& ups,
+                                    const SearchOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   auto proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kProxyToleranceMm,
                          kProxyMaxVolumeChangePercent, options.threads, kProxyFloorFaces, kStrictProxyToleranceMm);
-  std::string toleranceNote;
-  if (proxy.ok()) {
-    const double modelRisky = riskyAlongUp(model, machine, options);
-    const double proxyRisky = riskyAlongUp(proxy->mesh, machine, options);
-    const double changePercent = 100.0 * std::abs(proxyRisky - modelRisky) / std::max(modelRisky, 1e-9);
-    toleranceNote = tolerance(kProxyToleranceMm, changePercent);
-    if (changePercent > kProxyMaxRiskyChangePercent && modelRisky > options.minPlaneGainMm2) {
-      proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kStrictProxyToleranceMm,
-                        kProxyMaxVolumeChangePercent, options.threads);
-      if (proxy.ok()) {
-        const double strictPercent =
-            100.0 * std::abs(riskyAlongUp(proxy->mesh, machine, options) - modelRisky) / std::max(modelRisky, 1e-9);
-        toleranceNote += ", more than " + std::to_string(static_cast<int>(kProxyMaxRiskyChangePercent)) +
-                         " %: made again, " + tolerance(kStrictProxyToleranceMm, strictPercent);
-      }
+  if (!proxy.ok()) return proxy.error();
+  // The largest share of the risky area the collapses moved over the ups the proxy is searched for (one for a
+  // search, every candidate pose for the pose search): the proxy must show each search the overhangs it has.
+  auto largestRiskyChangePercent = [&](const TriangleMesh& mesh, bool& significant) {
+    double largest = 0.0;
+    significant = false;
+    for (const Vec3& up : ups) {
+      const double modelRisky = riskyAlongUp(model, up, options);
+      const double change = 100.0 * std::abs(riskyAlongUp(mesh, up, options) - modelRisky) / std::max(modelRisky, 1e-9);
+      if (modelRisky > options.minPlaneGainMm2 && change > kProxyMaxRiskyChangePercent) significant = true;
+      largest = std::max(largest, change);
     }
+    return largest;
+  };
+  bool tooMuch = false;
+  const double changePercent = largestRiskyChangePercent(proxy->mesh, tooMuch);
+  std::string toleranceNote = tolerance(kProxyToleranceMm, changePercent);
+  if (tooMuch) {
+    proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kStrictProxyToleranceMm,
+                      kProxyMaxVolumeChangePercent, options.threads);
+    if (!proxy.ok()) return proxy.error();
+    bool ignored = false;
+    toleranceNote += ", more than " + std::to_string(static_cast<int>(kProxyMaxRiskyChangePercent)) +
+                     " %: made again, " + tolerance(kStrictProxyToleranceMm, largestRiskyChangePercent(proxy->mesh, ignored));
   }
-  if (!proxy.ok()) {
-    SearchOptions full = options;
-    full.proxyFaces = 0;
-    auto plan = search(model, full, platformRegionFor(model, machine, options.platformToleranceMm));
-    if (plan.ok())
-      plan->statistics.notes.push_back("searched the full mesh: no faithful proxy (" + proxy.error().message + ")");
-    return plan;
-  }
-  const double decimationSeconds = secondsSince(start);
+  return SearchProxy{std::move(proxy->mesh), proxy->volumeChangePercent, std::move(toleranceNote), secondsSince(start)};
+}
+
+ProxySearchSetup proxySearchSetup(const TriangleMesh& model, const TriangleMesh& proxy, const MachineSpec& machine,
+                                  const SearchOptions& options) {
   // One platform region, the full model's, for both searches: Criterion III then refuses the same planes on
   // both. The proxy's lowest point may lie a little above the model's (decimation moved it), so on the proxy a
   // piece counts as standing on the platform within that much more (Criterion II).
-  const PlatformRegion platform = platformRegionFor(model, machine, options.platformToleranceMm);
+  ProxySearchSetup setup{options, platformRegionFor(model, machine, options.platformToleranceMm)};
   double proxyLowest = INFINITY;
-  for (const Vec3& v : proxy->mesh.vertices) proxyLowest = std::min(proxyLowest, machine.up.dot(v));
-  SearchOptions onProxy = options;
-  onProxy.proxyFaces = 0;
-  onProxy.platformToleranceMm += std::max(0.0, proxyLowest - platform.heightMm);
-  const Result<Decomposition> searched = search(proxy->mesh, onProxy, platform);
-  if (!searched.ok()) return searched.error();
-  const Decomposition& proxyPlan = *searched;
-  const auto cutsStart = std::chrono::steady_clock::now();
+  for (const Vec3& v : proxy.vertices) proxyLowest = std::min(proxyLowest, machine.up.dot(v));
+  setup.options.proxyFaces = 0;
+  setup.options.platformToleranceMm += std::max(0.0, proxyLowest - setup.platform.heightMm);
+  return setup;
+}
 
+Decomposition cutOnFullMesh(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                            JobContext& job, const PlatformRegion& platform, const Decomposition& proxyPlan) {
   SearchOptions evaluation = options;
   evaluation.candidates.normalSamples = 1;  // the engine only cuts given planes here
   MachineSpec chosen = machine;
@@ -173,18 +176,40 @@ Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const Mac
   plan.rotationAxis = chosen.rotationAxis;
   plan.statistics = proxyPlan.statistics;
   plan.statistics.clipsPerformed += engine.clipsPerformed();
+  plan.statistics.notes = std::move(notes);
+  return plan;
+}
+
+Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
+                                            const SearchOptions& options, JobContext& job, const ProxySearchRun& search) {
+  const auto start = std::chrono::steady_clock::now();
+  auto proxy = makeSearchProxy(model, {machine.up}, options);
+  if (!proxy.ok()) {
+    SearchOptions full = options;
+    full.proxyFaces = 0;
+    auto plan = search(model, full, platformRegionFor(model, machine, options.platformToleranceMm));
+    if (plan.ok())
+      plan->statistics.notes.push_back("searched the full mesh: no faithful proxy (" + proxy.error().message + ")");
+    return plan;
+  }
+  const ProxySearchSetup setup = proxySearchSetup(model, proxy->mesh, machine, options);
+  const Result<Decomposition> searched = search(proxy->mesh, setup.options, setup.platform);
+  if (!searched.ok()) return searched.error();
+  const Decomposition& proxyPlan = *searched;
+  const auto cutsStart = std::chrono::steady_clock::now();
+  Decomposition plan = cutOnFullMesh(model, machine, options, job, setup.platform, proxyPlan);
   plan.statistics.proxyFaces = static_cast<int>(proxy->mesh.faceCount());
+  std::vector<std::string>& notes = plan.statistics.notes;
   char summary[512];
   std::snprintf(summary, sizeof summary,
                 "searched a proxy of %zu faces (volume within %.3f %%, %s; made in %.2f s, searched in %.2f s), "
                 "then cut the full mesh of %zu faces (%.2f s)",
-                proxy->mesh.faceCount(), proxy->volumeChangePercent, toleranceNote.c_str(), decimationSeconds,
+                proxy->mesh.faceCount(), proxy->volumeChangePercent, proxy->toleranceNote.c_str(), proxy->seconds,
                 proxyPlan.statistics.seconds, model.faceCount(), secondsSince(cutsStart));
   notes.insert(notes.begin(), summary);
   // The proxy search's own notes (its polishing) after the summary, before what the full mesh changed.
   notes.insert(notes.begin() + 1, proxyPlan.statistics.notes.begin(), proxyPlan.statistics.notes.end());
-  plan.statistics.notes = std::move(notes);
-  plan.statistics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  plan.statistics.seconds = secondsSince(start);
   return plan;
 }
 

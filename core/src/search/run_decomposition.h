@@ -4,6 +4,8 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "multidir/core/common/job_context.h"
 #include "multidir/core/search/decomposition.h"
@@ -32,6 +34,33 @@ using ProxySearchRun = std::function<Result<Decomposition>(const TriangleMesh& m
                                                            const PlatformRegion& platform)>;
 Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
                                             const SearchOptions& options, JobContext& job, const ProxySearchRun& search);
+
+// The proxy a huge model is searched on (docs/search.md, "Million-triangle models"), made once: decimated within
+// the proxy's tolerance, made again with the strict one when that moved more than a tenth of the risky area
+// along any of `ups` (the ups it will be searched for). An error when no faithful proxy can be made.
+struct SearchProxy {
+  TriangleMesh mesh;
+  double volumeChangePercent = 0.0;
+  std::string toleranceNote;  // the tolerance used and the risky area it moved, for the plan's notes
+  double seconds = 0.0;       // to make it
+};
+Result<SearchProxy> makeSearchProxy(const TriangleMesh& model, const std::vector<Vec3>& ups,
+                                    const SearchOptions& options);
+
+// The options and platform region a search of `proxy` for `machine` uses: the full model's platform region,
+// Criterion II's tolerance grown by how far the proxy's lowest point lies above the model's.
+struct ProxySearchSetup {
+  SearchOptions options;
+  PlatformRegion platform;
+};
+ProxySearchSetup proxySearchSetup(const TriangleMesh& model, const TriangleMesh& proxy, const MachineSpec& machine,
+                                  const SearchOptions& options);
+
+// A proxy's plan cut on the full mesh: each plane at the proxy's offset, moved within 0.3 mm or dropped when a
+// criterion fails there (statistics.notes say which), unpaid planes removed again after a drop. Every number
+// is the full mesh's; the statistics are the proxy search's plus the clips made here.
+Decomposition cutOnFullMesh(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                            JobContext& job, const PlatformRegion& platform, const Decomposition& proxyPlan);
 
 // Whether `model` is searched on a proxy (options.proxyFaces).
 inline bool needsProxy(const TriangleMesh& model, const SearchOptions& options) {

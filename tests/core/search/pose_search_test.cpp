@@ -214,3 +214,30 @@ TEST(PoseSearch, CancelledBeforeStartingSaysSo) {
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
 }
+
+TEST(PoseSearch, OnARotaryPlatformAPoseWhoseBoundIsAboveTheBestSearchedPlanIsNotSearched) {
+  // Lying on its side (the given up, +y) the T has no overhang. Standing on its stem, the bar's underside faces
+  // straight down, risky for every direction a platform turning by at most 5 degrees prints along: that pose's
+  // bound is above the given up's J_G of 0, so it is not searched in full.
+  const TriangleMesh tbar = multidir::test::makeTBar(4, 20, 30, 4, 10);
+  MachineSpec machine;
+  machine.kind = MachineKind::RotaryPlatform;
+  machine.up = Vec3::UnitY();
+  machine.rotationAxis = Vec3::UnitX();
+  machine.minAngleDegrees = -5;
+  machine.maxAngleDegrees = 5;
+  JobContext job;
+  auto best = decomposeWithPoseSearch(tbar, machine, smallOptions(1), fewPoses(6, 6), job);
+  ASSERT_TRUE(best.ok()) << best.error().describe();
+  EXPECT_NEAR(best->plan.jgAfterMm2, 0.0, 1e-9);
+  bool stemPoseTried = false;
+  for (const PoseTrial& trial : best->trials)
+    if (parallel(trial.pose.up, Vec3::UnitZ())) {
+      stemPoseTried = true;
+      EXPECT_FALSE(trial.searched);
+    }
+  EXPECT_TRUE(stemPoseTried);
+  const std::vector<std::string>& notes = best->plan.statistics.notes;
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
+                          [](const std::string& n) { return n.find("not searched in full") != std::string::npos; }));
+}

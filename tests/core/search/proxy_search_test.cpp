@@ -71,6 +71,21 @@ TEST_F(ProxySearch, EveryNumberIsTheFullMeshs) {
   EXPECT_GT(faces, fine->faceCount());  // the regions are pieces of the full mesh, not of the proxy
 }
 
+TEST_F(ProxySearch, GivesTheSamePlanOnOneThreadAsOnAll) {
+  // The fixture's search ran on all threads (two or more on the machines that run the tests).
+  SearchOptions options;
+  options.proxyFaces = 20000;
+  options.threads = 1;
+  const Decomposition one = run(*fine, options);
+  EXPECT_EQ(one.statistics.proxyFaces, proxyPlan->statistics.proxyFaces);
+  EXPECT_EQ(one.jgAfterMm2, proxyPlan->jgAfterMm2);
+  ASSERT_EQ(one.clippingPlanes.size(), proxyPlan->clippingPlanes.size());
+  for (std::size_t k = 0; k < one.clippingPlanes.size(); ++k) {
+    EXPECT_EQ(one.clippingPlanes[k].normal, proxyPlan->clippingPlanes[k].normal) << "plane " << k + 1;
+    EXPECT_EQ(one.clippingPlanes[k].offset, proxyPlan->clippingPlanes[k].offset) << "plane " << k + 1;
+  }
+}
+
 TEST_F(ProxySearch, ThePlanIsWithinATenthOfTheOriginalModelsPlan) {
   const Decomposition original = run(*kitten, SearchOptions{});
   const double proxyShare = proxyPlan->jgAfterMm2 / proxyPlan->jgBeforeMm2;
