@@ -118,6 +118,11 @@
         <source>Plane %1 was refused: %2</source>
         <translation>Ebene %1 wurde abgelehnt: %2</translation>
     </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="66"/>
+        <source>Plane %1 was not changed: with it there, plane %2 is refused. %3</source>
+        <translation>Ebene %1 wurde nicht geändert: mit ihr dort wird Ebene %2 abgelehnt. %3</translation>
+    </message>
 </context>
 <context>
     <name>TiltPlaneCommand</name>
@@ -1195,6 +1200,81 @@
         <source>; pausing after this region</source>
         <translation>; Pause nach diesem Bereich</translation>
     </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="372"/>
+        <source>Restart step</source>
+        <translation>Schritt neu starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="373"/>
+        <source>Prints the current step again from the start of its G-code, once you have cleared the platform of what the interrupted print left.</source>
+        <translation>Druckt den aktuellen Schritt noch einmal vom Anfang seines G-Codes, nachdem Sie die Plattform von dem befreit haben, was der unterbrochene Druck hinterlassen hat.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="691"/>
+        <source>Start Run</source>
+        <translation>Lauf starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <source>The last run of this plan was aborted at step %1 of %2.</source>
+        <translation>Der letzte Lauf dieses Plans wurde bei Schritt %1 von %2 abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
+        <source>Steps 1 to %1 were printed. Before the platform moves, make sure it is clear: take off what step %2 left half printed and anything in the platform&apos;s way.</source>
+        <translation>Die Schritte 1 bis %1 wurden gedruckt. Bevor sich die Plattform bewegt, muss sie frei sein: entfernen Sie, was Schritt %2 halb gedruckt hinterlassen hat, und alles, was der Plattform im Weg ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <source>Before the platform moves, make sure it is clear: take off what step 1 left half printed and anything in the platform&apos;s way.</source>
+        <translation>Bevor sich die Plattform bewegt, muss sie frei sein: entfernen Sie, was Schritt 1 halb gedruckt hinterlassen hat, und alles, was der Plattform im Weg ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
+        <source>Platform Clear: &amp;Resume from Step %1</source>
+        <translation>Plattform frei: ab Schritt %1 &amp;fortsetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
+        <source>Platform Clear: &amp;Start from Step 1</source>
+        <translation>Plattform frei: ab Schritt 1 &amp;starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="722"/>
+        <source>Start run refused: the plan changed since the question was asked; press Start run again.</source>
+        <translation>„Lauf starten“ abgelehnt: der Plan hat sich seit der Frage geändert; drücken Sie erneut „Lauf starten“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="735"/>
+        <source>%1 has no job of step %2 any more: it may have restarted, so there is nothing to resume. Restart step prints step %2 again from its start, once you have cleared the platform of what the interrupted print left. Or finish the region by hand and press Region done, or Abort.</source>
+        <translation>%1 hat keinen Auftrag von Schritt %2 mehr: er wurde vielleicht neu gestartet, daher gibt es nichts fortzusetzen. „Schritt neu starten“ druckt Schritt %2 noch einmal von Anfang an, nachdem Sie die Plattform von dem befreit haben, was der unterbrochene Druck hinterlassen hat. Oder stellen Sie den Bereich von Hand fertig und drücken Sie „Bereich fertig“, oder „Abbrechen“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
+        <source>Restart Step %1</source>
+        <translation>Schritt %1 neu starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
+        <source>Restart Step</source>
+        <translation>Schritt neu starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
+        <source>Print step %1 again from its start?</source>
+        <translation>Schritt %1 noch einmal von Anfang an drucken?</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
+        <source>The printer lost the job of step %1 part way. Before it prints the step again, take off what the interrupted print left of region %1 (the regions printed before it stay) and make sure the nozzle&apos;s way is clear.</source>
+        <translation>Der Drucker hat den Auftrag von Schritt %1 mittendrin verloren. Bevor er den Schritt noch einmal druckt, entfernen Sie, was der unterbrochene Druck von Bereich %1 hinterlassen hat (die davor gedruckten Bereiche bleiben), und sorgen Sie dafür, dass der Weg der Düse frei ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
+        <source>Platform Clear: &amp;Restart Step %1</source>
+        <translation>Plattform frei: Schritt %1 &amp;neu starten</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::JgChart</name>
@@ -2057,6 +2137,46 @@ Qt %1</translation>
         <source>The model now stands on pose %1; searching its plan...</source>
         <translation>Das Modell steht jetzt in Pose %1; sein Plan wird gesucht...</translation>
     </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="727"/>
+        <source>Replace the Edited Plan</source>
+        <translation>Bearbeiteten Plan ersetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="728"/>
+        <source>The plan shown has edits that are not saved.</source>
+        <translation>Der angezeigte Plan hat Änderungen, die nicht gespeichert sind.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="730"/>
+        <source>A new search replaces it; Edit &gt; Undo brings it back. Search now?</source>
+        <translation>Eine neue Suche ersetzt ihn; Bearbeiten &gt; Rückgängig holt ihn zurück. Jetzt suchen?</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="768"/>
+        <source>Search cancelled: its best plan so far (J_G %1 mm²) is worse than the plan shown (J_G %2 mm²), which is kept.</source>
+        <translation>Suche abgebrochen: ihr bisher bester Plan (J_G %1 mm²) ist schlechter als der angezeigte Plan (J_G %2 mm²), der bleibt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="888"/>
+        <source>Print Run Under Way</source>
+        <translation>Drucklauf läuft</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="889"/>
+        <source>A print run is under way: step %1.</source>
+        <translation>Ein Drucklauf läuft: Schritt %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="892"/>
+        <source>Quitting stops the platform and the printer first: the run is aborted (Start run offers to resume it from the step it stopped at). Stop the devices and quit?</source>
+        <translation>Beim Beenden werden zuerst die Plattform und der Drucker angehalten: der Lauf wird abgebrochen („Lauf starten“ bietet an, ihn bei dem Schritt fortzusetzen, bei dem er stehen blieb). Geräte anhalten und beenden?</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="894"/>
+        <source>S&amp;top the Devices and Quit</source>
+        <translation>Geräte an&amp;halten und beenden</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MeshViewerWidget</name>
@@ -2766,6 +2886,16 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <source>%1 refused: no printer is connected.</source>
         <translation>%1 abgelehnt: kein Drucker verbunden.</translation>
     </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="139"/>
+        <source>Restart firmware</source>
+        <translation>Firmware neu starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="139"/>
+        <source>Restart firmware refused: no printer is connected.</source>
+        <translation>„Firmware neu starten“ abgelehnt: kein Drucker ist verbunden.</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::PrinterSection</name>
@@ -3046,6 +3176,76 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <location filename="../ui/device/printer_section.cpp" line="289"/>
         <source>The print run is paused: %1.</source>
         <translation>Der Drucklauf ist pausiert: %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="91"/>
+        <source>Allows jobs again once the printer confirmed the emergency stop. A printer whose firmware the stop shut down also needs Restart firmware.</source>
+        <translation>Erlaubt wieder Aufträge, sobald der Drucker den NOT-HALT bestätigt hat. Ein Drucker, dessen Firmware der NOT-HALT abgeschaltet hat, braucht außerdem „Firmware neu starten“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="94"/>
+        <source>Restart firmware</source>
+        <translation>Firmware neu starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="95"/>
+        <source>After an emergency stop: Klipper&apos;s FIRMWARE_RESTART (through Moonraker), or OctoPrint connecting to the printer again (which resets its board). Asks first.</source>
+        <translation>Nach einem NOT-HALT: FIRMWARE_RESTART von Klipper (über Moonraker), oder OctoPrint verbindet sich erneut mit dem Drucker (was seine Platine zurücksetzt). Fragt zuerst.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="203"/>
+        <source>Printer E-STOP cleared.</source>
+        <translation>Drucker-NOT-HALT aufgehoben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="205"/>
+        <source>Printer E-STOP cleared. Its firmware is %1: it needs Restart firmware (Klipper&apos;s FIRMWARE_RESTART) before its next job.</source>
+        <translation>Drucker-NOT-HALT aufgehoben. Seine Firmware ist im Zustand %1: sie braucht „Firmware neu starten“ (FIRMWARE_RESTART von Klipper) vor dem nächsten Auftrag.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="145"/>
+        <source>%1 is restarting its firmware; the Firmware line shows &quot;ready&quot; once it is back.</source>
+        <translation>%1 startet seine Firmware neu; die Zeile „Firmware“ zeigt „ready“, sobald sie wieder läuft.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="149"/>
+        <source>Restart firmware refused: %1</source>
+        <translation>„Firmware neu starten“ abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="214"/>
+        <source>Restart Printer Firmware</source>
+        <translation>Drucker-Firmware neu starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="215"/>
+        <source>Restart the firmware of %1?</source>
+        <translation>Die Firmware von %1 neu starten?</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="218"/>
+        <source>The firmware takes the heaters and motors back: make sure whatever caused the emergency stop is fixed and nothing is in the printer&apos;s way.</source>
+        <translation>Die Firmware übernimmt wieder Heizungen und Motoren: stellen Sie sicher, dass die Ursache des NOT-HALTs behoben ist und dem Drucker nichts im Weg ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="220"/>
+        <source>&amp;Restart Firmware</source>
+        <translation>Firmware &amp;neu starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="228"/>
+        <source>Restarting the firmware of %1…</source>
+        <translation>Die Firmware von %1 wird neu gestartet…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="308"/>
+        <source>unknown since %1: the printer&apos;s link is lost</source>
+        <translation>unbekannt seit %1: die Verbindung zum Drucker ist verloren</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="325"/>
+        <source>%1&apos;s firmware is ready again.</source>
+        <translation>Die Firmware von %1 ist wieder bereit.</translation>
     </message>
 </context>
 <context>
@@ -4040,6 +4240,14 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>Das ganze Modell in Aufwärtsrichtung mit den eigenen Stützen von PrusaSlicer gedruckt: der Vergleich</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/slice_panel.cpp" line="209"/>
+        <source>Slower than the fixed direction: each of the %n steps starts anew (the platform turns, the nozzle lifts and primes, a first layer on the step&apos;s base), and here that costs more time than the slicer&apos;s supports it avoids.</source>
+        <translation>
+            <numerusform>Langsamer als die feste Richtung: jeder der %n Schritte beginnt neu (die Plattform dreht sich, die Düse hebt sich und spült vor, eine erste Schicht auf der Basis des Schritts), und das kostet hier mehr Zeit als die Stützen des Slicers, die dadurch entfallen.</numerusform>
+            <numerusform>Langsamer als die feste Richtung: jeder der %n Schritte beginnt neu (die Plattform dreht sich, die Düse hebt sich und spült vor, eine erste Schicht auf der Basis des Schritts), und das kostet hier mehr Zeit als die Stützen des Slicers, die dadurch entfallen.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::SliceSession</name>
@@ -4301,6 +4509,14 @@ Den Auftrag trotzdem in diesen Ordner schreiben? Dateien mit den Namen des Auftr
         <location filename="../ui/studio_startup.cpp" line="228"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>Es wird kein Modell angezeigt; das Bildschirmfoto %1 zeigt das leere Fenster.</translation>
+    </message>
+</context>
+<context>
+    <name>ReplacePlanCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="59"/>
+        <source>New search</source>
+        <translation>Neue Suche</translation>
     </message>
 </context>
 </TS>

@@ -118,6 +118,11 @@
         <source>Plane %1 was refused: %2</source>
         <translation>平面 %1 被拒绝：%2</translation>
     </message>
+    <message>
+        <location filename="../ui/edit/refusal_text.cpp" line="66"/>
+        <source>Plane %1 was not changed: with it there, plane %2 is refused. %3</source>
+        <translation>平面 %1 未更改：它在该位置时，平面 %2 被拒绝。%3</translation>
+    </message>
 </context>
 <context>
     <name>TiltPlaneCommand</name>
@@ -1192,6 +1197,81 @@
         <source>; pausing after this region</source>
         <translation>；此区域完成后暂停</translation>
     </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="372"/>
+        <source>Restart step</source>
+        <translation>重新开始步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="373"/>
+        <source>Prints the current step again from the start of its G-code, once you have cleared the platform of what the interrupted print left.</source>
+        <translation>在您清除平台上中断的打印留下的部分后，从其 G 代码的开头重新打印当前步骤。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="691"/>
+        <source>Start Run</source>
+        <translation>开始运行</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <source>The last run of this plan was aborted at step %1 of %2.</source>
+        <translation>此方案的上次运行在第 %1 步（共 %2 步）时中止。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
+        <source>Steps 1 to %1 were printed. Before the platform moves, make sure it is clear: take off what step %2 left half printed and anything in the platform&apos;s way.</source>
+        <translation>步骤 1 至 %1 已打印。平台移动之前，请确保其周围畅通：取下步骤 %2 打印了一半的部分以及挡住平台的任何物体。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <source>Before the platform moves, make sure it is clear: take off what step 1 left half printed and anything in the platform&apos;s way.</source>
+        <translation>平台移动之前，请确保其周围畅通：取下步骤 1 打印了一半的部分以及挡住平台的任何物体。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
+        <source>Platform Clear: &amp;Resume from Step %1</source>
+        <translation>平台已清空：从步骤 %1 继续(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
+        <source>Platform Clear: &amp;Start from Step 1</source>
+        <translation>平台已清空：从步骤 1 开始(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="722"/>
+        <source>Start run refused: the plan changed since the question was asked; press Start run again.</source>
+        <translation>“开始运行”被拒绝：提问后方案已更改；请再次按“开始运行”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="735"/>
+        <source>%1 has no job of step %2 any more: it may have restarted, so there is nothing to resume. Restart step prints step %2 again from its start, once you have cleared the platform of what the interrupted print left. Or finish the region by hand and press Region done, or Abort.</source>
+        <translation>%1 已没有步骤 %2 的任务：它可能已重启，因此没有可继续的内容。清除平台上中断的打印留下的部分后，“重新开始步骤”会从头重新打印步骤 %2。或者手动完成该区域并按“区域完成”，或按“中止”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
+        <source>Restart Step %1</source>
+        <translation>重新开始步骤 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
+        <source>Restart Step</source>
+        <translation>重新开始步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
+        <source>Print step %1 again from its start?</source>
+        <translation>从头重新打印步骤 %1？</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
+        <source>The printer lost the job of step %1 part way. Before it prints the step again, take off what the interrupted print left of region %1 (the regions printed before it stay) and make sure the nozzle&apos;s way is clear.</source>
+        <translation>打印机在步骤 %1 中途丢失了任务。在重新打印该步骤之前，请取下中断的打印留下的区域 %1 部分（之前打印的区域保留），并确保喷嘴的路径畅通。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
+        <source>Platform Clear: &amp;Restart Step %1</source>
+        <translation>平台已清空：重新开始步骤 %1(&amp;R)</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::JgChart</name>
@@ -2054,6 +2134,46 @@ Qt %1</translation>
         <source>The model now stands on pose %1; searching its plan...</source>
         <translation>模型现已按姿态 %1 摆放；正在搜索其方案...</translation>
     </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="727"/>
+        <source>Replace the Edited Plan</source>
+        <translation>替换已编辑的方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="728"/>
+        <source>The plan shown has edits that are not saved.</source>
+        <translation>显示的方案有未保存的编辑。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="730"/>
+        <source>A new search replaces it; Edit &gt; Undo brings it back. Search now?</source>
+        <translation>新的搜索将替换它；“编辑 &gt; 撤销”可将其恢复。现在搜索吗？</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="768"/>
+        <source>Search cancelled: its best plan so far (J_G %1 mm²) is worse than the plan shown (J_G %2 mm²), which is kept.</source>
+        <translation>搜索已取消：其目前最佳方案（J_G %1 mm²）比显示的方案（J_G %2 mm²）差，保留显示的方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="888"/>
+        <source>Print Run Under Way</source>
+        <translation>打印运行进行中</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="889"/>
+        <source>A print run is under way: step %1.</source>
+        <translation>打印运行正在进行：步骤 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="892"/>
+        <source>Quitting stops the platform and the printer first: the run is aborted (Start run offers to resume it from the step it stopped at). Stop the devices and quit?</source>
+        <translation>退出会先停止平台和打印机：运行将被中止（“开始运行”可以从其停止的步骤继续）。停止设备并退出吗？</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="894"/>
+        <source>S&amp;top the Devices and Quit</source>
+        <translation>停止设备并退出(&amp;T)</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MeshViewerWidget</name>
@@ -2761,6 +2881,16 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <source>%1 refused: no printer is connected.</source>
         <translation>%1 被拒绝：未连接打印机。</translation>
     </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="139"/>
+        <source>Restart firmware</source>
+        <translation>重启固件</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_link_owner.cpp" line="139"/>
+        <source>Restart firmware refused: no printer is connected.</source>
+        <translation>“重启固件”被拒绝：未连接打印机。</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::PrinterSection</name>
@@ -3041,6 +3171,76 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <location filename="../ui/device/printer_section.cpp" line="289"/>
         <source>The print run is paused: %1.</source>
         <translation>打印运行已暂停：%1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="91"/>
+        <source>Allows jobs again once the printer confirmed the emergency stop. A printer whose firmware the stop shut down also needs Restart firmware.</source>
+        <translation>打印机确认急停后，再次允许任务。急停使其固件关闭的打印机还需要“重启固件”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="94"/>
+        <source>Restart firmware</source>
+        <translation>重启固件</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="95"/>
+        <source>After an emergency stop: Klipper&apos;s FIRMWARE_RESTART (through Moonraker), or OctoPrint connecting to the printer again (which resets its board). Asks first.</source>
+        <translation>急停之后：Klipper 的 FIRMWARE_RESTART（通过 Moonraker），或 OctoPrint 重新连接打印机（这会重置其主板）。会先询问。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="203"/>
+        <source>Printer E-STOP cleared.</source>
+        <translation>打印机急停已清除。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="205"/>
+        <source>Printer E-STOP cleared. Its firmware is %1: it needs Restart firmware (Klipper&apos;s FIRMWARE_RESTART) before its next job.</source>
+        <translation>打印机急停已清除。其固件状态为 %1：在下一个任务之前需要“重启固件”（Klipper 的 FIRMWARE_RESTART）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="145"/>
+        <source>%1 is restarting its firmware; the Firmware line shows &quot;ready&quot; once it is back.</source>
+        <translation>%1 正在重启其固件；恢复后“固件”一行将显示“ready”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="149"/>
+        <source>Restart firmware refused: %1</source>
+        <translation>“重启固件”被拒绝：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="214"/>
+        <source>Restart Printer Firmware</source>
+        <translation>重启打印机固件</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="215"/>
+        <source>Restart the firmware of %1?</source>
+        <translation>重启 %1 的固件？</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="218"/>
+        <source>The firmware takes the heaters and motors back: make sure whatever caused the emergency stop is fixed and nothing is in the printer&apos;s way.</source>
+        <translation>固件将重新接管加热器和电机：请确保导致急停的原因已排除，并且没有任何东西挡住打印机。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="220"/>
+        <source>&amp;Restart Firmware</source>
+        <translation>重启固件(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="228"/>
+        <source>Restarting the firmware of %1…</source>
+        <translation>正在重启 %1 的固件…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="308"/>
+        <source>unknown since %1: the printer&apos;s link is lost</source>
+        <translation>自 %1 起未知：与打印机的链路已中断</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/printer_section.cpp" line="325"/>
+        <source>%1&apos;s firmware is ready again.</source>
+        <translation>%1 的固件已再次就绪。</translation>
     </message>
 </context>
 <context>
@@ -4033,6 +4233,13 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>整个模型沿向上方向打印并使用 PrusaSlicer 自身的支撑：用于比较</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/slice_panel.cpp" line="209"/>
+        <source>Slower than the fixed direction: each of the %n steps starts anew (the platform turns, the nozzle lifts and primes, a first layer on the step&apos;s base), and here that costs more time than the slicer&apos;s supports it avoids.</source>
+        <translation>
+            <numerusform>比固定方向慢：%n 个步骤中的每一步都要重新开始（平台转动、喷嘴抬起并预挤出、在该步骤的底面上打印第一层），在这里这比它省去的切片器支撑花费更多时间。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::SliceSession</name>
@@ -4292,6 +4499,14 @@ Write the job into this folder anyway? Files with the job&apos;s names are repla
         <location filename="../ui/studio_startup.cpp" line="228"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>未显示任何模型；截图 %1 显示的是空窗口。</translation>
+    </message>
+</context>
+<context>
+    <name>ReplacePlanCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="59"/>
+        <source>New search</source>
+        <translation>新搜索</translation>
     </message>
 </context>
 </TS>

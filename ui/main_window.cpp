@@ -239,7 +239,7 @@ void MainWindow::buildDocks() {
     return dock;
   };
   m_overhangPanel = new OverhangPanel(this);
-  m_machinePanel = new MachinePanel(this);
+  m_machinePanel = new MachinePanel(m_document, this);
   m_searchPanel = new SearchPanel(this);
   m_planPanel = new PlanPanel(this);
   QDockWidget* overhangs = addDock(m_overhangPanel, tr("Overhangs"), QStringLiteral("overhangDock"));
@@ -265,7 +265,7 @@ void MainWindow::buildDocks() {
   // One alpha_max, shown in both panels: each follows the other (setting an equal value emits nothing).
   connect(m_overhangPanel, &OverhangPanel::alphaMaxChanged, m_searchPanel, &SearchPanel::setAlphaMaxDegrees);
   connect(m_searchPanel, &SearchPanel::alphaMaxChanged, m_overhangPanel, &OverhangPanel::setAlphaMaxDegrees);
-  connect(m_machinePanel, &MachinePanel::machineChanged, this, &MainWindow::onMachineChanged);
+  connect(m_document, &StudioDocument::machineChanged, this, &MainWindow::onMachineChanged);
   connect(m_searchPanel, &SearchPanel::runClicked, this, &MainWindow::runSearchFromUser);
   connect(m_searchPanel, &SearchPanel::cancelClicked, this, &MainWindow::cancelSearch);
   // A search being abandoned reports nothing more: the panel already shows another model.
@@ -366,6 +366,8 @@ void MainWindow::buildUpBox() {
   m_upIndex = 4;
   connect(m_upBox, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MainWindow::onUpBoxChosen);
   bar->addWidget(m_upBox);
+  // The box shows the document's up, whoever set it.
+  connect(m_document, &StudioDocument::upChanged, this, &MainWindow::onDocumentUpChanged);
 }
 
 void MainWindow::buildStatusBar() {
@@ -449,19 +451,29 @@ void MainWindow::chooseFile() {
   m_project->openFromUser(path);
 }
 
-void MainWindow::applyUpEntry() {
-  const QVariant pose = m_upBox->itemData(m_upIndex, kPoseRole);
+void MainWindow::applyUpEntry(int index) {
+  const QVariant pose = m_upBox->itemData(index, kPoseRole);
   if (pose.isValid())
     m_document->setUpPose(pose.value<UpPose>());
   else
-    m_document->setUp(toVec3(m_upBox->itemData(m_upIndex).value<QVector3D>()));
+    m_document->setUp(toVec3(m_upBox->itemData(index).value<QVector3D>()));
 }
 
 void MainWindow::setUpDirection(const core::Vec3& up) {
   const double length = up.norm();
   if (!std::isfinite(length) || length == 0.0) return;
-  const int index = selectUpEntry(up / length);
-  if (index == m_upIndex) return;
+  // The direction in force already (a pose's too): nothing changes, the pose stays.
+  if ((up / length - m_document->up()).norm() <= 1e-9) return;
+  m_document->setUp(up);
+}
+
+void MainWindow::onDocumentUpChanged() {
+  if (m_showingModel) return;  // showModel shows the new model's up and draws it once
+  const int index = selectUpEntry(m_document->up(), m_document->upPose());
+  if (index == m_upIndex) {
+    markPoseInUse();
+    return;
+  }
   m_upIndex = index;
   onUpChanged();
 }
@@ -500,8 +512,8 @@ void MainWindow::onUpBoxChosen(int index) {
       const QSignalBlocker blocker(m_upBox);
       m_upBox->setCurrentIndex(index);
     }
-    m_upIndex = index;
-    onUpChanged();
+    applyUpEntry(index);  // the document's upChanged redraws (onDocumentUpChanged)
+    m_upIndex = index;    // also when the entry is the document's up already
   };
   if (!dropsWork) {
     apply();
@@ -521,17 +533,7 @@ core::Vec3 MainWindow::upDirection() const { return m_document->up(); }
 
 std::optional<UpPose> MainWindow::upPose() const { return m_document->upPose(); }
 
-void MainWindow::setUpPose(const UpPose& pose) {
-  const double length = pose.up.norm();
-  if (!std::isfinite(length) || length == 0.0) return;
-  UpPose unit = pose;
-  // A unit vector is kept as it is: normalising it again could change its last bits.
-  if (std::abs(length - 1.0) > 1e-12) unit.up = pose.up / length;
-  const int index = selectUpEntry(unit.up, unit);
-  if (index == m_upIndex) return;
-  m_upIndex = index;
-  onUpChanged();
-}
+void MainWindow::setUpPose(const UpPose& pose) { m_document->setUpPose(pose); }
 
 bool MainWindow::isLoading() const { return m_loader->isBusy(); }
 
@@ -542,10 +544,11 @@ void MainWindow::showModel(const LoadedModel& model) {
   // The document drops the last model's pose (its machine turns back with it), plan and job, and takes the up
   // the model comes with. The Up box shows that up without redrawing: it is drawn once below. Only here:
   // whoever answers modelShown (a project applying its own up direction) must redraw.
-  const bool hadPose = m_document->upPose().has_value();
+  // The Machine panel follows the document's machine (turned back with the pose) by itself.
+  m_showingModel = true;
   m_document->setModel(model);
-  if (hadPose) m_machinePanel->setMachineSpec(m_document->machine());
   if (m_pendingPlan) m_document->setUp(m_pendingPlan->machine.up);
+  m_showingModel = false;
   {
     // A pose entry of the Up box is the last model's pose: it goes with it.
     const QSignalBlocker blocker(m_upBox);
@@ -593,8 +596,7 @@ void MainWindow::reportLoadError(const QString& source, const QString& headline,
 }
 
 void MainWindow::onUpChanged() {
-  applyUpEntry();       // the document drops the plan when the direction moved
-  m_previewUp.reset();  // setMesh below shows the new up
+  m_previewUp.reset();  // setMesh below shows the new up (the document dropped the plan if it moved)
   markPoseInUse();
   onMachineChanged();
   emit upDirectionChanged();
@@ -648,13 +650,14 @@ void MainWindow::updateOverhangs() {
 }
 
 void MainWindow::onMachineChanged() {
-  m_document->setMachine(m_machinePanel->machineSpec(upDirection()));
-  const bool valid = m_machinePanel->validateFor(upDirection());
-  const bool rotary = m_machinePanel->kind() == core::MachineKind::RotaryPlatform;
-  m_viewer->setRotationAxis(rotary ? m_machinePanel->rotationAxis() : std::nullopt);
+  // The document's machine (the Machine panel sent its edits there and says what is wrong with it).
+  const core::MachineSpec& machine = m_document->machine();
+  const bool rotary = machine.kind == core::MachineKind::RotaryPlatform;
+  std::optional<core::Vec3> axis;
+  if (rotary && machine.rotationAxis.norm() > 0.0) axis = machine.rotationAxis.normalized();
+  m_viewer->setRotationAxis(axis);
   if (!rotary && m_axisPicker) m_axisPicker->cancel();
   m_searchPanel->setRotaryMachine(rotary);
-  (void)valid;
   updateRunnable();
 }
 
@@ -697,7 +700,7 @@ bool MainWindow::runSearch() {
     emit searchFailed(problem);
     return false;
   }
-  const core::MachineSpec machine = m_machinePanel->machineSpec(upDirection());
+  const core::MachineSpec machine = m_document->machine();
   m_searchModel = model()->mesh;
   m_searchUp = upDirection();
   core::OverhangOptions overhang;
@@ -979,7 +982,7 @@ bool MainWindow::openPlan(const QString& directory, QString* error) {
   run.axisSearchCount = loaded->metadata.axisSearchCount;
   run.plan = std::make_shared<const core::Decomposition>(loaded->decomposition);
   if (!loaded->supports.empty()) run.supports = std::make_shared<const std::vector<core::SupportSet>>(loaded->supports);
-  m_machinePanel->setMachineSpec(run.machine);
+  m_document->setMachine(run.machine);
   m_searchPanel->setSearchOptions(run.options);
   m_searchPanel->setAxisSearchCount(run.axisSearchCount);
 
@@ -1008,7 +1011,7 @@ bool MainWindow::saveMachineProfile(const QString& path, QString* error) {
     if (error) *error = m_machinePanel->errorText();
     return false;
   }
-  const core::Status saved = core::saveMachineProfile(m_machinePanel->machineSpec(upDirection()), localPath(path));
+  const core::Status saved = core::saveMachineProfile(m_document->machine(), localPath(path));
   if (!saved) {
     if (error) *error = QString::fromStdString(saved.error().describe());
     return false;
@@ -1024,7 +1027,7 @@ bool MainWindow::loadMachineProfile(const QString& path, QString* error) {
     return false;
   }
   setUpDirection(loaded->up);
-  m_machinePanel->setMachineSpec(loaded.value());
+  m_document->setMachine(loaded.value());
   statusBar()->showMessage(tr("Machine profile %1 loaded.").arg(QFileInfo(path).fileName()));
   return true;
 }

@@ -228,7 +228,10 @@ class MainWindow : public QMainWindow {
   // The document's plan changed: what showed a plan that is gone is cleared.
   void onDocumentPlanChanged();
   // The Up box's applied entry becomes the document's up (with its pose, when a pose search chose it).
-  void applyUpEntry();
+  // The Up box's entry `index` becomes the document's up (with its pose, when a pose search chose it).
+  void applyUpEntry(int index);
+  // The document's up changed (whoever set it): the Up box shows it, and the view, overhangs and plan follow.
+  void onDocumentUpChanged();
   void onSearchFinished(const SearchRun& run);
   void onSearchFailed(const QString& headline, const QString& detail);
   void chooseExportPlan();
@@ -296,6 +299,7 @@ class MainWindow : public QMainWindow {
   ProjectSession* m_project = nullptr;
   SupportRegrowth* m_regrowth = nullptr;
   SliceSession* m_slicing = nullptr;
+  bool m_showingModel = false;  // showModel() is handing the document a new model
   int m_upIndex = -1;               // the Up box entry applied (the box shows another one while asking)
   bool m_dropSearchResult = false;  // abandonSearch(): the running search's result is not shown
   QPointer<QMessageBox> m_replaceQuestion;  // "replace the edited plan?" while it is asked

@@ -90,7 +90,7 @@ bool MainWindow::findBestPose() {
   }
   endPreview();
   m_poseRun.reset();
-  const core::MachineSpec machine = m_machinePanel->machineSpec(upDirection());
+  const core::MachineSpec machine = m_document->machine();
   if (!m_poseSearch->start(model()->mesh, machine, options, poseOptions)) return false;
   box->searchStarted();
   statusBar()->showMessage(tr("Finding the best pose for %1...").arg(model()->name));
@@ -215,7 +215,7 @@ void MainWindow::applyPose(int trial) {
   pose.pose.platformUp = run.machine.up.normalized();
   pose.runnersUp = runnersUpOf(result, trial);
   // The machine turns with the pose (a 4-DOF axis and forbidden cones stay where they were on the platform).
-  m_machinePanel->setMachineSpec(core::machineForPose(run.machine, pose.up));
+  m_document->setMachine(core::machineForPose(run.machine, pose.up));
   setUpPose(pose);
   if (trial == result.chosenTrial) {
     showPlan(run.chosenRun);

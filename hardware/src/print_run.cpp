@@ -299,9 +299,12 @@ core::Status PrintRun::resume() {
                                                               "; following it again"));
       return core::Done{};
     }
-    return cannot("the printer's job for this step ended (" + std::string(printerJobStateName(p.state)) +
+    return cannot("the printer has no job of this step any more (it reports " +
+                  std::string(printerJobStateName(p.state)) +
+                  (p.currentFile.empty() ? std::string(", no file") : " of " + p.currentFile) +
                   (p.message.empty() ? std::string() : ": " + p.message) +
-                  "); finish the region by hand and press Region done, or abort the run");
+                  "); print the step again from its start (restart the step), finish the region by hand and "
+                  "press Region done, or abort the run");
   }
   // Resuming is the operator clearing the stop; refused while the device has not confirmed it.
   watchStop(m_positioner.snapshot());
@@ -311,6 +314,34 @@ core::Status PrintRun::resume() {
   m_awaitingStopConfirmation = false;
   enter(m_state, stepLabel() + (m_state == PrintRunState::Faulted ? ": retrying" : ": resuming"));
   beginMove();
+  return core::Done{};
+}
+
+bool PrintRun::interruptedJobGone() const {
+  if (m_state != PrintRunState::Paused || !m_printInterrupted || m_printer == nullptr) return false;
+  const PrinterStatus p = m_printer->status();
+  if (p.linkLost || p.state == PrinterJobState::Unknown) return false;  // nothing known of its job
+  const bool ours = p.currentFile == remoteName();
+  return !(ours && (p.busy() || p.state == PrinterJobState::Complete));
+}
+
+core::Status PrintRun::restartStep() {
+  if (m_state != PrintRunState::Paused || !m_printInterrupted || m_printer == nullptr) return refuse("restart a step of");
+  const PrinterStatus p = m_printer->status();
+  const auto cannot = [&](const std::string& why) {
+    return core::Error{core::ErrorCode::InvalidParameter, "cannot restart step " + std::to_string(m_step + 1) + ": " + why,
+                       "print run"};
+  };
+  if (p.linkLost) return cannot("the link to " + m_printer->name() + " is still lost; check the printer and network");
+  if (!interruptedJobGone())
+    return cannot("the printer still has the step's job (" + std::string(printerJobStateName(p.state)) +
+                  "); resume it instead");
+  if (p.stop.latched()) return cannot("the printer's emergency stop is latched");
+  if (p.firmwareState != "ready")
+    return cannot("the printer's firmware is not ready (" + p.firmwareState + "); restart its firmware first");
+  enter(PrintRunState::Paused, stepLabel() + ": " + m_printer->name() + " has no job of " + remoteName() +
+                                   " any more; printing the step again from its start");
+  beginPrint(m_positioner.snapshot());
   return core::Done{};
 }
 
@@ -540,6 +571,7 @@ void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
       return interruptPrint("the printer did not start " + remoteName() + ": " + started.error().describe());
     }
     m_phase = PrintPhase::Running;
+    m_jobSeen = false;
     m_pollsAtStart = p.polls;
     m_printStarted = m_options.steadyNow();
     enter(PrintRunState::Printing, stepLabel() + ": " + m_printer->name() + " prints " + remoteName());
@@ -555,6 +587,7 @@ void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
   if (p.state == PrinterJobState::Cancelled && ours)
     return interruptPrint("the job " + remoteName() + " was cancelled on the printer");
   if (ours && (p.state == PrinterJobState::Printing || p.state == PrinterJobState::Paused)) {
+    m_jobSeen = true;
     m_stepProgress = p.progress;
     if (const std::string fault = temperatureFault(p, m_options.temperatureOvershootC); !fault.empty()) {
       m_printerSideCommand = m_printer->pausePrint();
@@ -579,6 +612,13 @@ void PrintRun::tickPrinter(const PositionerSnapshot& snapshot) {
     enter(PrintRunState::Printing, stepLabel() + ": " + m_printer->name() + " reports " + remoteName() + " complete");
     return finishRegion();
   }
+  // Seen printing, and now neither printing, paused nor complete: the printer lost the job (it restarted, e.g.
+  // Klipper's standby with no file).
+  if (m_jobSeen)
+    return interruptPrint(m_printer->name() + " no longer has the job " + remoteName() + ": it reports " +
+                          printerJobStateName(p.state) +
+                          (p.currentFile.empty() ? std::string(" with no file") : " of " + p.currentFile) +
+                          " (it may have restarted)");
   if (m_options.steadyNow() - m_printStarted > m_options.printStartTimeout)
     interruptPrint("the printer accepted the start of " + remoteName() + " but reports " +
                    printerJobStateName(p.state) + (p.currentFile.empty() ? std::string() : " of " + p.currentFile) +

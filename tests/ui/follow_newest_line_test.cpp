@@ -3,6 +3,7 @@
 
 #include <QPlainTextEdit>
 #include <QScrollBar>
+#include <QTextCursor>
 #include <QTextDocument>
 #include <QTest>
 
@@ -14,6 +15,14 @@ namespace {
 void appendLines(QPlainTextEdit& log, int count) {
   for (int i = 0; i < count; ++i) log.appendPlainText(QStringLiteral("Step %1: printing").arg(i + 1));
   QCoreApplication::processEvents();
+}
+
+// The newest line is drawn inside the log's viewport.
+bool newestLineInView(QPlainTextEdit& log) {
+  QTextCursor end(log.document());
+  end.movePosition(QTextCursor::End);
+  const QRect line = log.cursorRect(end);
+  return line.top() >= 0 && line.bottom() <= log.viewport()->rect().bottom();
 }
 
 class FollowNewestLineTest : public ::testing::Test {
@@ -62,6 +71,26 @@ TEST_F(FollowNewestLineTest, ALogFilledWhileHiddenShowsItsNewestLineAgain) {
   QScrollBar* bar = log.verticalScrollBar();
   ASSERT_GT(bar->maximum(), 0);
   EXPECT_EQ(bar->value(), bar->maximum());
+}
+
+// The run log made shorter by its dock's layout while on its newest line (a banner or the "printer has no job"
+// text appears above it, the dock is resized): the lines that no longer fit go above, and the log stays on its
+// newest line, and on the lines that come after. Qt's own following sees the newest line below the view after
+// such a resize and stops following (this test fails without FollowNewestLine).
+TEST_F(FollowNewestLineTest, ALogMadeShorterByItsLayoutStaysOnTheNewestLine) {
+  log.resize(300, 300);
+  log.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&log));
+  appendLines(log, 100);
+  QScrollBar* bar = log.verticalScrollBar();
+  ASSERT_EQ(bar->value(), bar->maximum());
+  log.resize(300, 100);
+  QCoreApplication::processEvents();
+  EXPECT_EQ(bar->value(), bar->maximum());
+  EXPECT_TRUE(newestLineInView(log));
+  appendLines(log, 5);
+  EXPECT_EQ(bar->value(), bar->maximum());
+  EXPECT_TRUE(newestLineInView(log));
 }
 
 // Past the log's 1,000 lines the oldest go as new ones come: the view stays on the newest.

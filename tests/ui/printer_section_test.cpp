@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -159,6 +160,66 @@ TEST_F(PrinterSectionTest, ThermalRunawayShowsThePrintersMessageAndTheRunPaused)
   EXPECT_TRUE(panel.printerSection()->bannerText().contains(said)) << panel.printerSection()->bannerText().toStdString();
   // The region may be finished by hand.
   EXPECT_TRUE(buttonNamed("regionDoneButton")->isEnabled());
+  press("abortButton");
+}
+
+// The printer restarts part way through step 1 (a power cycle: standby, no file): Resume has nothing to resume,
+// and the panel says so under it and offers to print the step again, after the operator cleared the platform.
+TEST_F(PrinterSectionTest, ResumeAfterThePrinterRestartedWithoutItsJobSaysSoAndRestartsTheStepOnceThePlatformIsClear) {
+  startPrinter(10.0);
+  givePlanWithGcode(2);
+  ASSERT_NO_FATAL_FAILURE(runUntilPrinting());
+  printer->restartPrinter();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return panel.printRunDriver()->state() == hardware::PrintRunState::Paused; }, 5000))
+      << runLog();
+  EXPECT_TRUE(timeline()[0].reason.contains(QStringLiteral("no longer has the job"))) << timeline()[0].reason.toStdString();
+
+  press("resumeButton");
+  EXPECT_EQ(panel.printRunDriver()->state(), hardware::PrintRunState::Paused);
+  auto* gone = panel.findChild<QLabel*>(QStringLiteral("runJobGoneText"));
+  ASSERT_NE(gone, nullptr);
+  EXPECT_TRUE(gone->isVisible());
+  EXPECT_TRUE(gone->text().contains(QStringLiteral("has no job of step 1 any more"))) << gone->text().toStdString();
+  EXPECT_TRUE(gone->text().contains(QStringLiteral("nothing to resume"))) << gone->text().toStdString();
+  QPushButton* restart = buttonNamed("restartStepButton");
+  ASSERT_TRUE(restart->isVisible());
+  ASSERT_TRUE(restart->isEnabled());
+
+  // Asked first: nothing reaches the printer before the operator confirms the platform is clear.
+  const auto starts = [&] {
+    const auto requests = printer->requests();
+    return std::count_if(requests.begin(), requests.end(), [](const hardware::PrinterRequestRecord& r) {
+      return r.path == "/printer/print/start" && r.detail == "step-01.gcode";
+    });
+  };
+  ASSERT_EQ(starts(), 1);
+  restart->click();
+  QMessageBox* box = nullptr;
+  ASSERT_TRUE(QTest::qWaitFor(
+      [&] {
+        box = panel.findChild<QMessageBox*>(QStringLiteral("restartStepBox"));
+        return box != nullptr && box->isVisible();
+      },
+      kWaitMs));
+  QTest::qWait(100);
+  EXPECT_EQ(starts(), 1);
+  EXPECT_EQ(printer->state().jobState, "standby");
+  auto* confirm = box->findChild<QPushButton*>(QStringLiteral("restartStepConfirm"));
+  ASSERT_NE(confirm, nullptr);
+  confirm->click();
+
+  ASSERT_TRUE(QTest::qWaitFor(
+      [&] {
+        const hardware::SimulatedPrinterState s = printer->state();
+        return s.jobState == "printing" && s.file == "step-01.gcode";
+      },
+      kWaitMs))
+      << runLog();
+  EXPECT_EQ(starts(), 2);
+  EXPECT_EQ(panel.printRunDriver()->state(), hardware::PrintRunState::Printing);
+  EXPECT_EQ(panel.printRunDriver()->currentStep(), 0u);
+  EXPECT_FALSE(gone->isVisible());
+  EXPECT_FALSE(restart->isVisible());
   press("abortButton");
 }
 

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "multidir/core/common/units.h"
+#include "ui/document/studio_document.h"
 #include "ui/main_window.h"
 #include "ui/panels/machine_panel.h"
 #include "ui/studio_test_support.h"
@@ -176,7 +177,8 @@ TEST(StudioAxisPick, ButtonIsEnabledForARotaryPlatformUnderAModelOnly) {
 }
 
 TEST(StudioAxisPick, PickedAxisIsTypedWithFourDecimalsAndStaysValidUnderATiltedUp) {
-  MachinePanel panel;
+  StudioDocument document;
+  MachinePanel panel(&document);
   core::MachineSpec machine;
   machine.kind = core::MachineKind::RotaryPlatform;
   panel.setMachineSpec(machine);

@@ -19,6 +19,7 @@
 #include "ui/device/device_link.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/device/print_run_driver.h"
+#include "ui/document/studio_document.h"
 #include "ui/edit/plan_editor.h"
 #include "ui/main_window.h"
 #include "ui/panels/machine_panel.h"
@@ -128,6 +129,37 @@ TEST(StudioDocumentViews, NextModelOpensWithoutTheLastModelsPoseAndWithTheAxisTu
   ASSERT_TRUE(axis.has_value());
   EXPECT_LT((*axis - core::Vec3::UnitX()).norm(), 1e-3);
   EXPECT_TRUE(named<QPushButton>(*window.machinePanel()->poseBox(), "findBestPose")->isEnabled());
+}
+
+// The Machine panel and the Up box show the document's machine and up, whoever changed them: here the
+// document itself, not the panel or the box.
+TEST(StudioDocumentViews, MachineAndUpSetInTheDocumentAreShownByTheMachinePanelAndTheUpBox) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(test::showDefaultSample(window));
+  StudioDocument& document = *window.document();
+  document.setUp(core::Vec3::UnitY());
+  auto* upBox = window.findChild<QComboBox*>(QStringLiteral("upBox"));
+  ASSERT_NE(upBox, nullptr);
+  EXPECT_EQ(upBox->currentText(), QStringLiteral("+Y"));
+
+  core::MachineSpec rotary = document.machine();
+  rotary.kind = core::MachineKind::RotaryPlatform;
+  rotary.rotationAxis = core::Vec3::UnitX();  // in the platform plane of +Y
+  rotary.minAngleDegrees = -45.0;
+  rotary.maxAngleDegrees = 60.0;
+  document.setMachine(rotary);
+  auto* kind = named<QComboBox>(*window.machinePanel(), "machineKind");
+  ASSERT_NE(kind, nullptr);
+  EXPECT_EQ(kind->currentData().toInt(), static_cast<int>(core::MachineKind::RotaryPlatform));
+  const std::optional<core::Vec3> axis = window.machinePanel()->rotationAxis();
+  ASSERT_TRUE(axis.has_value());
+  EXPECT_LT((*axis - core::Vec3::UnitX()).norm(), 1e-9);
+  EXPECT_DOUBLE_EQ(named<QDoubleSpinBox>(*window.machinePanel(), "minAngle")->value(), -45.0);
+  EXPECT_DOUBLE_EQ(named<QDoubleSpinBox>(*window.machinePanel(), "maxAngle")->value(), 60.0);
+  EXPECT_TRUE(window.machinePanel()->errorText().isEmpty()) << window.machinePanel()->errorText().toStdString();
+  // The panel's machine is the document's, with the document's up.
+  EXPECT_EQ(window.machinePanel()->machineSpec(document.up()).kind, core::MachineKind::RotaryPlatform);
+  EXPECT_EQ(document.machine().up, core::Vec3::UnitY());
 }
 
 TEST(StudioDocumentViews, EditPlanFieldsShowNothingOfTheLastModelsPlan) {

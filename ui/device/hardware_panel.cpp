@@ -365,6 +365,14 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   m_resume = button(group, QStringLiteral("resumeButton"), tr("Resume"),
                     tr("Continues a paused run, or retries the current step after a device problem."));
   m_abort = button(group, QStringLiteral("abortButton"), tr("Abort"));
+  // The printer lost the interrupted step's job (it restarted): said right under Resume, which can do nothing.
+  m_jobGone = valueLabel(group, QStringLiteral("runJobGoneText"));
+  m_jobGone->setStyleSheet(QStringLiteral("color: #c62828;"));
+  m_jobGone->hide();
+  m_restartStep = button(group, QStringLiteral("restartStepButton"), tr("Restart step"),
+                         tr("Prints the current step again from the start of its G-code, once you have cleared "
+                            "the platform of what the interrupted print left."));
+  m_restartStep->hide();
   m_timeline = new JobTimeline(group);
   m_runLog = new QPlainTextEdit(group);
   m_runLog->setObjectName(QStringLiteral("runLog"));
@@ -388,6 +396,8 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   layout->addLayout(form);
   layout->addWidget(m_prompt);
   layout->addLayout(buttons);
+  layout->addWidget(m_jobGone);
+  layout->addWidget(m_restartStep);
   layout->addWidget(m_timeline);
   layout->addWidget(m_runLog);
 
@@ -396,6 +406,8 @@ QGroupBox* HardwarePanel::buildRunGroup() {
   connect(m_pause, &QPushButton::clicked, this, [this] { runEvent(tr("Pause"), m_run->pause()); });
   connect(m_resume, &QPushButton::clicked, this, [this] { runEvent(tr("Resume"), m_run->resume()); });
   connect(m_abort, &QPushButton::clicked, this, [this] { runEvent(tr("Abort"), m_run->abort()); });
+  connect(m_restartStep, &QPushButton::clicked, this, &HardwarePanel::restartStep);
+  connect(m_run, &PrintRunDriver::printerJobGoneChanged, this, &HardwarePanel::updateJobGone);
   return group;
 }
 
@@ -711,6 +723,50 @@ void HardwarePanel::startRun() {
         return;
       }
       startRunFrom(from);
+    });
+  });
+  box->open();
+}
+
+void HardwarePanel::updateJobGone() {
+  const bool gone = m_run->interruptedJobGone();
+  if (gone) {
+    const auto step = static_cast<int>(m_run->currentStep()) + 1;
+    m_jobGone->setText(tr("%1 has no job of step %2 any more: it may have restarted, so there is nothing to "
+                          "resume. Restart step prints step %2 again from its start, once you have cleared the "
+                          "platform of what the interrupted print left. Or finish the region by hand and press "
+                          "Region done, or Abort.")
+                           .arg(m_printerLink->printerName())
+                           .arg(step));
+    m_restartStep->setText(tr("Restart Step %1").arg(step));
+  }
+  m_jobGone->setVisible(gone);
+  m_restartStep->setVisible(gone);
+  m_restartStep->setEnabled(gone);
+}
+
+void HardwarePanel::restartStep() {
+  if (!m_run->interruptedJobGone()) return;
+  const auto step = static_cast<int>(m_run->currentStep()) + 1;
+  auto* box = new QMessageBox(QMessageBox::Question, tr("Restart Step"),
+                              tr("Print step %1 again from its start?").arg(step), QMessageBox::NoButton, this);
+  box->setObjectName(QStringLiteral("restartStepBox"));
+  box->setInformativeText(tr("The printer lost the job of step %1 part way. Before it prints the step again, "
+                             "take off what the interrupted print left of region %1 (the regions printed before "
+                             "it stay) and make sure the nozzle's way is clear.")
+                              .arg(step));
+  QPushButton* confirm = box->addButton(tr("Platform Clear: &Restart Step %1").arg(step), QMessageBox::AcceptRole);
+  confirm->setObjectName(QStringLiteral("restartStepConfirm"));
+  box->addButton(QMessageBox::Cancel);
+  box->setDefaultButton(QMessageBox::Cancel);
+  box->setWindowModality(Qt::WindowModal);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::finished, this, [this, box, confirm, step] {
+    if (box->clickedButton() != confirm) return;
+    QTimer::singleShot(0, this, [this, step] {
+      // The run may have moved on while the question was open: only the step it was asked of is restarted.
+      if (static_cast<int>(m_run->currentStep()) + 1 != step) return;
+      runEvent(tr("Restart step"), m_run->restartStep());
     });
   });
   box->open();

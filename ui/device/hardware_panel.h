@@ -143,6 +143,11 @@ class HardwarePanel : public QWidget {
   // start again, either once the operator confirmed the platform is clear: "restartRunBox").
   void startRun();
   void startRunFrom(std::size_t firstStep);
+  // Restart step: the printer lost the interrupted step's job; asks the operator to clear the platform of what
+  // the first attempt printed ("restartStepBox"), then prints the step again from its start.
+  void restartStep();
+  // Shows, under the run's buttons, that the printer has no job to resume, and offers Restart step.
+  void updateJobGone();
   // Says why Start run was refused, in the message line and under the button.
   void refuseStart(const QString& text);
   void runEvent(const QString& event, const core::Status& status);
@@ -214,6 +219,8 @@ class HardwarePanel : public QWidget {
   QPushButton* m_pause = nullptr;
   QPushButton* m_resume = nullptr;
   QPushButton* m_abort = nullptr;
+  QLabel* m_jobGone = nullptr;
+  QPushButton* m_restartStep = nullptr;
   QPlainTextEdit* m_runLog = nullptr;
 
   QTimer m_clockTimer;  // refreshes the heartbeat age and the run's elapsed time from the last snapshot

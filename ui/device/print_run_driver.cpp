@@ -94,6 +94,14 @@ core::Status PrintRunDriver::resume() {
   return status;
 }
 
+core::Status PrintRunDriver::restartStep() {
+  if (!m_run) return noRun();
+  const core::Status status = m_run->restartStep();
+  if (status.ok()) m_heldForLostLink = false;
+  afterEvent();
+  return status;
+}
+
 core::Status PrintRunDriver::abort() {
   if (!m_run) return noRun();
   const core::Status status = m_run->abort();
@@ -181,6 +189,10 @@ void PrintRunDriver::afterEvent() {
   if (region != m_lastRegion) {
     m_lastRegion = region;
     emit currentRegionChanged(region);
+  }
+  if (const bool gone = m_run->interruptedJobGone(); gone != m_lastJobGone) {
+    m_lastJobGone = gone;
+    emit printerJobGoneChanged(gone);
   }
 }
 

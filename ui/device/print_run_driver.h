@@ -46,6 +46,9 @@ class PrintRunDriver : public QObject {
   core::Status regionDone();  // for the current step
   core::Status pause();
   core::Status resume();
+  // The current step printed again from its start, once the operator cleared the platform (the printer lost
+  // its job: interruptedJobGone()).
+  core::Status restartStep();
   core::Status abort();
   // The positioner's and the printer's emergency stops at once (PrintRun::emergencyStop); the run ends.
   core::Status emergencyStop();
@@ -65,6 +68,9 @@ class PrintRunDriver : public QObject {
   // The run is paused because the printer's job for the current step was interrupted (lastProblem says why):
   // Resume follows the printer again, or the operator finishes the region by hand and presses Region done.
   [[nodiscard]] bool printInterrupted() const { return m_run && m_run->printInterrupted(); }
+  // ... and the printer has no job of the step any more (it restarted): Resume has nothing to resume, only
+  // restartStep(), Region done or Abort go on. Followed on every tick (printerJobGoneChanged).
+  [[nodiscard]] bool interruptedJobGone() const { return m_run && m_run->interruptedJobGone(); }
   // A stop or emergency stop was asked for and a device has not confirmed it yet.
   [[nodiscard]] bool stopUnconfirmed() const { return m_run && m_run->stopUnconfirmed(); }
   // Since start(), frozen once the run ended.
@@ -90,6 +96,8 @@ class PrintRunDriver : public QObject {
   void runEvent(const hardware::PrintRunLogEntry& entry, const QString& reason);
   // The link to the device went down while the run was under way: the run is paused (see the header).
   void pausedForLostLink();
+  // interruptedJobGone() changed.
+  void printerJobGoneChanged(bool gone);
 
  private:
   void tick();
@@ -105,6 +113,7 @@ class PrintRunDriver : public QObject {
   hardware::PrintRunState m_lastState = hardware::PrintRunState::Idle;
   int m_lastRegion = -1;
   bool m_heldForLostLink = false;
+  bool m_lastJobGone = false;
 };
 
 }  // namespace multidir::ui

@@ -14,6 +14,7 @@
 
 #include "multidir/core/analysis/overhang.h"
 #include "ui/common/error_text.h"
+#include "ui/document/studio_document.h"
 #include "ui/panels/pose_search_box.h"
 
 namespace multidir::ui {
@@ -36,7 +37,7 @@ QString axisText(const core::Vec3& v) {
 
 }  // namespace
 
-MachinePanel::MachinePanel(QWidget* parent) : QWidget(parent) {
+MachinePanel::MachinePanel(StudioDocument* document, QWidget* parent) : QWidget(parent), m_document(document) {
   setObjectName(QStringLiteral("machinePanel"));
   const core::MachineSpec defaults;
   m_kind = new QComboBox(this);
@@ -111,6 +112,30 @@ MachinePanel::MachinePanel(QWidget* parent) : QWidget(parent) {
     connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, &MachinePanel::machineChanged);
   }
   updateEnabled();
+  connect(this, &MachinePanel::machineChanged, this, &MachinePanel::sendToDocument);
+  connect(m_document, &StudioDocument::machineChanged, this, &MachinePanel::showDocumentMachine);
+  // The document's machine is checked for the document's up whenever either changes (first, before those who
+  // read errorText() on the same signals: they were connected after the panel was made).
+  connect(m_document, &StudioDocument::machineChanged, this, [this] { validateFor(m_document->up()); });
+  connect(m_document, &StudioDocument::upChanged, this, [this] { validateFor(m_document->up()); });
+  showDocumentMachine();
+  validateFor(m_document->up());
+}
+
+void MachinePanel::sendToDocument() {
+  if (m_showing) return;
+  m_sending = true;
+  m_document->setMachine(machineSpec(m_document->up()));
+  m_sending = false;
+}
+
+void MachinePanel::showDocumentMachine() {
+  // The panel's own edit coming back is not shown again: it would rewrite an axis being typed ("1,0" reads as
+  // no axis) under the cursor.
+  if (m_sending) return;
+  m_showing = true;
+  setMachineSpec(m_document->machine());
+  m_showing = false;
 }
 
 core::MachineKind MachinePanel::kind() const { return static_cast<core::MachineKind>(m_kind->currentData().toInt()); }

@@ -5,6 +5,10 @@
 // the panel, in red, until it is fixed. The 4-DOF axis can also be picked in the 3D view ("Pick on
 // platform", checkable): the panel only asks for it (pickAxisToggled) and shows the axis picked. Below the
 // machine, "Best pose" (PoseSearchBox) finds the pose to stand the model on.
+//
+// The machine is the studio document's (StudioDocument::machine): every edit in the panel goes to the document
+// (setMachine), and the panel shows the document's machine whenever it changes there (a profile loaded, a
+// project opened, a pose turning the machine), so the panel never holds a machine of its own.
 #include <QWidget>
 #include <optional>
 
@@ -20,21 +24,24 @@ class QWidget;
 namespace multidir::ui {
 
 class PoseSearchBox;
+class StudioDocument;
 
 class MachinePanel : public QWidget {
   Q_OBJECT
 
  public:
-  explicit MachinePanel(QWidget* parent = nullptr);
+  // Shows and edits `document`'s machine; `document` (not owned) must outlive the panel.
+  explicit MachinePanel(StudioDocument* document, QWidget* parent = nullptr);
 
   // The machine as entered, with `up` as its up direction. Fields of other kinds keep their values.
   // The axis text is read with core::parseDirection and normalised; unreadable text leaves a zero axis,
   // which validate() rejects.
   [[nodiscard]] core::MachineSpec machineSpec(const core::Vec3& up) const;
-  // Shows `spec` (its up is not shown: the toolbar's Up box owns it).
+  // Shows `spec` as if typed (its up is not shown: the document's up is), and so sends it to the document.
   void setMachineSpec(const core::MachineSpec& spec);
 
-  // Checks the machine for `up` and shows the result; true when valid.
+  // Checks the machine for `up` and shows the result; true when valid. Done by the panel itself for the
+  // document's up whenever the document's machine or up changes.
   bool validateFor(const core::Vec3& up);
   [[nodiscard]] QString errorText() const;
   [[nodiscard]] core::MachineKind kind() const;
@@ -56,7 +63,7 @@ class MachinePanel : public QWidget {
   [[nodiscard]] PoseSearchBox* poseBox() const { return m_poseBox; }
 
  signals:
-  // Any field changed.
+  // The machine shown changed: a field edited (and sent to the document), or the document's machine shown.
   void machineChanged();
   // The "Pick on platform" button was pressed (on: start picking) or released (off: cancel). It also goes
   // off when picking stops making sense (another machine kind, or no platform).
@@ -64,6 +71,10 @@ class MachinePanel : public QWidget {
 
  private:
   void updateEnabled();
+  // A field edited: the machine as entered goes to the document.
+  void sendToDocument();
+  // The document's machine changed: shown, unless it is the panel's own edit coming back.
+  void showDocumentMachine();
 
   QComboBox* m_kind = nullptr;
   QLineEdit* m_axis = nullptr;
@@ -80,6 +91,9 @@ class MachinePanel : public QWidget {
   PoseSearchBox* m_poseBox = nullptr;
   std::vector<core::ForbiddenCone> m_cones;  // kept from a loaded profile; not edited here
   double m_marginMm = 5.0;
+  StudioDocument* m_document;
+  bool m_sending = false;  // an edit of the panel is being sent to the document
+  bool m_showing = false;  // the document's machine is being shown
 };
 
 }  // namespace multidir::ui

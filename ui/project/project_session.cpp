@@ -22,8 +22,8 @@
 
 #include "ui/common/error_text.h"
 #include "ui/common/studio_version.h"
+#include "ui/document/studio_document.h"
 #include "ui/main_window.h"
-#include "ui/panels/machine_panel.h"
 #include "ui/panels/search_panel.h"
 #include "ui/project/autosave.h"
 #include "ui/project/dialog_folders.h"
@@ -64,7 +64,7 @@ ProjectSession::ProjectSession(MainWindow& window) : QObject(&window), m_window(
   connect(&m_window, &MainWindow::upDirectionChanged, this, &ProjectSession::onChanged);
   connect(&m_window, &MainWindow::planShown, this, &ProjectSession::onChanged);
   connect(&m_window, &MainWindow::planCleared, this, &ProjectSession::onChanged);
-  connect(m_window.machinePanel(), &MachinePanel::machineChanged, this, &ProjectSession::onChanged);
+  connect(m_window.document(), &StudioDocument::machineChanged, this, &ProjectSession::onChanged);
   connect(m_window.searchPanel(), &SearchPanel::settingsChanged, this, &ProjectSession::onChanged);
   m_window.setAcceptDrops(true);
   m_window.installEventFilter(this);
@@ -119,7 +119,7 @@ std::optional<core::Project> ProjectSession::currentProject(QString* problem) co
   }
   project.model.up = m_window.upDirection();
   if (const std::optional<UpPose> pose = m_window.upPose()) project.model.pose = pose->pose;
-  project.machine = m_window.machinePanel()->machineSpec(project.model.up);
+  project.machine = m_window.document()->machine();
   project.options = m_window.searchPanel()->searchOptions();
   project.axisSearchCount = m_window.searchPanel()->axisSearchCount();
   if (const std::optional<SearchRun>& run = m_window.plan(); run && run->plan)
@@ -434,7 +434,7 @@ void ProjectSession::onModelShown() {
       } else {
         m_window.setUpDirection(opening.project.model.up);
       }
-      m_window.machinePanel()->setMachineSpec(opening.project.machine);
+      m_window.document()->setMachine(opening.project.machine);
       m_window.searchPanel()->setSearchOptions(opening.project.options);
       m_window.searchPanel()->setAxisSearchCount(opening.project.axisSearchCount);
       if (opening.project.plan) {

@@ -86,6 +86,15 @@ void HttpPrinterSimulator::cancelJobOnPrinter() {
   noteJobState();
 }
 
+void HttpPrinterSimulator::restartPrinter() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  advanceLocked();
+  m_printer.firmwareRestart();
+  m_printer.setTarget(sim::TimelineLine::Heater::Extruder, 0.0);
+  m_printer.setTarget(sim::TimelineLine::Heater::Bed, 0.0);
+  noteJobState();
+}
+
 void HttpPrinterSimulator::dropLink() {
   std::lock_guard<std::mutex> serverLock(m_serverMutex);
   closeServer();
@@ -307,6 +316,7 @@ int PrinterSimulator::port() const { return m_impl->port(); }
 std::string PrinterSimulator::address() const { return m_impl->address(); }
 void PrinterSimulator::injectThermalRunaway() { m_impl->injectThermalRunaway(); }
 void PrinterSimulator::cancelJobOnPrinter() { m_impl->cancelJobOnPrinter(); }
+void PrinterSimulator::restartPrinter() { m_impl->restartPrinter(); }
 void PrinterSimulator::dropLink() { m_impl->dropLink(); }
 void PrinterSimulator::restoreLink() { m_impl->restoreLink(); }
 void PrinterSimulator::setReplyDelay(std::chrono::milliseconds delay) { m_impl->setReplyDelay(delay); }

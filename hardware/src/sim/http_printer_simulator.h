@@ -36,6 +36,7 @@ class HttpPrinterSimulator {
 
   void injectThermalRunaway();
   void cancelJobOnPrinter();
+  void restartPrinter();
   void dropLink();
   void restoreLink();
   void setReplyDelay(std::chrono::milliseconds delay);

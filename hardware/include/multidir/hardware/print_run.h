@@ -32,6 +32,8 @@
 //   Printing  | the same, i the last step                   | Completed |
 //   Printing  | tick (printer): upload or start refused,    | Paused    | print interrupted (the reason is
 //             | printer error, job cancelled on the printer,|           | lastProblem); a temperature fault
+//             | the job seen printing gone from the printer |           |
+//             | (it restarted: standby, no or another file),|           |
 //             | link lost, temperature fault, the platform  |           | or a moving platform also pauses the
 //             | moving                                      |           | printer's job
 //   Paused    | resume(), print interrupted: printer paused | Printing  | resumePrint()
@@ -40,6 +42,9 @@
 //             |   ... anything else                         | Paused    | refused: finish the region by hand
 //             |                                             |           | and regionDone(i), or abort
 //   Paused    | regionDone(i), print interrupted            | Moving    | startMove(step i+1) (or Completed)
+//   Paused    | restartStep(), print interrupted and the    | Printing  | upload and start the step's G-code
+//             |   printer has no job of it any more (it     |           | again from its beginning (the operator
+//             |   restarted: interruptedJobGone())          |           | cleared what the first attempt left)
 //   Paused    | resume()                                    | Moving    | clearStop(), startMove(current step)
 //   Faulted   | resume() (retry the current step)           | Moving    | clearStop(), startMove(current step)
 //   Paused,   | resume() while the device has not confirmed | (same)    | refused: the stop has not reached the
@@ -200,6 +205,14 @@ class PrintRun {
   core::Status resume();
   core::Status abort();
   core::Status regionDone(std::size_t step);
+  // Prints the current step again from the beginning of its G-code, when the run is paused for an interrupted
+  // print and the printer no longer has that job (interruptedJobGone(): it restarted, or the job was cancelled
+  // on it), so Resume has nothing to resume. The owner asks the operator first to clear the platform of what
+  // the first attempt printed. The platform does not move: the printer starts only if it still reports the
+  // step's orientation reached (else the run faults, and resume() retries the step with its move). Refused
+  // (InvalidParameter, naming why) in any other state, while the printer link is lost, its emergency stop is
+  // latched or its firmware is not ready.
+  core::Status restartStep();
   // Sends the positioner's and the printer's emergency stops at once and ends the run (Aborted); never refused.
   // Both are latched by their drivers and resent until confirmed; ticks log each confirmation.
   core::Status emergencyStop();
@@ -222,6 +235,10 @@ class PrintRun {
   [[nodiscard]] double stepProgress() const { return m_stepProgress; }
   // Paused because the printer's job for the current step was interrupted (lastProblem says why).
   [[nodiscard]] bool printInterrupted() const { return m_printInterrupted; }
+  // Paused for an interrupted print, the printer answers, and it has no job of the current step to resume or
+  // report complete (it restarted: standby with no file or another file; or the job ended cancelled or in
+  // error): resume() is refused, restartStep() prints the step again.
+  [[nodiscard]] bool interruptedJobGone() const;
   [[nodiscard]] bool hasPrinter() const { return m_printer != nullptr; }
   [[nodiscard]] const std::vector<PrintStep>& steps() const { return m_steps; }
   [[nodiscard]] const std::vector<PrintRunLogEntry>& log() const { return m_log; }
@@ -279,6 +296,7 @@ class PrintRun {
   std::uint64_t m_pollsAtStart = 0;
   std::chrono::steady_clock::time_point m_printStarted{};
   bool m_printInterrupted = false;
+  bool m_jobSeen = false;  // the current step's job was seen on the printer (printing or paused) since its start
   bool m_printerPausedLogged = false;
   int m_progressTenths = -1;
   bool m_awaitingPrinterStop = false;

@@ -95,6 +95,9 @@ class PrinterSimulator {
   // Fault injection, now.
   void injectThermalRunaway();
   void cancelJobOnPrinter();
+  // The printer restarts on its own (a power cycle, a firmware restart from its screen): its job is gone
+  // (standby, no file, heaters off), the files uploaded to it stay.
+  void restartPrinter();
   void dropLink();     // closes the listener and every connection until restoreLink()
   void restoreLink();  // listens again on the same port
   void setReplyDelay(std::chrono::milliseconds delay);
