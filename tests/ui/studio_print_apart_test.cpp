@@ -18,6 +18,7 @@
 
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
+#include "support/primitives.h"
 #include "support/test_models.h"
 #include "ui/common/region_palette.h"
 #include "ui/document/studio_document.h"
@@ -112,12 +113,26 @@ int rowsOfKind(const QTableWidget& table, ApartPanel::RowKind kind) {
   return count;
 }
 
-// The snowman's quick plan: small, so its plates and its one piece slice in seconds.
-ApartPanel* snowmanApartView(MainWindow& window) {
+// A T on its stem (80 mm bar), searched for the apart machine and opened: small, so its plates and its one
+// piece slice in seconds.
+ApartPanel* tBarApartView(MainWindow& window, const QTemporaryDir& dir) {
   test::resetStudioSettings();
-  test::showDefaultSample(window);
+  window.resize(1400, 900);
+  window.show();
+  core::PlanMetadata metadata;
+  metadata.machine.kind = core::MachineKind::Apart;
+  metadata.machine.rotationAxis = core::platformFrameX(metadata.up);
+  metadata.options.scheme = core::SearchScheme::Greedy;
+  core::JobContext job;
+  const core::Result<core::Decomposition> plan =
+      core::decompose(test::makeTBar(10, 30, 80, 10, 10), metadata.machine, metadata.options, job);
+  EXPECT_TRUE(plan.ok()) << plan.error().describe();
+  if (!plan) return nullptr;
+  const QString folder = dir.filePath(QStringLiteral("t-bar-plan"));
+  const core::Status saved = core::savePlan(*plan, metadata, folder.toStdString());
+  EXPECT_TRUE(saved.ok()) << saved.error().describe();
+  test::openPlanFolder(window, folder);
   if (::testing::Test::HasFatalFailure()) return nullptr;
-  if (!test::runQuickSearch(window).plan) return nullptr;
   return openApartView(window);
 }
 
@@ -142,8 +157,9 @@ TEST(StudioPrintApart, RunOnTheKittensPlanDrawsEveryPartExplodedInItsOwnColour) 
 }
 
 TEST(StudioPrintApart, EstimatesTableHasARowPerPlateAllPlatesAndTheOnePieceWithSupports) {
+  QTemporaryDir planDir;
   MainWindow window;
-  ApartPanel* panel = snowmanApartView(window);
+  ApartPanel* panel = tBarApartView(window, planDir);
   ASSERT_NE(panel, nullptr);
   ASSERT_TRUE(panel->sliceBox()->isChecked());
   ASSERT_TRUE(runApart(*panel));
@@ -159,8 +175,9 @@ TEST(StudioPrintApart, EstimatesTableHasARowPerPlateAllPlatesAndTheOnePieceWithS
 }
 
 TEST(StudioPrintApart, ExportWritesEveryPartThe3mfTheGcodeTheSheetAndApartJson) {
+  QTemporaryDir planDir;
   MainWindow window;
-  ApartPanel* panel = snowmanApartView(window);
+  ApartPanel* panel = tBarApartView(window, planDir);
   ASSERT_NE(panel, nullptr);
   ASSERT_TRUE(runApart(*panel));
   ASSERT_TRUE(panel->exportButton()->isEnabled());
@@ -196,8 +213,9 @@ TEST(StudioPrintApart, ANewPlanEmptiesTheView) {
 }
 
 TEST(StudioPrintApart, CancelWhileSlicingLeavesNoFilesAndNoResult) {
+  QTemporaryDir planDir;
   MainWindow window;
-  ApartPanel* panel = snowmanApartView(window);
+  ApartPanel* panel = tBarApartView(window, planDir);
   ASSERT_NE(panel, nullptr);
   QSignalSpy cancelled(panel->runner(), &ApartJobRunner::cancelled);
   QSignalSpy finished(panel->runner(), &ApartJobRunner::finished);
