@@ -113,6 +113,9 @@ ApartPanel::ApartPanel(StudioDocument& document, QWidget* parent)
   }
   // An ordinary 3-axis printer is what printing apart is for.
   m_printer->setCurrentIndex(std::max(0, m_printer->findData(QStringLiteral("marlin-220"))));
+  // Long printer names must not widen the dock past its width (the Export button would scroll out of sight).
+  m_printer->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  m_printer->setMinimumContentsLength(16);
   m_printer->setToolTip(tr("The parts must fit this printer's bed and height; its settings slice the plates"));
   form->addRow(tr("Printer"), m_printer);
   m_slice = new QCheckBox(tr("Slice the plates (PrusaSlicer) for the estimates"), this);
