@@ -30,6 +30,8 @@ namespace {
 // How far the exploded view moves each part from the model's middle: the share of its centroid's offset the
 // assembly sheet's picture of the parts uses too (docs/apart.md, "Assembly sheet").
 constexpr double kExplodeShare = 0.35;
+// How wide each joint opens in the exploded view, as a share of the model's diagonal.
+constexpr double kJointGapShare = 0.15;
 // Dowels are drawn in one neutral colour, so the parts' colours stay one per part.
 const QColor kDowelColour(0x60, 0x60, 0x60);
 
@@ -68,8 +70,16 @@ std::vector<ColouredSolid> explodedParts(const apart::ApartResult& result) {
     all.max = all.max.cwiseMax(box.max);
   }
   const core::Vec3 middle = 0.5 * (all.min + all.max);
+  // Each part moves off its middle as on the sheet, and away from every part it is glued to along their
+  // joint's normal, so each joint opens and shows its dowels.
+  const double jointGap = kJointGapShare * (all.max - all.min).norm();
   std::vector<core::Vec3> shifts;
   for (const core::Vec3& c : centroids) shifts.push_back(kExplodeShare * (c - middle));
+  for (const core::ApartJoint& joint : result.plan.joints) {
+    const core::Vec3 normal = joint.plane.normal.normalized();
+    shifts[static_cast<std::size_t>(joint.upper)] += 0.5 * jointGap * normal;
+    shifts[static_cast<std::size_t>(joint.lower)] -= 0.5 * jointGap * normal;
+  }
   std::vector<ColouredSolid> solids;
   for (std::size_t p = 0; p < result.parts.size(); ++p)
     solids.push_back({moved(result.parts[p], shifts[p]), regionColor(static_cast<int>(p)),
