@@ -40,6 +40,7 @@
 #include "ui/common/error_text.h"
 #include "ui/jobs/model_loader.h"
 #include "ui/jobs/support_regrowth.h"
+#include "ui/panels/apart_panel.h"
 #include "ui/panels/machine_panel.h"
 #include "ui/panels/overhang_panel.h"
 #include "ui/panels/plan_panel.h"
@@ -199,6 +200,16 @@ void MainWindow::buildMenus() {
   slice->setStatusTip(tr("Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)"));
   slice->setEnabled(false);
   connect(m_slicing, &SliceSession::sliceableChanged, slice, &QAction::setEnabled);
+  QAction* printApart = search->addAction(tr("Print &apart..."), this, [this] {
+    auto* dock = findChild<QDockWidget*>(QStringLiteral("apartDock"));
+    dock->show();
+    dock->raise();
+  });
+  printApart->setObjectName(QStringLiteral("printApart"));
+  printApart->setStatusTip(tr("Print the plan shown on an ordinary printer: every region a part, joined by dowels"));
+  printApart->setEnabled(m_document->plan().has_value());
+  connect(m_document, &StudioDocument::planChanged, printApart,
+          [this, printApart] { printApart->setEnabled(m_document->plan().has_value()); });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   QAction* about = help->addAction(tr("&About MultiDir Studio"), this, &MainWindow::showAbout);
@@ -257,6 +268,9 @@ void MainWindow::buildDocks() {
   splitDockWidget(overhangs, machine, Qt::Vertical);
   tabifyDockWidget(machine, m_searchDock);
   tabifyDockWidget(m_searchDock, m_planDock);
+  // Print apart (docs/apart.md): the plan shown as parts for an ordinary printer; opened from its menu entry.
+  QDockWidget* apart = addDock(new ApartPanel(*m_document, this), tr("Print apart"), QStringLiteral("apartDock"));
+  tabifyDockWidget(m_planDock, apart);
   m_searchDock->raise();
   // Wide enough for the pose and estimate tables without sideways scrolling (ui/common/table_columns.h).
   resizeDocks({overhangs}, {540}, Qt::Horizontal);

@@ -164,6 +164,46 @@ TEST(StudioDocument, JobSlicedFromAnotherPlanIsRefused) {
   EXPECT_FALSE(document.slicedJob().has_value());
 }
 
+ApartPrint apartPrintOf(const SearchRun& run) {
+  ApartPrint print;
+  print.plan = run.plan;
+  print.result = std::make_shared<const apart::ApartResult>();
+  return print;
+}
+
+TEST(StudioDocument, PlanPrintedApartGoesWithAnyNewOrEditedPlanAndAnotherModel) {
+  StudioDocument document;
+  document.setModel(modelNamed(QStringLiteral("kitten.off")));
+  SearchRun run = planWithRegions(3);
+  document.setPlan(run);
+  QSignalSpy changed(&document, &StudioDocument::apartPrintChanged);
+  ASSERT_TRUE(document.setApartPrint(apartPrintOf(run)).ok());
+  EXPECT_EQ(changed.size(), 1);
+
+  run = planWithRegions(3);
+  document.setEditedPlan(run);
+  EXPECT_FALSE(document.apartPrint().has_value());
+  ASSERT_TRUE(document.setApartPrint(apartPrintOf(run)).ok());
+  run = planWithRegions(2);
+  document.setPlan(run);
+  EXPECT_FALSE(document.apartPrint().has_value());
+  ASSERT_TRUE(document.setApartPrint(apartPrintOf(run)).ok());
+  document.setModel(modelNamed(QStringLiteral("bunny.off")));
+  EXPECT_FALSE(document.apartPrint().has_value());
+  EXPECT_EQ(changed.size(), 6);  // three set, three dropped
+}
+
+TEST(StudioDocument, PlanPrintedApartFromAnotherPlanIsRefused) {
+  StudioDocument document;
+  const SearchRun old = planWithRegions(3);
+  document.setPlan(old);
+  document.setPlan(planWithRegions(3));
+  const core::Status refused = document.setApartPrint(apartPrintOf(old));
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().message.find("another plan"), std::string::npos) << refused.error().message;
+  EXPECT_FALSE(document.apartPrint().has_value());
+}
+
 TEST(StudioDocument, SessionJobIsThePlanShownWithItsSlicedGcode) {
   StudioDocument document;
   EXPECT_EQ(document.sessionJob().plan, nullptr);

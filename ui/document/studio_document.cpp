@@ -89,6 +89,7 @@ void StudioDocument::setPlan(SearchRun run) {
   m_plan = std::move(run);
   m_editHistory->clear();
   dropSlicedJob();
+  dropApartPrint();
   emit planChanged();
   if (!m_pinnedJob) emit sessionJobChanged();
 }
@@ -97,6 +98,7 @@ void StudioDocument::setEditedPlan(SearchRun run) {
   if (!run.plan) return;
   m_plan = std::move(run);
   dropSlicedJob();
+  dropApartPrint();
   emit planChanged();
   if (!m_pinnedJob) emit sessionJobChanged();
 }
@@ -108,6 +110,7 @@ void StudioDocument::dropPlan() {
   m_plan.reset();
   m_editHistory->clear();
   dropSlicedJob();
+  dropApartPrint();
   if (!had) return;
   emit planChanged();
   if (!m_pinnedJob) emit sessionJobChanged();
@@ -142,6 +145,24 @@ void StudioDocument::dropSlicedJob() {
   m_slicedJob.reset();
   emit slicedJobChanged();
   if (!m_pinnedJob) emit sessionJobChanged();
+}
+
+core::Status StudioDocument::setApartPrint(ApartPrint print) {
+  if (!m_plan || !print.plan || print.plan != m_plan->plan || !print.result)
+    return documentError(tr("These parts were made from another plan than the one shown: print the plan shown "
+                            "apart again."),
+                         "print apart");
+  m_apartPrint = std::move(print);
+  emit apartPrintChanged();
+  return core::Done{};
+}
+
+void StudioDocument::clearApartPrint() { dropApartPrint(); }
+
+void StudioDocument::dropApartPrint() {
+  if (!m_apartPrint) return;
+  m_apartPrint.reset();
+  emit apartPrintChanged();
 }
 
 PrintJob StudioDocument::sessionJob() const {

@@ -13,6 +13,8 @@
 //    search's plan replacing a plan of the same model comes as an edit (the editor's "New search" step), so
 //    Undo brings back the plan it replaced;
 //  - a sliced job is accepted only for the plan shown;
+//  - the plan printed apart is accepted only for the plan shown and goes with it (any new or edited plan, a new
+//    model, another up), so the Print apart view can never show a stale plan's parts;
 //  - the device session's job follows the plan and its sliced job, except while a print run pins it
 //    (pinSessionJob): then nothing replaces it until the run unpins it, whatever the model or plan become.
 //
@@ -23,6 +25,7 @@
 
 #include "multidir/core/common/result.h"
 #include "multidir/core/search/machine.h"
+#include "ui/document/apart_print.h"
 #include "ui/document/loaded_model.h"
 #include "ui/document/print_job.h"
 #include "ui/document/search_run.h"
@@ -83,6 +86,12 @@ class StudioDocument : public QObject {
   core::Status setSlicedJob(PrintJob job);
   void clearSlicedJob();
 
+  // The plan shown printed apart (nullopt: not printed apart, or the plan changed since).
+  [[nodiscard]] const std::optional<ApartPrint>& apartPrint() const { return m_apartPrint; }
+  // Refused (naming why) when `print` was not made from the plan shown.
+  core::Status setApartPrint(ApartPrint print);
+  void clearApartPrint();
+
   // The job the device session runs: the pinned one while a print run holds it, else the plan shown with the
   // sliced job's G-code (none when the plan is not sliced). Its plan is null when there is nothing to run.
   [[nodiscard]] PrintJob sessionJob() const;
@@ -102,6 +111,7 @@ class StudioDocument : public QObject {
   // Supports were attached to the plan shown.
   void supportsChanged();
   void slicedJobChanged();
+  void apartPrintChanged();
   // What sessionJob() returns changed (or was pinned, or unpinned).
   void sessionJobChanged();
 
@@ -111,6 +121,7 @@ class StudioDocument : public QObject {
   // Drops the plan, its history and the sliced job, with their signals.
   void dropPlan();
   void dropSlicedJob();
+  void dropApartPrint();
 
   std::optional<LoadedModel> m_model;
   core::Vec3 m_up = core::Vec3::UnitZ();
@@ -119,6 +130,7 @@ class StudioDocument : public QObject {
   std::optional<SearchRun> m_plan;
   QUndoStack* m_editHistory;
   std::optional<PrintJob> m_slicedJob;
+  std::optional<ApartPrint> m_apartPrint;
   std::optional<PrintJob> m_pinnedJob;
 };
 

@@ -57,8 +57,8 @@ QString defaultPrinterFor(core::MachineKind machine) {
 // Why a printer cannot print a plan for `machine` (what sliceJob would refuse), or empty when it can.
 QString unsuitableReason(const slicing::PrinterProfile& profile, core::MachineKind machine) {
   if (machine == core::MachineKind::Apart)
-    return SliceDialog::tr("A plan printed apart is sliced part by part on plates: use 'multidir apart' "
-                           "(docs/apart.md).");
+    return SliceDialog::tr("A plan printed apart is sliced part by part on plates: use Search > Print apart... "
+                           "or 'multidir apart' (docs/apart.md).");
   switch (profile.platform) {
     case slicing::PlatformDrive::None:
       if (machine != core::MachineKind::ThreeAxis)

@@ -41,6 +41,7 @@
 #include "ui/viewer/measure_scene.h"
 #include "ui/viewer/mesh_to_polydata.h"
 #include "ui/viewer/plan_scene.h"
+#include "ui/viewer/solids_scene.h"
 #include "ui/viewer/platform_geometry.h"
 #include "ui/viewer/support_scene.h"
 
@@ -173,6 +174,7 @@ struct MeshViewerWidget::Impl {
   std::unique_ptr<SupportScene> supports;
   std::unique_ptr<GcodeScene> gcode;
   std::unique_ptr<MeasureScene> measure;
+  std::unique_ptr<SolidsScene> solids;
   bool measuring = false;
   Measurement measurement;
   std::vector<core::Vec3> measuredWorld;  // the measurement's points where they are drawn
@@ -199,6 +201,7 @@ struct MeshViewerWidget::Impl {
     supports = std::make_unique<SupportScene>(renderer);
     gcode = std::make_unique<GcodeScene>(renderer);
     measure = std::make_unique<MeasureScene>(overlay);
+    solids = std::make_unique<SolidsScene>(renderer, overlay);
     renderer->GradientBackgroundOn();
     renderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
     renderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
@@ -392,6 +395,7 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
   m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
+  m.solids->clear();
   m.modelData = toPolyData(mesh);
   m.faceColors = vtkSmartPointer<vtkUnsignedCharArray>::New();
   m.faceColors->SetName("faceColors");
@@ -424,6 +428,7 @@ void MeshViewerWidget::clear() {
   m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
+  m.solids->clear();
   m.modelData = vtkSmartPointer<vtkPolyData>::New();
   m.faceColors = nullptr;
   m.riskyShown = 0;
@@ -436,6 +441,18 @@ void MeshViewerWidget::clear() {
   m.emptyHint->setVisible(true);
   update();
 }
+
+void MeshViewerWidget::setSolids(const std::vector<ColouredSolid>& solids, const core::Vec3& up) {
+  clear();
+  Impl& m = *m_impl;
+  m.up = unitOrZ(up);
+  m.solids->setSolids(solids);
+  m.hasMesh = !solids.empty();
+  m.emptyHint->setVisible(!m.hasMesh);
+  fitView();
+}
+
+int MeshViewerWidget::solidCount() const { return m_impl->solids->count(); }
 
 void MeshViewerWidget::fitView() { setStandardView(StandardView::Home); }
 

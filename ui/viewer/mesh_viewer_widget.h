@@ -17,6 +17,7 @@
 #include "multidir/core/mesh/triangle_mesh.h"
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/supports/support_set.h"
+#include "ui/viewer/coloured_solid.h"
 #include "ui/viewer/measurement.h"
 #include "ui/viewer/platform_geometry.h"
 #include "ui/viewer/platform_picker.h"
@@ -41,6 +42,10 @@ class MeshViewerWidget : public QOpenGLWidget {
   // Removes the model and the platform; the background and the axes marker stay, and the empty view's hint
   // shows again.
   void clear();
+  // Shows `solids`, each in its colour with its label, instead of the model, plan and platform (the Print apart
+  // view's exploded parts or one plate); `up` points up on the screen. setMesh and clear remove them.
+  void setSolids(const std::vector<ColouredSolid>& solids, const core::Vec3& up);
+  [[nodiscard]] int solidCount() const;
   // Looks at the whole model and platform from the front, slightly from above and to the right.
   void fitView();
   // Looks at the whole model and platform from `view` (ui/viewer/standard_view.h), relative to the model's up.
