@@ -298,10 +298,12 @@ bool CellPanel::findExtruderPosition() {
     return result->ok() ? QString() : QString::fromStdString(result->error().describe());
   });
   if (!started) return false;
-  // One connection per run: it reads this run's result and goes.
+  // One pair of connections per run: the result handler and the cancel handler each drop both.
   auto connection = std::make_shared<QMetaObject::Connection>();
-  *connection = connect(m_job, &CellJob::finished, this, [this, result, connection](const QString& error) {
+  auto onCancel = std::make_shared<QMetaObject::Connection>();
+  *connection = connect(m_job, &CellJob::finished, this, [this, result, connection, onCancel](const QString& error) {
     disconnect(*connection);
+    disconnect(*onCancel);
     m_progress->hide();
     m_cancel->hide();
     m_find->setEnabled(true);
@@ -321,7 +323,10 @@ bool CellPanel::findExtruderPosition() {
                          .arg((*result)->points.size()));
     m_use->setVisible(best.score > 0.0);
   });
-  connect(m_job, &CellJob::cancelled, this, [connection] { disconnect(*connection); });
+  *onCancel = connect(m_job, &CellJob::cancelled, this, [connection, onCancel] {
+    disconnect(*connection);
+    disconnect(*onCancel);
+  });
   m_find->setEnabled(false);
   m_cancel->show();
   m_progress->setValue(0);

@@ -139,9 +139,12 @@ bool CellViewPanel::showOnCell() {
     return QString();
   });
   if (!started) return false;
+  // One pair of connections per run: the result handler and the cancel handler each drop both.
   auto connection = std::make_shared<QMetaObject::Connection>();
-  *connection = connect(m_job, &CellJob::finished, this, [this, result, connection](const QString& error) {
+  auto onCancel = std::make_shared<QMetaObject::Connection>();
+  *connection = connect(m_job, &CellJob::finished, this, [this, result, connection, onCancel](const QString& error) {
     disconnect(*connection);
+    disconnect(*onCancel);
     if (!error.isEmpty()) {
       m_status->setText(tr("The job cannot be posed on the cell: %1").arg(error));
       updateEnabled();
@@ -150,7 +153,10 @@ bool CellViewPanel::showOnCell() {
     setMotion(*result);
     updateEnabled();
   });
-  connect(m_job, &CellJob::cancelled, this, [connection] { disconnect(*connection); });
+  *onCancel = connect(m_job, &CellJob::cancelled, this, [connection, onCancel] {
+    disconnect(*connection);
+    disconnect(*onCancel);
+  });
   m_progress->setValue(0);
   m_status->setText(tr("Converting the job for the cell..."));
   updateEnabled();
