@@ -312,6 +312,7 @@ void MainWindow::buildDocks() {
   connect(m_axisPicker, &AxisPicker::activeChanged, m_machinePanel, &MachinePanel::setPicking);
   connect(m_axisPicker, &AxisPicker::axisPicked, this,
           [this](const core::Vec3& axis) { m_machinePanel->setRotationAxis(axis, upDirection()); });
+  buildRobotCell(m_planDock);
   connect(m_axisPicker, &AxisPicker::message, this, [this](const QString& text) { statusBar()->showMessage(text); });
 
   // Hardware: it reads the document's machine (the device's limits) and the device session's job (the plan

@@ -45,6 +45,8 @@ class QUndoStack;
 namespace multidir::ui {
 
 class AxisPicker;
+class CellPanel;
+class CellViewPanel;
 class HardwarePanel;
 class MachinePanel;
 class MeshViewerWidget;
@@ -128,6 +130,9 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] MachinePanel* machinePanel() const { return m_machinePanel; }
   [[nodiscard]] SearchPanel* searchPanel() const { return m_searchPanel; }
   [[nodiscard]] PlanPanel* planPanel() const { return m_planPanel; }
+  // The robot cell (main_window_cell.cpp): its section of the Machine tab, and the Cell view dock.
+  [[nodiscard]] CellPanel* cellPanel() const { return m_cellPanel; }
+  [[nodiscard]] CellViewPanel* cellViewPanel() const { return m_cellViewPanel; }
   // The Hardware dock: devices and the print run.
   [[nodiscard]] HardwarePanel* hardwarePanel() const { return m_hardwarePanel; }
   // The project (ui/project): Open/Save Project, unsaved changes, autosave and recovery, Open Recent, drops.
@@ -211,6 +216,8 @@ class MainWindow : public QMainWindow {
  private:
   void askToStopRunBeforeQuitting();
   void buildMenus();
+  // The robot cell's section in the Machine tab and the Cell view dock (main_window_cell.cpp).
+  void buildRobotCell(QDockWidget* besideDock);
   void buildUpBox();
   void buildStatusBar();
   void buildDocks();
@@ -280,6 +287,8 @@ class MainWindow : public QMainWindow {
   SearchJob* m_search = nullptr;
   OverhangPanel* m_overhangPanel = nullptr;
   MachinePanel* m_machinePanel = nullptr;
+  CellPanel* m_cellPanel = nullptr;
+  CellViewPanel* m_cellViewPanel = nullptr;
   SearchPanel* m_searchPanel = nullptr;
   PlanPanel* m_planPanel = nullptr;
   QDockWidget* m_planDock = nullptr;

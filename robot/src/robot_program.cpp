@@ -6,37 +6,16 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
-#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
 #include "multidir/core/common/atomic_file.h"
 #include "multidir/core/common/staged_folder.h"
-#include "multidir/slicing/audit.h"
+#include "job_inputs.h"
 #include "step_converter.h"
 
 namespace multidir::robot {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-// Part points are the meshes' corners, one per cell of this size (docs/robot-cell.md, "Collisions").
-constexpr double kPointCellMm = 2.0;
-// The platform's rim is sampled this often.
-constexpr int kRimSamples = 72;
-
-// The meshes' corners in the platform frame, one per kPointCellMm cube.
-void addCorners(const core::TriangleMesh& mesh, const Eigen::Isometry3d& modelToPlatform,
-                detail::CarriedPoint::Kind kind, std::vector<detail::CarriedPoint>& out) {
-  std::unordered_set<long long> seen;
-  for (const core::Vec3& v : mesh.vertices) {
-    const Eigen::Vector3d p = modelToPlatform * v;
-    const long long ix = static_cast<long long>(std::floor(p.x() / kPointCellMm)) & 0x1fffff;
-    const long long iy = static_cast<long long>(std::floor(p.y() / kPointCellMm)) & 0x1fffff;
-    const long long iz = static_cast<long long>(std::floor(p.z() / kPointCellMm)) & 0x1fffff;
-    if (!seen.insert((ix << 42) | (iy << 21) | iz).second) continue;
-    out.push_back({p, kind});
-  }
-}
 
 std::string fixed(double v, int decimals) {
   char buffer[64];
@@ -49,72 +28,20 @@ std::string fixed(double v, int decimals) {
 core::Result<RobotJob> planRobotJob(const std::filesystem::path& jobDirectory, const Cell& cell,
                                     const RobotProgramOptions& options, core::JobContext context) {
   const auto started = std::chrono::steady_clock::now();
-  auto job = slicing::readAuditJob(jobDirectory.string());
-  if (!job) return job.error();
-  if (job->platform == slicing::AuditPlatform::FirmwareAxis || job->platform == slicing::AuditPlatform::FirmwareTwoAxis) {
-    return core::Error{core::ErrorCode::InvalidParameter,
-                       "the job was sliced for a printer with platform axes in its firmware; slice it with the cell's "
-                       "profile (multidir slice PLAN --printer ur5-cell-0.8)",
-                       jobDirectory.string()};
-  }
-  // The slicer's estimates, for the summary.
-  std::vector<double> slicerSeconds(job->steps.size(), 0.0);
-  {
-    std::ifstream in(jobDirectory / "print-job.json");
-    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (!j.is_discarded() && j.contains("slicing") && j["slicing"].contains("steps")) {
-      const auto& steps = j["slicing"]["steps"];
-      for (std::size_t i = 0; i < steps.size() && i < slicerSeconds.size(); ++i) {
-        if (steps[i].contains("estimate") && steps[i]["estimate"].contains("printSeconds") &&
-            steps[i]["estimate"]["printSeconds"].is_number())
-          slicerSeconds[i] = steps[i]["estimate"]["printSeconds"].get<double>();
-      }
-    }
-  }
-  // The platform frame: z = the plan's up, origin the pivot (the platform centre), as the rest pose.
-  slicing::AuditMachine rest = job->machine;
-  rest.kind = core::MachineKind::ThreeAxis;
-  const Eigen::Isometry3d modelToPlatform = slicing::auditModelToFile(rest, {});
-  const Eigen::Isometry3d platformToModel = modelToPlatform.inverse();
-
-  std::vector<detail::CarriedPoint> rim;
-  for (int i = 0; i < kRimSamples; ++i) {
-    const double a = 2.0 * kPi * i / kRimSamples;
-    const Eigen::Vector3d edge(cell.platformRadiusMm * std::cos(a), cell.platformRadiusMm * std::sin(a), 0.0);
-    rim.push_back({edge, detail::CarriedPoint::Kind::Platform});
-    rim.push_back({edge - Eigen::Vector3d(0, 0, cell.platformThicknessMm), detail::CarriedPoint::Kind::Platform});
-  }
-  rim.push_back({Eigen::Vector3d(0, 0, -cell.platformThicknessMm), detail::CarriedPoint::Kind::Platform});
-
+  auto inputs = detail::readJobInputs(jobDirectory, cell);
+  if (!inputs) return inputs.error();
   RobotJob result;
   result.robot = cell.arm.name;
   std::vector<std::string> refusals;
-  std::vector<detail::CarriedPoint> earlier;
-  for (std::size_t k = 0; k < job->steps.size(); ++k) {
-    const slicing::AuditStep& step = job->steps[k];
-    context.setProgress(static_cast<double>(k) / static_cast<double>(job->steps.size()),
-                        "step " + std::to_string(step.index));
-    detail::StepInput input;
-    input.step = step.index;
-    input.stepCount = static_cast<int>(job->steps.size());
-    input.gcodeFile = step.gcodeFile;
-    input.gcode = step.gcode;
-    input.platformToFile = step.recordedModelToFile * platformToModel;
-    input.printerOffsetMm = job->printerOffset;
-    input.slicerSeconds = slicerSeconds[k];
-    input.carried = rim;
-    input.carried.insert(input.carried.end(), earlier.begin(), earlier.end());
-    std::vector<detail::CarriedPoint> own;
-    addCorners(step.region, modelToPlatform, detail::CarriedPoint::Kind::ThisStep, own);
-    addCorners(step.supports, modelToPlatform, detail::CarriedPoint::Kind::ThisStep, own);
-    input.carried.insert(input.carried.end(), own.begin(), own.end());
+  const std::size_t stepCount = inputs->steps.size();
+  for (std::size_t k = 0; k < stepCount; ++k) {
+    const detail::StepInput& input = inputs->steps[k];
+    context.setProgress(static_cast<double>(k) / static_cast<double>(stepCount), "step " + std::to_string(input.step));
     detail::StepOutput converted = detail::convertStep(input, cell, options, context);
     if (context.isCancelled()) return core::Error{core::ErrorCode::Cancelled, "cancelled", jobDirectory.string()};
     refusals.insert(refusals.end(), converted.refusals.begin(), converted.refusals.end());
     result.steps.push_back(converted.summary);
     result.scripts.push_back(std::move(converted.script));
-    for (auto& p : own) p.kind = detail::CarriedPoint::Kind::EarlierStep;
-    earlier.insert(earlier.end(), own.begin(), own.end());
   }
   if (!refusals.empty()) {
     std::string message = "the job cannot run on the cell (" + std::to_string(refusals.size()) + " step(s) refused):";

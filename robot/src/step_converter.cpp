@@ -285,6 +285,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   summary.program = programName;
   const std::string stepText = "step " + std::to_string(input.step);
   auto refuse = [&](int line, const std::string& why) {
+    if (out.refusals.empty()) out.refusalLine = line;
     out.refusals.push_back(stepText + (line > 0 ? ", line " + std::to_string(line) : std::string()) + " (" +
                            input.gcodeFile + "): " + why);
   };
@@ -367,6 +368,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   summary.branch = bestBranch;
   const Eigen::Matrix3d nozzleTurn =
       nozzleFrame(cell.nozzleAxis) * Eigen::AngleAxisd(bestRotation, Eigen::Vector3d::UnitZ());
+  out.platformRotation = nozzleTurn * input.platformToFile.linear();
 
   // Collision candidates: per body, the points that could meet it for some nozzle point within the bounds.
   CollisionSet collisions;
@@ -623,6 +625,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
       joints = q;
       if (s == samples) c.tcp = tcp;
     }
+    if (input.recordMotion) out.motion.push_back({move.line, target, c.tcp.translation(), joints, c.extrudes});
     if (load > worstLoad) {
       worstLoad = load;
       worstLoadJoint = loadJoint;

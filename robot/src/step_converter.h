@@ -8,6 +8,7 @@
 
 #include "multidir/core/common/job_context.h"
 #include "multidir/robot/cell.h"
+#include "multidir/robot/job_motion.h"
 #include "multidir/robot/robot_program.h"
 
 namespace multidir::robot::detail {
@@ -28,12 +29,17 @@ struct StepInput {
   Eigen::Vector3d printerOffsetMm = Eigen::Vector3d::Zero();  // printer coordinates = files' frame + this
   std::vector<CarriedPoint> carried;  // the platform disc, the regions printed before, this step's region
   double slicerSeconds = 0.0;
+  bool recordMotion = false;  // keep every move's pose in StepOutput::motion (the studio's view)
 };
 
 struct StepOutput {
   RobotStepSummary summary;
   std::string script;
   std::vector<std::string> refusals;  // "step 2, line 345 (step-02.gcode): ..."; empty when the step converts
+  int refusalLine = 0;                // the first refusal's G-code line (0: none or not tied to a line)
+  // With StepInput::recordMotion: each converted move's end (up to a refused one), and the TCP's orientation.
+  std::vector<MotionSample> motion;
+  Eigen::Matrix3d platformRotation = Eigen::Matrix3d::Identity();
 };
 
 StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProgramOptions& options,

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "multidir/robot/cell.h"
+#include "multidir/robot/job_motion.h"
 #include "multidir/robot/robot_program.h"
 #include "multidir/slicing/audit.h"
 #include "multidir/slicing/gcode_program.h"
@@ -233,6 +234,54 @@ TEST(KittenRobotProgram, NoJointPassesItsLimitsOrItsSpeed) {
     }
     EXPECT_LE(worstLoad, 1.0 + 1e-6) << "step " << k + 1;
   }
+}
+
+
+// The studio's view of the job (robotJobMotion) is the programs' motion: each sample's platform pose is the
+// pose the step's script commands for that G-code move, and it puts the fixed nozzle tip on the sample's point.
+TEST(KittenRobotProgram, StudioMotionPosesAreTheScriptsMovelTargets) {
+  const Converted c = convertedKitten("KittenRobotProgram.StudioMotion");
+  const auto motion = robotJobMotion(c.jobDir, c.cell, RobotProgramOptions{}, core::JobContext());
+  ASSERT_TRUE(motion.ok()) << motion.error().describe();
+  ASSERT_EQ(motion->size(), c.scripts.size());
+  for (std::size_t k = 0; k < motion->size(); ++k) {
+    const StepMotion& step = (*motion)[k];
+    const Script& script = c.scripts[k];
+    EXPECT_FALSE(step.warning.has_value()) << "step " << k + 1;
+    // One sample per G-code move; the script adds the retreat.
+    ASSERT_EQ(step.samples.size() + 1, script.movel.size()) << "step " << k + 1;
+    double worstPose = 0.0, worstTip = 0.0;
+    for (std::size_t i = 0; i < step.samples.size(); ++i) {
+      const Eigen::Isometry3d pose = platformPoseAt(step, step.samples[i]);
+      worstPose = std::max(worstPose, (pose.translation() - script.movel[i].tcp.translation()).norm());
+      worstPose = std::max(worstPose, 1000.0 * (pose.linear() - script.movel[i].tcp.linear()).norm());
+      const Eigen::Vector3d tipOnPart = step.platformToFile * (pose.inverse() * c.cell.nozzleTipMm);
+      worstTip = std::max(worstTip, (tipOnPart - step.samples[i].nozzleFileMm).norm());
+      EXPECT_TRUE(platformPose(c.cell, step.samples[i].joints).isApprox(pose, 1e-6)) << "step " << k + 1 << " move " << i;
+    }
+    // The script writes metres with 7 decimals: 1e-4 mm.
+    EXPECT_LT(worstPose, 1e-3) << "step " << k + 1;
+    EXPECT_LT(worstTip, 1e-6) << "step " << k + 1;
+    EXPECT_GT(step.region.faceCount(), 0u);
+  }
+}
+
+// A cell whose nozzle the arm cannot bring the part to: the motion is not refused as a whole; the step says
+// which line failed and why, as robot-program would refuse it.
+TEST(KittenRobotProgram, StudioMotionOfAnUnreachableCellWarnsWithStepAndLine) {
+  const std::string jobDir = slicedKitten("KittenRobotProgram.StudioWarning");
+  Cell cell = loadCell(cellForJob(jobDir, "KittenRobotProgram.StudioWarning")).value();
+  cell.nozzleTipMm = Eigen::Vector3d(0.0, -900.0, 400.0);  // beyond the UR5's 850 mm reach
+  const auto motion = robotJobMotion(jobDir, cell, RobotProgramOptions{}, core::JobContext());
+  ASSERT_TRUE(motion.ok()) << motion.error().describe();
+  ASSERT_FALSE(motion->empty());
+  const StepMotion& first = motion->front();
+  ASSERT_TRUE(first.warning.has_value());
+  EXPECT_EQ(first.warning->step, 1);
+  EXPECT_GT(first.warning->line, 0);
+  EXPECT_NE(first.warning->text.find("step 1, line " + std::to_string(first.warning->line)), std::string::npos)
+      << first.warning->text;
+  EXPECT_NE(first.warning->text.find("reach"), std::string::npos) << first.warning->text;
 }
 
 }  // namespace

@@ -78,6 +78,11 @@ bool StudioDocument::replaceUp(const core::Vec3& unit, std::optional<UpPose> pos
   return moved;
 }
 
+void StudioDocument::setCell(std::optional<robot::Cell> cell) {
+  m_cell = std::move(cell);
+  emit cellChanged();
+}
+
 void StudioDocument::setMachine(const core::MachineSpec& machine) {
   m_machine = machine;
   m_machine.up = m_up;

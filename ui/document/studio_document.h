@@ -25,6 +25,7 @@
 
 #include "multidir/core/common/result.h"
 #include "multidir/core/search/machine.h"
+#include "multidir/robot/cell.h"
 #include "ui/document/apart_print.h"
 #include "ui/document/loaded_model.h"
 #include "ui/document/print_job.h"
@@ -63,6 +64,12 @@ class StudioDocument : public QObject {
   // the plan keeps the machine it was made with (plan()->machine).
   [[nodiscard]] const core::MachineSpec& machine() const { return m_machine; }
   void setMachine(const core::MachineSpec& machine);
+
+  // The robot cell (docs/robot-cell.md): the arm carrying the platform under the fixed extruder, for the machine
+  // "robot arm under a fixed extruder" (nullopt: none). The Machine tab edits it, the cell view poses the job
+  // on it. Replaced whole; a changed cell clears nothing (slicing does not depend on it).
+  [[nodiscard]] const std::optional<robot::Cell>& cell() const { return m_cell; }
+  void setCell(std::optional<robot::Cell> cell);
 
   // The plan shown, with what it was made with and its supports (nullopt: none).
   [[nodiscard]] const std::optional<SearchRun>& plan() const { return m_plan; }
@@ -106,6 +113,7 @@ class StudioDocument : public QObject {
   void modelChanged();
   void upChanged();
   void machineChanged();
+  void cellChanged();
   // The plan shown changed: a new one, an edit, or none.
   void planChanged();
   // Supports were attached to the plan shown.
@@ -127,6 +135,7 @@ class StudioDocument : public QObject {
   core::Vec3 m_up = core::Vec3::UnitZ();
   std::optional<UpPose> m_upPose;
   core::MachineSpec m_machine;
+  std::optional<robot::Cell> m_cell;
   std::optional<SearchRun> m_plan;
   QUndoStack* m_editHistory;
   std::optional<PrintJob> m_slicedJob;

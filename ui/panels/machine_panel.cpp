@@ -20,6 +20,9 @@
 namespace multidir::ui {
 namespace {
 
+// The kind box's data for the robot cell: not a core::MachineKind (the search sees a 5-DOF machine).
+constexpr int kRobotCellItem = -1;
+
 QDoubleSpinBox* angleBox(QWidget* parent, double low, double high, double value, const QString& name) {
   auto* box = new QDoubleSpinBox(parent);
   box->setObjectName(name);
@@ -45,6 +48,7 @@ MachinePanel::MachinePanel(StudioDocument* document, QWidget* parent) : QWidget(
   m_kind->addItem(tr("3-DOF: fixed printing direction"), static_cast<int>(core::MachineKind::ThreeAxis));
   m_kind->addItem(tr("4-DOF: rotary platform"), static_cast<int>(core::MachineKind::RotaryPlatform));
   m_kind->addItem(tr("5-DOF: tilting robot arm"), static_cast<int>(core::MachineKind::TiltRotate));
+  m_kind->addItem(tr("5-DOF: robot arm under a fixed extruder"), kRobotCellItem);
   m_kind->setCurrentIndex(2);
 
   m_rotaryGroup = new QGroupBox(tr("Rotary platform (4-DOF)"), this);
@@ -98,12 +102,14 @@ MachinePanel::MachinePanel(StudioDocument* document, QWidget* parent) : QWidget(
   layout->addWidget(m_rotaryGroup);
   layout->addWidget(m_tiltGroup);
   layout->addWidget(m_error);
+  m_cellIndex = layout->count();
   m_poseBox = new PoseSearchBox(this);
   layout->addWidget(m_poseBox);
   layout->addStretch(1);
 
   connect(m_kind, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     updateEnabled();
+    emit robotCellChosen(isRobotCell());
     emit machineChanged();
   });
   connect(m_axis, &QLineEdit::textChanged, this, &MachinePanel::machineChanged);
@@ -138,7 +144,19 @@ void MachinePanel::showDocumentMachine() {
   m_showing = false;
 }
 
-core::MachineKind MachinePanel::kind() const { return static_cast<core::MachineKind>(m_kind->currentData().toInt()); }
+core::MachineKind MachinePanel::kind() const {
+  if (isRobotCell()) return core::MachineKind::TiltRotate;
+  return static_cast<core::MachineKind>(m_kind->currentData().toInt());
+}
+
+bool MachinePanel::isRobotCell() const { return m_kind->currentData().toInt() == kRobotCellItem; }
+
+void MachinePanel::setCellSection(QWidget* section) {
+  m_cellSection = section;
+  section->setParent(this);
+  static_cast<QVBoxLayout*>(layout())->insertWidget(m_cellIndex, section);
+  updateEnabled();
+}
 
 std::optional<core::Vec3> MachinePanel::rotationAxis() const {
   const core::Result<core::Vec3> axis = core::parseDirection(m_axis->text().toStdString());
@@ -163,8 +181,11 @@ core::MachineSpec MachinePanel::machineSpec(const core::Vec3& up) const {
 
 void MachinePanel::setMachineSpec(const core::MachineSpec& spec) {
   QSignalBlocker blocker(this);  // one machineChanged at the end, not one per field
-  for (int i = 0; i < m_kind->count(); ++i) {
-    if (m_kind->itemData(i).toInt() == static_cast<int>(spec.kind)) m_kind->setCurrentIndex(i);
+  // A 5-DOF machine keeps the robot cell when it is chosen: the cell is a 5-DOF machine for the search.
+  if (!(isRobotCell() && spec.kind == core::MachineKind::TiltRotate)) {
+    for (int i = 0; i < m_kind->count(); ++i) {
+      if (m_kind->itemData(i).toInt() == static_cast<int>(spec.kind)) m_kind->setCurrentIndex(i);
+    }
   }
   m_axis->setText(axisText(spec.rotationAxis));
   m_minAngle->setValue(spec.minAngleDegrees);
@@ -238,6 +259,7 @@ bool MachinePanel::isPicking() const { return m_pickAxis->isChecked(); }
 void MachinePanel::updateEnabled() {
   m_rotaryGroup->setVisible(kind() == core::MachineKind::RotaryPlatform);
   m_tiltGroup->setVisible(kind() == core::MachineKind::TiltRotate);
+  if (m_cellSection) m_cellSection->setVisible(isRobotCell());
   const bool pickable = m_pickAvailable && kind() == core::MachineKind::RotaryPlatform;
   if (!pickable) m_pickAxis->setChecked(false);  // emits pickAxisToggled(false) when it was on
   m_pickAxis->setEnabled(pickable);

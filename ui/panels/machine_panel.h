@@ -45,6 +45,11 @@ class MachinePanel : public QWidget {
   bool validateFor(const core::Vec3& up);
   [[nodiscard]] QString errorText() const;
   [[nodiscard]] core::MachineKind kind() const;
+  // The machine is the robot cell ("5-DOF: robot arm under a fixed extruder"): a 5-DOF machine for the search,
+  // whose cell (setCellSection) the tab shows.
+  [[nodiscard]] bool isRobotCell() const;
+  // The robot cell's section (CellPanel), shown while the robot cell is chosen; the panel takes it over.
+  void setCellSection(QWidget* section);
   // The 4-DOF axis as typed (normalised), when it can be read.
   [[nodiscard]] std::optional<core::Vec3> rotationAxis() const;
   // Writes `axis` (unit length, perpendicular to `up`) into the axis field as x,y,z with four decimals, or
@@ -65,6 +70,8 @@ class MachinePanel : public QWidget {
  signals:
   // The machine shown changed: a field edited (and sent to the document), or the document's machine shown.
   void machineChanged();
+  // The robot cell was chosen (true) or another machine (false).
+  void robotCellChosen(bool chosen);
   // The "Pick on platform" button was pressed (on: start picking) or released (off: cancel). It also goes
   // off when picking stops making sense (another machine kind, or no platform).
   void pickAxisToggled(bool on);
@@ -87,6 +94,8 @@ class MachinePanel : public QWidget {
   QDoubleSpinBox* m_radius = nullptr;
   QWidget* m_rotaryGroup = nullptr;
   QWidget* m_tiltGroup = nullptr;
+  QWidget* m_cellSection = nullptr;
+  int m_cellIndex = 0;  // where the cell's section goes in the layout
   QLabel* m_error = nullptr;
   PoseSearchBox* m_poseBox = nullptr;
   std::vector<core::ForbiddenCone> m_cones;  // kept from a loaded profile; not edited here

@@ -11,7 +11,7 @@
 #include <QStatusBar>
 
 #include "multidir/core/plan/plan_file.h"
-#include "ui/common/studio_version.h"
+#include "ui/document/plan_as_loaded.h"
 #include "ui/main_window.h"
 #include "ui/panels/slice_panel.h"
 #include "ui/slicing/gcode_export.h"
@@ -123,16 +123,7 @@ bool SliceSession::slice(const SliceChoice& choice) {
     return false;
   }
   // The plan as shown, with its supports: what `multidir slice` reads from a plan folder.
-  core::LoadedPlan plan;
-  plan.metadata.up = run->machine.up;
-  plan.metadata.machine = run->machine;
-  plan.metadata.options = run->options;
-  plan.metadata.axisSearchCount = run->axisSearchCount;
-  plan.metadata.multidirVersion = studioVersion().toStdString();
-  if (const auto& model = m_window.model(); model && !model->sourcePath.isEmpty())
-    plan.metadata.modelPath = QFile::encodeName(model->sourcePath).toStdString();
-  plan.decomposition = *run->plan;
-  if (run->supports) plan.supports = *run->supports;
+  const core::LoadedPlan plan = planAsLoaded(*run, m_window.model());
   dropResult();
   QString error;
   if (!m_runner->start(plan, choice.profile, choice.options, &error)) {

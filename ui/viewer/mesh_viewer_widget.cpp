@@ -37,6 +37,8 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "multidir/core/common/units.h"
+#include "ui/viewer/cell_colors.h"
+#include "ui/viewer/cell_scene.h"
 #include "ui/viewer/gcode_scene.h"
 #include "ui/viewer/measure_scene.h"
 #include "ui/viewer/mesh_to_polydata.h"
@@ -151,6 +153,11 @@ struct MeshViewerWidget::Impl {
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkRenderer> overlay;  // layer 1: the plan's arrows, over the parts, with the same camera
+  // The cell view's pair, in the window instead of the two above while it is shown.
+  vtkNew<vtkRenderer> cellRenderer;
+  vtkNew<vtkRenderer> cellOverlay;
+  std::unique_ptr<CellScene> cell;
+  bool cellShown = false;
 
   vtkNew<vtkPolyDataMapper> modelMapper;
   vtkNew<vtkActor> modelActor;
@@ -202,6 +209,13 @@ struct MeshViewerWidget::Impl {
     gcode = std::make_unique<GcodeScene>(renderer);
     measure = std::make_unique<MeasureScene>(overlay);
     solids = std::make_unique<SolidsScene>(renderer, overlay);
+    cell = std::make_unique<CellScene>(cellRenderer, cellOverlay);
+    cellRenderer->GradientBackgroundOn();
+    cellRenderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
+    cellRenderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
+    cellOverlay->SetLayer(1);
+    cellOverlay->InteractiveOff();
+    cellOverlay->SetActiveCamera(cellRenderer->GetActiveCamera());
     renderer->GradientBackgroundOn();
     renderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
     renderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
@@ -276,6 +290,26 @@ struct MeshViewerWidget::Impl {
     axesMarker->SetOrientationMarker(axes);
     axesMarker->SetViewport(0.0, 0.0, 0.18, 0.18);
     axesMarker->SetZoom(1.7);  // the axes actor's bounds are symmetric about its origin: fill the corner
+  }
+
+  // The renderer drawn now (the cell view's or the model's) and its overlay.
+  [[nodiscard]] vtkRenderer* shownRenderer() const { return cellShown ? cellRenderer.Get() : renderer.Get(); }
+  [[nodiscard]] vtkRenderer* shownOverlay() const { return cellShown ? cellOverlay.Get() : overlay.Get(); }
+
+  // The cell view's renderers in the window instead of the model's, or back.
+  void showCell(bool on) {
+    if (on == cellShown) return;
+    vtkRenderer* off[2] = {shownRenderer(), shownOverlay()};
+    cellShown = on;
+    window->RemoveRenderer(off[0]);
+    window->RemoveRenderer(off[1]);
+    window->AddRenderer(shownRenderer());
+    window->AddRenderer(shownOverlay());
+  }
+
+  void endCellView() {
+    cell->setMotion(nullptr);
+    showCell(false);
   }
 
   // Back from the G-code preview: the plan's actors show again as they were set.
@@ -392,6 +426,7 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
   Impl& m = *m_impl;
   endPickingOnNewScene();
   m.up = unitOrZ(up);
+  m.endCellView();
   m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
@@ -425,6 +460,7 @@ void MeshViewerWidget::setMesh(const core::TriangleMesh& mesh, const core::Vec3&
 void MeshViewerWidget::clear() {
   Impl& m = *m_impl;
   endPickingOnNewScene();
+  m.endCellView();
   m.endGcodePreview();
   m.plan->clear();
   m.supports->clear();
@@ -667,17 +703,18 @@ std::optional<core::Vec3> MeshViewerWidget::platformPointAt(const QPoint& positi
 
 std::optional<QPointF> MeshViewerWidget::widgetPositionOf(const core::Vec3& point) const {
   const Impl& m = *m_impl;
-  vtkCamera* camera = m.renderer->GetActiveCamera();
+  vtkRenderer* renderer = m.shownRenderer();
+  vtkCamera* camera = renderer->GetActiveCamera();
   double eye[3];
   double forward[3];
   camera->GetPosition(eye);
   camera->GetDirectionOfProjection(forward);
   if ((point - core::Vec3(eye[0], eye[1], eye[2])).dot(core::Vec3(forward[0], forward[1], forward[2])) <= 0.0)
     return std::nullopt;
-  m.renderer->SetWorldPoint(point.x(), point.y(), point.z(), 1.0);
-  m.renderer->WorldToDisplay();
+  renderer->SetWorldPoint(point.x(), point.y(), point.z(), 1.0);
+  renderer->WorldToDisplay();
   double display[3];
-  m.renderer->GetDisplayPoint(display);
+  renderer->GetDisplayPoint(display);
   const qreal ratio = devicePixelRatioF();
   return QPointF(display[0] / ratio, (m.window->GetSize()[1] - 1 - display[1]) / ratio);
 }
@@ -717,6 +754,7 @@ void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan, 
     return;
   }
   setMeasuring(false);
+  m.endCellView();
   m.endGcodePreview();
   m.plan->setPlan(std::move(plan), m.platform.center, m.modelSizeMm);
   m.supports->clear();
@@ -731,6 +769,10 @@ void MeshViewerWidget::setPlan(std::shared_ptr<const core::Decomposition> plan, 
 
 void MeshViewerWidget::clearPlan() {
   Impl& m = *m_impl;
+  if (m.cellShown) {
+    m.endCellView();
+    update();
+  }
   if (!m.plan->hasPlan()) return;
   setMeasuring(false);
   m.endGcodePreview();
@@ -869,6 +911,61 @@ int MeshViewerWidget::gcodeExtrusionLinesShown() const { return m_impl->gcode->e
 int MeshViewerWidget::gcodeUnsupportedLinesShown() const { return m_impl->gcode->unsupportedLinesShown(); }
 int MeshViewerWidget::gcodeTravelLinesShown() const { return m_impl->gcode->travelLinesShown(); }
 
+void MeshViewerWidget::setCellMotion(std::shared_ptr<const CellMotion> motion) {
+  Impl& m = *m_impl;
+  if (!motion) {
+    if (!m.cellShown) return;
+    m.endCellView();
+    update();
+    return;
+  }
+  setMeasuring(false);
+  m.cell->setMotion(std::move(motion));
+  m.showCell(true);
+  // The camera once: from the front right and above, z up, framing the arm's base and the nozzle with a quarter
+  // of the arm's reach around them (the part is under the nozzle, the arm between the two).
+  const robot::Cell& cell = m.cell->motion()->cell;
+  const double reach = std::abs(cell.arm.a[1]) + std::abs(cell.arm.a[2]);
+  Eigen::AlignedBox3d box(Eigen::Vector3d::Zero());
+  box.extend(cell.nozzleTipMm);
+  box.min().array() -= 0.25 * reach;
+  box.max().array() += 0.25 * reach;
+  const Eigen::Vector3d centre = box.center();
+  const Eigen::Vector3d eye = centre + Eigen::Vector3d(1.0, -1.6, 0.9).normalized() * 4.0 * reach;
+  vtkCamera* camera = m.cellRenderer->GetActiveCamera();
+  camera->SetFocalPoint(centre.x(), centre.y(), centre.z());
+  camera->SetPosition(eye.x(), eye.y(), eye.z());
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  camera->SetParallelProjection(m.renderer->GetActiveCamera()->GetParallelProjection());
+  const double bounds[6] = {box.min().x(), box.max().x(), box.min().y(), box.max().y(), box.min().z(), box.max().z()};
+  m.cellRenderer->ResetCamera(bounds);
+  camera->Zoom(1.2);
+  update();
+}
+
+bool MeshViewerWidget::hasCellMotion() const { return m_impl->cellShown; }
+
+void MeshViewerWidget::setCellPosition(CellPosition position) {
+  m_impl->cell->setPosition(position);
+  update();
+}
+
+CellPosition MeshViewerWidget::cellPosition() const { return m_impl->cell->position(); }
+core::Vec3 MeshViewerWidget::cellToolpathPointDrawn() const { return m_impl->cell->toolpathPointDrawn(); }
+core::Vec3 MeshViewerWidget::cellPartCentreDrawn() const { return m_impl->cell->partCentreDrawn(); }
+QString MeshViewerWidget::cellWarningShown() const { return QString::fromStdString(m_impl->cell->warningShown()); }
+bool MeshViewerWidget::cellWarningMarkerShown() const { return m_impl->cellShown && m_impl->cell->warningMarkerShown(); }
+
+namespace {
+QColor colorOf(const double rgb[3]) { return QColor::fromRgbF(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2])); }
+}  // namespace
+
+QColor MeshViewerWidget::cellPartColor() { return colorOf(kCellPartRgb); }
+QColor MeshViewerWidget::cellNozzleColor() { return colorOf(kCellNozzleRgb); }
+QColor MeshViewerWidget::cellToolpathPointColor() { return colorOf(kCellToolpathPointRgb); }
+QColor MeshViewerWidget::cellToolpathColor() { return colorOf(kCellToolpathRgb); }
+QColor MeshViewerWidget::cellWarningColor() { return colorOf(kCellWarningRgb); }
+
 void MeshViewerWidget::initializeGL() {
   Impl& m = *m_impl;
   // A new context (first show, or the widget moved to another top-level window): VTK's GPU resources
@@ -902,15 +999,16 @@ void MeshViewerWidget::paintGL() {
   const int h = std::max(1, static_cast<int>(std::lround(height() * ratio)));
   m.window->SetSize(w, h);
   m.interactor->SetSize(w, h);
-  if (m.fitPending) {
+  if (m.fitPending && !m.cellShown) {
     m.applyFit();
     m.fitPending = false;
   }
   // One camera for both layers: its clipping range must hold the parts and the arrows over them.
   double bounds[6];
   double overlayBounds[6];
-  m.renderer->ComputeVisiblePropBounds(bounds);
-  m.overlay->ComputeVisiblePropBounds(overlayBounds);
+  vtkRenderer* shown = m.shownRenderer();
+  shown->ComputeVisiblePropBounds(bounds);
+  m.shownOverlay()->ComputeVisiblePropBounds(overlayBounds);
   if (overlayBounds[0] <= overlayBounds[1]) {
     for (int i = 0; i < 6; i += 2) {
       bounds[i] = std::min(bounds[i], overlayBounds[i]);
@@ -918,9 +1016,9 @@ void MeshViewerWidget::paintGL() {
     }
   }
   if (bounds[0] <= bounds[1]) {
-    m.renderer->ResetCameraClippingRange(bounds);
+    shown->ResetCameraClippingRange(bounds);
   } else {
-    m.renderer->ResetCameraClippingRange();
+    shown->ResetCameraClippingRange();
   }
 
   // Qt changed GL state behind VTK's cache since the last frame: re-read it, and restore Qt's after.
@@ -941,6 +1039,14 @@ void MeshViewerWidget::paintGL() {
 void MeshViewerWidget::releaseGraphics() {
   if (!m_impl->glReady) return;
   m_impl->window->SetIsCurrent(true);
+  // The pair of renderers not in the window now drew in this context too.
+  if (m_impl->cellShown) {
+    m_impl->renderer->ReleaseGraphicsResources(m_impl->window);
+    m_impl->overlay->ReleaseGraphicsResources(m_impl->window);
+  } else {
+    m_impl->cellRenderer->ReleaseGraphicsResources(m_impl->window);
+    m_impl->cellOverlay->ReleaseGraphicsResources(m_impl->window);
+  }
   m_impl->window->ReleaseGraphicsResources(m_impl->window);
   m_impl->window->SetIsCurrent(false);
   m_impl->glReady = false;

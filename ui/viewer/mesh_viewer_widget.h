@@ -17,6 +17,7 @@
 #include "multidir/core/mesh/triangle_mesh.h"
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/supports/support_set.h"
+#include "ui/viewer/cell_motion.h"
 #include "ui/viewer/coloured_solid.h"
 #include "ui/viewer/measurement.h"
 #include "ui/viewer/platform_geometry.h"
@@ -158,6 +159,30 @@ class MeshViewerWidget : public QOpenGLWidget {
   [[nodiscard]] int gcodeExtrusionLinesShown() const;
   [[nodiscard]] int gcodeUnsupportedLinesShown() const;
   [[nodiscard]] int gcodeTravelLinesShown() const;
+
+  // Robot cell view (docs/robot-cell.md, "Studio"): the job posed on the cell (ui/viewer/cell_motion.h) takes the
+  // view's place (the robot base frame, z up) until ended with null, or by setMesh, setPlan, clearPlan or clear;
+  // the camera frames the arm and the extruder once, then stays while the position changes. Shows the first
+  // position.
+  void setCellMotion(std::shared_ptr<const CellMotion> motion);
+  [[nodiscard]] bool hasCellMotion() const;
+  // The arm, platform and part at `position` (clamped to the motion's).
+  void setCellPosition(CellPosition position);
+  [[nodiscard]] CellPosition cellPosition() const;
+  // Where the cell view draws things now (base frame, mm): the marker of the toolpath point the move shown
+  // ends at (on the part as posed), and the centre of the step's part as posed.
+  [[nodiscard]] core::Vec3 cellToolpathPointDrawn() const;
+  [[nodiscard]] core::Vec3 cellPartCentreDrawn() const;
+  // The warning text drawn for the step shown (empty: none), and whether its red marker is drawn.
+  [[nodiscard]] QString cellWarningShown() const;
+  [[nodiscard]] bool cellWarningMarkerShown() const;
+  // The cell view's colours: the part (lit), the nozzle, the toolpath point, the toolpath and the warning (unlit,
+  // exact).
+  [[nodiscard]] static QColor cellPartColor();
+  [[nodiscard]] static QColor cellNozzleColor();
+  [[nodiscard]] static QColor cellToolpathPointColor();
+  [[nodiscard]] static QColor cellToolpathColor();
+  [[nodiscard]] static QColor cellWarningColor();
 
   // The direction pointing up on screen after the last fit.
   [[nodiscard]] core::Vec3 viewUp() const;
