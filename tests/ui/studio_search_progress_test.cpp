@@ -3,7 +3,10 @@
 // cancelling (never "done") while it cancels; the two "Max. overhang angle" controls are one value.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <QDoubleSpinBox>
+#include <QLocale>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
@@ -75,6 +78,60 @@ TEST(StudioSearchProgress, CancellingSaysSoUntilTheSearchHasStoppedAndNeverDone)
     EXPECT_TRUE(text.startsWith(QStringLiteral("Cancelling"))) << text.toStdString();
     EXPECT_FALSE(text.contains(QStringLiteral("done"))) << text.toStdString();
   }
+  EXPECT_EQ(window.searchPanel()->progressText(), QStringLiteral("Cancelled"));
+}
+
+// The Search dock's "Best J_G" read-out, as a number (the read-out is "level|beams|best J_G|candidates").
+double shownBestJg(const SearchPanel& panel) {
+  QString best = panel.readoutText().section(QLatin1Char('|'), 2, 2);
+  best.remove(QStringLiteral(" mm²"));
+  bool ok = false;
+  const double value = QLocale().toDouble(best, &ok);
+  EXPECT_TRUE(ok) << best.toStdString();
+  return value;
+}
+
+TEST(StudioSearchProgress, AfterCancelBestJgIsTheDeliveredPlansAndNeverRoseOrJumped) {
+  // Issue 29: fertility, the default search, cancelled part-way: "Best J_G" showed the beams' 559.1 mm² and
+  // jumped to the delivered plan's 12.2 mm² on Cancel, and the level read "Level 3 of 122".
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(
+      test::openModelFile(window, QStringLiteral(MULTIDIR_SHARED_MODELS_DIR "/fertility.off")));
+  window.searchPanel()->setSearchOptions(core::SearchOptions{});
+  auto* job = window.findChild<SearchJob*>();
+  ASSERT_NE(job, nullptr);
+  std::vector<double> shown;
+  QStringList levels;
+  // Connected after the window's own connections, so these read the dock once it took each report.
+  QObject::connect(job, &SearchJob::progressed, window.searchPanel(), [&] {
+    shown.push_back(shownBestJg(*window.searchPanel()));
+    levels << window.searchPanel()->progressText();
+  });
+  QSignalSpy finished(&window, &MainWindow::searchFinished);
+  ASSERT_TRUE(window.runSearch());
+  ASSERT_TRUE(test::waitUntil([&] { return shown.size() >= 3 || !finished.isEmpty(); }, test::kSearchTimeoutMs));
+  ASSERT_TRUE(window.isSearching()) << "the search ended before it could be cancelled";
+  window.cancelSearch();
+  ASSERT_TRUE(finished.wait(test::kSearchTimeoutMs));
+  const SearchRun run = finished.front().front().value<SearchRun>();
+  ASSERT_TRUE(run.plan);
+  ASSERT_TRUE(run.plan->cancelled);
+
+  const double delivered = shownBestJg(*window.searchPanel());
+  EXPECT_NEAR(delivered, run.plan->jgAfterMm2, 0.05);
+  ASSERT_FALSE(shown.empty());
+  for (std::size_t i = 1; i < shown.size(); ++i) EXPECT_LE(shown[i], shown[i - 1]) << "report " << i;
+  EXPECT_DOUBLE_EQ(shown.back(), delivered) << "Best J_G jumped on Cancel";
+  // "Level k of n": k a level the search reached, n the deepest one search may reach.
+  const QRegularExpression level(QStringLiteral("Level (\\d+) of (\\d+)"));
+  const int bound = core::maxSearchLevels(core::SearchOptions{});
+  for (const QString& text : levels) {
+    const QRegularExpressionMatch match = level.match(text);
+    if (!match.hasMatch()) continue;
+    EXPECT_LE(match.captured(1).toInt(), run.plan->statistics.levels) << text.toStdString();
+    EXPECT_EQ(match.captured(2).toInt(), bound) << text.toStdString();
+  }
+  EXPECT_EQ(bound, 81);  // w = 40 at two scales: the finer scale's regions keep V/80
   EXPECT_EQ(window.searchPanel()->progressText(), QStringLiteral("Cancelled"));
 }
 

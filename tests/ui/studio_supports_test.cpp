@@ -6,6 +6,7 @@
 #include <QCheckBox>
 #include <QFileInfo>
 #include <QImage>
+#include <QLocale>
 #include <QSignalSpy>
 #include <QTableWidget>
 
@@ -134,6 +135,49 @@ TEST(StudioSupports, ExportedPlanCarriesTheSupportsAndShowsThemWhenOpened) {
   ASSERT_TRUE(other.plan() && other.plan()->supports);
   EXPECT_EQ(other.viewer()->supportSetsShown(), nonEmptySets(*run.supports, static_cast<int>(run.supports->size())));
   EXPECT_TRUE(other.planPanel()->findChild<QCheckBox*>(QStringLiteral("showSupports"))->isEnabled());
+}
+
+TEST(StudioSupports, RegionRowSaysWhatItsSupportHoldsUp) {
+  // Issue 29: the bunny's region 5 showed 0.0 mm² risky and a 20.6 mm³ support, with no reason. Each row says
+  // what its support holds up: risky faces, lowest points, downward edges or later regions' struts.
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(test::openModelFile(window, QStringLiteral(MULTIDIR_SHARED_MODELS_DIR "/bunny.off")));
+  window.searchPanel()->setSearchOptions(core::SearchOptions{});
+  QSignalSpy finished(&window, &MainWindow::searchFinished);
+  ASSERT_TRUE(window.runSearch());
+  ASSERT_TRUE(finished.wait(test::kSearchTimeoutMs));
+  const SearchRun run = finished.front().front().value<SearchRun>();
+  ASSERT_TRUE(run.plan && run.supports) << run.supportsNote.toStdString();
+  QTableWidget* table = window.planPanel()->regionTable();
+  ASSERT_GT(table->columnCount(), PlanPanel::kSupportCauseColumn);
+  EXPECT_EQ(table->horizontalHeaderItem(PlanPanel::kSupportCauseColumn)->text(), QStringLiteral("Supports hold up"));
+  ASSERT_EQ(table->rowCount(), static_cast<int>(run.supports->size()));
+  for (int i = 0; i < table->rowCount(); ++i) {
+    const core::SupportSet& set = (*run.supports)[static_cast<std::size_t>(i)];
+    const QString cause = table->item(i, PlanPanel::kSupportCauseColumn)->text();
+    EXPECT_EQ(cause.isEmpty(), set.empty()) << "region " << i + 1 << ": " << cause.toStdString();
+    // A region with no risky area holds up no risky face.
+    if (run.plan->regions[static_cast<std::size_t>(i)].riskyAreaMm2 == 0.0) {
+      EXPECT_FALSE(cause.contains(QStringLiteral("risky faces"))) << "region " << i + 1;
+    }
+  }
+
+  // A region with 0.0 mm² risky area whose supports hold up two lowest points and a downward edge says so.
+  core::Decomposition plan = *run.plan;
+  std::vector<core::SupportSet> supports = *run.supports;
+  const std::size_t last = plan.regions.size() - 1;
+  plan.regions[last].riskyAreaMm2 = 0.0;
+  supports[last] = (*run.supports)[0];
+  supports[last].regionIndex = static_cast<int>(last);
+  supports[last].cause = core::SupportCause{};
+  supports[last].cause.pointContacts = 2;
+  supports[last].cause.edgeContacts = 3;
+  supports[last].cause.edgeLengthMm = 4.1;
+  ASSERT_FALSE(supports[last].empty());
+  PlanPanel panel;
+  panel.setPlan(plan, core::MachineKind::TiltRotate, supports);
+  EXPECT_EQ(panel.regionTable()->item(static_cast<int>(last), PlanPanel::kSupportCauseColumn)->text(),
+            QStringLiteral("2 lowest points, %1 mm of downward edges").arg(QLocale().toString(4.1, 'f', 1)));
 }
 
 TEST(StudioSupports, PlanWithoutSupportsLeavesTheCheckboxDisabledAndTheColumnUnknown) {

@@ -9,6 +9,7 @@
 #include <QPixmap>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStringList>
 #include <QTableWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -39,6 +40,25 @@ QTableWidgetItem* cell(const QString& text, bool numeric) {
   return item;
 }
 
+// What a region's supports hold up (docs/supports.md): J_G counts risky faces only, so a region with 0.0 mm²
+// risky area may still carry supports for lowest points, downward edges or later regions' struts.
+QString causeText(const core::SupportSet& set) {
+  if (set.empty()) return QString();
+  const core::SupportCause& cause = set.cause;
+  QStringList parts;
+  if (cause.faceContacts > 0)
+    parts << (cause.faceContacts == 1 ? PlanPanel::tr("1 contact on risky faces")
+                                      : PlanPanel::tr("%1 contacts on risky faces").arg(cause.faceContacts));
+  if (cause.pointContacts > 0)
+    parts << (cause.pointContacts == 1 ? PlanPanel::tr("1 lowest point")
+                                       : PlanPanel::tr("%1 lowest points").arg(cause.pointContacts));
+  if (cause.edgeContacts > 0)
+    parts << PlanPanel::tr("%1 mm of downward edges").arg(number(cause.edgeLengthMm, 1));
+  if (cause.carriedVolumeMm3 > 0)
+    parts << PlanPanel::tr("struts of later regions (%1 mm³)").arg(number(cause.carriedVolumeMm3, 1));
+  return parts.join(QStringLiteral(", "));
+}
+
 }  // namespace
 
 PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent) {
@@ -47,10 +67,13 @@ PlanPanel::PlanPanel(QWidget* parent) : QWidget(parent) {
   m_summary->setObjectName(QStringLiteral("planSummary"));
   m_summary->setWordWrap(true);
 
-  m_table = new QTableWidget(0, kSupportVolumeColumn + 1, this);
+  m_table = new QTableWidget(0, kSupportCauseColumn + 1, this);
   m_table->setObjectName(QStringLiteral("regionTable"));
   m_table->setHorizontalHeaderLabels({tr("Region"), tr("Volume (mm³)"), tr("Risky (mm²)"), tr("Direction"),
-                                      tr("Machine angles"), tr("Supports (mm³)")});
+                                      tr("Machine angles"), tr("Supports (mm³)"), tr("Supports hold up")});
+  m_table->horizontalHeaderItem(kSupportCauseColumn)
+      ->setToolTip(tr("Risky faces are the area J_G counts. Lowest points and downward edges have no area but "
+                      "still print in air; struts of regions printed later go on through this region's space."));
   m_table->verticalHeader()->hide();
   m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   m_table->horizontalHeader()->setStretchLastSection(true);
@@ -150,6 +173,7 @@ void PlanPanel::setPlan(const core::Decomposition& plan, core::MachineKind kind,
     auto* volume = cell(known ? number(supports[static_cast<std::size_t>(i)].volumeMm3, 1) : tr("–"), true);
     if (!known) volume->setToolTip(tr("No supports were grown for this plan"));
     m_table->setItem(i, kSupportVolumeColumn, volume);
+    m_table->setItem(i, kSupportCauseColumn, cell(known ? causeText(supports[static_cast<std::size_t>(i)]) : tr("–"), false));
   }
   m_summary->setText(tr("%n region(s); J_G %1 mm² before, %2 mm² after.", nullptr, m_regions)
                          .arg(number(plan.jgBeforeMm2, 1), number(plan.jgAfterMm2, 1)));

@@ -1,6 +1,6 @@
 #pragma once
 // The Plan panel: the regions of the current plan as a table that doubles as the colour legend (index,
-// volume, risky area, printing direction, machine angles, support volume), view options (printing
+// volume, risky area, printing direction, machine angles, support volume and what it holds up), view options (printing
 // directions, clipping planes, supports, exploded view) and the sequence stepper (show regions 1..i, optionally turning the view as the
 // machine turns the part).
 //
@@ -43,8 +43,9 @@ class PlanPanel : public QWidget {
   void setExplodeFraction(double fraction);  // 0..1 of the slider
   void setClippingPlanesShown(bool shown);
   void setSupportsShown(bool shown);
-  // The table's column with each region's support volume.
+  // The table's column with each region's support volume, and the one that says what it holds up.
   static constexpr int kSupportVolumeColumn = 5;
+  static constexpr int kSupportCauseColumn = 6;
   // Scales the exploded view's slider: at its end, regions move this far apart (per level).
   void setModelSize(double sizeMm);
 

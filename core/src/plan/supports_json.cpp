@@ -35,6 +35,12 @@ ordered_json supportsToJson(const SupportSet& supports, std::size_t regionIndex)
           {"contactAreaMm2", supports.contactAreaMm2},
           {"contacts", supports.contacts},
           {"strutSides", supports.strutSides},
+          {"holdsUp",
+           {{"faceContacts", supports.cause.faceContacts},
+            {"pointContacts", supports.cause.pointContacts},
+            {"edgeContacts", supports.cause.edgeContacts},
+            {"edgeLengthMm", supports.cause.edgeLengthMm},
+            {"carriedVolumeMm3", supports.cause.carriedVolumeMm3}}},
           {"nodes", nodes},
           {"struts", struts}};
 }
@@ -52,6 +58,15 @@ SupportsDocument supportsFromJson(const JsonField& field, std::size_t regionInde
   set.contacts = static_cast<int>(field["contacts"].integer(0, std::numeric_limits<int>::max()));
   const int sides = static_cast<int>(field["strutSides"].integer(3, 64));
   set.strutSides = sides;
+  // Optional: plans written before issue 29 do not say what their supports hold up (then all zero).
+  if (const auto holds = field.optional("holdsUp")) {
+    constexpr long long kMaxContacts = std::numeric_limits<int>::max();
+    set.cause.faceContacts = static_cast<int>((*holds)["faceContacts"].integer(0, kMaxContacts));
+    set.cause.pointContacts = static_cast<int>((*holds)["pointContacts"].integer(0, kMaxContacts));
+    set.cause.edgeContacts = static_cast<int>((*holds)["edgeContacts"].integer(0, kMaxContacts));
+    set.cause.edgeLengthMm = (*holds)["edgeLengthMm"].numberAtLeast(0.0);
+    set.cause.carriedVolumeMm3 = (*holds)["carriedVolumeMm3"].numberAtLeast(0.0);
+  }
 
   const JsonField nodes = field["nodes"];
   const std::size_t nodeCount = nodes.arraySize();

@@ -23,12 +23,37 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
   perScale.threads = std::max(1, threads / std::min(threads, searches));
   perScale.beamWidth = (o.beamWidth + scales - 1) / scales;
 
-  // Progress: the levels of all scales added up (maxSearchLevels counts them so), the best plan of any.
+  // Progress (issue 29): the best J_G is the least of the complete plans that any of the searches holds, the
+  // greedy chains included, since their plans are offered to `best` like the beams' and Cancel delivers the
+  // least of them; so it never rises. The level is the deepest any beam scale reached (the greedy chains only
+  // seed the result, as in the plan's statistics), never their sum: the scales run side by side.
   std::mutex progressMutex;
   std::vector<int> scaleLevels(static_cast<std::size_t>(scales), 0), scaleBeams(static_cast<std::size_t>(scales), 0);
   double bestJg = engine.root()->jg();
-  long long scoredBefore = engine.candidatesScored();
-  std::vector<long long> scaleScored(static_cast<std::size_t>(scales), 0);
+  const long long scoredBefore = engine.candidatesScored();
+  std::vector<long long> searchScored(static_cast<std::size_t>(searches), 0);
+  // What search `task` reported, and the whole reported on (the caller's sink runs under the lock).
+  auto reportOf = [&](int task, const SearchProgress& p) {
+    if (!sink) return;
+    std::lock_guard<std::mutex> lock(progressMutex);
+    // Another search may have reported while the sink was cancelling the job: nothing is reported after a
+    // cancel (checked under the lock, so a sink that cancels is the last one called here).
+    if (engine.job().isCancelled()) return;
+    searchScored[static_cast<std::size_t>(task)] = p.candidatesScored;
+    if (task >= kGreedyChains) {
+      scaleLevels[static_cast<std::size_t>(task - kGreedyChains)] = p.level;
+      scaleBeams[static_cast<std::size_t>(task - kGreedyChains)] = p.beamsAlive;
+    }
+    bestJg = std::min(bestJg, p.bestJgMm2);
+    SearchProgress total = p;
+    total.level = *std::max_element(scaleLevels.begin(), scaleLevels.end());
+    total.beamsAlive = 0;
+    for (int beams : scaleBeams) total.beamsAlive += beams;
+    total.candidatesScored = scoredBefore;
+    for (long long scored : searchScored) total.candidatesScored += scored;
+    total.bestJgMm2 = bestJg;
+    sink(total);
+  };
 
   std::vector<BestPlan> found(static_cast<std::size_t>(searches), BestPlan(engine.sequenceFree()));
   std::vector<int> reached(static_cast<std::size_t>(searches), 0);
@@ -57,10 +82,11 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
           break;
         }
     };
+    const SearchProgressSink searchSink = [&, task](const SearchProgress& p) { reportOf(task, p); };
     if (task < kGreedyChains) {
       stopped[static_cast<std::size_t>(task)] =
-          runGreedy(own, task == 1, own.minRegionVolume(o.minVolumeDivisor), found[static_cast<std::size_t>(task)], {},
-                    reached[static_cast<std::size_t>(task)]);
+          runGreedy(own, task == 1, own.minRegionVolume(o.minVolumeDivisor), found[static_cast<std::size_t>(task)],
+                    searchSink, reached[static_cast<std::size_t>(task)]);
       reached[static_cast<std::size_t>(task)] = 0;  // the levels reported are the beam's
       finished();
       return;
@@ -71,30 +97,8 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
     scale.minRegionVolume = own.minRegionVolume(divisor);
     scale.maxLevels = static_cast<int>(std::ceil(divisor)) + 1;
     scale.beamWidth = perScale.beamWidth;
-    const SearchProgressSink scaleSink = [&, s](const SearchProgress& p) {
-      if (!sink) return;
-      std::lock_guard<std::mutex> lock(progressMutex);
-      // Another scale may have finished a level while the sink was cancelling the job: nothing is reported
-      // after a cancel (checked under the lock, so a sink that cancels is the last one called).
-      if (engine.job().isCancelled()) return;
-      scaleLevels[static_cast<std::size_t>(s)] = p.level;
-      scaleBeams[static_cast<std::size_t>(s)] = p.beamsAlive;
-      scaleScored[static_cast<std::size_t>(s)] = p.candidatesScored;
-      bestJg = std::min(bestJg, p.bestJgMm2);
-      SearchProgress total = p;
-      total.level = 0;
-      total.beamsAlive = 0;
-      total.candidatesScored = scoredBefore;
-      for (int k = 0; k < scales; ++k) {
-        total.level += scaleLevels[static_cast<std::size_t>(k)];
-        total.beamsAlive += scaleBeams[static_cast<std::size_t>(k)];
-        total.candidatesScored += scaleScored[static_cast<std::size_t>(k)];
-      }
-      total.bestJgMm2 = bestJg;
-      sink(total);
-    };
     stopped[static_cast<std::size_t>(task)] = runBeamSearch(own, perScale, scale, found[static_cast<std::size_t>(task)],
-                                                            scaleSink, reached[static_cast<std::size_t>(task)]);
+                                                            searchSink, reached[static_cast<std::size_t>(task)]);
     finished();
   });
   bool cancelled = false;

@@ -109,7 +109,10 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
       cancelled = runGreedy(engine, true, engine.minRegionVolume(options.minVolumeDivisor), best, progress, levels);
       break;
   }
-  const NodePtr chosen = withoutUnpaidPlanes(engine, best.node(), options);
+  // A cancelled search delivers the best plan it has, the one its progress reported: removing the planes that
+  // do not pay for themselves may raise J_G (by less than the plane-gain threshold), so it is left to a search
+  // that ran to its end (docs/search.md, "Progress and Cancel").
+  const NodePtr chosen = cancelled ? best.node() : withoutUnpaidPlanes(engine, best.node(), options);
   Decomposition plan = engine.planOf(*chosen);
   if (finalists && !cancelled) {
     std::vector<std::vector<Plane>> taken{planesOf(chosen)};
@@ -155,6 +158,15 @@ Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& ma
                                    : detail::searchedAndPolished(model, machine, options, job, progress);
   if (!plan.ok()) return plan.error();
   detail::returnFreedMemory();
+  // What the search reported last may be older than the plan a cancel delivers (searches running side by side
+  // offer plans until they notice the cancel): the last report is the delivered plan's.
+  if (plan.cancelled && progress) {
+    SearchProgress last;
+    last.level = plan.statistics.levels;
+    last.bestJgMm2 = plan.jgAfterMm2;
+    last.candidatesScored = plan.statistics.candidatesScored;
+    progress(last);
+  }
   job.setProgress(1.0, "search done");
   return plan;
 }

@@ -62,9 +62,8 @@ double finestVolumeDivisor(const SearchOptions& options) {
 
 int maxSearchLevels(const SearchOptions& options) {
   const int scales = options.scheme == SearchScheme::Beam ? std::clamp(options.volumeScales, 1, 4) : 1;
-  int levels = 0;
-  for (int s = 0; s < scales; ++s) levels += static_cast<int>(std::ceil(volumeDivisorOfScale(options, s))) + 1;
-  return levels;
+  // The finest scale's beam may go deepest: its regions are the smallest.
+  return static_cast<int>(std::ceil(volumeDivisorOfScale(options, scales - 1))) + 1;
 }
 
 }  // namespace multidir::core

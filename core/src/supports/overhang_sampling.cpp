@@ -69,7 +69,7 @@ void sampleFace(const TriangleMesh& mesh, std::size_t f, const DirectionFrame& f
       const double height = w0 * h[0] + w1 * h[1] + w2 * h[2];
       if (height <= minHeight) continue;
       const Vec3 position = w0 * mesh.corner(f, 0) + w1 * mesh.corner(f, 1) + w2 * mesh.corner(f, 2);
-      out.push_back({position, OverhangKind::Face, static_cast<std::int32_t>(f)});
+      out.push_back({position, OverhangKind::Face, static_cast<std::int32_t>(f), 0.0});
     }
 }
 
@@ -138,7 +138,7 @@ Result<std::vector<OverhangSample>> sampleOverhangs(const TriangleMesh& mesh, co
   for (std::int32_t f : largest) {
     if (f < 0) continue;
     const Vec3 centroid = (mesh.corner(f, 0) + mesh.corner(f, 1) + mesh.corner(f, 2)) / 3.0;
-    if (frame.height(centroid) > minHeight) samples.push_back({centroid, OverhangKind::Face, f});
+    if (frame.height(centroid) > minHeight) samples.push_back({centroid, OverhangKind::Face, f, 0.0});
   }
 
   // Edge overhangs: a downward ridge between two faces that are each printable on their own.
@@ -178,25 +178,30 @@ Result<std::vector<OverhangSample>> sampleOverhangs(const TriangleMesh& mesh, co
     for (int i = 0; i < pieces; ++i) {
       const Vec3 p = a + (b - a) * ((i + 0.5) / pieces);
       if (frame.height(p) > minHeight && !nearAny(samples, p, 0.5 * spacing))
-        samples.push_back({p, OverhangKind::Edge, faces[0]});
+        samples.push_back({p, OverhangKind::Edge, faces[0], length / pieces});
     }
   }
 
-  // Point overhangs: a vertex below all of its neighbours.
+  // Point overhangs: a vertex below all of its neighbours, where the surface faces down. A vertex below its
+  // neighbours where the surface faces up is the bottom of a pit in a top surface: the solid lies under it, so
+  // it rests on material printed before it (issue 29: the bunny's pits got struts grown inside the model).
   std::vector<double> lowestNeighbour(mesh.vertices.size(), std::numeric_limits<double>::infinity());
   std::vector<std::int32_t> someFace(mesh.vertices.size(), -1);
+  std::vector<Vec3> areaNormal(mesh.vertices.size(), Vec3::Zero());  // sum of the faces' area vectors around it
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
     for (int k = 0; k < 3; ++k) {
       const std::int32_t v = mesh.triangles[f][k];
       someFace[v] = static_cast<std::int32_t>(f);
+      areaNormal[v] += (mesh.corner(f, 1) - mesh.corner(f, 0)).cross(mesh.corner(f, 2) - mesh.corner(f, 0));
       for (int m = 1; m < 3; ++m)
         lowestNeighbour[v] = std::min(lowestNeighbour[v], frame.height(mesh.vertices[mesh.triangles[f][(k + m) % 3]]));
     }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     if (someFace[v] < 0) continue;
     const double h = frame.height(mesh.vertices[v]);
-    if (h > minHeight && h < lowestNeighbour[v] - 1e-9 && !nearAny(samples, mesh.vertices[v], 0.5 * spacing))
-      samples.push_back({mesh.vertices[v], OverhangKind::Point, someFace[v]});
+    if (h > minHeight && h < lowestNeighbour[v] - 1e-9 && areaNormal[v].dot(d) < 0.0 &&
+        !nearAny(samples, mesh.vertices[v], 0.5 * spacing))
+      samples.push_back({mesh.vertices[v], OverhangKind::Point, someFace[v], 0.0});
   }
   return samples;
 }

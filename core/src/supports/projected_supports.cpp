@@ -73,10 +73,15 @@ class Grower {
   std::vector<int> strutCell;
   std::vector<char> strutIsTip;   // contact tip (narrow at the top)
   std::vector<char> strutIsFoot;  // foot (narrow at the bottom)
+  // Per node: the overhang a contact node holds up, and for an edge contact the length it stands for.
+  std::vector<OverhangKind> nodeCause;
+  std::vector<double> nodeEdgeLengthMm;
 
  private:
   int addNode(const Vec3& p, SupportNodeKind kind) {
     nodes.push_back({p, kind});
+    nodeCause.push_back(OverhangKind::Face);
+    nodeEdgeLengthMm.push_back(0.0);
     return static_cast<int>(nodes.size()) - 1;
   }
   void addStrut(int upper, int lower, int cell, bool tip = false, bool foot = false) {
@@ -116,6 +121,8 @@ class Grower {
       return;
     }
     const int contact = addNode(sample.position, SupportNodeKind::Contact);
+    nodeCause[static_cast<std::size_t>(contact)] = sample.kind;
+    nodeEdgeLengthMm[static_cast<std::size_t>(contact)] = sample.edgeLengthMm;
     const int bottom = addNode(tip, SupportNodeKind::Tip);
     addStrut(contact, bottom, c, true);
     m_pending[static_cast<std::size_t>(c)].push_back(bottom);
@@ -368,11 +375,45 @@ void assignRadii(Grower& g, const Layout& layout, const SupportOptions& options)
   }
 }
 
+// What each region's supports hold up: its contacts by overhang kind, and the volume of its struts that hold up
+// only struts carried across a base plane from a region printed later. Struts come after every strut above
+// them, so one pass top-down sees each strut's upper node complete: a strut holds up its own region's
+// overhangs when it starts at a contact or below such a strut of the same cell.
+void tallyCauses(const Grower& g, const Layout& layout, ProjectedSupports& out) {
+  std::vector<std::vector<int>> ownCells(g.nodes.size());  // cells in which a strut into the node holds up own contacts
+  for (std::size_t s = 0; s < g.struts.size(); ++s) {
+    const SupportStrut& strut = g.struts[s];
+    const auto upper = static_cast<std::size_t>(strut.upper), lower = static_cast<std::size_t>(strut.lower);
+    const int cell = g.strutCell[s];
+    SupportCause& cause = out.regions[static_cast<std::size_t>(layout.cells[static_cast<std::size_t>(cell)].region)].cause;
+    const bool contact = g.nodes[upper].kind == SupportNodeKind::Contact;
+    if (contact) {
+      switch (g.nodeCause[upper]) {
+        case OverhangKind::Face: ++cause.faceContacts; break;
+        case OverhangKind::Point: ++cause.pointContacts; break;
+        case OverhangKind::Edge:
+          ++cause.edgeContacts;
+          cause.edgeLengthMm += g.nodeEdgeLengthMm[upper];
+          break;
+      }
+    }
+    const std::vector<int>& above = ownCells[upper];
+    if (contact || std::find(above.begin(), above.end(), cell) != above.end()) {
+      if (std::find(ownCells[lower].begin(), ownCells[lower].end(), cell) == ownCells[lower].end())
+        ownCells[lower].push_back(cell);
+    } else {
+      cause.carriedVolumeMm3 +=
+          frustumVolume((g.nodes[upper].position - g.nodes[lower].position).norm(), strut.lowerRadiusMm, strut.upperRadiusMm);
+    }
+  }
+}
+
 // Splits the structure by region and builds each region's solids.
 ProjectedSupports package(Grower& g, const Layout& layout, const SupportOptions& options) {
   ProjectedSupports out;
   out.regions.resize(static_cast<std::size_t>(layout.regionCount));
   for (int r = 0; r < layout.regionCount; ++r) out.regions[static_cast<std::size_t>(r)].regionIndex = r;
+  tallyCauses(g, layout, out);
   std::vector<std::vector<int>> localIndex(out.regions.size(), std::vector<int>(g.nodes.size(), -1));
   for (std::size_t s = 0; s < g.struts.size(); ++s) {
     const int region = layout.cells[static_cast<std::size_t>(g.strutCell[s])].region;

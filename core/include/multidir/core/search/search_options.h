@@ -86,15 +86,18 @@ Status validate(const SearchOptions& options);
 // The volume divisor of the beam search's finest scale: w * 2^(volumeScales - 1) (w for the greedy schemes).
 [[nodiscard]] double finestVolumeDivisor(const SearchOptions& options);
 
-// How many levels the search explores at most, its scales one after the other (progress says "level k of
-// this"): every region cut off at scale w keeps at least V/w, so no plan has more than ceil(w) + 1 cuts.
+// The deepest level the search may reach (progress says "level k of this", k the deepest level a beam reached):
+// every region cut off at scale w keeps at least V/w, so no plan has more than ceil(w) + 1 cuts, and the scales
+// run side by side, so the finest scale's bound is the search's.
 [[nodiscard]] int maxSearchLevels(const SearchOptions& options);
 
 // What the search reports while it runs (on the thread that runs it).
 struct SearchProgress {
-  int level = 0;                 // clipping planes in the plans being extended
+  int level = 0;                 // clipping planes in the plans being extended (the deepest of the searches)
   int beamsAlive = 0;
-  double bestJgMm2 = 0.0;        // best complete plan so far
+  // The J_G of the best complete plan so far, the one Cancel delivers: it never rises during the search
+  // (polishing then starts from the plan without its unpaid planes, docs/search.md "Progress and Cancel").
+  double bestJgMm2 = 0.0;
   long long candidatesScored = 0;
   int axisIndex = -1;            // 4-DOF axis search: which axis (else -1)
   int axisCount = 0;

@@ -15,6 +15,7 @@ struct OverhangSample {
   Vec3 position;            // on the mesh surface, mm
   OverhangKind kind = OverhangKind::Face;
   std::int32_t face = -1;   // a face of the mesh at the sample
+  double edgeLengthMm = 0.0;  // an edge sample: the length of the edge it stands for
 };
 
 // Samples of `mesh` printed along `printingDirection` (unit):
@@ -25,8 +26,9 @@ struct OverhangSample {
 //  - edge overhangs: an edge whose two faces both face down (but neither is risky), whose other corners
 //    both lie higher, and which itself rises less steeply than the faces may (|e.d| < cos alpha), sampled
 //    every R along it; edges of caps (cut faces, FaceOrigin::Cap) are left out;
-//  - point overhangs: a vertex lower along the direction than all its neighbours, unless a sample lies
-//    within R/2 already.
+//  - point overhangs: a vertex lower along the direction than all its neighbours where the surface faces down
+//    (the sum of its faces' area vectors points down: the solid lies above it, air below), unless a sample
+//    lies within R/2 already. The bottom of a pit in a top surface rests on the solid under it: no sample.
 // On the platform, everything within the supported band above the mesh's lowest level is left out (it rests
 // on the bed); above a cut plane only the base plane itself is (the cap rests on the material below).
 // Cost: O(F + samples). Errors: InvalidParameter (options, direction).

@@ -37,6 +37,19 @@ struct SupportStrut {
   double lowerRadiusMm = 0.0;
 };
 
+// What a region's supports hold up (issue 29: a region with 0.0 mm^2 risky area showed a support and no
+// reason). J_G counts risky faces only; supports also hold up what has no area but still prints in air: a
+// lowest point (a vertex below its neighbours where the surface faces down) and a downward edge (a ridge
+// between two printable faces that rises less steeply than alpha_max). And struts of regions printed later
+// that cross into this region's sub-space are printed with it. docs/supports.md.
+struct SupportCause {
+  int faceContacts = 0;            // contacts on risky faces
+  int pointContacts = 0;           // contacts on lowest points
+  int edgeContacts = 0;            // contacts on downward edges ...
+  double edgeLengthMm = 0.0;       // ... and the length of those edges they hold up
+  double carriedVolumeMm3 = 0.0;   // struts that hold up only regions printed later
+};
+
 // The supports printed together with one region (all pieces inside its sub-space Omega_k).
 struct SupportSet {
   int regionIndex = 0;                // the region's position in printing order
@@ -47,6 +60,7 @@ struct SupportSet {
   double volumeMm3 = 0.0;             // signedVolume(mesh): the sum of the solids
   double contactAreaMm2 = 0.0;        // where tips touch the model (a disc of the contact radius each)
   int contacts = 0;                   // tips touching the model (on overhangs and where struts end on it)
+  SupportCause cause;                 // what they hold up
 
   bool empty() const { return struts.empty(); }
 };
