@@ -133,6 +133,270 @@
     </message>
 </context>
 <context>
+    <name>multidir::ui::ApartJobRunner</name>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="27"/>
+        <source>Slicing plate %1 of %2</source>
+        <translation>Druckplatte %1 von %2 wird gesliced</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="30"/>
+        <source>Slicing the model in one piece with supports, for comparison</source>
+        <translation>Das Modell wird zum Vergleich in einem Stück mit Stützen gesliced</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="31"/>
+        <source>Cutting the parts to fit the printer</source>
+        <translation>Die Teile werden passend für den Drucker zerschnitten</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="32"/>
+        <source>Placing the dowels</source>
+        <translation>Die Dübel werden platziert</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="33"/>
+        <source>Drilling the dowel holes</source>
+        <translation>Die Dübellöcher werden gebohrt</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="34"/>
+        <source>Sinking the part numbers</source>
+        <translation>Die Teilenummern werden eingesenkt</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="35"/>
+        <source>Laying the parts on plates</source>
+        <translation>Die Teile werden auf Druckplatten gelegt</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="36"/>
+        <source>Writing the parts and the 3MF</source>
+        <translation>Die Teile und das 3MF werden geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="37"/>
+        <source>Drawing the assembly sheet</source>
+        <translation>Das Montageblatt wird gezeichnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="44"/>
+        <source>A part does not fit this printer even cut further: choose a printer with a larger bed, or scale the model down and search again.</source>
+        <translation>Ein Teil passt auch weiter zerschnitten nicht in diesen Drucker: wählen Sie einen Drucker mit größerem Druckbett oder verkleinern Sie das Modell und suchen Sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="47"/>
+        <source>The slicer &apos;prusa-slicer&apos; was not found: install PrusaSlicer (scripts/install-deps.sh), or untick &quot;Slice the plates&quot;.</source>
+        <translation>Der Slicer &apos;prusa-slicer&apos; wurde nicht gefunden: installieren Sie PrusaSlicer (scripts/install-deps.sh) oder entfernen Sie das Häkchen bei „Druckplatten slicen“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="50"/>
+        <source>The slicer failed on a plate: its command and last output lines are below. Try another printer, or untick &quot;Slice the plates&quot; to get the parts without G-code.</source>
+        <translation>Der Slicer ist an einer Druckplatte gescheitert: sein Befehl und seine letzten Ausgabezeilen stehen unten. Versuchen Sie einen anderen Drucker oder entfernen Sie das Häkchen bei „Druckplatten slicen“, um die Teile ohne G-Code zu erhalten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="53"/>
+        <source>The parts could not be laid out or the dowels not placed: the reason is below. Choose a printer with a larger bed or other dowel options.</source>
+        <translation>Die Teile konnten nicht angeordnet oder die Dübel nicht platziert werden: der Grund steht unten. Wählen Sie einen Drucker mit größerem Druckbett oder andere Dübeloptionen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="56"/>
+        <source>Drilling the dowel holes or sinking the numbers failed on a part (named below): try a smaller dowel diameter or another plan.</source>
+        <translation>Das Bohren der Dübellöcher oder das Einsenken der Nummern ist an einem Teil (unten genannt) gescheitert: versuchen Sie einen kleineren Dübeldurchmesser oder einen anderen Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="79"/>
+        <source>The plan is being printed apart already.</source>
+        <translation>Der Plan wird bereits getrennt gedruckt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="83"/>
+        <source>There is no plan to print apart: search the model first.</source>
+        <translation>Es gibt keinen Plan zum getrennten Drucken: durchsuchen Sie zuerst das Modell.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="88"/>
+        <source>Could not create a temporary folder for the parts: %1</source>
+        <translation>Für die Teile konnte kein temporärer Ordner angelegt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="112"/>
+        <source>Not enough memory to print this plan apart.</source>
+        <translation>Nicht genug Speicher, um diesen Plan getrennt zu drucken.</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="115"/>
+        <source>Unexpected error while printing the plan apart.</source>
+        <translation>Unerwarteter Fehler beim getrennten Drucken des Plans.</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::ApartPanel</name>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="129"/>
+        <source>The parts must fit this printer&apos;s bed and height; its settings slice the plates</source>
+        <translation>Die Teile müssen auf das Druckbett und in die Höhe dieses Druckers passen; mit seinen Einstellungen werden die Druckplatten gesliced</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="130"/>
+        <source>Printer</source>
+        <translation>Drucker</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="131"/>
+        <source>Slice the plates (PrusaSlicer) for the estimates</source>
+        <translation>Druckplatten slicen (PrusaSlicer) für die Schätzungen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="143"/>
+        <source>Dowel diameter from</source>
+        <translation>Dübeldurchmesser von</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="144"/>
+        <source>Dowel diameter up to</source>
+        <translation>Dübeldurchmesser bis</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="145"/>
+        <source>Clearance in radius</source>
+        <translation>Spiel im Radius</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="146"/>
+        <source>Clearance in depth</source>
+        <translation>Spiel in der Tiefe</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="147"/>
+        <source>Wall around holes</source>
+        <translation>Wandstärke um die Löcher</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="148"/>
+        <source>Dowels per joint</source>
+        <translation>Dübel je Verbindung</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="152"/>
+        <source>Run</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="154"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="156"/>
+        <source>Export...</source>
+        <translation>Exportieren...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="158"/>
+        <source>Write every part and dowel (STL), the 3MF, the G-code of every plate, the assembly sheet and apart.json to a folder</source>
+        <translation>Jedes Teil und jeden Dübel (STL), das 3MF, den G-Code jeder Druckplatte, das Montageblatt und apart.json in einen Ordner schreiben</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Print</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Filament
+(cm³)</source>
+        <translation>Filament
+(cm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Support
+(cm³)</source>
+        <translation>Stützen
+(cm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="217"/>
+        <source>Cancelled: nothing was written.</source>
+        <translation>Abgebrochen: es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="241"/>
+        <source>Assembly of %1</source>
+        <translation>Montage von %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="249"/>
+        <source>There is no plan to print apart: search the model first.</source>
+        <translation>Es gibt keinen Plan zum getrennten Drucken: durchsuchen Sie zuerst das Modell.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="254"/>
+        <source>The printer &apos;%1&apos; could not be read: choose another one.</source>
+        <translation>Der Drucker „%1“ konnte nicht gelesen werden: wählen Sie einen anderen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="258"/>
+        <source>The dowel options do not fit together: %1</source>
+        <translation>Die Dübeloptionen passen nicht zusammen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="276"/>
+        <source>Nothing to export: run Print apart first.</source>
+        <translation>Nichts zu exportieren: führen Sie zuerst „Getrennt drucken“ aus.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="280"/>
+        <source>The files could not be written: %1</source>
+        <translation>Die Dateien konnten nicht geschrieben werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/apart_panel.cpp" line="283"/>
+        <source>%n file(s) written to %1</source>
+        <translation>
+            <numerusform>%n Datei nach %1 geschrieben</numerusform>
+            <numerusform>%n Dateien nach %1 geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="288"/>
+        <source>Export the parts to a folder</source>
+        <translation>Die Teile in einen Ordner exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="311"/>
+        <source>%1 parts, %2 joints, %3 dowels, %4 plates; J_G apart %5 mm² (the plan: %6 mm²)</source>
+        <translation>%1 Teile, %2 Verbindungen, %3 Dübel, %4 Druckplatten; J_G getrennt %5 mm² (der Plan: %6 mm²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="317"/>
+        <source>Parts exploded</source>
+        <translation>Teile in Explosionsansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="318"/>
+        <location filename="../ui/panels/apart_panel.cpp" line="351"/>
+        <source>Plate %1</source>
+        <translation>Druckplatte %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="352"/>
+        <source>All plates</source>
+        <translation>Alle Druckplatten</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="353"/>
+        <source>One piece with supports</source>
+        <translation>Ein Stück mit Stützen</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::Autosave</name>
     <message>
         <location filename="../ui/project/autosave.cpp" line="83"/>
@@ -192,6 +456,285 @@
         <location filename="../ui/viewer/axis_picker.cpp" line="79"/>
         <source>That click missed the platform: click on the grey disc under the model.</source>
         <translation>Der Klick hat die Plattform verfehlt: klicken Sie auf die graue Scheibe unter dem Modell.</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::CellPanel</name>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="54"/>
+        <source>Robot cell: the arm carries the platform under a fixed extruder</source>
+        <translation>Roboterzelle: der Arm trägt die Plattform unter einem feststehenden Extruder</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="58"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="59"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="69"/>
+        <source>The nozzle tip in the robot base frame (measure it with the TCP; docs/robot-cell.md)</source>
+        <translation>Die Düsenspitze im Basiskoordinatensystem des Roboters (mit dem TCP messen; docs/robot-cell.md)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="70"/>
+        <source>Unit vector from the tip up into the extruder, robot base frame</source>
+        <translation>Einheitsvektor von der Spitze nach oben in den Extruder, im Basiskoordinatensystem des Roboters</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="71"/>
+        <source>Flange to platform centre (the TCP): translation; the calibration</source>
+        <translation>Flansch zur Plattformmitte (der TCP): Verschiebung; die Kalibrierung</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="72"/>
+        <source>Flange to platform centre: rotation vector (axis times angle), degrees</source>
+        <translation>Flansch zur Plattformmitte: Drehvektor (Achse mal Winkel), Grad</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="74"/>
+        <source>Load cell...</source>
+        <translation>Zelle laden...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="76"/>
+        <source>Save cell...</source>
+        <translation>Zelle speichern...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="86"/>
+        <source>Find extruder position</source>
+        <translation>Extruderposition finden</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="88"/>
+        <source>Scores nozzle positions over the arm&apos;s workspace by the share of the plan&apos;s platform poses reachable with margin (multidir cell reach)</source>
+        <translation>Bewertet Düsenpositionen im Arbeitsraum des Arms nach dem Anteil der Plattformposen des Plans, die mit Reserve erreichbar sind (multidir cell reach)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="90"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="100"/>
+        <source>Use this position</source>
+        <translation>Diese Position verwenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="106"/>
+        <source>Robot:</source>
+        <translation>Roboter:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="107"/>
+        <source>Nozzle tip:</source>
+        <translation>Düsenspitze:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="108"/>
+        <source>Nozzle axis:</source>
+        <translation>Düsenachse:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="109"/>
+        <source>Flange to platform:</source>
+        <translation>Flansch zur Plattform:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="110"/>
+        <source>Platform rotation:</source>
+        <translation>Plattformdrehung:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="111"/>
+        <source>Table height:</source>
+        <translation>Tischhöhe:</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="137"/>
+        <source>Load robot cell</source>
+        <translation>Roboterzelle laden</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="137"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="141"/>
+        <source>Robot cell (*.json)</source>
+        <translation>Roboterzelle (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="141"/>
+        <source>Save robot cell</source>
+        <translation>Roboterzelle speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="155"/>
+        <source>Finding the extruder position was cancelled.</source>
+        <translation>Die Suche nach der Extruderposition wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="174"/>
+        <source>Could not load the cell file %1: %2</source>
+        <translation>Die Zellendatei %1 konnte nicht geladen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="180"/>
+        <source>Cell loaded from %1.</source>
+        <translation>Zelle aus %1 geladen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="186"/>
+        <source>There is no cell to save.</source>
+        <translation>Es gibt keine Zelle zum Speichern.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="191"/>
+        <source>Could not save the cell: %1</source>
+        <translation>Die Zelle konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="194"/>
+        <source>Cell saved as %1.</source>
+        <translation>Zelle als %1 gespeichert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="208"/>
+        <source>No cell.</source>
+        <translation>Keine Zelle.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="226"/>
+        <source>Cell check: sound (%1, nozzle tip at %2, %3, %4 mm).</source>
+        <translation>Zellenprüfung: in Ordnung (%1, Düsenspitze bei %2, %3, %4 mm).</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/cell_panel.cpp" line="233"/>
+        <source>Cell check: %n problem(s)</source>
+        <translation>
+            <numerusform>Zellenprüfung: %n Problem</numerusform>
+            <numerusform>Zellenprüfung: %n Probleme</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="280"/>
+        <source>There is no cell: choose the robot cell machine or load a cell file.</source>
+        <translation>Es gibt keine Zelle: wählen Sie die Maschine Roboterzelle oder laden Sie eine Zellendatei.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="285"/>
+        <source>There is no plan: the reach map scores the plan&apos;s platform poses. Run a search or open a plan.</source>
+        <translation>Es gibt keinen Plan: die Erreichbarkeitskarte bewertet die Plattformposen des Plans. Starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="290"/>
+        <source>The plan&apos;s poses cannot be found: %1</source>
+        <translation>Die Posen des Plans können nicht bestimmt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="311"/>
+        <source>The reach map failed: %1</source>
+        <translation>Die Erreichbarkeitskarte ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="316"/>
+        <source>Best nozzle position: %1, %2, %3 mm, %4 % of the plan&apos;s poses reachable with margin (least reach margin %5 mm) over %6 positions.</source>
+        <translation>Beste Düsenposition: %1, %2, %3 mm, %4 % der Posen des Plans mit Reserve erreichbar (kleinste Reichweitenreserve %5 mm), über %6 Positionen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="334"/>
+        <source>Finding the extruder position...</source>
+        <translation>Extruderposition wird gesucht...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="348"/>
+        <source>The nozzle tip is now at the reach map&apos;s best position; move the extruder there and measure it again.</source>
+        <translation>Die Düsenspitze steht jetzt an der besten Position der Erreichbarkeitskarte; bringen Sie den Extruder dorthin und messen Sie sie erneut.</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::CellViewPanel</name>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="30"/>
+        <source>Show on the cell</source>
+        <translation>In der Zelle zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="32"/>
+        <source>The sliced job on the robot cell: the arm, the platform and the part at the poses the robot programs command (multidir robot-program)</source>
+        <translation>Das Slicing-Ergebnis in der Roboterzelle: der Arm, die Plattform und das Teil in den Posen, die die Roboterprogramme vorgeben (multidir robot-program)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="34"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="37"/>
+        <source>Back to the plan</source>
+        <translation>Zurück zum Plan</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="46"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="101"/>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="110"/>
+        <source>The cell changed: show the job on it again.</source>
+        <translation>Die Zelle hat sich geändert: zeigen Sie den Auftrag erneut in ihr.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="121"/>
+        <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
+        <translation>Es gibt keine Roboterzelle: wählen Sie die Maschine „Roboterarm unter einem feststehenden Extruder“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="125"/>
+        <source>The plan is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
+        <translation>Für den Plan gibt es kein Slicing-Ergebnis: slicen Sie ihn zuerst mit dem Profil der Zelle (ur5-cell-0.8).</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="149"/>
+        <source>The job cannot be posed on the cell: %1</source>
+        <translation>Der Auftrag kann nicht in die Zelle gestellt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="161"/>
+        <source>Converting the job for the cell...</source>
+        <translation>Der Auftrag wird für die Zelle umgewandelt...</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/cell_view_panel.cpp" line="183"/>
+        <source>%n step(s) on the %1, %2 moves.</source>
+        <translation>
+            <numerusform>%n Schritt am %1, %2 Bewegungen.</numerusform>
+            <numerusform>%n Schritte am %1, %2 Bewegungen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="207"/>
+        <source>Step %1 of %2: no move converted (the arm at home).</source>
+        <translation>Schritt %1 von %2: keine Bewegung umgewandelt (der Arm in Grundstellung).</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="211"/>
+        <source>Step %1 of %2, move %3 of %4 (%5, line %6)</source>
+        <translation>Schritt %1 von %2, Bewegung %3 von %4 (%5, Zeile %6)</translation>
     </message>
 </context>
 <context>
@@ -1502,6 +2045,11 @@
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="51"/>
+        <source>5-DOF: robot arm under a fixed extruder</source>
+        <translation>5-DOF: Roboterarm unter einem feststehenden Extruder</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MainWindow</name>
@@ -2177,6 +2725,26 @@ Qt %1</translation>
         <source>S&amp;top the Devices and Quit</source>
         <translation>Geräte an&amp;halten und beenden</translation>
     </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="203"/>
+        <source>Print &amp;apart...</source>
+        <translation>&amp;Getrennt drucken...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="209"/>
+        <source>Print the plan shown on an ordinary printer: every region a part, joined by dowels</source>
+        <translation>Den angezeigten Plan auf einem gewöhnlichen Drucker drucken: jeder Bereich ein Teil, durch Dübel verbunden</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="272"/>
+        <source>Print apart</source>
+        <translation>Getrennt drucken</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_cell.cpp" line="20"/>
+        <source>Cell view</source>
+        <translation>Zellenansicht</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MeshViewerWidget</name>
@@ -2531,6 +3099,46 @@ Qt %1</translation>
         <location filename="../ui/panels/plan_panel.cpp" line="209"/>
         <source>of %1</source>
         <translation>von %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="50"/>
+        <source>1 contact on risky faces</source>
+        <translation>1 Kontakt auf der Risikofläche</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="51"/>
+        <source>%1 contacts on risky faces</source>
+        <translation>%1 Kontakte auf der Risikofläche</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <source>1 lowest point</source>
+        <translation>1 tiefster Punkt</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="54"/>
+        <source>%1 lowest points</source>
+        <translation>%1 tiefste Punkte</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="56"/>
+        <source>%1 mm of downward edges</source>
+        <translation>%1 mm nach unten weisende Kanten</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="58"/>
+        <source>struts of later regions (%1 mm³)</source>
+        <translation>Streben späterer Bereiche (%1 mm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="73"/>
+        <source>Supports hold up</source>
+        <translation>Von Stützen getragen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="75"/>
+        <source>Risky faces are the area J_G counts. Lowest points and downward edges have no area but still print in air; struts of regions printed later go on through this region&apos;s space.</source>
+        <translation>Die Dreiecke der Risikofläche sind die Fläche, die J_G zählt. Tiefste Punkte und nach unten weisende Kanten haben keine Fläche, werden aber trotzdem in der Luft gedruckt; Streben später gedruckter Bereiche führen durch den Raum dieses Bereichs.</translation>
     </message>
 </context>
 <context>
@@ -4032,6 +4640,11 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <source>Slicer settings: %1</source>
         <translation>Slicer-Einstellungen: %1</translation>
     </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="60"/>
+        <source>A plan printed apart is sliced part by part on plates: use Search &gt; Print apart... or &apos;multidir apart&apos; (docs/apart.md).</source>
+        <translation>Ein getrennt gedruckter Plan wird Teil für Teil auf Druckplatten gesliced: verwenden Sie Suche &gt; Getrennt drucken... oder „multidir apart“ (docs/apart.md).</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::SliceJobRunner</name>
@@ -4401,6 +5014,11 @@ Den Auftrag trotzdem in diesen Ordner schreiben? Dateien mit den Namen des Auftr
         <location filename="../ui/document/studio_document.cpp" line="162"/>
         <source>There is no plan to run: run a search or open a plan first.</source>
         <translation>Es gibt keinen Plan zum Ausführen: führen Sie zuerst eine Suche aus oder öffnen Sie einen Plan.</translation>
+    </message>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="157"/>
+        <source>These parts were made from another plan than the one shown: print the plan shown apart again.</source>
+        <translation>Diese Teile wurden aus einem anderen als dem angezeigten Plan erzeugt: drucken Sie den angezeigten Plan erneut getrennt.</translation>
     </message>
 </context>
 <context>

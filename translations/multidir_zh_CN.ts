@@ -133,6 +133,269 @@
     </message>
 </context>
 <context>
+    <name>multidir::ui::ApartJobRunner</name>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="27"/>
+        <source>Slicing plate %1 of %2</source>
+        <translation>正在切片打印板 %1（共 %2 个）</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="30"/>
+        <source>Slicing the model in one piece with supports, for comparison</source>
+        <translation>正在将模型作为整体连同支撑切片（用于比较）</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="31"/>
+        <source>Cutting the parts to fit the printer</source>
+        <translation>正在切割零件以适合打印机</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="32"/>
+        <source>Placing the dowels</source>
+        <translation>正在放置定位销</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="33"/>
+        <source>Drilling the dowel holes</source>
+        <translation>正在钻定位销孔</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="34"/>
+        <source>Sinking the part numbers</source>
+        <translation>正在刻入零件编号</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="35"/>
+        <source>Laying the parts on plates</source>
+        <translation>正在将零件排布到打印板上</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="36"/>
+        <source>Writing the parts and the 3MF</source>
+        <translation>正在写入零件和 3MF</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="37"/>
+        <source>Drawing the assembly sheet</source>
+        <translation>正在绘制装配图</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="44"/>
+        <source>A part does not fit this printer even cut further: choose a printer with a larger bed, or scale the model down and search again.</source>
+        <translation>即使进一步切割，仍有零件无法放入此打印机：请选择打印床更大的打印机，或缩小模型后重新搜索。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="47"/>
+        <source>The slicer &apos;prusa-slicer&apos; was not found: install PrusaSlicer (scripts/install-deps.sh), or untick &quot;Slice the plates&quot;.</source>
+        <translation>未找到切片软件 &apos;prusa-slicer&apos;：请安装 PrusaSlicer（scripts/install-deps.sh），或取消勾选“对打印板切片”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="50"/>
+        <source>The slicer failed on a plate: its command and last output lines are below. Try another printer, or untick &quot;Slice the plates&quot; to get the parts without G-code.</source>
+        <translation>切片软件在某个打印板上失败：其命令和最后几行输出见下方。请尝试其他打印机，或取消勾选“对打印板切片”以获取不含 G 代码的零件。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="53"/>
+        <source>The parts could not be laid out or the dowels not placed: the reason is below. Choose a printer with a larger bed or other dowel options.</source>
+        <translation>无法排布零件或放置定位销：原因见下方。请选择打印床更大的打印机或其他定位销选项。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="56"/>
+        <source>Drilling the dowel holes or sinking the numbers failed on a part (named below): try a smaller dowel diameter or another plan.</source>
+        <translation>在某个零件（见下方名称）上钻定位销孔或刻入编号失败：请尝试更小的定位销直径或其他方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="79"/>
+        <source>The plan is being printed apart already.</source>
+        <translation>该方案已在分开打印中。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="83"/>
+        <source>There is no plan to print apart: search the model first.</source>
+        <translation>没有可分开打印的方案：请先对模型进行搜索。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="88"/>
+        <source>Could not create a temporary folder for the parts: %1</source>
+        <translation>无法为零件创建临时文件夹：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="112"/>
+        <source>Not enough memory to print this plan apart.</source>
+        <translation>内存不足，无法分开打印此方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="115"/>
+        <source>Unexpected error while printing the plan apart.</source>
+        <translation>分开打印方案时发生意外错误。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::ApartPanel</name>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="129"/>
+        <source>The parts must fit this printer&apos;s bed and height; its settings slice the plates</source>
+        <translation>零件必须适合此打印机的打印床和高度；使用其设置对打印板切片</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="130"/>
+        <source>Printer</source>
+        <translation>打印机</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="131"/>
+        <source>Slice the plates (PrusaSlicer) for the estimates</source>
+        <translation>对打印板切片（PrusaSlicer）以进行估算</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="143"/>
+        <source>Dowel diameter from</source>
+        <translation>定位销直径下限</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="144"/>
+        <source>Dowel diameter up to</source>
+        <translation>定位销直径上限</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="145"/>
+        <source>Clearance in radius</source>
+        <translation>半径间隙</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="146"/>
+        <source>Clearance in depth</source>
+        <translation>深度间隙</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="147"/>
+        <source>Wall around holes</source>
+        <translation>孔周壁厚</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="148"/>
+        <source>Dowels per joint</source>
+        <translation>每个接合处的定位销数</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="152"/>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="154"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="156"/>
+        <source>Export...</source>
+        <translation>导出...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="158"/>
+        <source>Write every part and dowel (STL), the 3MF, the G-code of every plate, the assembly sheet and apart.json to a folder</source>
+        <translation>将每个零件和定位销（STL）、3MF、每个打印板的 G 代码、装配图和 apart.json 写入文件夹</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Print</source>
+        <translation>打印</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Filament
+(cm³)</source>
+        <translation>耗材
+(cm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="189"/>
+        <source>Support
+(cm³)</source>
+        <translation>支撑
+(cm³)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="217"/>
+        <source>Cancelled: nothing was written.</source>
+        <translation>已取消：未写入任何内容。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="241"/>
+        <source>Assembly of %1</source>
+        <translation>%1 的装配</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="249"/>
+        <source>There is no plan to print apart: search the model first.</source>
+        <translation>没有可分开打印的方案：请先对模型进行搜索。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="254"/>
+        <source>The printer &apos;%1&apos; could not be read: choose another one.</source>
+        <translation>无法读取打印机“%1”：请选择其他打印机。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="258"/>
+        <source>The dowel options do not fit together: %1</source>
+        <translation>定位销选项相互矛盾：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="276"/>
+        <source>Nothing to export: run Print apart first.</source>
+        <translation>没有可导出的内容：请先运行“分开打印”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="280"/>
+        <source>The files could not be written: %1</source>
+        <translation>无法写入文件：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/apart_panel.cpp" line="283"/>
+        <source>%n file(s) written to %1</source>
+        <translation>
+            <numerusform>已将 %n 个文件写入 %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="288"/>
+        <source>Export the parts to a folder</source>
+        <translation>将零件导出到文件夹</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="311"/>
+        <source>%1 parts, %2 joints, %3 dowels, %4 plates; J_G apart %5 mm² (the plan: %6 mm²)</source>
+        <translation>%1 个零件，%2 个接合处，%3 个定位销，%4 个打印板；分开打印 J_G %5 mm²（方案：%6 mm²）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="317"/>
+        <source>Parts exploded</source>
+        <translation>零件爆炸视图</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="318"/>
+        <location filename="../ui/panels/apart_panel.cpp" line="351"/>
+        <source>Plate %1</source>
+        <translation>打印板 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="352"/>
+        <source>All plates</source>
+        <translation>所有打印板</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/apart_panel.cpp" line="353"/>
+        <source>One piece with supports</source>
+        <translation>整体连同支撑</translation>
+    </message>
+</context>
+<context>
     <name>multidir::ui::Autosave</name>
     <message>
         <location filename="../ui/project/autosave.cpp" line="83"/>
@@ -192,6 +455,283 @@
         <location filename="../ui/viewer/axis_picker.cpp" line="79"/>
         <source>That click missed the platform: click on the grey disc under the model.</source>
         <translation>该点击未落在平台上：请点击模型下方的灰色圆盘。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::CellPanel</name>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="54"/>
+        <source>Robot cell: the arm carries the platform under a fixed extruder</source>
+        <translation>机器人单元：机械臂在固定挤出机下方承载平台</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="58"/>
+        <source> mm</source>
+        <translation> 毫米</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="59"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="69"/>
+        <source>The nozzle tip in the robot base frame (measure it with the TCP; docs/robot-cell.md)</source>
+        <translation>喷嘴尖端在机器人基坐标系中的位置（用 TCP 测量；docs/robot-cell.md）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="70"/>
+        <source>Unit vector from the tip up into the extruder, robot base frame</source>
+        <translation>从喷嘴尖端向上指入挤出机的单位向量，机器人基坐标系</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="71"/>
+        <source>Flange to platform centre (the TCP): translation; the calibration</source>
+        <translation>法兰到平台中心（TCP）：平移；即标定值</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="72"/>
+        <source>Flange to platform centre: rotation vector (axis times angle), degrees</source>
+        <translation>法兰到平台中心：旋转向量（轴乘以角度），单位为度</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="74"/>
+        <source>Load cell...</source>
+        <translation>加载单元...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="76"/>
+        <source>Save cell...</source>
+        <translation>保存单元...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="86"/>
+        <source>Find extruder position</source>
+        <translation>查找挤出机位置</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="88"/>
+        <source>Scores nozzle positions over the arm&apos;s workspace by the share of the plan&apos;s platform poses reachable with margin (multidir cell reach)</source>
+        <translation>按方案中可留有余量到达的平台姿态所占比例，对机械臂工作空间内的喷嘴位置评分（multidir cell reach）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="90"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="100"/>
+        <source>Use this position</source>
+        <translation>使用此位置</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="106"/>
+        <source>Robot:</source>
+        <translation>机器人：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="107"/>
+        <source>Nozzle tip:</source>
+        <translation>喷嘴尖端：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="108"/>
+        <source>Nozzle axis:</source>
+        <translation>喷嘴轴线：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="109"/>
+        <source>Flange to platform:</source>
+        <translation>法兰到平台：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="110"/>
+        <source>Platform rotation:</source>
+        <translation>平台旋转：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="111"/>
+        <source>Table height:</source>
+        <translation>工作台高度：</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="137"/>
+        <source>Load robot cell</source>
+        <translation>加载机器人单元</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="137"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="141"/>
+        <source>Robot cell (*.json)</source>
+        <translation>机器人单元 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="141"/>
+        <source>Save robot cell</source>
+        <translation>保存机器人单元</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="155"/>
+        <source>Finding the extruder position was cancelled.</source>
+        <translation>已取消查找挤出机位置。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="174"/>
+        <source>Could not load the cell file %1: %2</source>
+        <translation>无法加载单元文件 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="180"/>
+        <source>Cell loaded from %1.</source>
+        <translation>已从 %1 加载单元。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="186"/>
+        <source>There is no cell to save.</source>
+        <translation>没有可保存的单元。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="191"/>
+        <source>Could not save the cell: %1</source>
+        <translation>无法保存单元：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="194"/>
+        <source>Cell saved as %1.</source>
+        <translation>单元已保存为 %1。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="208"/>
+        <source>No cell.</source>
+        <translation>无单元。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="226"/>
+        <source>Cell check: sound (%1, nozzle tip at %2, %3, %4 mm).</source>
+        <translation>单元检查：正常（%1，喷嘴尖端位于 %2, %3, %4 mm）。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/cell_panel.cpp" line="233"/>
+        <source>Cell check: %n problem(s)</source>
+        <translation>
+            <numerusform>单元检查：%n 个问题</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="280"/>
+        <source>There is no cell: choose the robot cell machine or load a cell file.</source>
+        <translation>没有单元：请选择机器人单元机器，或加载单元文件。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="285"/>
+        <source>There is no plan: the reach map scores the plan&apos;s platform poses. Run a search or open a plan.</source>
+        <translation>没有方案：可达性图对方案的平台姿态评分。请运行搜索或打开方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="290"/>
+        <source>The plan&apos;s poses cannot be found: %1</source>
+        <translation>无法求得方案的姿态：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="311"/>
+        <source>The reach map failed: %1</source>
+        <translation>可达性图计算失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="316"/>
+        <source>Best nozzle position: %1, %2, %3 mm, %4 % of the plan&apos;s poses reachable with margin (least reach margin %5 mm) over %6 positions.</source>
+        <translation>最佳喷嘴位置：%1, %2, %3 mm，方案中 %4 % 的姿态可留有余量到达（最小可达余量 %5 mm），共评估 %6 个位置。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="334"/>
+        <source>Finding the extruder position...</source>
+        <translation>正在查找挤出机位置...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="348"/>
+        <source>The nozzle tip is now at the reach map&apos;s best position; move the extruder there and measure it again.</source>
+        <translation>喷嘴尖端现已设在可达性图的最佳位置；请将挤出机移到该处并重新测量。</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::CellViewPanel</name>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="30"/>
+        <source>Show on the cell</source>
+        <translation>在单元上显示</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="32"/>
+        <source>The sliced job on the robot cell: the arm, the platform and the part at the poses the robot programs command (multidir robot-program)</source>
+        <translation>机器人单元上的切片作业：机械臂、平台和零件处于机器人程序所指令的姿态（multidir robot-program）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="34"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="37"/>
+        <source>Back to the plan</source>
+        <translation>返回方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="46"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="101"/>
+        <source>Cancelled.</source>
+        <translation>已取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="110"/>
+        <source>The cell changed: show the job on it again.</source>
+        <translation>单元已更改：请重新在其上显示作业。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="121"/>
+        <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
+        <translation>没有机器人单元：请选择机器“固定挤出机下的机械臂”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="125"/>
+        <source>The plan is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
+        <translation>方案尚未切片：请先用单元的配置（ur5-cell-0.8）对其切片。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="149"/>
+        <source>The job cannot be posed on the cell: %1</source>
+        <translation>无法在单元上摆放作业：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="161"/>
+        <source>Converting the job for the cell...</source>
+        <translation>正在为单元转换作业...</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/panels/cell_view_panel.cpp" line="183"/>
+        <source>%n step(s) on the %1, %2 moves.</source>
+        <translation>
+            <numerusform>%1 上的 %n 个步骤，%2 次移动。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="207"/>
+        <source>Step %1 of %2: no move converted (the arm at home).</source>
+        <translation>第 %1 步（共 %2 步）：未转换任何移动（机械臂处于原位）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="211"/>
+        <source>Step %1 of %2, move %3 of %4 (%5, line %6)</source>
+        <translation>第 %1 步（共 %2 步），移动 %3/%4（%5，第 %6 行）</translation>
     </message>
 </context>
 <context>
@@ -1499,6 +2039,11 @@
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
+    <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="51"/>
+        <source>5-DOF: robot arm under a fixed extruder</source>
+        <translation>5 自由度：固定挤出机下的机械臂</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MainWindow</name>
@@ -2174,6 +2719,26 @@ Qt %1</translation>
         <source>S&amp;top the Devices and Quit</source>
         <translation>停止设备并退出(&amp;T)</translation>
     </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="203"/>
+        <source>Print &amp;apart...</source>
+        <translation>分开打印(&amp;A)...</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="209"/>
+        <source>Print the plan shown on an ordinary printer: every region a part, joined by dowels</source>
+        <translation>在普通打印机上打印所示方案：每个区域为一个零件，用定位销连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="272"/>
+        <source>Print apart</source>
+        <translation>分开打印</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window_cell.cpp" line="20"/>
+        <source>Cell view</source>
+        <translation>单元视图</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MeshViewerWidget</name>
@@ -2527,6 +3092,46 @@ Qt %1</translation>
         <location filename="../ui/panels/plan_panel.cpp" line="209"/>
         <source>of %1</source>
         <translation>共 %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="50"/>
+        <source>1 contact on risky faces</source>
+        <translation>风险面上 1 个接触点</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="51"/>
+        <source>%1 contacts on risky faces</source>
+        <translation>风险面上 %1 个接触点</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <source>1 lowest point</source>
+        <translation>1 个最低点</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="54"/>
+        <source>%1 lowest points</source>
+        <translation>%1 个最低点</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="56"/>
+        <source>%1 mm of downward edges</source>
+        <translation>%1 mm 朝下的边</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="58"/>
+        <source>struts of later regions (%1 mm³)</source>
+        <translation>后续区域的支柱（%1 mm³）</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="73"/>
+        <source>Supports hold up</source>
+        <translation>支撑所承托</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/plan_panel.cpp" line="75"/>
+        <source>Risky faces are the area J_G counts. Lowest points and downward edges have no area but still print in air; struts of regions printed later go on through this region&apos;s space.</source>
+        <translation>风险面是 J_G 计入的面积。最低点和朝下的边没有面积，但仍会悬空打印；后续打印区域的支柱会穿过此区域的空间。</translation>
     </message>
 </context>
 <context>
@@ -4025,6 +4630,11 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <source>Slicer settings: %1</source>
         <translation>切片设置：%1</translation>
     </message>
+    <message>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="60"/>
+        <source>A plan printed apart is sliced part by part on plates: use Search &gt; Print apart... or &apos;multidir apart&apos; (docs/apart.md).</source>
+        <translation>分开打印的方案需逐个零件在打印板上切片：请使用“搜索 &gt; 分开打印...”或“multidir apart”（docs/apart.md）。</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::SliceJobRunner</name>
@@ -4391,6 +5001,11 @@ Write the job into this folder anyway? Files with the job&apos;s names are repla
         <location filename="../ui/document/studio_document.cpp" line="162"/>
         <source>There is no plan to run: run a search or open a plan first.</source>
         <translation>没有可运行的方案:请先运行搜索或打开一个方案。</translation>
+    </message>
+    <message>
+        <location filename="../ui/document/studio_document.cpp" line="157"/>
+        <source>These parts were made from another plan than the one shown: print the plan shown apart again.</source>
+        <translation>这些零件是由另一个方案而非所示方案生成的：请重新分开打印所示方案。</translation>
     </message>
 </context>
 <context>
