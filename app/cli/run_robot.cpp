@@ -372,7 +372,9 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
           continue;
         }
         pausePending = false;
-        if (paused.kind == PauseOutcome::Kind::Failed) return stopAndEnd(k, paused.why, false);
+        if (paused.kind == PauseOutcome::Kind::Failed)
+          return stopAndEnd(k, paused.why + (faultsWhilePausing.empty() ? "" : "; the robot reports: " + faultsWhilePausing),
+                            false);
         // Paused: wait for the resume, a stop or a fault.
         while (true) {
           std::this_thread::sleep_for(10ms);
