@@ -109,10 +109,27 @@ core::Result<StepScript> parseStepScript(const std::string& text, const std::str
 
 int movelUnderWay(const StepScript& script, const PauseGeometry& geometry, const std::array<double, 3>& tcpMm,
                   double toleranceMm, int fromLine) {
-  for (std::size_t i = 0; i < script.ends.size(); ++i) {
-    if (script.movels[i] < fromLine) continue;
+  const auto distanceTo = [&](std::size_t i) {
     const std::array<double, 3> from = i == 0 ? lifted(script.ends[0], geometry) : script.ends[i - 1];
-    if (distanceToSegment(tcpMm, from, script.ends[i]) <= toleranceMm) return static_cast<int>(i);
+    return distanceToSegment(tcpMm, from, script.ends[i]);
+  };
+  for (std::size_t i = 0; i < script.ends.size(); ++i) {
+    if (script.movels[i] < fromLine || distanceTo(i) > toleranceMm) continue;
+    // Near the end of movel i, the tolerance also takes in the first part of the movels after it: the arm 0.15 mm
+    // into movel i + 1 is 0.15 mm from movel i's end. Of that run of movels within the tolerance, the one the
+    // arm is on is the nearest (the first of equals: at their common point either is right); finishing movel i
+    // instead would take the arm back along i + 1 and the resumed program would print that part again.
+    std::size_t nearest = i;
+    double least = distanceTo(i);
+    for (std::size_t next = i + 1; next < script.ends.size(); ++next) {
+      const double d = distanceTo(next);
+      if (d > toleranceMm) break;
+      if (d < least) {
+        least = d;
+        nearest = next;
+      }
+    }
+    return static_cast<int>(nearest);
   }
   return -1;
 }

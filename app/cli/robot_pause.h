@@ -34,7 +34,9 @@ struct PauseGeometry {
 // on (the layer the robot last reported: paths of the same layer may cross, those of different layers lie a layer
 // apart) whose straight path (from the previous movel's end; the first from its end lifted by liftMm, the step's
 // approach) passes within `toleranceMm` of it; -1 when none does (the arm is in a movej: home, the approach).
-// At the end of one movel and the start of the next, either is right: the pause finishes the one it names.
+// Of that movel and those right after it that also pass within the tolerance (near its end, the next movels'
+// first parts do), the nearest: the one the arm is on. At the end of one movel and the start of the next, either
+// is right: the pause finishes the one it names.
 int movelUnderWay(const StepScript& script, const PauseGeometry& geometry, const std::array<double, 3>& tcpMm,
                   double toleranceMm, int fromLine);
 

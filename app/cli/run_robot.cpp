@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
@@ -144,8 +145,14 @@ struct PauseOutcome {
 // The dashboard's pause (the arm brakes on its way, the program holds), then, from where the arm stands, the
 // movel under way: the pause program finishes it, stops the extruder and lifts the platform off the nozzle.
 // When the arm is in a joint move (no movel under way), the program plays on and the pause is tried again later.
-PauseOutcome pauseAtSafePoint(hardware::UrLink& link, const RobotJob& job, const RobotStep& step, int layerLine,
-                              std::ostream& out) {
+// `layerLineNow` takes the robot's messages and gives the line of the last layer message: it is asked once the arm
+// stands still, so the layers the program entered until the pause landed bound the search (asked before the pause,
+// the bound can be layers old: the messages of every layer the program entered between the run's last look and
+// the pause landing, on a loaded machine or a slow link; then a travel of an older layer, lifted by the slicer's
+// z hop to the next layer's height, passes within the tolerance of where the arm stands and was taken for the
+// move under way: the pause finished that old travel and the resumed program printed again what followed it).
+PauseOutcome pauseAtSafePoint(hardware::UrLink& link, const RobotJob& job, const RobotStep& step,
+                              const std::function<int()>& layerLineNow, std::ostream& out) {
   PauseOutcome outcome;
   auto script = parseStepScript(step.script, step.program);
   if (!script) return {PauseOutcome::Kind::Failed, "cannot pause: " + script.error().describe(), {}, -1};
@@ -163,7 +170,9 @@ PauseOutcome pauseAtSafePoint(hardware::UrLink& link, const RobotJob& job, const
   if (!(now.programState == "PAUSED" && now.atRest))
     return {PauseOutcome::Kind::Failed, "the arm did not come to rest after the pause (program " + now.programState + ")",
             {}, -1};
-  // Where it stands, on the program's movels: within 0.2 mm (the arm brakes on its path).
+  // Where it stands, on the program's movels: within 0.2 mm (the arm brakes on its path), from the last layer the
+  // program entered before it held (its messages were sent before the arm came to rest).
+  const int layerLine = layerLineNow();
   const std::array<double, 3> tcpMm = {now.tcp[0] * 1000.0, now.tcp[1] * 1000.0, now.tcp[2] * 1000.0};
   outcome.movel = movelUnderWay(outcome.script, job.pause, tcpMm, 0.2, layerLine);
   if (outcome.movel < 0) {
@@ -306,6 +315,8 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
         }
       return describeMessages(messages);
     };
+    // Faults among the messages taken while a pause looks for the layer: reported by the loop's next look.
+    std::string faultsWhilePausing;
     int pausesSeen = g_robotPauses.load();
     bool pausePending = false;
     auto nextPauseTry = Clock::now();
@@ -313,7 +324,8 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
       std::this_thread::sleep_for(10ms);
       if (g_robotInterrupts.load() > 0) return stopAndEnd(k, "stopped by Ctrl-C", true);
       const hardware::UrLinkStatus now = link.status();
-      const std::string faults = takeFaults();
+      const std::string faults = faultsWhilePausing + takeFaults();
+      faultsWhilePausing.clear();
       if (!faults.empty()) {
         // Let the state that goes with the message arrive, so the run reports both.
         std::this_thread::sleep_for(100ms);
@@ -351,18 +363,24 @@ int runRobotJob(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) 
           pausePending = true;
       }
       if (pausePending && started && Clock::now() >= nextPauseTry) {
-        const PauseOutcome paused = pauseAtSafePoint(link, job, step, layerLine, out);
+        const PauseOutcome paused = pauseAtSafePoint(link, job, step, [&] {
+          faultsWhilePausing += takeFaults();
+          return layerLine;
+        }, out);
         if (paused.kind == PauseOutcome::Kind::NotInAMove) {
           nextPauseTry = Clock::now() + 300ms;  // in a joint move (home, the approach): again at the next movel
           continue;
         }
         pausePending = false;
-        if (paused.kind == PauseOutcome::Kind::Failed) return stopAndEnd(k, paused.why, false);
+        if (paused.kind == PauseOutcome::Kind::Failed)
+          return stopAndEnd(k, paused.why + (faultsWhilePausing.empty() ? "" : "; the robot reports: " + faultsWhilePausing),
+                            false);
         // Paused: wait for the resume, a stop or a fault.
         while (true) {
           std::this_thread::sleep_for(10ms);
           if (g_robotInterrupts.load() > 0) return stopAndEnd(k, "stopped by Ctrl-C while paused", true);
-          const std::string words = takeFaults();
+          const std::string words = faultsWhilePausing + takeFaults();
+          faultsWhilePausing.clear();
           const hardware::UrLinkStatus still = link.status();
           if (!words.empty() || still.linkLost || still.safetyMode != "NORMAL" || still.robotMode != "RUNNING")
             return stopAndEnd(k,

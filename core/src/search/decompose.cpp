@@ -160,11 +160,11 @@ Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& ma
   detail::returnFreedMemory();
   // What the search reported last may be older than the plan a cancel delivers (searches running side by side
   // offer plans until they notice the cancel): the last report is the delivered plan's.
-  if (plan.cancelled && progress) {
+  if (plan->cancelled && progress) {
     SearchProgress last;
-    last.level = plan.statistics.levels;
-    last.bestJgMm2 = plan.jgAfterMm2;
-    last.candidatesScored = plan.statistics.candidatesScored;
+    last.level = plan->statistics.levels;
+    last.bestJgMm2 = plan->jgAfterMm2;
+    last.candidatesScored = plan->statistics.candidatesScored;
     progress(last);
   }
   job.setProgress(1.0, "search done");
