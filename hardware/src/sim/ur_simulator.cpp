@@ -33,6 +33,9 @@ constexpr int kBacklog = 16;
 constexpr std::size_t kMaxUnsent = 1 << 20;          // a client that does not read loses real-time packages
 constexpr std::size_t kMaxProgramBytes = 64u << 20;  // a secondary-interface program larger than this is refused
 constexpr int kMaxTicksPerLoop = 12500;              // 100 simulated seconds, then the sockets are served again
+// Real time spent on ticks before the sockets are served again: a simulator that fell behind its clock (a loaded
+// machine) catches up in slices, so its clients still get a package well within their silence limit (1 s).
+constexpr std::chrono::milliseconds kMaxTickingPerLoop{20};
 constexpr const char* kGreeting = "Connected: Universal Robots Dashboard Server\n";
 
 enum class Port { Dashboard, Secondary, Realtime };
@@ -372,14 +375,21 @@ class UrSimulator::Impl {
     const auto modes = [&] {
       return std::make_tuple(m_controller->programState(), m_controller->robotMode(), m_controller->safetyMode());
     };
-    while (m_controller->time() + sim::kUrTickSeconds <= target + 1e-9 && ticks < kMaxTicksPerLoop) {
+    const Clock::time_point ticking = Clock::now();
+    const auto mayTick = [&] {
+      return m_controller->time() + sim::kUrTickSeconds <= target + 1e-9 && ticks < kMaxTicksPerLoop &&
+             Clock::now() - ticking < kMaxTickingPerLoop;
+    };
+    bool more = mayTick();
+    while (more) {
       injectScheduledFault(now);
       const auto before = modes();
       m_controller->tick();
       ++ticks;
       if (!m_firstProgramAt && !m_controller->programName().empty()) m_firstProgramAt = m_controller->time();
       for (sim::UrTraceSample& sample : m_controller->takeTrace()) keep(sample);
-      const bool last = !(m_controller->time() + sim::kUrTickSeconds <= target + 1e-9 && ticks < kMaxTicksPerLoop);
+      more = mayTick();
+      const bool last = !more;
       if (modes() != before || last) {
         const std::vector<std::uint8_t> bytes = ur::encodeRealtime(m_controller->realtime());
         packages.append(bytes.begin(), bytes.end());
