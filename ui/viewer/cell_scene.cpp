@@ -189,24 +189,19 @@ void CellScene::build() {
     unlit(m_nozzle);
     m_overlay->AddActor(m_nozzle);
   }
-  {
+  // The toolpath point and the warning marker: unlit spheres on the overlay, sized by the arm.
+  const auto overlaySphere = [&](double radius, const double* rgb) {
     vtkNew<vtkSphereSource> sphere;
-    sphere->SetRadius(0.006 * armSize);
+    sphere->SetRadius(radius);
     sphere->SetThetaResolution(24);
     sphere->SetPhiResolution(16);
-    m_point = actorOf(sphere.Get(), kCellToolpathPointRgb);
-    unlit(m_point);
-    m_overlay->AddActor(m_point);
-  }
-  {
-    vtkNew<vtkSphereSource> sphere;
-    sphere->SetRadius(0.014 * armSize);
-    sphere->SetThetaResolution(24);
-    sphere->SetPhiResolution(16);
-    m_warningMarker = actorOf(sphere.Get(), kCellWarningRgb);
-    unlit(m_warningMarker);
-    m_overlay->AddActor(m_warningMarker);
-  }
+    vtkSmartPointer<vtkActor> actor = actorOf(sphere.Get(), rgb);
+    unlit(actor);
+    m_overlay->AddActor(actor);
+    return actor;
+  };
+  m_point = overlaySphere(0.006 * armSize, kCellToolpathPointRgb);
+  m_warningMarker = overlaySphere(0.014 * armSize, kCellWarningRgb);
   m_warningText = vtkSmartPointer<vtkTextActor>::New();
   m_warningText->GetTextProperty()->SetColor(kCellWarningRgb[0], kCellWarningRgb[1], kCellWarningRgb[2]);
   m_warningText->GetTextProperty()->SetFontSize(15);
