@@ -1,9 +1,10 @@
 #pragma once
 // Small geometric kernels the dowel code shares: a right-handed frame about an axis, the closest point of a
-// triangle (Ericson, Real-Time Collision Detection, 5.1.5) and a ray's hit on a triangle (Moller-Trumbore).
+// triangle (Ericson, Real-Time Collision Detection, 5.1.5) and a ray's hit on a triangle (core's line kernel).
 #include <cmath>
 #include <optional>
 
+#include "multidir/core/geometry/line_triangle.h"
 #include "multidir/core/mesh/triangle_mesh.h"
 
 namespace multidir::assembly {
@@ -44,19 +45,8 @@ inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, 
 // Distance along the unit direction to the triangle, when the ray from `origin` meets it at t > 0.
 inline std::optional<double> rayHit(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b,
                                     const Vec3& c) {
-  const Vec3 e1 = b - a, e2 = c - a;
-  const Vec3 p = direction.cross(e2);
-  const double det = e1.dot(p);
-  if (std::abs(det) < 1e-14) return std::nullopt;
-  const double inv = 1.0 / det;
-  const Vec3 s = origin - a;
-  const double u = s.dot(p) * inv;
-  if (u < 0 || u > 1) return std::nullopt;
-  const Vec3 q = s.cross(e1);
-  const double v = direction.dot(q) * inv;
-  if (v < 0 || u + v > 1) return std::nullopt;
-  const double t = e2.dot(q) * inv;
-  if (t <= 0) return std::nullopt;
+  const std::optional<double> t = core::lineTriangleParameter(origin, direction, a, b, c);
+  if (!t || *t <= 0.0) return std::nullopt;
   return t;
 }
 

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <string>
 
 #include "detail/mesh_indices.h"
+#include "multidir/core/geometry/line_triangle.h"
 #include "multidir/core/mesh/mesh_measure.h"
 
 namespace multidir::core {
@@ -24,25 +26,15 @@ bool boxInside(const BoundingBox& inner, const BoundingBox& outer) {
   return (inner.min.array() >= outer.min.array()).all() && (inner.max.array() <= outer.max.array()).all();
 }
 
-// Parity of the crossings of a ray from q with the shell's faces (Moller-Trumbore). The ray's direction is
+// Parity of the crossings of a ray from q with the shell's faces. The ray's direction is
 // skewed off every axis so that it rarely grazes an edge of an axis-aligned model.
 bool insideShell(const Vec3& q, const Shell& shell, const TriangleMesh& mesh) {
   const Vec3 dir = Vec3(0.5377, 0.6211, 0.5702).normalized();
   bool inside = false;
   for (std::int32_t f : shell.faces) {
-    const Vec3& a = mesh.corner(f, 0);
-    const Vec3 e1 = mesh.corner(f, 1) - a;
-    const Vec3 e2 = mesh.corner(f, 2) - a;
-    const Vec3 p = dir.cross(e2);
-    const double det = e1.dot(p);
-    if (std::abs(det) < std::numeric_limits<double>::min()) continue;
-    const Vec3 s = q - a;
-    const double u = s.dot(p) / det;
-    if (u < 0.0 || u > 1.0) continue;
-    const Vec3 r = s.cross(e1);
-    const double v = dir.dot(r) / det;
-    if (v < 0.0 || u + v > 1.0) continue;
-    if (e2.dot(r) / det > 0.0) inside = !inside;
+    const std::optional<double> t =
+        lineTriangleParameter(q, dir, mesh.corner(f, 0), mesh.corner(f, 1), mesh.corner(f, 2));
+    if (t && *t > 0.0) inside = !inside;
   }
   return inside;
 }

@@ -4,27 +4,17 @@
 #include <cmath>
 #include <limits>
 
+#include "multidir/core/geometry/line_triangle.h"
 #include "multidir/core/mesh/mesh_measure.h"
 
 namespace multidir::core::detail {
 namespace {
 
-// Moller-Trumbore: the segment parameter t in [0, 1] where origin + t * delta crosses triangle abc.
+// The segment parameter t in [0, 1] where origin + t * delta crosses triangle abc.
 std::optional<double> segmentTriangle(const Vec3& origin, const Vec3& delta, const Vec3& a, const Vec3& b,
                                       const Vec3& c) {
-  const Vec3 e1 = b - a, e2 = c - a;
-  const Vec3 p = delta.cross(e2);
-  const double det = e1.dot(p);
-  if (std::abs(det) < 1e-18) return std::nullopt;  // parallel to the face: touching it is no crossing
-  const double inv = 1.0 / det;
-  const Vec3 s = origin - a;
-  const double u = s.dot(p) * inv;
-  if (u < 0.0 || u > 1.0) return std::nullopt;
-  const Vec3 q = s.cross(e1);
-  const double v = delta.dot(q) * inv;
-  if (v < 0.0 || u + v > 1.0) return std::nullopt;
-  const double t = e2.dot(q) * inv;
-  if (t < 0.0 || t > 1.0) return std::nullopt;
+  const std::optional<double> t = lineTriangleParameter(origin, delta, a, b, c);
+  if (!t || *t < 0.0 || *t > 1.0) return std::nullopt;
   return t;
 }
 
@@ -123,8 +113,9 @@ std::optional<double> MeshRayIndex::firstHit(const Vec3& from, const Vec3& to) c
       const std::int32_t f = m_faces[static_cast<std::size_t>(i)];
       if (m_stamp[static_cast<std::size_t>(f)] == m_query) continue;
       m_stamp[static_cast<std::size_t>(f)] = m_query;
-      const auto t = segmentTriangle(from, delta, m_mesh.corner(static_cast<std::size_t>(f), 0),
-                                     m_mesh.corner(static_cast<std::size_t>(f), 1), m_mesh.corner(static_cast<std::size_t>(f), 2));
+      const auto t =
+          segmentTriangle(from, delta, m_mesh.corner(static_cast<std::size_t>(f), 0),
+                          m_mesh.corner(static_cast<std::size_t>(f), 1), m_mesh.corner(static_cast<std::size_t>(f), 2));
       if (t && (!best || *t < *best)) best = t;
     }
     int axis = 0;
