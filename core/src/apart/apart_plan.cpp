@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <deque>
 #include <map>
 
+#include "common/fixed_text.h"
 #include "mesh/mesh_shells.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/apart/bed_fit.h"
@@ -46,11 +46,7 @@ Plane clearOfVertices(Plane plane, const TriangleMesh& mesh) {
   return plane;
 }
 
-std::string millimetres(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f", value);
-  return text;
-}
+std::string millimetres(double value) { return detail::fixedText(value, 1); }
 
 std::string volumeText(const BuildVolume& v) {
   return millimetres(v.xMm) + " x " + millimetres(v.yMm) + " x " + millimetres(v.zMm) + " mm";

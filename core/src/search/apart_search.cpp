@@ -7,9 +7,9 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 
+#include "common/fixed_text.h"
 #include "multidir/core/apart/apart_plan.h"
 #include "multidir/core/search/plan_from_planes.h"
 #include "search/apart_choice.h"
@@ -21,11 +21,7 @@ namespace {
 // Bounds are compared with this slack (mm^2): the same plan measured twice agrees to rounding.
 constexpr double kBoundSlackMm2 = 1e-6;
 
-std::string mm2(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", value);
-  return text;
-}
+std::string mm2(double value) { return detail::fixedText(value, 2); }
 
 std::string partsText(int parts) { return std::to_string(parts) + (parts == 1 ? " part" : " parts"); }
 std::string cutsText(std::size_t cuts) { return std::to_string(cuts) + (cuts == 1 ? " cut" : " cuts"); }

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/fixed_text.h"
 #include "detail/parallel.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_measure.h"
@@ -190,11 +191,7 @@ class Polisher {
   int m_evaluations = 0;
 };
 
-std::string areaText(double mm2) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f mm^2", mm2);
-  return text;
-}
+std::string areaText(double mm2) { return detail::fixedText(mm2, 2) + " mm^2"; }
 
 }  // namespace
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "common/fixed_text.h"
 #include "detail/parallel.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/common/units.h"
@@ -28,11 +29,7 @@ Error outOfRange(const std::string& what, const std::string& range) {
   return Error{ErrorCode::InvalidParameter, what + " " + range, "pose search"};
 }
 
-std::string formatFixed(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", value);
-  return text;
-}
+std::string formatFixed(double value) { return detail::fixedText(value, 2); }
 
 bool closeToAny(const std::vector<PoseCandidate>& poses, const Vec3& up) {
   const double cosDistinct = std::cos(kDistinctDegrees * kPi / 180.0);

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "multidir/core/analysis/overhang.h"
+#include "common/fixed_text.h"
 #include "multidir/core/mesh/mesh_resolution.h"
 #include "search/run_decomposition.h"
 #include "search/search_engine.h"
@@ -75,11 +76,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string millimetres(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%+.2f mm", value);
-  return text;
-}
+std::string millimetres(double value) { return detail::fixedText(value, 2, true) + " mm"; }
 
 }  // namespace
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "common/fixed_text.h"
 #include "detail/parallel.h"
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/geometry/clipping.h"
@@ -294,11 +294,7 @@ namespace {
 // Height of a solid along a direction above a level: its top along d minus the level.
 double heightAbove(const TriangleMesh& solid, const Vec3& d, double level) { return topAlong(solid, d) - level; }
 
-std::string millimetres(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f mm", value);
-  return text;
-}
+std::string millimetres(double value) { return detail::fixedText(value, 2) + " mm"; }
 
 }  // namespace
 
