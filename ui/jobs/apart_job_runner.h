@@ -11,12 +11,11 @@
 #include <memory>
 
 #include "multidir/apart/print_apart.h"
-#include "multidir/core/common/job_context.h"
 #include "ui/document/apart_print.h"
 
-class QThread;
-
 namespace multidir::ui {
+
+class FolderJob;
 
 class ApartJobRunner : public QObject {
   Q_OBJECT
@@ -33,9 +32,9 @@ class ApartJobRunner : public QObject {
   bool start(std::shared_ptr<const core::Decomposition> plan, const apart::PrintApartOptions& options,
              QString* error = nullptr);
   void cancel();
-  [[nodiscard]] bool isRunning() const { return m_thread != nullptr; }
+  [[nodiscard]] bool isRunning() const;
   // The running job's temporary folder (empty when none runs).
-  [[nodiscard]] QString workFolder() const { return m_workFolder; }
+  [[nodiscard]] QString workFolder() const;
 
  signals:
   // `fraction` in [0, 1]; `stage` what the pipeline does now.
@@ -47,10 +46,7 @@ class ApartJobRunner : public QObject {
   void runningChanged(bool running);
 
  private:
-  QThread* m_thread = nullptr;
-  core::JobContext m_job;
-  QString m_workFolder;
-  int m_generation = 0;  // signals of an older job than the running one are dropped
+  FolderJob* m_job;  // the thread, the folder, progress and cancel (ui/jobs/folder_job.h)
 };
 
 }  // namespace multidir::ui

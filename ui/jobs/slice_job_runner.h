@@ -14,15 +14,14 @@
 #include <QString>
 #include <memory>
 
-#include "multidir/core/common/job_context.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/slicing/slice_job.h"
 
 class QTemporaryDir;
-class QThread;
 
 namespace multidir::ui {
 
+class FolderJob;
 struct GcodePreview;
 
 // A finished slicing.
@@ -53,9 +52,9 @@ class SliceJobRunner : public QObject {
   bool start(const core::LoadedPlan& plan, const slicing::PrinterProfile& profile,
              const slicing::SliceJobOptions& options, QString* error = nullptr);
   void cancel();
-  [[nodiscard]] bool isRunning() const { return m_thread != nullptr; }
+  [[nodiscard]] bool isRunning() const;
   // The running job's temporary folder (empty when none runs).
-  [[nodiscard]] QString workFolder() const { return m_workFolder; }
+  [[nodiscard]] QString workFolder() const;
 
  signals:
   // `fraction` in [0, 1]; `stage` says what is being done ("Slicing step 2 of 3"), translated.
@@ -68,10 +67,7 @@ class SliceJobRunner : public QObject {
   void runningChanged(bool running);
 
  private:
-  QThread* m_thread = nullptr;
-  core::JobContext m_job;
-  QString m_workFolder;
-  int m_generation = 0;  // signals of an older job than the running one are dropped
+  FolderJob* m_job;  // the thread, the folder, progress and cancel (ui/jobs/folder_job.h)
 };
 
 }  // namespace multidir::ui
