@@ -1,16 +1,16 @@
-// The Hardware dock's robot cell section (issue 25, item 5; docs/robot-cell.md, "Running a job from the
-// studio") against the UR simulator on 127.0.0.1: a small robot job (two steps of movel, as `multidir
+// The Hardware dock's robot cell section (issue 25, item 5; docs/hardware.md, "The robot cell section")
+// against the UR simulator on 127.0.0.1: a small robot job (two steps of movel, as `multidir
 // robot-program` writes them, with the paper's cell as its cell.json) run from the dock as an operator would,
 // outcomes read from the section's labels, the job timeline and the simulator's own record.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <Eigen/Geometry>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTest>
-#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -189,7 +189,8 @@ TEST_F(RobotCellDock, ConnectShowsTheRobotsModesAndJoints) {
   auto simulator = startSimulator(options);
   ASSERT_TRUE(simulator);
   ASSERT_NO_FATAL_FAILURE(connectTo(*simulator));
-  EXPECT_TRUE(section->stateText().contains(QStringLiteral("robot mode POWER_OFF, safety mode NORMAL, program STOPPED")))
+  EXPECT_TRUE(
+      section->stateText().contains(QStringLiteral("robot mode POWER_OFF, safety mode NORMAL, program STOPPED")))
       << section->stateText().toStdString();
   // The simulator's initial joints, in degrees: {0, -1.0, 1.3, ...} rad.
   auto* joints = panel.findChild<QLabel*>(QStringLiteral("robotJoints"));
@@ -225,12 +226,12 @@ TEST_F(RobotCellDock, TheDockRunsTheJobToItsEndAlongThePathTheCliRunGives) {
   EXPECT_TRUE(document.isSessionJobPinned());
   ASSERT_TRUE(waitForRunEnd());
   EXPECT_FALSE(section->messageIsError()) << section->messageText().toStdString();
-  EXPECT_EQ(section->messageText(), QStringLiteral("The robot job is done: 2 steps printed."));
+  EXPECT_EQ(section->messageText().toStdString(), "The robot job is done: 2 steps printed.");
   EXPECT_FALSE(document.isSessionJobPinned());
   EXPECT_EQ(simulator->state().programsFinished, 2u);
   const std::vector<TimelineRow>& rows = panel.jobTimeline()->rows();
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0].region, QStringLiteral("step-01.script"));
+  EXPECT_EQ(rows[0].region.toStdString(), "step-01.script");
   EXPECT_EQ(rows[0].phase, StepPhase::Done);
   EXPECT_EQ(rows[1].phase, StepPhase::Done);
   // The same nozzle path and the same filament as the CLI's run.
@@ -263,8 +264,8 @@ TEST_F(RobotCellDock, EstopMidStepReachesTheRobotAndNothingMovesAfter) {
   ASSERT_TRUE(waitForRunEnd());
   EXPECT_TRUE(section->messageText().contains(QStringLiteral("The run stopped in step 1: stopped by the operator")))
       << section->messageText().toStdString();
-  EXPECT_TRUE(QTest::qWaitFor([&] { return panel.stopsText().contains(QStringLiteral("Robot: E-STOP confirmed")); },
-                              5000))
+  EXPECT_TRUE(
+      QTest::qWaitFor([&] { return panel.stopsText().contains(QStringLiteral("Robot: E-STOP confirmed")); }, 5000))
       << panel.stopsText().toStdString();
   const hw::UrSimulatorState stopped = simulator->state();
   EXPECT_EQ(stopped.programState, "STOPPED");
@@ -292,8 +293,8 @@ TEST_F(RobotCellDock, AProtectiveStopShowsTheRobotsWordsAndHoldsTheRun) {
   ASSERT_NO_FATAL_FAILURE(startJob(dir));
   ASSERT_TRUE(waitForRunEnd());
   EXPECT_TRUE(section->messageIsError());
-  EXPECT_TRUE(section->messageText().contains(
-      QStringLiteral("The run stopped in step 1: the robot reports: C153: Protective stop: the simulator's injected fault")))
+  EXPECT_TRUE(section->messageText().contains(QStringLiteral(
+      "The run stopped in step 1: the robot reports: C153: Protective stop: the simulator's injected fault")))
       << section->messageText().toStdString();
   const std::vector<TimelineRow>& rows = panel.jobTimeline()->rows();
   ASSERT_EQ(rows.size(), 2u);
@@ -319,7 +320,8 @@ TEST_F(RobotCellDock, ALostLinkShowsInTheBannerAndEndsTheRunInItsStep) {
       [&] { return panel.bannerText().contains(QStringLiteral("The link to the robot at 127.0.0.1:")); }, kRunMs))
       << section->messageText().toStdString();
   ASSERT_TRUE(waitForRunEnd());
-  EXPECT_TRUE(section->messageText().contains(QStringLiteral("The run stopped in step 1: the link to the robot is lost")))
+  EXPECT_TRUE(
+      section->messageText().contains(QStringLiteral("The run stopped in step 1: the link to the robot is lost")))
       << section->messageText().toStdString();
   EXPECT_EQ(panel.jobTimeline()->rows()[0].phase, StepPhase::Failed);
   // Back after the drop: the banner goes, the robot's values again.
@@ -347,10 +349,11 @@ TEST_F(RobotCellDock, PauseHoldsTheArmOffTheNozzleAndResumeFinishesTheJob) {
   EXPECT_EQ(held.programName, "multidir_pause");
   EXPECT_EQ(held.analogOut[0], 0.0);  // the extruder stopped
   EXPECT_EQ(panel.jobTimeline()->rows()[0].phase, StepPhase::Paused);
-  EXPECT_TRUE(section->runStepText().contains(QStringLiteral("mm off the nozzle"))) << section->runStepText().toStdString();
+  EXPECT_TRUE(section->runStepText().contains(QStringLiteral("mm off the nozzle")))
+      << section->runStepText().toStdString();
   press("robotResume");
   ASSERT_TRUE(waitForRunEnd());
-  EXPECT_EQ(section->messageText(), QStringLiteral("The robot job is done: 2 steps printed."));
+  EXPECT_EQ(section->messageText().toStdString(), "The robot job is done: 2 steps printed.");
   // What the robot was sent: step 1, the pause program, step 1's rest (under its own name), step 2.
   const std::vector<std::string> programs = simulator->programsReceived();
   ASSERT_EQ(programs.size(), 4u);
@@ -394,8 +397,8 @@ TEST_F(RobotCellDock, AJobOfAnotherPlanIsRefusedSayingWhich) {
   section->setJobFolder(QString::fromStdString(dir));
   press("robotStart");
   EXPECT_FALSE(section->isRunUnderWay());
-  EXPECT_EQ(section->messageText(), QStringLiteral("Start refused: the job has 2 steps but the plan shown has 3 "
-                                                   "regions: it was made from another plan."));
+  EXPECT_EQ(section->messageText().toStdString(),
+            "Start refused: the job has 2 steps but the plan shown has 3 regions: it was made from another plan.");
   EXPECT_EQ(simulator->programsReceived().size(), 0u);
 }
 

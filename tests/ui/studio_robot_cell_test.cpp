@@ -374,7 +374,8 @@ TEST(StudioRobotCell, HardwareDockConvertsTheSlicedJobAndRunsItOnTheSimulatedCel
   ASSERT_TRUE(section->isRunUnderWay()) << section->messageText().toStdString();
   ASSERT_TRUE(test::waitUntil([&] { return !section->isRunUnderWay(); }, kLongTimeoutMs));
   const int steps = static_cast<int>(window.document()->plan()->plan->regions.size());
-  EXPECT_EQ(section->messageText(), QStringLiteral("The robot job is done: %1 steps printed.").arg(steps));
+  EXPECT_EQ(section->messageText().toStdString(),
+            QStringLiteral("The robot job is done: %1 steps printed.").arg(steps).toStdString());
   EXPECT_EQ(simulator->state().programsFinished, static_cast<std::size_t>(steps));
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// A robot job run (hardware::runRobotJob, docs/robot-cell.md "Running a job") on a worker thread of its own,
+// A robot job run (hardware::runRobotJob, docs/hardware.md "The robot cell section") on a worker thread of its own,
 // for the Hardware dock's robot cell section: the run blocks for the whole job, so it never runs on the GUI
 // thread. Its events come back as queued signals on the GUI thread; the operator's pause, resume and stop go
 // in through the run's request counters, which the run reads as it goes.

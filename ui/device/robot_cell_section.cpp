@@ -20,8 +20,8 @@
 #include "multidir/robot/robot_program.h"
 #include "ui/device/job_timeline.h"
 #include "ui/device/robot_cell_run.h"
-#include "ui/jobs/cell_job.h"
 #include "ui/document/studio_document.h"
+#include "ui/jobs/cell_job.h"
 
 namespace multidir::ui {
 namespace {
@@ -73,8 +73,9 @@ RobotCellSection::RobotCellSection(StudioDocument* document, JobTimeline* timeli
   m_jobFolder->setPlaceholderText(tr("the folder 'multidir robot-program' wrote"));
   m_browse = button(tr("Open job folder…"), QStringLiteral("robotBrowse"), this);
   m_convertButton = button(tr("Convert the sliced job"), QStringLiteral("robotConvert"), this);
-  m_convertButton->setToolTip(tr("The plan's sliced job turned into the cell's programs (as multidir robot-program "
-                                 "does), for the cell on the Machine tab"));
+  m_convertButton->setToolTip(
+      tr("The plan's sliced job turned into the cell's programs (as multidir robot-program "
+         "does), for the cell on the Machine tab"));
   m_cancelConvert = button(tr("Cancel"), QStringLiteral("robotConvertCancel"), this);
   m_convertProgress = new QProgressBar(this);
   m_convertProgress->setObjectName(QStringLiteral("robotConvertProgress"));
@@ -148,8 +149,8 @@ RobotCellSection::RobotCellSection(StudioDocument* document, JobTimeline* timeli
   });
   connect(m_run, &RobotCellRun::progressed, this,
           [this](int step, int steps, double fraction, double secondsLeft, int movel, int movels) {
-            const QString move = movel >= 0 ? tr("movel %1 of %2").arg(movel + 1).arg(movels)
-                                            : tr("between movels (a joint move)");
+            const QString move =
+                movel >= 0 ? tr("movel %1 of %2").arg(movel + 1).arg(movels) : tr("between movels (a joint move)");
             m_runStep->setText(tr("%1 of %2: %3, %4 %, about %5 left")
                                    .arg(step)
                                    .arg(steps)
@@ -181,7 +182,8 @@ RobotCellSection::RobotCellSection(StudioDocument* document, JobTimeline* timeli
     updateControls();
   });
   connect(m_run, &RobotCellRun::stepDone, this, [this](int step, int steps, double robotSeconds) {
-    m_runStep->setText(tr("%1 of %2 done in %3 of the robot's time").arg(step).arg(steps).arg(minutesText(robotSeconds)));
+    m_runStep->setText(
+        tr("%1 of %2 done in %3 of the robot's time").arg(step).arg(steps).arg(minutesText(robotSeconds)));
   });
   connect(m_run, &RobotCellRun::finished, this, &RobotCellSection::onRunFinished);
 
@@ -220,9 +222,8 @@ QString RobotCellSection::linkLostText() const {
 }
 
 void RobotCellSection::chooseJobFolder() {
-  const QString folder =
-      QFileDialog::getExistingDirectory(this, tr("Open a robot job folder (multidir robot-program OUT)"),
-                                        m_jobFolder->text());
+  const QString folder = QFileDialog::getExistingDirectory(
+      this, tr("Open a robot job folder (multidir robot-program OUT)"), m_jobFolder->text());
   if (!folder.isEmpty()) m_jobFolder->setText(folder);
 }
 
@@ -267,21 +268,22 @@ bool RobotCellSection::convertSlicedJob() {
   const std::shared_ptr<const core::Decomposition> plan = session.plan;
   const QString folder = QString::fromStdString(out.string());
   auto connection = std::make_shared<QMetaObject::Connection>();
-  *connection = connect(m_convert, &CellJob::finished, this, [this, connection, plan, folder, steps](const QString& error) {
-    disconnect(*connection);
-    if (!error.isEmpty()) {
-      setMessage(tr("The sliced job cannot be converted for the cell: %1").arg(error), true);
-    } else {
-      m_convertedFolder = folder;
-      m_convertedPlan = plan;
-      m_jobFolder->setText(folder);
-      setMessage(tr("Converted for the cell: %1 steps in %2.").arg(*steps).arg(folder), false);
-    }
-    updateControls();
-  });
+  *connection =
+      connect(m_convert, &CellJob::finished, this, [this, connection, plan, folder, steps](const QString& error) {
+        disconnect(*connection);
+        if (!error.isEmpty()) {
+          setMessage(tr("The sliced job cannot be converted for the cell: %1").arg(error), true);
+        } else {
+          m_convertedFolder = folder;
+          m_convertedPlan = plan;
+          m_jobFolder->setText(folder);
+          setMessage(tr("Converted for the cell: %1 steps in %2.").arg(*steps).arg(folder), false);
+        }
+        updateControls();
+      });
   // A cancelled job emits cancelled, not finished: the handler goes with the next start.
-  connect(m_convert, &CellJob::cancelled, this, [this, connection] { disconnect(*connection); },
-          Qt::SingleShotConnection);
+  connect(
+      m_convert, &CellJob::cancelled, this, [this, connection] { disconnect(*connection); }, Qt::SingleShotConnection);
   m_convertProgress->setValue(0);
   setMessage(tr("Converting the sliced job for the cell…"), false);
   updateControls();
@@ -312,7 +314,8 @@ void RobotCellSection::connectRobot() {
   m_connectThread = std::thread([this, link] {
     const core::Status connected = link->connect();
     const QString problem = connected ? QString() : QString::fromStdString(connected.error().describe());
-    QMetaObject::invokeMethod(this, [this, problem] { onConnected(problem); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, problem] { onConnected(problem); }, Qt::QueuedConnection);
   });
 }
 
@@ -348,9 +351,7 @@ void RobotCellSection::disconnectRobot() {
   emit statusChanged();
 }
 
-void RobotCellSection::refuse(const QString& text) {
-  setMessage(tr("Start refused: %1").arg(text), true);
-}
+void RobotCellSection::refuse(const QString& text) { setMessage(tr("Start refused: %1").arg(text), true); }
 
 void RobotCellSection::startRun() {
   if (isRunUnderWay()) return;
@@ -366,9 +367,9 @@ void RobotCellSection::startRun() {
                       .arg(QString::fromStdString(job->robot)));
   core::Result<robot::Cell> jobCell = robot::parseCell(cellFile);
   if (!jobCell)
-    return refuse(tr("the job's cell (%1) cannot be read: %2")
-                      .arg(QString::fromStdString(cellFile.string()),
-                           QString::fromStdString(jobCell.error().describe())));
+    return refuse(
+        tr("the job's cell (%1) cannot be read: %2")
+            .arg(QString::fromStdString(cellFile.string()), QString::fromStdString(jobCell.error().describe())));
   if (robot::cellJson(*jobCell) != robot::cellJson(*m_document->cell()))
     return refuse(tr("the job's cell (%1) is not the cell on the Machine tab: convert the job again with this "
                      "cell, or load the job's cell on the Machine tab.")
@@ -386,7 +387,8 @@ void RobotCellSection::startRun() {
   const hardware::UrLinkStatus status = m_link->status();
   if (status.stop.latched()) {
     if (!status.stop.confirmed)
-      return refuse(tr("the robot has not confirmed its stop yet (%1).").arg(QString::fromStdString(status.stop.problem)));
+      return refuse(
+          tr("the robot has not confirmed its stop yet (%1).").arg(QString::fromStdString(status.stop.problem)));
     if (core::Status cleared = m_link->clearStop(); !cleared)
       return refuse(QString::fromStdString(cleared.error().describe()));
   }

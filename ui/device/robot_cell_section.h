@@ -25,7 +25,6 @@
 #include <thread>
 
 #include "multidir/core/search/decomposition.h"
-
 #include "multidir/hardware/robot_run.h"
 #include "multidir/hardware/ur_link.h"
 
@@ -115,10 +114,10 @@ class RobotCellSection : public QGroupBox {
   QTimer m_timer;
   int m_steps = 0;  // of the run under way or last run
   CellJob* m_convert = nullptr;
-  std::unique_ptr<QTemporaryDir> m_convertedDir;  // holds the last conversion's job folder
-  QString m_convertedFolder;                      // "" when none
+  std::unique_ptr<QTemporaryDir> m_convertedDir;               // holds the last conversion's job folder
+  QString m_convertedFolder;                                   // "" when none
   std::shared_ptr<const core::Decomposition> m_convertedPlan;  // the plan it was converted from
-  QString m_lastLinkLost;  // linkLostText() when statusChanged was last emitted
+  QString m_lastLinkLost;                                      // linkLostText() when statusChanged was last emitted
 
   QLineEdit* m_address = nullptr;
   QLineEdit* m_jobFolder = nullptr;

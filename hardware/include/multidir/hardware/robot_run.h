@@ -1,6 +1,6 @@
 #pragma once
 // A robot job (the folder `multidir robot-program` writes: robot-job.json and one URScript program per step)
-// printed on a Universal Robots cell (docs/robot-cell.md, "Running a job"): the arm powered on, each step's
+// printed on a Universal Robots cell (docs/hardware.md, "`multidir run OUT --robot`"): the arm powered on, each step's
 // program sent in order and waited for, with progress and the time left from the job's per-step seconds; a
 // fault ends the run with the robot's own words; a stop request stops the arm (latched until the robot confirms
 // it, resent after a reconnect), a second one powers it off; a pause request brings the arm to a safe point and
@@ -43,15 +43,15 @@ core::Result<RobotJob> readRobotJob(const std::string& folder);
 
 // What the operator asks of a run, counted from any thread (a signal handler: the counters are lock-free).
 struct RobotRunRequests {
-  std::atomic<int> stops{0};         // the first ends the run with a stop; a second, while unconfirmed, powers off
-  std::atomic<int> pauseToggles{0};  // each: a pause while a step runs, the resume while paused
+  std::atomic<int> stops{0};              // the first ends the run with a stop; a second, while unconfirmed, powers off
+  std::atomic<int> pauseToggles{0};       // each: a pause while a step runs, the resume while paused
   std::string stopName = "the operator";  // who stops, for the run's end ("stopped by Ctrl-C"); set before the run
 };
 
 // Where a step is, once a second while its program plays.
 struct RobotRunProgress {
-  int step = 0;   // the job's step number
-  int steps = 0;  // the job's step count
+  int step = 0;              // the job's step number
+  int steps = 0;             // the job's step count
   std::string programState;  // the controller's: "PLAYING", ...
   double fraction = 0.0;     // of the step, from the robot's time against the job's estimate (0..1)
   double secondsLeft = 0.0;  // of the job: this step's estimate less its time so far, and the steps after it
@@ -71,15 +71,15 @@ struct RobotRunPause {
 class RobotRunListener {
  public:
   virtual ~RobotRunListener() = default;
-  virtual void poweringOn() {}                                               // the arm was not RUNNING
+  virtual void poweringOn() {}  // the arm was not RUNNING
   virtual void stepStarting(int /*step*/, int /*steps*/, const std::string& /*program*/) {}
-  virtual void robotMessage(const UrLinkMessage& /*message*/) {}            // every text and fault, as it comes
+  virtual void robotMessage(const UrLinkMessage& /*message*/) {}  // every text and fault, as it comes
   virtual void progress(const RobotRunProgress& /*progress*/) {}
-  virtual void cannotPause(const std::string& /*why*/) {}                   // a pause asked of a job without cell.json
+  virtual void cannotPause(const std::string& /*why*/) {}  // a pause asked of a job without cell.json
   virtual void paused(const RobotRunPause& /*pause*/) {}
   virtual void resuming(int /*step*/, int /*movel*/, const std::string& /*program*/) {}
-  virtual void poweringOff() {}                                             // a second stop request
-  virtual void stopSettled(const StopLatch& /*latch*/) {}                   // confirmed, or given up after 10 s
+  virtual void poweringOff() {}                            // a second stop request
+  virtual void stopSettled(const StopLatch& /*latch*/) {}  // confirmed, or given up after 10 s
   virtual void stepDone(int /*step*/, int /*steps*/, double /*robotSeconds*/, double /*estimateSeconds*/) {}
 };
 
