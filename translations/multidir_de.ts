@@ -1818,6 +1818,11 @@
         <source>Platform Clear: &amp;Restart Step %1</source>
         <translation>Plattform frei: Schritt %1 &amp;neu starten</translation>
     </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="492"/>
+        <source>the robot cell</source>
+        <translation>die Roboterzelle</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::JgChart</name>
@@ -4119,6 +4124,366 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <location filename="../ui/project/recent_files.cpp" line="68"/>
         <source>&amp;Clear Recent</source>
         <translation>Liste &amp;leeren</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::RobotCellSection</name>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="62"/>
+        <source>Robot cell (Universal Robots)</source>
+        <translation>Roboterzelle (Universal Robots)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="69"/>
+        <source>host or host:port (the dashboard&apos;s port; UR&apos;s own 29999 when left out)</source>
+        <translation>Host oder Host:Port (der Port des Dashboards; ohne Angabe UR-eigener Port 29999)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="72"/>
+        <source>the folder &apos;multidir robot-program&apos; wrote</source>
+        <translation>der Ordner, den „multidir robot-program“ geschrieben hat</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="73"/>
+        <source>Open job folder…</source>
+        <translation>Auftragsordner öffnen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="74"/>
+        <source>Convert the sliced job</source>
+        <translation>Geslicten Auftrag umwandeln</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="75"/>
+        <source>The plan&apos;s sliced job turned into the cell&apos;s programs (as multidir robot-program does), for the cell on the Machine tab</source>
+        <translation>Der geslicte Auftrag des Plans als Programme der Zelle (wie multidir robot-program), für die Zelle im Reiter Maschine</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="77"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="82"/>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="83"/>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="89"/>
+        <source>Start job</source>
+        <translation>Auftrag starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="90"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="91"/>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="92"/>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="93"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <source>E-STOP</source>
+        <translation>NOT-HALT</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="113"/>
+        <source>Robot:</source>
+        <translation>Roboter:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="115"/>
+        <source>State:</source>
+        <translation>Zustand:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="116"/>
+        <source>Joints:</source>
+        <translation>Gelenke:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="117"/>
+        <source>Robot job:</source>
+        <translation>Roboterauftrag:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="119"/>
+        <source>Step:</source>
+        <translation>Schritt:</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="132"/>
+        <source>Conversion cancelled.</source>
+        <translation>Umwandlung abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="146"/>
+        <source>%1 of %2: %3 sent</source>
+        <translation>%1 von %2: %3 gesendet</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="150"/>
+        <source>movel %1 of %2</source>
+        <translation>movel %1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="151"/>
+        <source>between movels (a joint move)</source>
+        <translation>zwischen movel-Befehlen (eine Gelenkbewegung)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="152"/>
+        <source>%1 of %2: %3, %4 %, about %5 left</source>
+        <translation>%1 von %2: %3, %4 %, noch etwa %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="160"/>
+        <source>The robot reports: %1</source>
+        <translation>Der Roboter meldet: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="163"/>
+        <source>Cannot pause: %1. Stop ends the run.</source>
+        <translation>Pause nicht möglich: %1. Stopp beendet den Lauf.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="165"/>
+        <source>paused after movel %1 of %2; the extruder stopped, the platform %3 mm off the nozzle</source>
+        <translation>pausiert nach movel %1 von %2; Extruder gestoppt, Plattform %3 mm von der Düse entfernt</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="170"/>
+        <source>%1 of %2: %3</source>
+        <translation>%1 von %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="171"/>
+        <source>Paused at a safe point. Resume goes on from there; Stop ends the run.</source>
+        <translation>An einem sicheren Punkt pausiert. Fortsetzen macht dort weiter; Stopp beendet den Lauf.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="176"/>
+        <source>Resuming step %1 after movel %2: back down to the nozzle, then the rest of the step.</source>
+        <translation>Schritt %1 wird nach movel %2 fortgesetzt: zurück an die Düse, dann der Rest des Schritts.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="183"/>
+        <source>%1 of %2 done in %3 of the robot&apos;s time</source>
+        <translation>%1 von %2 fertig in %3 Roboterzeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="214"/>
+        <source>The link to the robot at %1 is lost (%2). The robot&apos;s values are unknown; MultiDir keeps trying to reconnect and sends a latched stop first thing once it is back.</source>
+        <translation>Die Verbindung zum Roboter unter %1 ist unterbrochen (%2). Die Werte des Roboters sind unbekannt; MultiDir versucht weiter, sich neu zu verbinden, und sendet einen gehaltenen Stopp als Erstes, sobald sie wieder besteht.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="217"/>
+        <source>The robot job run is ending: it stops the program.</source>
+        <translation>Der Roboterauftrag endet: er stoppt das Programm.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="223"/>
+        <source>Open a robot job folder (multidir robot-program OUT)</source>
+        <translation>Roboterauftragsordner öffnen (multidir robot-program OUT)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="231"/>
+        <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
+        <translation>Es gibt keine Roboterzelle: wählen Sie die Maschine „Roboterarm unter festem Extruder“.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="236"/>
+        <source>The plan shown is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
+        <translation>Der angezeigte Plan ist nicht geslict: slicen Sie ihn zuerst mit dem Profil der Zelle (ur5-cell-0.8).</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="241"/>
+        <source>No folder for the converted job: %1</source>
+        <translation>Kein Ordner für den umgewandelten Auftrag: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="272"/>
+        <source>The sliced job cannot be converted for the cell: %1</source>
+        <translation>Der geslicte Auftrag lässt sich nicht für die Zelle umwandeln: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="277"/>
+        <source>Converted for the cell: %1 steps in %2.</source>
+        <translation>Für die Zelle umgewandelt: %1 Schritte in %2.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="285"/>
+        <source>Converting the sliced job for the cell…</source>
+        <translation>Geslicter Auftrag wird für die Zelle umgewandelt…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="296"/>
+        <source>The robot&apos;s address: %1</source>
+        <translation>Adresse des Roboters: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="306"/>
+        <source>Connecting to the robot at %1…</source>
+        <translation>Verbindung zum Roboter unter %1…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="323"/>
+        <source>The robot at %1 cannot be reached: %2</source>
+        <translation>Der Roboter unter %1 ist nicht erreichbar: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="327"/>
+        <source>Connected to the robot at %1.</source>
+        <translation>Mit dem Roboter unter %1 verbunden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="336"/>
+        <source>A robot job run is under way: Stop it before disconnecting.</source>
+        <translation>Ein Roboterauftrag läuft: stoppen Sie ihn vor dem Trennen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="351"/>
+        <source>Start refused: %1</source>
+        <translation>Start abgelehnt: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="356"/>
+        <source>no robot is connected: Connect first.</source>
+        <translation>kein Roboter verbunden: zuerst verbinden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="364"/>
+        <source>the document has no robot cell: set the cell on the Machine tab (the job was made for %1).</source>
+        <translation>das Dokument hat keine Roboterzelle: legen Sie die Zelle im Reiter Maschine fest (der Auftrag wurde für %1 erstellt).</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="368"/>
+        <source>the job&apos;s cell (%1) cannot be read: %2</source>
+        <translation>die Zelle des Auftrags (%1) ist nicht lesbar: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="372"/>
+        <source>the job&apos;s cell (%1) is not the cell on the Machine tab: convert the job again with this cell, or load the job&apos;s cell on the Machine tab.</source>
+        <translation>die Zelle des Auftrags (%1) ist nicht die Zelle im Reiter Maschine: wandeln Sie den Auftrag mit dieser Zelle neu um oder laden Sie die Zelle des Auftrags im Reiter Maschine.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="377"/>
+        <source>no plan is shown: open the plan the job was made from.</source>
+        <translation>kein Plan angezeigt: öffnen Sie den Plan, aus dem der Auftrag erstellt wurde.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="380"/>
+        <source>the job was converted from another plan than the one shown: convert the sliced job again.</source>
+        <translation>der Auftrag wurde aus einem anderen als dem angezeigten Plan umgewandelt: wandeln Sie den geslicten Auftrag neu um.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="382"/>
+        <source>the job has %1 steps but the plan shown has %2 regions: it was made from another plan.</source>
+        <translation>der Auftrag hat %1 Schritte, der angezeigte Plan aber %2 Bereiche: er wurde aus einem anderen Plan erstellt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="388"/>
+        <source>the robot has not confirmed its stop yet (%1).</source>
+        <translation>der Roboter hat seinen Stopp noch nicht bestätigt (%1).</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="406"/>
+        <source>starting: %1 steps</source>
+        <translation>Start: %1 Schritte</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="407"/>
+        <source>Robot job started: %1 steps.</source>
+        <translation>Roboterauftrag gestartet: %1 Schritte.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="415"/>
+        <source>Pause asked for: the arm finishes the move under way, the extruder stops and the platform backs off the nozzle.</source>
+        <translation>Pause angefordert: der Arm beendet die laufende Bewegung, der Extruder stoppt und die Plattform entfernt sich von der Düse.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="438"/>
+        <source>E-STOP sent to the robot (stop, then power off). To go on: release it on the teach pendant if pressed there; Start powers the arm on again once the robot confirmed the stop.</source>
+        <translation>NOT-HALT an den Roboter gesendet (Stopp, dann Ausschalten). Zum Weitermachen: am Handbediengerät lösen, falls dort gedrückt; Start schaltet den Arm wieder ein, sobald der Roboter den Stopp bestätigt hat.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="450"/>
+        <source>done: %1 steps printed</source>
+        <translation>fertig: %1 Schritte gedruckt</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="451"/>
+        <source>The robot job is done: %1 steps printed.</source>
+        <translation>Der Roboterauftrag ist fertig: %1 Schritte gedruckt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="455"/>
+        <source>The robot did not start the job: %1</source>
+        <translation>Der Roboter hat den Auftrag nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="459"/>
+        <source>stopped in step %1 of %2</source>
+        <translation>gestoppt in Schritt %1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="460"/>
+        <source>The run stopped in step %1: %2</source>
+        <translation>Der Lauf wurde in Schritt %1 gestoppt: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="477"/>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="478"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="483"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="482"/>
+        <source>unknown: the link is lost (%1)</source>
+        <translation>unbekannt: die Verbindung ist unterbrochen (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="485"/>
+        <source>robot mode %1, safety mode %2, program %3</source>
+        <translation>Robotermodus %1, Sicherheitsmodus %2, Programm %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="490"/>
+        <source>%1 deg</source>
+        <translation>%1 Grad</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <source>stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="494"/>
+        <source>Robot: %1 confirmed by the robot.</source>
+        <translation>Roboter: %1 vom Roboter bestätigt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="495"/>
+        <source>Robot: %1 not confirmed yet (%2); MultiDir keeps resending it.</source>
+        <translation>Roboter: %1 noch nicht bestätigt (%2); MultiDir sendet ihn weiter.</translation>
     </message>
 </context>
 <context>

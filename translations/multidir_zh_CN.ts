@@ -1812,6 +1812,11 @@
         <source>Platform Clear: &amp;Restart Step %1</source>
         <translation>平台已清空：重新开始步骤 %1(&amp;R)</translation>
     </message>
+    <message>
+        <location filename="../ui/device/hardware_panel.cpp" line="492"/>
+        <source>the robot cell</source>
+        <translation>机器人单元</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::JgChart</name>
@@ -4111,6 +4116,366 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <location filename="../ui/project/recent_files.cpp" line="68"/>
         <source>&amp;Clear Recent</source>
         <translation>清除最近记录(&amp;C)</translation>
+    </message>
+</context>
+<context>
+    <name>multidir::ui::RobotCellSection</name>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="62"/>
+        <source>Robot cell (Universal Robots)</source>
+        <translation>机器人单元（Universal Robots）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="69"/>
+        <source>host or host:port (the dashboard&apos;s port; UR&apos;s own 29999 when left out)</source>
+        <translation>主机或 主机:端口（仪表板端口；省略时为 UR 默认的 29999）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="72"/>
+        <source>the folder &apos;multidir robot-program&apos; wrote</source>
+        <translation>“multidir robot-program”写出的文件夹</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="73"/>
+        <source>Open job folder…</source>
+        <translation>打开作业文件夹…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="74"/>
+        <source>Convert the sliced job</source>
+        <translation>转换已切片的作业</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="75"/>
+        <source>The plan&apos;s sliced job turned into the cell&apos;s programs (as multidir robot-program does), for the cell on the Machine tab</source>
+        <translation>将计划的切片作业转换为单元的程序（与 multidir robot-program 相同），用于“机器”选项卡中的单元</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="77"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="82"/>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="83"/>
+        <source>Disconnect</source>
+        <translation>断开</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="89"/>
+        <source>Start job</source>
+        <translation>开始作业</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="90"/>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="91"/>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="92"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="93"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="113"/>
+        <source>Robot:</source>
+        <translation>机器人：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="115"/>
+        <source>State:</source>
+        <translation>状态：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="116"/>
+        <source>Joints:</source>
+        <translation>关节：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="117"/>
+        <source>Robot job:</source>
+        <translation>机器人作业：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="119"/>
+        <source>Step:</source>
+        <translation>步骤：</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="132"/>
+        <source>Conversion cancelled.</source>
+        <translation>转换已取消。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="146"/>
+        <source>%1 of %2: %3 sent</source>
+        <translation>第 %1 步，共 %2 步：已发送 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="150"/>
+        <source>movel %1 of %2</source>
+        <translation>movel %1 / %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="151"/>
+        <source>between movels (a joint move)</source>
+        <translation>在 movel 之间（关节运动）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="152"/>
+        <source>%1 of %2: %3, %4 %, about %5 left</source>
+        <translation>第 %1 步，共 %2 步：%3，%4 %，剩余约 %5</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="160"/>
+        <source>The robot reports: %1</source>
+        <translation>机器人报告：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="163"/>
+        <source>Cannot pause: %1. Stop ends the run.</source>
+        <translation>无法暂停：%1。停止将结束运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="165"/>
+        <source>paused after movel %1 of %2; the extruder stopped, the platform %3 mm off the nozzle</source>
+        <translation>在 movel %1 / %2 之后暂停；挤出机已停止，平台离开喷嘴 %3 mm</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="170"/>
+        <source>%1 of %2: %3</source>
+        <translation>第 %1 步，共 %2 步：%3</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="171"/>
+        <source>Paused at a safe point. Resume goes on from there; Stop ends the run.</source>
+        <translation>已在安全点暂停。继续将从该处接着运行；停止将结束运行。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="176"/>
+        <source>Resuming step %1 after movel %2: back down to the nozzle, then the rest of the step.</source>
+        <translation>在 movel %2 之后继续第 %1 步：先回到喷嘴处，然后运行该步骤的其余部分。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="183"/>
+        <source>%1 of %2 done in %3 of the robot&apos;s time</source>
+        <translation>第 %1 步（共 %2 步）已完成，用时 %3（机器人时间）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="214"/>
+        <source>The link to the robot at %1 is lost (%2). The robot&apos;s values are unknown; MultiDir keeps trying to reconnect and sends a latched stop first thing once it is back.</source>
+        <translation>与 %1 处机器人的连接已断开（%2）。机器人的数值未知；MultiDir 会持续尝试重新连接，连接恢复后首先发送保持中的停止命令。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="217"/>
+        <source>The robot job run is ending: it stops the program.</source>
+        <translation>机器人作业运行正在结束：它会停止程序。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="223"/>
+        <source>Open a robot job folder (multidir robot-program OUT)</source>
+        <translation>打开机器人作业文件夹（multidir robot-program OUT）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="231"/>
+        <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
+        <translation>没有机器人单元：请选择机器“固定挤出机下的机械臂”。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="236"/>
+        <source>The plan shown is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
+        <translation>显示的计划尚未切片：请先用单元的配置（ur5-cell-0.8）切片。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="241"/>
+        <source>No folder for the converted job: %1</source>
+        <translation>没有用于转换后作业的文件夹：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="272"/>
+        <source>The sliced job cannot be converted for the cell: %1</source>
+        <translation>无法为该单元转换切片作业：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="277"/>
+        <source>Converted for the cell: %1 steps in %2.</source>
+        <translation>已为该单元转换：%1 个步骤，位于 %2。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="285"/>
+        <source>Converting the sliced job for the cell…</source>
+        <translation>正在为该单元转换切片作业…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="296"/>
+        <source>The robot&apos;s address: %1</source>
+        <translation>机器人地址：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="306"/>
+        <source>Connecting to the robot at %1…</source>
+        <translation>正在连接 %1 处的机器人…</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="323"/>
+        <source>The robot at %1 cannot be reached: %2</source>
+        <translation>无法连接 %1 处的机器人：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="327"/>
+        <source>Connected to the robot at %1.</source>
+        <translation>已连接到 %1 处的机器人。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="336"/>
+        <source>A robot job run is under way: Stop it before disconnecting.</source>
+        <translation>机器人作业正在运行：断开前请先停止它。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="351"/>
+        <source>Start refused: %1</source>
+        <translation>拒绝开始：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="356"/>
+        <source>no robot is connected: Connect first.</source>
+        <translation>未连接机器人：请先连接。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="364"/>
+        <source>the document has no robot cell: set the cell on the Machine tab (the job was made for %1).</source>
+        <translation>文档中没有机器人单元：请在“机器”选项卡中设置单元（该作业是为 %1 生成的）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="368"/>
+        <source>the job&apos;s cell (%1) cannot be read: %2</source>
+        <translation>无法读取作业的单元（%1）：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="372"/>
+        <source>the job&apos;s cell (%1) is not the cell on the Machine tab: convert the job again with this cell, or load the job&apos;s cell on the Machine tab.</source>
+        <translation>作业的单元（%1）不是“机器”选项卡中的单元：请用此单元重新转换作业，或在“机器”选项卡中加载作业的单元。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="377"/>
+        <source>no plan is shown: open the plan the job was made from.</source>
+        <translation>未显示计划：请打开生成该作业的计划。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="380"/>
+        <source>the job was converted from another plan than the one shown: convert the sliced job again.</source>
+        <translation>该作业是从另一个计划转换的，而非当前显示的计划：请重新转换切片作业。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="382"/>
+        <source>the job has %1 steps but the plan shown has %2 regions: it was made from another plan.</source>
+        <translation>作业有 %1 个步骤，而显示的计划有 %2 个区域：它是由另一个计划生成的。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="388"/>
+        <source>the robot has not confirmed its stop yet (%1).</source>
+        <translation>机器人尚未确认其停止（%1）。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="406"/>
+        <source>starting: %1 steps</source>
+        <translation>正在开始：%1 个步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="407"/>
+        <source>Robot job started: %1 steps.</source>
+        <translation>机器人作业已开始：%1 个步骤。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="415"/>
+        <source>Pause asked for: the arm finishes the move under way, the extruder stops and the platform backs off the nozzle.</source>
+        <translation>已请求暂停：机械臂完成当前运动，挤出机停止，平台离开喷嘴。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="438"/>
+        <source>E-STOP sent to the robot (stop, then power off). To go on: release it on the teach pendant if pressed there; Start powers the arm on again once the robot confirmed the stop.</source>
+        <translation>已向机器人发送急停（停止，然后断电）。继续：如在示教器上按下了急停，请将其释放；机器人确认停止后，“开始”会重新为机械臂上电。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="450"/>
+        <source>done: %1 steps printed</source>
+        <translation>完成：已打印 %1 个步骤</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="451"/>
+        <source>The robot job is done: %1 steps printed.</source>
+        <translation>机器人作业已完成：已打印 %1 个步骤。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="455"/>
+        <source>The robot did not start the job: %1</source>
+        <translation>机器人未开始该作业：%1</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="459"/>
+        <source>stopped in step %1 of %2</source>
+        <translation>在第 %1 步（共 %2 步）停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="460"/>
+        <source>The run stopped in step %1: %2</source>
+        <translation>运行在第 %1 步停止：%2</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="477"/>
+        <source>not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="478"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="483"/>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="482"/>
+        <source>unknown: the link is lost (%1)</source>
+        <translation>未知：连接已断开（%1）</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="485"/>
+        <source>robot mode %1, safety mode %2, program %3</source>
+        <translation>机器人模式 %1，安全模式 %2，程序 %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="490"/>
+        <source>%1 deg</source>
+        <translation>%1 度</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="494"/>
+        <source>Robot: %1 confirmed by the robot.</source>
+        <translation>机器人：%1 已由机器人确认。</translation>
+    </message>
+    <message>
+        <location filename="../ui/device/robot_cell_section.cpp" line="495"/>
+        <source>Robot: %1 not confirmed yet (%2); MultiDir keeps resending it.</source>
+        <translation>机器人：%1 尚未确认（%2）；MultiDir 会继续重发。</translation>
     </message>
 </context>
 <context>

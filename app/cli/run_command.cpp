@@ -25,7 +25,7 @@
 #include "multidir/slicing/estimates.h"
 #include "run_job_checks.h"
 #include "run_job_file.h"
-#include "run_robot.h"
+#include "run_robot_command.h"
 #include "run_stitched.h"
 
 namespace multidir::cli {

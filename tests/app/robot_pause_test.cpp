@@ -1,16 +1,16 @@
-// Where a paused arm is on its step's program (app/cli/robot_pause; docs/robot-cell.md, "Pause and resume").
+// Where a paused arm is on its step's program (hardware/src/ur/robot_pause; docs/robot-cell.md, "Pause and resume").
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "robot_pause.h"
+#include "multidir/hardware/robot_pause.h"
 
 namespace {
 
-using multidir::cli::movelUnderWay;
-using multidir::cli::parseStepScript;
-using multidir::cli::PauseGeometry;
-using multidir::cli::StepScript;
+using multidir::hardware::movelUnderWay;
+using multidir::hardware::parseStepScript;
+using multidir::hardware::PauseGeometry;
+using multidir::hardware::StepScript;
 
 // A step as `multidir robot-program` writes it, on a flat layer at z = 400 mm (base frame): a travel to
 // (10, 0), then an extrusion from there to (30, 0).

@@ -1,7 +1,8 @@
 // The robot cell in the studio (issue 25, item 5; docs/robot-cell.md, "Studio"): the Machine tab's cell section
 // (model, nozzle, calibration, table, Load/Save, the check, "Find extruder position"), and the viewer's cell
-// view posing the sliced job on the arm under the fixed nozzle.
+// view posing the sliced job on the arm under the fixed nozzle, and the Hardware dock running it on the cell.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -9,16 +10,23 @@
 #include <QImage>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
+#include <filesystem>
+#include <memory>
 
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
+#include "multidir/hardware/ur_simulator.h"
+#include "multidir/robot/cell_file.h"
 #include "multidir/slicing/printer_profile.h"
 #include "support/test_models.h"
+#include "ui/device/hardware_panel.h"
+#include "ui/device/robot_cell_section.h"
 #include "ui/document/studio_document.h"
 #include "ui/main_window.h"
 #include "ui/panels/cell_panel.h"
@@ -316,6 +324,59 @@ TEST(StudioRobotCell, UnreachableStepIsDrawnWithARedMarkerAndItsLine) {
   const QImage image = frameOf(viewer);
   EXPECT_GT(census(image, MeshViewerWidget::cellWarningColor(), 30).count, 20);
   EXPECT_TRUE(panel->warningsText().contains(QStringLiteral("step 1, line")));
+}
+
+// The Hardware dock's robot cell section converts the studio's sliced job for the Machine tab's cell (as
+// `multidir robot-program` does, off the GUI thread) and runs it on the simulated cell (the UR simulator with
+// that cell, 1000 times real time) to its end.
+TEST(StudioRobotCell, HardwareDockConvertsTheSlicedJobAndRunsItOnTheSimulatedCell) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(showCellMachine(window));
+  QTemporaryDir dir;
+  ASSERT_NO_FATAL_FAILURE(sliceHalfKittenOnTheCell(window, dir));
+  // The platform no larger than the plan's platform region (docs/robot-cell.md, "The platform").
+  const std::filesystem::path sliced =
+      std::filesystem::path(window.document()->slicedJob()->steps.front().path).parent_path();
+  QFile printJob(QString::fromStdString((sliced / "print-job.json").string()));
+  ASSERT_TRUE(printJob.open(QIODevice::ReadOnly));
+  const QRegularExpressionMatch radius =
+      QRegularExpression(QStringLiteral("\"pivot\"[^}]*\"platformRadiusMm\": *([0-9.eE+-]+)"))
+          .match(QString::fromUtf8(printJob.readAll()));
+  ASSERT_TRUE(radius.hasMatch());
+  robot::Cell cell = *window.document()->cell();
+  cell.platformRadiusMm = radius.captured(1).toDouble();
+  window.document()->setCell(cell);
+
+  RobotCellSection* section = window.hardwarePanel()->robotCellSection();
+  ASSERT_TRUE(section->convertSlicedJob()) << section->messageText().toStdString();
+  ASSERT_TRUE(test::waitUntil([&] { return !section->isConverting(); }, kLongTimeoutMs));
+  ASSERT_FALSE(section->messageIsError()) << section->messageText().toStdString();
+  ASSERT_TRUE(QFile::exists(section->jobFolder() + QStringLiteral("/robot-job.json")));
+
+  const std::string cellFile = dir.filePath(QStringLiteral("cell.json")).toStdString();
+  ASSERT_TRUE(robot::writeCell(cell, cellFile).ok());
+  hardware::UrSimulatorOptions options;
+  options.speed = 1000.0;
+  options.cellPath = cellFile;
+  std::unique_ptr<hardware::UrSimulator> simulator;
+  for (int base = 45000 + static_cast<int>(::getpid() % 200) * 30; base < 65000 && !simulator; base += 7) {
+    options.dashboardPort = base;
+    options.secondaryPort = base + 1;
+    options.realtimePort = base + 2;
+    auto started = std::make_unique<hardware::UrSimulator>(options);
+    if (started->start().ok()) simulator = std::move(started);
+  }
+  ASSERT_TRUE(simulator);
+  section->setAddress(QStringLiteral("127.0.0.1:%1").arg(simulator->dashboardPort()));
+  section->connectRobot();
+  ASSERT_TRUE(test::waitUntil([&] { return section->isConnected(); }, 10000)) << section->messageText().toStdString();
+  section->startRun();
+  ASSERT_TRUE(section->isRunUnderWay()) << section->messageText().toStdString();
+  ASSERT_TRUE(test::waitUntil([&] { return !section->isRunUnderWay(); }, kLongTimeoutMs));
+  const int steps = static_cast<int>(window.document()->plan()->plan->regions.size());
+  EXPECT_EQ(section->messageText().toStdString(),
+            QStringLiteral("The robot job is done: %1 steps printed.").arg(steps).toStdString());
+  EXPECT_EQ(simulator->state().programsFinished, static_cast<std::size_t>(steps));
 }
 
 }  // namespace

@@ -30,6 +30,7 @@
 #include "ui/device/print_run_driver.h"
 #include "ui/device/printer_link_owner.h"
 #include "ui/device/printer_section.h"
+#include "ui/device/robot_cell_section.h"
 #include "ui/document/studio_document.h"
 
 namespace multidir::ui {
@@ -143,6 +144,9 @@ HardwarePanel::HardwarePanel(StudioDocument* document, QWidget* parent) : QWidge
   m_printerSection = new PrinterSection(m_printerLink, m_run, content);
   layout->addWidget(m_printerSection);
   layout->addWidget(buildRunGroup());
+  // The robot cell: its own link and run (hardware's robot run), the same timeline, banner, stop line and E-STOP.
+  m_robotCell = new RobotCellSection(m_document, m_timeline, content);
+  layout->addWidget(m_robotCell);
   layout->addStretch(1);
 
   auto* scroll = new QScrollArea(this);
@@ -183,6 +187,11 @@ HardwarePanel::HardwarePanel(StudioDocument* document, QWidget* parent) : QWidge
     updateBanner();
     updateControls();
     updateStops();
+  });
+  connect(m_robotCell, &RobotCellSection::statusChanged, this, [this] {
+    updateBanner();
+    updateStops();
+    updateControls();
   });
   connect(m_form, &ConnectionForm::kindChanged, this, [this] {
     updateKindWidgets();
@@ -437,8 +446,9 @@ void HardwarePanel::updateBanner() {
     text = tr("The link is back. The print run is still paused since the link was lost: check the platform, "
               "then press Resume.");
   }
-  if (const QString printerLost = m_printerSection->linkLostText(); !printerLost.isEmpty()) {
-    text = text.isEmpty() ? printerLost : text + QLatin1Char('\n') + printerLost;
+  for (const QString& lost : {m_printerSection->linkLostText(), m_robotCell->linkLostText()}) {
+    if (lost.isEmpty()) continue;
+    text = text.isEmpty() ? lost : text + QLatin1Char('\n') + lost;
     alarm = true;
   }
   m_banner->setText(text);
@@ -474,9 +484,12 @@ void HardwarePanel::emergencyStopAll() {
   else if (m_link->isOpen())
     m_link->emergencyStop();
   if (!runStopsPrinter && m_printerLink->isOpen()) m_printerLink->emergencyStop();
+  const bool robotOpen = m_robotCell->isConnected();
+  if (robotOpen) m_robotCell->emergencyStop();
   QStringList devices;
   if (m_link->isOpen() || active) devices << tr("the platform");
   if (m_printerLink->isOpen()) devices << tr("the printer");
+  if (robotOpen) devices << tr("the robot cell");
   if (!devices.isEmpty())
     setMessage(tr("E-STOP sent to %1. To go on: %2%3.")
                    .arg(devices.join(tr(" and ")), recoveryText(m_link->settings().kind),
@@ -505,6 +518,7 @@ void HardwarePanel::updateStops() {
                                : tr("Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.")
                                      .arg(QString::fromStdString(stop.problem)));
   }
+  if (const QString robot = m_robotCell->stopText(); !robot.isEmpty()) lines << robot;
   m_stops->setText(lines.join(QLatin1Char('\n')));
   m_stops->setVisible(!lines.isEmpty());
 }
@@ -665,13 +679,18 @@ void HardwarePanel::goTo() {
     m_link->moveToOrientation(m_targetTilt->value(), m_targetAzimuth->value());
 }
 
-bool HardwarePanel::isRunUnderWay() const { return m_run->isActive(); }
+bool HardwarePanel::isRunUnderWay() const { return m_run->isActive() || m_robotCell->isRunUnderWay(); }
 
-QString HardwarePanel::runStepText() const { return m_runStep->text(); }
+QString HardwarePanel::runStepText() const {
+  return m_robotCell->isRunUnderWay() ? m_robotCell->runStepText() : m_runStep->text();
+}
 
 void HardwarePanel::stopDevicesForQuit() {
   if (m_run->isActive()) runEvent(tr("Abort"), m_run->abort());
   if (m_link->isOpen()) m_link->stop();
+  // The robot run ends through its stop (latched until the robot confirms it); the section waits for it, so
+  // no run is under way when the unsaved-changes question comes.
+  m_robotCell->stopForQuit();
 }
 
 std::optional<std::size_t> HardwarePanel::resumableStep() const {
@@ -915,7 +934,7 @@ void HardwarePanel::updateControls() {
   m_clearFault->setEnabled(linkUp && !runHoldsDevice);
   m_stop->setEnabled(open);
   // Whenever either device has a session, even while reconnecting.
-  const bool anyOpen = open || m_printerLink->isOpen();
+  const bool anyOpen = open || m_printerLink->isOpen() || m_robotCell->isConnected();
   m_estop->setEnabled(anyOpen);
   if (m_windowEstop) m_windowEstop->setEnabled(anyOpen);
   if (m_windowEstopAction) m_windowEstopAction->setVisible(anyOpen);

@@ -22,6 +22,10 @@
 // E-STOP covers both devices: it sends the platform's and the printer's emergency stops at once, and the
 // line under it shows each device's stop confirmed or still being resent.
 //
+// The robot cell (RobotCellSection): a Universal Robots arm carrying the part under a fixed extruder runs a
+// robot job (`multidir robot-program` OUT) with hardware's robot run; its steps go to the same job timeline, its
+// lost link to the banner, its stop to the line under E-STOP, and E-STOP stops it with the other devices.
+//
 // Limits: commands are checked by the driver against the document's machine when it fits the device (a rotary
 // platform profile for the platform, a tilt-rotate one for the arm), otherwise against a default profile of
 // the device's kind; the choice is made at Connect. The device chosen follows the machine when its kind
@@ -58,6 +62,7 @@ class JobTimeline;
 class PrintRunDriver;
 class PrinterLinkOwner;
 class PrinterSection;
+class RobotCellSection;
 class StudioDocument;
 
 class HardwarePanel : public QWidget {
@@ -76,6 +81,7 @@ class HardwarePanel : public QWidget {
   [[nodiscard]] PrinterLinkOwner* printerLink() const { return m_printerLink; }
   [[nodiscard]] PrinterSection* printerSection() const { return m_printerSection; }
   [[nodiscard]] JobTimeline* jobTimeline() const { return m_timeline; }
+  [[nodiscard]] RobotCellSection* robotCellSection() const { return m_robotCell; }
   // The latest outcome or problem shown under the controls.
   [[nodiscard]] QString messageText() const;
   [[nodiscard]] bool messageIsError() const { return m_messageIsError; }
@@ -102,7 +108,8 @@ class HardwarePanel : public QWidget {
   // Where the run is, as the Step line says it ("2 of 3: paused (region-02.stl, ...)").
   [[nodiscard]] QString runStepText() const;
   // Before the studio quits during a run: the run is aborted through its own stop path (the platform's stop
-  // latched, the printer's job cancelled and its heaters off) and the platform is sent Stop as well.
+  // latched, the printer's job cancelled and its heaters off) and the platform is sent Stop as well; a robot
+  // job run is stopped and waited for (RobotCellSection::stopForQuit).
   void stopDevicesForQuit();
   // The step (0-based) a run of the session's job would resume from: the first one the last run of this same
   // job did not finish before it was aborted; nullopt when the last run of it was not aborted.
@@ -167,6 +174,7 @@ class HardwarePanel : public QWidget {
   PrinterLinkOwner* m_printerLink = nullptr;
   PrinterSection* m_printerSection = nullptr;
   JobTimeline* m_timeline = nullptr;
+  RobotCellSection* m_robotCell = nullptr;
   QLabel* m_stops = nullptr;
   StudioDocument* m_document;
   std::shared_ptr<const void> m_runFiles;  // the G-code files of the last run started, kept until the next

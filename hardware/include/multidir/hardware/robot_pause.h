@@ -10,7 +10,7 @@
 #include "multidir/core/common/result.h"
 #include "multidir/robot/robot_program.h"
 
-namespace multidir::cli {
+namespace multidir::hardware {
 
 struct StepScript {
   std::vector<std::string> lines;            // the program's lines, without their ends
@@ -49,4 +49,4 @@ std::string pauseProgram(const StepScript& script, const PauseGeometry& geometry
 // effect; then the program's own lines after that movel, to its end.
 std::string resumeProgram(const StepScript& script, const PauseGeometry& geometry, int index);
 
-}  // namespace multidir::cli
+}  // namespace multidir::hardware

@@ -1,11 +1,11 @@
-#include "robot_pause.h"
+#include "multidir/hardware/robot_pause.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-namespace multidir::cli {
+namespace multidir::hardware {
 namespace {
 
 std::string trimmed(const std::string& s) {
@@ -179,4 +179,4 @@ std::string resumeProgram(const StepScript& script, const PauseGeometry& geometr
   return text;
 }
 
-}  // namespace multidir::cli
+}  // namespace multidir::hardware
