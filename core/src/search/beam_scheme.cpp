@@ -72,7 +72,7 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
     // A search that finishes gives its threads to the finest one running, unless one still waits (the thread
     // that ran this one takes it next).
     auto finished = [&] {
-      done[static_cast<std::size_t>(task)] = {own.candidatesScored(), own.clipsPerformed()};
+      done[static_cast<std::size_t>(task)] = {own.candidatesScored(), own.clipsPerformed(), {}};
       std::lock_guard<std::mutex> lock(progressMutex);
       state[static_cast<std::size_t>(task)] = Finished;
       if (std::find(state.begin(), state.end(), Waiting) != state.end()) return;
@@ -105,6 +105,7 @@ bool runBeamScheme(SearchEngine& engine, const SearchOptions& o, BestPlan& best,
   for (int task = 0; task < searches; ++task) {
     const auto k = static_cast<std::size_t>(task);
     if (found[k].node()) best.offer(found[k].node());
+    if (found[k].node()) work.searchBests.push_back(found[k].node());
     best.offerFinalistsOf(found[k]);
     levels = std::max(levels, reached[k]);
     cancelled = cancelled || stopped[k];

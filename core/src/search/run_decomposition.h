@@ -87,4 +87,11 @@ struct SearchNode;
 std::shared_ptr<const SearchNode> withoutUnpaidPlanes(SearchEngine& engine, std::shared_ptr<const SearchNode> node,
                                                       const SearchOptions& options);
 
+// What a search that ran to its end delivers: among `best` and `searchBests` (each side-by-side search's best
+// plan, in their fixed order; compared only when `compareSearches`), each without its unpaid planes, the least
+// J_G, then the fewer planes, then the first. Deterministic: the order is fixed, whatever the threads.
+std::shared_ptr<const SearchNode> paidChoice(SearchEngine& engine, const std::shared_ptr<const SearchNode>& best,
+                                             const std::vector<std::shared_ptr<const SearchNode>>& searchBests,
+                                             const SearchOptions& options, bool compareSearches);
+
 }  // namespace multidir::core::detail

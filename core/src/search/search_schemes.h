@@ -62,6 +62,7 @@ struct BeamScale {
 struct BeamWork {
   long long candidatesScored = 0;
   int clipsPerformed = 0;
+  std::vector<NodePtr> searchBests;  // each search's best plan, in the order offered
 };
 
 // Candidates whose region is below `minRegionVolume` are not the scheme's to take.

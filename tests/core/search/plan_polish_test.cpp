@@ -119,6 +119,23 @@ TEST(PlanPolish, BringsAPlaneNudgedOffTheStemsWallBackToIt) {
     EXPECT_GE(polished->clippingPlanes[0].signedDistance(Vec3(5.0, y, 30.0)), 0.0) << y;
 }
 
+TEST(PlanPolish, FollowsAMoveThatWorksBackToAWallMoreMovesAwayThanItsStepsReach) {
+  const TriangleMesh tbar = makeTBar(10, 30, 80, 10, 10);
+  const SearchOptions options;  // effort 1: offset steps of 0.5 mm, one pass, at most 4 trial moves per plane
+  const Plane wall{-Vec3::UnitX(), 5.0};
+  // The +X arm cut 6 mm out from the stem's wall: a 6 mm strip of its underside stays with the stem, over air.
+  // Twelve steps of 0.5 mm; the trial moves alone take at most four.
+  const auto far = planFromClippingPlanes(tbar, tbarMachine(), options, {Plane{Vec3::UnitX(), 11.0}, wall});
+  ASSERT_TRUE(far.ok()) << far.error().describe();
+  ASSERT_GT(far->jgAfterMm2, 50.0);
+
+  JobContext job;
+  const auto polished = polishPlan(tbar, tbarMachine(), options, *far, job);
+  ASSERT_TRUE(polished.ok()) << polished.error().describe();
+  ASSERT_EQ(polished->clippingPlanes.size(), 2u);
+  EXPECT_LT(polished->jgAfterMm2, 0.05);
+}
+
 TEST(PlanPolish, NeverRaisesJg) {
   for (const char* name : {"knight.off", "bumpy.off", "screwdriver.off"}) {
     SCOPED_TRACE(name);

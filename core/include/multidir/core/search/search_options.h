@@ -72,8 +72,8 @@ struct SearchOptions {
   // way to the optimum between them.
   bool polish = true;
   // How finely polishing goes: its steps (2 degrees and half the offset step at first) halve this many times
-  // less one; each level costs about as much as the one before. 1 to 6. At 1, polishing took 0.1 to 0.95 of
-  // the search's own time on the shared models (median 0.4; docs/search.md, "Polishing").
+  // less one; each level costs about as much as the one before. 1 to 6. At 1, search and polishing together
+  // took 1.0 to 2.0 times the CPU time of the search alone on the shared models (docs/search.md, "Polishing").
   int polishEffort = 1;
 };
 
