@@ -4,10 +4,9 @@
 #include "step_reorientation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
-#include <cstdio>
-#include <cstdlib>
 
 namespace multidir::robot::detail {
 namespace {
