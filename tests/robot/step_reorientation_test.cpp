@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "multidir/robot/cell.h"
+#include "multidir/robot/robot_program.h"
 #include "step_converter.h"
 #include "support/reorientation_step.h"
 
@@ -61,6 +62,24 @@ TEST(StepReorientation, AStepOneRotationCannotReachIsReorientedOnceAtATravelMove
     EXPECT_TRUE(platformPose(test::narrowWrist3Cell(), s.joints).isApprox(pose, 1e-6)) << "line " << s.line;
   }
   EXPECT_EQ(lastRun, 1);
+}
+
+// summary.txt says how many times each step was re-oriented and where.
+TEST(StepReorientation, TheSummaryListsEachReorientationWithItsGcodeLine) {
+  const test::IslandsProgram program = test::threeIslands(true);
+  const StepOutput out =
+      convertStep(stepOf(program), test::narrowWrist3Cell(), test::everyDegree(), core::JobContext());
+  ASSERT_TRUE(out.refusals.empty()) << out.refusals.front();
+  RobotJob job;
+  job.robot = "ur5";
+  job.steps.push_back(out.summary);
+  job.scripts.push_back(out.script);
+  const std::string summary = robotJobSummary(job);
+  EXPECT_NE(summary.find("re-orientations"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("step 1 re-oriented before G-code line " +
+                         std::to_string(program.marks.at("travel to square 2")) + ": rotation about the nozzle axis"),
+            std::string::npos)
+      << summary;
 }
 
 // The squares joined by extrusions: the only travels come before the first square, so no run can turn between
