@@ -9,7 +9,8 @@ namespace multidir::robot {
 
 Eigen::Isometry3d platformPoseAt(const StepMotion& step, const MotionSample& sample) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = step.platformRotation;
+  pose.linear() = step.platformRotations.empty() ? Eigen::Matrix3d::Identity()
+                                                 : step.platformRotations[static_cast<std::size_t>(sample.run)];
   pose.translation() = sample.platformMm;
   return pose;
 }
@@ -30,7 +31,7 @@ core::Result<std::vector<StepMotion>> robotJobMotion(const std::filesystem::path
     step.step = input.step;
     step.gcodeFile = input.gcodeFile;
     step.platformToFile = input.platformToFile;
-    step.platformRotation = converted.platformRotation;
+    step.platformRotations = std::move(converted.platformRotations);
     step.region = std::move(inputs->regions[k]);
     step.supports = std::move(inputs->supports[k]);
     step.samples = std::move(converted.motion);

@@ -58,15 +58,15 @@ std::string robotJobSummary(const RobotJob& job) {
   std::ostringstream s;
   s << "Robot programs for a " << job.robot << " (robot-job.json; docs/robot-cell.md)\n\n";
   s << "step  program          moves  robot time  slicer time  filament mm  reach margin  wrist margin  slowest joint  "
-       "slowdowns  rotation  branch\n";
+       "slowdowns  rotation  branch  re-orientations\n";
   double seconds = 0.0, slicer = 0.0, filament = 0.0;
   int moves = 0, slowdowns = 0;
   for (const auto& st : job.steps) {
     char line[256];
-    std::snprintf(line, sizeof line, "%4d  %-15s %6d  %8.0f s  %9.0f s  %11.1f  %9.1f mm  %8.1f deg  %6d (%3.0f%%)  %9d  %5.0f deg  %6d\n",
+    std::snprintf(line, sizeof line, "%4d  %-15s %6d  %8.0f s  %9.0f s  %11.1f  %9.1f mm  %8.1f deg  %6d (%3.0f%%)  %9d  %5.0f deg  %6d  %15zu\n",
                   st.step, st.program.c_str(), st.moves, st.seconds, st.slicerSeconds, st.filamentMm, st.reachMarginMm,
                   st.wristMarginDegrees, st.slowestJoint, 100.0 * st.slowestJointLoad, st.slowdowns,
-                  st.rotationDegrees, st.branch);
+                  st.rotationDegrees, st.branch, st.reorientations.size());
     s << line;
     seconds += st.seconds;
     slicer += st.slicerSeconds;
@@ -77,6 +77,14 @@ std::string robotJobSummary(const RobotJob& job) {
   s << "total " << moves << " moves, robot " << fixed(seconds / 60.0, 1) << " min (slicer's estimate "
     << fixed(slicer / 60.0, 1) << " min), filament " << fixed(filament, 1) << " mm, " << slowdowns
     << " moves slowed\n";
+  for (const auto& st : job.steps)
+    for (const auto& r : st.reorientations) {
+      char line[200];
+      std::snprintf(line, sizeof line,
+                    "step %d re-oriented before G-code line %d: rotation about the nozzle axis %.0f deg, branch %d\n",
+                    st.step, r.line, r.rotationDegrees, r.branch);
+      s << line;
+    }
   s << "\nrobot time: the arm's trapezoid per move at the tool acceleration, heating waits excluded; slowest joint: "
        "its peak speed as a share of its limit at the G-code's feeds (over 100 %: the move was slowed).\n";
   return s.str();
@@ -109,6 +117,10 @@ core::Status writeRobotJob(const RobotJob& job, const std::filesystem::path& cel
     entry["slicerSeconds"] = st.slicerSeconds;
     entry["rotationDegrees"] = st.rotationDegrees;
     entry["branch"] = st.branch;
+    nlohmann::ordered_json reorientations = nlohmann::ordered_json::array();
+    for (const auto& r : st.reorientations)
+      reorientations.push_back({{"line", r.line}, {"rotationDegrees", r.rotationDegrees}, {"branch", r.branch}});
+    entry["reorientations"] = reorientations;
     steps.push_back(entry);
   }
   std::ifstream cellIn(cellFile, std::ios::binary);

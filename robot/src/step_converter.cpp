@@ -1,16 +1,19 @@
-// One step to one URScript program. The step's orientation is fixed (its pose and the rotation about the
-// nozzle axis chosen once), so the platform only translates while the step prints: every move is a straight
-// movel of the TCP, and the arm stays on one configuration (branch) throughout.
+// One step to one URScript program. The step's orientation (the rotation about the nozzle axis and the arm
+// configuration) is chosen once and kept while the step prints (step_run.h); only a step that no single
+// orientation can print is split into runs re-oriented at travel moves (step_reorientation.h).
 #include "step_converter.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 
 #include "gcode_events.h"
 #include "multidir/robot/arm_links.h"
 #include "multidir/slicing/gcode_program.h"
+#include "step_reorientation.h"
+#include "step_run.h"
 
 namespace multidir::robot::detail {
 namespace {
@@ -24,30 +27,8 @@ constexpr double kHeatWaitBelowC = 2.0;
 // Before the first move and after the last, the platform stands this far from the nozzle along its axis.
 constexpr double kRetreatMm = kStepApproachLiftMm;
 
-struct Converted {
-  int line = 0;
-  Eigen::Vector3d fileMm;        // the nozzle's point, files' frame
-  Eigen::Isometry3d tcp;         // platform pose, base frame
-  double lengthMm = 0.0;
-  double speedMmPerS = 0.0;      // after any slowdown
-  double filamentMm = 0.0;       // the G-code's E of this move
-  bool extrudes = false;
-  std::vector<std::string> before;  // statements to write before the movel (outputs, messages)
-};
-
-double trapezoidSeconds(double distance, double speed, double accel) {
-  if (distance <= 0.0) return 0.0;
-  if (distance >= speed * speed / accel) return distance / speed + speed / accel;
-  return 2.0 * std::sqrt(distance / accel);
-}
-
-std::string number(double v, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
-  std::string s(buffer);
-  if (s == "-0" || s.find_first_not_of("-0.") == std::string::npos) s = decimals > 0 ? "0." + std::string(static_cast<std::size_t>(decimals), '0') : "0";
-  return s;
-}
+std::string number(double v, int decimals) { return fixedText(v, decimals); }
+std::string fixed(double v, int decimals) { return fixedText(v, decimals); }
 
 std::string poseText(const Eigen::Isometry3d& pose) {
   const Eigen::AngleAxisd turn(pose.linear());
@@ -63,97 +44,35 @@ std::string jointsText(const Joints& q) {
   return s + "]";
 }
 
-double maxJointGap(const Joints& a, const Joints& b, int* joint = nullptr) {
+double maxJointGap(const Joints& a, const Joints& b) {
   double worst = 0.0;
-  for (int j = 0; j < 6; ++j) {
-    const double gap = std::abs(a[static_cast<std::size_t>(j)] - b[static_cast<std::size_t>(j)]);
-    if (gap > worst) {
-      worst = gap;
-      if (joint != nullptr) *joint = j;
-    }
-  }
+  for (std::size_t j = 0; j < 6; ++j) worst = std::max(worst, std::abs(a[j] - b[j]));
   return worst;
 }
 
-std::string fixed(double v, int decimals) { return number(v, decimals); }
+// The whole step on one orientation: its approach, every move, its retreat.
+std::optional<RunFailure> runWhole(StepRun& run, std::size_t moves, const core::JobContext& context) {
+  if (auto failed = run.startAtApproach()) return failed;
+  for (std::size_t i = 0; i < moves; ++i)
+    if (auto failed = run.advance(i, context)) return failed;
+  return run.retreat();
+}
 
-// The solution of `branch` for the flange pose, turned to lie nearest `near` within the limits.
-enum class Solve { Ok, OutOfReach, OtherBranchOnly, BeyondLimits };
-Solve solveOnBranch(const ArmModel& arm, const Eigen::Isometry3d& flange, int branch, const Joints& near,
-                    Joints& out) {
-  std::array<IkSolution, 8> solutions{};
-  const int count = inverseKinematics(arm, flange, solutions);
-  if (count == 0) return Solve::OutOfReach;
-  for (int i = 0; i < count; ++i) {
-    if (solutions[static_cast<std::size_t>(i)].branch != branch) continue;
-    const auto chosen = nearestWithinLimits(arm, &solutions[static_cast<std::size_t>(i)], 1, near);
-    if (!chosen) return Solve::BeyondLimits;
-    out = *chosen;
-    return Solve::Ok;
+// The planned runs carried out, keeping what they convert: each run's moves, its lift (all but the last) or the
+// retreat (the last). Replays the plan's own checks, so it cannot fail where the plan did not.
+std::optional<RunFailure> runPlanned(const StepPath& path, const RunPlan& plan, const core::JobContext& context,
+                                     std::vector<std::unique_ptr<StepRun>>& runs) {
+  for (std::size_t k = 0; k < plan.runs.size(); ++k) {
+    const PlannedRun& planned = plan.runs[k];
+    runs.push_back(std::make_unique<StepRun>(path, planned.orientation, true));
+    StepRun& run = *runs.back();
+    if (auto failed = k == 0 ? run.startAtApproach() : run.startAfterTurn(planned.first, runs[k - 1]->joints()))
+      return failed;
+    for (std::size_t i = k == 0 ? planned.first : planned.first + 1; i < planned.end; ++i)
+      if (auto failed = run.advance(i, context)) return failed;
+    if (auto failed = planned.end == path.moves.size() ? run.retreat() : run.liftOff(planned.end - 1)) return failed;
   }
-  return Solve::OtherBranchOnly;
-}
-
-double wristDegrees(const Joints& q) { return std::asin(std::min(1.0, std::abs(std::sin(q[4])))) / kDeg; }
-
-// The step's collision set-up: what the platform carries, in the files' frame, with the points that could
-// touch a body or the table anywhere within the step's bounds (the rest can never, the orientation being fixed).
-struct CollisionSet {
-  struct Candidate {
-    Eigen::Vector3d fileMm;
-    CarriedPoint::Kind kind;
-  };
-  struct Body {
-    std::string name;
-    bool box = true;
-    Eigen::Isometry3d baseToBox = Eigen::Isometry3d::Identity();  // boxes
-    Eigen::Vector3d halfSizeMm = Eigen::Vector3d::Zero();
-    CollisionCylinder cylinder;                                    // cylinders
-    // The body's extent along the nozzle axis from the tip: a point is inside only if its height above the tip,
-    // the files' z difference (the axis is the files' +Z), lies within; the one comparison that rules most out.
-    double axisMinMm = 0.0, axisMaxMm = 0.0;
-    std::vector<Candidate> candidates;
-  };
-  std::vector<Body> bodies;
-  std::vector<Candidate> nearTable;
-};
-
-bool insideCylinder(const CollisionCylinder& c, const Eigen::Vector3d& x) {
-  const Eigen::Vector3d d = x - c.baseMm;
-  const double h = d.dot(c.axis);
-  if (h < 0.0 || h > c.lengthMm) return false;
-  return (d - h * c.axis).norm() <= c.radiusMm;
-}
-
-Eigen::AlignedBox3d boxBounds(const CollisionBox& b) {
-  Eigen::AlignedBox3d box;
-  for (int i = 0; i < 8; ++i) {
-    const Eigen::Vector3d corner((i & 1 ? 0.5 : -0.5) * b.sizeMm.x(), (i & 2 ? 0.5 : -0.5) * b.sizeMm.y(),
-                                 (i & 4 ? 0.5 : -0.5) * b.sizeMm.z());
-    box.extend(b.pose * corner);
-  }
-  return box;
-}
-
-Eigen::AlignedBox3d cylinderBounds(const CollisionCylinder& c) {
-  Eigen::AlignedBox3d box;
-  box.extend(c.baseMm);
-  box.extend(c.baseMm + c.lengthMm * c.axis);
-  box.min().array() -= c.radiusMm;
-  box.max().array() += c.radiusMm;
-  return box;
-}
-
-const char* kindName(CarriedPoint::Kind kind) {
-  switch (kind) {
-    case CarriedPoint::Kind::Platform:
-      return "the platform";
-    case CarriedPoint::Kind::EarlierStep:
-      return "the part printed in earlier steps";
-    case CarriedPoint::Kind::ThisStep:
-      return "this step's part";
-  }
-  return "the part";
+  return std::nullopt;
 }
 
 }  // namespace
@@ -206,55 +125,6 @@ Eigen::Matrix3d nozzleFrame(const Eigen::Vector3d& axisIn) {
   return frame;
 }
 
-namespace {
-
-// platformPoseFor with the turn (nozzle frame times the rotation about the axis) computed once per step.
-Eigen::Isometry3d poseWithTurn(const Cell& cell, const Eigen::Isometry3d& platformToFile, const Eigen::Matrix3d& turn,
-                               const Eigen::Vector3d& fileMm) {
-  Eigen::Isometry3d fileToBase = Eigen::Isometry3d::Identity();
-  fileToBase.linear() = turn;
-  fileToBase.translation() = cell.nozzleTipMm - turn * fileMm;
-  return fileToBase * platformToFile;
-}
-
-// Below this much path between two poses the links' check stops splitting (docs/robot-cell.md, "Collisions").
-constexpr double kFinestLinkSplitMm = 0.05;
-
-std::string describeArmHit(const Cell& cell, const Joints& q, const ArmClearance& c, const Eigen::Vector3d& f) {
-  const std::string link = armLinkSolids(cell.arm, q)[static_cast<std::size_t>(c.link)].name;
-  const std::string at = " with the nozzle at the part's (" + fixed(f.x(), 2) + ", " + fixed(f.y(), 2) + ", " +
-                         fixed(f.z(), 2) + ")";
-  if (c.body == "the table")
-    return "the arm's " + link + " would come within " + fixed(cell.margins.tableClearanceMm, 1) +
-           " mm of the table" + at + "; move the nozzle higher (nozzleTipMm) or the table lower";
-  return "the arm's " + link + " would hit the extruder's body \"" + c.body + "\"" + at +
-         "; move the body or the nozzle (multidir cell reach), or turn the step another way";
-}
-
-// The arm's links between two poses of a straight move: clear when the clearances at the ends add up to more than
-// the most any link point can move between them (armMotionBoundMm), else split the path in two and look again,
-// down to kFinestLinkSplitMm. The first hit, or an empty string.
-std::string armLinksBetween(const Cell& cell, const Eigen::Isometry3d& platformToFile, const Eigen::Matrix3d& turn,
-                            const Eigen::Isometry3d& platformToFlange, int branch, const Eigen::Vector3d& fa,
-                            const Joints& qa, const ArmClearance& ca, const Eigen::Vector3d& fb, const Joints& qb,
-                            const ArmClearance& cb) {
-  if (cb.mm <= 0.0) return describeArmHit(cell, qb, cb, fb);
-  if (ca.mm + cb.mm > armMotionBoundMm(cell.arm, qa, qb)) return {};
-  if ((fb - fa).norm() < kFinestLinkSplitMm) return {};
-  const Eigen::Vector3d fm = 0.5 * (fa + fb);
-  Joints qm{};
-  if (solveOnBranch(cell.arm, poseWithTurn(cell, platformToFile, turn, fm) * platformToFlange, branch, qa, qm) !=
-      Solve::Ok)
-    return {};  // the move's own samples report what is out of reach
-  const ArmClearance cm = armClearance(cell, qm);
-  if (cm.mm <= 0.0) return describeArmHit(cell, qm, cm, fm);
-  std::string hit = armLinksBetween(cell, platformToFile, turn, platformToFlange, branch, fa, qa, ca, fm, qm, cm);
-  if (hit.empty()) hit = armLinksBetween(cell, platformToFile, turn, platformToFlange, branch, fm, qm, cm, fb, qb, cb);
-  return hit;
-}
-
-}  // namespace
-
 Eigen::Isometry3d platformPoseFor(const Cell& cell, const Eigen::Isometry3d& platformToFile, double rotationRad,
                                   const Eigen::Vector3d& fileMm) {
   const Eigen::Matrix3d turn = nozzleFrame(cell.nozzleAxis) * Eigen::AngleAxisd(rotationRad, Eigen::Vector3d::UnitZ());
@@ -300,201 +170,98 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
     refuse(0, program.error().message);
     return out;
   }
-  std::vector<const slicing::GcodeMove*> moves;
+  StepPath path;
+  path.input = &input;
+  path.cell = &cell;
+  path.options = &options;
+  path.side = &*side;
   for (const auto& m : program->moves) {
     if (m.commandsRotaryAxis) {
       refuse(m.line, "the program turns a platform axis; the cell has none: slice with the cell's profile "
                      "(resources/printers/ur5-cell-0.8.ini)");
       return out;
     }
-    if (m.movesXy() || m.movesZ()) moves.push_back(&m);
+    if (m.movesXy() || m.movesZ()) path.moves.push_back(&m);
   }
-  if (moves.empty()) {
+  if (path.moves.empty()) {
     refuse(0, "the program moves nowhere");
     return out;
   }
-  auto fileOf = [&](const slicing::GcodeMove& m) -> Eigen::Vector3d { return m.to - input.printerOffsetMm; };
-  const Eigen::Vector3d firstPoint = fileOf(*moves.front());
-  const Eigen::Vector3d lastPoint = fileOf(*moves.back());
-  const Eigen::Vector3d approach = firstPoint + Eigen::Vector3d(0, 0, kRetreatMm);
-  const Eigen::Vector3d retreat = lastPoint + Eigen::Vector3d(0, 0, kRetreatMm);
-  Eigen::AlignedBox3d bounds(approach);
-  bounds.extend(retreat);
-  for (const auto* m : moves) bounds.extend(fileOf(*m));
-
+  for (const auto* m : path.moves) path.points.push_back(m->to - input.printerOffsetMm);
+  path.approach = path.points.front() + Eigen::Vector3d(0, 0, kRetreatMm);
+  path.retreat = path.points.back() + Eigen::Vector3d(0, 0, kRetreatMm);
+  path.bounds = Eigen::AlignedBox3d(path.approach);
+  path.bounds.extend(path.retreat);
+  for (const auto& p : path.points) path.bounds.extend(p);
+  path.sweptBounds = path.bounds;
+  path.sweptBounds.max().z() += kRetreatMm;  // a re-orientation lifts the part off the nozzle
+  path.platformToFlange = cell.flangeToPlatform.inverse();
   const ArmModel& arm = cell.arm;
-  const Eigen::Isometry3d platformToFlange = cell.flangeToPlatform.inverse();
-  const CellMargins& margins = cell.margins;
 
-  // The rotation about the nozzle axis and the branch: every corner of the step's bounds reachable on the
-  // branch within the limits, the least margin (each over the cell's minimum) the largest.
-  double bestScore = -std::numeric_limits<double>::infinity();
-  int bestReached = -1;
-  bool bestClear = false;
-  double bestRotation = 0.0;
-  int bestBranch = 0;
-  const int rotations = std::max(1, static_cast<int>(std::lround(360.0 / options.rotationStepDegrees)));
-  for (int r = 0; r < rotations; ++r) {
-    const double rotation = r * options.rotationStepDegrees * kDeg;
-    for (int branch = 0; branch < 8; ++branch) {
-      int reached = 0;
-      int clearCorners = 0;
-      double score = std::numeric_limits<double>::infinity();
-      for (int c = 0; c < 8; ++c) {
-        const Eigen::Vector3d corner = bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
-        const Eigen::Isometry3d flange = platformPoseFor(cell, input.platformToFile, rotation, corner) * platformToFlange;
-        Joints q{};
-        if (solveOnBranch(arm, flange, branch, cell.home, q) != Solve::Ok) continue;
-        if (!armOnTable(cell, q).empty()) continue;  // a configuration with its elbow under the table
-        ++reached;
-        if (armClearance(cell, q).mm > 0.0) ++clearCorners;  // no link in the extruder's body or on the table
-        const double reach = reachMarginMm(arm, q) / std::max(margins.minReachMm, 1.0);
-        const double wrist = wristDegrees(q) / std::max(margins.minWristDegrees, 1.0);
-        score = std::min({score, reach, wrist});
+  // The step's orientation, and the whole step on it; only when that fails, the runs re-oriented at travel moves.
+  const Orientation best = bestOrientation(scoreOrientations(path, path.bounds)).orientation;
+  std::vector<std::unique_ptr<StepRun>> runs;
+  runs.push_back(std::make_unique<StepRun>(path, best, true));
+  std::optional<RunFailure> failed = runWhole(*runs.front(), path.moves.size(), context);
+  if (failed && !failed->fatal) {
+    const RunPlan plan = planRuns(path, *failed, context);
+    if (plan.failure) {
+      failed = plan.failure;
+      if (plan.failure->fatal) {
+        refuse(context.isCancelled() ? 0 : failed->line, failed->reason);
+        return out;
       }
-      // Reaching every corner first, then the arm's links clear of the bodies at every corner, then the margin.
-      const bool clear = reached == 8 && clearCorners == 8;
-      if (reached == 8 ? (bestReached < 8 || (clear && !bestClear) || (clear == bestClear && score > bestScore))
-                       : (bestReached < 8 && reached > bestReached)) {
-        bestReached = reached;
-        bestClear = clear;
-        bestScore = reached == 8 ? score : bestScore;
-        bestRotation = rotation;
-        bestBranch = branch;
-      }
+    } else {
+      runs.clear();
+      failed = runPlanned(path, plan, context, runs);
+      if (failed) failed->reason = "re-orientation: " + failed->reason;
     }
   }
-  summary.rotationDegrees = bestRotation / kDeg;
-  summary.branch = bestBranch;
-  const Eigen::Matrix3d nozzleTurn =
-      nozzleFrame(cell.nozzleAxis) * Eigen::AngleAxisd(bestRotation, Eigen::Vector3d::UnitZ());
-  out.platformRotation = nozzleTurn * input.platformToFile.linear();
-
-  // Collision candidates: per body, the points that could meet it for some nozzle point within the bounds.
-  CollisionSet collisions;
-  for (const auto& b : cell.boxes) {
-    CollisionSet::Body body;
-    body.name = b.name;
-    body.baseToBox = b.pose.inverse();
-    body.halfSizeMm = b.sizeMm / 2;
-    collisions.bodies.push_back(body);
-  }
-  for (const auto& c : cell.cylinders) {
-    CollisionSet::Body body;
-    body.name = c.name;
-    body.box = false;
-    body.cylinder = c;
-    collisions.bodies.push_back(body);
-  }
-  std::vector<Eigen::AlignedBox3d> bodyBounds;
-  for (const auto& b : cell.boxes) bodyBounds.push_back(boxBounds(b));
-  for (const auto& c : cell.cylinders) bodyBounds.push_back(cylinderBounds(c));
-  for (std::size_t b = 0; b < bodyBounds.size(); ++b) {
-    double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (int c = 0; c < 8; ++c) {
-      const double h = (bodyBounds[b].corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - cell.nozzleTipMm)
-                           .dot(cell.nozzleAxis);
-      low = std::min(low, h);
-      high = std::max(high, h);
-    }
-    collisions.bodies[b].axisMinMm = low;
-    collisions.bodies[b].axisMaxMm = high;
-  }
-  for (const auto& p : input.carried) {
-    const Eigen::Vector3d s = input.platformToFile * p.platformMm;
-    // world = tip + turn (s - f), f within bounds
-    Eigen::AlignedBox3d swept;
-    for (int c = 0; c < 8; ++c)
-      swept.extend(cell.nozzleTipMm + nozzleTurn * (s - bounds.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c))));
-    for (std::size_t b = 0; b < bodyBounds.size(); ++b)
-      if (swept.intersects(bodyBounds[b])) collisions.bodies[b].candidates.push_back({s, p.kind});
-    if (swept.min().z() < cell.tableZMm + margins.tableClearanceMm) collisions.nearTable.push_back({s, p.kind});
-  }
-  // Sorted by height, so a sample tests only the candidates within the body's extent along the axis.
-  for (auto& body : collisions.bodies)
-    std::sort(body.candidates.begin(), body.candidates.end(),
-              [](const CollisionSet::Candidate& a, const CollisionSet::Candidate& b) { return a.fileMm.z() < b.fileMm.z(); });
-  auto inNozzleZone = [&](const Eigen::Vector3d& world) {
-    const Eigen::Vector3d d = world - cell.nozzleTipMm;
-    const double h = d.dot(cell.nozzleAxis);
-    return h <= cell.nozzleZoneHeightMm && (d - h * cell.nozzleAxis).norm() <= cell.nozzleZoneRadiusMm;
-  };
-  auto where = [](const Eigen::Vector3d& w) {
-    return "(at base x " + fixed(w.x(), 1) + " y " + fixed(w.y(), 1) + " z " + fixed(w.z(), 1) + " mm)";
-  };
-  // A collision at nozzle point f (files' frame), or an empty string.
-  auto collisionAt = [&](const Eigen::Vector3d& f, const Eigen::Isometry3d& flange) -> std::string {
-    for (const auto& body : collisions.bodies) {
-      const auto first = std::lower_bound(
-          body.candidates.begin(), body.candidates.end(), f.z() + body.axisMinMm,
-          [](const CollisionSet::Candidate& c, double z) { return c.fileMm.z() < z; });
-      for (auto it = first; it != body.candidates.end(); ++it) {
-        const CollisionSet::Candidate& c = *it;
-        const double height = c.fileMm.z() - f.z();
-        if (height > body.axisMaxMm) break;
-        if (c.kind == CarriedPoint::Kind::ThisStep && height > 1e-6) continue;  // not printed yet
-        const Eigen::Vector3d world = cell.nozzleTipMm + nozzleTurn * (c.fileMm - f);
-        bool inside = false;
-        if (body.box) {
-          const Eigen::Vector3d local = body.baseToBox * world;
-          inside = (local.cwiseAbs().array() <= body.halfSizeMm.array()).all();
-        } else {
-          inside = insideCylinder(body.cylinder, world);
-        }
-        if (inside && !inNozzleZone(world))
-          return std::string(kindName(c.kind)) + " would hit the extruder's body \"" + body.name + "\" " + where(world) +
-                 (c.kind == CarriedPoint::Kind::Platform
-                      ? "; a platform larger than the plan's platform region swings into the extruder on tilted "
-                        "steps: decompose with the machine's platformRadiusMm set to the cell's platformRadiusMm"
-                      : "");
-      }
-    }
-    for (const auto& c : collisions.nearTable) {
-      if (c.kind == CarriedPoint::Kind::ThisStep && c.fileMm.z() > f.z() + 1e-6) continue;
-      const Eigen::Vector3d world = cell.nozzleTipMm + nozzleTurn * (c.fileMm - f);
-      if (world.z() < cell.tableZMm + margins.tableClearanceMm)
-        return std::string(kindName(c.kind)) + " would come within " + fixed(margins.tableClearanceMm, 1) +
-               " mm of the table " + where(world) + ", table at z " + fixed(cell.tableZMm, 1) +
-               "; move the nozzle higher (nozzleTipMm) or the table lower";
-    }
-    (void)flange;  // the arm itself: armOnTable
-    return {};
-  };
-
-  // The moves, checked.
+  // Every run's moves, in order; the summary over all of them.
   std::vector<Converted> converted;
-  converted.reserve(moves.size() + 2);
-  Joints joints{};
-  const Eigen::Isometry3d approachTcp = platformPoseFor(cell, input.platformToFile, bestRotation, approach);
-  switch (solveOnBranch(arm, approachTcp * platformToFlange, bestBranch, cell.home, joints)) {
-    case Solve::Ok:
-      break;
-    default:
-      refuse(moves.front()->line, "the step's first point, " + fixed(kRetreatMm, 0) +
-                                      " mm off the nozzle, is out of the arm's reach with any rotation about the "
-                                      "nozzle axis; move the nozzle (multidir cell reach) or scale the part down");
-      return out;
-  }
-  const Joints approachJoints = joints;
-  ArmClearance lastClearance = armClearance(cell, joints);
-  {
-    std::string hit = armOnTable(cell, joints);
-    if (hit.empty() && lastClearance.mm <= 0.0) hit = describeArmHit(cell, joints, lastClearance, approach);
-    if (!hit.empty()) {
-      refuse(moves.front()->line, hit);
-      return out;
+  summary.reachMarginMm = std::numeric_limits<double>::infinity();
+  summary.wristMarginDegrees = std::numeric_limits<double>::infinity();
+  double worstLoad = 0.0;
+  int worstLoadJoint = 0;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    StepRun& run = *runs[k];
+    const RunStats& stats = run.stats();
+    summary.reachMarginMm = std::min(summary.reachMarginMm, stats.reachMarginMm);
+    summary.wristMarginDegrees = std::min(summary.wristMarginDegrees, stats.wristMarginDegrees);
+    if (stats.worstLoad > worstLoad) {
+      worstLoad = stats.worstLoad;
+      worstLoadJoint = stats.worstLoadJoint;
     }
+    summary.slowdowns += stats.slowdowns;
+    summary.slowdownSeconds += stats.slowdownSeconds;
+    summary.gcodeFilamentMm += stats.gcodeFilamentMm;
+    out.platformRotations.push_back(run.nozzleTurn() * input.platformToFile.linear());
+    for (MotionSample& m : run.motion()) {
+      m.run = static_cast<int>(k);
+      out.motion.push_back(m);
+    }
+    if (k > 0 && !run.converted().empty() && run.converted().front().turn) {
+      const Converted& turn = run.converted().front();
+      summary.reorientations.push_back({turn.line, run.orientation().rotationRad / kDeg, run.orientation().branch});
+    }
+    converted.insert(converted.end(), std::make_move_iterator(run.converted().begin()),
+                     std::make_move_iterator(run.converted().end()));
   }
-  Eigen::Vector3d current = approach;
+  summary.rotationDegrees = runs.front()->orientation().rotationRad / kDeg;
+  summary.branch = runs.front()->orientation().branch;
+  if (failed) {
+    refuse(failed->line, failed->reason);
+    return out;
+  }
+  summary.slowestJoint = worstLoadJoint + 1;
+  summary.slowestJointLoad = worstLoad;
+  const Joints approachJoints = runs.front()->startJoints();
+  const Joints retreatJoints = runs.back()->joints();
+
+  // The G-code's temperatures, fan and layer changes before the moves they precede.
   std::size_t nextEvent = 0;
   std::size_t nextLayer = 0;
   int layer = 0;
-  summary.reachMarginMm = std::numeric_limits<double>::infinity();
-  summary.wristMarginDegrees = std::numeric_limits<double>::infinity();
-  const double jointStepLimit = margins.maxJointStepDegrees * kDeg;
-  double worstLoad = 0.0;
-  int worstLoadJoint = 0;
-
   auto eventsUpTo = [&](int line, std::vector<std::string>& before) {
     while (nextLayer < side->layerChangeLines.size() && side->layerChangeLines[nextLayer] < line) {
       ++nextLayer;
@@ -525,153 +292,8 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
       }
     }
   };
-
-  for (std::size_t i = 0; i < moves.size(); ++i) {
-    if ((i & 4095) == 0 && context.isCancelled()) {
-      refuse(0, "cancelled");
-      return out;
-    }
-    const slicing::GcodeMove& move = *moves[i];
-    const Eigen::Vector3d target = fileOf(move);
-    const double length = (target - current).norm();
-    Converted c;
-    c.line = move.line;
-    c.fileMm = target;
-    c.lengthMm = length;
-    c.extrudes = move.extrudes();
-    eventsUpTo(move.line, c.before);
-    const std::size_t lineIndex = static_cast<std::size_t>(move.line);
-    const double feed = lineIndex < side->feedMmPerMinByLine.size() ? side->feedMmPerMinByLine[lineIndex] : 0.0;
-    double requested = cell.motion.travelSpeedMmPerS;
-    if (c.extrudes) {
-      if (!(feed > 0.0)) {
-        refuse(move.line, "an extrusion with no feed rate (F) in effect");
-        return out;
-      }
-      requested = feed / 60.0;
-    }
-    // Samples along the move: reach, branch, limits, jumps, margins, collisions, joint speeds.
-    const int samples = std::max(1, static_cast<int>(std::ceil(length / options.sampleMm)));
-    double load = 0.0;
-    int loadJoint = 0;
-    for (int s = 1; s <= samples; ++s) {
-      const Eigen::Vector3d f = current + (target - current) * (static_cast<double>(s) / samples);
-      const Eigen::Isometry3d tcp = poseWithTurn(cell, input.platformToFile, nozzleTurn, f);
-      const Eigen::Isometry3d flange = tcp * platformToFlange;
-      Joints q{};
-      switch (solveOnBranch(arm, flange, bestBranch, joints, q)) {
-        case Solve::Ok:
-          break;
-        case Solve::OutOfReach:
-          refuse(move.line, "the platform pose for nozzle point (" + fixed(f.x(), 2) + ", " + fixed(f.y(), 2) + ", " +
-                                fixed(f.z(), 2) + ") is out of the arm's reach; move the nozzle (multidir cell "
-                                "reach) or scale the part down");
-          return out;
-        case Solve::OtherBranchOnly:
-          refuse(move.line, "unreachable on the step's arm configuration (branch " + std::to_string(bestBranch) +
-                                "): only another configuration reaches it, and changing it mid-step is a wrist or "
-                                "elbow flip; move the nozzle or split the step");
-          return out;
-        case Solve::BeyondLimits:
-          refuse(move.line, "the pose needs a joint beyond the cell's joint limits (jointLimitsDegrees)");
-          return out;
-      }
-      int jumpJoint = 0;
-      const double jump = maxJointGap(q, joints, &jumpJoint);
-      if (jump > jointStepLimit) {
-        refuse(move.line, "joint " + std::to_string(jumpJoint + 1) + " jumps " + fixed(jump / kDeg, 1) + " deg within " +
-                              fixed(length / samples, 1) + " mm of path (over the cell's " +
-                              fixed(margins.maxJointStepDegrees, 1) +
-                              " deg, margins.maxJointStepDegrees): a wrist flip near a singularity");
-        return out;
-      }
-      const double reach = reachMarginMm(arm, q);
-      const double wrist = wristDegrees(q);
-      summary.reachMarginMm = std::min(summary.reachMarginMm, reach);
-      summary.wristMarginDegrees = std::min(summary.wristMarginDegrees, wrist);
-      if (reach < margins.minReachMm) {
-        refuse(move.line, "reach margin " + fixed(reach, 1) + " mm, under the cell's " + fixed(margins.minReachMm, 1) +
-                              " mm (margins.minReachMm): the arm is near the edge of its workspace or the shoulder "
-                              "singularity");
-        return out;
-      }
-      if (wrist < margins.minWristDegrees) {
-        refuse(move.line, "wrist 2 at " + fixed(wrist, 1) + " deg from the wrist singularity, under the cell's " +
-                              fixed(margins.minWristDegrees, 1) + " deg (margins.minWristDegrees)");
-        return out;
-      }
-      std::string hit = collisionAt(f, flange);
-      if (hit.empty()) hit = armOnTable(cell, q);
-      if (hit.empty()) {
-        const ArmClearance clearance = armClearance(cell, q);
-        const Eigen::Vector3d before = current + (target - current) * (static_cast<double>(s - 1) / samples);
-        hit = armLinksBetween(cell, input.platformToFile, nozzleTurn, platformToFlange, bestBranch, before, joints,
-                              lastClearance, f, q, clearance);
-        lastClearance = clearance;
-      }
-      if (!hit.empty()) {
-        refuse(move.line, hit);
-        return out;
-      }
-      const double seconds = (length / samples) / requested;
-      for (int j = 0; j < 6; ++j) {
-        const double speed = std::abs(q[static_cast<std::size_t>(j)] - joints[static_cast<std::size_t>(j)]) / seconds;
-        const double ratio = speed / arm.limits[static_cast<std::size_t>(j)].maxSpeedRadPerS;
-        if (ratio > load) {
-          load = ratio;
-          loadJoint = j;
-        }
-      }
-      joints = q;
-      if (s == samples) c.tcp = tcp;
-    }
-    if (input.recordMotion) out.motion.push_back({move.line, target, c.tcp.translation(), joints, c.extrudes});
-    if (load > worstLoad) {
-      worstLoad = load;
-      worstLoadJoint = loadJoint;
-    }
-    double speed = requested;
-    if (c.extrudes) {
-      const double filamentSpeed = move.filamentMm / length * requested;
-      load = std::max(load, filamentSpeed / cell.maxFilamentMmPerS);
-    }
-    if (load > 1.0) {
-      speed = requested / load;
-      ++summary.slowdowns;
-      summary.slowdownSeconds += trapezoidSeconds(length, speed, cell.motion.toolAccelMmPerS2) -
-                                 trapezoidSeconds(length, requested, cell.motion.toolAccelMmPerS2);
-    }
-    // The written values, rounded as written, so the program's filament is what the controller will drive.
-    speed = std::stod(number(speed / 1000.0, 6)) * 1000.0;
-    c.speedMmPerS = speed;
-    if (c.extrudes) c.filamentMm = move.filamentMm;
-    summary.gcodeFilamentMm += c.extrudes ? move.filamentMm : 0.0;
-    converted.push_back(std::move(c));
-    current = target;
-  }
-  // After the last move: the platform backs off the nozzle, then home.
-  Converted back;
-  back.line = moves.back()->line;
-  back.fileMm = retreat;
-  back.lengthMm = (retreat - current).norm();
-  back.speedMmPerS = cell.motion.travelSpeedMmPerS;
-  eventsUpTo(std::numeric_limits<int>::max(), back.before);
-  back.tcp = platformPoseFor(cell, input.platformToFile, bestRotation, retreat);
-  Joints retreatJoints{};
-  if (solveOnBranch(arm, back.tcp * platformToFlange, bestBranch, joints, retreatJoints) != Solve::Ok) {
-    refuse(back.line, "the platform cannot back " + fixed(kRetreatMm, 0) + " mm off the nozzle after the step");
-    return out;
-  }
-  const std::string retreatHit =
-      armLinksBetween(cell, input.platformToFile, nozzleTurn, platformToFlange, bestBranch, current, joints,
-                      lastClearance, retreat, retreatJoints, armClearance(cell, retreatJoints));
-  if (!retreatHit.empty()) {
-    refuse(back.line, retreatHit);
-    return out;
-  }
-  converted.push_back(std::move(back));
-  summary.slowestJoint = worstLoadJoint + 1;
-  summary.slowestJointLoad = worstLoad;
+  for (std::size_t i = 0; i < converted.size(); ++i)
+    eventsUpTo(i + 1 == converted.size() ? std::numeric_limits<int>::max() : converted[i].line, converted[i].before);
 
   // The program.
   const CellMotion& motion = cell.motion;
@@ -686,7 +308,11 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   script += "def " + std::string(functionName) + "():\n";
   script += "  # MultiDir robot program: step " + std::to_string(input.step) + " of " + std::to_string(input.stepCount) +
             ", from " + input.gcodeFile + "; robot " + arm.name + ", rotation about the nozzle axis " +
-            fixed(summary.rotationDegrees, 1) + " deg, arm configuration (branch) " + std::to_string(bestBranch) + "\n";
+            fixed(summary.rotationDegrees, 1) + " deg, arm configuration (branch) " + std::to_string(summary.branch) +
+            (summary.reorientations.empty()
+                 ? std::string()
+                 : "; re-oriented " + std::to_string(summary.reorientations.size()) + " time(s) at travel moves") +
+            "\n";
   script += "  # analog out 0: extruder filament speed / " + fixed(cell.maxFilamentMmPerS, 3) +
             " mm/s; analog out 1: nozzle set point / 300 C; digital out 0: part-cooling fan\n";
   script += "  set_tcp(" + poseText(cell.flangeToPlatform) + ")\n";
@@ -696,9 +322,21 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   const double accel = motion.toolAccelMmPerS2;
   double written = 0.0;
   double blendIn = 0.0;  // the blend radius of the move before, into this one
+  int turns = 0;
   for (std::size_t i = 0; i < converted.size(); ++i) {
     const Converted& c = converted[i];
     for (const auto& line : c.before) script += "  " + line + "\n";
+    if (c.turn) {
+      // A re-orientation: the part is off the nozzle (the lift before), the extruder stopped (a travel).
+      const std::size_t k = static_cast<std::size_t>(++turns);
+      const RobotReorientation& r = summary.reorientations[k - 1];
+      script += "  # re-orientation " + std::to_string(k) + " before G-code line " + std::to_string(r.line) +
+                ": rotation about the nozzle axis " + fixed(r.rotationDegrees, 1) + " deg, arm configuration (branch) " +
+                std::to_string(r.branch) + "\n";
+      script += movej(c.turnFrom, c.turnTo);
+      blendIn = 0.0;
+      continue;
+    }
     double blend = 0.0;
     if (c.extrudes && i + 1 < converted.size() && converted[i + 1].extrudes)
       blend = std::min({motion.blendRadiusMm, 0.45 * c.lengthMm, 0.45 * converted[i + 1].lengthMm});
@@ -723,7 +361,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
     summary.seconds += trapezoidSeconds(c.lengthMm, c.speedMmPerS, accel);
     summary.filamentMm += analog0 * cell.maxFilamentMmPerS * moveSeconds;
   }
-  summary.gcodeMoves = static_cast<int>(moves.size());
+  summary.gcodeMoves = static_cast<int>(path.moves.size());
   script += movej(retreatJoints, cell.home);
   script += "end\n";
   return out;

@@ -37,9 +37,10 @@ struct StepOutput {
   std::string script;
   std::vector<std::string> refusals;  // "step 2, line 345 (step-02.gcode): ..."; empty when the step converts
   int refusalLine = 0;                // the first refusal's G-code line (0: none or not tied to a line)
-  // With StepInput::recordMotion: each converted move's end (up to a refused one), and the TCP's orientation.
+  // With StepInput::recordMotion: each converted move's end (up to a refused one), and the TCP's orientation in
+  // each run (one run unless the step is re-oriented; MotionSample::run indexes it).
   std::vector<MotionSample> motion;
-  Eigen::Matrix3d platformRotation = Eigen::Matrix3d::Identity();
+  std::vector<Eigen::Matrix3d> platformRotations;
 };
 
 StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProgramOptions& options,

@@ -237,6 +237,17 @@ TEST(KittenRobotProgram, NoJointPassesItsLimitsOrItsSpeed) {
 }
 
 
+// The kitten's steps each print on one rotation about the nozzle axis on the paper cell: no re-orientation, and
+// each program moves in joint space only from home, to its approach and back home.
+TEST(KittenRobotProgram, EveryStepPrintsOnOneRotationWithNoReorientation) {
+  const Converted c = convertedKitten("KittenRobotProgram.NoReorientation");
+  ASSERT_EQ(c.robotJob["steps"].size(), c.scripts.size());
+  for (std::size_t k = 0; k < c.scripts.size(); ++k) {
+    EXPECT_TRUE(c.robotJob["steps"][k]["reorientations"].empty()) << "step " << k + 1;
+    EXPECT_EQ(c.scripts[k].movej.size(), 3u) << "step " << k + 1;
+  }
+}
+
 // The studio's view of the job (robotJobMotion) is the programs' motion: each sample's platform pose is the
 // pose the step's script commands for that G-code move, and it puts the fixed nozzle tip on the sample's point.
 TEST(KittenRobotProgram, StudioMotionPosesAreTheScriptsMovelTargets) {

@@ -221,7 +221,9 @@ TEST(StepRefusals, AnExtruderMountWhereTheForearmPassesIsRefusedNamingTheLink) {
 // The links are checked between the samples too: one 60 mm extrusion checked only at its ends (--sample-mm 500),
 // and a 4 mm block 1 mm inside the forearm's surface where the forearm stands half way, out of its reach at either
 // end. The move is refused naming the forearm: the clearances at the ends do not cover how far the forearm can
-// move between them, so the path is split until the block is met.
+// move between them, so the path is split until the block is met. The elbow is kept bent the one way (its joint
+// limits), so no configuration with the other elbow (which the step, or a re-orientation at the travel before,
+// could take) dodges the block.
 TEST(StepRefusals, TheForearmMeetingABodyBetweenTwoSamplesIsRefused) {
   Cell cell = shippedCell();
   Program p;
@@ -245,6 +247,8 @@ TEST(StepRefusals, TheForearmMeetingABodyBetweenTwoSamplesIsRefused) {
     EXPECT_TRUE(q.has_value());
     return q.value_or(Joints{});
   };
+  cell.arm.limits[2].minRad = -kPi;
+  cell.arm.limits[2].maxRad = -1e-3;
   const ArmLinkSolid start = armLinkSolids(cell.arm, jointsAt(-30.0))[1];
   const ArmLinkSolid middle = armLinkSolids(cell.arm, jointsAt(0.0))[1];
   const ArmLinkSolid end = armLinkSolids(cell.arm, jointsAt(30.0))[1];

@@ -24,6 +24,7 @@ struct MotionSample {
   Eigen::Vector3d platformMm = Eigen::Vector3d::Zero();    // the TCP (platform centre), base frame
   Joints joints{};                                    // the arm there (radians)
   bool extrudes = false;
+  int run = 0;  // which of the step's runs (StepMotion::platformRotations): 0 unless the step is re-oriented
 };
 
 // Why a step cannot run, where.
@@ -37,10 +38,14 @@ struct StepMotion {
   int step = 1;
   std::string gcodeFile;
   Eigen::Isometry3d platformToFile = Eigen::Isometry3d::Identity();  // platform frame to the files' frame
-  Eigen::Matrix3d platformRotation = Eigen::Matrix3d::Identity();   // the TCP's orientation (fixed in a step)
+  // The TCP's orientation in each run: fixed within a run; a step is one run unless it is re-oriented at travel
+  // moves (docs/robot-cell.md, "Re-orientation within a step").
+  std::vector<Eigen::Matrix3d> platformRotations;
   core::TriangleMesh region;    // platform frame
   core::TriangleMesh supports;  // platform frame; empty without supports
-  std::vector<MotionSample> samples;  // every converted move, in order (up to the refused one)
+  // Every converted move, in order (up to the refused one); a re-orientation adds three: the part lifted off
+  // the nozzle, turned, and back down.
+  std::vector<MotionSample> samples;
   std::optional<MotionWarning> warning;
 };
 

@@ -23,6 +23,15 @@ struct RobotProgramOptions {
   double sampleMm = 5.0;              // moves are checked at points this far apart (and at both ends)
 };
 
+// A step that no single rotation about the nozzle axis can print is re-oriented at travel moves
+// (docs/robot-cell.md, "Re-orientation within a step"): before G-code line `line` (a travel) the part is lifted off
+// the nozzle, turned in joint space to the new rotation and arm configuration, and brought back down.
+struct RobotReorientation {
+  int line = 0;                  // the G-code line of the travel move it precedes
+  double rotationDegrees = 0.0;  // the rotation about the nozzle axis from there on
+  int branch = 0;                // the arm configuration from there on
+};
+
 struct RobotStepSummary {
   int step = 1;
   std::string program;              // "step-01.script"
@@ -38,8 +47,9 @@ struct RobotStepSummary {
   double slowestJointLoad = 0.0;    // its speed over its limit, before slowing (> 1: slowed)
   int slowdowns = 0;                // moves slowed below the G-code's feed for a joint's speed or the extruder's
   double slowdownSeconds = 0.0;     // time the slowdowns add
-  double rotationDegrees = 0.0;     // the chosen rotation about the nozzle axis
-  int branch = 0;                   // the arm configuration (ur_kinematics.h) the whole step uses
+  double rotationDegrees = 0.0;     // the chosen rotation about the nozzle axis (the first run's)
+  int branch = 0;                   // the arm configuration (ur_kinematics.h) the step starts on
+  std::vector<RobotReorientation> reorientations;  // in order; empty: the whole step on one rotation
 };
 
 struct RobotJob {
