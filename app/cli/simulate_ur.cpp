@@ -28,7 +28,7 @@ int wholeNumber(const std::string& text, const std::string& option, long low, lo
   return static_cast<int>(value);
 }
 
-// A port the system hands out as free now (the base of three consecutive ones is tried from it).
+// A port the system hands out as free now (the base of four consecutive ones is tried from it).
 int freePort() {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in address{};
@@ -78,7 +78,7 @@ int simulateUr(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
         "simulate'.");
   }
   const bool portGiven = parsed.has("--port");
-  const int port = portGiven ? wholeNumber(parsed.value("--port", ""), "--port", 0, 65533) : -1;
+  const int port = portGiven ? wholeNumber(parsed.value("--port", ""), "--port", 0, 65532) : -1;
 
   g_stop = false;
   auto previousInt = std::signal(SIGINT, onUrStopSignal);
@@ -89,13 +89,14 @@ int simulateUr(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
   };
   std::unique_ptr<hardware::UrSimulator> simulator;
   core::Status started = core::Done{};
-  // --port 0: three consecutive free ports, so that 'multidir run --robot HOST:P' finds P+1 and P+2.
+  // --port 0: four consecutive free ports, so that 'multidir run --robot HOST:P' finds P+1, P+2 and P+3.
   for (int attempt = 0; attempt < (port == 0 ? 50 : 1); ++attempt) {
     const int base = port == 0 ? freePort() : port;
-    if (port == 0 && (base <= 0 || base > 65533)) continue;
+    if (port == 0 && (base <= 0 || base > 65532)) continue;
     options.dashboardPort = portGiven ? base : 29999;
     options.secondaryPort = portGiven ? base + 1 : 30002;
     options.realtimePort = portGiven ? base + 2 : 30003;
+    options.rtdePort = portGiven ? base + 3 : 30004;
     simulator = std::make_unique<hardware::UrSimulator>(options);
     started = simulator->start();
     if (started.ok()) break;
@@ -109,7 +110,8 @@ int simulateUr(const ParsedArgs& parsed, std::ostream& out, std::ostream& err) {
   }
   out << "UR controller simulator (" << options.model << ") on " << options.listenAddress << ": dashboard "
       << simulator->dashboardPort() << ", secondary interface " << simulator->secondaryPort()
-      << ", real-time interface " << simulator->realtimePort() << ", at speed " << options.speed;
+      << ", real-time interface " << simulator->realtimePort() << ", RTDE " << simulator->rtdePort() << ", at speed "
+      << options.speed;
   if (options.fault != hardware::UrSimulatorFault::None)
     out << ", fault " << hardware::urSimulatorFaultName(options.fault)
         << (options.faultAtLine > 0 ? " at line " + std::to_string(options.faultAtLine)

@@ -317,6 +317,9 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
             " mm/s; analog out 1: nozzle set point / 300 C; digital out 0: part-cooling fan\n";
   script += "  set_tcp(" + poseText(cell.flangeToPlatform) + ")\n";
   script += "  set_standard_analog_out(0, 0.000000)\n";
+  // The movel register (kMovelRegister): 0 in the joint moves, k just before movel k starts.
+  const std::string movelRegister = "  write_output_integer_register(" + std::to_string(kMovelRegister) + ", ";
+  script += movelRegister + "0)\n";
   script += movej(cell.home, cell.home);
   script += movej(cell.home, approachJoints);
   const double accel = motion.toolAccelMmPerS2;
@@ -355,6 +358,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
       script += "  set_standard_analog_out(0, " + number(analog0, 6) + ")\n";
       written = analog0;
     }
+    script += movelRegister + std::to_string(summary.moves + 1) + ")\n";
     script += "  movel(" + poseText(c.tcp) + ", a=" + number(accel / 1000.0, 4) + ", v=" + number(c.speedMmPerS / 1000.0, 6) +
               ", r=" + number(blend / 1000.0, 6) + ")\n";
     ++summary.moves;
@@ -362,6 +366,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
     summary.filamentMm += analog0 * cell.maxFilamentMmPerS * moveSeconds;
   }
   summary.gcodeMoves = static_cast<int>(path.moves.size());
+  script += movelRegister + "0)\n";
   script += movej(retreatJoints, cell.home);
   script += "end\n";
   return out;

@@ -89,12 +89,13 @@ std::vector<Eigen::Vector3d> writeRobotJob(const std::string& dir) {
   return {first.back(), second.back()};
 }
 
-// A UR simulator on three consecutive free ports (the --robot HOST:PORT convention).
+// A UR simulator on four consecutive free ports (the --robot HOST:PORT convention).
 std::unique_ptr<hw::UrSimulator> startSimulator(hw::UrSimulatorOptions options) {
   for (int base = 41000 + static_cast<int>(::getpid() % 200) * 30; base < 65000; base += 7) {
     options.dashboardPort = base;
     options.secondaryPort = base + 1;
     options.realtimePort = base + 2;
+    options.rtdePort = base + 3;
     auto simulator = std::make_unique<hw::UrSimulator>(options);
     if (simulator->start().ok()) return simulator;
   }
@@ -491,6 +492,71 @@ TEST(CliRunRobot, CtrlCWhilePausedStopsTheRunOnceTheRobotConfirmsTheStop) {
   EXPECT_EQ(simulator->programsReceived().size(), 2u);
   EXPECT_TRUE(simulator->state().atRest);
   EXPECT_EQ(simulator->state().analogOut[0], 0.0);
+}
+
+// Two paths of one layer at one height that cross, the pause landing on the second right where it crosses the
+// first (the arm holds there in a sleep of the program, so the pause lands there every run): the pause names the
+// move the robot says it runs (its movel register), not the first move of the layer that passes there. Naming
+// the first, the resumed program printed everything between the two again (docs/robot-cell.md, "Pause and
+// resume").
+TEST(CliRunRobot, APauseWhereTwoPathsOfALayerCrossNamesTheMoveTheRobotRunsNotTheFirstThatPassesThere) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.PauseOnCrossingPaths");
+  // Movel 1 to A, 2 from A through C to B (the first path), 3 to D, 4 from D to C (the second path, up to the
+  // crossing), a sleep, 5 on from C to E: both paths at the layer's height, crossing at C.
+  const Eigen::Vector3d a(-10, 0, 0), b(10, 0, 0), c(0, 0, 0), d(0, -10, 0), e(0, 10, 0);
+  std::string text = "def multidir_step_01():\n  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
+  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\n";
+  text += "  movej([0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0], a=1.4, v=1.05)\n";
+  text += "  textmsg(\"multidir step 1 layer 1\")\n";
+  const auto movel = [&](int k, const Eigen::Vector3d& to, double analog) {
+    text += "  set_standard_analog_out(0, " + std::to_string(analog) + ")\n";
+    text += "  write_output_integer_register(24, " + std::to_string(k) + ")\n";
+    text += "  movel(" + urPose(tcpAt(to)) + ", a=1.2, v=0.01, r=0.0)\n";
+  };
+  movel(1, a, 0.0);
+  movel(2, b, 0.25);
+  movel(3, d, 0.0);
+  movel(4, c, 0.25);
+  text += "  sleep(60.0)\n";
+  movel(5, e, 0.25);
+  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\nend\n";
+  writeFile(std::filesystem::path(dir) / "step-01.script", text);
+  writeFile(std::filesystem::path(dir) / "robot-job.json",
+            R"({ "format": "multidir-robot-job", "version": 1, "robot": "ur5", "cell": "cell.json",
+  "steps": [ { "step": 1, "program": "step-01.script", "seconds": 70.0, "filamentMm": 12.0, "moves": 5,
+               "reachMarginMm": 40.0, "slowestJoint": 5, "slowdowns": 0 } ] })");
+  writeFile(std::filesystem::path(dir) / "cell.json",
+            multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json"));
+  const int sleepLine = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(text.find("sleep(")), '\n'));
+  hw::UrSimulatorOptions options;
+  options.speed = 10.0;
+  options.initialJoints = {0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0};
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const std::string pidFile = dir + "/pid";
+  const std::string prefix = multidir::test::pidRecordingPrefix(pidFile, 120);
+  auto cli = std::async(std::launch::async, [&] {
+    return runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, prefix);
+  });
+  // Held at C on the second path, the first passing 0 mm away.
+  const bool pauseSent = multidir::test::signalCliWhen(pidFile, SIGTSTP, [&] {
+    const hw::UrSimulatorState s = simulator->state();
+    return s.programName == "multidir_step_01" && s.programState == "PLAYING" && s.line == sleepLine && s.atRest;
+  });
+  const bool resumeSent = multidir::test::signalCliWhen(pidFile, SIGTSTP, [&] {
+    const hw::UrSimulatorState s = simulator->state();
+    return s.programName == "multidir_pause" && s.programState == "STOPPED" && s.atRest;
+  });
+  const CliRun run = cli.get();
+  ASSERT_TRUE(pauseSent) << run.out << run.err;
+  ASSERT_TRUE(resumeSent) << run.out << run.err;
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("paused at a safe point: step 1 after movel 4 of 5"), std::string::npos) << run.out;
+  // The resumed program goes on with the sleep and movel 5; movel 3 (to D, after the first path) is not run again.
+  const std::vector<std::string> programs = simulator->programsReceived();
+  ASSERT_EQ(programs.size(), 3u);
+  EXPECT_EQ(programs[2].find(urPose(tcpAt(d))), std::string::npos) << programs[2];
+  EXPECT_NE(programs[2].find(urPose(tcpAt(e))), std::string::npos) << programs[2];
 }
 
 TEST(CliRunRobot, AnUnknownArmModelIsAUsageErrorNamingTheKnownOnes) {

@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "multidir/robot/ur_kinematics.h"
 
@@ -179,6 +181,42 @@ TEST(UrController, AProgramOutsideTheSubsetIsRefusedWithARuntimeExceptionNamingT
   EXPECT_EQ(messages[0].kind, multidir::hardware::ur::UrRobotMessage::Kind::RuntimeException);
   EXPECT_EQ(messages[0].line, 3);
   EXPECT_NE(messages[0].text.find("'popup' is not in the URScript subset"), std::string::npos) << messages[0].text;
+}
+
+// A program writes a movel's number to the register just before the movel: the register names the move the arm
+// makes while it makes it (docs/robot-cell.md, "Pause and resume"), and keeps it at the move's end until the
+// next write.
+TEST(UrController, TheMovelRegisterNamesTheMoveTheArmIsMaking) {
+  const robot::ArmModel arm = ur5();
+  UrController c = readyController(arm);
+  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
+  tcp.translation() = Eigen::Vector3d(0.0, 0.0, 50.0);
+  const Eigen::Isometry3d start = robot::forwardKinematics(arm, kStart) * tcp;
+  Eigen::Isometry3d first = start, second = start;
+  first.translation() += Eigen::Vector3d(20.0, 0.0, 0.0);
+  second.translation() += Eigen::Vector3d(20.0, 20.0, 0.0);
+  c.receiveProgram("def step():\n  set_tcp(p[0, 0, 0.05, 0, 0, 0])\n  write_output_integer_register(24, 0)\n"
+                   "  write_output_integer_register(24, 1)\n  movel(" + pose(first) + ", a=1.2, v=0.02)\n"
+                   "  write_output_integer_register(24, 2)\n  movel(" + pose(second) + ", a=1.2, v=0.02)\n"
+                   "  write_output_integer_register(24, 0)\nend\n");
+  ASSERT_EQ(c.programState(), UrProgramState::Playing) << c.lastFault();
+  // Every tick: the register's move is the one whose line the TCP is on (0.01 mm), in order 1 then 2, then 0.
+  std::vector<int> seen;
+  for (int i = 0; i < static_cast<int>(10.0 / kUrTickSeconds) && c.programState() == UrProgramState::Playing; ++i) {
+    c.tick();
+    const int k = c.outputIntRegister(24);
+    if (seen.empty() || seen.back() != k) seen.push_back(k);
+    const Eigen::Vector3d at = (robot::forwardKinematics(arm, c.joints()) * tcp).translation();
+    const Eigen::Vector3d from = k == 2 ? Eigen::Vector3d(first.translation()) : Eigen::Vector3d(start.translation());
+    const Eigen::Vector3d to = k == 2 ? Eigen::Vector3d(second.translation()) : Eigen::Vector3d(first.translation());
+    if (k == 0) continue;
+    const Eigen::Vector3d d = to - from;
+    const double t = std::clamp((at - from).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    EXPECT_LT((from + t * d - at).norm(), 0.01) << "register " << k << " at " << c.time() << " s";
+  }
+  EXPECT_EQ(c.programsFinished(), 1u);
+  EXPECT_EQ(seen, (std::vector<int>{1, 2, 0}));
+  EXPECT_EQ(c.outputIntRegister(25), 0);  // only the written register changed
 }
 
 }  // namespace

@@ -73,6 +73,7 @@ UrLinkSettings linkTo(const UrSimulator& simulator) {
   settings.dashboardPort = simulator.dashboardPort();
   settings.secondaryPort = simulator.secondaryPort();
   settings.realtimePort = simulator.realtimePort();
+  settings.rtdePort = simulator.rtdePort();
   settings.reconnectInterval = 50ms;
   settings.stopResendInterval = 100ms;
   return settings;
@@ -286,6 +287,29 @@ TEST(UrSimulator, WithACellTheTraceHasTheNozzleInThePlatformFrameAndTheFilamentS
     EXPECT_LT((traced - expected).norm(), 1e-6) << record.time;
   }
   EXPECT_DOUBLE_EQ(trace.back().filamentMmPerS, 0.5 * cell->maxFilamentMmPerS);
+}
+
+// The program's movel register (written by write_output_integer_register) reaches the link over RTDE, the
+// real-time interface not carrying the registers; with it the controller time of its package.
+TEST(UrLink, TheProgramsMovelRegisterReachesTheLinkOverRtde) {
+  SteppedClock clock;
+  UrSimulator simulator(optionsOn(clock));
+  ASSERT_TRUE(simulator.start().ok());
+  UrLink link(linkTo(simulator));
+  ASSERT_TRUE(link.connect().ok());
+  ASSERT_TRUE(link.powerOn(5000ms).ok()) << link.status().robotMode;
+  EXPECT_EQ(link.status().movelRegister, 0);
+  ASSERT_TRUE(link.sendProgram("def numbered():\n  write_output_integer_register(24, 7)\n  sleep(2)\n"
+                               "  write_output_integer_register(24, 9)\nend\n")
+                  .ok());
+  ASSERT_TRUE(eventually([&] { return link.status().movelRegister == 7; }, 3000ms));
+  const double sevenAt = link.status().movelRegisterTime;
+  EXPECT_GT(sevenAt, 0.0);
+  ASSERT_TRUE(eventually([&] { return link.status().movelRegister == 9; }, 5000ms));
+  // The package that brought 9 is a later one of the controller's (the first seen with 7 may come late, so no
+  // more than that can be said of the 2 s between the writes).
+  EXPECT_GT(link.status().movelRegisterTime, sevenAt);
+  EXPECT_LE(link.status().movelRegisterTime, link.status().controllerTime + 0.1);
 }
 
 }  // namespace

@@ -93,4 +93,20 @@ TEST(UrScriptProgram, OutOfRangeOutputsAreRefused) {
   EXPECT_NE(digital.error.message.find("0 to 7"), std::string::npos);
 }
 
+// The movel register (docs/robot-cell.md, "Pause and resume"): UR's output integer registers are 0..47.
+TEST(UrScriptProgram, AnOutputIntegerRegisterWriteIsReadAndAnUnknownRegisterIsRefused) {
+  const auto write = parseUrScript("def step():\n  write_output_integer_register(24, 1234)\nend\n");
+  ASSERT_TRUE(write.program) << write.error.message;
+  ASSERT_EQ(write.program->statements.size(), 1u);
+  EXPECT_EQ(write.program->statements[0].kind, UrStatementKind::WriteIntRegister);
+  EXPECT_EQ(write.program->statements[0].index, 24);
+  EXPECT_EQ(write.program->statements[0].integer, 1234);
+  const auto beyond = parseUrScript("def step():\n  write_output_integer_register(48, 1)\nend\n");
+  ASSERT_FALSE(beyond.program);
+  EXPECT_NE(beyond.error.message.find("0 to 47"), std::string::npos);
+  const auto fraction = parseUrScript("def step():\n  write_output_integer_register(24, 1.5)\nend\n");
+  ASSERT_FALSE(fraction.program);
+  EXPECT_NE(fraction.error.message.find("whole number"), std::string::npos);
+}
+
 }  // namespace

@@ -206,6 +206,9 @@ bool UrController::startStatement(const ur::UrStatement& s) {
     case ur::UrStatementKind::TextMsg:
       message(Kind::Text, s.text);
       return false;
+    case ur::UrStatementKind::WriteIntRegister:
+      m_outputIntRegisters[static_cast<std::size_t>(s.index)] = s.integer;
+      return false;
     case ur::UrStatementKind::Sleep:
       if (s.value <= 0.0) return false;
       m_activity = Activity::Sleep;

@@ -7,12 +7,15 @@
 // Motion (docs/hardware.md, "UR controller"): movej moves every joint on one trapezoidal profile (the joint with
 // the longest way at the commanded a and v, the others in proportion); movel moves the TCP on a straight line
 // (orientation by the shortest rotation) on a trapezoidal profile at a and v, and solves the inverse kinematics
-// every tick on the branch nearest the current joints. Moves end at rest (blend radii are read, not blended).
+// every tick on the branch nearest the current joints. Moves end at rest (blend radii are read, not blended), so
+// a statement after a movel (write_output_integer_register before the next movel) runs when the arm is at the
+// movel's end; on a real controller, with a blend, it runs when the blend into the next move begins.
 // Every tick is checked against the arm's joint position and speed limits: a violation is a protective stop.
 // Stops (stop, pause, protective stop, power off, emergency stop) brake every joint to rest together, at
 // kStopDecelerationRadPerS2 for the joint that takes longest, from the speeds of the last tick.
 #include <Eigen/Geometry>
 #include <array>
+#include <cstdint>
 #include <deque>
 #include <optional>
 #include <string>
@@ -84,6 +87,10 @@ class UrController {
   [[nodiscard]] int currentLine() const;
   [[nodiscard]] double analogOut(int index) const { return m_analogOut[static_cast<std::size_t>(index)]; }
   [[nodiscard]] bool digitalOut(int index) const { return (m_digitalOut >> index) & 1u; }
+  // General purpose output integer register 0..47 (write_output_integer_register; RTDE's output_int_register_N).
+  [[nodiscard]] std::int32_t outputIntRegister(int index) const {
+    return m_outputIntRegisters[static_cast<std::size_t>(index)];
+  }
   [[nodiscard]] double nozzleC() const { return m_nozzleC; }
   [[nodiscard]] const std::string& lastFault() const { return m_lastFault; }  // UR's words, "" when none
   [[nodiscard]] std::size_t programsFinished() const { return m_programsFinished; }
@@ -148,6 +155,8 @@ class UrController {
 
   std::array<double, 2> m_analogOut{};
   unsigned m_digitalOut = 0;
+  // Kept from one program to the next; MultiDir's programs write theirs first, so nothing depends on that.
+  std::array<std::int32_t, 48> m_outputIntRegisters{};
   double m_nozzleC = kAmbientC;
   std::string m_lastFault;
   std::vector<ur::UrRobotMessage> m_messages;

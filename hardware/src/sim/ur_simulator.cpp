@@ -1,4 +1,4 @@
-// The UR controller's three client interfaces on loopback sockets, in front of sim::UrController.
+// The UR controller's four client interfaces on loopback sockets, in front of sim::UrController.
 #include "multidir/hardware/ur_simulator.h"
 
 #include <arpa/inet.h>
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -22,6 +23,7 @@
 #include "multidir/robot/ur_kinematics.h"
 #include "sim/listen_socket.h"
 #include "sim/ur_controller.h"
+#include "ur/rtde_wire.h"
 #include "ur/ur_wire.h"
 
 namespace multidir::hardware {
@@ -38,7 +40,8 @@ constexpr int kMaxTicksPerLoop = 12500;              // 100 simulated seconds, t
 constexpr std::chrono::milliseconds kMaxTickingPerLoop{20};
 constexpr const char* kGreeting = "Connected: Universal Robots Dashboard Server\n";
 
-enum class Port { Dashboard, Secondary, Realtime };
+enum class Port { Dashboard, Secondary, Realtime, Rtde };
+constexpr int kPorts = 4;
 
 core::Error invalid(const std::string& where, const std::string& message) {
   return core::Error{core::ErrorCode::InvalidParameter, message, where};
@@ -110,7 +113,7 @@ class UrSimulator::Impl {
     if (!arm) return invalid("model", arm.error().message);
     if (!(m_options.speed > 0.0) || m_options.speed > 100000.0)
       return invalid("--speed", "the speed must be above 0 and at most 100000");
-    for (int port : {m_options.dashboardPort, m_options.secondaryPort, m_options.realtimePort})
+    for (int port : {m_options.dashboardPort, m_options.secondaryPort, m_options.realtimePort, m_options.rtdePort})
       if (port < 0 || port > 65535) return invalid("port", "must be between 0 and 65535");
     if (m_options.fault != UrSimulatorFault::None && m_options.faultAtSeconds < 0.0 && m_options.faultAtLine <= 0)
       return invalid("fault", "a fault needs a time (seconds after the first program started) or a line");
@@ -139,8 +142,9 @@ class UrSimulator::Impl {
                      "analog_out0,analog_out1,nozzle_c,program,line,nozzle_x_mm,nozzle_y_mm,nozzle_z_mm,"
                      "filament_mm_s\n";
     }
-    const int ports[3] = {m_options.dashboardPort, m_options.secondaryPort, m_options.realtimePort};
-    for (int i = 0; i < 3; ++i) {
+    const int ports[kPorts] = {m_options.dashboardPort, m_options.secondaryPort, m_options.realtimePort,
+                               m_options.rtdePort};
+    for (int i = 0; i < kPorts; ++i) {
       core::Result<int> fd = sim::listenTcp(m_options.listenAddress, ports[i], kBacklog);
       if (!fd) {
         closeListeners();
@@ -243,6 +247,10 @@ class UrSimulator::Impl {
     std::string received;
     std::string unsent;
     bool closing = false;
+    // RTDE: the output recipe's variables (set up by the client), sent every tick once started.
+    std::vector<std::string> rtdeOutputs;
+    std::vector<std::string> rtdeTypes;
+    bool rtdeStarted = false;
   };
 
   void closeListeners() {
@@ -313,7 +321,98 @@ class UrSimulator::Impl {
       }
       return;
     }
+    if (client.port == Port::Rtde) {
+      serveRtde(client);
+      return;
+    }
     client.received.clear();  // the real-time interface reads nothing MultiDir sends
+  }
+
+  // RTDE's requests (ur/rtde_wire.h): protocol version 2 accepted, one output recipe (id 1), start, pause.
+  // Inputs are not served: setting them up is refused with recipe id 0, as a controller refuses a recipe whose
+  // inputs another client holds.
+  void serveRtde(Client& client) {
+    while (true) {
+      std::size_t used = 0;
+      const auto* bytes = reinterpret_cast<const std::uint8_t*>(client.received.data());
+      const std::optional<ur::RtdePackage> request = ur::decodeRtde(bytes, client.received.size(), used);
+      if (used == std::numeric_limits<std::size_t>::max()) {
+        client.closing = true;
+        return;
+      }
+      if (!request) return;
+      client.received.erase(0, used);
+      const auto reply = [&](const std::vector<std::uint8_t>& payload) {
+        const std::vector<std::uint8_t> package = ur::encodeRtde(request->type, payload);
+        queue(client, std::string(package.begin(), package.end()));
+      };
+      const std::vector<std::uint8_t>& p = request->payload;
+      switch (request->type) {
+        case ur::RtdeType::RequestProtocolVersion: {
+          const bool accepted = p.size() == 2 && ((p[0] << 8) | p[1]) == ur::kRtdeProtocolVersion;
+          reply(std::vector<std::uint8_t>(1, accepted ? 1 : 0));
+          break;
+        }
+        case ur::RtdeType::SetupOutputs: {
+          if (client.rtdeStarted || p.size() < 8) {
+            reply(std::vector<std::uint8_t>(1, 0));
+            break;
+          }
+          const std::string names(p.begin() + 8, p.end());
+          client.rtdeOutputs.clear();
+          client.rtdeTypes.clear();
+          std::string types;
+          bool known = true;
+          for (std::size_t begin = 0; begin <= names.size();) {
+            std::size_t end = names.find(',', begin);
+            if (end == std::string::npos) end = names.size();
+            client.rtdeOutputs.push_back(names.substr(begin, end - begin));
+            client.rtdeTypes.push_back(ur::rtdeOutputType(client.rtdeOutputs.back()));
+            known = known && client.rtdeTypes.back() != "NOT_FOUND";
+            types += (types.empty() ? "" : ",") + client.rtdeTypes.back();
+            begin = end + 1;
+          }
+          if (!known) client.rtdeOutputs.clear();
+          std::vector<std::uint8_t> payload(types.size() + 1, known ? 1 : 0);
+          std::copy(types.begin(), types.end(), payload.begin() + 1);
+          reply(payload);
+          break;
+        }
+        case ur::RtdeType::SetupInputs:
+          reply(std::vector<std::uint8_t>(1, 0));
+          break;
+        case ur::RtdeType::Start:
+          client.rtdeStarted = !client.rtdeOutputs.empty();
+          reply(std::vector<std::uint8_t>(1, client.rtdeStarted ? 1 : 0));
+          break;
+        case ur::RtdeType::Pause:
+          client.rtdeStarted = false;
+          reply(std::vector<std::uint8_t>(1, 1));
+          break;
+        default:
+          break;  // a data package for inputs nobody set up, or a type this subset does not have: ignored
+      }
+    }
+  }
+
+  // One RTDE data package of the client's recipe with the controller's state now.
+  std::string rtdeData(const Client& client) const {
+    std::vector<std::uint8_t> payload(1, 1);  // the recipe id
+    const ur::UrRealtimeState state = m_controller->realtime();
+    for (const std::string& name : client.rtdeOutputs) {
+      if (name == "timestamp") {
+        ur::putDouble(payload, state.time);
+      } else if (name == "actual_TCP_pose") {
+        for (double v : state.toolVectorActual) ur::putDouble(payload, v);
+      } else if (name == "runtime_state") {
+        ur::putU32(payload, static_cast<std::uint32_t>(state.programState));
+      } else {  // output_int_register_N
+        const int index = std::stoi(name.substr(std::string("output_int_register_").size()));
+        ur::putU32(payload, static_cast<std::uint32_t>(m_controller->outputIntRegister(index)));
+      }
+    }
+    const std::vector<std::uint8_t> package = ur::encodeRtde(ur::RtdeType::DataPackage, payload);
+    return std::string(package.begin(), package.end());
   }
 
   void pollOnce() {
@@ -326,7 +425,7 @@ class UrSimulator::Impl {
     }
     ::poll(fds.data(), fds.size(), 1);
     std::lock_guard<std::mutex> lock(m_mutex);
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < kPorts; ++i)
       if (fds[static_cast<std::size_t>(i)].revents & POLLIN) accept(i);
     for (Client& client : m_clients) {
       char buffer[65536];
@@ -372,6 +471,8 @@ class UrSimulator::Impl {
     // A real controller sends every tick's package; faster than real time the newest is sent, and with it every
     // tick whose modes or program state changed, so a client sees every program start and end.
     std::string packages;
+    // RTDE's packages: the same ticks as the real-time interface's, per client (each has its own recipe).
+    std::vector<std::string> rtde(m_clients.size());
     const auto modes = [&] {
       return std::make_tuple(m_controller->programState(), m_controller->robotMode(), m_controller->safetyMode());
     };
@@ -393,6 +494,8 @@ class UrSimulator::Impl {
       if (modes() != before || last) {
         const std::vector<std::uint8_t> bytes = ur::encodeRealtime(m_controller->realtime());
         packages.append(bytes.begin(), bytes.end());
+        for (std::size_t c = 0; c < m_clients.size(); ++c)
+          if (m_clients[c].port == Port::Rtde && m_clients[c].rtdeStarted) rtde[c] += rtdeData(m_clients[c]);
       }
     }
     std::string messages;
@@ -400,6 +503,8 @@ class UrSimulator::Impl {
       const std::vector<std::uint8_t> bytes = ur::encodeRobotMessage(message);
       messages.append(bytes.begin(), bytes.end());
     }
+    for (std::size_t c = 0; c < m_clients.size(); ++c)
+      if (!rtde[c].empty()) queue(m_clients[c], rtde[c]);
     for (Client& client : m_clients) {
       if (client.port == Port::Realtime && !packages.empty()) queue(client, packages);
       if (client.port == Port::Secondary && !messages.empty()) queue(client, messages);
@@ -482,8 +587,8 @@ class UrSimulator::Impl {
   mutable std::mutex m_mutex;
   mutable std::condition_variable m_advanced;
   std::optional<sim::UrController> m_controller;
-  int m_listen[3] = {-1, -1, -1};
-  int m_port[3] = {0, 0, 0};
+  int m_listen[kPorts] = {-1, -1, -1, -1};
+  int m_port[kPorts] = {0, 0, 0, 0};
   std::vector<Client> m_clients;
   Clock::time_point m_started{};
   std::atomic<bool> m_quit{false};
@@ -507,6 +612,7 @@ void UrSimulator::stop() { m_impl->stop(); }
 int UrSimulator::dashboardPort() const { return m_impl->port(0); }
 int UrSimulator::secondaryPort() const { return m_impl->port(1); }
 int UrSimulator::realtimePort() const { return m_impl->port(2); }
+int UrSimulator::rtdePort() const { return m_impl->port(3); }
 void UrSimulator::protectiveStop(const std::string& reason) { m_impl->protectiveStop(reason); }
 void UrSimulator::pressEmergencyStop() { m_impl->pressEmergencyStop(); }
 void UrSimulator::releaseEmergencyStop() { m_impl->releaseEmergencyStop(); }

@@ -158,6 +158,9 @@ std::string resumeProgram(const StepScript& script, const PauseGeometry& geometr
           std::to_string(script.movels.size()) + " (line " + std::to_string(line + 1) + " of the step's program)\n";
   if (const std::string tcp = lastBefore(script, line, "set_tcp("); !tcp.empty()) text += "  " + tcp + "\n";
   text += "  set_standard_analog_out(0, 0.000000)\n";
+  // The way back down is no movel of the step: the movel register (when the program numbers its movels) says so.
+  if (const std::string numbered = lastBefore(script, line, "write_output_integer_register("); !numbered.empty())
+    text += "  " + numbered.substr(0, numbered.find(',')) + ", 0)\n";
   if (const std::string fan = lastBefore(script, line + 1, "set_standard_digital_out(0,"); !fan.empty())
     text += "  " + fan + "\n";
   const std::string setPoint = lastBefore(script, line + 1, "set_standard_analog_out(1,");

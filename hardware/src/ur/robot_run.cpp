@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "multidir/robot/cell.h"
+#include "multidir/robot/movel_register.h"
 
 namespace multidir::hardware {
 namespace {
@@ -139,7 +140,23 @@ PauseOutcome pauseAtSafePoint(hardware::UrLink& link, const RobotJob& job, const
   // program entered before it held (its messages were sent before the arm came to rest).
   const int layerLine = layerLineNow();
   const std::array<double, 3> tcpMm = {now.tcp[0] * 1000.0, now.tcp[1] * 1000.0, now.tcp[2] * 1000.0};
-  outcome.movel = movelUnderWay(outcome.script, job.pause, tcpMm, 0.2, layerLine);
+  if (robot::programNumbersMovels(step.script)) {
+    // The robot says which movel it runs (its register, on RTDE): wait for the register of the rest state.
+    const auto registerDeadline = Clock::now() + 2s;
+    while (Clock::now() < registerDeadline && link.status().movelRegisterTime < now.controllerTime)
+      std::this_thread::sleep_for(5ms);
+    const hardware::UrLinkStatus held = link.status();
+    if (held.movelRegisterTime < now.controllerTime)
+      return {PauseOutcome::Kind::Failed, "the robot's RTDE state did not follow its real-time state within 2 s", {},
+              -1};
+    const PauseGeometry& g = job.pause;
+    const std::array<double, 3> first = outcome.script.ends.front();
+    const std::array<double, 3> approach = {first[0] - g.liftMm * g.nozzleAxis[0], first[1] - g.liftMm * g.nozzleAxis[1],
+                                            first[2] - g.liftMm * g.nozzleAxis[2]};
+    outcome.movel = robot::movelNamedByRegister(outcome.script.ends, approach, tcpMm, held.movelRegister, 0.2);
+  } else {
+    outcome.movel = movelUnderWay(outcome.script, job.pause, tcpMm, 0.2, layerLine);
+  }
   if (outcome.movel < 0) {
     (void)link.dashboard("play");
     outcome.kind = PauseOutcome::Kind::NotInAMove;

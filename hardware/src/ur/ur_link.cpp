@@ -14,9 +14,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <thread>
 
+#include "multidir/robot/robot_program.h"
+#include "ur/rtde_wire.h"
 #include "ur/ur_wire.h"
 
 namespace multidir::hardware {
@@ -117,15 +120,16 @@ core::Result<UrLinkSettings> parseUrAddress(const std::string& text) {
     const std::string portText = text.substr(colon + 1);
     char* end = nullptr;
     const long port = std::strtol(portText.c_str(), &end, 10);
-    if (portText.empty() || *end != '\0' || port < 1 || port > 65533)
+    if (portText.empty() || *end != '\0' || port < 1 || port > 65532)
       return core::Error{core::ErrorCode::InvalidParameter,
                          "the port in '" + text +
-                             "' must be a whole number from 1 to 65533 (the dashboard's; the "
-                             "secondary and real-time interfaces are the next two)",
+                             "' must be a whole number from 1 to 65532 (the dashboard's; the "
+                             "secondary, real-time and RTDE interfaces are the next three)",
                          "--robot"};
     settings.dashboardPort = static_cast<int>(port);
     settings.secondaryPort = static_cast<int>(port) + 1;
     settings.realtimePort = static_cast<int>(port) + 2;
+    settings.rtdePort = static_cast<int>(port) + 3;
   }
   return settings;
 }
@@ -274,17 +278,22 @@ class UrLink::Impl {
   }
 
   bool open(std::string& why) {
-    const int ports[3] = {m_settings.dashboardPort, m_settings.secondaryPort, m_settings.realtimePort};
-    const char* names[3] = {"the dashboard server", "the secondary interface", "the real-time interface"};
-    int fds[3] = {-1, -1, -1};
-    for (int i = 0; i < 3; ++i) {
+    const int ports[4] = {m_settings.dashboardPort, m_settings.secondaryPort, m_settings.realtimePort,
+                          m_settings.rtdePort};
+    const char* names[4] = {"the dashboard server", "the secondary interface", "the real-time interface",
+                            "the RTDE interface"};
+    int fds[4] = {-1, -1, -1, -1};
+    const auto closeFds = [&] {
+      for (int fd : fds)
+        if (fd >= 0) ::close(fd);
+    };
+    for (int i = 0; i < 4; ++i) {
       std::string reason;
       fds[i] = connectTcp(m_settings.host, ports[i], m_settings.replyTimeout, reason);
       if (fds[i] < 0) {
         why = std::string(names[i]) + " at " + m_settings.host + ":" + std::to_string(ports[i]) +
               " cannot be reached (" + reason + ")";
-        for (int fd : fds)
-          if (fd >= 0) ::close(fd);
+        closeFds();
         return false;
       }
     }
@@ -293,16 +302,95 @@ class UrLink::Impl {
         greeting.rfind("Connected: Universal Robots Dashboard Server", 0) != 0) {
       why = "the dashboard server at " + m_settings.host + ":" + std::to_string(ports[0]) +
             " did not greet as UR's does (\"" + greeting + "\")";
-      for (int fd : fds) ::close(fd);
+      closeFds();
+      return false;
+    }
+    std::string rtdeRest;
+    if (!startRtde(fds[3], rtdeRest, why)) {
+      why = "the RTDE interface at " + m_settings.host + ":" + std::to_string(ports[3]) + " " + why;
+      closeFds();
       return false;
     }
     std::lock_guard<std::mutex> dash(m_dashboardMutex);
     std::lock_guard<std::mutex> sending(m_sendMutex);
     std::lock_guard<std::mutex> streams(m_streamMutex);
-    for (int i = 0; i < 3; ++i) m_fd[i] = fds[i];
+    for (int i = 0; i < 4; ++i) m_fd[i] = fds[i];
     m_buffer[0].clear();
     m_buffer[1].clear();
+    m_buffer[2] = rtdeRest;
     m_lastPackageAt = Clock::now();
+    return true;
+  }
+
+  // One RTDE request and its reply (the package of the same type) within the reply timeout; bytes after the
+  // reply (data packages that follow a start) are kept in `rest`.
+  bool rtdeExchange(int fd, ur::RtdeType type, const std::vector<std::uint8_t>& payload, ur::RtdePackage& reply,
+                    std::string& rest, std::string& why) {
+    const std::vector<std::uint8_t> request = ur::encodeRtde(type, payload);
+    if (!sendAll(fd, std::string(request.begin(), request.end()), m_settings.replyTimeout)) {
+      why = "did not take a request";
+      return false;
+    }
+    const auto deadline = Clock::now() + m_settings.replyTimeout;
+    while (Clock::now() < deadline) {
+      std::size_t used = 0;
+      const auto* bytes = reinterpret_cast<const std::uint8_t*>(rest.data());
+      const std::optional<ur::RtdePackage> package = ur::decodeRtde(bytes, rest.size(), used);
+      if (used == std::numeric_limits<std::size_t>::max()) {
+        why = "sent a package that is not RTDE's format";
+        return false;
+      }
+      if (package) {
+        rest.erase(0, used);
+        if (package->type != type) continue;  // a text message or an earlier recipe's data
+        reply = *package;
+        return true;
+      }
+      char buffer[4096];
+      const ssize_t got = ::recv(fd, buffer, sizeof buffer, 0);
+      if (got > 0) {
+        rest.append(buffer, static_cast<std::size_t>(got));
+        continue;
+      }
+      if (got == 0 || (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
+        why = "closed the connection";
+        return false;
+      }
+      pollfd p{fd, POLLIN, 0};
+      ::poll(&p, 1, 10);
+    }
+    why = "did not answer within " + std::to_string(m_settings.replyTimeout.count()) + " ms";
+    return false;
+  }
+
+  // RTDE protocol version 2, the output recipe (timestamp and the movel register, at the control frequency),
+  // started.
+  bool startRtde(int fd, std::string& rest, std::string& why) {
+    ur::RtdePackage reply;
+    std::vector<std::uint8_t> version;
+    ur::putU16(version, ur::kRtdeProtocolVersion);
+    if (!rtdeExchange(fd, ur::RtdeType::RequestProtocolVersion, version, reply, rest, why)) return false;
+    if (reply.payload.size() != 1 || reply.payload[0] != 1) {
+      why = "refused RTDE protocol version 2 (a controller older than CB3 3.3?)";
+      return false;
+    }
+    std::vector<std::uint8_t> setup;
+    ur::putDouble(setup, 125.0);
+    const std::string names = "timestamp,output_int_register_" + std::to_string(robot::kMovelRegister);
+    setup.insert(setup.end(), names.begin(), names.end());
+    if (!rtdeExchange(fd, ur::RtdeType::SetupOutputs, setup, reply, rest, why)) return false;
+    const std::string types = reply.payload.size() > 1 ? std::string(reply.payload.begin() + 1, reply.payload.end())
+                                                       : std::string();
+    if (reply.payload.empty() || reply.payload[0] == 0 || types != "DOUBLE,INT32") {
+      why = "refused the output recipe " + names + " (types \"" + types + "\")";
+      return false;
+    }
+    m_rtdeRecipe = reply.payload[0];
+    if (!rtdeExchange(fd, ur::RtdeType::Start, {}, reply, rest, why)) return false;
+    if (reply.payload.size() != 1 || reply.payload[0] != 1) {
+      why = "refused to start sending its outputs";
+      return false;
+    }
     return true;
   }
 
@@ -344,10 +432,11 @@ class UrLink::Impl {
   bool readStreams(int waitMs) {
     // Only the worker (or connect() before it starts) reads and replaces the descriptors, so the wait needs no
     // lock: a sender or a dashboard request is never held up by it.
-    if (m_fd[1] < 0 || m_fd[2] < 0) return false;
-    pollfd fds[2] = {{m_fd[1], POLLIN, 0}, {m_fd[2], POLLIN, 0}};
-    ::poll(fds, 2, waitMs);
+    if (m_fd[1] < 0 || m_fd[2] < 0 || m_fd[3] < 0) return false;
+    pollfd fds[3] = {{m_fd[1], POLLIN, 0}, {m_fd[2], POLLIN, 0}, {m_fd[3], POLLIN, 0}};
+    ::poll(fds, 3, waitMs);
     std::lock_guard<std::mutex> streams(m_streamMutex);
+    if (!readRtde()) return false;
     const char* names[2] = {"the secondary interface", "the real-time interface"};
     for (int i = 0; i < 2; ++i) {
       char buffer[65536];
@@ -386,6 +475,49 @@ class UrLink::Impl {
       }
       data.erase(0, at);
     }
+    return true;
+  }
+
+  // RTDE's data packages: the movel register with its timestamp. Called with m_streamMutex held.
+  bool readRtde() {
+    char buffer[65536];
+    while (true) {
+      const ssize_t got = ::recv(m_fd[3], buffer, sizeof buffer, 0);
+      if (got > 0) {
+        m_buffer[2].append(buffer, static_cast<std::size_t>(got));
+        continue;
+      }
+      if (got == 0) {
+        m_lost = "the RTDE interface closed the connection";
+        return false;
+      }
+      if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
+        m_lost = std::string("the RTDE interface: ") + std::strerror(errno);
+        return false;
+      }
+      break;
+    }
+    std::string& data = m_buffer[2];
+    std::size_t at = 0;
+    while (true) {
+      std::size_t used = 0;
+      const auto* bytes = reinterpret_cast<const std::uint8_t*>(data.data() + at);
+      const std::optional<ur::RtdePackage> package = ur::decodeRtde(bytes, data.size() - at, used);
+      if (used == std::numeric_limits<std::size_t>::max()) {
+        m_lost = "the RTDE interface sent a package that is not RTDE's format";
+        return false;
+      }
+      if (!package) break;
+      at += used;
+      // Recipe id, timestamp (DOUBLE), the register (INT32).
+      if (package->type != ur::RtdeType::DataPackage || package->payload.size() != 13 ||
+          package->payload[0] != m_rtdeRecipe)
+        continue;
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_status.movelRegisterTime = ur::getDouble(package->payload.data() + 1);
+      m_status.movelRegister = static_cast<std::int32_t>(ur::getU32(package->payload.data() + 9));
+    }
+    data.erase(0, at);
     return true;
   }
 
@@ -524,8 +656,9 @@ class UrLink::Impl {
   std::mutex m_dashboardMutex;  // the dashboard socket: one request and its reply at a time
   std::mutex m_sendMutex;       // writes to the secondary interface: one program at a time
   std::mutex m_streamMutex;     // reads of the secondary and real-time interfaces and their buffers
-  int m_fd[3] = {-1, -1, -1};   // dashboard, secondary, real-time
-  std::string m_buffer[2];      // secondary, real-time bytes not yet a whole package
+  int m_fd[4] = {-1, -1, -1, -1};  // dashboard, secondary, real-time, RTDE
+  std::string m_buffer[3];         // secondary, real-time, RTDE bytes not yet a whole package
+  std::uint8_t m_rtdeRecipe = 1;   // the output recipe's id, as the controller gave it
   std::atomic<std::uint64_t> m_packages{0};
   Clock::time_point m_lastPackageAt{};
   std::string m_lost;

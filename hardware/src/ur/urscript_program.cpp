@@ -168,6 +168,19 @@ UrStatement statementOf(Reader& reader, int line) {
       reader.refuse("expected True or False");
     }
     reader.expect(")", "to close the call");
+  } else if (name == "write_output_integer_register") {
+    // UR's general purpose output integer registers 0..47, which RTDE reads as output_int_register_N.
+    s.kind = UrStatementKind::WriteIntRegister;
+    const double index = reader.number("the register");
+    if (index != std::floor(index) || index < 0 || index > 47)
+      reader.refuse("the output integer registers are 0 to 47");
+    s.index = static_cast<int>(index);
+    reader.expect(",", "after the register");
+    const double value = reader.number("the register's value");
+    if (value != std::floor(value) || value < -2147483648.0 || value > 2147483647.0)
+      reader.refuse("an integer register holds a whole number from -2147483648 to 2147483647");
+    s.integer = static_cast<std::int32_t>(value);
+    reader.expect(")", "to close the call");
   } else if (name == "movej") {
     s.kind = UrStatementKind::MoveJ;
     s.a = 1.4;
@@ -195,8 +208,8 @@ UrStatement statementOf(Reader& reader, int line) {
     reader.refuseAt(nameAt,
                     "'" + name +
                         "' is not in the URScript subset MultiDir's programs use (set_tcp, "
-                        "set_standard_analog_out, set_standard_digital_out, movej, movel, sleep, textmsg and the "
-                        "heat wait loop)");
+                        "set_standard_analog_out, set_standard_digital_out, write_output_integer_register, movej, "
+                        "movel, sleep, textmsg and the heat wait loop)");
   }
   if (!reader.done()) reader.refuse("unexpected text after the statement");
   return s;

@@ -1,11 +1,13 @@
 #pragma once
 // The subset of URScript that MultiDir's robot programs use (docs/hardware.md, "UR controller"; the contract
 // the program writer `multidir robot-program` follows): one `def NAME():` ... `end` with, one per line,
-// set_tcp, set_standard_analog_out, set_standard_digital_out, movej, movel, sleep, textmsg and the heat wait
+// set_tcp, set_standard_analog_out, set_standard_digital_out, write_output_integer_register, movej, movel, sleep,
+// textmsg and the heat wait
 // `while get_standard_analog_in(0) < X:` / `sync()` / `end`. Anything else is refused with the line and column,
 // as the controller's compile error names them, so the simulator runs exactly what the program writer may emit.
 // URScript's own units stay here: metres, radians, seconds.
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +23,7 @@ enum class UrStatementKind {
   Sleep,              // value = seconds
   TextMsg,            // text
   WaitAnalogInBelow,  // while get_standard_analog_in(index) < value: sync() end
+  WriteIntRegister,   // write_output_integer_register(index, integer): index 0..47, integer in `integer`
 };
 
 struct UrStatement {
@@ -29,6 +32,7 @@ struct UrStatement {
   std::array<double, 6> pose{};
   int index = 0;
   double value = 0.0;
+  std::int32_t integer = 0;
   bool flag = false;
   double a = 0.0;
   double v = 0.0;

@@ -1,8 +1,10 @@
 #pragma once
 // The link to a Universal Robots controller (docs/hardware.md, "UR controller"): its dashboard server (power,
 // brakes, program state, stops), its secondary interface (programs sent as URScript text; the controller's
-// robot messages read back: textmsg texts, runtime exceptions with their line, error codes with UR's words) and
-// its real-time interface (the joints, speeds, TCP, robot, safety and program state of every control tick).
+// robot messages read back: textmsg texts, runtime exceptions with their line, error codes with UR's words), its
+// real-time interface (the joints, speeds, TCP, robot, safety and program state of every control tick) and RTDE
+// (the output integer register the programs write the running movel's number to, robot::kMovelRegister: the
+// real-time interface does not carry the registers).
 //
 // A worker thread reads both streams and keeps status(); when a socket closes or the real-time stream stays
 // silent for `silenceLimit`, the link is lost: status() says so and why, and the worker reconnects every
@@ -32,14 +34,15 @@ struct UrLinkSettings {
   int dashboardPort = 29999;
   int secondaryPort = 30002;
   int realtimePort = 30003;
+  int rtdePort = 30004;
   std::chrono::milliseconds replyTimeout{2000};  // a dashboard reply
   std::chrono::milliseconds silenceLimit{1000};  // no real-time package this long: the link is lost
   std::chrono::milliseconds reconnectInterval{250};
   std::chrono::milliseconds stopResendInterval{200};
 };
 
-// "HOST" or "HOST:PORT" (PORT the dashboard's; the secondary and real-time ports follow it as on the
-// simulator: PORT+1, PORT+2; without PORT UR's own 29999, 30002, 30003). InvalidParameter for a bad text.
+// "HOST" or "HOST:PORT" (PORT the dashboard's; the secondary, real-time and RTDE ports follow it as on the
+// simulator: PORT+1, PORT+2, PORT+3; without PORT UR's own 29999, 30002, 30003, 30004). InvalidParameter for a bad text.
 core::Result<UrLinkSettings> parseUrAddress(const std::string& text);
 
 struct UrLinkStatus {
@@ -55,6 +58,10 @@ struct UrLinkStatus {
   std::array<double, 6> jointSpeeds{};  // rad/s
   std::array<double, 6> tcp{};          // x, y, z (m), rotation vector (rad)
   bool atRest = true;                   // every joint speed below 1e-6 rad/s
+  // The movel the program runs (RTDE's output_int_register_24, written by the program before each movel:
+  // 1-based within the program, 0 outside any movel) and the controller time of the RTDE package it came in.
+  int movelRegister = 0;
+  double movelRegisterTime = -1.0;
   // Program starts (into PLAYING) and ends (back to STOPPED) seen in the real-time stream since connect().
   std::uint64_t programStarts = 0;
   std::uint64_t programEnds = 0;
@@ -80,7 +87,7 @@ class UrLink {
   UrLink(const UrLink&) = delete;
   UrLink& operator=(const UrLink&) = delete;
 
-  // Connects the three interfaces and waits for the first real-time package. DeviceUnreachable naming the
+  // Connects the four interfaces (RTDE: protocol version 2, its output recipe started) and waits for the first real-time package. DeviceUnreachable naming the
   // interface and port that did not answer. The worker keeps the link up from then on until disconnect().
   core::Status connect();
   void disconnect();

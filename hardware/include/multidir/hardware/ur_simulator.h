@@ -7,7 +7,9 @@
 //   - the secondary interface (30002): a URScript program sent as text runs once its top-level `end` arrives
 //     (the subset MultiDir's programs use; anything else is refused with a runtime exception naming the line);
 //     the controller sends robot messages (version on connect, textmsg texts, runtime exceptions, error codes);
-//   - the real-time interface (30003): the 1108-byte state package every control tick (125 Hz).
+//   - the real-time interface (30003): the 1108-byte state package every control tick (125 Hz);
+//   - RTDE (30004, protocol version 2, outputs only): timestamp, actual_TCP_pose, runtime_state and the output
+//     integer registers output_int_register_0..47 (what the programs' write_output_integer_register set).
 // The arm moves by the kinematic model of MultiDir's robot library (sim/ur_controller.h), `speed` times
 // faster than real time on the injectable clock. Every tick in which a program runs or the arm moves is traced
 // (joints, TCP pose, analog outputs, nozzle temperature), kept for tests and/or written as CSV.
@@ -37,6 +39,7 @@ struct UrSimulatorOptions {
   int dashboardPort = 0;                    // 0: a free port (UR's: 29999)
   int secondaryPort = 0;                    // (UR's: 30002)
   int realtimePort = 0;                     // (UR's: 30003)
+  int rtdePort = 0;                         // (UR's: 30004)
   double speed = 1.0;                       // simulated seconds per real second, (0, 100000]
   // A robot cell file (docs/robot-cell.md): the arm gets the cell's joint limits and starts at its home
   // joints; its robot must be `model`. "" for the model's own limits and initialJoints.
@@ -105,13 +108,14 @@ class UrSimulator {
   UrSimulator(const UrSimulator&) = delete;
   UrSimulator& operator=(const UrSimulator&) = delete;
 
-  // Binds the three ports and starts. InvalidParameter for bad options (an unknown model names the known
+  // Binds the four ports and starts. InvalidParameter for bad options (an unknown model names the known
   // ones); Internal when a port cannot be bound, saying why.
   core::Status start();
   void stop();
   [[nodiscard]] int dashboardPort() const;
   [[nodiscard]] int secondaryPort() const;
   [[nodiscard]] int realtimePort() const;
+  [[nodiscard]] int rtdePort() const;
 
   // Faults, now.
   void protectiveStop(const std::string& reason);

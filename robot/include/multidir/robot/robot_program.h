@@ -17,6 +17,11 @@ namespace multidir::robot {
 // Before a step's first move and after its last, the platform stands this far off the nozzle along its axis (the
 // approach and retreat); a paused step backs off and comes back down by the same (docs/robot-cell.md).
 constexpr double kStepApproachLiftMm = 30.0;
+// The general purpose output integer register a step's program writes the number of the movel it starts to
+// (1-based within the program; 0 before the first and in the joint moves), so a pause knows the move the arm is
+// on from the robot itself (RTDE's output_int_register_24; docs/robot-cell.md, "Pause and resume"). UR's RTDE
+// guide leaves registers 24..47 to external clients; 0..23 may be taken by a fieldbus (EtherNet/IP, PROFINET).
+constexpr int kMovelRegister = 24;
 
 struct RobotProgramOptions {
   double rotationStepDegrees = 10.0;  // the free rotation about the nozzle axis is sampled this finely per step
