@@ -220,6 +220,8 @@ class PlaneSplitter {
     detail::reserveInHugePages(m_below.origins, faceCount);
     detail::reserveInHugePages(m_above.triangles, faceCount);
     detail::reserveInHugePages(m_above.origins, faceCount);
+    detail::reserveInHugePages(m_below.sourceFace, faceCount);
+    detail::reserveInHugePages(m_above.sourceFace, faceCount);
     for (std::size_t f = 0; f < faceCount; ++f)
       splitFace(m_solid.triangles[f], m_solid.origins[f], static_cast<std::int32_t>(f));
   }
