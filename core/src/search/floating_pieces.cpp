@@ -41,10 +41,12 @@ bool certainlyLeavesFloatingPiece(const TriangleMesh& solid, const Plane& plane,
   auto below = [&](std::int32_t v) { return distance[v] < marginMm; };
 
   UnionFind sets(solid.vertices.size());
+  std::vector<char> inFaceBelow(solid.vertices.size(), 0);  // a corner below the plane of some face
   for (const Triangle& t : solid.triangles) {
     std::int32_t first = -1;
     for (std::int32_t v : t) {
       if (!below(v)) continue;
+      inFaceBelow[static_cast<std::size_t>(v)] = 1;
       if (first < 0) first = v;
       else sets.unite(first, v);
     }
@@ -61,34 +63,42 @@ bool certainlyLeavesFloatingPiece(const TriangleMesh& solid, const Plane& plane,
     piece.boxMin = piece.boxMin.cwiseMin(inPlane);
     piece.boxMax = piece.boxMax.cwiseMax(inPlane);
   };
-  for (const Triangle& t : solid.triangles) {
-    std::int32_t anyBelow = -1;
-    for (std::int32_t v : t)
-      if (below(v)) anyBelow = v;
-    if (anyBelow < 0) continue;
-    std::int32_t& id = pieceOfRoot[sets.find(anyBelow)];
+  auto pieceOf = [&](std::int32_t vertex) -> Piece& {
+    std::int32_t& id = pieceOfRoot[sets.find(vertex)];
     if (id < 0) {
       id = static_cast<std::int32_t>(pieces.size());
       pieces.emplace_back();
     }
-    Piece& piece = pieces[id];
-    // The face's part below the plane: its corners below and the points where its edges cross the plane.
+    return pieces[id];
+  };
+  // A piece's lowest point and box are a minimum and a maximum over its corners below the plane and the points
+  // where its faces' edges cross the plane: each corner counts once, whichever faces hold it (it used to be
+  // measured once per face around it), and only the faces that cross the plane have crossings.
+  for (std::size_t a = 0; a < distance.size(); ++a) {
+    if (!inFaceBelow[a]) continue;
+    Piece& piece = pieceOf(static_cast<std::int32_t>(a));
+    const Vec3& pa = solid.vertices[a];
+    // A corner farther than the margin from the plane is never moved by the clip: its height is exact.
+    // Points at the plane may move by up to the margin.
+    if (distance[a] <= -marginMm) {
+      piece.lowestMm = std::min(piece.lowestMm, up.dot(pa));
+    } else {
+      piece.lowestMm = std::min(piece.lowestMm, up.dot(pa) - marginMm);
+      addToBox(piece, pa);
+    }
+  }
+  for (const Triangle& t : solid.triangles) {
+    const bool negative[3] = {distance[t[0]] < 0.0, distance[t[1]] < 0.0, distance[t[2]] < 0.0};
+    if (negative[0] == negative[1] && negative[1] == negative[2]) continue;  // no edge crosses the plane
+    // A corner below 0 is below the margin too: the face's piece is that corner's.
+    Piece& piece = pieceOf(t[negative[0] ? 0 : negative[1] ? 1 : 2]);
     for (int k = 0; k < 3; ++k) {
       const std::int32_t a = t[k], b = t[(k + 1) % 3];
+      if (negative[k] == negative[(k + 1) % 3]) continue;
       const Vec3& pa = solid.vertices[a];
-      // A corner farther than the margin from the plane is never moved by the clip: its height is exact.
-      // Points at the plane may move by up to the margin.
-      if (distance[a] <= -marginMm) {
-        piece.lowestMm = std::min(piece.lowestMm, up.dot(pa));
-      } else if (below(a)) {
-        piece.lowestMm = std::min(piece.lowestMm, up.dot(pa) - marginMm);
-        addToBox(piece, pa);
-      }
-      if ((distance[a] < 0.0) != (distance[b] < 0.0)) {
-        const Vec3 crossing = pa + (solid.vertices[b] - pa) * (distance[a] / (distance[a] - distance[b]));
-        piece.lowestMm = std::min(piece.lowestMm, up.dot(crossing) - marginMm);
-        addToBox(piece, crossing);
-      }
+      const Vec3 crossing = pa + (solid.vertices[b] - pa) * (distance[a] / (distance[a] - distance[b]));
+      piece.lowestMm = std::min(piece.lowestMm, up.dot(crossing) - marginMm);
+      addToBox(piece, crossing);
     }
   }
   const double level = platformLevelMm;

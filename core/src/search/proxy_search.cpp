@@ -136,6 +136,7 @@ Decomposition cutOnFullMesh(const TriangleMesh& model, const MachineSpec& machin
   // decimated() accepted the model, so it is a closed, oriented 2-manifold (the verdict clipByPlane's check
   // would reach), and the callers' checkSearchInputs found its volume positive.
   engine.trustModelClosed();
+  engine.measureCutsOnTwoThreads();  // one cut after the other: nothing else runs beside them
   std::vector<std::string> notes;
   bool dropped = false;
   std::shared_ptr<const SearchNode> node = engine.root();

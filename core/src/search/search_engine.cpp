@@ -51,18 +51,32 @@ SearchEngine::SearchEngine(const SearchEngine& base, const SearchOptions& option
       m_modelChecked(base.m_modelChecked.load()),
       m_firstLevelCandidates(base.m_firstLevelCandidates) {}
 
-std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const TriangleMesh> remaining) const {
-  auto node = std::make_shared<SearchNode>();
+SearchEngine::RemainingMeasures SearchEngine::measureRemaining(const TriangleMesh& remaining) const {
+  RemainingMeasures measures;
   // The remaining part always stands on the original platform (Criterion II), so its platform height is
   // the model's; analyzeOverhang finds the same lowest point.
-  const auto analysis = analyzeOverhang(*remaining, m_machine.up, overhangOptions(RegionBase::Platform));
+  const auto analysis = analyzeOverhang(remaining, m_machine.up, overhangOptions(RegionBase::Platform));
   if (analysis.ok()) {
-    node->riskyUpShare.resize(remaining->triangles.size(), 0.0);
-    for (std::size_t f = 0; f < remaining->triangles.size(); ++f)
-      if (analysis->risky[f]) node->riskyUpShare[f] = analysis->riskyFaceAreaMm2[f] / remaining->faceArea(f);
-    node->riskyUpAreaMm2 = analysis->riskyAreaMm2;
+    measures.riskyUpShare.resize(remaining.triangles.size(), 0.0);
+    for (std::size_t f = 0; f < remaining.triangles.size(); ++f)
+      if (analysis->risky[f]) measures.riskyUpShare[f] = analysis->riskyFaceAreaMm2[f] / remaining.faceArea(f);
+    measures.riskyUpAreaMm2 = analysis->riskyAreaMm2;
   }
-  node->volumeMm3 = signedVolume(*remaining);
+  measures.volumeMm3 = signedVolume(remaining);
+  return measures;
+}
+
+std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const TriangleMesh> remaining) const {
+  RemainingMeasures measures = measureRemaining(*remaining);
+  return makeNode(std::move(remaining), std::move(measures));
+}
+
+std::shared_ptr<SearchNode> SearchEngine::makeNode(std::shared_ptr<const TriangleMesh> remaining,
+                                                   RemainingMeasures measures) const {
+  auto node = std::make_shared<SearchNode>();
+  node->riskyUpShare = std::move(measures.riskyUpShare);
+  node->riskyUpAreaMm2 = measures.riskyUpAreaMm2;
+  node->volumeMm3 = measures.volumeMm3;
   node->remaining = std::move(remaining);
   return node;
 }
@@ -198,8 +212,10 @@ int SearchEngine::addNormal(const Vec3& normal) {
 }
 
 std::shared_ptr<SearchNode> SearchEngine::makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
-                                                  ClipResult clipped, double regionRiskyMm2) const {
-  auto child = makeNode(std::make_shared<const TriangleMesh>(std::move(clipped.below)));
+                                                  ClipResult clipped, double regionRiskyMm2,
+                                                  std::optional<RemainingMeasures> measured) const {
+  auto below = std::make_shared<const TriangleMesh>(std::move(clipped.below));
+  auto child = measured ? makeNode(std::move(below), std::move(*measured)) : makeNode(std::move(below));
   // The parent's faces that the child keeps unchanged (same corners, same risky share); the rest differ.
   // (Without both analyses every face counts as changed, which is still exact.)
   const bool sharesKnown = child->riskyUpShare.size() == child->remaining->triangles.size() &&
@@ -262,17 +278,37 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
                  where};
   if (clipped->below.empty())
     return Error{ErrorCode::InvalidParameter, "the plane leaves nothing below it to stand on the platform", where};
-  if (!sequenceFree() && !standsOnPlatform(clipped->below))
+  // The part below's measures (Criterion II, then the child node's) and the region above's (its height and
+  // float image, its risky area) do not depend on each other: on two threads when the cuts run alone. The
+  // checks below read them in the same order either way, so a refusal is the same.
+  bool stands = true;
+  std::optional<RemainingMeasures> belowMeasures;
+  std::string why;
+  std::optional<Result<OverhangAnalysis>> risky;
+  auto measureBelow = [&] {
+    stands = sequenceFree() || standsOnPlatform(clipped->below);
+    if (stands) belowMeasures = measureRemaining(clipped->below);
+  };
+  auto measureAbove = [&] {
+    why = unprintableReason(*clipped, plane, keepsFloat);
+    if (why.empty()) risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(cutRegionBase()));
+  };
+  if (m_measureCutsOnTwoThreads) {
+    parallelFor(2, std::min(2, threads()), [&](int task) { task == 0 ? measureBelow() : measureAbove(); });
+  } else {  // the child's measures are taken only once every check passed (makeChild)
+    stands = sequenceFree() || standsOnPlatform(clipped->below);
+    if (stands) measureAbove();
+  }
+  if (!stands)
     return Error{ErrorCode::InvalidParameter,
                  "after this cut a piece below the plane no longer stands on the platform (Criterion II): move or "
                  "tilt the plane so the part below stays in one piece on the platform",
                  where};
-  if (const std::string why = unprintableReason(*clipped, plane, keepsFloat); !why.empty())
-    return Error{ErrorCode::InvalidParameter, why, where};
-  const auto risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(cutRegionBase()));
-  if (!risky.ok()) return Error{risky.error().code, risky.error().message, where};
-  const double regionRisky = risky->riskyAreaMm2;
-  return std::shared_ptr<const SearchNode>(makeChild(node, plane, std::move(*clipped), regionRisky));
+  if (!why.empty()) return Error{ErrorCode::InvalidParameter, why, where};
+  if (!risky->ok()) return Error{risky->error().code, risky->error().message, where};
+  const double regionRisky = (*risky)->riskyAreaMm2;
+  return std::shared_ptr<const SearchNode>(
+      makeChild(node, plane, std::move(*clipped), regionRisky, std::move(belowMeasures)));
 }
 
 RegionBase SearchEngine::cutRegionBase() const {

@@ -34,6 +34,11 @@ class SearchEngine {
   // positive volume (the proxy search: decimated() checked the same mesh): its clips then skip that check,
   // which is half the time of a clip of a million faces. Debug builds check anyway.
   void trustModelClosed() { m_modelChecked = true; }
+  // The engine's cuts run one at a time (the proxy's plan cut on the full mesh): cut() then measures the part
+  // below (Criterion II, its risky area along up, its volume) on a second thread while it measures the region
+  // above. Each measurement writes its own result, so the node is the same for any thread count. Off by
+  // default: the search and polishing call cut() and extend() on every thread already.
+  void measureCutsOnTwoThreads() { m_measureCutsOnTwoThreads = true; }
 
   // Every admissible candidate of a node (Criterion III by construction, minimal volume above), in a
   // fixed order (normal, then offset). Sets `cancelled` and returns early when the job is cancelled.
@@ -101,9 +106,18 @@ class SearchEngine {
   // Why a clip's two parts cannot be regions (too thin, not savable: clipSavably's `keepsFloat`), or empty
   // when they can.
   std::string unprintableReason(const ClipResult& clipped, const Plane& plane, bool keepsFloat) const;
+  // What a node keeps of its remaining part along up: each face's risky share, the risky area, the volume.
+  struct RemainingMeasures {
+    std::vector<double> riskyUpShare;
+    double riskyUpAreaMm2 = 0.0;
+    double volumeMm3 = 0.0;
+  };
+  RemainingMeasures measureRemaining(const TriangleMesh& remaining) const;
   std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining) const;
+  std::shared_ptr<SearchNode> makeNode(std::shared_ptr<const TriangleMesh> remaining, RemainingMeasures measures) const;
   std::shared_ptr<SearchNode> makeChild(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
-                                        ClipResult clipped, double regionRiskyMm2) const;
+                                        ClipResult clipped, double regionRiskyMm2,
+                                        std::optional<RemainingMeasures> measured = std::nullopt) const;
 
   const MachineSpec& m_machine;
   const SearchOptions& m_options;
@@ -124,6 +138,7 @@ class SearchEngine {
   std::atomic<bool> m_modelChecked{false};  // the model passed clipByPlane's closed-solid check once
   std::atomic<int> m_clips{0};  // extend() and cut() run on several threads at once
   int m_firstLevelCandidates = -1;
+  bool m_measureCutsOnTwoThreads = false;
 };
 
 }  // namespace multidir::core::detail

@@ -84,6 +84,13 @@ TEST_F(ProxySearch, GivesTheSamePlanOnOneThreadAsOnAll) {
     EXPECT_EQ(one.clippingPlanes[k].normal, proxyPlan->clippingPlanes[k].normal) << "plane " << k + 1;
     EXPECT_EQ(one.clippingPlanes[k].offset, proxyPlan->clippingPlanes[k].offset) << "plane " << k + 1;
   }
+  // The full mesh's cuts measure each region on two threads when there are two: the same numbers on one.
+  ASSERT_EQ(one.regions.size(), proxyPlan->regions.size());
+  for (std::size_t r = 0; r < one.regions.size(); ++r) {
+    EXPECT_EQ(one.regions[r].riskyAreaMm2, proxyPlan->regions[r].riskyAreaMm2) << "region " << r + 1;
+    EXPECT_EQ(one.regions[r].volumeMm3, proxyPlan->regions[r].volumeMm3) << "region " << r + 1;
+    EXPECT_EQ(one.regions[r].mesh.faceCount(), proxyPlan->regions[r].mesh.faceCount()) << "region " << r + 1;
+  }
 }
 
 TEST_F(ProxySearch, ThePlanIsWithinATenthOfTheOriginalModelsPlan) {
