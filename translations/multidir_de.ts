@@ -2055,6 +2055,10 @@
         <source>5-DOF: robot arm under a fixed extruder</source>
         <translation>5-DOF: Roboterarm unter einem feststehenden Extruder</translation>
     </message>
+    <message>
+        <source>Apart (plain printer, parts joined by dowels)</source>
+        <translation>Getrennt (einfacher Drucker, Teile mit Dübeln verbunden)</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MainWindow</name>
@@ -4842,6 +4846,38 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 %2</source>
         <translation>%1
 %2</translation>
+    </message>
+    <message>
+        <source> mm²</source>
+        <translation> mm²</translation>
+    </message>
+    <message>
+        <source>Apart: the risky area one more part must save, for its dowels and handling (the support whose print time equals its dowels&apos;)</source>
+        <translation>Getrennt: die Risikofläche, die ein weiteres Teil einsparen muss, für seine Dübel und die Handhabung (die Stützen, deren Druckzeit der seiner Dübel gleicht)</translation>
+    </message>
+    <message>
+        <source> mm² per mm² of cut face</source>
+        <translation> mm² je mm² Schnittfläche</translation>
+    </message>
+    <message>
+        <source>Apart: the risky area one more part must save for every mm² of its cut face, whose two sides are printed solid</source>
+        <translation>Getrennt: die Risikofläche, die ein weiteres Teil je mm² seiner Schnittfläche einsparen muss, deren beide Seiten massiv gedruckt werden</translation>
+    </message>
+    <message>
+        <source>Price of a part:</source>
+        <translation>Preis eines Teils:</translation>
+    </message>
+    <message>
+        <source>... and of its cut face:</source>
+        <translation>... und seiner Schnittfläche:</translation>
+    </message>
+    <message>
+        <source>Apart search (1 of 2), %1</source>
+        <translation>Suche für den getrennten Druck (1 von 2), %1</translation>
+    </message>
+    <message>
+        <source>5-DOF search for the bound (2 of 2), %1</source>
+        <translation>5-DOF-Suche für die Schranke (2 von 2), %1</translation>
     </message>
 </context>
 <context>

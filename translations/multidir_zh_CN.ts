@@ -2049,6 +2049,10 @@
         <source>5-DOF: robot arm under a fixed extruder</source>
         <translation>5 自由度：固定挤出机下的机械臂</translation>
     </message>
+    <message>
+        <source>Apart (plain printer, parts joined by dowels)</source>
+        <translation>分开打印（普通打印机，零件用定位销连接）</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::MainWindow</name>
@@ -4832,6 +4836,38 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 %2</source>
         <translation>%1
 %2</translation>
+    </message>
+    <message>
+        <source> mm²</source>
+        <translation> mm²</translation>
+    </message>
+    <message>
+        <source>Apart: the risky area one more part must save, for its dowels and handling (the support whose print time equals its dowels&apos;)</source>
+        <translation>分开打印：每多一个零件必须节省的风险面积，用于其定位销和操作（打印时间与其定位销相同的支撑）</translation>
+    </message>
+    <message>
+        <source> mm² per mm² of cut face</source>
+        <translation> mm²/每 mm² 切割面</translation>
+    </message>
+    <message>
+        <source>Apart: the risky area one more part must save for every mm² of its cut face, whose two sides are printed solid</source>
+        <translation>分开打印：每多一个零件，其切割面每 mm² 必须节省的风险面积（切割面两侧均为实心打印）</translation>
+    </message>
+    <message>
+        <source>Price of a part:</source>
+        <translation>零件的代价：</translation>
+    </message>
+    <message>
+        <source>... and of its cut face:</source>
+        <translation>……及其切割面的代价：</translation>
+    </message>
+    <message>
+        <source>Apart search (1 of 2), %1</source>
+        <translation>分开打印搜索（1 / 2），%1</translation>
+    </message>
+    <message>
+        <source>5-DOF search for the bound (2 of 2), %1</source>
+        <translation>用于上界的 5-DOF 搜索（2 / 2），%1</translation>
     </message>
 </context>
 <context>

@@ -673,6 +673,7 @@ void MainWindow::onMachineChanged() {
   m_viewer->setRotationAxis(axis);
   if (!rotary && m_axisPicker) m_axisPicker->cancel();
   m_searchPanel->setRotaryMachine(rotary);
+  m_searchPanel->setApartMachine(machine.kind == core::MachineKind::Apart);
   updateRunnable();
 }
 

@@ -1,5 +1,7 @@
 #include "multidir/apart/print_apart.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -34,12 +36,6 @@ core::TriangleMesh atOrigin(core::TriangleMesh mesh) {
   const core::BoundingBox box = core::boundingBox(mesh);
   for (core::Vec3& v : mesh.vertices) v -= box.min;
   return mesh;
-}
-
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
 }
 
 // The whole model in one piece along up (the first region's printing direction), centred on the bed.
@@ -111,10 +107,18 @@ core::Result<slicing::Estimate> sliceMesh(const core::TriangleMesh& mesh, const 
 std::vector<std::pair<std::string, std::string>> withSupports(double alphaMaxDegrees) {
   return {{"support_material", "1"},
           {"support_material_auto", "1"},
-          {"support_material_threshold", fixed(alphaMaxDegrees, 0)}};
+          {"support_material_threshold", std::to_string(slicerSupportThreshold(alphaMaxDegrees))}};
 }
 
 }  // namespace
+
+int slicerSupportThreshold(double alphaMaxDegrees) {
+  // PrusaSlicer 2.5 supports a face whose slope from the horizontal is below the threshold + 1 degree ("+1
+  // makes the threshold inclusive", SupportMaterial.cpp); the threshold is a whole number and 0 means its
+  // own automatic rule. A face is risky when its normal is less than alpha from straight down, which is its
+  // slope (docs/apart.md, "Where the slicer puts support").
+  return std::max(1, static_cast<int>(std::floor(alphaMaxDegrees)) - 1);
+}
 
 assembly::PlateOptions plateOptionsFor(const std::optional<slicing::PrinterProfile>& printer) {
   assembly::PlateOptions plates;

@@ -37,7 +37,9 @@ const char* const kApartHelp =
     "                       limited in size and nothing is sliced\n"
     "  --up DIRECTION       a model's up: x, y, z, -x, -y, -z or a,b,c (default: z)\n"
     "  --scheme NAME        a model's search: beam, greedy or cgreedy (default: beam)\n"
-    "  --part-cost MM2      a model's search: the risky area one more part must save (default: 240)\n"
+    "  --part-cost MM2      a model's search: the risky area one more part must save, for its dowels and\n"
+    "                       handling (default: 120) ...\n"
+    "  --cut-face-cost C    ... and C mm^2 more per mm^2 of its cut face (default: 0.28; docs/apart.md)\n"
     "  --max-parts N        refuse a plan that needs more parts than this to fit the printer (default: 64)\n"
     "  --no-slice           with --printer: lay out and write the parts, but run no slicer\n"
     "  --scale FACTOR       multiply a model's coordinates by FACTOR (default: 1)\n"
@@ -61,7 +63,7 @@ core::Decomposition planFrom(const ParsedArgs& parsed, const std::string& input,
                              std::ostream& out) {
   const bool isPlan = fs::is_directory(input) || fs::path(input).filename() == "plan.json";
   if (isPlan) {
-    for (const char* option : {"--up", "--scheme", "--part-cost", "--scale"})
+    for (const char* option : {"--up", "--scheme", "--part-cost", "--cut-face-cost", "--scale"})
       if (parsed.has(option))
         throw UsageError(kCommand + ": " + option + " is for a model; a plan is printed apart as it was searched");
     core::Result<core::LoadedPlan> loaded = core::loadPlan(input);
@@ -88,11 +90,13 @@ core::Decomposition planFrom(const ParsedArgs& parsed, const std::string& input,
     options.scheme = *scheme;
   }
   if (parsed.has("--part-cost")) options.partCostMm2 = parseNumber(parsed.value("--part-cost", ""), "--part-cost");
+  if (parsed.has("--cut-face-cost"))
+    options.cutFaceCost = parseNumber(parsed.value("--cut-face-cost", ""), "--cut-face-cost");
   if (core::Status valid = core::validate(options); !valid)
     throw UsageError(kCommand + ": " + valid.error().message);
   alphaMaxDegrees = options.alphaMaxDegrees;
   out << "Searching " << input << " for the apart machine (" << core::schemeName(options.scheme) << ", part cost "
-      << fixed(options.partCostMm2, 0) << " mm^2)\n";
+      << fixed(options.partCostMm2, 0) << " mm^2 + " << fixed(options.cutFaceCost, 2) << " per mm^2 of cut face)\n";
   core::JobContext job;
   core::Result<core::Decomposition> plan = core::decompose(model->mesh, machine, options, job);
   if (!plan) throw FileError(kCommand + ": " + plan.error().describe());
@@ -105,8 +109,9 @@ core::Decomposition planFrom(const ParsedArgs& parsed, const std::string& input,
 
 int runApart(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   (void)err;
-  const ParsedArgs parsed = parseArgs(args, {"-o", "--printer", "--up", "--scheme", "--part-cost", "--max-parts", "--scale"},
-                                      {"--help", "--no-slice"}, "apart");
+  const ParsedArgs parsed =
+      parseArgs(args, {"-o", "--printer", "--up", "--scheme", "--part-cost", "--cut-face-cost", "--max-parts", "--scale"},
+                {"--help", "--no-slice"}, "apart");
   if (parsed.has("--help")) {
     out << kApartHelp;
     return kExitOk;

@@ -62,8 +62,10 @@ const char* const kDecomposeHelp =
     "                       J_G before (default: 1) ...\n"
     "  --min-plane-gain-area MM2\n"
     "                       ... and by at least this area (default: 1)\n"
-    "  --part-cost MM2      apart: a plane stays only if removing it would raise J_G by at least this, the\n"
-    "                       risky area whose supports cost as much as one more part (default: 240; docs/apart.md)\n"
+    "  --part-cost MM2      apart: the fixed price of one more part, the risky area whose supports cost as much\n"
+    "                       print time as its dowels (default: 120; docs/apart.md) ...\n"
+    "  --cut-face-cost C    apart: ... plus C mm^2 per mm^2 of its cut face, whose two sides are printed solid\n"
+    "                       (default: 0.28). A plane stays only if removing it would raise J_G by its price\n"
     "  --threads N          worker threads, 0 = all (default: 0)\n"
     "  --proxy-faces N      a model of more than N faces is searched on a simplified copy of at most N faces\n"
     "                       (and fewer where that changes the surface by less than 0.01 mm); its planes then\n"
@@ -90,7 +92,7 @@ const char* const kDecomposeHelp =
 const std::set<std::string> kDecomposeValueOptions = {
     "--up",      "--machine", "--axis",    "--axis-search",     "--scheme",          "--beam-width",
     "--alpha",   "--normals", "--refine",  "--offset-step",     "--w",               "--scales",
-    "--min-region-height",    "--min-plane-gain",               "--min-plane-gain-area", "--part-cost",
+    "--min-region-height",    "--min-plane-gain",               "--min-plane-gain-area", "--part-cost", "--cut-face-cost",
     "--threads", "--profile", "-o",        "--summary",         "--support-spacing", "--scale",
     "--pose",    "--poses",   "--pose-searches",                "--proxy-faces",     "--polish-effort"};
 const std::set<std::string> kDecomposeFlags = {"--help", "--no-supports", "--no-proxy", "--polish", "--no-polish"};
@@ -197,6 +199,7 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
   apply("--min-plane-gain-area",
         [&](const std::string& t) { options.minPlaneGainMm2 = parseNumber(t, "--min-plane-gain-area"); });
   apply("--part-cost", [&](const std::string& t) { options.partCostMm2 = parseNumber(t, "--part-cost"); });
+  apply("--cut-face-cost", [&](const std::string& t) { options.cutFaceCost = parseNumber(t, "--cut-face-cost"); });
   apply("--threads", [&](const std::string& t) { options.threads = parseInteger(t, "--threads"); });
   apply("--proxy-faces", [&](const std::string& t) { options.proxyFaces = parseInteger(t, "--proxy-faces"); });
   if (parsed.has("--no-proxy")) {

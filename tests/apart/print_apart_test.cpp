@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -107,4 +108,46 @@ TEST(PrintApart, APlateOfSupportFreePartsGetsNoSupport) {
   ASSERT_EQ(result->plateEstimates.size(), 1u);
   EXPECT_GT(result->plateEstimates.front().estimate.printSeconds, 0.0);
   EXPECT_EQ(result->plateEstimates.front().estimate.supportCm3, 0.0);
+}
+
+namespace {
+
+// A prism 20 mm tall and deep whose right side leans out over the bed, its normal `degreesFromDown` from
+// straight down (the face's slope from the horizontal, as PrusaSlicer measures it).
+core::TriangleMesh leaningPrism(double degreesFromDown) {
+  const double run = 20.0 / std::tan(degreesFromDown * 3.14159265358979323846 / 180.0);
+  return test::makeExtrudedProfile(
+      {core::Vec3(0, 0, 0), core::Vec3(10, 0, 0), core::Vec3(10 + run, 0, 20), core::Vec3(0, 0, 20)}, 20.0);
+}
+
+}  // namespace
+
+TEST(PrintApart, TheSlicersSupportThresholdIsOneDegreeBelowAlphaForItsInclusiveRule) {
+  EXPECT_EQ(apart::slicerSupportThreshold(45.0), 44);
+  EXPECT_EQ(apart::slicerSupportThreshold(45.7), 44);
+  EXPECT_EQ(apart::slicerSupportThreshold(1.0), 1);  // 0 would be the slicer's automatic rule
+}
+
+TEST(PrintApart, APartWhoseFacesAreAllWithinAlphaGetsNoSupportFromTheSlicer) {
+  // The kitten's middle part leaned 4,668 mm^2 of its faces 45 to 46 degrees from down, risk-free by J_G at
+  // alpha_max = 45 (docs/apart.md, "Where the slicer puts support").
+  const std::string dir = test::scratchDirectory("PrintApartWithinAlpha");
+  const core::Decomposition plan = onePiecePlan(leaningPrism(45.5));
+  ASSERT_EQ(plan.regions.front().riskyAreaMm2, 0.0);
+  core::JobContext job;
+  const core::Result<apart::ApartResult> result = apart::printApart(plan, onTheMarlin220(), dir + "/out", job);
+  ASSERT_TRUE(result.ok()) << result.error().describe();
+  ASSERT_EQ(result->plateEstimates.size(), 1u);
+  EXPECT_EQ(result->plateEstimates.front().estimate.supportCm3, 0.0);
+}
+
+TEST(PrintApart, APartWithAFaceBeyondAlphaGetsTheSlicersSupport) {
+  const std::string dir = test::scratchDirectory("PrintApartBeyondAlpha");
+  const core::Decomposition plan = onePiecePlan(leaningPrism(43.0));
+  ASSERT_GT(plan.regions.front().riskyAreaMm2, 0.0);
+  core::JobContext job;
+  const core::Result<apart::ApartResult> result = apart::printApart(plan, onTheMarlin220(), dir + "/out", job);
+  ASSERT_TRUE(result.ok()) << result.error().describe();
+  ASSERT_EQ(result->plateEstimates.size(), 1u);
+  EXPECT_GT(result->plateEstimates.front().estimate.supportCm3, 0.0);
 }

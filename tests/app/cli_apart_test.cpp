@@ -36,6 +36,16 @@ TEST(CliApart, PrintsASavedPlanApartWithPartsDowelsPlatesAndA3mf) {
   EXPECT_FALSE(fs::exists(dir + "/out/plate-1.gcode"));  // --no-slice
 }
 
+TEST(CliApart, DecomposeKeepsBothPricesOfAPartInThePlan) {
+  const std::string dir = scratchDirectory("CliApartPrices");
+  const auto plan = runCli("decompose '" + sharedModelPath("kitten.off") + "' --up y --machine apart --scheme greedy "
+                           "--part-cost 50 --cut-face-cost 0.5 --no-supports -o '" + dir + "/plan'", dir);
+  ASSERT_EQ(plan.exitCode, 0) << plan.err;
+  const nlohmann::json saved = nlohmann::json::parse(readAll(dir + "/plan/plan.json"));
+  EXPECT_EQ(saved["search"]["partCostMm2"].get<double>(), 50.0);
+  EXPECT_EQ(saved["search"]["cutFaceCost"].get<double>(), 0.5);
+}
+
 TEST(CliApart, RefusesAModelThatNeedsTooManyPartsForThePrinter) {
   const std::string dir = scratchDirectory("CliApartTooLarge");
   // The knight three times its size (243 x 405 x 123 mm) on a 220 x 220 mm bed, at most 4 parts.

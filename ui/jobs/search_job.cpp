@@ -79,6 +79,11 @@ bool SearchJob::start(std::shared_ptr<const core::TriangleMesh> model, const cor
   const core::SearchProgressSink sink = [shared, post](const core::SearchProgress& progress) {
     std::lock_guard<std::mutex> lock(shared->mutex);
     shared->progress = progress;
+    // One bar over the search's stages (the apart machine runs two searches): their share of the search's.
+    if (kSearchShare * progress.fraction > shared->fraction) {
+      shared->fraction = kSearchShare * progress.fraction;
+      shared->fractionChanged = true;
+    }
     post();
   };
 

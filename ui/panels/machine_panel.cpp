@@ -49,6 +49,9 @@ MachinePanel::MachinePanel(StudioDocument* document, QWidget* parent) : QWidget(
   m_kind->addItem(tr("4-DOF: rotary platform"), static_cast<int>(core::MachineKind::RotaryPlatform));
   m_kind->addItem(tr("5-DOF: tilting robot arm"), static_cast<int>(core::MachineKind::TiltRotate));
   m_kind->addItem(tr("5-DOF: robot arm under a fixed extruder"), kRobotCellItem);
+  // Every region printed on its own on an ordinary printer and glued (docs/apart.md): its prices of a part
+  // are the Search panel's, with the search's other options.
+  m_kind->addItem(tr("Apart (plain printer, parts joined by dowels)"), static_cast<int>(core::MachineKind::Apart));
   m_kind->setCurrentIndex(2);
 
   m_rotaryGroup = new QGroupBox(tr("Rotary platform (4-DOF)"), this);

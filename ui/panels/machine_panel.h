@@ -1,7 +1,8 @@
 #pragma once
 // The Machine panel: which printer the plan is for. 3-DOF (up only), 4-DOF rotary platform (its axis typed
-// as x,y,z, angle range, stepper step) or 5-DOF tilting arm (tilt limit), and the platform radius (0 = the
-// model's footprint). Every edit is checked with core::validate(MachineSpec); the first problem is shown in
+// as x,y,z, angle range, stepper step), 5-DOF tilting arm (tilt limit) or apart (a plain printer, every region
+// a part of its own; its prices of a part are search options, in the Search panel), and the platform radius
+// (0 = the model's footprint). Every edit is checked with core::validate(MachineSpec); the first problem is shown in
 // the panel, in red, until it is fixed. The 4-DOF axis can also be picked in the 3D view ("Pick on
 // platform", checkable): the panel only asks for it (pickAxisToggled) and shows the axis picked. Below the
 // machine, "Best pose" (PoseSearchBox) finds the pose to stand the model on.

@@ -98,6 +98,22 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   m_minPlaneGain->setValue(defaults.minPlaneGainPercent);
   m_minPlaneGain->setToolTip(tr("A plane stays only if removing it would raise J_G by at least this share of J_G "
                                 "before (and by at least 1 mm²): each region costs a platform move and a seam"));
+  m_partCost = new QDoubleSpinBox(this);
+  m_partCost->setObjectName(QStringLiteral("partCost"));
+  m_partCost->setRange(0.0, 1e6);
+  m_partCost->setDecimals(1);
+  m_partCost->setSuffix(tr(" mm²"));
+  m_partCost->setValue(defaults.partCostMm2);
+  m_partCost->setToolTip(tr("Apart: the risky area one more part must save, for its dowels and handling (the "
+                            "support whose print time equals its dowels')"));
+  m_cutFaceCost = new QDoubleSpinBox(this);
+  m_cutFaceCost->setObjectName(QStringLiteral("cutFaceCost"));
+  m_cutFaceCost->setRange(0.0, 1000.0);
+  m_cutFaceCost->setDecimals(2);
+  m_cutFaceCost->setSuffix(tr(" mm² per mm² of cut face"));
+  m_cutFaceCost->setValue(defaults.cutFaceCost);
+  m_cutFaceCost->setToolTip(tr("Apart: the risky area one more part must save for every mm² of its cut face, "
+                               "whose two sides are printed solid"));
   m_axisCount = new QSpinBox(this);
   m_polishEffort = new QSpinBox(this);
   m_polishEffort->setObjectName(QStringLiteral("polishEffort"));
@@ -127,6 +143,10 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   form->addRow(tr("Polish the planes:"), m_polishEffort);
   m_axisCountLabel = new QLabel(tr("Axes to try:"), this);
   form->addRow(m_axisCountLabel, m_axisCount);
+  m_partCostLabel = new QLabel(tr("Price of a part:"), this);
+  form->addRow(m_partCostLabel, m_partCost);
+  m_cutFaceCostLabel = new QLabel(tr("... and of its cut face:"), this);
+  form->addRow(m_cutFaceCostLabel, m_cutFaceCost);
 
   m_run = new QPushButton(tr("&Run search"), this);
   m_run->setObjectName(QStringLiteral("runSearch"));
@@ -143,7 +163,8 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::settingsChanged);
   for (QSpinBox* box : {m_beamWidth, m_volumeScales, m_normals, m_axisCount, m_polishEffort})
     connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
-  for (QDoubleSpinBox* box : {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain})
+  for (QDoubleSpinBox* box :
+       {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain, m_partCost, m_cutFaceCost})
     connect(box, &QDoubleSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
   connect(m_alpha, &QDoubleSpinBox::valueChanged, this, &SearchPanel::alphaMaxChanged);
   m_tick = new QTimer(this);
@@ -190,6 +211,7 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_notice);
   layout->addWidget(readout, 1);
   setRotaryMachine(false);
+  setApartMachine(false);
   setRunnable(false, tr("Open a model first."));
 }
 
@@ -204,6 +226,8 @@ core::SearchOptions SearchPanel::searchOptions() const {
   options.alphaMaxDegrees = m_alpha->value();
   options.minRegionHeightMm = m_minRegionHeight->value();
   options.minPlaneGainPercent = m_minPlaneGain->value();
+  options.partCostMm2 = m_partCost->value();
+  options.cutFaceCost = m_cutFaceCost->value();
   options.polish = m_polishEffort->value() > 0;
   if (options.polish) options.polishEffort = m_polishEffort->value();
   return options;
@@ -222,6 +246,8 @@ void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
   m_alpha->setValue(options.alphaMaxDegrees);
   m_minRegionHeight->setValue(options.minRegionHeightMm);
   m_minPlaneGain->setValue(options.minPlaneGainPercent);
+  m_partCost->setValue(options.partCostMm2);
+  m_cutFaceCost->setValue(options.cutFaceCost);
   m_polishEffort->setValue(options.polish ? options.polishEffort : 0);
   emit settingsChanged();  // also when only options the panel does not show changed
 }
@@ -237,6 +263,12 @@ void SearchPanel::setAxisSearchCount(int count) { m_axisCount->setValue(count); 
 void SearchPanel::setRotaryMachine(bool rotary) {
   m_axisCount->setEnabled(rotary);
   m_axisCountLabel->setEnabled(rotary);
+}
+
+void SearchPanel::setApartMachine(bool apart) {
+  for (QWidget* widget : {static_cast<QWidget*>(m_partCost), static_cast<QWidget*>(m_cutFaceCost),
+                          static_cast<QWidget*>(m_partCostLabel), static_cast<QWidget*>(m_cutFaceCostLabel)})
+    widget->setEnabled(apart);
 }
 
 void SearchPanel::setRunnable(bool runnable, const QString& reason) {
@@ -305,7 +337,9 @@ void SearchPanel::showProgress(const core::SearchProgress& progress) {
   m_beams->setText(QString::number(progress.beamsAlive));
   m_bestJg->setText(tr("%1 mm²").arg(area(progress.bestJgMm2)));
   m_candidates->setText(QLocale().toString(progress.candidatesScored));
-  m_chart->setBest(progress.level, progress.bestJgMm2);
+  // The apart machine's second search (the 5-DOF plan for its bound) has J_G of another machine: the chart
+  // keeps the apart search's.
+  if (progress.stage == 1) m_chart->setBest(progress.level, progress.bestJgMm2);
   updateProgressText();
 }
 
@@ -330,6 +364,8 @@ void SearchPanel::updateProgressText() {
     }
     QString level = m_maxLevels > 0 ? tr("Level %1 of %2").arg(p.level).arg(m_maxLevels) : tr("Level %1").arg(p.level);
     if (p.axisCount > 0) level = tr("Axis %1 of %2, %3").arg(p.axisIndex + 1).arg(p.axisCount).arg(level);
+    if (p.stageCount > 1)
+      level = (p.stage == 1 ? tr("Apart search (1 of 2), %1") : tr("5-DOF search for the bound (2 of 2), %1")).arg(level);
     text = tr("%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5")
                .arg(level, QLocale().toString(p.beamsAlive), area(p.bestJgMm2),
                     QLocale().toString(p.candidatesScored), elapsed);

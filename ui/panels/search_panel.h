@@ -36,6 +36,9 @@ class SearchPanel : public QWidget {
   void setAxisSearchCount(int count);
   // The axis-search count is offered for 4-DOF machines only.
   void setRotaryMachine(bool rotary);
+  // The price of a part (SearchOptions::partCostMm2 and cutFaceCost, docs/apart.md) is offered for the apart
+  // machine only.
+  void setApartMachine(bool apart);
   // alpha_max, the same value as the Overhangs panel's (MainWindow links the two).
   [[nodiscard]] double alphaMaxDegrees() const;
   void setAlphaMaxDegrees(double degrees);
@@ -94,6 +97,10 @@ class SearchPanel : public QWidget {
   QLabel* m_beamWidthLabel = nullptr;
   QLabel* m_volumeScalesLabel = nullptr;
   QSpinBox* m_normals = nullptr;
+  QDoubleSpinBox* m_partCost = nullptr;
+  QDoubleSpinBox* m_cutFaceCost = nullptr;
+  QLabel* m_partCostLabel = nullptr;
+  QLabel* m_cutFaceCostLabel = nullptr;
   QDoubleSpinBox* m_offsetStep = nullptr;
   QDoubleSpinBox* m_alpha = nullptr;
   QDoubleSpinBox* m_minRegionHeight = nullptr;

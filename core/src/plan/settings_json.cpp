@@ -50,6 +50,7 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"minPlaneGainPercent", o.minPlaneGainPercent},
           {"minPlaneGainMm2", o.minPlaneGainMm2},
           {"partCostMm2", o.partCostMm2},
+          {"cutFaceCost", o.cutFaceCost},
           {"proxyFaces", o.proxyFaces},
           {"polish", o.polish},
           {"polishEffort", o.polishEffort},
@@ -119,6 +120,9 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   // Plans saved before the apart machine existed: no part was ever cost.
   const auto partCost = field.optional("partCostMm2");
   o.partCostMm2 = partCost ? partCost->number() : kDefaultPartCostMm2;
+  // Plans saved before the cut face was priced: a part had its fixed price only.
+  const auto cutFaceCost = field.optional("cutFaceCost");
+  o.cutFaceCost = cutFaceCost ? cutFaceCost->number() : 0.0;
   // Plans saved before the proxy search ran on the full mesh.
   const auto proxy = field.optional("proxyFaces");
   o.proxyFaces = proxy ? static_cast<int>(proxy->integer(0, 10000000)) : 0;

@@ -1,7 +1,7 @@
 #pragma once
 // The apart machine's promise (docs/apart.md, "Never more support than the multi-directional plan"): of the
-// plans it could return, the one with the least J_G apart plus the part cost for every part after the first,
-// among those whose J_G apart is at most the model's default 5-DOF plan printed apart. Internal to core.
+// plans it could return, the one with the least J_G apart plus the price of every part after the first, among
+// those whose J_G apart is at most the model's default 5-DOF plan printed apart. Internal to core.
 #include <string>
 #include <vector>
 
@@ -12,18 +12,26 @@ struct ApartCandidate {
   std::string name;  // for the plan's notes: "the apart search's best", "the 5-DOF plan printed apart"
   double jgApartMm2 = 0.0;
   int parts = 1;
+  double cutFaceMm2 = 0.0;  // the joints' areas summed (one side of each)
 };
 
-// J_G apart plus `partCostMm2` for every part after the first: what the apart machine minimises.
-double pricedMm2(const ApartCandidate& candidate, double partCostMm2);
+// The price of the parts after the first, in risky area (SearchOptions::partCostMm2 and cutFaceCost).
+struct PartPrice {
+  double perPartMm2 = 0.0;
+  double perCutFaceMm2 = 0.0;  // mm^2 of J_G per mm^2 of cut face
+};
+
+// J_G apart plus the price of every part after the first and of every cut face: what the apart machine
+// minimises.
+double pricedMm2(const ApartCandidate& candidate, const PartPrice& price);
 
 // The index of the candidate with the least priced cost among those whose J_G apart is at most
 // `boundMm2` (ties: the first). -1 when none keeps the bound.
-int chooseApartCandidate(const std::vector<ApartCandidate>& candidates, double partCostMm2, double boundMm2);
+int chooseApartCandidate(const std::vector<ApartCandidate>& candidates, const PartPrice& price, double boundMm2);
 
 // The sentence the plan's notes carry: which candidate was chosen, and why, against the apart search's best
 // (`searchBest`) and the bound's plan (`bound`).
 std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& searchBest, const ApartCandidate& bound,
-                            double partCostMm2);
+                            const PartPrice& price);
 
 }  // namespace multidir::core::detail

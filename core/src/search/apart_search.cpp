@@ -35,7 +35,9 @@ Result<ApartCandidate> measuredApart(const Decomposition& plan, const SearchOpti
   // Without a size limit nothing is cut further, and a plan's closed regions always give parts.
   if (!parts.ok())
     return Error{ErrorCode::Internal, name + " cannot be printed apart: " + parts.error().describe(), "apart search"};
-  return ApartCandidate{std::move(name), parts->jgMm2, static_cast<int>(parts->parts.size())};
+  double cutFaceMm2 = 0.0;
+  for (const ApartJoint& joint : parts->joints) cutFaceMm2 += joint.areaMm2;
+  return ApartCandidate{std::move(name), parts->jgMm2, static_cast<int>(parts->parts.size()), cutFaceMm2};
 }
 
 // The model's default multi-directional plan: the 5-DOF arm of MachineSpec's defaults, standing the model on
@@ -56,26 +58,28 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-double pricedMm2(const ApartCandidate& candidate, double partCostMm2) {
-  return candidate.jgApartMm2 + partCostMm2 * static_cast<double>(candidate.parts - 1);
+double pricedMm2(const ApartCandidate& candidate, const PartPrice& price) {
+  return candidate.jgApartMm2 + price.perPartMm2 * static_cast<double>(candidate.parts - 1) +
+         price.perCutFaceMm2 * candidate.cutFaceMm2;
 }
 
-int chooseApartCandidate(const std::vector<ApartCandidate>& candidates, double partCostMm2, double boundMm2) {
+int chooseApartCandidate(const std::vector<ApartCandidate>& candidates, const PartPrice& price, double boundMm2) {
   int chosen = -1;
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
     const ApartCandidate& c = candidates[static_cast<std::size_t>(i)];
     if (c.jgApartMm2 > boundMm2 + kBoundSlackMm2) continue;
-    if (chosen < 0 || pricedMm2(c, partCostMm2) < pricedMm2(candidates[static_cast<std::size_t>(chosen)], partCostMm2))
+    if (chosen < 0 || pricedMm2(c, price) < pricedMm2(candidates[static_cast<std::size_t>(chosen)], price))
       chosen = i;
   }
   return chosen;
 }
 
 std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& searchBest, const ApartCandidate& bound,
-                            double partCostMm2) {
+                            const PartPrice& price) {
   std::string note = chosen.name + " (J_G apart " + mm2(chosen.jgApartMm2) + " mm^2, " + partsText(chosen.parts) +
-                     "; priced " + mm2(pricedMm2(chosen, partCostMm2)) + " mm^2 at " + mm2(partCostMm2) +
-                     " mm^2 per part after the first) is the cheapest plan with no more J_G apart than ";
+                     ", cut faces " + mm2(chosen.cutFaceMm2) + " mm^2; priced " + mm2(pricedMm2(chosen, price)) +
+                     " mm^2 at " + mm2(price.perPartMm2) + " mm^2 per part after the first and " +
+                     mm2(price.perCutFaceMm2) + " per mm^2 of cut face) is the cheapest plan with no more J_G apart than ";
   note += chosen.name == bound.name
               ? "itself, the bound"
               : "the 5-DOF plan printed apart (" + mm2(bound.jgApartMm2) + " mm^2, " + partsText(bound.parts) + ")";
@@ -85,7 +89,7 @@ std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& 
   if (searchBest.jgApartMm2 > bound.jgApartMm2 + kBoundSlackMm2)
     note += "had more J_G apart than it";
   else
-    note += "costs more priced (" + mm2(pricedMm2(searchBest, partCostMm2)) + " mm^2)";
+    note += "costs more priced (" + mm2(pricedMm2(searchBest, price)) + " mm^2)";
   return note;
 }
 
@@ -103,27 +107,27 @@ Result<Decomposition> searchedAndPolished(const TriangleMesh& model, const Machi
 }
 
 Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine,
-                                     const SearchOptions& options, JobContext& job,
-                                     const SearchProgressSink& progress) {
+                                     const SearchOptions& options, JobContext& job, const StagedProgress& progress) {
   const auto start = std::chrono::steady_clock::now();
+  const SearchProgressSink apartStage = progress.stage(0), fiveDofStage = progress.stage(1);
   // The apart search's plans: its best (polished) and, on the full mesh, its best for every other number of cuts.
   std::vector<Decomposition> plans;
   std::vector<Decomposition> finalists;
   if (needsProxy(model, options)) {
-    Result<Decomposition> searched = searchedAndPolished(model, machine, options, job, progress);
+    Result<Decomposition> searched = searchedAndPolished(model, machine, options, job, apartStage);
     if (!searched.ok()) return searched.error();
     plans.push_back(std::move(*searched));
   } else {
-    plans.push_back(polishedIfAsked(model, machine, options,
-                                    runDecomposition(model, machine, options, job, progress, std::nullopt, &finalists),
-                                    job, progress));
+    plans.push_back(polishedIfAsked(
+        model, machine, options, runDecomposition(model, machine, options, job, apartStage, std::nullopt, &finalists),
+        job, apartStage));
   }
   if (plans.front().cancelled || job.isCancelled()) return std::move(plans.front());
   const double searchSeconds = secondsSince(start);
 
   // The bound: the default 5-DOF plan, its planes cut again on the apart machine (every region on the bed).
   const auto fiveDofStart = std::chrono::steady_clock::now();
-  Result<Decomposition> fiveDof = searchedAndPolished(model, defaultFiveDof(machine), options, job, progress);
+  Result<Decomposition> fiveDof = searchedAndPolished(model, defaultFiveDof(machine), options, job, fiveDofStage);
   if (!fiveDof.ok()) return fiveDof.error();
   const bool fiveDofCancelled = fiveDof->cancelled;
   Result<Decomposition> fiveDofApart = planFromClippingPlanes(model, machine, options, fiveDof->clippingPlanes);
@@ -145,9 +149,10 @@ Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpe
     candidates.push_back(std::move(*measured));
   }
   const ApartCandidate bound = candidates.back();
+  const PartPrice price{options.partCostMm2, options.cutFaceCost};
   // Never -1: the 5-DOF plan printed apart keeps its own bound.
   const auto chosenPlan =
-      static_cast<std::size_t>(chooseApartCandidate(candidates, options.partCostMm2, bound.jgApartMm2));
+      static_cast<std::size_t>(chooseApartCandidate(candidates, price, bound.jgApartMm2));
   ApartCandidate chosenCandidate = candidates[chosenPlan];
 
   Decomposition plan = std::move(plans[chosenPlan]);
@@ -155,16 +160,16 @@ Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpe
   if (isFinalist && options.polish) {
     // A finalist comes from the search unpolished: polished, it is kept when it still keeps the bound and
     // costs no more.
-    Decomposition polished = polishedIfAsked(model, machine, options, plan, job, progress);
+    Decomposition polished = polishedIfAsked(model, machine, options, plan, job, fiveDofStage);
     const Result<ApartCandidate> measured = measuredApart(polished, options, chosenCandidate.name);
     if (measured.ok() && measured->jgApartMm2 <= bound.jgApartMm2 + kBoundSlackMm2 &&
-        pricedMm2(*measured, options.partCostMm2) <= pricedMm2(chosenCandidate, options.partCostMm2)) {
+        pricedMm2(*measured, price) <= pricedMm2(chosenCandidate, price)) {
       plan = std::move(polished);
       chosenCandidate = *measured;
     }
   }
   plan.cancelled = job.isCancelled() || fiveDofCancelled;
-  plan.statistics.notes.push_back(apartChoiceNote(chosenCandidate, candidates.front(), bound, options.partCostMm2));
+  plan.statistics.notes.push_back(apartChoiceNote(chosenCandidate, candidates.front(), bound, price));
   plan.statistics.notes.push_back("the apart search took " + mm2(searchSeconds) +
                                   " s, the 5-DOF search for the bound " + mm2(fiveDofSeconds) + " s");
   plan.statistics.seconds = secondsSince(start);

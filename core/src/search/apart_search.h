@@ -3,6 +3,7 @@
 // to core: decompose() runs it for MachineKind::Apart.
 #include "multidir/core/common/job_context.h"
 #include "multidir/core/search/decomposition.h"
+#include "search/staged_progress.h"
 
 namespace multidir::core::detail {
 
@@ -16,9 +17,10 @@ Result<Decomposition> searchedAndPolished(const TriangleMesh& model, const Machi
 // cuts, as found and without its unpaid planes) and the model's default 5-DOF plan (MachineSpec's defaults
 // with the same up, and the same options) cut again on the apart machine; of those whose J_G apart
 // (core::apartPlan) is at most that 5-DOF plan's, the one with the least J_G apart + options.partCostMm2 x
-// (parts - 1). statistics.notes says which and why.
-// A cancelled search returns the best plan so far, with `cancelled` set.
+// (parts - 1) + options.cutFaceCost x the joints' area. statistics.notes says which and why.
+// A cancelled search returns the best plan so far, with `cancelled` set. `progress` has two stages: the apart
+// search reports through the first, the 5-DOF search through the second.
 Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine,
-                                     const SearchOptions& options, JobContext& job, const SearchProgressSink& progress);
+                                     const SearchOptions& options, JobContext& job, const StagedProgress& progress);
 
 }  // namespace multidir::core::detail

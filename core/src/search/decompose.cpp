@@ -10,6 +10,7 @@
 #include "detail/parallel.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "search/apart_search.h"
+#include "search/cut_face_area.h"
 #include "search/run_decomposition.h"
 #include "search/search_engine.h"
 #include "search/search_schemes.h"
@@ -54,11 +55,13 @@ NodePtr rebuild(SearchEngine& engine, NodePtr start, const std::vector<Plane>& p
 
 }  // namespace
 
-// A plane is kept only if it pays for itself: each region costs a platform move and a seam, and apart a part.
+// A plane is kept only if it pays for itself: each region costs a platform move and a seam, and apart a part
+// with its cut face (docs/apart.md, "The price of a part").
 NodePtr detail::withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const SearchOptions& o) {
-  const double partCost = engine.sequenceFree() ? o.partCostMm2 : 0.0;
-  const double threshold =
-      std::max({o.minPlaneGainMm2, o.minPlaneGainPercent / 100.0 * engine.root()->riskyUpAreaMm2, partCost});
+  const double minGain = std::max(o.minPlaneGainMm2, o.minPlaneGainPercent / 100.0 * engine.root()->riskyUpAreaMm2);
+  auto partsPrice = [&](const NodePtr& n) {
+    return engine.sequenceFree() ? o.partCostMm2 * n->level + o.cutFaceCost * detail::cutFaceAreaMm2(*n) : 0.0;
+  };
   std::vector<Plane> planes = planesOf(node);
   while (!planes.empty()) {
     // Without plane k, the first k cuts are unchanged: start from the node they made.
@@ -69,8 +72,9 @@ NodePtr detail::withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const Se
       without[k] = rebuild(engine, chain[k], later);
     });
     NodePtr bestNode;
+    const double price = partsPrice(node);
     for (const NodePtr& candidate : without) {
-      if (!candidate || candidate->jg() - node->jg() >= threshold) continue;
+      if (!candidate || candidate->jg() - node->jg() >= std::max(minGain, price - partsPrice(candidate))) continue;
       if (!bestNode || candidate->jg() < bestNode->jg()) bestNode = candidate;
     }
     if (!bestNode) break;
@@ -175,10 +179,13 @@ using detail::runDecomposition;
 Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                 JobContext& job, const SearchProgressSink& progress) {
   if (Status s = checkSearchInputs(model, machine, options); !s) return s.error();
-  // The apart machine adds its bound: never more J_G apart than the default 5-DOF plan (docs/apart.md).
-  Result<Decomposition> plan = machine.kind == MachineKind::Apart
-                                   ? detail::decomposeApart(model, machine, options, job, progress)
-                                   : detail::searchedAndPolished(model, machine, options, job, progress);
+  // The apart machine adds its bound: never more J_G apart than the default 5-DOF plan (docs/apart.md), a
+  // second search about as long as its own ("Measured"), so one progress runs over both.
+  const bool apart = machine.kind == MachineKind::Apart;
+  const detail::StagedProgress staged(progress, apart ? std::vector<double>{1.0, 1.0} : std::vector<double>{1.0},
+                                      maxSearchLevels(options));
+  Result<Decomposition> plan = apart ? detail::decomposeApart(model, machine, options, job, staged)
+                                     : detail::searchedAndPolished(model, machine, options, job, staged.stage(0));
   if (!plan.ok()) return plan.error();
   detail::returnFreedMemory();
   // What the search reported last may be older than the plan a cancel delivers (searches running side by side
@@ -188,7 +195,7 @@ Result<Decomposition> decompose(const TriangleMesh& model, const MachineSpec& ma
     last.level = plan->statistics.levels;
     last.bestJgMm2 = plan->jgAfterMm2;
     last.candidatesScored = plan->statistics.candidatesScored;
-    progress(last);
+    staged.stage(apart ? 1 : 0)(last);  // the fraction stays where the search left it
   }
   job.setProgress(1.0, "search done");
   return plan;

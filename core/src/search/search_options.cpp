@@ -43,6 +43,8 @@ Status validate(const SearchOptions& o) {
   if (!(o.minPlaneGainMm2 >= 0 && o.minPlaneGainMm2 <= 1e9))
     return bad("minimum plane gain area", "must be between 0 and 1e9 mm^2");
   if (!(o.partCostMm2 >= 0 && o.partCostMm2 <= 1e9)) return bad("part cost", "must be between 0 and 1e9 mm^2");
+  if (!(o.cutFaceCost >= 0 && o.cutFaceCost <= 1000))
+    return bad("cut face cost", "must be between 0 and 1000 mm^2 of risky area per mm^2 of cut face");
   if (o.refinementRounds < 0 || o.refinementRounds > 10) return bad("refinement rounds", "must be between 0 (off) and 10");
   if (o.threads < 0 || o.threads > 256) return bad("threads", "must be between 0 (all) and 256");
   if (o.polishEffort < 1 || o.polishEffort > 6) return bad("polish effort", "must be between 1 and 6");

@@ -78,6 +78,7 @@ TEST(ApartSearch, APartCostsItsPartCostInSupportSavedDownToTheFiveDofPlansSuppor
   const TriangleMesh pyramid = pyramidOnItsTip();
   SearchOptions options;
   options.partCostMm2 = 0;
+  options.cutFaceCost = 0;
   const Decomposition free = searched(pyramid, machineOf(MachineKind::Apart), options);
   ASSERT_GE(free.regions.size(), 2u);
   // A part that costs more than all the support it could save is made only where the plan would otherwise
@@ -117,6 +118,7 @@ TEST(ApartSearch, WithoutAPartCostFertilityApartHasNoMoreJgThanItsFiveDofPlan) {
   const Decomposition fiveDof = searched(fertility, machineOf(MachineKind::TiltRotate, Vec3::UnitY()));
   SearchOptions free;
   free.partCostMm2 = 0.0;
+  free.cutFaceCost = 0.0;
   const Decomposition apart = searched(fertility, machineOf(MachineKind::Apart, Vec3::UnitY()), free);
   const Result<ApartPlan> parts = apartPlan(apart);
   ASSERT_TRUE(parts.ok()) << parts.error().describe();
@@ -125,12 +127,15 @@ TEST(ApartSearch, WithoutAPartCostFertilityApartHasNoMoreJgThanItsFiveDofPlan) {
 
 TEST(ApartSearch, PricedPerPartFertilityApartCostsNoMoreThanItsFiveDofPlanPrintedApart) {
   const TriangleMesh fertility = multidir::test::loadSharedModel("fertility.off");
-  const SearchOptions options;  // the default part cost
+  const SearchOptions options;  // the default price of a part
   const Result<ApartPlan> fiveDof = apartPlan(searched(fertility, machineOf(MachineKind::TiltRotate, Vec3::UnitY())));
   const Result<ApartPlan> apart = apartPlan(searched(fertility, machineOf(MachineKind::Apart, Vec3::UnitY()), options));
   ASSERT_TRUE(fiveDof.ok() && apart.ok());
   auto priced = [&](const ApartPlan& plan) {
-    return plan.jgMm2 + options.partCostMm2 * static_cast<double>(plan.parts.size() - 1);
+    double cutFace = 0.0;
+    for (const ApartJoint& joint : plan.joints) cutFace += joint.areaMm2;
+    return plan.jgMm2 + options.partCostMm2 * static_cast<double>(plan.parts.size() - 1) +
+           options.cutFaceCost * cutFace;
   };
   EXPECT_LE(priced(*apart), priced(*fiveDof));
 }

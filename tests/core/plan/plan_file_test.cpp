@@ -451,6 +451,31 @@ TEST(PlanFile, PlanWrittenBeforeVolumeScalesReadsAsSearchedAtOneScale) {
   EXPECT_EQ(loaded->metadata.options.volumeScales, 1);
 }
 
+TEST(PlanFile, SearchSettingsKeepTheApartPartsPrices) {
+  PlanMetadata meta = tbarMetadata();
+  meta.options.partCostMm2 = 75.0;
+  meta.options.cutFaceCost = 0.5;
+  const std::string dir = scratchDirectory("PlanFile.PartPrices");
+  ASSERT_TRUE(savePlan(tbarPlan(), meta, dir).ok());
+  EXPECT_EQ(readJson(dir + "/plan.json")["search"]["cutFaceCost"], 0.5);
+  const Result<LoadedPlan> loaded = loadPlan(dir);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->metadata.options.partCostMm2, 75.0);
+  EXPECT_EQ(loaded->metadata.options.cutFaceCost, 0.5);
+}
+
+TEST(PlanFile, PlanWrittenBeforeTheCutFaceWasPricedReadsWithoutACutFacePrice) {
+  // Plans saved before the cut face was priced have no search.cutFaceCost: a part had its fixed price only.
+  const std::string dir = savedTbar("PlanFile.NoCutFaceCost");
+  nlohmann::json doc = readJson(dir + "/plan.json");
+  ASSERT_NE(SearchOptions{}.cutFaceCost, 0.0) << "the default would hide a reader that ignores the field";
+  doc["search"].erase("cutFaceCost");
+  writeText(dir + "/plan.json", doc.dump(2));
+  const Result<LoadedPlan> loaded = loadPlan(dir);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  EXPECT_EQ(loaded->metadata.options.cutFaceCost, 0.0);
+}
+
 TEST(PlanFile, SaveWhereARegionFileIsAFolderFailsNamingThatFile) {
   // Region files are written side by side; the one that cannot be written is the one named.
   const std::string dir = scratchDirectory("PlanFile.RegionFileIsAFolder");

@@ -72,6 +72,11 @@ core::Result<ApartResult> printApart(const core::Decomposition& plan, const Prin
 // studio's Export. Errors: WriteFailed naming the file or folder.
 core::Status copyApartFiles(const ApartResult& result, const std::string& folder);
 
+// PrusaSlicer's `support_material_threshold` for a plan's alpha_max (degrees): the slicer then supports the
+// faces whose normal is less than floor(alpha_max) degrees from straight down, never a face J_G counts as
+// self-supporting (docs/apart.md, "Where the slicer puts support"). At least 1: 0 is the slicer's own rule.
+int slicerSupportThreshold(double alphaMaxDegrees);
+
 // Where the plates are laid and what the parts must fit, for a printer (or none).
 assembly::PlateOptions plateOptionsFor(const std::optional<slicing::PrinterProfile>& printer);
 

@@ -18,9 +18,11 @@ enum class SearchScheme {
 const char* schemeName(SearchScheme scheme);  // "greedy", "cgreedy", "beam"
 Result<SearchScheme> parseScheme(const std::string& text);
 
-// The apart machine's cost of one more part, as the risky area whose supports cost as much print time (mm^2):
-// measured with PrusaSlicer, docs/apart.md ("The cost of a part").
-inline constexpr double kDefaultPartCostMm2 = 240.0;
+// The apart machine's price of one more part, as the risky area whose supports cost as much print time,
+// measured with PrusaSlicer (docs/apart.md, "The price of a part"): a fixed price per part (mm^2: its dowels'
+// print time) and a price per mm^2 of its cut face (mm^2 of J_G per mm^2: the solid layers on both sides).
+inline constexpr double kDefaultPartCostMm2 = 120.0;
+inline constexpr double kDefaultCutFaceCost = 0.28;
 
 struct SearchOptions {
   SearchScheme scheme = SearchScheme::Beam;
@@ -56,10 +58,12 @@ struct SearchOptions {
   // removed from the plan after the search.
   double minPlaneGainPercent = 1.0;
   double minPlaneGainMm2 = 1.0;
-  // The apart machine (docs/apart.md): each plane makes one more part, to print, fit with dowels and glue, so
-  // a plane is kept only if its removal would raise J_G by at least this as well. Ignored by other machines.
-  // [0, 1e9] mm^2.
+  // The apart machine (docs/apart.md): each plane makes one more part, to print, fit with dowels and glue, and
+  // a cut face whose two sides are printed solid, so a plane is kept only if its removal would raise J_G by at
+  // least partCostMm2 + cutFaceCost x its cut face's area (mm^2, one side of the joint) as well. Ignored by
+  // other machines. partCostMm2 in [0, 1e9] mm^2; cutFaceCost in [0, 1000] mm^2 per mm^2.
   double partCostMm2 = kDefaultPartCostMm2;
+  double cutFaceCost = kDefaultCutFaceCost;
   double platformToleranceMm = kDefaultPlatformToleranceMm;  // how close a solid must reach to touch the platform
   int threads = 0;                          // 0: all hardware threads
   // Models with more faces than this are searched on a decimated proxy of about this many faces; the planes
@@ -104,6 +108,13 @@ struct SearchProgress {
   // Polishing the found plan (after the search): true while it runs, with its share done in [0, 1].
   bool polishing = false;
   double polishFraction = 0.0;
+  // decompose() runs one search, or, for the apart machine, two one after the other (its own, then the
+  // default 5-DOF search for its bound, docs/apart.md): `stage` of `stageCount` (1-based) is the one
+  // reporting; its level and best J_G restart with it. `fraction` is the share of all of them done, in
+  // [0, 1], never decreasing over one decompose() (docs/search.md, "Progress and Cancel").
+  int stage = 1;
+  int stageCount = 1;
+  double fraction = 0.0;
 };
 using SearchProgressSink = std::function<void(const SearchProgress&)>;
 
