@@ -654,6 +654,22 @@
         <source>The nozzle tip is now at the reach map&apos;s best position; move the extruder there and measure it again.</source>
         <translation>Die Düsenspitze steht jetzt an der besten Position der Erreichbarkeitskarte; bringen Sie den Extruder dorthin und messen Sie sie erneut.</translation>
     </message>
+    <message>
+        <source>The cell changed since the reach map was made (the map scores the arm, the nozzle axis, the platform, the table and the margins it had): find the extruder position again.</source>
+        <translation>Die Zelle hat sich geändert, seit die Erreichbarkeitskarte erstellt wurde (die Karte bewertet den Arm, die Düsenachse, die Plattform, den Tisch und die Abstände, die sie damals hatte): bestimmen Sie die Extruderposition erneut.</translation>
+    </message>
+    <message>
+        <source>The plan changed since the reach map was made (the map scores the plan&apos;s poses): find the extruder position again.</source>
+        <translation>Der Plan hat sich geändert, seit die Erreichbarkeitskarte erstellt wurde (die Karte bewertet die Posen des Plans): bestimmen Sie die Extruderposition erneut.</translation>
+    </message>
+    <message>
+        <source>Supports were grown for the plan since the reach map was made (the map scores their poses too): find the extruder position again.</source>
+        <translation>Seit die Erreichbarkeitskarte erstellt wurde, wurden Stützen für den Plan erzeugt (die Karte bewertet auch ihre Posen): bestimmen Sie die Extruderposition erneut.</translation>
+    </message>
+    <message>
+        <source>The plan or the cell changed while the reach map was made: find the extruder position again.</source>
+        <translation>Der Plan oder die Zelle hat sich geändert, während die Erreichbarkeitskarte erstellt wurde: bestimmen Sie die Extruderposition erneut.</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::CellViewPanel</name>
@@ -735,6 +751,26 @@
         <location filename="../ui/panels/cell_view_panel.cpp" line="211"/>
         <source>Step %1 of %2, move %3 of %4 (%5, line %6)</source>
         <translation>Schritt %1 von %2, Bewegung %3 von %4 (%5, Zeile %6)</translation>
+    </message>
+    <message>
+        <source>Show the reach map</source>
+        <translation>Erreichbarkeitskarte zeigen</translation>
+    </message>
+    <message>
+        <source>The nozzle positions &quot;Find extruder position&quot; scored (Machine tab), coloured from red (none of the plan&apos;s poses reachable with margin) to blue (all of them); the best one ringed in white</source>
+        <translation>Die Düsenpositionen, die „Extruderposition finden“ bewertet hat (Registerkarte „Maschine“), gefärbt von Rot (keine Pose des Plans mit Abstand erreichbar) bis Blau (alle); die beste weiß umrandet</translation>
+    </message>
+    <message>
+        <source>Reach map: %1 nozzle positions every %2 mm; the best, ringed, at %3, %4, %5 mm with %6 % of the plan&apos;s poses reachable with margin.</source>
+        <translation>Erreichbarkeitskarte: %1 Düsenpositionen im Abstand von %2 mm; die beste (umrandet) bei %3, %4, %5 mm, mit %6 % der Posen des Plans mit Abstand erreichbar.</translation>
+    </message>
+    <message>
+        <source>Reach map not shown: %1</source>
+        <translation>Erreichbarkeitskarte nicht gezeigt: %1</translation>
+    </message>
+    <message>
+        <source>Plan&apos;s poses reachable with margin (%)</source>
+        <translation>Mit Abstand erreichbare Posen des Plans (%)</translation>
     </message>
 </context>
 <context>

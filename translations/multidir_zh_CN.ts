@@ -652,6 +652,22 @@
         <source>The nozzle tip is now at the reach map&apos;s best position; move the extruder there and measure it again.</source>
         <translation>喷嘴尖端现已设在可达性图的最佳位置；请将挤出机移到该处并重新测量。</translation>
     </message>
+    <message>
+        <source>The cell changed since the reach map was made (the map scores the arm, the nozzle axis, the platform, the table and the margins it had): find the extruder position again.</source>
+        <translation>自可达性图生成以来，单元已更改（该图按当时的机械臂、喷嘴轴线、平台、工作台和余量评分）：请重新查找挤出机位置。</translation>
+    </message>
+    <message>
+        <source>The plan changed since the reach map was made (the map scores the plan&apos;s poses): find the extruder position again.</source>
+        <translation>自可达性图生成以来，方案已更改（该图按方案的姿态评分）：请重新查找挤出机位置。</translation>
+    </message>
+    <message>
+        <source>Supports were grown for the plan since the reach map was made (the map scores their poses too): find the extruder position again.</source>
+        <translation>自可达性图生成以来，已为方案生成支撑（该图也按支撑的姿态评分）：请重新查找挤出机位置。</translation>
+    </message>
+    <message>
+        <source>The plan or the cell changed while the reach map was made: find the extruder position again.</source>
+        <translation>生成可达性图期间方案或单元已更改：请重新查找挤出机位置。</translation>
+    </message>
 </context>
 <context>
     <name>multidir::ui::CellViewPanel</name>
@@ -732,6 +748,26 @@
         <location filename="../ui/panels/cell_view_panel.cpp" line="211"/>
         <source>Step %1 of %2, move %3 of %4 (%5, line %6)</source>
         <translation>第 %1 步（共 %2 步），移动 %3/%4（%5，第 %6 行）</translation>
+    </message>
+    <message>
+        <source>Show the reach map</source>
+        <translation>显示可达性图</translation>
+    </message>
+    <message>
+        <source>The nozzle positions &quot;Find extruder position&quot; scored (Machine tab), coloured from red (none of the plan&apos;s poses reachable with margin) to blue (all of them); the best one ringed in white</source>
+        <translation>“查找挤出机位置”评分的喷嘴位置（机器选项卡），颜色从红色（方案的姿态均无法留有余量地到达）到蓝色（全部可达）；最佳位置以白圈标出</translation>
+    </message>
+    <message>
+        <source>Reach map: %1 nozzle positions every %2 mm; the best, ringed, at %3, %4, %5 mm with %6 % of the plan&apos;s poses reachable with margin.</source>
+        <translation>可达性图：%1 个喷嘴位置，间距 %2 mm；最佳位置（圈出）位于 %3, %4, %5 mm，方案姿态中 %6 % 可留有余量地到达。</translation>
+    </message>
+    <message>
+        <source>Reach map not shown: %1</source>
+        <translation>未显示可达性图：%1</translation>
+    </message>
+    <message>
+        <source>Plan&apos;s poses reachable with margin (%)</source>
+        <translation>可留有余量到达的方案姿态 (%)</translation>
     </message>
 </context>
 <context>

@@ -1,9 +1,11 @@
 // The robot cell in the studio (issue 25, item 5; docs/robot-cell.md, "Studio"): the Machine tab's cell section
 // (model, nozzle, calibration, table, Load/Save, the check, "Find extruder position"), and the viewer's cell
-// view posing the sliced job on the arm under the fixed nozzle, and the Hardware dock running it on the cell.
+// view posing the sliced job on the arm under the fixed nozzle and drawing the reach map, and the Hardware dock
+// running the job on the cell.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -302,6 +304,124 @@ TEST(StudioRobotCell, ViewerPosesThePartUnderTheFixedNozzle) {
 
   child<QPushButton>(*panel, "cellViewHide")->click();
   EXPECT_FALSE(viewer->hasCellMotion());
+}
+
+// The snowman's quick plan and "Find extruder position" run to its end: the map is kept by the cell panel and
+// handed to the Cell view.
+void findReachMap(MainWindow& window) {
+  ASSERT_NO_FATAL_FAILURE(showCellMachine(window));
+  ASSERT_TRUE(test::runQuickSearch(window).plan);
+  ASSERT_TRUE(test::waitUntil([&] { return !window.isGrowingSupports(); }, kLongTimeoutMs));
+  CellPanel* panel = window.cellPanel();
+  ASSERT_TRUE(panel->findExtruderPosition()) << panel->reachText().toStdString();
+  ASSERT_TRUE(test::waitUntil([&] { return !panel->isFindingPosition(); }, kLongTimeoutMs));
+  ASSERT_NE(panel->reachMap(), nullptr) << panel->reachText().toStdString();
+}
+
+QColor reachColorOf(double score) {
+  const auto c = robot::reachColour(score);
+  return QColor(c[0], c[1], c[2]);
+}
+
+bool near(const QColor& a, const QColor& b, int tolerance) {
+  return std::abs(a.red() - b.red()) <= tolerance && std::abs(a.green() - b.green()) <= tolerance &&
+         std::abs(a.blue() - b.blue()) <= tolerance;
+}
+
+TEST(StudioRobotCell, ReachMapIsDrawnInTheCellViewWithTheBestInItsScoresColour) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(findReachMap(window));
+  const CellReachMap& map = *window.cellPanel()->reachMap();
+  CellViewPanel* panel = window.cellViewPanel();
+  MeshViewerWidget* viewer = window.viewer();
+  EXPECT_TRUE(panel->isReachMapShown());
+  EXPECT_TRUE(viewer->hasCellMotion());  // the cell alone: no job is posed on it
+  EXPECT_EQ(viewer->cellReachPointsShown(), static_cast<int>(map.map.points.size()));
+  EXPECT_TRUE(viewer->cellReachColourBarShown());
+  EXPECT_TRUE(panel->reachStatusText().contains(QStringLiteral("%1 nozzle positions").arg(map.map.points.size())))
+      << panel->reachStatusText().toStdString();
+
+  const QImage image = frameOf(viewer);
+  const std::optional<QPointF> best = viewer->widgetPositionOf(map.map.best.nozzleTipMm);
+  ASSERT_TRUE(best.has_value());
+  const QPoint pixel = best->toPoint();
+  ASSERT_TRUE(image.rect().contains(pixel));
+  const QColor expected = reachColorOf(map.map.best.score);
+  EXPECT_TRUE(near(image.pixelColor(pixel), expected, 8))
+      << "at " << pixel.x() << ", " << pixel.y() << ": " << image.pixelColor(pixel).name().toStdString() << " not "
+      << expected.name().toStdString();
+  // The ball is drawn around it in the same colour, ringed in white.
+  const Census ball = census(image.copy(QRect(pixel - QPoint(30, 30), QSize(61, 61))), expected, 8);
+  EXPECT_GT(ball.count, 30);
+  EXPECT_GT(census(image.copy(QRect(pixel - QPoint(30, 30), QSize(61, 61))), Qt::white, 8).count, 10);
+}
+
+TEST(StudioRobotCell, ReachMapToggleHidesAndShowsTheMap) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(findReachMap(window));
+  const CellReachMap& map = *window.cellPanel()->reachMap();
+  CellViewPanel* panel = window.cellViewPanel();
+  MeshViewerWidget* viewer = window.viewer();
+  auto* toggle = child<QCheckBox>(*panel, "cellViewReachMap");
+  ASSERT_TRUE(toggle->isChecked());
+  const QColor bestColour = reachColorOf(map.map.best.score);
+  // Around the best position on screen (the corner's axes marker draws pure blue too).
+  const auto aroundBest = [&] {
+    const QPoint pixel = viewer->widgetPositionOf(map.map.best.nozzleTipMm).value_or(QPointF(-1000, -1000)).toPoint();
+    return census(frameOf(viewer).copy(QRect(pixel - QPoint(30, 30), QSize(61, 61))), bestColour, 8).count;
+  };
+  ASSERT_GT(aroundBest(), 30);
+
+  toggle->setChecked(false);
+  EXPECT_FALSE(panel->isReachMapShown());
+  EXPECT_EQ(viewer->cellReachPointsShown(), 0);
+  EXPECT_FALSE(viewer->cellReachColourBarShown());
+  EXPECT_EQ(aroundBest(), 0);
+  EXPECT_NE(window.cellPanel()->reachMap(), nullptr);  // hidden, not dropped
+
+  toggle->setChecked(true);
+  EXPECT_EQ(viewer->cellReachPointsShown(), static_cast<int>(map.map.points.size()));
+  EXPECT_GT(aroundBest(), 30);
+}
+
+TEST(StudioRobotCell, ChangedCellHidesTheStaleReachMapAndSaysWhy) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(findReachMap(window));
+  MeshViewerWidget* viewer = window.viewer();
+  // The nozzle axis tilted: every platform pose the map scored changes.
+  child<QDoubleSpinBox>(*window.cellPanel(), "cellNozzleAxisX")->setValue(0.3);
+  EXPECT_EQ(window.cellPanel()->reachMap(), nullptr);
+  EXPECT_FALSE(window.cellPanel()->bestPosition().has_value());
+  EXPECT_FALSE(child<QPushButton>(*window.cellPanel(), "cellUseReach")->isVisibleTo(window.cellPanel()));
+  CellViewPanel* panel = window.cellViewPanel();
+  EXPECT_FALSE(panel->isReachMapShown());
+  EXPECT_FALSE(child<QCheckBox>(*panel, "cellViewReachMap")->isEnabled());
+  EXPECT_TRUE(panel->reachStatusText().contains(QStringLiteral("The cell changed"))) << panel->reachStatusText().toStdString();
+  EXPECT_EQ(viewer->cellReachPointsShown(), 0);
+  EXPECT_FALSE(viewer->hasCellMotion());  // the cell alone was drawn for the map: back to the plan
+}
+
+TEST(StudioRobotCell, ChangedPlanHidesTheStaleReachMapAndSaysWhy) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(findReachMap(window));
+  window.document()->clearPlan();
+  EXPECT_EQ(window.cellPanel()->reachMap(), nullptr);
+  EXPECT_EQ(window.viewer()->cellReachPointsShown(), 0);
+  EXPECT_TRUE(window.cellViewPanel()->reachStatusText().contains(QStringLiteral("The plan changed")))
+      << window.cellViewPanel()->reachStatusText().toStdString();
+}
+
+// The map scores positions of the nozzle tip, whatever the tip is now: moving the tip there ("Use this position")
+// leaves it true, and the view draws the nozzle at the ringed best position.
+TEST(StudioRobotCell, UsingTheBestPositionKeepsTheReachMapWithTheNozzleOnTheBest) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(findReachMap(window));
+  const std::shared_ptr<const CellReachMap> map = window.cellPanel()->reachMap();
+  child<QPushButton>(*window.cellPanel(), "cellUseReach")->click();
+  EXPECT_EQ(window.cellPanel()->reachMap(), map);
+  EXPECT_TRUE(window.cellViewPanel()->isReachMapShown());
+  EXPECT_EQ(window.viewer()->cellReachPointsShown(), static_cast<int>(map->map.points.size()));
+  EXPECT_LT((window.document()->cell()->nozzleTipMm - map->map.best.nozzleTipMm).norm(), 1e-9);
 }
 
 TEST(StudioRobotCell, UnreachableStepIsDrawnWithARedMarkerAndItsLine) {

@@ -154,11 +154,26 @@ CellPanel::CellPanel(StudioDocument* document, QWidget* parent) : QWidget(parent
     ended();
     m_reach->setText(tr("Finding the extruder position was cancelled."));
   });
-  connect(m_document, &StudioDocument::cellChanged, this, &CellPanel::showCell);
+  connect(m_document, &StudioDocument::cellChanged, this, [this] {
+    showCell();
+    if (m_map && (!m_document->cell() || !reachMapFitsCell(*m_map, *m_document->cell())))
+      dropReachMap(tr("The cell changed since the reach map was made (the map scores the arm, the nozzle axis, "
+                      "the platform, the table and the margins it had): find the extruder position again."));
+  });
   connect(m_document, &StudioDocument::planChanged, this, [this] {
-    m_best.reset();
-    m_use->hide();
-    m_reach->clear();
+    if (m_map) {
+      dropReachMap(tr("The plan changed since the reach map was made (the map scores the plan's poses): find the "
+                      "extruder position again."));
+    } else {
+      m_best.reset();
+      m_use->hide();
+      m_reach->clear();
+    }
+  });
+  connect(m_document, &StudioDocument::supportsChanged, this, [this] {
+    if (m_map)
+      dropReachMap(tr("Supports were grown for the plan since the reach map was made (the map scores their poses "
+                      "too): find the extruder position again."));
   });
   showCell();
 }
@@ -269,9 +284,7 @@ void CellPanel::takeFields() {
   // The axis typed is taken as a direction (the file wants it unit; the check would refuse a rounded one).
   if (cell.nozzleAxis.norm() > 1e-9) cell.nozzleAxis.normalize();
   cell.tableZMm = m_table->value();
-  m_best.reset();
-  m_use->hide();
-  m_document->setCell(cell);
+  m_document->setCell(cell);  // a stale reach map goes on cellChanged
 }
 
 bool CellPanel::findExtruderPosition() {
@@ -293,15 +306,19 @@ bool CellPanel::findExtruderPosition() {
   auto result = std::make_shared<core::Result<robot::ReachMap>>(core::Error{core::ErrorCode::Cancelled, "not run", ""});
   const robot::Cell cell = *m_document->cell();
   const std::vector<robot::ReachStep> needed = *steps;
-  const bool started = m_job->start([result, cell, needed](core::JobContext context) {
-    *result = robot::reachMap(needed, cell, robot::ReachMapOptions{}, context);
+  const robot::ReachMapOptions options;
+  const bool started = m_job->start([result, cell, needed, options](core::JobContext context) {
+    *result = robot::reachMap(needed, cell, options, context);
     return result->ok() ? QString() : QString::fromStdString(result->error().describe());
   });
   if (!started) return false;
   // One pair of connections per run: the result handler and the cancel handler each drop both.
   auto connection = std::make_shared<QMetaObject::Connection>();
   auto onCancel = std::make_shared<QMetaObject::Connection>();
-  *connection = connect(m_job, &CellJob::finished, this, [this, result, connection, onCancel](const QString& error) {
+  // The map belongs to the plan and cell it was started for: a change while it runs makes its result stale.
+  const std::shared_ptr<const core::Decomposition> plan = run->plan;
+  *connection = connect(m_job, &CellJob::finished, this,
+                        [this, result, connection, onCancel, cell, plan, options](const QString& error) {
     disconnect(*connection);
     disconnect(*onCancel);
     m_progress->hide();
@@ -311,8 +328,21 @@ bool CellPanel::findExtruderPosition() {
       m_reach->setText(tr("The reach map failed: %1").arg(error));
       return;
     }
-    const robot::ReachPoint& best = (*result)->best;
+    auto map = std::make_shared<CellReachMap>();
+    map->map = std::move(**result);
+    map->cell = cell;
+    map->gridMm = options.gridMm;
+    const auto& shown = m_document->plan();
+    if (!shown || shown->plan != plan || !m_document->cell() || !reachMapFitsCell(*map, *m_document->cell())) {
+      m_reach->setText(tr("The plan or the cell changed while the reach map was made: find the extruder position "
+                          "again."));
+      return;
+    }
+    const robot::ReachPoint& best = map->map.best;
     m_best = best;
+    m_map = map;
+    m_mapGone.clear();
+    emit reachMapChanged();
     m_reach->setText(tr("Best nozzle position: %1, %2, %3 mm, %4 % of the plan's poses reachable with margin "
                         "(least reach margin %5 mm) over %6 positions.")
                          .arg(best.nozzleTipMm.x(), 0, 'f', 0)
@@ -320,7 +350,7 @@ bool CellPanel::findExtruderPosition() {
                          .arg(best.nozzleTipMm.z(), 0, 'f', 0)
                          .arg(100.0 * best.score, 0, 'f', 1)
                          .arg(std::isfinite(best.leastMarginMm) ? best.leastMarginMm : 0.0, 0, 'f', 1)
-                         .arg((*result)->points.size()));
+                         .arg(map->map.points.size()));
     m_use->setVisible(best.score > 0.0);
   });
   *onCancel = connect(m_job, &CellJob::cancelled, this, [connection, onCancel] {
@@ -334,6 +364,15 @@ bool CellPanel::findExtruderPosition() {
   m_reach->setText(tr("Finding the extruder position..."));
   m_use->hide();
   return true;
+}
+
+void CellPanel::dropReachMap(const QString& why) {
+  m_map = nullptr;
+  m_best.reset();
+  m_use->hide();
+  m_mapGone = why;
+  m_reach->setText(why);
+  emit reachMapChanged();
 }
 
 void CellPanel::cancelReach() { m_job->cancel(); }

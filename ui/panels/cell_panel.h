@@ -6,11 +6,16 @@
 // Cancel, its best position offered for the nozzle.
 //
 // The cell lives in the studio document: the fields show document->cell() and every edit replaces it there.
+// The reach map is this panel's result for the cell and the plan it was made for (the Cell view draws it): a new
+// or edited plan, supports grown for it, or a cell changed in anything but its nozzle tip (ui/viewer/
+// cell_reach_map.h: the map places the tip) drops it, and reachMapGoneText() says why.
 #include <QWidget>
 #include <array>
+#include <memory>
 #include <optional>
 
 #include "multidir/robot/reach_map.h"
+#include "ui/viewer/cell_reach_map.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -44,6 +49,10 @@ class CellPanel : public QWidget {
   [[nodiscard]] bool isFindingPosition() const;
   // The last reach map's best position (nullopt: none yet, or the map was for another cell or plan).
   [[nodiscard]] const std::optional<robot::ReachPoint>& bestPosition() const { return m_best; }
+  // The last reach map with the cell it was scored for (null: none yet, or dropped as stale).
+  [[nodiscard]] const std::shared_ptr<const CellReachMap>& reachMap() const { return m_map; }
+  // Why the last map was dropped ("" while one is kept, or before the first).
+  [[nodiscard]] QString reachMapGoneText() const { return m_mapGone; }
   // Puts the nozzle tip at the best position ("Use this position").
   void useBestPosition();
 
@@ -52,8 +61,13 @@ class CellPanel : public QWidget {
   [[nodiscard]] QString messageText() const;
   [[nodiscard]] QString reachText() const;
 
+ signals:
+  // A reach map was made, or the one kept was dropped (reachMap(), reachMapGoneText()).
+  void reachMapChanged();
+
  private:
   void showCell();
+  void dropReachMap(const QString& why);
   void takeFields();
   void showMessage(const QString& text, bool error);
 
@@ -73,6 +87,8 @@ class CellPanel : public QWidget {
   QPushButton* m_use = nullptr;
   CellJob* m_job = nullptr;
   std::optional<robot::ReachPoint> m_best;
+  std::shared_ptr<const CellReachMap> m_map;
+  QString m_mapGone;
   bool m_showing = false;  // fields being set from the document: their signals are not edits
 };
 

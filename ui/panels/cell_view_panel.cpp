@@ -1,5 +1,6 @@
 #include "ui/panels/cell_view_panel.h"
 
+#include <QCheckBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -57,6 +58,15 @@ CellViewPanel::CellViewPanel(StudioDocument* document, MeshViewerWidget* viewer,
   m_warnings->setStyleSheet(QStringLiteral("color: #d03030;"));
   m_timer = new QTimer(this);
   m_timer->setInterval(kPlayTickMs);
+  m_reachShown = new QCheckBox(tr("Show the reach map"), this);
+  m_reachShown->setObjectName(QStringLiteral("cellViewReachMap"));
+  m_reachShown->setToolTip(tr("The nozzle positions \"Find extruder position\" scored (Machine tab), coloured from "
+                              "red (none of the plan's poses reachable with margin) to blue (all of them); the best "
+                              "one ringed in white"));
+  m_reachShown->setEnabled(false);
+  m_reachStatus = new QLabel(this);
+  m_reachStatus->setObjectName(QStringLiteral("cellViewReachStatus"));
+  m_reachStatus->setWordWrap(true);
   m_job = new CellJob(this);
 
   auto* buttons = new QHBoxLayout;
@@ -73,12 +83,15 @@ CellViewPanel::CellViewPanel(StudioDocument* document, MeshViewerWidget* viewer,
   layout->addWidget(m_position);
   layout->addWidget(m_status);
   layout->addWidget(m_warnings);
+  layout->addWidget(m_reachShown);
+  layout->addWidget(m_reachStatus);
   layout->addStretch(1);
 
   connect(m_show, &QPushButton::clicked, this, &CellViewPanel::showOnCell);
   connect(m_cancel, &QPushButton::clicked, this, &CellViewPanel::cancel);
   connect(m_hide, &QPushButton::clicked, this, &CellViewPanel::hideCellView);
   connect(m_slider, &QSlider::valueChanged, this, &CellViewPanel::showPosition);
+  connect(m_reachShown, &QCheckBox::toggled, this, [this] { showInViewer(); });
   connect(m_play, &QPushButton::toggled, this, [this](bool on) {
     m_play->setText(on ? tr("Pause") : tr("Play"));
     if (on && m_slider->value() >= m_slider->maximum()) m_slider->setValue(0);
@@ -167,12 +180,60 @@ void CellViewPanel::cancel() { m_job->cancel(); }
 
 bool CellViewPanel::isConverting() const { return m_job->isRunning(); }
 
-void CellViewPanel::hideCellView() { setMotion(nullptr); }
+void CellViewPanel::hideCellView() {
+  {
+    const QSignalBlocker blocker(m_reachShown);  // back to the plan: the map is kept, not drawn
+    m_reachShown->setChecked(false);
+  }
+  setMotion(nullptr);
+}
+
+void CellViewPanel::setReachMap(std::shared_ptr<const CellReachMap> map, const QString& goneText) {
+  m_reachMap = std::move(map);
+  m_reachShown->setEnabled(m_reachMap != nullptr);
+  if (m_reachMap) {
+    const robot::ReachPoint& best = m_reachMap->map.best;
+    m_reachStatus->setText(tr("Reach map: %1 nozzle positions every %2 mm; the best, ringed, at %3, %4, %5 mm with "
+                              "%6 % of the plan's poses reachable with margin.")
+                               .arg(m_reachMap->map.points.size())
+                               .arg(m_reachMap->gridMm, 0, 'f', 0)
+                               .arg(best.nozzleTipMm.x(), 0, 'f', 0)
+                               .arg(best.nozzleTipMm.y(), 0, 'f', 0)
+                               .arg(best.nozzleTipMm.z(), 0, 'f', 0)
+                               .arg(100.0 * best.score, 0, 'f', 1));
+  } else {
+    m_reachStatus->setText(goneText.isEmpty() ? QString() : tr("Reach map not shown: %1").arg(goneText));
+  }
+  const QSignalBlocker blocker(m_reachShown);
+  m_reachShown->setChecked(m_reachMap != nullptr);
+  showInViewer();
+}
+
+void CellViewPanel::setReachMapShown(bool shown) { m_reachShown->setChecked(shown && m_reachMap); }
+
+bool CellViewPanel::isReachMapShown() const { return m_reachMap && m_reachShown->isChecked(); }
+
+QString CellViewPanel::reachStatusText() const { return m_reachStatus->text(); }
+
+void CellViewPanel::showInViewer() {
+  const bool map = isReachMapShown() && m_document->cell();
+  std::shared_ptr<const CellMotion> shown = m_motion;
+  if (!shown && map) {
+    auto alone = std::make_shared<CellMotion>();
+    alone->cell = *m_document->cell();
+    shown = alone;
+  }
+  m_viewer->setCellMotion(shown);
+  if (shown) {
+    m_viewer->setCellPosition(cellPositionAt(*shown, m_slider->value()));
+    m_viewer->setCellReachMap(map ? m_reachMap : nullptr, tr("Plan's poses reachable with margin (%)"));
+  }
+}
 
 void CellViewPanel::setMotion(std::shared_ptr<const CellMotion> motion) {
   m_play->setChecked(false);
   m_motion = std::move(motion);
-  m_viewer->setCellMotion(m_motion);
+  showInViewer();
   QString warnings;
   if (m_motion) {
     int moves = 0;

@@ -4,11 +4,17 @@
 // robot programs command, with progress and Cancel) and hands it to the viewer's cell view; a slider runs over
 // every move of every step, Play/Pause steps through them, and the steps the conversion refuses are listed
 // with their line and reason (the viewer draws their red markers).
+//
+// The reach map "Find extruder position" made (CellPanel::reachMap) is drawn in the same view, over the job when
+// one is shown, else over the cell alone with the arm at home; "Show the reach map" hides and shows it, and the
+// panel says what it shows or why the map went (a changed plan or cell: no stale map is drawn).
 #include <QWidget>
 #include <memory>
 
 #include "ui/viewer/cell_motion.h"
+#include "ui/viewer/cell_reach_map.h"
 
+class QCheckBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -38,8 +44,20 @@ class CellViewPanel : public QWidget {
   [[nodiscard]] QString statusText() const;
   [[nodiscard]] QString warningsText() const;
 
+  // The reach map to draw (null: none; `goneText` then says why, "" when there simply is none). A new map is
+  // shown at once.
+  void setReachMap(std::shared_ptr<const CellReachMap> map, const QString& goneText);
+  [[nodiscard]] const CellReachMap* reachMap() const { return m_reachMap.get(); }
+  // "Show the reach map": draws the map in the cell view (entering it with the cell alone when no job is shown)
+  // or hides it.
+  void setReachMapShown(bool shown);
+  [[nodiscard]] bool isReachMapShown() const;
+  [[nodiscard]] QString reachStatusText() const;
+
  private:
   void setMotion(std::shared_ptr<const CellMotion> motion);
+  // What the viewer draws: the job's motion, or the cell alone under a reach map shown, and the map.
+  void showInViewer();
   void showPosition(int index);
   void updateEnabled();
 
@@ -55,8 +73,11 @@ class CellViewPanel : public QWidget {
   QLabel* m_status = nullptr;
   QLabel* m_warnings = nullptr;
   QTimer* m_timer = nullptr;
+  QCheckBox* m_reachShown = nullptr;
+  QLabel* m_reachStatus = nullptr;
   CellJob* m_job = nullptr;
   std::shared_ptr<const CellMotion> m_motion;
+  std::shared_ptr<const CellReachMap> m_reachMap;
 };
 
 }  // namespace multidir::ui

@@ -121,6 +121,9 @@ void CellScene::setMotion(std::shared_ptr<const CellMotion> motion) {
     if (m_warningText) m_overlay->RemoveActor2D(m_warningText);
     m_links.clear();
     m_fixed.clear();
+    m_earlierPart = nullptr;
+    m_stepPart = nullptr;
+    m_toolpath = nullptr;
   };
   removeAll();
   m_motion = std::move(motion);
@@ -212,7 +215,7 @@ void CellScene::build() {
 }
 
 void CellScene::setPosition(CellPosition position) {
-  if (!m_motion || m_motion->steps.empty()) return;
+  if (!m_motion || m_motion->steps.empty()) return;  // the cell alone: the arm stays at home
   position.step = std::clamp(position.step, 0, static_cast<int>(m_motion->steps.size()) - 1);
   const auto& samples = m_motion->steps[static_cast<std::size_t>(position.step)].samples;
   position.sample = std::clamp(position.sample, 0, std::max(0, static_cast<int>(samples.size()) - 1));
@@ -221,8 +224,15 @@ void CellScene::setPosition(CellPosition position) {
 }
 
 void CellScene::pose() {
-  if (!m_motion || m_motion->steps.empty()) return;
+  if (!m_motion) return;
   const robot::Cell& cell = m_motion->cell;
+  if (m_motion->steps.empty()) {  // the cell alone (the reach map shown before a job is): the arm at home
+    poseArm(robot::platformPose(cell, cell.home), cell.home);
+    m_point->VisibilityOff();
+    m_warningMarker->VisibilityOff();
+    m_warningText->VisibilityOff();
+    return;
+  }
   const robot::StepMotion& step = m_motion->steps[static_cast<std::size_t>(m_position.step)];
   const Eigen::Isometry3d fileToPlatform = step.platformToFile.inverse();
 
@@ -269,21 +279,7 @@ void CellScene::pose() {
     joints = sample->joints;
   }
   for (vtkActor* a : {m_earlierPart.Get(), m_stepPart.Get(), m_toolpath.Get()}) a->SetUserTransform(transformOf(platform));
-  // The platform disc: its top in the TCP's xy plane, its thickness below.
-  placeCylinder(m_platform, platform * Eigen::Vector3d(0, 0, -cell.platformThicknessMm), platform * Eigen::Vector3d(0, 0, -0.2),
-                cell.platformRadiusMm);
-
-  // The arm: each joint's housing along its axis (z of the frame before it), the links between the origins.
-  const auto frames = robot::armFrames(cell.arm, joints);
-  const double housing = housingRadiusMm(cell.arm);
-  for (std::size_t j = 0; j < 6; ++j) {
-    const Eigen::Vector3d origin = frames[j].translation();
-    const Eigen::Vector3d axis = frames[j].linear().col(2);
-    placeCylinder(m_links[j], origin - 0.6 * housing * axis, origin + 0.6 * housing * axis, 0.8 * housing);
-  }
-  for (std::size_t j = 0; j < 6; ++j) {
-    placeCylinder(m_links[6 + j], frames[j].translation(), frames[j + 1].translation(), 0.6 * housing);
-  }
+  poseArm(platform, joints);
 
   const Eigen::Vector3d point = sample ? Eigen::Vector3d(platform * (fileToPlatform * sample->nozzleFileMm)) : cell.nozzleTipMm;
   m_point->SetPosition(point.x(), point.y(), point.z());
@@ -311,6 +307,26 @@ void CellScene::pose() {
     m_warningMarker->VisibilityOff();
     m_warningText->SetInput("");
     m_warningText->VisibilityOff();
+  }
+}
+
+// The platform disc at `platform` and the arm at `joints`.
+void CellScene::poseArm(const Eigen::Isometry3d& platform, const robot::Joints& joints) {
+  const robot::Cell& cell = m_motion->cell;
+  // The platform disc: its top in the TCP's xy plane, its thickness below.
+  placeCylinder(m_platform, platform * Eigen::Vector3d(0, 0, -cell.platformThicknessMm), platform * Eigen::Vector3d(0, 0, -0.2),
+                cell.platformRadiusMm);
+
+  // The arm: each joint's housing along its axis (z of the frame before it), the links between the origins.
+  const auto frames = robot::armFrames(cell.arm, joints);
+  const double housing = housingRadiusMm(cell.arm);
+  for (std::size_t j = 0; j < 6; ++j) {
+    const Eigen::Vector3d origin = frames[j].translation();
+    const Eigen::Vector3d axis = frames[j].linear().col(2);
+    placeCylinder(m_links[j], origin - 0.6 * housing * axis, origin + 0.6 * housing * axis, 0.8 * housing);
+  }
+  for (std::size_t j = 0; j < 6; ++j) {
+    placeCylinder(m_links[6 + j], frames[j].translation(), frames[j + 1].translation(), 0.6 * housing);
   }
 }
 

@@ -30,7 +30,8 @@ class CellScene {
   CellScene(const CellScene&) = delete;
   CellScene& operator=(const CellScene&) = delete;
 
-  // Shows `motion` at its first position; null clears.
+  // Shows `motion` at its first position; null clears. A motion with no steps shows the cell alone, the arm at
+  // its home joints.
   void setMotion(std::shared_ptr<const CellMotion> motion);
   [[nodiscard]] bool hasMotion() const { return m_motion != nullptr; }
   [[nodiscard]] const CellMotion* motion() const { return m_motion.get(); }
@@ -47,6 +48,7 @@ class CellScene {
  private:
   void build();
   void pose();
+  void poseArm(const Eigen::Isometry3d& platform, const robot::Joints& joints);
 
   vtkRenderer* m_renderer;  // not owned
   vtkRenderer* m_overlay;   // not owned

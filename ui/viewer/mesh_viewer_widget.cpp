@@ -39,6 +39,7 @@
 #include "multidir/core/common/units.h"
 #include "ui/viewer/cell_colors.h"
 #include "ui/viewer/cell_scene.h"
+#include "ui/viewer/reach_scene.h"
 #include "ui/viewer/gcode_scene.h"
 #include "ui/viewer/measure_scene.h"
 #include "ui/viewer/mesh_to_polydata.h"
@@ -157,6 +158,7 @@ struct MeshViewerWidget::Impl {
   vtkNew<vtkRenderer> cellRenderer;
   vtkNew<vtkRenderer> cellOverlay;
   std::unique_ptr<CellScene> cell;
+  std::unique_ptr<ReachScene> reach;
   bool cellShown = false;
 
   vtkNew<vtkPolyDataMapper> modelMapper;
@@ -210,6 +212,7 @@ struct MeshViewerWidget::Impl {
     measure = std::make_unique<MeasureScene>(overlay);
     solids = std::make_unique<SolidsScene>(renderer, overlay);
     cell = std::make_unique<CellScene>(cellRenderer, cellOverlay);
+    reach = std::make_unique<ReachScene>(cellRenderer, cellOverlay);
     cellRenderer->GradientBackgroundOn();
     cellRenderer->SetBackground(kBackgroundBottomRgb[0], kBackgroundBottomRgb[1], kBackgroundBottomRgb[2]);
     cellRenderer->SetBackground2(kBackgroundTopRgb[0], kBackgroundTopRgb[1], kBackgroundTopRgb[2]);
@@ -307,7 +310,23 @@ struct MeshViewerWidget::Impl {
     window->AddRenderer(shownOverlay());
   }
 
+  // The cell view's camera: from the front right and above, z up, framing `box` (base frame, mm); `armMm` sets
+  // how far away the eye starts (the framing then zooms to the box).
+  void frameCell(const Eigen::AlignedBox3d& box, double armMm) {
+    const Eigen::Vector3d centre = box.center();
+    const Eigen::Vector3d eye = centre + Eigen::Vector3d(1.0, -1.6, 0.9).normalized() * 4.0 * armMm;
+    vtkCamera* camera = cellRenderer->GetActiveCamera();
+    camera->SetFocalPoint(centre.x(), centre.y(), centre.z());
+    camera->SetPosition(eye.x(), eye.y(), eye.z());
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetParallelProjection(renderer->GetActiveCamera()->GetParallelProjection());
+    const double bounds[6] = {box.min().x(), box.max().x(), box.min().y(), box.max().y(), box.min().z(), box.max().z()};
+    cellRenderer->ResetCamera(bounds);
+    camera->Zoom(1.2);
+  }
+
   void endCellView() {
+    reach->setMap(nullptr, {});
     cell->setMotion(nullptr);
     showCell(false);
   }
@@ -930,18 +949,28 @@ void MeshViewerWidget::setCellMotion(std::shared_ptr<const CellMotion> motion) {
   box.extend(cell.nozzleTipMm);
   box.min().array() -= 0.25 * reach;
   box.max().array() += 0.25 * reach;
-  const Eigen::Vector3d centre = box.center();
-  const Eigen::Vector3d eye = centre + Eigen::Vector3d(1.0, -1.6, 0.9).normalized() * 4.0 * reach;
-  vtkCamera* camera = m.cellRenderer->GetActiveCamera();
-  camera->SetFocalPoint(centre.x(), centre.y(), centre.z());
-  camera->SetPosition(eye.x(), eye.y(), eye.z());
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  camera->SetParallelProjection(m.renderer->GetActiveCamera()->GetParallelProjection());
-  const double bounds[6] = {box.min().x(), box.max().x(), box.min().y(), box.max().y(), box.min().z(), box.max().z()};
-  m.cellRenderer->ResetCamera(bounds);
-  camera->Zoom(1.2);
+  m.frameCell(box, reach);
   update();
 }
+
+void MeshViewerWidget::setCellReachMap(std::shared_ptr<const CellReachMap> map, const QString& colourBarTitle) {
+  Impl& m = *m_impl;
+  if (!m.cellShown) map = nullptr;  // drawn with the cell only
+  m.reach->setMap(map, colourBarTitle.toStdString());
+  if (map) {
+    // The whole map in view with the cell: the camera as setCellMotion sets it, framing the sampled positions too.
+    const robot::Cell& cell = map->cell;
+    const double reach = std::abs(cell.arm.a[1]) + std::abs(cell.arm.a[2]);
+    Eigen::AlignedBox3d box(Eigen::Vector3d::Zero());
+    box.extend(m.cell->motion()->cell.nozzleTipMm);
+    for (const robot::ReachPoint& p : map->map.points) box.extend(p.nozzleTipMm);
+    m.frameCell(box, reach);
+  }
+  update();
+}
+
+int MeshViewerWidget::cellReachPointsShown() const { return m_impl->cellShown ? m_impl->reach->pointsShown() : 0; }
+bool MeshViewerWidget::cellReachColourBarShown() const { return m_impl->cellShown && m_impl->reach->colourBarShown(); }
 
 bool MeshViewerWidget::hasCellMotion() const { return m_impl->cellShown; }
 

@@ -18,6 +18,7 @@
 #include "multidir/core/search/decomposition.h"
 #include "multidir/core/supports/support_set.h"
 #include "ui/viewer/cell_motion.h"
+#include "ui/viewer/cell_reach_map.h"
 #include "ui/viewer/coloured_solid.h"
 #include "ui/viewer/measurement.h"
 #include "ui/viewer/platform_geometry.h"
@@ -176,6 +177,13 @@ class MeshViewerWidget : public QOpenGLWidget {
   // The warning text drawn for the step shown (empty: none), and whether its red marker is drawn.
   [[nodiscard]] QString cellWarningShown() const;
   [[nodiscard]] bool cellWarningMarkerShown() const;
+  // The reach map "Find extruder position" made (ui/viewer/reach_scene.h), drawn with the cell while the cell view
+  // is shown (ignored otherwise; ended with it): every sampled nozzle position in its score's colour, the best
+  // ringed, the colour bar titled `colourBarTitle`; the camera frames the whole map with the cell. Null clears.
+  void setCellReachMap(std::shared_ptr<const CellReachMap> map, const QString& colourBarTitle);
+  // The map's points drawn now (0: none), and whether its colour bar is.
+  [[nodiscard]] int cellReachPointsShown() const;
+  [[nodiscard]] bool cellReachColourBarShown() const;
   // The cell view's colours: the part (lit), the nozzle, the toolpath point, the toolpath and the warning (unlit,
   // exact).
   [[nodiscard]] static QColor cellPartColor();
