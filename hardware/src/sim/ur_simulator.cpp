@@ -53,21 +53,31 @@ std::string csvNumber(double value, int decimals) {
   return text;
 }
 
+// How far the secondary interface's text has been read for a program's end: the lines before `scanned` are
+// read, and `sawFirst` says whether a first line (a def, or a one-line program) was among them. Kept per client
+// so that each chunk is read once: reading the whole text again after every chunk took seconds on a program of
+// megabytes, on the thread that must send the real-time state every 8 ms.
+struct ProgramScan {
+  std::size_t scanned = 0;
+  bool sawFirst = false;
+};
+
 // A top-level `end` (no indentation) closes a program; a first line that is not a def is a program of itself.
-bool programComplete(const std::string& text) {
-  std::size_t begin = 0;
-  bool first = true;
-  while (begin < text.size()) {
-    const std::size_t end = text.find('\n', begin);
+bool programComplete(const std::string& text, ProgramScan& scan) {
+  while (scan.scanned < text.size()) {
+    const std::size_t begin = scan.scanned;
+    std::size_t end = text.find('\n', begin);
     if (end == std::string::npos) return false;
-    std::string line = text.substr(begin, end - begin);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    begin = end + 1;
-    const std::size_t content = line.find_first_not_of(" \t");
-    if (content == std::string::npos || line[content] == '#') continue;
-    if (first && line.compare(content, 4, "def ") != 0) return true;
-    first = false;
-    if (line.rfind("end", 0) == 0 && line.find_first_not_of(" \t", 3) == std::string::npos) return true;
+    scan.scanned = end + 1;
+    if (end > begin && text[end - 1] == '\r') --end;
+    const std::size_t content = text.find_first_not_of(" \t", begin);
+    if (content >= end || text[content] == '#') continue;
+    if (!scan.sawFirst && text.compare(content, 4, "def ") != 0) return true;
+    scan.sawFirst = true;
+    if (text.compare(begin, 3, "end") == 0) {
+      const std::size_t after = text.find_first_not_of(" \t", begin + 3);
+      if (after >= end) return true;
+    }
   }
   return false;
 }
@@ -245,6 +255,7 @@ class UrSimulator::Impl {
     int fd = -1;
     Port port = Port::Dashboard;
     std::string received;
+    ProgramScan scan;  // the secondary interface: how far `received` has been read for a program's end
     std::string unsent;
     bool closing = false;
     // RTDE: the output recipe's variables (set up by the client), sent every tick once started.
@@ -311,13 +322,15 @@ class UrSimulator::Impl {
     if (client.port == Port::Secondary) {
       if (client.received.size() > kMaxProgramBytes) {
         client.received.clear();
+        client.scan = {};
         client.closing = true;
         return;
       }
-      if (programComplete(client.received)) {
+      if (programComplete(client.received, client.scan)) {
         m_programs.push_back(client.received);
         m_controller->receiveProgram(client.received);
         client.received.clear();
+        client.scan = {};
       }
       return;
     }
