@@ -97,7 +97,7 @@ std::string writeRobotJob(const std::string& name, double speed, const fs::path&
   return dir;
 }
 
-// A UR simulator on three consecutive free ports (the HOST:PORT convention).
+// A UR simulator on four consecutive free ports (the HOST:PORT convention: dashboard, secondary, real-time, RTDE).
 std::unique_ptr<hw::UrSimulator> startSimulator(hw::UrSimulatorOptions options) {
   options.keepTrace = true;
   options.initialJoints = {0.0, -1.0, 1.3, -1.9, -1.5707963267948966, 0.0};
@@ -105,6 +105,7 @@ std::unique_ptr<hw::UrSimulator> startSimulator(hw::UrSimulatorOptions options) 
     options.dashboardPort = base;
     options.secondaryPort = base + 1;
     options.realtimePort = base + 2;
+    options.rtdePort = base + 3;
     auto simulator = std::make_unique<hw::UrSimulator>(options);
     if (simulator->start().ok()) return simulator;
   }
@@ -212,6 +213,7 @@ TEST_F(RobotCellDock, TheDockRunsTheJobToItsEndAlongThePathTheCliRunGives) {
     settings.dashboardPort = cliSimulator->dashboardPort();
     settings.secondaryPort = cliSimulator->dashboardPort() + 1;
     settings.realtimePort = cliSimulator->dashboardPort() + 2;
+    settings.rtdePort = cliSimulator->dashboardPort() + 3;
     hw::UrLink link(settings);
     ASSERT_TRUE(link.connect().ok());
     hw::RobotRunRequests requests;

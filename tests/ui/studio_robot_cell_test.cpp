@@ -483,6 +483,7 @@ TEST(StudioRobotCell, HardwareDockConvertsTheSlicedJobAndRunsItOnTheSimulatedCel
     options.dashboardPort = base;
     options.secondaryPort = base + 1;
     options.realtimePort = base + 2;
+    options.rtdePort = base + 3;
     auto started = std::make_unique<hardware::UrSimulator>(options);
     if (started->start().ok()) simulator = std::move(started);
   }
