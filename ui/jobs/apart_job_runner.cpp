@@ -59,6 +59,8 @@ ApartJobRunner::ApartJobRunner(QObject* parent) : QObject(parent), m_job(new Fol
   (void)registered;
   connect(m_job, &FolderJob::progressed, this, &ApartJobRunner::progressed);
   connect(m_job, &FolderJob::runningChanged, this, &ApartJobRunner::runningChanged);
+  connect(m_job, &FolderJob::failed, this, &ApartJobRunner::failed);
+  connect(m_job, &FolderJob::cancelled, this, &ApartJobRunner::cancelled);
 }
 
 ApartJobRunner::~ApartJobRunner() = default;
@@ -85,36 +87,17 @@ bool ApartJobRunner::start(std::shared_ptr<const core::Decomposition> plan, cons
     return core::Done{};
   };
   auto stage = [](double, const std::string& phase) { return stageText(phase); };
-  // One connection per job: the end of this job, read with this job's result.
-  auto connection = std::make_shared<QMetaObject::Connection>();
-  *connection = connect(m_job, &FolderJob::ended, this, [this, result, plan, connection](const FolderJobEnd& end) {
-    disconnect(*connection);
-    switch (end.kind) {
-      case FolderJobEnd::Kind::Finished: {
-        ApartPrint print;
-        print.plan = plan;
-        print.result = std::make_shared<const apart::ApartResult>(std::move(**result));
-        print.files = end.folder;
-        emit finished(print);
-        return;
-      }
-      case FolderJobEnd::Kind::Cancelled:
-        emit cancelled();
-        return;
-      case FolderJobEnd::Kind::Failed:
-        if (end.error)
-          emit failed(headlineFor(*end.error), QString::fromStdString(end.error->describe()));
-        else
-          emit failed(end.headline, end.detail);
-        return;
-    }
-  });
+  auto finish = [this, result, plan](std::shared_ptr<QTemporaryDir> folder) {
+    ApartPrint print;
+    print.plan = plan;
+    print.result = std::make_shared<const apart::ApartResult>(std::move(**result));
+    print.files = std::move(folder);
+    emit finished(print);
+  };
+  FolderJob::FailureTexts texts{headlineFor, tr("Not enough memory to print this plan apart."),
+                                tr("Unexpected error while printing the plan apart.")};
   QString folderError;
-  if (!m_job->start(
-          QStringLiteral("multidir-apart-XXXXXX"), work, stage,
-          {tr("Not enough memory to print this plan apart."), tr("Unexpected error while printing the plan apart.")},
-          &folderError)) {
-    disconnect(*connection);
+  if (!m_job->start(QStringLiteral("multidir-apart-XXXXXX"), work, stage, texts, finish, &folderError)) {
     if (error) *error = tr("Could not create a temporary folder for the parts: %1").arg(folderError);
     return false;
   }

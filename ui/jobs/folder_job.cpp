@@ -29,8 +29,8 @@ FolderJob::~FolderJob() {
   }
 }
 
-bool FolderJob::start(const QString& folderPattern, Work work, StageText stageText, ExceptionTexts texts,
-                      QString* folderError) {
+bool FolderJob::start(const QString& folderPattern, Work work, StageText stageText, FailureTexts texts,
+                      Finished finished, QString* folderError) {
   if (m_thread) return false;
   auto folder = std::make_shared<QTemporaryDir>(QDir(QDir::tempPath()).filePath(folderPattern));
   if (!folder->isValid()) {
@@ -65,30 +65,27 @@ bool FolderJob::start(const QString& folderPattern, Work work, StageText stageTe
       outcome->detail = QString::fromLocal8Bit(e.what());
     }
   });
-  connect(m_thread, &QThread::finished, this, [this, outcome, folder, generation]() mutable {
-    if (generation != m_generation) return;
-    m_thread->deleteLater();
-    m_thread = nullptr;
-    m_workFolder.clear();
-    emit runningChanged(false);
-    FolderJobEnd end;
-    if (outcome->status && outcome->status->ok()) {
-      end.kind = FolderJobEnd::Kind::Finished;
-      end.folder = std::move(folder);
-      emit ended(end);
-      return;
-    }
-    folder.reset();  // a failed or cancelled job leaves nothing behind
-    if (outcome->status && outcome->status->error().code == core::ErrorCode::Cancelled) {
-      end.kind = FolderJobEnd::Kind::Cancelled;
-    } else if (outcome->status) {
-      end.error = outcome->status->error();
-    } else {
-      end.headline = outcome->headline;
-      end.detail = outcome->detail;
-    }
-    emit ended(end);
-  });
+  connect(m_thread, &QThread::finished, this,
+          [this, outcome, folder, generation, finished = std::move(finished), headline = texts.headline]() mutable {
+            if (generation != m_generation) return;
+            m_thread->deleteLater();
+            m_thread = nullptr;
+            m_workFolder.clear();
+            emit runningChanged(false);
+            if (outcome->status && outcome->status->ok()) {
+              finished(std::move(folder));
+              return;
+            }
+            folder.reset();  // a failed or cancelled job leaves nothing behind
+            if (!outcome->status) {
+              emit failed(outcome->headline, outcome->detail);
+            } else if (outcome->status->error().code == core::ErrorCode::Cancelled) {
+              emit cancelled();
+            } else {
+              const core::Error& error = outcome->status->error();
+              emit failed(headline(error), QString::fromStdString(error.describe()));
+            }
+          });
   m_thread->start();
   emit runningChanged(true);
   return true;

@@ -89,6 +89,8 @@ SliceJobRunner::SliceJobRunner(QObject* parent) : QObject(parent), m_job(new Fol
   (void)registered;
   connect(m_job, &FolderJob::progressed, this, &SliceJobRunner::progressed);
   connect(m_job, &FolderJob::runningChanged, this, &SliceJobRunner::runningChanged);
+  connect(m_job, &FolderJob::failed, this, &SliceJobRunner::failed);
+  connect(m_job, &FolderJob::cancelled, this, &SliceJobRunner::cancelled);
 }
 
 SliceJobRunner::~SliceJobRunner() = default;
@@ -122,38 +124,21 @@ bool SliceJobRunner::start(const core::LoadedPlan& plan, const slicing::PrinterP
   auto stage = [steps, fixedDirection](double fraction, const std::string&) {
     return stageText(fraction, steps, fixedDirection);
   };
-  // One connection per job: the end of this job, read with this job's outcome.
-  auto connection = std::make_shared<QMetaObject::Connection>();
-  *connection = connect(m_job, &FolderJob::ended, this, [this, outcome, options, connection](const FolderJobEnd& end) {
-    disconnect(*connection);
-    switch (end.kind) {
-      case FolderJobEnd::Kind::Finished: {
-        SliceOutcome result;
-        result.job = std::make_shared<const slicing::SlicedJob>(std::move(*outcome->sliced));
-        result.preview = outcome->preview;
-        result.folder = end.folder;
-        if (!outcome->auditError.empty())
-          result.auditError = tr("The audit of the G-code failed, so unsupported extrusions are not marked: %1")
-                                  .arg(QString::fromStdString(outcome->auditError));
-        emit finished(result);
-        return;
-      }
-      case FolderJobEnd::Kind::Cancelled:
-        emit cancelled();
-        return;
-      case FolderJobEnd::Kind::Failed:
-        if (end.error)
-          emit failed(headlineFor(*end.error, options.slicerExecutable), QString::fromStdString(end.error->describe()));
-        else
-          emit failed(end.headline, end.detail);
-        return;
-    }
-  });
+  auto finish = [this, outcome](std::shared_ptr<QTemporaryDir> folder) {
+    SliceOutcome result;
+    result.job = std::make_shared<const slicing::SlicedJob>(std::move(*outcome->sliced));
+    result.preview = outcome->preview;
+    result.folder = std::move(folder);
+    if (!outcome->auditError.empty())
+      result.auditError = tr("The audit of the G-code failed, so unsupported extrusions are not marked: %1")
+                              .arg(QString::fromStdString(outcome->auditError));
+    emit finished(result);
+  };
+  const std::string slicer = options.slicerExecutable;
+  FolderJob::FailureTexts texts{[slicer](const core::Error& e) { return headlineFor(e, slicer); },
+                                tr("Not enough memory to slice this plan."), tr("Unexpected error while slicing.")};
   QString folderError;
-  if (!m_job->start(QStringLiteral("multidir-slice-XXXXXX"), work, stage,
-                    {tr("Not enough memory to slice this plan."), tr("Unexpected error while slicing.")},
-                    &folderError)) {
-    disconnect(*connection);
+  if (!m_job->start(QStringLiteral("multidir-slice-XXXXXX"), work, stage, texts, finish, &folderError)) {
     if (error) *error = tr("Could not create a temporary folder for the G-code: %1").arg(folderError);
     return false;
   }
