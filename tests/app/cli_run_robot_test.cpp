@@ -26,32 +26,20 @@
 #include "multidir/robot/ur_kinematics.h"
 #include "support/cli_runner.h"
 #include "support/test_models.h"
+#include "support/ur_test_support.h"
 
 namespace {
 
 using multidir::test::CliRun;
 using multidir::test::runCli;
+using multidir::test::urPose;
 namespace robot = multidir::robot;
 namespace hw = multidir::hardware;
 
 const robot::Joints kStart{0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0};
 
-std::string urPose(const Eigen::Isometry3d& p) {
-  const Eigen::AngleAxisd aa(p.linear());
-  const Eigen::Vector3d r = aa.axis() * aa.angle();
-  const Eigen::Vector3d t = p.translation() / 1000.0;
-  char text[200];
-  std::snprintf(text, sizeof text, "p[%.9f, %.9f, %.9f, %.12f, %.12f, %.12f]", t.x(), t.y(), t.z(), r.x(), r.y(),
-                r.z());
-  return text;
-}
-
 // The TCP (the platform centre, 50 mm off the flange) at kStart moved by `offset` (mm).
-Eigen::Isometry3d tcpAt(const Eigen::Vector3d& offset) {
-  Eigen::Isometry3d pose = robot::forwardKinematics(*robot::armModel("ur5"), kStart);
-  pose.translation() += pose.linear() * Eigen::Vector3d(0, 0, 50.0) + offset;
-  return pose;
-}
+Eigen::Isometry3d tcpAt(const Eigen::Vector3d& offset) { return multidir::test::ur5TcpAt(kStart, offset); }
 
 // Step k: heat a little, move to the start, a square of movel in the TCP's own plane, the last at `last`.
 std::string stepProgram(int k, const std::vector<Eigen::Vector3d>& corners) {
@@ -89,17 +77,9 @@ std::vector<Eigen::Vector3d> writeRobotJob(const std::string& dir) {
   return {first.back(), second.back()};
 }
 
-// A UR simulator on four consecutive free ports (the --robot HOST:PORT convention).
+// A UR simulator on four consecutive free ports (tests/support/ur_test_support.h).
 std::unique_ptr<hw::UrSimulator> startSimulator(hw::UrSimulatorOptions options) {
-  for (int base = 41000 + static_cast<int>(::getpid() % 200) * 30; base < 65000; base += 7) {
-    options.dashboardPort = base;
-    options.secondaryPort = base + 1;
-    options.realtimePort = base + 2;
-    options.rtdePort = base + 3;
-    auto simulator = std::make_unique<hw::UrSimulator>(options);
-    if (simulator->start().ok()) return simulator;
-  }
-  return nullptr;
+  return multidir::test::startUrSimulatorOnFreePorts(options, 41000);
 }
 
 TEST(CliRunRobot, ATwoStepRobotJobRunsToItsEndAndTheTraceShowsBothProgramsMoves) {

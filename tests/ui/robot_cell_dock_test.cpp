@@ -25,6 +25,7 @@
 #include "multidir/robot/cell_file.h"
 #include "multidir/robot/ur_kinematics.h"
 #include "support/test_models.h"
+#include "support/ur_test_support.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/device/job_timeline.h"
 #include "ui/device/robot_cell_section.h"
@@ -37,28 +38,15 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace hw = hardware;
+using multidir::test::urPose;
 
 constexpr int kRunMs = 120000;  // a guard against a hang under a busy ctest, not a limit checked
 
 const robot::Joints kStart{0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0};
 const fs::path kCellFile = fs::path(MULTIDIR_SOURCE_DIR) / "resources" / "cells" / "ur5-fixed-extruder.json";
 
-std::string urPose(const Eigen::Isometry3d& p) {
-  const Eigen::AngleAxisd aa(p.linear());
-  const Eigen::Vector3d r = aa.axis() * aa.angle();
-  const Eigen::Vector3d t = p.translation() / 1000.0;
-  char text[200];
-  std::snprintf(text, sizeof text, "p[%.9f, %.9f, %.9f, %.12f, %.12f, %.12f]", t.x(), t.y(), t.z(), r.x(), r.y(),
-                r.z());
-  return text;
-}
-
 // The TCP (the platform centre, 50 mm off the flange) at kStart moved by `offset` (mm).
-Eigen::Isometry3d tcpAt(const Eigen::Vector3d& offset) {
-  Eigen::Isometry3d pose = robot::forwardKinematics(*robot::armModel("ur5"), kStart);
-  pose.translation() += pose.linear() * Eigen::Vector3d(0, 0, 50.0) + offset;
-  return pose;
-}
+Eigen::Isometry3d tcpAt(const Eigen::Vector3d& offset) { return multidir::test::ur5TcpAt(kStart, offset); }
 
 // Step k: to the start by a joint move, then extrusions along `corners` at `speed` (m/s), as robot-program
 // writes them (a layer message first, the extruder's rate before each movel).
@@ -97,19 +85,11 @@ std::string writeRobotJob(const std::string& name, double speed, const fs::path&
   return dir;
 }
 
-// A UR simulator on four consecutive free ports (the HOST:PORT convention: dashboard, secondary, real-time, RTDE).
+// A UR simulator on four consecutive free ports (tests/support/ur_test_support.h).
 std::unique_ptr<hw::UrSimulator> startSimulator(hw::UrSimulatorOptions options) {
   options.keepTrace = true;
   options.initialJoints = {0.0, -1.0, 1.3, -1.9, -1.5707963267948966, 0.0};
-  for (int base = 43000 + static_cast<int>(::getpid() % 200) * 30; base < 65000; base += 7) {
-    options.dashboardPort = base;
-    options.secondaryPort = base + 1;
-    options.realtimePort = base + 2;
-    options.rtdePort = base + 3;
-    auto simulator = std::make_unique<hw::UrSimulator>(options);
-    if (simulator->start().ok()) return simulator;
-  }
-  return nullptr;
+  return multidir::test::startUrSimulatorOnFreePorts(options, 43000);
 }
 
 // The extruding part of a run as the simulator recorded it: the TCP (mm) of every tick that drives the extruder.

@@ -27,6 +27,7 @@
 #include "multidir/robot/cell_file.h"
 #include "multidir/slicing/printer_profile.h"
 #include "support/test_models.h"
+#include "support/ur_test_support.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/device/robot_cell_section.h"
 #include "ui/document/studio_document.h"
@@ -478,15 +479,7 @@ TEST(StudioRobotCell, HardwareDockConvertsTheSlicedJobAndRunsItOnTheSimulatedCel
   hardware::UrSimulatorOptions options;
   options.speed = 1000.0;
   options.cellPath = cellFile;
-  std::unique_ptr<hardware::UrSimulator> simulator;
-  for (int base = 45000 + static_cast<int>(::getpid() % 200) * 30; base < 65000 && !simulator; base += 7) {
-    options.dashboardPort = base;
-    options.secondaryPort = base + 1;
-    options.realtimePort = base + 2;
-    options.rtdePort = base + 3;
-    auto started = std::make_unique<hardware::UrSimulator>(options);
-    if (started->start().ok()) simulator = std::move(started);
-  }
+  std::unique_ptr<hardware::UrSimulator> simulator = test::startUrSimulatorOnFreePorts(options, 45000);
   ASSERT_TRUE(simulator);
   section->setAddress(QStringLiteral("127.0.0.1:%1").arg(simulator->dashboardPort()));
   section->connectRobot();
