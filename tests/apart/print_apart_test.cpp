@@ -42,6 +42,16 @@ apart::PrintApartOptions onTheMarlin220() {
   return options;
 }
 
+// `plan` printed apart on the Marlin 220 into the scratch folder `scratch`, which must give one plate: its estimate.
+void printOnOnePlate(const core::Decomposition& plan, const std::string& scratch, slicing::Estimate& estimate) {
+  const std::string dir = test::scratchDirectory(scratch);
+  core::JobContext job;
+  const core::Result<apart::ApartResult> result = apart::printApart(plan, onTheMarlin220(), dir + "/out", job);
+  ASSERT_TRUE(result.ok()) << result.error().describe();
+  ASSERT_EQ(result->plateEstimates.size(), 1u);
+  estimate = result->plateEstimates.front().estimate;
+}
+
 std::string readAll(const std::string& path) {
   std::ifstream in(path);
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -100,14 +110,11 @@ TEST(PrintApart, APlateWhosePartHasRiskyAreaGetsTheSlicersSupport) {
 }
 
 TEST(PrintApart, APlateOfSupportFreePartsGetsNoSupport) {
-  const std::string dir = test::scratchDirectory("PrintApartNoSupport");
-  const core::Decomposition plan = onePiecePlan(test::makeBox({0, 0, 0}, {20, 20, 20}));
-  core::JobContext job;
-  const core::Result<apart::ApartResult> result = apart::printApart(plan, onTheMarlin220(), dir + "/out", job);
-  ASSERT_TRUE(result.ok()) << result.error().describe();
-  ASSERT_EQ(result->plateEstimates.size(), 1u);
-  EXPECT_GT(result->plateEstimates.front().estimate.printSeconds, 0.0);
-  EXPECT_EQ(result->plateEstimates.front().estimate.supportCm3, 0.0);
+  slicing::Estimate plate;
+  ASSERT_NO_FATAL_FAILURE(
+      printOnOnePlate(onePiecePlan(test::makeBox({0, 0, 0}, {20, 20, 20})), "PrintApartNoSupport", plate));
+  EXPECT_GT(plate.printSeconds, 0.0);
+  EXPECT_EQ(plate.supportCm3, 0.0);
 }
 
 namespace {
@@ -131,23 +138,17 @@ TEST(PrintApart, TheSlicersSupportThresholdIsOneDegreeBelowAlphaForItsInclusiveR
 TEST(PrintApart, APartWhoseFacesAreAllWithinAlphaGetsNoSupportFromTheSlicer) {
   // The kitten's middle part leaned 4,668 mm^2 of its faces 45 to 46 degrees from down, risk-free by J_G at
   // alpha_max = 45 (docs/apart.md, "Where the slicer puts support").
-  const std::string dir = test::scratchDirectory("PrintApartWithinAlpha");
   const core::Decomposition plan = onePiecePlan(leaningPrism(45.5));
   ASSERT_EQ(plan.regions.front().riskyAreaMm2, 0.0);
-  core::JobContext job;
-  const core::Result<apart::ApartResult> result = apart::printApart(plan, onTheMarlin220(), dir + "/out", job);
-  ASSERT_TRUE(result.ok()) << result.error().describe();
-  ASSERT_EQ(result->plateEstimates.size(), 1u);
-  EXPECT_EQ(result->plateEstimates.front().estimate.supportCm3, 0.0);
+  slicing::Estimate plate;
+  ASSERT_NO_FATAL_FAILURE(printOnOnePlate(plan, "PrintApartWithinAlpha", plate));
+  EXPECT_EQ(plate.supportCm3, 0.0);
 }
 
 TEST(PrintApart, APartWithAFaceBeyondAlphaGetsTheSlicersSupport) {
-  const std::string dir = test::scratchDirectory("PrintApartBeyondAlpha");
   const core::Decomposition plan = onePiecePlan(leaningPrism(43.0));
   ASSERT_GT(plan.regions.front().riskyAreaMm2, 0.0);
-  core::JobContext job;
-  const core::Result<apart::ApartResult> result = apart::printApart(plan, onTheMarlin220(), dir + "/out", job);
-  ASSERT_TRUE(result.ok()) << result.error().describe();
-  ASSERT_EQ(result->plateEstimates.size(), 1u);
-  EXPECT_GT(result->plateEstimates.front().estimate.supportCm3, 0.0);
+  slicing::Estimate plate;
+  ASSERT_NO_FATAL_FAILURE(printOnOnePlate(plan, "PrintApartBeyondAlpha", plate));
+  EXPECT_GT(plate.supportCm3, 0.0);
 }
