@@ -145,6 +145,15 @@ class RobotCellDock : public ::testing::Test {
     ASSERT_TRUE(target->isEnabled()) << name << " is disabled; message: " << section->messageText().toStdString();
     QTest::mouseClick(target, Qt::LeftButton);
   }
+  // Until the arm moves along step 1's movels (past the program's first lines), or the run guard's time.
+  static bool waitUntilMovingInStepOne(const hw::UrSimulator& simulator) {
+    return QTest::qWaitFor(
+        [&] {
+          const hw::UrSimulatorState s = simulator.state();
+          return s.programName == "multidir_step_01" && s.programState == "PLAYING" && !s.atRest && s.line > 6;
+        },
+        kRunMs);
+  }
   void connectTo(const hw::UrSimulator& simulator) {
     section->setAddress(QStringLiteral("127.0.0.1:%1").arg(simulator.dashboardPort()));
     press("robotConnect");
@@ -236,12 +245,7 @@ TEST_F(RobotCellDock, EstopMidStepReachesTheRobotAndNothingMovesAfter) {
   ASSERT_TRUE(simulator);
   ASSERT_NO_FATAL_FAILURE(connectTo(*simulator));
   ASSERT_NO_FATAL_FAILURE(startJob(dir));
-  ASSERT_TRUE(QTest::qWaitFor(
-      [&] {
-        const hw::UrSimulatorState s = simulator->state();
-        return s.programName == "multidir_step_01" && s.programState == "PLAYING" && !s.atRest && s.line > 6;
-      },
-      kRunMs));
+  ASSERT_TRUE(waitUntilMovingInStepOne(*simulator));
   press("robotEstop");
   ASSERT_TRUE(waitForRunEnd());
   EXPECT_TRUE(section->messageText().contains(QStringLiteral("The run stopped in step 1: stopped by the operator")))
@@ -319,12 +323,7 @@ TEST_F(RobotCellDock, PauseHoldsTheArmOffTheNozzleAndResumeFinishesTheJob) {
   ASSERT_TRUE(simulator);
   ASSERT_NO_FATAL_FAILURE(connectTo(*simulator));
   ASSERT_NO_FATAL_FAILURE(startJob(dir));
-  ASSERT_TRUE(QTest::qWaitFor(
-      [&] {
-        const hw::UrSimulatorState s = simulator->state();
-        return s.programName == "multidir_step_01" && s.programState == "PLAYING" && !s.atRest && s.line > 6;
-      },
-      kRunMs));
+  ASSERT_TRUE(waitUntilMovingInStepOne(*simulator));
   press("robotPause");
   ASSERT_TRUE(QTest::qWaitFor([&] { return section->isRunPaused(); }, kRunMs)) << section->messageText().toStdString();
   const hw::UrSimulatorState held = simulator->state();
