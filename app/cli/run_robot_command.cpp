@@ -49,8 +49,13 @@ class ConsoleLog : public hardware::RobotRunListener {
   void progress(const hardware::RobotRunProgress& p) override {
     char percent[16];
     std::snprintf(percent, sizeof percent, "%.0f %%", 100.0 * p.fraction);
+    // Where in the step: the movel the robot says it runs (its register; by position for older jobs) and, for a
+    // step split into programs the controller accepts, which of them runs.
+    std::string where;
+    if (p.movel >= 0) where += ", movel " + std::to_string(p.movel + 1) + " of " + std::to_string(p.movels);
+    if (p.parts > 1) where += ", program " + std::to_string(p.part) + " of " + std::to_string(p.parts);
     const std::string text = "progress: step " + std::to_string(p.step) + "/" + std::to_string(p.steps) + " " +
-                             p.programState + " " + percent + ", job remaining about " +
+                             p.programState + " " + percent + where + ", job remaining about " +
                              slicing::durationText(p.secondsLeft);
     if (text != m_lastProgress) logLine(m_out, m_lastProgress = text);
   }
@@ -60,6 +65,7 @@ class ConsoleLog : public hardware::RobotRunListener {
   void paused(const hardware::RobotRunPause& p) override {
     logLine(m_out, "paused at a safe point: step " + std::to_string(p.step) + " after movel " +
                        std::to_string(p.movel + 1) + " of " + std::to_string(p.movels) +
+                       (p.parts > 1 ? " in program " + std::to_string(p.part) + " of " + std::to_string(p.parts) : "") +
                        " (the extruder stopped, the platform " + std::to_string(static_cast<int>(p.liftMm)) +
                        " mm off the nozzle); Ctrl-Z again (kill -TSTP) resumes, Ctrl-C stops");
   }

@@ -169,6 +169,11 @@ Cell readCell(const Json& j) {
   if (j.contains("platformThicknessMm"))
     cell.platformThicknessMm = number(j.at("platformThicknessMm"), "platformThicknessMm");
   cell.maxFilamentMmPerS = number(required(j, "maxFilamentMmPerS"), "maxFilamentMmPerS");
+  if (j.contains("maxProgramBytes")) {
+    const Json& bytes = j.at("maxProgramBytes");
+    if (!bytes.is_number_unsigned()) throw KeyError{"maxProgramBytes", "must be a whole number of bytes"};
+    cell.maxProgramBytes = bytes.get<std::size_t>();
+  }
   readBodies(j, cell);
   cell.tableZMm = number(required(j, "tableZMm"), "tableZMm");
   const Json& home = required(j, "homeDegrees");
@@ -244,6 +249,11 @@ std::vector<CellProblem> checkCell(const Cell& cell) {
   if (!(cell.platformRadiusMm > 0.0)) add("platformRadiusMm", "must be above 0: the platform disc's radius");
   if (!(cell.platformThicknessMm >= 0.0)) add("platformThicknessMm", "must be 0 or more");
   if (!(cell.maxFilamentMmPerS > 0.0)) add("maxFilamentMmPerS", "must be above 0: the filament speed at analog out 0 = 1");
+  if (cell.maxProgramBytes < kMinProgramBytes)
+    add("maxProgramBytes", "must be at least " + std::to_string(kMinProgramBytes) +
+                               " bytes: a program part holds its preamble, the step's closing lines and some moves (the "
+                               "default, " + std::to_string(kDefaultMaxProgramBytes) + ", is what UR controllers are "
+                               "reported to accept)");
   if (!(cell.nozzleZoneRadiusMm >= 0.0) || !(cell.nozzleZoneHeightMm >= 0.0))
     add("nozzleZone", "radiusMm and heightMm must be 0 or more");
   for (std::size_t i = 0; i < cell.boxes.size(); ++i) {

@@ -52,6 +52,7 @@ std::string cellJson(const Cell& cell) {
   j["platformRadiusMm"] = tidy(cell.platformRadiusMm);
   j["platformThicknessMm"] = tidy(cell.platformThicknessMm);
   j["maxFilamentMmPerS"] = tidy(cell.maxFilamentMmPerS);
+  j["maxProgramBytes"] = cell.maxProgramBytes;
   Json bodies = Json::array();
   for (const CollisionBox& b : cell.boxes) {
     Json box;

@@ -2,6 +2,7 @@
 #include "multidir/robot/robot_program.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "multidir/core/common/atomic_file.h"
 #include "multidir/core/common/staged_folder.h"
 #include "job_inputs.h"
+#include "program_parts.h"
 #include "step_converter.h"
 
 namespace multidir::robot {
@@ -40,8 +42,25 @@ core::Result<RobotJob> planRobotJob(const std::filesystem::path& jobDirectory, c
     detail::StepOutput converted = detail::convertStep(input, cell, options, context);
     if (context.isCancelled()) return core::Error{core::ErrorCode::Cancelled, "cancelled", jobDirectory.string()};
     refusals.insert(refusals.end(), converted.refusals.begin(), converted.refusals.end());
+    std::vector<std::string> partScripts;
+    if (converted.refusals.empty()) {
+      auto parts = detail::splitStepProgram(converted.script, input.step, cell.maxProgramBytes);
+      if (!parts) {
+        refusals.push_back(parts.error().message);
+      } else {
+        const int count = static_cast<int>(parts->size());
+        for (int p = 0; p < count; ++p) {
+          detail::ProgramPart& part = (*parts)[static_cast<std::size_t>(p)];
+          converted.summary.parts.push_back(
+              {detail::partFileName(input.step, p + 1, count), part.text.size(), part.firstMovel, part.movels});
+          partScripts.push_back(std::move(part.text));
+        }
+        converted.summary.program = converted.summary.parts.front().program;
+      }
+    }
     result.steps.push_back(converted.summary);
     result.scripts.push_back(std::move(converted.script));
+    result.partScripts.push_back(std::move(partScripts));
   }
   if (!refusals.empty()) {
     std::string message = "the job cannot run on the cell (" + std::to_string(refusals.size()) + " step(s) refused):";
@@ -57,14 +76,14 @@ core::Result<RobotJob> planRobotJob(const std::filesystem::path& jobDirectory, c
 std::string robotJobSummary(const RobotJob& job) {
   std::ostringstream s;
   s << "Robot programs for a " << job.robot << " (robot-job.json; docs/robot-cell.md)\n\n";
-  s << "step  program          moves  robot time  slicer time  filament mm  reach margin  wrist margin  slowest joint  "
+  s << "step  program                  parts  moves  robot time  slicer time  filament mm  reach margin  wrist margin  slowest joint  "
        "slowdowns  rotation  branch  re-orientations\n";
   double seconds = 0.0, slicer = 0.0, filament = 0.0;
   int moves = 0, slowdowns = 0;
   for (const auto& st : job.steps) {
-    char line[256];
-    std::snprintf(line, sizeof line, "%4d  %-15s %6d  %8.0f s  %9.0f s  %11.1f  %9.1f mm  %8.1f deg  %6d (%3.0f%%)  %9d  %5.0f deg  %6d  %15zu\n",
-                  st.step, st.program.c_str(), st.moves, st.seconds, st.slicerSeconds, st.filamentMm, st.reachMarginMm,
+    char line[320];
+    std::snprintf(line, sizeof line, "%4d  %-23s %6zu %6d  %8.0f s  %9.0f s  %11.1f  %9.1f mm  %8.1f deg  %6d (%3.0f%%)  %9d  %5.0f deg  %6d  %15zu\n",
+                  st.step, st.program.c_str(), std::max<std::size_t>(st.parts.size(), 1), st.moves, st.seconds, st.slicerSeconds, st.filamentMm, st.reachMarginMm,
                   st.wristMarginDegrees, st.slowestJoint, 100.0 * st.slowestJointLoad, st.slowdowns,
                   st.rotationDegrees, st.branch, st.reorientations.size());
     s << line;
@@ -77,6 +96,17 @@ std::string robotJobSummary(const RobotJob& job) {
   s << "total " << moves << " moves, robot " << fixed(seconds / 60.0, 1) << " min (slicer's estimate "
     << fixed(slicer / 60.0, 1) << " min), filament " << fixed(filament, 1) << " mm, " << slowdowns
     << " moves slowed\n";
+  for (const auto& st : job.steps) {
+    if (st.parts.size() < 2) continue;
+    std::size_t largest = 0, total = 0;
+    for (const auto& part : st.parts) {
+      largest = std::max(largest, part.bytes);
+      total += part.bytes;
+    }
+    s << "step " << st.step << " split into " << st.parts.size() << " programs (" << st.parts.front().program << " to "
+      << st.parts.back().program << "), " << fixed(static_cast<double>(total) / 1000.0, 1) << " kB in all, the largest "
+      << fixed(static_cast<double>(largest) / 1000.0, 1) << " kB\n";
+  }
   for (const auto& st : job.steps)
     for (const auto& r : st.reorientations) {
       char line[200];
@@ -101,11 +131,23 @@ core::Status writeRobotJob(const RobotJob& job, const std::filesystem::path& cel
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < job.steps.size(); ++i) {
     const RobotStepSummary& st = job.steps[i];
-    auto written = core::writeTextFileAtomically((dir / st.program).string(), job.scripts[i]);
-    if (!written) return written.error();
+    nlohmann::ordered_json parts = nlohmann::ordered_json::array();
+    const bool split = i < job.partScripts.size() && !job.partScripts[i].empty();
+    const std::size_t count = split ? job.partScripts[i].size() : 1;
+    for (std::size_t p = 0; p < count; ++p) {
+      const std::string& text = split ? job.partScripts[i][p] : job.scripts[i];
+      const std::string name = split ? st.parts[p].program : st.program;
+      auto written = core::writeTextFileAtomically((dir / name).string(), text);
+      if (!written) return written.error();
+      parts.push_back({{"program", name},
+                       {"bytes", text.size()},
+                       {"firstMovel", split ? st.parts[p].firstMovel : 1},
+                       {"movels", split ? st.parts[p].movels : st.moves}});
+    }
     nlohmann::ordered_json entry;
     entry["step"] = st.step;
     entry["program"] = st.program;
+    entry["parts"] = parts;
     entry["seconds"] = std::round(st.seconds * 10.0) / 10.0;
     entry["filamentMm"] = std::round(st.filamentMm * 10.0) / 10.0;
     entry["moves"] = st.moves;
@@ -133,7 +175,7 @@ core::Status writeRobotJob(const RobotJob& job, const std::filesystem::path& cel
   if (!summaryWritten) return summaryWritten.error();
   nlohmann::ordered_json root;
   root["format"] = "multidir-robot-job";
-  root["version"] = 1;
+  root["version"] = 2;  // 2: each step lists its programs ("parts"); 1 had one program per step
   root["robot"] = job.robot;
   root["cell"] = "cell.json";
   root["steps"] = steps;

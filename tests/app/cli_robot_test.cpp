@@ -79,14 +79,23 @@ TEST(CliRobot, RobotProgramWritesTheContractsFolder) {
   std::ifstream robotIn(dir + "/robot/robot-job.json");
   const nlohmann::json robot = nlohmann::json::parse(robotIn);
   EXPECT_EQ(robot["format"], "multidir-robot-job");
-  EXPECT_EQ(robot["version"], 1);
+  EXPECT_EQ(robot["version"], 2);
   EXPECT_EQ(robot["robot"], "ur5");
   EXPECT_EQ(robot["cell"], "cell.json");
   ASSERT_EQ(robot["steps"].size(), job["steps"].size());
   for (const auto& step : robot["steps"]) {
-    for (const char* key : {"step", "program", "seconds", "filamentMm", "moves", "reachMarginMm", "slowestJoint", "slowdowns"})
+    for (const char* key :
+         {"step", "program", "parts", "seconds", "filamentMm", "moves", "reachMarginMm", "slowestJoint", "slowdowns"})
       EXPECT_TRUE(step.contains(key)) << key;
-    EXPECT_TRUE(std::filesystem::exists(dir + "/robot/" + step["program"].get<std::string>()));
+    ASSERT_FALSE(step["parts"].empty());
+    EXPECT_EQ(step["program"], step["parts"][0]["program"]);
+    // Each program within the cell's bound (the shipped cell's), as the controller takes it.
+    for (const auto& part : step["parts"]) {
+      const std::string file = dir + "/robot/" + part["program"].get<std::string>();
+      ASSERT_TRUE(std::filesystem::exists(file)) << file;
+      EXPECT_EQ(std::filesystem::file_size(file), part["bytes"].get<std::size_t>()) << file;
+      EXPECT_LE(std::filesystem::file_size(file), cell["maxProgramBytes"].get<std::size_t>()) << file;
+    }
   }
   EXPECT_TRUE(std::filesystem::exists(dir + "/robot/cell.json"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/robot/summary.txt"));

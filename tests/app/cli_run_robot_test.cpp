@@ -177,6 +177,23 @@ unsigned stepProgramCount(const KittenOnTheCell& kitten) {
   return count;
 }
 
+// Step k's programs in the converted job (robot-job.json's parts: more than one when the step is above the cell's
+// maxProgramBytes), in the order they run.
+std::vector<std::string> stepPartFiles(const std::string& outDir, int k) {
+  const auto job = nlohmann::json::parse(multidir::test::readAll(outDir + "/robot-job.json"));
+  std::vector<std::string> files;
+  for (const auto& part : job["steps"][static_cast<std::size_t>(k - 1)]["parts"])
+    files.push_back(outDir + "/" + part["program"].get<std::string>());
+  return files;
+}
+
+// Step k's programs' text one after another (the step as the robot runs it).
+std::string stepScript(const std::string& outDir, int k) {
+  std::string text;
+  for (const std::string& file : stepPartFiles(outDir, k)) text += multidir::test::readAll(file);
+  return text;
+}
+
 // The kitten's job converted for the cell and the simulator started (1000 times real time, its trace kept).
 void prepareKittenOnTheCell(const std::string& scratch, KittenOnTheCell& kitten) {
   const std::string dir = multidir::test::scratchDirectory(scratch);
@@ -230,22 +247,26 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
       ASSERT_LE(trace[k].joints[j], arm.limits[j].maxRad);
     }
   }
-  const int steps = static_cast<int>(stepProgramCount(kitten));
+  const auto job = nlohmann::json::parse(multidir::test::readAll(dir + "/out/robot-job.json"));
+  const int steps = static_cast<int>(job["steps"].size());
   ASSERT_GE(steps, 2);
   for (int step = 1; step <= steps; ++step) {
     const std::string name = "multidir_step_0" + std::to_string(step);
-    const std::string script = multidir::test::readAll(dir + "/out/step-0" + std::to_string(step) + ".script");
+    // The step's last program (its parts share the step's name) ends with the movej home.
+    const std::string script = multidir::test::readAll(stepPartFiles(dir + "/out", step).back());
     // The tick the last movel ends in is the first one traced at the statement after it (the final movej home),
     // which carries the rest of that tick into the movej: at most 8 ms from rest at 1.4 rad/s^2, 45 urad, under
     // 0.05 mm at the platform (the movel's own end is checked to 0.01 mm in UrController's test).
     const int homeLine = 1 + static_cast<int>(std::count(
                                  script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
+    // Its first tick: the last run of ticks at that line of the step's programs (an earlier part's same line is
+    // another statement).
     const hw::UrTraceRecord* ended = nullptr;
-    for (const hw::UrTraceRecord& record : trace)
-      if (record.program == name && record.line == homeLine) {
-        ended = &record;
-        break;
-      }
+    for (std::size_t i = trace.size(); i-- > 0;) {
+      const bool atHome = trace[i].program == name && trace[i].line == homeLine;
+      if (atHome) ended = &trace[i];
+      else if (ended != nullptr) break;
+    }
     ASSERT_NE(ended, nullptr) << name << " line " << homeLine;
     const Eigen::Vector3d target = lastMovelTarget(script);
     EXPECT_LT((Eigen::Vector3d(ended->tcp[0], ended->tcp[1], ended->tcp[2]) - target).norm(), 0.05) << name;
@@ -356,9 +377,14 @@ TEST(CliRunRobot, PauseMidStepHoldsTheArmWithTheExtruderOffAndResumeLeavesNoGapO
   KittenOnTheCell kitten;
   ASSERT_NO_FATAL_FAILURE(prepareKittenOnTheCell("CliRunRobot.PauseResume", kitten));
   hw::UrSimulator& simulator = *kitten.simulator;
-  const std::string script = multidir::test::readAll(kitten.dir + "/out/step-02.script");
+  // Step 2 is above the cell's maxProgramBytes: the pause is asked for in its second program, once the first ended.
+  const std::vector<std::string> step2Parts = stepPartFiles(kitten.dir + "/out", 2);
+  ASSERT_GE(step2Parts.size(), 2u);
+  const std::size_t step1Parts = stepPartFiles(kitten.dir + "/out", 1).size();
+  const std::string script = stepScript(kitten.dir + "/out", 2);
+  const std::string part2 = multidir::test::readAll(step2Parts[1]);
   const int firstMovelLine =
-      1 + static_cast<int>(std::count(script.begin(), script.begin() + static_cast<long>(script.find("movel(")), '\n'));
+      1 + static_cast<int>(std::count(part2.begin(), part2.begin() + static_cast<long>(part2.find("movel(")), '\n'));
   const std::string pidFile = kitten.dir + "/pid";
   const std::string prefix = multidir::test::pidRecordingPrefix(pidFile, 240);
   auto cli = std::async(std::launch::async, [&] {
@@ -367,7 +393,8 @@ TEST(CliRunRobot, PauseMidStepHoldsTheArmWithTheExtruderOffAndResumeLeavesNoGapO
   });
   const bool pauseSent = multidir::test::signalCliWhen(pidFile, SIGTSTP, [&] {
     const hw::UrSimulatorState s = simulator.state();
-    return s.programName == "multidir_step_02" && s.programState == "PLAYING" && s.line > firstMovelLine + 200;
+    return s.programName == "multidir_step_02" && s.programState == "PLAYING" && s.programsFinished == step1Parts + 1 &&
+           s.line > firstMovelLine + 200;
   });
   ASSERT_TRUE(pauseSent);
   bool pausedStill = false;
@@ -390,8 +417,15 @@ TEST(CliRunRobot, PauseMidStepHoldsTheArmWithTheExtruderOffAndResumeLeavesNoGapO
   const CliRun run = cli.get();
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("paused at a safe point: step 2 after movel "), std::string::npos) << run.out;
+  // Asked for in the step's second program; at 1000 times real time a program lasts tens of milliseconds, so
+  // the pause lands in that one or one soon after it: never in the first.
+  std::smatch inProgram;
+  ASSERT_TRUE(std::regex_search(run.out, inProgram, std::regex("after movel [0-9]+ of [0-9]+ in program ([0-9]+) of " +
+                                                                   std::to_string(step2Parts.size()))))
+      << run.out;
+  EXPECT_GE(std::stoi(inProgram[1].str()), 2) << run.out;
   EXPECT_NE(run.out.find("resuming step 2 after movel "), std::string::npos) << run.out;
-  // Every step but 2 whole, the pause, and the resumed step 2.
+  // Every program but the paused one whole, the pause, and the paused program's resumed rest.
   EXPECT_EQ(simulator.state().programsFinished, stepProgramCount(kitten) + 1) << run.out;
   // Where the pause landed: movel k of the program is segment k - 2 (the first movel comes from the approach).
   const std::size_t landed = run.out.find("paused at a safe point: step 2 after movel ");
@@ -448,6 +482,95 @@ TEST(CliRunRobot, PauseMidStepHoldsTheArmWithTheExtruderOffAndResumeLeavesNoGapO
     EXPECT_LE(reachedFrom[i], tick) << "extrusion move " << i + 1 << " of " << segments.size();
     EXPECT_GE(reachedTo[i], length - tick) << "extrusion move " << i + 1 << " of " << segments.size();
   }
+}
+
+// The kitten's job, its steps split into programs the controller accepts (the cell's maxProgramBytes), runs to its
+// end with every tick the simulated extruder runs putting the nozzle within 0.05 mm of one of its step's extrusion
+// moves (the programs' movels, which KittenRobotProgram checks against the G-code), in order: a part boundary
+// neither skips nor repeats a move; and every extrusion move is reached from near its start to near its end.
+TEST(CliRunRobot, TheKittensSplitStepsPrintTheirExtrusionMovesAcrossPartBoundaries) {
+  KittenOnTheCell kitten;
+  ASSERT_NO_FATAL_FAILURE(runKittenOnTheCell("CliRunRobot.KittenSplitPath", kitten));
+  const std::string out = kitten.dir + "/out";
+  const auto job = nlohmann::json::parse(multidir::test::readAll(out + "/robot-job.json"));
+  const Eigen::Vector3d tip = robot::loadCell(kitten.cellPath)->nozzleTipMm;
+  const auto trace = kitten.simulator->trace();
+  std::size_t splitSteps = 0;
+  for (std::size_t k = 1; k <= job["steps"].size(); ++k) {
+    const int step = static_cast<int>(k);
+    splitSteps += stepPartFiles(out, step).size() > 1 ? 1 : 0;
+    std::cout << "[ measured ] step " << step << ": " << stepPartFiles(out, step).size() << " program(s)\n";
+    const std::vector<NozzleSegment> segments = nozzleSegments(stepScript(out, step), tip);
+    const std::string name = "multidir_step_0" + std::to_string(step);
+    std::vector<double> reachedFrom(segments.size(), 1e9), reachedTo(segments.size(), -1e9);
+    std::size_t at = 0;
+    double along = 0.0;
+    for (const hw::UrTraceRecord& r : trace) {
+      if (r.filamentMmPerS <= 0.0 || r.program != name) continue;
+      const Eigen::Vector3d p(r.nozzleInPlatform[0], r.nozzleInPlatform[1], r.nozzleInPlatform[2]);
+      bool placed = false;
+      for (std::size_t i = at; i < segments.size() && !placed; ++i) {
+        if (!segments[i].extrudes) continue;
+        const Eigen::Vector3d d = segments[i].to - segments[i].from;
+        const double length = d.norm();
+        const double t = length > 0.0 ? std::clamp((p - segments[i].from).dot(d) / (length * length), 0.0, 1.0) : 0.0;
+        if ((segments[i].from + t * d - p).norm() > 0.05) continue;
+        // Back along the move it is on: the next move turning back over it (infill's zigzag).
+        if (i == at && t * length < along - 0.05) continue;
+        placed = true;
+        at = i;
+        along = t * length;
+        reachedFrom[i] = std::min(reachedFrom[i], t * length);
+        reachedTo[i] = std::max(reachedTo[i], t * length);
+      }
+      ASSERT_TRUE(placed) << name << " tick at " << r.time << " s (line " << r.line << "): the nozzle at ("
+                          << p.transpose() << ") on no extrusion move at or after move " << at + 1;
+    }
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      if (!segments[i].extrudes) continue;
+      const double length = (segments[i].to - segments[i].from).norm();
+      if (length < segments[i].tickTravelMm) continue;
+      EXPECT_LE(reachedFrom[i], segments[i].tickTravelMm) << name << " extrusion move " << i + 1;
+      EXPECT_GE(reachedTo[i], length - segments[i].tickTravelMm) << name << " extrusion move " << i + 1;
+    }
+  }
+  EXPECT_GE(splitSteps, 1u);
+  EXPECT_EQ(kitten.simulator->state().programsFinished, stepProgramCount(kitten));
+}
+
+// A program above what the controller compiles (the simulator's bound set below a step's second program): the
+// controller refuses it with a compile error, and the run stops saying so in the robot's words with the step and
+// the program of the step it sent.
+TEST(CliRunRobot, AProgramAboveTheControllersBoundEndsTheRunNamingTheStepAndItsProgram) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.ProgramTooLarge");
+  std::string first = stepProgram(1, {{20, 0, 0}, {20, 20, 0}});
+  std::string second = "def multidir_step_01():\n  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
+  for (int i = 0; i < 60; ++i) second += "  # a line that makes the program larger than the controller takes\n";
+  second += "  set_standard_analog_out(0, 0.2500)\n  movel(" + urPose(tcpAt({0, 20, 0})) + ", a=1.2, v=0.05, r=0.0)\n";
+  second += "  set_standard_analog_out(0, 0.0000)\nend\n";
+  writeFile(std::filesystem::path(dir) / "step-01-part-001.script", first);
+  writeFile(std::filesystem::path(dir) / "step-01-part-002.script", second);
+  writeFile(std::filesystem::path(dir) / "robot-job.json",
+            R"({ "format": "multidir-robot-job", "version": 2, "robot": "ur5", "cell": "cell.json",
+  "steps": [ { "step": 1, "program": "step-01-part-001.script", "seconds": 5.0,
+               "parts": [ { "program": "step-01-part-001.script" }, { "program": "step-01-part-002.script" } ] } ] })");
+  ASSERT_LT(first.size(), 2500u);
+  ASSERT_GT(second.size(), 2500u);
+  hw::UrSimulatorOptions options;
+  options.speed = 20.0;
+  options.maxProgramBytes = 2500;
+  options.initialJoints = {0.0, -1.0, 1.3, -1.9, -1.5707963267948966, 0.0};
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run =
+      runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 120");
+  EXPECT_NE(run.exitCode, 0) << run.out << run.err;
+  EXPECT_NE(run.err.find("the run stopped at step 1: the robot reports: "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("Compile error: the program is " + std::to_string(second.size()) + " bytes, above the 2500"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("(in step-01-part-002.script, program 2 of 2 of the step)"), std::string::npos) << run.err;
+  EXPECT_EQ(simulator->state().programsFinished, 1u);  // the first program ran; the second never started
 }
 
 // Ctrl-C while paused: the run ends with the stop latched until the robot confirms it, and nothing more is sent
@@ -550,6 +673,50 @@ TEST(CliRunRobot, APauseWhereTwoPathsOfALayerCrossNamesTheMoveTheRobotRunsNotThe
   ASSERT_EQ(programs.size(), 3u);
   EXPECT_EQ(programs[2].find(urPose(tcpAt(d))), std::string::npos) << programs[2];
   EXPECT_NE(programs[2].find(urPose(tcpAt(e))), std::string::npos) << programs[2];
+}
+
+// The same crossing paths run through, the arm held at the crossing: the progress names the movel the robot says
+// it runs (its register), 4, while it is held there, never the first path's movel 2 that passes there too; the
+// movels the progress names only go forward.
+TEST(CliRunRobot, TheProgressAtCrossingPathsNamesTheMoveTheRobotRuns) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.ProgressOnCrossingPaths");
+  const Eigen::Vector3d a(-10, 0, 0), b(10, 0, 0), c(0, 0, 0), d(0, -10, 0), e(0, 10, 0);
+  std::string text = "def multidir_step_01():\n  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
+  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\n";
+  text += "  movej([0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0], a=1.4, v=1.05)\n";
+  text += "  textmsg(\"multidir step 1 layer 1\")\n";
+  const auto movel = [&](int k, const Eigen::Vector3d& to, double analog) {
+    text += "  set_standard_analog_out(0, " + std::to_string(analog) + ")\n";
+    text += "  write_output_integer_register(24, " + std::to_string(k) + ")\n";
+    text += "  movel(" + urPose(tcpAt(to)) + ", a=1.2, v=0.01, r=0.0)\n";
+  };
+  movel(1, a, 0.0);
+  movel(2, b, 0.25);
+  movel(3, d, 0.0);
+  movel(4, c, 0.25);
+  text += "  sleep(40.0)\n";
+  movel(5, e, 0.25);
+  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\nend\n";
+  writeFile(std::filesystem::path(dir) / "step-01.script", text);
+  writeFile(std::filesystem::path(dir) / "robot-job.json",
+            R"({ "format": "multidir-robot-job", "version": 1, "robot": "ur5", "cell": "cell.json",
+  "steps": [ { "step": 1, "program": "step-01.script", "seconds": 50.0 } ] })");
+  writeFile(std::filesystem::path(dir) / "cell.json",
+            multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json"));
+  hw::UrSimulatorOptions options;
+  options.speed = 10.0;
+  options.initialJoints = {0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0};
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run =
+      runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 120");
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  std::vector<int> named;
+  const std::regex progress("progress: step 1/1 [A-Z]+ [0-9]+ %, movel ([0-9]+) of 5");
+  for (std::sregex_iterator i(run.out.begin(), run.out.end(), progress), end; i != end; ++i)
+    named.push_back(std::stoi((*i)[1].str()));
+  EXPECT_NE(std::find(named.begin(), named.end(), 4), named.end()) << run.out;
+  EXPECT_TRUE(std::is_sorted(named.begin(), named.end())) << run.out;
 }
 
 TEST(CliRunRobot, AnUnknownArmModelIsAUsageErrorNamingTheKnownOnes) {

@@ -183,6 +183,28 @@ TEST(UrController, AProgramOutsideTheSubsetIsRefusedWithARuntimeExceptionNamingT
   EXPECT_NE(messages[0].text.find("'popup' is not in the URScript subset"), std::string::npos) << messages[0].text;
 }
 
+// A program above the controller's bound (the cell's maxProgramBytes) is refused before it runs, with a compile
+// error giving its size and the bound; one at the bound runs.
+TEST(UrController, AProgramAboveTheControllersBoundIsRefusedWithACompileErrorGivingItsSize) {
+  UrController c = readyController();
+  c.setMaxProgramBytes(4096);
+  std::string text = "def step():\n";
+  while (text.size() < 4096 - 16) text += "  sleep(0.001)\n";
+  text.resize(4096 - 4, ' ');
+  text += "\nend\n";
+  ASSERT_EQ(text.size(), 4097u);
+  c.receiveProgram(text);
+  EXPECT_EQ(c.programState(), UrProgramState::Stopped);
+  const auto messages = c.takeMessages();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_EQ(messages[0].kind, multidir::hardware::ur::UrRobotMessage::Kind::RuntimeException);
+  EXPECT_EQ(messages[0].text, "Compile error: the program is 4097 bytes, above the 4096 bytes this controller compiles");
+  text.erase(text.size() - 6, 1);  // one byte less: at the bound
+  c.receiveProgram(text);
+  EXPECT_EQ(c.programState(), UrProgramState::Playing);
+  EXPECT_TRUE(c.takeMessages().empty());
+}
+
 // A program writes a movel's number to the register just before the movel: the register names the move the arm
 // makes while it makes it (docs/robot-cell.md, "Pause and resume"), and keeps it at the move's end until the
 // next write.

@@ -153,7 +153,12 @@ Converted convertedKitten(const std::string& testName) {
   if (!written) throw std::runtime_error(written.error().describe());
   std::ifstream jobIn(c.outDir + "/robot-job.json");
   c.robotJob = nlohmann::json::parse(jobIn);
-  for (const auto& step : c.robotJob["steps"]) c.scripts.push_back(readScript(test::readFile(c.outDir + "/" + step["program"].get<std::string>())));
+  // A step's programs (its parts, when above the cell's maxProgramBytes) read one after another, as they run.
+  for (const auto& step : c.robotJob["steps"]) {
+    std::string text;
+    for (const auto& part : step["parts"]) text += test::readFile(c.outDir + "/" + part["program"].get<std::string>());
+    c.scripts.push_back(readScript(text));
+  }
   return c;
 }
 

@@ -419,6 +419,15 @@ void UrController::programError(const std::string& text) {
 }
 
 void UrController::receiveProgram(const std::string& text) {
+  if (text.size() > m_maxProgramBytes) {
+    // Refused before it is compiled, as a compile error on the program's first line: UR documents no bound and
+    // no words for it, so these name what the controller was given and what it takes.
+    const std::string words = "the program is " + std::to_string(text.size()) + " bytes, above the " +
+                              std::to_string(m_maxProgramBytes) + " bytes this controller compiles";
+    m_lastFault = "Compile error in line 1, column 1: " + words;
+    message(Kind::RuntimeException, "Compile error: " + words, 1, 1);
+    return;
+  }
   ur::UrScriptParse parsed = ur::parseUrScript(text);
   if (!parsed.program) {
     m_lastFault = "Compile error in line " + std::to_string(parsed.error.line) + ", column " +

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "multidir/robot/cell.h"
 #include "multidir/robot/ur_kinematics.h"
 #include "ur/ur_wire.h"
 #include "ur/urscript_program.h"
@@ -67,8 +68,10 @@ class UrController {
   // One dashboard command line (without its line end) and UR's reply; `quit` is set for "quit".
   std::string dashboard(const std::string& command, bool& quit);
   // A program received on the secondary interface: run it (it replaces a running one after the arm is at rest),
-  // or refuse it with a runtime exception naming the line.
+  // or refuse it with a runtime exception naming the line, or, above the bound, saying its size and the bound.
   void receiveProgram(const std::string& text);
+  // The largest program the controller compiles (docs/robot-cell.md, "Programs the controller accepts").
+  void setMaxProgramBytes(std::size_t bytes) { m_maxProgramBytes = bytes; }
 
   // Faults, now.
   void protectiveStop(const std::string& reason);
@@ -136,6 +139,7 @@ class UrController {
   bool m_emergencyPressed = false;
   bool m_powerOffAfterBraking = false;
 
+  std::size_t m_maxProgramBytes = robot::kDefaultMaxProgramBytes;
   std::optional<ur::UrProgram> m_program;
   std::optional<ur::UrProgram> m_nextProgram;  // received while the arm still braked
   std::string m_programName;

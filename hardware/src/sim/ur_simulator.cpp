@@ -130,6 +130,7 @@ class UrSimulator::Impl {
     robot::Joints initial{};
     std::copy(m_options.initialJoints.begin(), m_options.initialJoints.end(), initial.begin());
     robot::ArmModel model = *arm;
+    std::size_t maxProgramBytes = robot::kDefaultMaxProgramBytes;
     if (!m_options.cellPath.empty()) {
       core::Result<robot::Cell> cell = robot::loadCell(m_options.cellPath);
       if (!cell) return invalid("--cell", cell.error().describe());
@@ -140,8 +141,11 @@ class UrSimulator::Impl {
       initial = cell->home;
       m_nozzleTip = cell->nozzleTipMm;
       m_maxFilamentMmPerS = cell->maxFilamentMmPerS;
+      maxProgramBytes = cell->maxProgramBytes;
     }
+    if (m_options.maxProgramBytes > 0) maxProgramBytes = m_options.maxProgramBytes;
     m_controller.emplace(model, initial);
+    m_controller->setMaxProgramBytes(maxProgramBytes);
     if (!m_options.tracePath.empty()) {
       m_traceFile.open(m_options.tracePath, std::ios::trunc);
       if (!m_traceFile)

@@ -20,10 +20,17 @@
 
 namespace multidir::hardware {
 
+// One program of a step: a step runs as one program, or, split to what the controller accepts (docs/robot-cell.md,
+// "Programs the controller accepts"), as parts sent one after another.
+struct RobotJobPart {
+  std::string program;  // file name in the job folder
+  std::string script;   // its text
+};
+
 struct RobotJobStep {
   int step = 0;
-  std::string program;   // file name in the job folder
-  std::string script;    // its text
+  std::string program;   // its first program's file name (the step's only one unless split)
+  std::vector<RobotJobPart> parts;  // in the order they run; at least one
   double seconds = 0.0;  // the job's estimate
 };
 
@@ -36,8 +43,8 @@ struct RobotJob {
   PauseGeometry pause;
 };
 
-// robot-job.json (format multidir-robot-job, version 1; `folder` is the job folder or that file) and every
-// step's program, read before anything moves. FileNotFound / MalformedFile whose message names the file and
+// robot-job.json (format multidir-robot-job, version 2 with each step's "parts", or version 1 with one "program"
+// per step; `folder` is the job folder or that file) and every step's programs, read before anything moves. FileNotFound / MalformedFile whose message names the file and
 // says what to do (write it again with `multidir robot-program`).
 core::Result<RobotJob> readRobotJob(const std::string& folder);
 
@@ -55,16 +62,21 @@ struct RobotRunProgress {
   std::string programState;  // the controller's: "PLAYING", ...
   double fraction = 0.0;     // of the step, from the robot's time against the job's estimate (0..1)
   double secondsLeft = 0.0;  // of the job: this step's estimate less its time so far, and the steps after it
-  int movel = -1;            // the movel under way (0-based) on the step's program, -1 when none is found
+  int movel = -1;            // the movel under way (0-based) on the step's programs, -1 when none is found
   int movels = 0;            // the step's movel count (0 when its program cannot be read as movels)
+  int part = 1;              // the step's program running (1-based), of `parts`
+  int parts = 1;
 };
 
-// A step paused at a safe point: the arm stands liftMm off the nozzle after `movel` (0-based) of `movels`.
+// A step paused at a safe point: the arm stands liftMm off the nozzle after `movel` (0-based) of `movels`, the
+// step's (over all its parts), in its program `part` (1-based) of `parts`.
 struct RobotRunPause {
   int step = 0;
   int movel = 0;
   int movels = 0;
   double liftMm = 0.0;
+  int part = 1;
+  int parts = 1;
 };
 
 // The run's events, called on the run's thread; every one optional.

@@ -44,6 +44,9 @@ struct UrSimulatorOptions {
   // A robot cell file (docs/robot-cell.md): the arm gets the cell's joint limits and starts at its home
   // joints; its robot must be `model`. "" for the model's own limits and initialJoints.
   std::string cellPath;
+  // The largest program the controller compiles (a larger one is refused with a compile error); 0: the cell's
+  // maxProgramBytes with a cell, else robot::kDefaultMaxProgramBytes.
+  std::size_t maxProgramBytes = 0;
   // The joints at power-up (rad); UR's "home" pose with the arm upright is {0, -pi/2, 0, -pi/2, 0, 0}.
   std::array<double, 6> initialJoints{0.0, -1.5707963267948966, 0.0, -1.5707963267948966, 0.0, 0.0};
   // The clock the simulated time follows; the system's steady clock unless a test injects one.

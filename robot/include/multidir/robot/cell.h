@@ -5,6 +5,7 @@
 // its key does.
 #include <Eigen/Geometry>
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -29,6 +30,14 @@ struct CollisionCylinder {
   double radiusMm = 0.0;
   double lengthMm = 0.0;
 };
+
+// The largest robot program `multidir robot-program` writes, in bytes: a step above it is split into parts the
+// controller accepts (docs/robot-cell.md, "Programs the controller accepts"). UR documents no bound; users report
+// programs of about 1,000 to 2,500 movel targets (of the order of 100 to 250 kB) failing to start when sent to the
+// controller and an 18 MB one crashing it, so the default stays below the smallest of those.
+constexpr std::size_t kDefaultMaxProgramBytes = 100000;
+// The smallest bound a cell may set: a part holds its own preamble, the step's closing lines and a few moves.
+constexpr std::size_t kMinProgramBytes = 4096;
 
 // What a program must keep (the checks of `multidir robot-program`).
 struct CellMargins {
@@ -58,6 +67,7 @@ struct Cell {
   double platformRadiusMm = 60.0;     // the platform disc about the TCP, in the TCP's xy plane
   double platformThicknessMm = 8.0;   // below the platform plane (towards the flange)
   double maxFilamentMmPerS = 20.0;    // analog out 0 = 1.0 drives the extruder at this filament speed
+  std::size_t maxProgramBytes = kDefaultMaxProgramBytes;  // no program (part of a step) is larger
   std::vector<CollisionBox> boxes;    // the extruder and its mount
   std::vector<CollisionCylinder> cylinders;
   double tableZMm = 0.0;              // the table plane z = tableZMm (base frame); nothing goes below it

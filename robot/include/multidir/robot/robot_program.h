@@ -3,7 +3,8 @@
 // docs/robot-cell.md "Programs"): every G-code move of every step becomes a platform pose that puts the fixed
 // nozzle tip at the move's point of the part with the step's printing direction along the nozzle axis, checked
 // (reach, joint limits, one arm configuration per step, joint jumps, singularity margins, joint speeds,
-// collisions with the extruder's bodies and the table) and written as URScript, one program per step.
+// collisions with the extruder's bodies and the table) and written as URScript, one program per step or, above
+// the cell's maxProgramBytes, the step's parts (program_parts.h).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -37,9 +38,19 @@ struct RobotReorientation {
   int branch = 0;                // the arm configuration from there on
 };
 
+// One of the programs a step runs as (one unless the step is above the cell's maxProgramBytes; docs/robot-cell.md,
+// "Programs the controller accepts").
+struct RobotProgramPart {
+  std::string program;    // "step-02.script", or "step-02-part-003.script" for part 3 of a split step
+  std::size_t bytes = 0;  // its size
+  int firstMovel = 0;     // the step's number (1-based, the movel register's) of its first movel
+  int movels = 0;
+};
+
 struct RobotStepSummary {
   int step = 1;
-  std::string program;              // "step-01.script"
+  std::string program;              // its first program: "step-01.script", or "step-01-part-001.script"
+  std::vector<RobotProgramPart> parts;  // every program of the step, in the order they run
   double seconds = 0.0;             // the robot's own time estimate (trapezoid per move), heating waits excluded
   double filamentMm = 0.0;          // what the program's analog out 0 drives the extruder to push
   double gcodeFilamentMm = 0.0;     // the G-code's E of the step's extrusion moves
@@ -60,7 +71,8 @@ struct RobotStepSummary {
 struct RobotJob {
   std::string robot;                        // "ur5"
   std::vector<RobotStepSummary> steps;
-  std::vector<std::string> scripts;         // URScript text per step
+  std::vector<std::string> scripts;         // URScript text per step, whole
+  std::vector<std::vector<std::string>> partScripts;  // per step, its parts' text (RobotStepSummary::parts)
   double conversionSeconds = 0.0;           // wall time of the conversion
 };
 
@@ -69,8 +81,9 @@ struct RobotJob {
 core::Result<RobotJob> planRobotJob(const std::filesystem::path& jobDirectory, const Cell& cell,
                                     const RobotProgramOptions& options, core::JobContext context);
 
-// Writes OUT/robot-job.json, OUT/cell.json (a copy of `cellFile`), OUT/step-NN.script and OUT/summary.txt
-// through a staged folder that takes OUT's place only once complete. Errors: WriteFailed naming the path.
+// Writes OUT/robot-job.json, OUT/cell.json (a copy of `cellFile`), each step's programs (OUT/step-NN.script, or
+// OUT/step-NN-part-MMM.script for a split step; a step without partScripts as its whole script) and
+// OUT/summary.txt through a staged folder that takes OUT's place only once complete. Errors: WriteFailed naming the path.
 core::Status writeRobotJob(const RobotJob& job, const std::filesystem::path& cellFile,
                            const std::filesystem::path& outDirectory);
 
