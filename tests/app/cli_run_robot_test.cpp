@@ -573,6 +573,39 @@ TEST(CliRunRobot, AProgramAboveTheControllersBoundEndsTheRunNamingTheStepAndItsP
   EXPECT_EQ(simulator->state().programsFinished, 1u);  // the first program ran; the second never started
 }
 
+// A protective stop in a step's second program: the first ran to its end, the second was sent after it, and the
+// run stops with the robot's words naming that program of the step.
+TEST(CliRunRobot, AProtectiveStopInAStepsSecondProgramEndsTheRunNamingThatProgram) {
+  const std::string dir = multidir::test::scratchDirectory("CliRunRobot.ProtectiveStopInPart2");
+  const std::string first = stepProgram(1, {{20, 0, 0}});  // 12 lines
+  std::string second = "def multidir_step_01():\n  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
+  for (int i = 0; i < 10; ++i)
+    second += "  set_standard_analog_out(0, 0.2500)\n  movel(" + urPose(tcpAt({20.0 - 2.0 * i, 2.0 * i, 0})) +
+              ", a=1.2, v=0.05, r=0.0)\n";
+  second += "  set_standard_analog_out(0, 0.0000)\nend\n";
+  writeFile(std::filesystem::path(dir) / "step-01-part-001.script", first);
+  writeFile(std::filesystem::path(dir) / "step-01-part-002.script", second);
+  writeFile(std::filesystem::path(dir) / "robot-job.json",
+            R"({ "format": "multidir-robot-job", "version": 2, "robot": "ur5", "cell": "cell.json",
+  "steps": [ { "step": 1, "program": "step-01-part-001.script", "seconds": 5.0,
+               "parts": [ { "program": "step-01-part-001.script" }, { "program": "step-01-part-002.script" } ] } ] })");
+  hw::UrSimulatorOptions options;
+  options.speed = 20.0;
+  options.fault = hw::UrSimulatorFault::ProtectiveStop;
+  options.faultAtLine = 16;  // the second program's seventh movel; the first has 12 lines
+  options.initialJoints = {0.0, -1.0, 1.3, -1.9, -1.5707963267948966, 0.0};
+  auto simulator = startSimulator(options);
+  ASSERT_TRUE(simulator);
+  const CliRun run =
+      runCli("run " + dir + " --robot 127.0.0.1:" + std::to_string(simulator->dashboardPort()), dir, "timeout 120");
+  EXPECT_EQ(run.exitCode, 4) << run.out << run.err;
+  EXPECT_NE(run.err.find("the run stopped at step 1: the robot reports: C153: Protective stop"), std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("(in step-01-part-002.script, program 2 of 2 of the step)"), std::string::npos) << run.err;
+  EXPECT_EQ(simulator->state().programsFinished, 1u);
+  EXPECT_EQ(simulator->programsReceived().size(), 2u);
+}
+
 // Ctrl-C while paused: the run ends with the stop latched until the robot confirms it, and nothing more is sent
 // (the step's program and the pause's only).
 TEST(CliRunRobot, CtrlCWhilePausedStopsTheRunOnceTheRobotConfirmsTheStop) {
