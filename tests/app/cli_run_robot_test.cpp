@@ -235,11 +235,13 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
   for (int step = 1; step <= steps; ++step) {
     const std::string name = "multidir_step_0" + std::to_string(step);
     const std::string script = multidir::test::readAll(dir + "/out/step-0" + std::to_string(step) + ".script");
-    // The tick the last movel ends in is the first one traced at the statement after it (the final movej home),
-    // which carries the rest of that tick into the movej: at most 8 ms from rest at 1.4 rad/s^2, 45 urad, under
-    // 0.05 mm at the platform (the movel's own end is checked to 0.01 mm in UrController's test).
-    const int homeLine = 1 + static_cast<int>(std::count(
-                                 script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
+    // The tick the last movel ends in is the first one traced at the statement after it (the first movej on the
+    // way home: to its first via point, or home), which carries the rest of that tick into the movej: at most 8 ms
+    // from rest at 1.4 rad/s^2, 45 urad, under 0.05 mm at the platform (the movel's own end is checked to 0.01 mm
+    // in UrController's test).
+    const std::size_t wayHome = script.find("movej(", script.rfind("movel("));
+    const int homeLine =
+        1 + static_cast<int>(std::count(script.begin(), script.begin() + static_cast<long>(wayHome), '\n'));
     const hw::UrTraceRecord* ended = nullptr;
     for (const hw::UrTraceRecord& record : trace)
       if (record.program == name && record.line == homeLine) {

@@ -130,6 +130,7 @@ class UrSimulator::Impl {
     robot::Joints initial{};
     std::copy(m_options.initialJoints.begin(), m_options.initialJoints.end(), initial.begin());
     robot::ArmModel model = *arm;
+    std::optional<robot::Cell> cellBodies;  // the cell's bodies and table: the arm's collisions (no cell: none)
     if (!m_options.cellPath.empty()) {
       core::Result<robot::Cell> cell = robot::loadCell(m_options.cellPath);
       if (!cell) return invalid("--cell", cell.error().describe());
@@ -140,8 +141,10 @@ class UrSimulator::Impl {
       initial = cell->home;
       m_nozzleTip = cell->nozzleTipMm;
       m_maxFilamentMmPerS = cell->maxFilamentMmPerS;
+      cellBodies = *cell;
     }
     m_controller.emplace(model, initial);
+    if (cellBodies) m_controller->watchCollisions(*cellBodies);
     if (!m_options.tracePath.empty()) {
       m_traceFile.open(m_options.tracePath, std::ios::trunc);
       if (!m_traceFile)
