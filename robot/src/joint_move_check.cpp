@@ -119,10 +119,10 @@ std::string jointMoveCollision(const JointMoveScene& scene, const Joints& from, 
   const Cell& cell = *scene.cell;
   const std::string links = linksBetween(cell, from, armClearance(cell, from), to, armClearance(cell, to));
   if (!links.empty()) {
-    // How deep: the least clearance of the links along the move (200 looks), for the refusal.
+    // How deep: the least clearance of any link from any body or the table along the move (200 looks).
     double least = 0.0;
     for (int k = 0; k <= kDepthLooks; ++k) least = std::min(least, armClearance(cell, between(from, to, static_cast<double>(k) / kDepthLooks)).mm);
-    return links + " (clearance down to " + mm1(least) + " mm along the move)";
+    return links + " (the links' least clearance along the move: " + mm1(least) + " mm)";
   }
   // The carried points that count, and how far the farthest lies from the platform's centre and from the flange.
   std::vector<const CarriedPoint*> carried;

@@ -76,7 +76,7 @@ TEST(JointMoves, WithViaPointsOffABlockedMoveFromHomeIsRefusedNamingTheStepAndTh
             std::string::npos)
       << refusal;
   EXPECT_NE(refusal.find("would hit the extruder's body \""), std::string::npos) << refusal;
-  EXPECT_NE(refusal.find("(clearance down to -"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("(the links' least clearance along the move: -"), std::string::npos) << refusal;
   EXPECT_TRUE(out.script.empty());
 }
 
