@@ -45,7 +45,8 @@ const char* const kRobotProgramHelp =
     "the nozzle axis. Checked before anything is written, each refusal naming the step, the G-code line and the\n"
     "reason: reach and joint limits, one arm configuration per step with no joint jump (wrist flip), singularity\n"
     "margins, joint speeds at the G-code's feeds (a move too fast is slowed and counted), collisions of the\n"
-    "platform and part with the extruder's bodies and the table.\n"
+    "platform and part with the extruder's bodies and the table, and the joint moves from home to each step and\n"
+    "back (links, platform and part along the joint path; via points where the straight joint move is blocked).\n"
     "\n"
     "Writes OUT/robot-job.json, OUT/cell.json (the cell used), OUT/step-NN.script and OUT/summary.txt; a step\n"
     "above the cell's maxProgramBytes (default 100000) is split at travel moves into complete programs\n"
@@ -56,6 +57,7 @@ const char* const kRobotProgramHelp =
     "  -o OUT                 the output folder (required; replaced as a whole once complete)\n"
     "  --rotation-step DEG    sampling of the free rotation about the nozzle axis per step (default 10)\n"
     "  --sample-mm MM         moves are checked at points this far apart (default 5)\n"
+    "  --no-via-points        only straight joint moves between home and the steps: a blocked one is refused\n"
     "  -h, --help             show this help\n"
     "\n"
     "Exit codes: 0 ok, 1 a file cannot be read or written, the cell has problems or the job cannot run on it,\n"
@@ -164,7 +166,7 @@ int runCell(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 int runRobotProgram(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const std::string command = "multidir robot-program";
   const ParsedArgs parsed =
-      parseArgs(args, {"--cell", "-o", "--rotation-step", "--sample-mm"}, {"-h", "--help"}, command);
+      parseArgs(args, {"--cell", "-o", "--rotation-step", "--sample-mm"}, {"-h", "--help", "--no-via-points"}, command);
   if (parsed.has("-h") || parsed.has("--help")) {
     out << kRobotProgramHelp;
     return kExitOk;
@@ -179,6 +181,7 @@ int runRobotProgram(const std::vector<std::string>& args, std::ostream& out, std
     if (!(options.rotationStepDegrees >= 1.0 && options.rotationStepDegrees <= 180.0))
       throw UsageError(command + ": --rotation-step must be from 1 to 180 degrees");
   }
+  options.viaPoints = !parsed.has("--no-via-points");
   if (parsed.has("--sample-mm")) {
     options.sampleMm = parseNumber(parsed.value("--sample-mm", ""), "--sample-mm");
     if (!(options.sampleMm >= 0.1 && options.sampleMm <= 100.0))

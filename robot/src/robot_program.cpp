@@ -115,6 +115,10 @@ std::string robotJobSummary(const RobotJob& job) {
                     st.step, r.line, r.rotationDegrees, r.branch);
       s << line;
     }
+  for (const auto& st : job.steps)
+    if (st.viaPointsFromHome + st.viaPointsToHome > 0)
+      s << "step " << st.step << " joint moves: " << st.viaPointsFromHome << " via point(s) from home, "
+        << st.viaPointsToHome << " back home (the straight joint move is not clear)\n";
   s << "\nrobot time: the arm's trapezoid per move at the tool acceleration, heating waits excluded; slowest joint: "
        "its peak speed as a share of its limit at the G-code's feeds (over 100 %: the move was slowed).\n";
   return s.str();
@@ -163,6 +167,7 @@ core::Status writeRobotJob(const RobotJob& job, const std::filesystem::path& cel
     for (const auto& r : st.reorientations)
       reorientations.push_back({{"line", r.line}, {"rotationDegrees", r.rotationDegrees}, {"branch", r.branch}});
     entry["reorientations"] = reorientations;
+    entry["viaPoints"] = {{"fromHome", st.viaPointsFromHome}, {"toHome", st.viaPointsToHome}};
     steps.push_back(entry);
   }
   std::ifstream cellIn(cellFile, std::ios::binary);

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "gcode_events.h"
+#include "joint_path_planner.h"
 #include "multidir/robot/arm_links.h"
 #include "multidir/slicing/gcode_program.h"
 #include "step_reorientation.h"
@@ -258,6 +259,27 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   const Joints approachJoints = runs.front()->startJoints();
   const Joints retreatJoints = runs.back()->joints();
 
+  // The joint moves between home and the step: straight when clear, else via points; refused when neither.
+  const JointMoveScene before{&cell, &input.carried, input.platformToFile, -std::numeric_limits<double>::infinity()};
+  const JointMoveScene after{&cell, &input.carried, input.platformToFile, std::numeric_limits<double>::infinity()};
+  const JointPathPlan fromHome = planJointPath(before, cell.home, approachJoints, options.viaPoints);
+  const JointPathPlan toHome = planJointPath(after, retreatJoints, cell.home, options.viaPoints);
+  auto refuseMove = [&](const std::string& move, const JointPathPlan& plan) {
+    std::string why = "the move " + move + " (a joint move) is not clear: " + plan.straightHit;
+    if (options.viaPoints)
+      why += "; no via points found either (" + std::to_string(plan.candidatesTried) +
+             " natural candidates, then a search of " + std::to_string(plan.searchSamples) +
+             " joint sets within the joint limits)";
+    else
+      why += "; via points are off (--no-via-points)";
+    refuse(0, why + ": move the cell's home (homeDegrees) or the extruder's bodies");
+  };
+  if (!fromHome.found) refuseMove("from home to " + stepText + "'s first point, " + fixed(kRetreatMm, 0) + " mm off the nozzle", fromHome);
+  if (!toHome.found) refuseMove("from " + stepText + "'s last point, " + fixed(kRetreatMm, 0) + " mm off the nozzle, back home", toHome);
+  if (!fromHome.found || !toHome.found) return out;
+  summary.viaPointsFromHome = static_cast<int>(fromHome.vias.size());
+  summary.viaPointsToHome = static_cast<int>(toHome.vias.size());
+
   // The G-code's temperatures, fan and layer changes before the moves they precede.
   std::size_t nextEvent = 0;
   std::size_t nextLayer = 0;
@@ -321,7 +343,18 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   const std::string movelRegister = "  write_output_integer_register(" + std::to_string(kMovelRegister) + ", ";
   script += movelRegister + "0)\n";
   script += movej(cell.home, cell.home);
-  script += movej(cell.home, approachJoints);
+  auto jointPath = [&](const Joints& from, const JointPathPlan& plan, const Joints& to, const std::string& what) {
+    if (!plan.vias.empty())
+      script += "  # " + what + ": " + std::to_string(plan.vias.size()) + " via point(s) (" + plan.method +
+                "): the straight joint move is not clear\n";
+    Joints at = from;
+    for (const Joints& via : plan.vias) {
+      script += movej(at, via);
+      at = via;
+    }
+    script += movej(at, to);
+  };
+  jointPath(cell.home, fromHome, approachJoints, "from home to the step's first point");
   const double accel = motion.toolAccelMmPerS2;
   double written = 0.0;
   double blendIn = 0.0;  // the blend radius of the move before, into this one
@@ -367,7 +400,7 @@ StepOutput convertStep(const StepInput& input, const Cell& cell, const RobotProg
   }
   summary.gcodeMoves = static_cast<int>(path.moves.size());
   script += movelRegister + "0)\n";
-  script += movej(retreatJoints, cell.home);
+  jointPath(retreatJoints, toHome, cell.home, "from the step's last point back home");
   script += "end\n";
   return out;
 }

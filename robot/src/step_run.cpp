@@ -369,9 +369,11 @@ std::optional<RunFailure> StepRun::startAfterTurn(std::size_t first, const Joint
   m_lastClearance = armClearance(cell, m_joints);
   std::string hit = armOnTable(cell, m_joints);
   if (hit.empty()) hit = collisionAt(lifted);
-  if (hit.empty())
-    hit = jointMoveCollision(cell, m_path.input->carried, m_path.input->platformToFile, m_path.points[first - 1].z(),
-                             liftedJoints, m_joints);
+  if (hit.empty()) {
+    const JointMoveScene scene{&cell, &m_path.input->carried, m_path.input->platformToFile, m_path.points[first - 1].z()};
+    hit = jointMoveCollision(scene, liftedJoints, m_joints);
+    if (!hit.empty()) hit += " while the platform turns about the nozzle axis";
+  }
   if (!hit.empty()) return failure(first, hit);
   m_current = lifted;
   if (m_keep) {

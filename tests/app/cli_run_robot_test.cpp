@@ -252,13 +252,15 @@ TEST(CliRunRobot, TheKittensConvertedJobRunsOnTheCellsArmWithinItsJointLimits) {
   ASSERT_GE(steps, 2);
   for (int step = 1; step <= steps; ++step) {
     const std::string name = "multidir_step_0" + std::to_string(step);
-    // The step's last program (its parts share the step's name) ends with the movej home.
+    // The step's last program (its parts share the step's name) ends with the joint moves home.
     const std::string script = multidir::test::readAll(stepPartFiles(dir + "/out", step).back());
-    // The tick the last movel ends in is the first one traced at the statement after it (the final movej home),
-    // which carries the rest of that tick into the movej: at most 8 ms from rest at 1.4 rad/s^2, 45 urad, under
-    // 0.05 mm at the platform (the movel's own end is checked to 0.01 mm in UrController's test).
-    const int homeLine = 1 + static_cast<int>(std::count(
-                                 script.begin(), script.begin() + static_cast<long>(script.rfind("movej(")), '\n'));
+    // The tick the last movel ends in is the first one traced at the statement after it (the first movej on the
+    // way home: to its first via point, or home), which carries the rest of that tick into the movej: at most 8 ms
+    // from rest at 1.4 rad/s^2, 45 urad, under 0.05 mm at the platform (the movel's own end is checked to 0.01 mm
+    // in UrController's test).
+    const std::size_t wayHome = script.find("movej(", script.rfind("movel("));
+    const int homeLine =
+        1 + static_cast<int>(std::count(script.begin(), script.begin() + static_cast<long>(wayHome), '\n'));
     // Its first tick: the last run of ticks at that line of the step's programs (an earlier part's same line is
     // another statement).
     const hw::UrTraceRecord* ended = nullptr;

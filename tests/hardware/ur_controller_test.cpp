@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "multidir/robot/arm_links.h"
+#include "multidir/robot/cell.h"
 #include "multidir/robot/ur_kinematics.h"
 
 namespace {
@@ -123,6 +125,40 @@ TEST(UrController, AMovejFasterThanAJointsSpeedLimitIsAProtectiveStopAndTheArmSt
   EXPECT_NE(c.lastFault().find("Joint Speed Limit violated: joint 1 (base)"), std::string::npos) << c.lastFault();
   EXPECT_TRUE(c.atRest());
   EXPECT_LT(c.joints()[0], 2.5);
+}
+
+// The cell's bodies are physical to the simulated arm (simulate --cell): a program whose movej drives the forearm
+// through a strut of the extruder's mount is stopped there with a protective stop naming the link and the body,
+// and the arm does not reach the move's end.
+TEST(UrController, AMovejDrivingTheForearmIntoACellBodyIsAProtectiveStopNamingTheLinkAndTheBody) {
+  robot::Cell cell = *robot::loadCell(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json");
+  cell.boxes.clear();  // only the strut: nothing else in the arm's way
+  cell.cylinders.clear();
+  const robot::Joints to{kStart[0] + 0.6, kStart[1] + 0.3, kStart[2] - 0.3, kStart[3], kStart[4], kStart[5]};
+  robot::Joints middle{};
+  for (std::size_t j = 0; j < 6; ++j) middle[j] = 0.5 * (kStart[j] + to[j]);
+  const robot::ArmLinkSolid forearm = robot::armLinkSolids(cell.arm, middle)[1];
+  robot::CollisionBox strut;
+  strut.name = "mount strut";
+  strut.pose.translation() = 0.5 * (forearm.fromMm + forearm.toMm);
+  strut.sizeMm = Eigen::Vector3d(30.0, 30.0, 30.0);
+  cell.boxes.push_back(strut);
+  ASSERT_GT(robot::armClearance(cell, kStart).mm, 0.0);
+  ASSERT_GT(robot::armClearance(cell, to).mm, 0.0);
+  UrController c = readyController(cell.arm);
+  c.watchCollisions(cell);
+  char program[200];
+  std::snprintf(program, sizeof program, "def step():\n  movej([%.9f, %.9f, %.9f, %.9f, %.9f, %.9f], a=1.4, v=1.05)\nend\n",
+                to[0], to[1], to[2], to[3], to[4], to[5]);
+  c.receiveProgram(program);
+  runToEnd(c);
+  EXPECT_EQ(c.safetyMode(), UrSafetyMode::ProtectiveStop);
+  EXPECT_NE(c.lastFault().find("Protective stop: collision: the arm's forearm touches the cell's body \"mount strut\""),
+            std::string::npos)
+      << c.lastFault();
+  EXPECT_EQ(c.programsFinished(), 0u);
+  EXPECT_TRUE(c.atRest());
+  EXPECT_LT(c.joints()[0], to[0] - 0.1);
 }
 
 TEST(UrController, AnEmergencyStopBringsTheArmToRestWithin200MsAndNothingMovesAfter) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "job_inputs.h"
 #include "multidir/robot/cell.h"
 #include "multidir/robot/job_motion.h"
 #include "multidir/robot/robot_program.h"
@@ -18,6 +19,7 @@
 #include "multidir/slicing/printer_profile.h"
 #include "multidir/slicing/slice_job.h"
 #include "slicing/slicing_fixtures.h"
+#include "support/joint_sweep_check.h"
 #include "support/test_models.h"
 
 namespace multidir::robot {
@@ -218,12 +220,15 @@ TEST(KittenRobotProgram, NoJointPassesItsLimitsOrItsSpeed) {
   const Eigen::Isometry3d platformToFlange = c.cell.flangeToPlatform.inverse();
   for (std::size_t k = 0; k < c.scripts.size(); ++k) {
     const Script& script = c.scripts[k];
-    ASSERT_EQ(script.movej.size(), 3u);  // home, the step's first pose, home
-    Joints joints = script.movej[1];
-    for (int j = 0; j < 6; ++j) {
-      EXPECT_GE(joints[j], arm.limits[j].minRad);
-      EXPECT_LE(joints[j], arm.limits[j].maxRad);
-    }
+    // home, the via points from home, the step's first pose, the via points back home, home
+    const std::size_t fromHome = c.robotJob["steps"][k]["viaPoints"]["fromHome"].get<std::size_t>();
+    ASSERT_GE(script.movej.size(), 3u + fromHome);
+    for (const Joints& target : script.movej)
+      for (int j = 0; j < 6; ++j) {
+        EXPECT_GE(target[j], arm.limits[j].minRad);
+        EXPECT_LE(target[j], arm.limits[j].maxRad);
+      }
+    Joints joints = script.movej[1 + fromHome];
     double worstLoad = 0.0;
     Eigen::Vector3d previous = script.movel.front().tcp.translation();
     for (std::size_t i = 0; i < script.movel.size(); ++i) {
@@ -243,13 +248,38 @@ TEST(KittenRobotProgram, NoJointPassesItsLimitsOrItsSpeed) {
 
 
 // The kitten's steps each print on one rotation about the nozzle axis on the paper cell: no re-orientation, and
-// each program moves in joint space only from home, to its approach and back home.
+// each program moves in joint space only from home, to its approach (through its via points) and back home
+// (through its via points).
 TEST(KittenRobotProgram, EveryStepPrintsOnOneRotationWithNoReorientation) {
   const Converted c = convertedKitten("KittenRobotProgram.NoReorientation");
   ASSERT_EQ(c.robotJob["steps"].size(), c.scripts.size());
   for (std::size_t k = 0; k < c.scripts.size(); ++k) {
-    EXPECT_TRUE(c.robotJob["steps"][k]["reorientations"].empty()) << "step " << k + 1;
-    EXPECT_EQ(c.scripts[k].movej.size(), 3u) << "step " << k + 1;
+    const nlohmann::json& step = c.robotJob["steps"][k];
+    EXPECT_TRUE(step["reorientations"].empty()) << "step " << k + 1;
+    EXPECT_EQ(c.scripts[k].movej.size(),
+              3u + step["viaPoints"]["fromHome"].get<std::size_t>() + step["viaPoints"]["toHome"].get<std::size_t>())
+        << "step " << k + 1;
+  }
+}
+
+// Every joint move of the kitten's programs on the paper cell (home to each step, through its via points, and
+// back) replayed independently (support/joint_sweep_check.h: every 0.1 degree, point-to-solid distances of its
+// own): the links, the platform and the part printed in earlier steps stay clear of the extruder's bodies and the
+// table.
+TEST(KittenRobotProgram, EveryJointMoveKeepsTheArmThePlatformAndTheEarlierPartClearOfTheCell) {
+  const Converted c = convertedKitten("KittenRobotProgram.JointMoves");
+  const auto inputs = detail::readJobInputs(c.jobDir, c.cell);
+  ASSERT_TRUE(inputs.ok()) << inputs.error().describe();
+  ASSERT_EQ(inputs->steps.size(), c.scripts.size());
+  for (std::size_t k = 0; k < c.scripts.size(); ++k) {
+    std::vector<Eigen::Vector3d> earlier;
+    for (const detail::CarriedPoint& p : inputs->steps[k].carried)
+      if (p.kind == detail::CarriedPoint::Kind::EarlierStep) earlier.push_back(p.platformMm);
+    const std::string script =
+        test::readFile(c.outDir + "/" + c.robotJob["steps"][k]["program"].get<std::string>());
+    std::string what;
+    EXPECT_GT(test::leastJointMoveClearance(c.cell, c.cell.home, script, earlier, what), 0.0)
+        << "step " << k + 1 << ": " << what;
   }
 }
 

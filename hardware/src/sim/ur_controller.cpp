@@ -118,6 +118,8 @@ std::vector<UrTraceSample> UrController::takeTrace() {
   return taken;
 }
 
+void UrController::watchCollisions(const robot::Cell& cell) { m_collisionWatch.emplace(cell); }
+
 void UrController::tick() {
   m_time += kUrTickSeconds;
   const robot::Joints before = m_q;
@@ -136,6 +138,20 @@ void UrController::tick() {
   // The joint speed limits hold for each tick's whole change (a tick can end one move and begin the next): a
   // tick that would exceed one is not taken, and the arm brakes from the last tick's speeds.
   if (m_activity != Activity::Braking) checkSpeeds(before);
+  // The way the arm took this tick, against the cell's bodies and table: a contact is a protective stop, as a
+  // real arm's collision detection makes one (the arm then brakes from this tick's speeds).
+  if (m_collisionWatch && m_safetyMode == UrSafetyMode::Normal && m_q != before) {
+    const std::string contact = m_collisionWatch->firstContact(before, m_q);
+    if (!contact.empty()) {
+      std::string joints;
+      for (std::size_t i = 0; i < 6; ++i) joints += (i ? ", " : "") + number(m_q[i] * 180.0 / M_PI, 1);
+      fault(UrSafetyMode::ProtectiveStop,
+            "Protective stop: collision: " + contact + " (joints " + joints + " deg" +
+                (m_programName.empty() ? std::string() : ", program " + m_programName + " line " +
+                                                             std::to_string(currentLine())) + ")",
+            kCodeProtectiveStop);
+    }
+  }
   // A stop that began this tick brakes from the last tick's speeds (kept) from the next tick on.
   const bool brakingBegan = m_activity == Activity::Braking && m_elapsed == 0.0;
   if (!brakingBegan)

@@ -10,7 +10,8 @@
 // every tick on the branch nearest the current joints. Moves end at rest (blend radii are read, not blended), so
 // a statement after a movel (write_output_integer_register before the next movel) runs when the arm is at the
 // movel's end; on a real controller, with a blend, it runs when the blend into the next move begins.
-// Every tick is checked against the arm's joint position and speed limits: a violation is a protective stop.
+// Every tick is checked against the arm's joint position and speed limits: a violation is a protective stop;
+// with a cell (watchCollisions), so is a link or the platform touching one of its bodies or the table.
 // Stops (stop, pause, protective stop, power off, emergency stop) brake every joint to rest together, at
 // kStopDecelerationRadPerS2 for the joint that takes longest, from the speeds of the last tick.
 #include <Eigen/Geometry>
@@ -23,6 +24,7 @@
 
 #include "multidir/robot/cell.h"
 #include "multidir/robot/ur_kinematics.h"
+#include "sim/arm_collision_watch.h"
 #include "ur/ur_wire.h"
 #include "ur/urscript_program.h"
 
@@ -60,6 +62,10 @@ enum class UrControllerFault { ProtectiveStop, EmergencyStop, ProgramError };
 class UrController {
  public:
   UrController(robot::ArmModel arm, const robot::Joints& initial);
+
+  // The cell's bodies and table (simulate --cell): from now on every tick's motion is checked against them
+  // (arm_collision_watch.h) and a contact is a protective stop. Without it the arm moves in free space.
+  void watchCollisions(const robot::Cell& cell);
 
   // Advances one control tick (kUrTickSeconds).
   void tick();
@@ -126,6 +132,7 @@ class UrController {
   void record();
 
   robot::ArmModel m_arm;
+  std::optional<ArmCollisionWatch> m_collisionWatch;
   double m_time = 0.0;
   robot::Joints m_q{};
   robot::Joints m_qd{};                                     // speeds of the last tick

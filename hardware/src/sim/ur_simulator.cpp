@@ -131,6 +131,7 @@ class UrSimulator::Impl {
     std::copy(m_options.initialJoints.begin(), m_options.initialJoints.end(), initial.begin());
     robot::ArmModel model = *arm;
     std::size_t maxProgramBytes = robot::kDefaultMaxProgramBytes;
+    std::optional<robot::Cell> cellBodies;  // the cell's bodies and table: the arm's collisions (no cell: none)
     if (!m_options.cellPath.empty()) {
       core::Result<robot::Cell> cell = robot::loadCell(m_options.cellPath);
       if (!cell) return invalid("--cell", cell.error().describe());
@@ -142,10 +143,12 @@ class UrSimulator::Impl {
       m_nozzleTip = cell->nozzleTipMm;
       m_maxFilamentMmPerS = cell->maxFilamentMmPerS;
       maxProgramBytes = cell->maxProgramBytes;
+      cellBodies = *cell;
     }
     if (m_options.maxProgramBytes > 0) maxProgramBytes = m_options.maxProgramBytes;
     m_controller.emplace(model, initial);
     m_controller->setMaxProgramBytes(maxProgramBytes);
+    if (cellBodies) m_controller->watchCollisions(*cellBodies);
     if (!m_options.tracePath.empty()) {
       m_traceFile.open(m_options.tracePath, std::ios::trunc);
       if (!m_traceFile)

@@ -27,6 +27,9 @@ constexpr int kMovelRegister = 24;
 struct RobotProgramOptions {
   double rotationStepDegrees = 10.0;  // the free rotation about the nozzle axis is sampled this finely per step
   double sampleMm = 5.0;              // moves are checked at points this far apart (and at both ends)
+  // A joint move (home to a step, a step back home) whose straight joint path is not clear gets via points
+  // (docs/robot-cell.md, "Joint moves"); false: only straight joint moves, a blocked one refused.
+  bool viaPoints = true;
 };
 
 // A step that no single rotation about the nozzle axis can print is re-oriented at travel moves
@@ -66,6 +69,8 @@ struct RobotStepSummary {
   double rotationDegrees = 0.0;     // the chosen rotation about the nozzle axis (the first run's)
   int branch = 0;                   // the arm configuration (ur_kinematics.h) the step starts on
   std::vector<RobotReorientation> reorientations;  // in order; empty: the whole step on one rotation
+  int viaPointsFromHome = 0;        // movej via points between home and the step's first point
+  int viaPointsToHome = 0;          // and between its last point and home
 };
 
 struct RobotJob {
