@@ -5,7 +5,8 @@
 // then per model the least bound, the best full search's J_G, and the axis search's own plan for comparison.
 //
 //   multidir_axis_bound_bench [--models kitten,bunny,...] [--axes N] [--full 0|1] [--screen 0|1] [--polish 0|1]
-//                             [--range DEGREES] [--threads N]
+//                             [--range DEGREES] [--threads N] [--search 0]
+// --search 0: the bounds alone (no axis search; the shares of J_G before are then not printed).
 // Up is +Y for every shared model; the axes are those of decomposeWithAxisSearch (the first along +X, then
 // every 180/N degrees in the platform plane). J_G is the one definition of docs/jg-definition.md.
 #include <sys/resource.h>
@@ -52,13 +53,14 @@ int main(int argc, char** argv) {
   machine.rotationAxis = Vec3::UnitX();
   SearchOptions options;
   int axes = 36;
-  bool full = false, screen = false;
+  bool full = false, screen = false, search = true;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--models") models = split(value);
     else if (flag == "--axes") axes = std::atoi(value.c_str());
     else if (flag == "--full") full = value != "0";
     else if (flag == "--screen") screen = value != "0";
+    else if (flag == "--search") search = value != "0";
     else if (flag == "--polish") options.polish = value != "0";
     else if (flag == "--threads") options.threads = std::atoi(value.c_str());
     else if (flag == "--range") {
@@ -87,13 +89,16 @@ int main(int argc, char** argv) {
     const PlatformRegion platform = platformRegionFor(mesh, machine, options.platformToleranceMm);
     JobContext job;
     const double cpuBefore = cpuSeconds();
-    const auto searched = decomposeWithAxisSearch(mesh, machine, options, axes, job);
-    const double searchCpu = cpuSeconds() - cpuBefore;
-    if (!searched.ok()) {
-      std::fprintf(stderr, "%s: %s\n", name.c_str(), searched.error().describe().c_str());
-      return 1;
+    Result<Decomposition> searched = Error{ErrorCode::Cancelled, "not run", "bench"};
+    if (search) {
+      searched = decomposeWithAxisSearch(mesh, machine, options, axes, job);
+      if (!searched.ok()) {
+        std::fprintf(stderr, "%s: %s\n", name.c_str(), searched.error().describe().c_str());
+        return 1;
+      }
     }
-    const double before = searched->jgBeforeMm2;
+    const double searchCpu = cpuSeconds() - cpuBefore;
+    const double before = search ? searched->jgBeforeMm2 : NAN;
     std::printf("%s: J_G before %.2f mm^2, platform region radius %.1f mm\n", name.c_str(), before, platform.radiusMm);
     std::printf("  %5s %12s %8s", "axis", "bound mm^2", "bound %");
     if (full) std::printf(" %12s %8s %7s %7s", "full mm^2", "full %", "regions", "CPU s");
@@ -141,10 +146,11 @@ int main(int argc, char** argv) {
       std::printf("\n");
       std::fflush(stdout);
     }
-    std::printf("  least bound %.2f mm^2 (%.2f %%) on axis %.1f; axis search: %.2f mm^2 (%.2f %%), %zu regions, "
-                "%.2f CPU s",
-                leastBound, 100.0 * leastBound / before, 180.0 * leastBoundAxis / axes, searched->jgAfterMm2,
-                100.0 * searched->jgAfterMm2 / before, searched->regions.size(), searchCpu);
+    std::printf("  least bound %.2f mm^2 (%.2f %%) on axis %.1f", leastBound, 100.0 * leastBound / before,
+                180.0 * leastBoundAxis / axes);
+    if (search)
+      std::printf("; axis search: %.2f mm^2 (%.2f %%), %zu regions, %.2f CPU s", searched->jgAfterMm2,
+                  100.0 * searched->jgAfterMm2 / before, searched->regions.size(), searchCpu);
     if (full)
       std::printf("; best full search %.2f mm^2 (%.2f %%) on axis %.1f", bestFull, 100.0 * bestFull / before,
                   180.0 * bestFullAxis / axes);

@@ -6,15 +6,16 @@
 #include <vector>
 
 #include "multidir/core/common/units.h"
+#include "search/floating_pieces.h"
 
 namespace multidir::core::detail {
 
 namespace {
 
-// Margins that keep a face risky by rounding alone out of the bound, and a face the machine reaches within
-// isRealizable's tolerance (1e-6 rad) in: a saved face is never counted.
+// The margin that keeps a face risky by rounding alone out of the bound, and a face the machine reaches within
+// isRealizable's tolerance (1e-6 rad) in: a saved face is never counted. The heights' margin is how far
+// clipping may move a point (clipMarginMm: snapping a corner near the plane onto it).
 constexpr double kDotMargin = 1e-6;
-constexpr double kHeightMarginMm = 1e-3;
 
 // Every direction the machine prints along: up (the platform's region) and up turned by each whole stepper
 // step of the range, min + i step (isRealizable's angles).
@@ -46,6 +47,7 @@ double unavoidableRiskyAreaMm2(const TriangleMesh& model, const MachineSpec& mac
   double lowest = std::numeric_limits<double>::infinity();
   for (const Vec3& v : model.vertices) lowest = std::min(lowest, up.dot(v));
   const double bandTop = lowest + supportedBandMm;
+  const double heightMarginMm = clipMarginMm(model);
   double area = 0.0;
   for (std::size_t f = 0; f < model.faceCount(); ++f) {
     const Vec3 areaNormal = model.areaNormal(f);
@@ -59,7 +61,7 @@ double unavoidableRiskyAreaMm2(const TriangleMesh& model, const MachineSpec& mac
       const Vec3& d = directions[k];
       if (n.dot(d) + sinAlpha < -kDotMargin) continue;  // risky along d
       // Up prints the platform's region, which holds anything; another direction only what lies above P.
-      saved = k == 0 || std::max({d.dot(a), d.dot(b), d.dot(c)}) > tops[k] - kHeightMarginMm;
+      saved = k == 0 || std::max({d.dot(a), d.dot(b), d.dot(c)}) > tops[k] - heightMarginMm;
     }
     if (!saved) area += 0.5 * length;
   }

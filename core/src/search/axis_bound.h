@@ -8,7 +8,8 @@
 //  - cuts split faces but keep their normals, and only a cap (a face the cut made) rests on a cut plane (rule 3);
 //  - a region printed along d != up lies above its clipping plane, whose normal is d and which clears the
 //    platform region P (Criterion III: its offset is above P's highest point along d). A face wholly at or
-//    below P's highest point along d cannot lie in a region printed along d.
+//    below P's highest point along d (less how far clipping may move a corner) cannot lie in a region printed
+//    along d.
 // A face that no realizable direction saves under both is risky in whichever region it, or any piece of it,
 // ends up in. The one exemption left is the bed's band (rule 2): the region on the platform keeps the model's
 // lowest point (Criterion III: no plane cuts the platform region, which holds it), so its band is the model's;
