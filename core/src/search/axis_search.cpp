@@ -133,10 +133,13 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
   // No plan of an axis has a J_G below its bound (search/axis_bound.h): an axis whose bound is above the best
   // plan found is not searched in full. Skipping it cannot change the result (it could not have won), so the
   // plan does not depend on the order the threads finish in.
+  // The platform region the searches keep every plane above (it depends on up alone, so one serves every axis).
+  const PlatformRegion platformRegion =
+      platform ? *platform : platformRegionFor(model, machine, options.platformToleranceMm);
   std::vector<double> bounds(static_cast<std::size_t>(axisCount));
   detail::parallelFor(axisCount, threads, [&](int a) {
-    bounds[static_cast<std::size_t>(a)] =
-        detail::unavoidableRiskyAreaMm2(model, machineFor(a), options.alphaMaxDegrees, options.supportedBandMm);
+    bounds[static_cast<std::size_t>(a)] = detail::unavoidableRiskyAreaMm2(model, machineFor(a), platformRegion,
+                                                                          options.alphaMaxDegrees, options.supportedBandMm);
   });
   auto cannotWin = [&](int axis) {
     std::lock_guard<std::mutex> lock(resultMutex);

@@ -270,8 +270,10 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   std::vector<double> bounds(count, 0.0);
   if (machine.kind == MachineKind::RotaryPlatform)
     detail::parallelFor(static_cast<int>(chosen.size()), threads, [&](int k) {
-      bounds[chosen[k]] = detail::unavoidableRiskyAreaMm2(model, machineForPose(machine, candidates[chosen[k]].up),
-                                                          options.alphaMaxDegrees, options.supportedBandMm);
+      const MachineSpec posed = machineForPose(machine, candidates[chosen[k]].up);
+      bounds[chosen[k]] =
+          detail::unavoidableRiskyAreaMm2(model, posed, platformRegionFor(model, posed, options.platformToleranceMm),
+                                          options.alphaMaxDegrees, options.supportedBandMm);
     });
   std::mutex bestMutex;
   double bestSearchedJg = INFINITY;

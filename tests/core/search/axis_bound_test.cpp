@@ -8,9 +8,15 @@
 #include "support/test_models.h"
 
 using namespace multidir::core;
-using multidir::core::detail::unavoidableRiskyAreaMm2;
 
 namespace {
+
+// The bound with the platform region the search uses for `mesh` (its footprint plus the margin).
+double unavoidableRiskyAreaMm2(const TriangleMesh& mesh, const MachineSpec& machine, double alphaMaxDegrees,
+                               double supportedBandMm) {
+  return multidir::core::detail::unavoidableRiskyAreaMm2(mesh, machine, platformRegionFor(mesh, machine),
+                                                         alphaMaxDegrees, supportedBandMm);
+}
 
 MachineSpec rotaryUpZ(const Vec3& axis, double rangeDegrees) {
   MachineSpec machine;
@@ -25,6 +31,10 @@ MachineSpec rotaryUpZ(const Vec3& axis, double rangeDegrees) {
 // A T on its stem, bar 40 x 10, stem 10 wide, 10 deep: the bar's undersides (2 x 15 x 10 = 300 mm^2) face
 // straight down, 20 mm above the bed.
 TriangleMesh tBar() { return multidir::test::makeTBar(10.0, 20.0, 40.0, 5.0, 10.0); }
+
+// The same T on a stem of 5 mm: the bar's undersides 5 mm above the bed, over the platform region (the stem's
+// footprint, 10 x 10, plus 5 mm: a disc of radius 12.07 mm).
+TriangleMesh lowTBar() { return multidir::test::makeTBar(10.0, 5.0, 40.0, 5.0, 10.0); }
 
 }  // namespace
 
@@ -61,4 +71,38 @@ TEST(UnavoidableRiskyArea, NeverExceedsTheJgOfTheKittensPlanOnANarrowRange) {
   const double bound = unavoidableRiskyAreaMm2(kitten, machine, options.alphaMaxDegrees, options.supportedBandMm);
   EXPECT_GT(bound, 0.0);  // the narrow range leaves some of the kitten's overhang unavoidable
   EXPECT_LE(bound, plan->jgAfterMm2);
+}
+
+TEST(UnavoidableRiskyArea, CountsTheFacesThatOnlyAPlaneThroughThePlatformRegionCouldCutOff) {
+  // About x the platform turns the bar's undersides (normal -z) by up to 60 degrees, enough for alpha_max, but a
+  // region printed so lies above a plane tilted by 45 to 60 degrees about x that clears the platform region:
+  // the undersides, 5 mm above the bed and at most 5 mm from the stem's middle across the turn, lie below
+  // every such plane (Criterion III).
+  EXPECT_NEAR(unavoidableRiskyAreaMm2(lowTBar(), rotaryUpZ(Vec3::UnitX(), 60.0), 45.0, 1.0), 300.0, 1e-9);
+}
+
+TEST(UnavoidableRiskyArea, IsZeroWhenATurnTowardsTheOverhangsLiftsThemAboveThePlatformRegion) {
+  // About y the same turn tilts each plane along the bar: its far end (up to 20 mm out) lies above a plane that
+  // clears the platform region, so a region can hold it.
+  EXPECT_EQ(unavoidableRiskyAreaMm2(lowTBar(), rotaryUpZ(Vec3::UnitY(), 60.0), 45.0, 1.0), 0.0);
+}
+
+TEST(UnavoidableRiskyArea, NeverExceedsTheJgOfTheBunnysPlansOnTheDefaultRange) {
+  // At plus and minus 60 degrees a turn saves every face's normal; what stays is what the platform region keeps
+  // out of every region that would save it: the bunny's underside near the point it stands on.
+  const TriangleMesh bunny = multidir::test::loadSharedModel("bunny.off");
+  MachineSpec machine;
+  machine.kind = MachineKind::RotaryPlatform;
+  machine.up = Vec3::UnitY();
+  SearchOptions options;
+  options.polish = false;
+  for (const Vec3& axis : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitZ())}) {
+    machine.rotationAxis = axis;
+    JobContext job;
+    const auto plan = decompose(bunny, machine, options, job);
+    ASSERT_TRUE(plan.ok()) << plan.error().describe();
+    const double bound = unavoidableRiskyAreaMm2(bunny, machine, options.alphaMaxDegrees, options.supportedBandMm);
+    EXPECT_GT(bound, 0.0) << "axis " << axis.transpose();
+    EXPECT_LE(bound, plan->jgAfterMm2) << "axis " << axis.transpose();
+  }
 }

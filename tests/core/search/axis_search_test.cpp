@@ -85,6 +85,28 @@ TEST(AxisSearch, AnAxisThatCannotBeatTheBestPlanByItsBoundIsNotSearchedInFull) {
   EXPECT_TRUE(skipped);
 }
 
+TEST(AxisSearch, AnAxisWhoseOverhangsOnlyAPlaneThroughThePlatformRegionCouldSaveIsNotSearchedInFull) {
+  // A T on a 5 mm stem, its bar along x: about y the platform turns each half of the bar's underside into a
+  // region above a plane that clears the platform region; about x no such plane reaches them (Criterion III),
+  // though a 60-degree turn would save their normal. So the x axis's bound is their 300 mm^2, above y's plan.
+  MachineSpec machine;
+  machine.kind = MachineKind::RotaryPlatform;
+  machine.up = Vec3::UnitZ();
+  machine.rotationAxis = Vec3::UnitY();
+  SearchOptions options;
+  options.threads = 1;  // axes in order: y (axis 0) before x (axis 2 of 4)
+  options.polish = false;
+  JobContext job;
+  // As many axes as the second stage searches in full: every axis is searched in full unless the bound skips it.
+  const auto plan = decomposeWithAxisSearch(multidir::test::makeTBar(10.0, 5.0, 40.0, 5.0, 10.0), machine, options, 4, job);
+  ASSERT_TRUE(plan.ok()) << plan.error().describe();
+  EXPECT_LT(plan->jgAfterMm2, 300.0);
+  bool skipped = false;
+  for (const std::string& note : plan->statistics.notes)
+    skipped = skipped || note.find("not searched in full") != std::string::npos;
+  EXPECT_TRUE(skipped);
+}
+
 TEST(AxisSearch, ScreenedOnACopyFindsTheBestAxisOfTheFullSearchOnEveryAxisOfTheKitten) {
   const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
   MachineSpec machine = rotaryUpY();
