@@ -126,6 +126,9 @@ std::vector<std::int32_t> firstEqualPoints(const std::vector<Vec3>& points, cons
 
 using Cell = std::array<std::int64_t, 3>;
 
+// Spelled out: std::array's == calls memcmp, which was a sixth of the load's time.
+bool sameCell(const Cell& a, const Cell& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+
 // The distinct points (first occurrences) in a grid of cells twice the tolerance wide: a point lies within the
 // tolerance of at most one side of its cell along each axis, so whatever is that close to it lies in its cell
 // or the next one on that side (8 cells, not 27). Each cell's points are chained in point order.
@@ -196,7 +199,7 @@ class WeldGrid {
   // empty. Only the slice's own builder writes; the searches only read.
   std::int32_t& headOf(int s, const Cell& cell) const {
     return m_slices[static_cast<std::size_t>(s)].find(
-        hashOf(cell), [&](std::int32_t j) { return m_cells[static_cast<std::size_t>(j)] == cell; });
+        hashOf(cell), [&](std::int32_t j) { return sameCell(m_cells[static_cast<std::size_t>(j)], cell); });
   }
 
   const std::vector<Vec3>& m_points;
@@ -222,8 +225,8 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
     if (firstEqual[v] == static_cast<std::int32_t>(v)) distinct.push_back(static_cast<std::int32_t>(v));
   // With a zero tolerance, or coordinates too large for integer cells, only identical points merge.
   const bool exactOnly = !(tolerance > 0.0) || maxAbs / tolerance > 1e15;
-  // The distinct points with another one within the tolerance, on threads, each point by itself: the choice
-  // below depends on the order, but a point with no other near it is kept whatever came before it.
+  // The distinct points with an earlier one within the tolerance, on threads, each point by itself: the
+  // choice below depends on the order, but a point with no earlier one near it is kept whatever came before.
   std::vector<char> crowded(distinct.size(), 0);
   std::optional<WeldGrid> grid;
   if (!exactOnly) {
@@ -232,7 +235,8 @@ std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const st
       const auto [begin, end] = blockRange(block, distinct.size());
       for (std::size_t i = begin; i < end; ++i)
         grid->forNearbyCandidates(i, [&](std::size_t j) {
-          if (j != i && grid->within(i, j)) crowded[i] = 1;
+          if (j >= i) return false;  // chains run in point order
+          if (grid->within(i, j)) crowded[i] = 1;
           return crowded[i] == 0;
         });
     });
