@@ -12,7 +12,6 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "detail/flat_index.h"
 #include "detail/huge_pages.h"
 #include "detail/parallel.h"
 #include "detail/union_find.h"
@@ -20,12 +19,12 @@
 #include "mesh/edge_groups.h"
 #include "mesh/mesh_formats.h"
 #include "mesh/mesh_shells.h"
+#include "mesh/vertex_weld.h"
 #include "multidir/core/mesh/mesh_io.h"
 
 namespace multidir::core {
 namespace {
 
-using detail::FlatIndex;
 using detail::joinIndices;
 using detail::withThousands;
 
@@ -72,179 +71,6 @@ class Checker {
 std::string firstList(const std::string& what, const std::vector<std::int64_t>& first, std::size_t count) {
   if (first.empty()) return "";
   return " (first: " + what + " " + joinIndices(first) + (count > first.size() ? ", ..." : "") + ")";
-}
-
-// A point's coordinates as bits for hashing, -0 as +0 (they compare equal).
-std::array<std::int64_t, 3> bitsOf(const Vec3& p) {
-  std::array<std::int64_t, 3> bits{};
-  for (int i = 0; i < 3; ++i) {
-    const double c = p[i] == 0.0 ? 0.0 : p[i];
-    std::memcpy(&bits[static_cast<std::size_t>(i)], &c, sizeof(double));
-  }
-  return bits;
-}
-
-std::uint64_t hashOf(const std::array<std::int64_t, 3>& c) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
-  return h;
-}
-
-// The points' exact repeats are found on threads, each of kWeldPartitions slices of the hash space by itself
-// in vertex order, so the answer does not depend on the thread count; a slice's table is small enough to stay
-// in cache, where one table for two million STL corners would miss on every probe.
-constexpr int kWeldPartitions = 64;
-constexpr std::size_t kWeldBlock = 16384;  // points per task of the loops over all of them
-
-// For every used point, the first used point with exactly its coordinates (itself for a first occurrence;
-// -0 and +0 are one coordinate); -1 for unused points. Also the largest |coordinate| of a used point.
-std::vector<std::int32_t> firstEqualPoints(const std::vector<Vec3>& points, const std::vector<char>& used,
-                                           double& maxAbs) {
-  const int threads = detail::resolveThreadCount(0);
-  const std::size_t count = points.size();
-  const int blocks = static_cast<int>((count + kWeldBlock - 1) / kWeldBlock);
-  auto blockRange = [&](int block) {
-    const std::size_t begin = static_cast<std::size_t>(block) * kWeldBlock;
-    return std::make_pair(begin, std::min(count, begin + kWeldBlock));
-  };
-  // Each point's slice; each block's count per slice and largest coordinate.
-  std::vector<std::uint8_t> sliceOf(count);
-  std::vector<std::size_t> counts(static_cast<std::size_t>(blocks) * kWeldPartitions, 0);
-  std::vector<double> blockMax(static_cast<std::size_t>(blocks), 0.0);
-  detail::parallelFor(blocks, threads, [&](int block) {
-    const auto [begin, end] = blockRange(block);
-    std::size_t* blockCounts = &counts[static_cast<std::size_t>(block) * kWeldPartitions];
-    double largest = 0.0;
-    for (std::size_t v = begin; v < end; ++v) {
-      if (!used[v]) continue;
-      largest = std::max(largest, points[v].cwiseAbs().maxCoeff());
-      // The top 6 bits of the mixed hash: 64 slices (the table inside a slice uses the low bits).
-      sliceOf[v] = static_cast<std::uint8_t>(FlatIndex::mix(hashOf(bitsOf(points[v]))) >> 58);
-      ++blockCounts[sliceOf[v]];
-    }
-    blockMax[static_cast<std::size_t>(block)] = largest;
-  });
-  maxAbs = 0.0;
-  for (const double m : blockMax) maxAbs = std::max(maxAbs, m);
-  // The used points of each slice, in vertex order (a counting sort: slice-major, then block, then vertex).
-  std::vector<std::size_t> sliceStart(kWeldPartitions + 1, 0);
-  std::vector<std::size_t> offsets(counts.size());
-  {
-    std::size_t next = 0;
-    for (int slice = 0; slice < kWeldPartitions; ++slice) {
-      sliceStart[static_cast<std::size_t>(slice)] = next;
-      for (int block = 0; block < blocks; ++block) {
-        const std::size_t i = static_cast<std::size_t>(block) * kWeldPartitions + static_cast<std::size_t>(slice);
-        offsets[i] = next;
-        next += counts[i];
-      }
-    }
-    sliceStart[kWeldPartitions] = next;
-  }
-  std::vector<std::int32_t> order;
-  detail::reserveInHugePages(order, sliceStart[kWeldPartitions]);
-  order.resize(sliceStart[kWeldPartitions]);
-  detail::parallelFor(blocks, threads, [&](int block) {
-    const auto [begin, end] = blockRange(block);
-    std::size_t* blockOffsets = &offsets[static_cast<std::size_t>(block) * kWeldPartitions];
-    for (std::size_t v = begin; v < end; ++v)
-      if (used[v]) order[blockOffsets[sliceOf[v]]++] = static_cast<std::int32_t>(v);
-  });
-  std::vector<std::int32_t> first = detail::filledInHugePages<std::int32_t>(count, -1);
-  detail::parallelFor(kWeldPartitions, threads, [&](int slice) {
-    const std::size_t begin = sliceStart[static_cast<std::size_t>(slice)];
-    const std::size_t end = sliceStart[static_cast<std::size_t>(slice) + 1];
-    FlatIndex seen(end - begin);
-    for (std::size_t i = begin; i < end; ++i) {
-      const auto v = static_cast<std::size_t>(order[i]);
-      const Vec3& p = points[v];
-      std::int32_t& same = seen.find(hashOf(bitsOf(p)), [&](std::int32_t w) {
-        const Vec3& q = points[static_cast<std::size_t>(w)];
-        return q.x() == p.x() && q.y() == p.y() && q.z() == p.z();
-      });
-      if (same < 0) same = static_cast<std::int32_t>(v);
-      first[v] = same;
-    }
-  });
-  return first;
-}
-
-// Welds vertices closer than `tolerance` (Euclidean) to the earliest kept vertex that close, through a grid
-// of cells. Returns the new index of every vertex (-1 for vertices no face uses). A vertex equal to an earlier
-// one (an STL repeats every corner) goes where that one went: no kept vertex earlier than that one's choice can
-// lie within the tolerance of either, and later ones are later. Only first occurrences search the grid.
-std::vector<std::int32_t> weldVertices(const std::vector<Vec3>& points, const std::vector<char>& used,
-                                       double tolerance, std::vector<Vec3>& welded, std::size_t& merged,
-                                       std::vector<std::int64_t>& firstMerged) {
-  std::vector<std::int32_t> map = detail::filledInHugePages<std::int32_t>(points.size(), -1);
-  double maxAbs = 0.0;
-  const std::vector<std::int32_t> firstEqual = firstEqualPoints(points, used, maxAbs);
-  // With a zero tolerance, or coordinates too large for integer cells, only identical points merge.
-  const bool exactOnly = !(tolerance > 0.0) || maxAbs / tolerance > 1e15;
-  // Cells twice the tolerance wide: a point lies within the tolerance of at most one side of its cell along
-  // each axis, so whatever is that close to it lies in its cell or the next one on that side (8 cells, not 27).
-  const double cellSize = 2.0 * tolerance;
-  auto cellOf = [&](const Vec3& p) -> std::array<std::int64_t, 3> {
-    return {static_cast<std::int64_t>(std::floor(p.x() / cellSize)),
-            static_cast<std::int64_t>(std::floor(p.y() / cellSize)),
-            static_cast<std::int64_t>(std::floor(p.z() / cellSize))};
-  };
-  std::size_t distinct = 0;
-  for (std::size_t v = 0; v < points.size(); ++v)
-    if (firstEqual[v] == static_cast<std::int32_t>(v)) ++distinct;
-  // Kept vertices by cell: the first of each cell in the index, the rest chained in the order they came.
-  FlatIndex cells(exactOnly ? 0 : distinct);
-  std::vector<std::array<std::int64_t, 3>> cellOfKept;
-  std::vector<std::int32_t> nextInCell, lastInCell;
-  detail::reserveInHugePages(welded, distinct);
-  if (!exactOnly) {
-    detail::reserveInHugePages(cellOfKept, distinct);
-    nextInCell.reserve(distinct);
-    lastInCell.reserve(distinct);
-  }
-  const double toleranceSquared = tolerance * tolerance;
-  for (std::size_t v = 0; v < points.size(); ++v) {
-    if (!used[v]) continue;
-    const Vec3& p = points[v];
-    std::int32_t found = -1;
-    if (const auto earlier = static_cast<std::size_t>(firstEqual[v]); earlier != v) found = map[earlier];
-    std::array<std::int64_t, 3> cell{};
-    if (found < 0 && !exactOnly) {
-      cell = cellOf(p);
-      std::array<std::int64_t, 3> side{};
-      for (int i = 0; i < 3; ++i)
-        side[static_cast<std::size_t>(i)] = p[i] / cellSize - static_cast<double>(cell[static_cast<std::size_t>(i)]) < 0.5 ? -1 : 1;
-      // The earliest kept vertex within the tolerance, whatever order the cells are visited in.
-      for (int corner = 0; corner < 8; ++corner) {
-        const std::array<std::int64_t, 3> near{cell[0] + ((corner & 1) ? side[0] : 0), cell[1] + ((corner & 2) ? side[1] : 0),
-                                               cell[2] + ((corner & 4) ? side[2] : 0)};
-        const std::int32_t first =
-            cells.find(hashOf(near), [&](std::int32_t w) { return cellOfKept[static_cast<std::size_t>(w)] == near; });
-        for (std::int32_t w = first; w >= 0 && (found < 0 || w < found); w = nextInCell[static_cast<std::size_t>(w)])
-          if ((welded[static_cast<std::size_t>(w)] - p).squaredNorm() <= toleranceSquared) found = w;
-      }
-    }
-    if (found >= 0) {
-      map[v] = found;
-      if (merged++ < kFirstFew) firstMerged.push_back(static_cast<std::int64_t>(v));
-      continue;
-    }
-    const auto index = static_cast<std::int32_t>(welded.size());
-    map[v] = index;
-    welded.push_back(p);
-    if (exactOnly) continue;
-    cellOfKept.push_back(cell);
-    nextInCell.push_back(-1);
-    lastInCell.push_back(index);
-    std::int32_t& first = cells.find(hashOf(cell), [&](std::int32_t w) { return cellOfKept[static_cast<std::size_t>(w)] == cell; });
-    if (first < 0) {
-      first = index;
-    } else {
-      nextInCell[static_cast<std::size_t>(lastInCell[static_cast<std::size_t>(first)])] = index;
-      lastInCell[static_cast<std::size_t>(first)] = index;
-    }
-  }
-  return map;
 }
 
 // Vertices whose faces form more than one fan (the first few), for the message; edgeCensus gives the count.
@@ -344,8 +170,8 @@ Result<LoadedMesh> checkAndRepair(const RawSoup& soup, const LoadOptions& option
   TriangleMesh mesh;
   std::size_t merged = 0;
   std::vector<std::int64_t> firstMerged;
-  const std::vector<std::int32_t> newIndex =
-      weldVertices(soup.vertices, used, options.weldToleranceMm, mesh.vertices, merged, firstMerged);
+  const std::vector<std::int32_t> newIndex = detail::weldVertices(soup.vertices, used, options.weldToleranceMm, 0,
+                                                                  mesh.vertices, merged, firstMerged, kFirstFew);
   const auto unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
   if (unused > 0)
     check.info("unused-vertices", unused, {},
