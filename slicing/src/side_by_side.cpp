@@ -26,12 +26,19 @@ core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& t
     states[i] = 0;
   }
   std::vector<std::optional<Error>> errors(tasks.size());
+  // The order the workers take the tasks in: the comparison first (the whole model, the longest run), then the
+  // steps. A one-thread slicer cannot share its CPU with the others once they are done, so the longest run
+  // started last would leave the other CPUs idle while it ends alone.
+  std::vector<std::size_t> startOrder;
+  for (std::size_t i = stepCount; i < tasks.size(); ++i) startOrder.push_back(i);
+  for (std::size_t i = 0; i < std::min(stepCount, tasks.size()); ++i) startOrder.push_back(i);
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> finished{0};
   std::vector<std::thread> threads;
   for (std::size_t w = 0; w < workers; ++w)
     threads.emplace_back([&, cpu = cpus[w % cpus.size()]] {
-      for (std::size_t i = next++; i < tasks.size(); i = next++) {
+      for (std::size_t taken = next++; taken < tasks.size(); taken = next++) {
+        const std::size_t i = startOrder[taken];
         if (stop.isCancelled()) {
           ++finished;
           continue;

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <mutex>
 #include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -32,6 +33,7 @@ class RecordingEngine : public SlicerEngine {
     {
       std::lock_guard<std::mutex> lock(m_mutex);
       cpus.push_back(cpu);
+      started.push_back(request.meshFile);
       if (!busy.insert(cpu).second) sharedCpu = true;
       mostAtOnce = std::max(mostAtOnce, busy.size());
     }
@@ -47,6 +49,7 @@ class RecordingEngine : public SlicerEngine {
   }
 
   mutable std::vector<int> cpus;      // the CPU given to each run, in the order they started
+  mutable std::vector<std::string> started;  // the runs' mesh files, in the order they started
   mutable std::set<int> busy;         // CPUs of the runs under way
   mutable std::size_t mostAtOnce = 0;
   mutable bool sharedCpu = false;     // two runs were given the same CPU at the same time
@@ -107,5 +110,23 @@ TEST(SideBySide, AThreadAllowedASingleCpuRunsEveryTaskOnItOneAfterTheOther) {
   ASSERT_TRUE(ran);
   EXPECT_EQ(engine.cpus, std::vector<int>(tasks.size(), only));
   EXPECT_EQ(engine.mostAtOnce, 1u);
+  for (std::size_t i = 0; i < tasks.size(); ++i) EXPECT_EQ(tasks[i].run->gcode, "step-" + std::to_string(i));
+}
+
+TEST(SideBySide, TheComparisonStartsBeforeTheStepsSoThatItDoesNotEndAlone) {
+  std::vector<SliceTask> tasks = tasksNamed(4);  // steps 0 to 2, then the comparison
+  const RecordingEngine engine(tasks.size());
+  bool ran = false;
+  std::thread oneCpu([&] {  // one worker: the start order is the order the tasks are taken in
+    cpu_set_t mask;
+    CPU_ZERO(&mask);
+    CPU_SET(static_cast<std::size_t>(usableCpus().front()), &mask);
+    ASSERT_EQ(::pthread_setaffinity_np(::pthread_self(), sizeof mask, &mask), 0);
+    core::JobContext context;
+    ran = runSideBySide(engine, tasks, 3, 4.0, context).ok();
+  });
+  oneCpu.join();
+  ASSERT_TRUE(ran);
+  EXPECT_EQ(engine.started, (std::vector<std::string>{"step-3", "step-0", "step-1", "step-2"}));
   for (std::size_t i = 0; i < tasks.size(); ++i) EXPECT_EQ(tasks[i].run->gcode, "step-" + std::to_string(i));
 }

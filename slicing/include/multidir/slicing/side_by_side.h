@@ -22,7 +22,9 @@ struct SliceTask {
 
 // Runs the tasks side by side, one slicer per CPU the calling thread may use (usableCpus(), at most one per
 // task), each pinned to its worker's CPU (SliceRequest::cpu); their results in their slots, in the tasks'
-// order whatever order they finish in. A thread allowed a single CPU runs them one after the other on it.
+// order whatever order they finish in. A thread allowed a single CPU runs them one after the other on it. The
+// comparison (tasks from stepCount on: the whole model, the longest) starts first, then the steps in order, so
+// that no long run is left to end alone on one CPU while the others idle.
 // Progress: tasks [0, stepCount) are the steps, a further one the comparison; each reports its own fraction
 // (the slicer's own stages), the job's progress is the steps' sum over `shares`, plus the comparison's once
 // every step is done. The caller's cancel reaches every running slicer within about 50 ms (each polls the
