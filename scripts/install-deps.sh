@@ -9,7 +9,7 @@ packages=(
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-charts-dev
   qt6-translations-l10n
   libvtk9-dev libopenmesh-dev libeigen3-dev libmodbus-dev nlohmann-json3-dev libcpp-httplib-dev
-  libcgal-dev libgmp-dev libmpfr-dev lib3mf-dev zlib1g-dev
+  libcgal-dev libgmp-dev libmpfr-dev lib3mf-dev zlib1g-dev libtbb-dev
   libgtest-dev libgmock-dev
   xvfb xauth libgl1-mesa-dri
   prusa-slicer

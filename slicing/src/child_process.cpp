@@ -2,12 +2,15 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <pthread.h>
+#include <sched.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -58,7 +61,45 @@ void terminate(pid_t pid) {
   ::waitpid(pid, &status, 0);
 }
 
+// posix_spawn has no affinity attribute, but its child starts with the affinity of the thread that spawns it:
+// this narrows the calling thread's mask to one CPU for the spawn and puts the mask back when it goes.
+class ThreadPinnedForSpawn {
+ public:
+  ThreadPinnedForSpawn() = default;
+  ThreadPinnedForSpawn(const ThreadPinnedForSpawn&) = delete;
+  ThreadPinnedForSpawn& operator=(const ThreadPinnedForSpawn&) = delete;
+  ~ThreadPinnedForSpawn() {
+    if (m_pinned) ::pthread_setaffinity_np(::pthread_self(), sizeof m_before, &m_before);
+  }
+
+  // 0, or the errno of the failure.
+  int pin(int cpu) {
+    if (const int e = ::pthread_getaffinity_np(::pthread_self(), sizeof m_before, &m_before); e != 0) return e;
+    cpu_set_t only;
+    CPU_ZERO(&only);
+    CPU_SET(static_cast<std::size_t>(cpu), &only);
+    if (const int e = ::pthread_setaffinity_np(::pthread_self(), sizeof only, &only); e != 0) return e;
+    m_pinned = true;
+    return 0;
+  }
+
+ private:
+  cpu_set_t m_before{};
+  bool m_pinned = false;
+};
+
 }  // namespace
+
+std::vector<int> usableCpus() {
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  std::vector<int> cpus;
+  if (::sched_getaffinity(0, sizeof mask, &mask) == 0)
+    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+      if (CPU_ISSET(static_cast<std::size_t>(cpu), &mask)) cpus.push_back(cpu);
+  if (cpus.empty()) cpus.push_back(std::max(0, ::sched_getcpu()));
+  return cpus;
+}
 
 std::string commandText(const std::vector<std::string>& argv) {
   std::string text;
@@ -105,7 +146,8 @@ std::string findExecutable(const std::string& program) {
 
 core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, core::JobContext& context,
                                           const std::function<void(const std::string& piece)>& onOutput,
-                                          const std::vector<std::string>& environment) {
+                                          const std::vector<std::string>& environment,
+                                          std::optional<int> onlyCpu) {
   if (argv.empty()) return Error{ErrorCode::InvalidParameter, "no program to run", "child process"};
   const std::string command = commandText(argv);
   const std::string executable = findExecutable(argv[0]);
@@ -115,6 +157,15 @@ core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, 
                  "scripts/install-deps.sh) or give its full path. Command: " + command,
                  argv[0]};
   if (context.isCancelled()) return Error{ErrorCode::Cancelled, "cancelled before " + argv[0] + " started", argv[0]};
+  if (onlyCpu) {
+    const std::vector<int> cpus = usableCpus();
+    if (std::find(cpus.begin(), cpus.end(), *onlyCpu) == cpus.end())
+      return Error{ErrorCode::InvalidParameter,
+                   "CPU " + std::to_string(*onlyCpu) + " is not one this process may run on (" +
+                       std::to_string(cpus.size()) + " usable, from " + std::to_string(cpus.front()) +
+                       "); pick one of usableCpus(). Command: " + command,
+                   argv[0]};
+  }
 
   int pipeFds[2];
   if (::pipe2(pipeFds, O_CLOEXEC) != 0)
@@ -143,7 +194,13 @@ core::Result<ChildOutput> runChildProcess(const std::vector<std::string>& argv, 
   for (std::string& v : variables) envp.push_back(v.data());
   envp.push_back(nullptr);
   pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, executable.c_str(), &actions, nullptr, args.data(), envp.data());
+  int spawned = 0;
+  {
+    ThreadPinnedForSpawn pinned;
+    if (onlyCpu) spawned = pinned.pin(*onlyCpu);
+    if (spawned == 0)
+      spawned = ::posix_spawn(&pid, executable.c_str(), &actions, nullptr, args.data(), envp.data());
+  }
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0)
     return Error{ErrorCode::ExternalToolFailed, std::string("cannot start: ") + std::strerror(spawned), command};

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <sstream>
 
 #include "multidir/slicing/child_process.h"
@@ -19,6 +21,9 @@ using core::Error;
 using core::ErrorCode;
 
 constexpr int kOutputLinesInErrors = 8;
+
+// Built beside the slicing library (slicing/CMakeLists.txt).
+constexpr const char* kOneTbbThreadLibrary = MULTIDIR_ONE_TBB_THREAD_LIBRARY;
 
 // PrusaSlicer's own stages, as it prints them ("70 => Infilling layers"), in percent; it writes the G-code from
 // 90 % on.
@@ -84,15 +89,28 @@ class ProgressFollower {
 // PrusaSlicer prints its stage lines with C stdio, which a pipe buffers until the program ends. coreutils'
 // libstdbuf (what stdbuf -oL preloads), when installed, makes its stdout line-buffered so the lines arrive as
 // it prints them; without it they arrive at the end and only the G-code's height moves the progress.
-std::vector<std::string> lineBufferedOutput() {
+std::optional<std::string> lineBufferingLibrary() {
   for (const char* library : {"/usr/libexec/coreutils/libstdbuf.so", "/usr/lib/coreutils/libstdbuf.so",
-                              "/usr/local/libexec/coreutils/libstdbuf.so"}) {
-    if (::access(library, R_OK) != 0) continue;
-    const char* preloaded = std::getenv("LD_PRELOAD");
-    const std::string preload = std::string(library) + (preloaded && *preloaded ? std::string(":") + preloaded : "");
-    return {"LD_PRELOAD=" + preload, "_STDBUF_O=L"};
+                              "/usr/local/libexec/coreutils/libstdbuf.so"})
+    if (::access(library, R_OK) == 0) return std::string(library);
+  return std::nullopt;
+}
+
+// The child's environment: the library that keeps it on one thread (one_tbb_thread.cpp) preloaded, and
+// libstdbuf with line-buffered stdout when its progress is followed, before what LD_PRELOAD held already.
+std::vector<std::string> slicerEnvironment(bool followProgress) {
+  std::string preload = kOneTbbThreadLibrary;
+  std::vector<std::string> environment;
+  if (followProgress) {
+    if (const std::optional<std::string> stdbuf = lineBufferingLibrary()) {
+      preload += ":" + *stdbuf;
+      environment.push_back("_STDBUF_O=L");
+    }
   }
-  return {};
+  const char* preloaded = std::getenv("LD_PRELOAD");
+  if (preloaded && *preloaded) preload += std::string(":") + preloaded;
+  environment.push_back("LD_PRELOAD=" + preload);
+  return environment;
 }
 
 std::string numberText(double value) {
@@ -120,11 +138,21 @@ core::Result<SliceRun> PrusaSlicerEngine::slice(const SliceRequest& request, cor
 
   const auto start = std::chrono::steady_clock::now();
   ProgressFollower follower(request);
-  core::Result<ChildOutput> child =
-      request.progress ? runChildProcess(
-                             argv, context, [&follower](const std::string& piece) { follower.take(piece); },
-                             lineBufferedOutput())
-                       : runChildProcess(argv, context);
+  // One CPU and one thread: the same G-code for the same request (side_by_side.h). The library's cap holds only
+  // in a process confined to one CPU, hence both.
+  if (::access(kOneTbbThreadLibrary, R_OK) != 0)
+    return Error{ErrorCode::FileNotFound,
+                 std::string("the library that keeps PrusaSlicer on one thread, ") + kOneTbbThreadLibrary +
+                     ", is missing; build the target multidir_one_tbb_thread (it is built with multidir_slicing)",
+                 kOneTbbThreadLibrary};
+  const int cpu = request.cpu.value_or(usableCpus().front());
+  const bool followProgress = static_cast<bool>(request.progress);
+  core::Result<ChildOutput> child = runChildProcess(
+      argv, context,
+      followProgress ? std::function<void(const std::string&)>(
+                           [&follower](const std::string& piece) { follower.take(piece); })
+                     : std::function<void(const std::string&)>(),
+      slicerEnvironment(followProgress), cpu);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!child) return child.error();
   const std::string tail = lastLines(child->output, kOutputLinesInErrors);

@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,7 +12,6 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 #include "multidir/core/common/atomic_file.h"
 #include "multidir/core/common/staged_folder.h"
@@ -23,6 +21,7 @@
 #include "multidir/slicing/interface_settings.h"
 #include "multidir/slicing/job_folder.h"
 #include "multidir/slicing/placement.h"
+#include "multidir/slicing/side_by_side.h"
 #include "multidir/slicing/slicer_engine.h"
 #include "multidir/slicing/step_recheck.h"
 #include "multidir/slicing/two_axis_motion.h"
@@ -258,88 +257,6 @@ double firstLayerZ(const GcodeProgram& program, int step) {
   for (const GcodeMove& m : program.moves)
     if (m.step == step && m.extrudes()) return std::min(m.from.z(), m.to.z());
   return std::numeric_limits<double>::quiet_NaN();
-}
-
-// One slicing run and, once it ran, what it gave.
-struct SliceTask {
-  SliceRequest request;
-  std::optional<SliceRun> run;
-};
-
-// Runs the tasks side by side, one slicer per core (at most one per task), their results in their slots.
-// Progress: tasks [0, stepCount) are the steps, a further one the comparison; each reports its own fraction
-// (the slicer's own stages), the job's progress is the steps' sum over `shares`, plus the comparison's once
-// every step is done. The caller's cancel reaches every
-// running slicer within about 50 ms (each polls the workers' context, which this thread cancels); the first
-// failure cancels the others and is returned (a cancel, when the caller cancelled).
-core::Status runSideBySide(const SlicerEngine& engine, std::vector<SliceTask>& tasks, std::size_t stepCount,
-                           double shares, core::JobContext& context) {
-  const std::size_t workers =
-      std::max<std::size_t>(1, std::min<std::size_t>(tasks.size(), std::thread::hardware_concurrency()));
-  core::JobContext stop;  // the workers' own: cancelled on the caller's cancel or a failure
-  std::vector<std::atomic<double>> fractions(tasks.size());
-  std::vector<std::atomic<int>> states(tasks.size());  // 0 waiting, 1 running, 2 done
-  for (std::size_t i = 0; i < tasks.size(); ++i) {
-    fractions[i] = 0.0;
-    states[i] = 0;
-  }
-  std::vector<std::optional<Error>> errors(tasks.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> finished{0};
-  std::vector<std::thread> threads;
-  for (std::size_t w = 0; w < workers; ++w)
-    threads.emplace_back([&] {
-      for (std::size_t i = next++; i < tasks.size(); i = next++) {
-        if (stop.isCancelled()) {
-          ++finished;
-          continue;
-        }
-        states[i] = 1;
-        SliceRequest request = tasks[i].request;
-        request.progress = [&fractions, i](double f) { fractions[i] = f; };
-        core::Result<SliceRun> run = engine.slice(request, stop);
-        if (run) {
-          tasks[i].run = std::move(run).value();
-        } else {
-          errors[i] = run.error();
-          stop.cancel();
-        }
-        fractions[i] = 1.0;
-        states[i] = 2;
-        ++finished;
-      }
-    });
-  while (finished.load() < tasks.size()) {
-    if (context.isCancelled()) stop.cancel();
-    double done = 0.0;
-    double comparison = 0.0;
-    std::string running;
-    int doneSteps = 0;
-    for (std::size_t i = 0; i < tasks.size(); ++i) {
-      (i < stepCount ? done : comparison) += fractions[i];
-      if (i < stepCount && states[i] == 2) ++doneSteps;
-      if (states[i] != 1) continue;
-      char percent[16];
-      std::snprintf(percent, sizeof percent, " (%d %%)", static_cast<int>(fractions[i] * 100.0));
-      running += std::string(running.empty() ? "" : ", ") +
-                 (i < stepCount ? "step " + std::to_string(i + 1) : std::string("the comparison")) + percent;
-    }
-    // The comparison's share counts once every step is done, so that the steps' shares read as the steps'
-    // progress (sliceStageAt: "step k" while k - 1 steps' worth are done).
-    if (doneSteps == static_cast<int>(stepCount)) done += comparison;
-    if (!stop.isCancelled())
-      context.setProgress(done / shares, "slicing " + (running.empty() ? std::string("") : running + "; ") +
-                                             std::to_string(doneSteps) + " of " + std::to_string(stepCount) +
-                                             " steps done");
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  for (std::thread& t : threads) t.join();
-  if (context.isCancelled()) return Error{ErrorCode::Cancelled, "slicing was cancelled", "slicing"};
-  for (std::size_t i = 0; i < tasks.size(); ++i)
-    if (errors[i] && errors[i]->code != ErrorCode::Cancelled) return *errors[i];
-  for (std::size_t i = 0; i < tasks.size(); ++i)
-    if (errors[i]) return *errors[i];
-  return core::Done{};
 }
 
 }  // namespace

@@ -123,6 +123,11 @@ class RobotCellDock : public ::testing::Test {
     auto cell = robot::parseCell(kCellFile);
     ASSERT_TRUE(cell.ok());
     document.setCell(*cell);
+    // The machine is the robot cell, so the Hardware dock's device is the cell and its section shows.
+    core::MachineSpec fiveDof;
+    fiveDof.kind = core::MachineKind::TiltRotate;
+    document.setMachine(fiveDof);
+    document.setMachineIsRobotCell(true);
     core::Decomposition plan;
     plan.regions.resize(2);
     SearchRun run;

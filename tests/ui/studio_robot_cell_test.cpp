@@ -28,6 +28,7 @@
 #include "multidir/slicing/printer_profile.h"
 #include "support/test_models.h"
 #include "support/ur_test_support.h"
+#include "ui/device/connection_form.h"
 #include "ui/device/hardware_panel.h"
 #include "ui/device/robot_cell_section.h"
 #include "ui/document/studio_document.h"
@@ -81,6 +82,22 @@ TEST(StudioRobotCell, ChoosingTheRobotCellShowsThePaperCellSound) {
   // Another machine hides the section.
   child<QComboBox>(*window.machinePanel(), "machineKind")->setCurrentIndex(0);
   EXPECT_FALSE(panel->isVisibleTo(window.machinePanel()));
+}
+
+TEST(StudioRobotCell, ChoosingTheRobotCellMachineSelectsTheRobotCellInTheHardwareDock) {
+  MainWindow window;
+  ASSERT_NO_FATAL_FAILURE(showCellMachine(window));
+  EXPECT_TRUE(window.document()->machineIsRobotCell());
+  EXPECT_EQ(window.hardwarePanel()->connectionForm()->kind(), DeviceKind::RobotCell);
+
+  // The 5-DOF machine whose arm tilts the platform under a printer is the robot arm device.
+  auto* kind = child<QComboBox>(*window.machinePanel(), "machineKind");
+  ASSERT_NE(kind, nullptr);
+  const int arm = kind->findData(static_cast<int>(core::MachineKind::TiltRotate));
+  ASSERT_GE(arm, 0);
+  kind->setCurrentIndex(arm);
+  EXPECT_FALSE(window.document()->machineIsRobotCell());
+  EXPECT_EQ(window.hardwarePanel()->connectionForm()->kind(), DeviceKind::RobotArm);
 }
 
 TEST(StudioRobotCell, EditedFieldsGoIntoTheDocumentAndTheCheckNamesTheKey) {

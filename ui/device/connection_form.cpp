@@ -36,6 +36,8 @@ ConnectionForm::ConnectionForm(QWidget* parent) : QWidget(parent) {
   m_kind->setObjectName(QStringLiteral("deviceKind"));
   m_kind->addItem(tr("Rotary platform (4-DOF)"), static_cast<int>(DeviceKind::RotaryPlatform));
   m_kind->addItem(tr("Robot arm (5-DOF)"), static_cast<int>(DeviceKind::RobotArm));
+  m_kind->addItem(tr("Robot cell (5-DOF, Universal Robots: the arm carries the part under a fixed extruder)"),
+                  static_cast<int>(DeviceKind::RobotCell));
 
   m_transport = new QComboBox(this);
   m_transport->setObjectName(QStringLiteral("transport"));
@@ -104,10 +106,12 @@ ConnectionForm::ConnectionForm(QWidget* parent) : QWidget(parent) {
   m_robotSpeedLabel = new QLabel(tr("Speed:"), this);
 
   auto* form = new QFormLayout;
+  m_kindForm = form;
   form->setContentsMargins(0, 0, 0, 0);
   form->addRow(tr("Device:"), m_kind);
   form->addRow(tr("Transport:"), m_transport);
   auto* timeouts = new QFormLayout;
+  m_timeoutsForm = timeouts;
   timeouts->setContentsMargins(0, 0, 0, 0);
   timeouts->addRow(tr("Response timeout:"), m_responseTimeout);
   timeouts->addRow(tr("Byte timeout:"), m_byteTimeout);
@@ -171,6 +175,13 @@ void ConnectionForm::setRobotSpeedPercent(int percent) { m_robotSpeed->setValue(
 
 void ConnectionForm::onKindChanged() {
   const DeviceKind now = kind();
+  // The robot cell is reached over UR's own interfaces (its address with the cell's run controls, in the
+  // panel's robot cell section): none of the Modbus fields apply to it.
+  const bool modbus = now != DeviceKind::RobotCell;
+  m_kindForm->setRowVisible(m_transport, modbus);
+  m_transportPages->setVisible(modbus);
+  m_timeoutsForm->setRowVisible(m_responseTimeout, modbus);
+  m_timeoutsForm->setRowVisible(m_byteTimeout, modbus);
   // The arm is reached through the robot's own Modbus TCP server, which answers any unit id (255 is usual).
   if (now == DeviceKind::RobotArm) {
     m_transport->setCurrentIndex(m_transport->findData(static_cast<int>(hardware::Transport::Tcp)));
@@ -183,7 +194,7 @@ void ConnectionForm::onKindChanged() {
   m_rotarySpeedLabel->setVisible(now == DeviceKind::RotaryPlatform);
   m_robotSpeed->setVisible(now == DeviceKind::RobotArm);
   m_robotSpeedLabel->setVisible(now == DeviceKind::RobotArm);
-  restoreTcpAddress();
+  if (modbus) restoreTcpAddress();
   emit kindChanged(now);
 }
 

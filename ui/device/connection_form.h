@@ -1,12 +1,14 @@
 #pragma once
 // The connection settings of the Hardware panel: which device, over TCP (host, port, unit id) or serial RTU
-// (port, baud, parity, data and stop bits), and the link's timeouts. Holds no connection itself.
+// (port, baud, parity, data and stop bits), and the link's timeouts. Holds no connection itself. The robot
+// cell is one of the devices: chosen, the Modbus fields hide (the panel shows the cell's own section instead).
 #include <QWidget>
 
 #include "multidir/hardware/connection.h"
 #include "ui/device/device_snapshot.h"
 
 class QComboBox;
+class QFormLayout;
 class QDoubleSpinBox;
 class QLineEdit;
 class QSpinBox;
@@ -46,6 +48,8 @@ class ConnectionForm : public QWidget {
   void restoreTcpAddress();
 
   QComboBox* m_kind = nullptr;
+  QFormLayout* m_kindForm = nullptr;      // device and transport
+  QFormLayout* m_timeoutsForm = nullptr;  // timeouts and speeds
   QComboBox* m_transport = nullptr;
   QStackedWidget* m_transportPages = nullptr;
   QLineEdit* m_host = nullptr;

@@ -13,7 +13,9 @@
 
 namespace multidir::ui {
 
-enum class DeviceKind { RotaryPlatform, RobotArm };
+// RobotCell: a Universal Robots arm carrying the part under a fixed extruder (docs/robot-cell.md), driven by the
+// Hardware panel's RobotCellSection over UR's own interfaces, never by a DeviceLink (Modbus).
+enum class DeviceKind { RotaryPlatform, RobotArm, RobotCell };
 
 // The panel's view of a link: Fault is Connected with the device in fault (rotary fault, robot program
 // halted or faulted). Connecting covers the first attempt and the driver's reconnecting.

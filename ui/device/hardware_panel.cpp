@@ -137,14 +137,18 @@ HardwarePanel::HardwarePanel(StudioDocument* document, QWidget* parent) : QWidge
   auto* content = new QWidget;
   auto* layout = new QVBoxLayout(content);
   layout->addWidget(buildConnectionGroup());
-  layout->addWidget(buildStatusGroup());
-  layout->addWidget(buildControlsGroup());
+  m_statusGroup = buildStatusGroup();
+  layout->addWidget(m_statusGroup);
+  m_controlsGroup = buildControlsGroup();
+  layout->addWidget(m_controlsGroup);
   m_message = valueLabel(content, QStringLiteral("hardwareMessage"));
   layout->addWidget(m_message);
   m_printerSection = new PrinterSection(m_printerLink, m_run, content);
   layout->addWidget(m_printerSection);
-  layout->addWidget(buildRunGroup());
-  // The robot cell: its own link and run (hardware's robot run), the same timeline, banner, stop line and E-STOP.
+  m_runGroup = buildRunGroup();
+  layout->addWidget(m_runGroup);
+  // The robot cell, the connection form's device "Robot cell": its own link and run (hardware's robot run), the
+  // same timeline, banner, stop line and E-STOP.
   m_robotCell = new RobotCellSection(m_document, m_timeline, content);
   layout->addWidget(m_robotCell);
   layout->addStretch(1);
@@ -205,6 +209,7 @@ HardwarePanel::HardwarePanel(StudioDocument* document, QWidget* parent) : QWidge
     updateControls();
   });
   connect(m_document, &StudioDocument::machineChanged, this, &HardwarePanel::onMachineChanged);
+  connect(m_robotCell, &RobotCellSection::statusChanged, this, &HardwarePanel::onMachineChanged);
   onMachineChanged();
 
   onSnapshot(m_link->snapshot());
@@ -527,16 +532,21 @@ void HardwarePanel::onMachineChanged() {
   // The device choice follows the machine the plans are made for when its kind changes; any other edit of the
   // machine (and Connect) leaves the device, transport and unit the operator chose as they are. An open
   // session keeps its device.
-  const core::MachineKind kind = m_document->machine().kind;
-  if (kind != m_followedKind && !m_link->isOpen()) {
-    if (kind == core::MachineKind::RotaryPlatform) m_form->setKind(DeviceKind::RotaryPlatform);
-    if (kind == core::MachineKind::TiltRotate) m_form->setKind(DeviceKind::RobotArm);
-    m_followedKind = kind;
+  const MachineFollowed machine{m_document->machine().kind, m_document->machineIsRobotCell()};
+  if (machine != m_followedMachine && !m_link->isOpen() && !m_robotCell->isConnected()) {
+    if (machine.robotCell) m_form->setKind(DeviceKind::RobotCell);
+    else if (machine.kind == core::MachineKind::RotaryPlatform) m_form->setKind(DeviceKind::RotaryPlatform);
+    else if (machine.kind == core::MachineKind::TiltRotate) m_form->setKind(DeviceKind::RobotArm);
+    m_followedMachine = machine;
   }
   updateLimits();
 }
 
 void HardwarePanel::connectDevice() {
+  if (m_form->kind() == DeviceKind::RobotCell) {  // not a Modbus device: the cell's section connects it
+    m_robotCell->connectRobot();
+    return;
+  }
   DeviceLinkSettings settings;
   settings.kind = m_form->kind();
   settings.connection = m_form->settings();
@@ -887,6 +897,14 @@ void HardwarePanel::updateLimits() {
 void HardwarePanel::updateKindWidgets() {
   const DeviceKind kind = m_link->isOpen() ? m_link->settings().kind : m_form->kind();
   const bool rotary = kind == DeviceKind::RotaryPlatform;
+  // The robot cell chosen: its section (address, job, run controls) in place of the Modbus device's connect
+  // buttons, status, controls and print run, and of the printer (the cell's extruder follows its program). A
+  // connected cell stays in view whatever is chosen.
+  const bool cell = kind == DeviceKind::RobotCell;
+  for (QWidget* modbusOnly : std::initializer_list<QWidget*>{m_limits, m_connect, m_disconnect, m_statusGroup,
+                                                             m_controlsGroup, m_runGroup, m_printerSection})
+    modbusOnly->setVisible(!cell);
+  m_robotCell->setVisible(cell || m_robotCell->isConnected() || m_robotCell->isRunUnderWay());
   m_targetAngle->setVisible(rotary);
   m_targetAngleLabel->setVisible(rotary);
   m_targetTilt->setVisible(!rotary);
@@ -923,7 +941,8 @@ void HardwarePanel::updateControls() {
       m_run->isActive() && runState != hardware::PrintRunState::Paused && runState != hardware::PrintRunState::Faulted;
   const bool manual = connected && !runHoldsDevice;
 
-  m_form->setEnabled(!open);
+  // The device choice stays while a device (the cell included) has a session.
+  m_form->setEnabled(!open && !m_robotCell->isConnected() && !m_robotCell->isRunUnderWay());
   m_connect->setEnabled(!open);
   m_disconnect->setEnabled(open);
   m_enable->setEnabled(manual);

@@ -22,7 +22,9 @@
 // E-STOP covers both devices: it sends the platform's and the printer's emergency stops at once, and the
 // line under it shows each device's stop confirmed or still being resent.
 //
-// The robot cell (RobotCellSection): a Universal Robots arm carrying the part under a fixed extruder runs a
+// The robot cell (RobotCellSection), the connection form's device "Robot cell" (chosen, its section shows in place
+// of the Modbus device's status, controls and print run and of the printer; it follows the document's machine
+// when that is the robot cell): a Universal Robots arm carrying the part under a fixed extruder runs a
 // robot job (`multidir robot-program` OUT) with hardware's robot run; its steps go to the same job timeline, its
 // lost link to the banner, its stop to the line under E-STOP, and E-STOP stops it with the other devices.
 //
@@ -183,6 +185,9 @@ class HardwarePanel : public QWidget {
   QPushButton* m_connect = nullptr;
   QPushButton* m_disconnect = nullptr;
 
+  QGroupBox* m_statusGroup = nullptr;
+  QGroupBox* m_controlsGroup = nullptr;
+  QGroupBox* m_runGroup = nullptr;
   QLabel* m_banner = nullptr;
   QFormLayout* m_statusForm = nullptr;
   QLabel* m_state = nullptr;
@@ -232,8 +237,14 @@ class HardwarePanel : public QWidget {
   QPlainTextEdit* m_runLog = nullptr;
 
   QTimer m_clockTimer;  // refreshes the heartbeat age and the run's elapsed time from the last snapshot
-  // The machine kind the device choice last followed: only a change of kind moves the choice.
-  std::optional<core::MachineKind> m_followedKind;
+  // The machine the device choice last followed: only a change of kind (or to or from the robot cell) moves
+  // the choice.
+  struct MachineFollowed {
+    core::MachineKind kind = core::MachineKind::ThreeAxis;
+    bool robotCell = false;
+    bool operator!=(const MachineFollowed& other) const { return kind != other.kind || robotCell != other.robotCell; }
+  };
+  std::optional<MachineFollowed> m_followedMachine;
   bool m_linkUsesProfile = false;  // the open link's limits are the profile's (not defaults)
   hardware::PrintRunOptions m_runOptions;
   // The last run that was aborted: its job's plan and the first step it did not finish.

@@ -89,6 +89,12 @@ void StudioDocument::setMachine(const core::MachineSpec& machine) {
   emit machineChanged();
 }
 
+void StudioDocument::setMachineIsRobotCell(bool robotCell) {
+  if (robotCell == m_machineIsRobotCell) return;
+  m_machineIsRobotCell = robotCell;
+  emit machineChanged();
+}
+
 void StudioDocument::setPlan(SearchRun run) {
   if (!run.plan) return;
   m_plan = std::move(run);

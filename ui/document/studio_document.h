@@ -64,6 +64,13 @@ class StudioDocument : public QObject {
   // the plan keeps the machine it was made with (plan()->machine).
   [[nodiscard]] const core::MachineSpec& machine() const { return m_machine; }
   void setMachine(const core::MachineSpec& machine);
+  // The machine is the robot cell ("robot arm under a fixed extruder", the Machine tab's choice): a 5-DOF
+  // machine for the search whose device is the cell (cell()), not an arm tilting the platform under a printer.
+  // Only a 5-DOF machine can be the cell. A change emits machineChanged.
+  [[nodiscard]] bool machineIsRobotCell() const {
+    return m_machineIsRobotCell && m_machine.kind == core::MachineKind::TiltRotate;
+  }
+  void setMachineIsRobotCell(bool robotCell);
 
   // The robot cell (docs/robot-cell.md): the arm carrying the platform under the fixed extruder, for the machine
   // "robot arm under a fixed extruder" (nullopt: none). The Machine tab edits it, the cell view poses the job
@@ -135,6 +142,7 @@ class StudioDocument : public QObject {
   core::Vec3 m_up = core::Vec3::UnitZ();
   std::optional<UpPose> m_upPose;
   core::MachineSpec m_machine;
+  bool m_machineIsRobotCell = false;
   std::optional<robot::Cell> m_cell;
   std::optional<SearchRun> m_plan;
   QUndoStack* m_editHistory;

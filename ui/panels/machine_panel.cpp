@@ -134,6 +134,7 @@ MachinePanel::MachinePanel(StudioDocument* document, QWidget* parent) : QWidget(
 void MachinePanel::sendToDocument() {
   if (m_showing) return;
   m_sending = true;
+  m_document->setMachineIsRobotCell(isRobotCell());  // the Hardware dock's device follows it
   m_document->setMachine(machineSpec(m_document->up()));
   m_sending = false;
 }

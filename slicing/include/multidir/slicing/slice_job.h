@@ -84,7 +84,8 @@ core::Result<std::vector<TurnPlan>> planTurns(const core::PrintJob& job, const P
 // job's files are moved into it, print-job.json last, and the other files stay. First every step's
 // supports are clipped to its base plane and the part is placed where it fits (placeOnPlatform, which refuses
 // a part that cannot fit before any slicer runs); the job written and sliced is the placed one. The steps and
-// the fixed-direction print are then sliced side by side, one slicer per core, and checked in printing order:
+// the fixed-direction print are then sliced side by side, one slicer per usable CPU, each confined to its CPU
+// and one thread (side_by_side.h: the same G-code on every run), and checked in printing order:
 // each step after the first is primed by what the previous one left drawn back (plus retract_restart_extra).
 // Progress: one share per step and one for the fixed-direction print, each filled as its slicer goes (their
 // sum), one for stitching; the phase names the runs under way. Cancellation reaches every running slicer
