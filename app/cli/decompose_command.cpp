@@ -78,7 +78,7 @@ const char* const kDecomposeHelp =
     "  --polish-effort E    how finely polishing goes, 1 to 6: its steps halve E - 1 times; each level costs\n"
     "                       about as much as the one before (default: 1)\n"
     "  --polish-finalists   also polish the search's best plan for every other number of cuts and keep the\n"
-    "                       least J_G after polishing: steadier plans, 3 to 5 times the time (default: off)\n"
+    "                       least J_G after polishing: steadier plans, up to 2 times the time (default: off)\n"
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
     "  --no-supports        do not generate supports\n"
     "  --support-spacing MM overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"

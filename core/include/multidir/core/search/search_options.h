@@ -82,7 +82,7 @@ struct SearchOptions {
   // Also polish the search's best plan for every other number of cuts (each without its unpaid planes) and
   // deliver the least J_G after polishing (docs/search.md, "Polishing the finalists"): which plan polishes best
   // is not the one that was best before polishing (the bunny's 254-normal lattice: 2.08 % delivered, 0.96 %
-  // from a finalist). Costs one polish per finalist: 3 to 5 times the CPU of the default on the shared models.
+  // from a finalist). Costs one polish per finalist: 1.2 to 1.8 times the CPU of the default on the shared models.
   bool polishFinalists = false;
 };
 
