@@ -6,6 +6,7 @@
 //                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--w W] [--scales S] [--refine ROUNDS]
 //                         [--min-region-height MM] [--min-plane-gain PERCENT] [--pose auto] [--poses N]
 //                         [--subdivide K] [--proxy-faces N] [--normals N] [--polish 0|1] [--polish-effort E]
+//                         [--polish-finalists 0|1]
 // --subdivide K: each model subdivided K times first (4^K as many faces, the same surface): the scaling runs.
 // --proxy-faces N: search a decimated proxy of models above N faces (0: always the full mesh).
 // --polish 0: the search's plan unpolished (--no-polish); a polished plan gets a line "polish:" below its row with
@@ -92,6 +93,7 @@ int main(int argc, char** argv) {
     else if (flag == "--proxy-faces") options.proxyFaces = std::atoi(value.c_str());
     else if (flag == "--polish") options.polish = value != "0";
     else if (flag == "--polish-effort") options.polishEffort = std::atoi(value.c_str());
+    else if (flag == "--polish-finalists") options.polishFinalists = value == "1";
     else if (flag == "--pose") autoPose = value == "auto";
     else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
     else if (flag == "--pose-searches") poseOptions.fullSearches = std::atoi(value.c_str());

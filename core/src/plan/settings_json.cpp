@@ -54,6 +54,7 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"proxyFaces", o.proxyFaces},
           {"polish", o.polish},
           {"polishEffort", o.polishEffort},
+          {"polishFinalists", o.polishFinalists},
           {"platformToleranceMm", o.platformToleranceMm},
           {"threads", o.threads}};
 }
@@ -130,6 +131,8 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   const auto polish = field.optional("polish");
   o.polish = polish ? polish->boolean() : false;
   if (const auto effort = field.optional("polishEffort")) o.polishEffort = smallInteger(*effort);
+  // Plans saved before this option polished the search's own plan only.
+  if (const auto finalists = field.optional("polishFinalists")) o.polishFinalists = finalists->boolean();
   o.platformToleranceMm = field["platformToleranceMm"].number();
   o.threads = smallInteger(field["threads"]);
   if (Status valid = validate(o); !valid) field.failInside(valid.error().message, ErrorCode::InvalidParameter);

@@ -99,11 +99,9 @@ Result<Decomposition> searchedAndPolished(const TriangleMesh& model, const Machi
   if (needsProxy(model, options))
     return runProxyDecomposition(
         model, machine, options, job, [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
-          return Result<Decomposition>(polishedIfAsked(
-              mesh, machine, o, runDecomposition(mesh, machine, o, job, progress, p), job, progress, p));
+          return Result<Decomposition>(searchedPolishedChoice(mesh, machine, o, job, progress, p));
         });
-  return polishedIfAsked(model, machine, options, runDecomposition(model, machine, options, job, progress), job,
-                         progress);
+  return searchedPolishedChoice(model, machine, options, job, progress);
 }
 
 Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine,

@@ -117,10 +117,11 @@ Status detail::checkSearchInputs(const TriangleMesh& model, const MachineSpec& m
 
 Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                JobContext& job, const SearchProgressSink& progress,
-                               const std::optional<PlatformRegion>& platform, std::vector<Decomposition>* finalists) {
+                               const std::optional<PlatformRegion>& platform, std::vector<Decomposition>* finalists,
+                               std::vector<Decomposition>* polishStarts) {
   const auto start = std::chrono::steady_clock::now();
   SearchEngine engine(model, machine, options, job, platform);
-  BestPlan best(finalists != nullptr);
+  BestPlan best(finalists != nullptr || polishStarts != nullptr);
   int levels = 0;
   bool cancelled = false;
   BeamWork scaleWork;
@@ -159,6 +160,23 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
         taken.push_back(std::move(planes));
         finalists->push_back(engine.planOf(*node));
       }
+    }
+  }
+  if (polishStarts && !cancelled) {
+    std::vector<std::vector<Plane>> taken{planesOf(chosen)};
+    for (const NodePtr& finalist : best.finalists()) {
+      if (!finalist || job.isCancelled()) continue;
+      const NodePtr paid = withoutUnpaidPlanes(engine, finalist, options);
+      std::vector<Plane> planes = planesOf(paid);
+      const bool seen = std::any_of(taken.begin(), taken.end(), [&](const std::vector<Plane>& other) {
+        return other.size() == planes.size() &&
+               std::equal(other.begin(), other.end(), planes.begin(), [](const Plane& a, const Plane& b) {
+                 return a.normal == b.normal && a.offset == b.offset;
+               });
+      });
+      if (seen) continue;
+      taken.push_back(std::move(planes));
+      polishStarts->push_back(engine.planOf(*paid));
     }
   }
   plan.cancelled = cancelled;

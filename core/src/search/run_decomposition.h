@@ -20,10 +20,13 @@ Status checkSearchInputs(const TriangleMesh& model, const MachineSpec& machine, 
 // `platform`: as for SearchEngine. `finalists`, when given (the apart machine's priced choice), receives the
 // best plan the search found for every number of cuts, each as found and without its unpaid planes,
 // unpolished, in the order of the cuts the search made, none equal to the plan returned or to another.
+// `polishStarts`, when given (options.polishFinalists), receives the same finalists without their unpaid planes
+// only, none equal to the plan returned or to another, while the plan returned is the one returned without it.
 Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                JobContext& job, const SearchProgressSink& progress,
                                const std::optional<PlatformRegion>& platform = std::nullopt,
-                               std::vector<Decomposition>* finalists = nullptr);
+                               std::vector<Decomposition>* finalists = nullptr,
+                               std::vector<Decomposition>* polishStarts = nullptr);
 
 // The same on a decimated proxy of a huge model (options.proxyFaces), its planes then applied to the full mesh
 // with their offsets polished there; every number of the plan is the full mesh's. Falls back to the full
@@ -76,6 +79,15 @@ Result<Decomposition> polishDecomposition(const TriangleMesh& model, const Machi
 
 // The plan polished when options.polish is set and the search was not cancelled; else (or when polishing
 // refuses the plan, which a note then says) the plan as it is.
+// The search's plan polished as polishedIfAsked does; with options.polishFinalists (and polishing on), also each
+// finalist of the search without its unpaid planes, one after the other, and the least J_G after polishing
+// delivered (ties: the earlier, the search's own plan first). Only the first polish reports progress: the
+// others start above the J_G already reported. The same plan for any thread count.
+Decomposition searchedPolishedChoice(const TriangleMesh& model, const MachineSpec& machine,
+                                     const SearchOptions& options, JobContext& job,
+                                     const SearchProgressSink& progress,
+                                     const std::optional<PlatformRegion>& platform = std::nullopt);
+
 Decomposition polishedIfAsked(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                              Decomposition plan, JobContext& job, const SearchProgressSink& progress,
                              const std::optional<PlatformRegion>& platform = std::nullopt);
