@@ -32,6 +32,9 @@ struct Group {
   std::size_t begin = 0, end = 0;  // line indices [begin, end)
   std::size_t bytes = 0;
   bool idleStart = false;  // a part may start here: a travel movel or a re-orientation, the extruder stopped
+  // ... and the move before was idle too (a travel's lift, or its move across): the part before ends with the
+  // nozzle off the printed surface, where it waits, hot, while the next part is sent and compiled.
+  bool offPartStart = false;
   int movel = 0;           // the register's number of its movel (0: a movej)
   // The step's state where the group begins (trimmed lines, "" when not set yet).
   std::string tcp, setPoint, fan;
@@ -76,6 +79,7 @@ core::Result<Parsed> parse(const std::string& script, int step) {
   std::string tcp, setPoint, fan;
   double rate = 0.0;
   double previousBlend = 0.0;  // the blend radius of the move before
+  double previousRate = -1.0;  // the extruder's rate through the move before (-1: no move before)
   const auto track = [&](const std::string& t) {
     if (startsWith(t, "set_tcp(")) tcp = t;
     if (startsWith(t, "set_standard_analog_out(1,")) setPoint = t;
@@ -95,6 +99,8 @@ core::Result<Parsed> parse(const std::string& script, int step) {
     if (movej) group.movel = 0;
     // Idle: the extruder stopped through this move, and the move before ends at rest (no blend into this one).
     group.idleStart = !p.groups.empty() && rate == 0.0 && previousBlend == 0.0;
+    group.offPartStart = group.idleStart && previousRate == 0.0;
+    previousRate = rate;
     const std::size_t r = t.find(", r=");
     previousBlend = movel && r != std::string::npos ? numberAfter(t.substr(r), ", r=") : 0.0;
     group.end = i + 1;
@@ -150,11 +156,13 @@ core::Result<std::vector<ProgramPart>> splitStepProgram(const std::string& scrip
   }
   const std::size_t headerBytes = bytesOf(p.lines, 0, p.headerEnd);
   const std::size_t footerBytes = bytesOf(p.lines, p.footerBegin, p.lines.size());
-  // Greedy: each part takes as many groups as fit and ends before the last idle group that still fits.
+  // Greedy: each part takes as many groups as fit and ends before the last idle group that still fits; before
+  // the last one that leaves the nozzle off the part (after a travel's lift) if that keeps the part at least
+  // half full, so that the parts do not grow in number for it.
   std::vector<std::size_t> starts{0};
   for (std::size_t s = 0;;) {
     std::size_t size = s == 0 ? headerBytes : continuation(p, p.groups[s], step, 1, 1).size();
-    std::optional<std::size_t> cut;
+    std::optional<std::size_t> cut, offPartCut;
     bool finished = false;
     std::size_t g = s;
     for (; g < p.groups.size(); ++g) {
@@ -165,8 +173,10 @@ core::Result<std::vector<ProgramPart>> splitStepProgram(const std::string& scrip
       }
       if (size + kPartClosing.size() > budget) break;
       if (p.groups[g + 1].idleStart) cut = g + 1;
+      if (p.groups[g + 1].offPartStart && 2 * size >= budget) offPartCut = g + 1;
     }
     if (finished) break;
+    if (offPartCut) cut = offPartCut;
     if (!cut) {
       int first = 0;
       movelsIn(s, s + 1, first);

@@ -21,7 +21,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string gcodeOfSquares(bool travels) {
+// travels: each square reached by a travel (else by an extrusion); hops: each travel lifts the nozzle 0.4 mm,
+// moves across and lowers it again, as PrusaSlicer's retract_lift writes it.
+std::string gcodeOfSquares(bool travels, bool hops = false) {
   std::ostringstream g;
   g.precision(3);
   g << std::fixed << "G90\nM82\nG92 E0\nM104 S215\n";
@@ -33,7 +35,9 @@ std::string gcodeOfSquares(bool travels) {
     for (int i = 0; i < 9; ++i) {
       const double x = -10.0 + 10.0 * (i % 3), y = -10.0 + 10.0 * (i / 3);
       if (travels || (layer == 1 && i == 0)) {
+        if (hops) g << "G1 Z" << 0.4 * layer + 0.4 << " F6000\n";
         g << "G1 X" << x - 2.5 << " Y" << y - 2.5 << " F6000\n";
+        if (hops) g << "G1 Z" << 0.4 * layer << " F6000\n";
       } else {
         e += 0.5;
         g << "G1 X" << x - 2.5 << " Y" << y - 2.5 << " E" << e << " F1200\n";
@@ -54,12 +58,12 @@ Cell paperCell() {
   return cell.value();
 }
 
-std::string convertedSquares(bool travels) {
+std::string convertedSquares(bool travels, bool hops = false) {
   StepInput input;
   input.step = 2;
   input.stepCount = 3;
   input.gcodeFile = "step-02.gcode";
-  input.gcode = gcodeOfSquares(travels);
+  input.gcode = gcodeOfSquares(travels, hops);
   for (int i = 0; i < 72; ++i) {
     const double a = 2 * kPi * i / 72;
     input.carried.push_back({Eigen::Vector3d(30.0 * std::cos(a), 30.0 * std::sin(a), 0.0), CarriedPoint::Kind::Platform});
@@ -158,6 +162,20 @@ TEST(ProgramParts, PartsAreCutOnlyWhereTheExtruderIsIdle) {
   EXPECT_EQ(joinedRates, ratesAtMovels(script));
 }
 
+// Where the travels lift the nozzle, a part ends after a travel's lift, not before it: the nozzle waits off the
+// printed surface (hot, for as long as the next part takes to send and compile), not resting on it.
+TEST(ProgramParts, APartEndsAfterATravelsLiftSoTheNozzleWaitsOffThePrintedSurface) {
+  const std::string script = convertedSquares(true, true);
+  const auto parts = splitStepProgram(script, 2, kBound);
+  ASSERT_TRUE(parts.ok()) << parts.error().describe();
+  ASSERT_GE(parts->size(), 3u);
+  for (std::size_t k = 0; k + 1 < parts->size(); ++k) {
+    const std::vector<double> rates = ratesAtMovels((*parts)[k].text);
+    ASSERT_FALSE(rates.empty());
+    EXPECT_EQ(rates.back(), 0.0) << "part " << k + 1 << " ends on an extrusion, its nozzle on the part";
+  }
+}
+
 // Every later part sets the tool, the extruder (stopped), the nozzle's set point and the fan as the step has
 // them where the part starts.
 TEST(ProgramParts, EachLaterPartStartsWithTheStepsToolFanAndSetPointThere) {
@@ -169,13 +187,15 @@ TEST(ProgramParts, EachLaterPartStartsWithTheStepsToolFanAndSetPointThere) {
   for (std::size_t k = 0; k < parts->size(); ++k) {
     const std::vector<std::string> lines = linesOf((*parts)[k].text);
     if (k > 0) {
+      // The first of each in the part: its opening's (a change the G-code makes where the part starts, as at a
+      // layer's M104, follows it).
       std::string partTcp, partSetPoint, partFan;
       for (std::size_t i = 1; i < lines.size() && !isMove(lines[i]) &&
                               lines[i].rfind("  write_output_integer_register", 0) != 0;
            ++i) {
-        if (lines[i].rfind("  set_tcp(", 0) == 0) partTcp = lines[i];
-        if (lines[i].rfind("  set_standard_analog_out(1, ", 0) == 0) partSetPoint = lines[i];
-        if (lines[i].rfind("  set_standard_digital_out(0, ", 0) == 0) partFan = lines[i];
+        if (partTcp.empty() && lines[i].rfind("  set_tcp(", 0) == 0) partTcp = lines[i];
+        if (partSetPoint.empty() && lines[i].rfind("  set_standard_analog_out(1, ", 0) == 0) partSetPoint = lines[i];
+        if (partFan.empty() && lines[i].rfind("  set_standard_digital_out(0, ", 0) == 0) partFan = lines[i];
       }
       EXPECT_EQ(partTcp, tcp) << "part " << k + 1;
       EXPECT_EQ(partSetPoint, setPoint) << "part " << k + 1;
