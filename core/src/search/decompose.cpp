@@ -34,6 +34,17 @@ std::vector<Plane> planesOf(const NodePtr& node) {
   return planes;
 }
 
+// Whether `planes` is one of `taken` (the same planes, bit for bit, in the same order); if not, it is added.
+bool takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes) {
+  const bool seen = std::any_of(taken.begin(), taken.end(), [&](const std::vector<Plane>& other) {
+    return other.size() == planes.size() &&
+           std::equal(other.begin(), other.end(), planes.begin(),
+                      [](const Plane& a, const Plane& b) { return a.normal == b.normal && a.offset == b.offset; });
+  });
+  if (!seen) taken.push_back(std::move(planes));
+  return !seen;
+}
+
 // The nodes of a node's chain, the root first.
 std::vector<NodePtr> chainOf(const NodePtr& node) {
   std::vector<NodePtr> chain;
@@ -148,18 +159,8 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
     // above the bound the choice keeps.
     for (const NodePtr& finalist : best.finalists()) {
       if (!finalist || job.isCancelled()) continue;
-      for (const NodePtr& node : {finalist, withoutUnpaidPlanes(engine, finalist, options)}) {
-        std::vector<Plane> planes = planesOf(node);
-        const bool seen = std::any_of(taken.begin(), taken.end(), [&](const std::vector<Plane>& other) {
-          return other.size() == planes.size() &&
-                 std::equal(other.begin(), other.end(), planes.begin(), [](const Plane& a, const Plane& b) {
-                   return a.normal == b.normal && a.offset == b.offset;
-                 });
-        });
-        if (seen) continue;
-        taken.push_back(std::move(planes));
-        finalists->push_back(engine.planOf(*node));
-      }
+      for (const NodePtr& node : {finalist, withoutUnpaidPlanes(engine, finalist, options)})
+        if (takeIfNew(taken, planesOf(node))) finalists->push_back(engine.planOf(*node));
     }
   }
   if (polishStarts && !cancelled) {
@@ -167,16 +168,7 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
     for (const NodePtr& finalist : best.finalists()) {
       if (!finalist || job.isCancelled()) continue;
       const NodePtr paid = withoutUnpaidPlanes(engine, finalist, options);
-      std::vector<Plane> planes = planesOf(paid);
-      const bool seen = std::any_of(taken.begin(), taken.end(), [&](const std::vector<Plane>& other) {
-        return other.size() == planes.size() &&
-               std::equal(other.begin(), other.end(), planes.begin(), [](const Plane& a, const Plane& b) {
-                 return a.normal == b.normal && a.offset == b.offset;
-               });
-      });
-      if (seen) continue;
-      taken.push_back(std::move(planes));
-      polishStarts->push_back(engine.planOf(*paid));
+      if (takeIfNew(taken, planesOf(paid))) polishStarts->push_back(engine.planOf(*paid));
     }
   }
   plan.cancelled = cancelled;
