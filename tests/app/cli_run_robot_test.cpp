@@ -62,6 +62,37 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
   out << text;
 }
 
+// A one-step job of two paths of one layer at one height that cross (docs/robot-cell.md, "Pause and resume"):
+// movel 1 to A, 2 from A through C to B (the first path), 3 to D, 4 from D to C (the second path, up to the
+// crossing), a sleep of `sleepSeconds` holding the arm at C, 5 on from C to E. `stepFields` follow the step's
+// program in robot-job.json. Returns the sleep's line in the program.
+int writeCrossingPathsJob(const std::string& dir, double sleepSeconds, const std::string& stepFields) {
+  const Eigen::Vector3d a(-10, 0, 0), b(10, 0, 0), c(0, 0, 0), d(0, -10, 0), e(0, 10, 0);
+  std::string text = "def multidir_step_01():\n  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
+  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\n";
+  text += "  movej([0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0], a=1.4, v=1.05)\n";
+  text += "  textmsg(\"multidir step 1 layer 1\")\n";
+  const auto movel = [&](int k, const Eigen::Vector3d& to, double analog) {
+    text += "  set_standard_analog_out(0, " + std::to_string(analog) + ")\n";
+    text += "  write_output_integer_register(24, " + std::to_string(k) + ")\n";
+    text += "  movel(" + urPose(tcpAt(to)) + ", a=1.2, v=0.01, r=0.0)\n";
+  };
+  movel(1, a, 0.0);
+  movel(2, b, 0.25);
+  movel(3, d, 0.0);
+  movel(4, c, 0.25);
+  text += "  sleep(" + std::to_string(sleepSeconds) + ")\n";
+  movel(5, e, 0.25);
+  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\nend\n";
+  writeFile(std::filesystem::path(dir) / "step-01.script", text);
+  writeFile(std::filesystem::path(dir) / "robot-job.json",
+            R"({ "format": "multidir-robot-job", "version": 1, "robot": "ur5", "cell": "cell.json",
+  "steps": [ { "step": 1, "program": "step-01.script")" + stepFields + " } ] }");
+  writeFile(std::filesystem::path(dir) / "cell.json",
+            multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json"));
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(text.find("sleep(")), '\n'));
+}
+
 // A robot job folder of two steps; returns the last corner of each step.
 std::vector<Eigen::Vector3d> writeRobotJob(const std::string& dir) {
   const std::vector<Eigen::Vector3d> first{{20, 0, 0}, {20, 20, 0}, {0, 20, 0}};
@@ -652,33 +683,10 @@ TEST(CliRunRobot, CtrlCWhilePausedStopsTheRunOnceTheRobotConfirmsTheStop) {
 // resume").
 TEST(CliRunRobot, APauseWhereTwoPathsOfALayerCrossNamesTheMoveTheRobotRunsNotTheFirstThatPassesThere) {
   const std::string dir = multidir::test::scratchDirectory("CliRunRobot.PauseOnCrossingPaths");
-  // Movel 1 to A, 2 from A through C to B (the first path), 3 to D, 4 from D to C (the second path, up to the
-  // crossing), a sleep, 5 on from C to E: both paths at the layer's height, crossing at C.
-  const Eigen::Vector3d a(-10, 0, 0), b(10, 0, 0), c(0, 0, 0), d(0, -10, 0), e(0, 10, 0);
-  std::string text = "def multidir_step_01():\n  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
-  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\n";
-  text += "  movej([0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0], a=1.4, v=1.05)\n";
-  text += "  textmsg(\"multidir step 1 layer 1\")\n";
-  const auto movel = [&](int k, const Eigen::Vector3d& to, double analog) {
-    text += "  set_standard_analog_out(0, " + std::to_string(analog) + ")\n";
-    text += "  write_output_integer_register(24, " + std::to_string(k) + ")\n";
-    text += "  movel(" + urPose(tcpAt(to)) + ", a=1.2, v=0.01, r=0.0)\n";
-  };
-  movel(1, a, 0.0);
-  movel(2, b, 0.25);
-  movel(3, d, 0.0);
-  movel(4, c, 0.25);
-  text += "  sleep(60.0)\n";
-  movel(5, e, 0.25);
-  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\nend\n";
-  writeFile(std::filesystem::path(dir) / "step-01.script", text);
-  writeFile(std::filesystem::path(dir) / "robot-job.json",
-            R"({ "format": "multidir-robot-job", "version": 1, "robot": "ur5", "cell": "cell.json",
-  "steps": [ { "step": 1, "program": "step-01.script", "seconds": 70.0, "filamentMm": 12.0, "moves": 5,
-               "reachMarginMm": 40.0, "slowestJoint": 5, "slowdowns": 0 } ] })");
-  writeFile(std::filesystem::path(dir) / "cell.json",
-            multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json"));
-  const int sleepLine = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(text.find("sleep(")), '\n'));
+  const int sleepLine = writeCrossingPathsJob(dir, 60.0,
+                                              R"(, "seconds": 70.0, "filamentMm": 12.0, "moves": 5, )"
+                                              R"("reachMarginMm": 40.0, "slowestJoint": 5, "slowdowns": 0)");
+  const Eigen::Vector3d d(0, -10, 0), e(0, 10, 0);
   hw::UrSimulatorOptions options;
   options.speed = 10.0;
   options.initialJoints = {0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0};
@@ -715,29 +723,7 @@ TEST(CliRunRobot, APauseWhereTwoPathsOfALayerCrossNamesTheMoveTheRobotRunsNotThe
 // movels the progress names only go forward.
 TEST(CliRunRobot, TheProgressAtCrossingPathsNamesTheMoveTheRobotRuns) {
   const std::string dir = multidir::test::scratchDirectory("CliRunRobot.ProgressOnCrossingPaths");
-  const Eigen::Vector3d a(-10, 0, 0), b(10, 0, 0), c(0, 0, 0), d(0, -10, 0), e(0, 10, 0);
-  std::string text = "def multidir_step_01():\n  set_tcp(p[0.0, 0.0, 0.05, 0.0, 0.0, 0.0])\n";
-  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\n";
-  text += "  movej([0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0], a=1.4, v=1.05)\n";
-  text += "  textmsg(\"multidir step 1 layer 1\")\n";
-  const auto movel = [&](int k, const Eigen::Vector3d& to, double analog) {
-    text += "  set_standard_analog_out(0, " + std::to_string(analog) + ")\n";
-    text += "  write_output_integer_register(24, " + std::to_string(k) + ")\n";
-    text += "  movel(" + urPose(tcpAt(to)) + ", a=1.2, v=0.01, r=0.0)\n";
-  };
-  movel(1, a, 0.0);
-  movel(2, b, 0.25);
-  movel(3, d, 0.0);
-  movel(4, c, 0.25);
-  text += "  sleep(40.0)\n";
-  movel(5, e, 0.25);
-  text += "  set_standard_analog_out(0, 0.0000)\n  write_output_integer_register(24, 0)\nend\n";
-  writeFile(std::filesystem::path(dir) / "step-01.script", text);
-  writeFile(std::filesystem::path(dir) / "robot-job.json",
-            R"({ "format": "multidir-robot-job", "version": 1, "robot": "ur5", "cell": "cell.json",
-  "steps": [ { "step": 1, "program": "step-01.script", "seconds": 50.0 } ] })");
-  writeFile(std::filesystem::path(dir) / "cell.json",
-            multidir::test::readAll(std::string(MULTIDIR_SOURCE_DIR) + "/resources/cells/ur5-fixed-extruder.json"));
+  writeCrossingPathsJob(dir, 40.0, R"(, "seconds": 50.0)");
   hw::UrSimulatorOptions options;
   options.speed = 10.0;
   options.initialJoints = {0.0, -1.2, 1.5, -1.9, -1.5707963267948966, 0.0};
