@@ -786,6 +786,11 @@
         <translation>Roboterarm (5-DOF)</translation>
     </message>
     <message>
+        <location filename="../ui/device/connection_form.cpp" line="40"/>
+        <source>Robot cell (5-DOF, fixed extruder)</source>
+        <translation>Roboterzelle (5-DOF, fester Extruder)</translation>
+    </message>
+    <message>
         <location filename="../ui/device/connection_form.cpp" line="39"/>
         <source>Robot cell (5-DOF, Universal Robots: the arm carries the part under a fixed extruder)</source>
         <translation>Roboterzelle (5-DOF, Universal Robots: der Arm führt das Teil unter einem festen Extruder)</translation>

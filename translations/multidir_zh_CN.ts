@@ -783,6 +783,11 @@
         <translation>机械臂（5 自由度）</translation>
     </message>
     <message>
+        <location filename="../ui/device/connection_form.cpp" line="40"/>
+        <source>Robot cell (5-DOF, fixed extruder)</source>
+        <translation>机器人单元（5 自由度，固定挤出头）</translation>
+    </message>
+    <message>
         <location filename="../ui/device/connection_form.cpp" line="39"/>
         <source>Robot cell (5-DOF, Universal Robots: the arm carries the part under a fixed extruder)</source>
         <translation>机器人单元（5 自由度，Universal Robots：机械臂携带零件在固定挤出头下移动）</translation>

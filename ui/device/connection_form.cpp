@@ -36,8 +36,11 @@ ConnectionForm::ConnectionForm(QWidget* parent) : QWidget(parent) {
   m_kind->setObjectName(QStringLiteral("deviceKind"));
   m_kind->addItem(tr("Rotary platform (4-DOF)"), static_cast<int>(DeviceKind::RotaryPlatform));
   m_kind->addItem(tr("Robot arm (5-DOF)"), static_cast<int>(DeviceKind::RobotArm));
-  m_kind->addItem(tr("Robot cell (5-DOF, Universal Robots: the arm carries the part under a fixed extruder)"),
-                  static_cast<int>(DeviceKind::RobotCell));
+  // Short in the list, so that the dock keeps its width on a small screen; the whole description as its tip.
+  m_kind->addItem(tr("Robot cell (5-DOF, fixed extruder)"), static_cast<int>(DeviceKind::RobotCell));
+  m_kind->setItemData(m_kind->count() - 1,
+                      tr("Robot cell (5-DOF, Universal Robots: the arm carries the part under a fixed extruder)"),
+                      Qt::ToolTipRole);
 
   m_transport = new QComboBox(this);
   m_transport->setObjectName(QStringLiteral("transport"));
