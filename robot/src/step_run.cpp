@@ -124,12 +124,6 @@ std::string fixedText(double v, int decimals) {
   return s;
 }
 
-double trapezoidSeconds(double distance, double speed, double accel) {
-  if (distance <= 0.0) return 0.0;
-  if (distance >= speed * speed / accel) return distance / speed + speed / accel;
-  return 2.0 * std::sqrt(distance / accel);
-}
-
 Solve solveOnBranch(const ArmModel& arm, const Eigen::Isometry3d& flange, int branch, const Joints& near,
                     Joints& out) {
   std::array<IkSolution, 8> solutions{};

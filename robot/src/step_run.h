@@ -11,6 +11,7 @@
 
 #include "gcode_events.h"
 #include "multidir/robot/arm_links.h"
+#include "multidir/robot/move_time.h"
 #include "multidir/slicing/gcode_program.h"
 #include "step_converter.h"
 
@@ -160,6 +161,5 @@ Solve solveOnBranch(const ArmModel& arm, const Eigen::Isometry3d& flange, int br
 
 // Shared with the program writer.
 std::string fixedText(double v, int decimals);
-double trapezoidSeconds(double distance, double speed, double accel);
 
 }  // namespace multidir::robot::detail

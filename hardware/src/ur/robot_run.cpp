@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "multidir/robot/cell.h"
+#include "multidir/robot/move_time.h"
 #include "multidir/robot/movel_register.h"
 
 namespace multidir::hardware {
@@ -167,8 +168,7 @@ StepMovels readStepMovels(const RobotJobStep& step, const PauseGeometry& geometr
       const double a = movelArgument(line, "a=") * 1000.0, v = movelArgument(line, "v=") * 1000.0;
       const double d = std::sqrt(std::pow(s.ends[i][0] - from[0], 2) + std::pow(s.ends[i][1] - from[1], 2) +
                                  std::pow(s.ends[i][2] - from[2], 2));
-      double t = 0.0;
-      if (a > 0.0 && v > 0.0) t = d <= v * v / a ? 2.0 * std::sqrt(d / a) : d / v + v / a;
+      const double t = a > 0.0 && v > 0.0 ? robot::trapezoidSeconds(d, v, a) : 0.0;
       m.secondsBefore.push_back(m.secondsBefore.back() + t);
       from = s.ends[i];
     }
