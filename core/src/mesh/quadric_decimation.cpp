@@ -239,8 +239,8 @@ class Decimator {
 
  private:
   // Labels every vertex with its slab across the longest axis of the bounding box, twice: m_slabs[0] in
-  // slabs of about equal vertex counts (none for a mesh of one slab: its passes stay on one thread), m_slabs[1] shifted by half a slab (one more slab), so that
-  // edges left at a border of the first go in the second.
+  // slabs of about equal vertex counts, m_slabs[1] shifted by half a slab (one more slab), so that edges left
+  // at a border of the first go in the second. None for a mesh of one slab: its passes stay on one thread.
   void assignSlabs() {
     const std::size_t vertexCount = m_points.size();
     const std::size_t slabCount = std::clamp<std::size_t>(vertexCount / kSlabVertices, 1, kMaxSlabs);
