@@ -289,6 +289,12 @@ class Decimator {
       for (const std::int32_t i : inSlab[static_cast<std::size_t>(slab)]) {
         if (taken[static_cast<std::size_t>(slab)] == perSlab) break;
         const Candidate& candidate = candidates[static_cast<std::size_t>(i)];
+        // Both ends are in this slab, so only this thread moves them in this round; a moved end stays moved
+        // for the pass, and the one-thread rest would skip the edge as well.
+        if (m_touched[candidate.a] || m_touched[candidate.b]) {
+          decided[static_cast<std::size_t>(i)] = 1;
+          continue;
+        }
         bool inside = true;
         const auto inThisSlab = [&](std::int32_t f) {
           for (const std::int32_t v : m_triangles[f]) inside = inside && slabs[v] == slab;
@@ -297,7 +303,6 @@ class Decimator {
         forFacesAround(candidate.b, inThisSlab);
         if (!inside) continue;  // left to the next slabs or to the one-thread rest
         decided[static_cast<std::size_t>(i)] = 1;
-        if (m_touched[candidate.a] || m_touched[candidate.b]) continue;
         const Collapse c = planned(candidate.a, candidate.b);
         if (!allowed(c, firstMark + 2 * i)) continue;
         removedFaces[static_cast<std::size_t>(slab)] += collapse(c);
