@@ -3,7 +3,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -27,6 +29,13 @@ constexpr std::size_t kMinFaces = 100;
 // Faces or vertices per task of the parallel loops: each task writes its own slots, so the results do not
 // depend on the thread count, and a block is big enough that handing it out costs nothing.
 constexpr int kBlock = 8192;
+// The collapses of a pass run in slabs across the model's longest axis, at least this many vertices each
+// (fewer slabs, fewer edges near a border left to the one-thread rest of the pass), at most kMaxSlabs; the
+// count depends on the mesh alone, never on the threads.
+constexpr std::size_t kSlabVertices = 32768;
+constexpr int kMaxSlabs = 64;
+// The slabs' borders sit at quantiles of the vertices along the axis, found to one bin of this many.
+constexpr int kSlabBins = 4096;
 
 int blockCount(std::size_t items) { return static_cast<int>((items + kBlock - 1) / kBlock); }
 
@@ -154,6 +163,7 @@ class Decimator {
   }
 
   void run(std::size_t targetFaces, double freeToleranceMm, std::size_t fineBelowFaces, double fineToleranceMm) {
+    assignSlabs();
     const double freeMeanSquared = freeToleranceMm * freeToleranceMm;
     const double fineMeanSquared = std::min(fineToleranceMm, freeToleranceMm) * std::min(fineToleranceMm, freeToleranceMm);
     std::vector<Candidate> candidates;
@@ -182,18 +192,26 @@ class Decimator {
       parallelSort(candidates.begin(), shareEnd, cheaper, m_threads, kBlock);
       std::fill(m_touched.begin(), m_touched.end(), 0);
       std::fill(m_absorbed.begin(), m_absorbed.end(), -1);
-      // In order, on one thread: each collapse changes what the next ones may do. (Planning every edge of the
-      // share on threads beforehand was tried: less than half of them are still untouched when their turn
-      // comes, so it cost more than it saved.)
+      // Each collapse changes what the next ones may do, so the share is taken in order. (Planning every edge
+      // of the share on threads beforehand was tried: less than half of them are still untouched when their
+      // turn comes, so it cost more than it saved.) But a collapse reads and writes only the faces around its
+      // edge and their corners: the edges whose faces lie inside one slab go first, each slab in order on its
+      // own thread, as many as leave more than targetFaces faces (no tolerance applies above it), then the
+      // rest in order on one thread.
+      std::vector<char> decided(share, 0);
       std::size_t collapsed = 0;
+      const std::size_t floorFaces = std::max(targetFaces, kMinFaces);
+      for (const std::vector<std::uint8_t>& slabs : m_slabs)
+        if (m_faces > floorFaces + 2)  // each collapse removes the two faces of its edge
+          collapsed += collapseWithinSlabs(candidates, share, slabs, (m_faces - floorFaces - 1) / 2, decided);
       for (std::size_t i = 0; i < share && m_faces > kMinFaces; ++i) {
-        if (m_touched[candidates[i].a] || m_touched[candidates[i].b]) continue;
+        if (decided[i] || m_touched[candidates[i].a] || m_touched[candidates[i].b]) continue;
         const Collapse c = planned(candidates[i].a, candidates[i].b);
         if (m_faces <= targetFaces &&
             c.meanSquaredDistance > (m_faces <= fineBelowFaces ? fineMeanSquared : freeMeanSquared))
           continue;
-        if (!allowed(c)) continue;
-        collapse(c);
+        if (!allowed(c, nextMarks())) continue;
+        m_faces -= collapse(c);
         ++collapsed;
       }
       if (collapsed == 0) return;
@@ -220,6 +238,87 @@ class Decimator {
   }
 
  private:
+  // Labels every vertex with its slab across the longest axis of the bounding box, twice: m_slabs[0] in
+  // slabs of about equal vertex counts, m_slabs[1] shifted by half a slab (one more slab), so that edges left
+  // at a border of the first go in the second. None for a mesh of one slab: its passes stay on one thread.
+  void assignSlabs() {
+    const std::size_t vertexCount = m_points.size();
+    const std::size_t slabCount = std::clamp<std::size_t>(vertexCount / kSlabVertices, 1, kMaxSlabs);
+    m_slabs.clear();
+    if (slabCount == 1) return;
+    Vec3 low = m_points[0], high = m_points[0];
+    for (const Vec3& p : m_points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+    int axis = 0;
+    (high - low).maxCoeff(&axis);
+    const double span = high[axis] - low[axis];
+    const auto binOf = [&](const Vec3& p) {
+      return span > 0 ? std::min(kSlabBins - 1, static_cast<int>((p[axis] - low[axis]) / span * kSlabBins)) : 0;
+    };
+    std::vector<std::size_t> before(kSlabBins + 1, 0);  // vertices in the bins below each bin
+    for (const Vec3& p : m_points) ++before[static_cast<std::size_t>(binOf(p)) + 1];
+    for (int bin = 0; bin < kSlabBins; ++bin) before[bin + 1] += before[bin];
+    m_slabs.assign(2, std::vector<std::uint8_t>(vertexCount));
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+      const std::size_t halfSlab = before[static_cast<std::size_t>(binOf(m_points[v]))] * 2 * slabCount / vertexCount;
+      m_slabs[0][v] = static_cast<std::uint8_t>(halfSlab / 2);
+      m_slabs[1][v] = static_cast<std::uint8_t>((halfSlab + 1) / 2);
+    }
+  }
+
+  // Takes, in order, the share's undecided candidates whose faces (those around both ends) have every corner
+  // in one slab of `slabs`, each slab on its own thread: a collapse changes only those faces and its
+  // survivor, so no slab sees another's work, and each slab's result is the one of its own order, whatever
+  // the threads. At most maxCollapses in all (an equal part per slab, the rest left undecided): the caller
+  // sizes it so that the faces stay above the target, where no tolerance applies. Marks what it decided;
+  // returns the collapses taken.
+  std::size_t collapseWithinSlabs(const std::vector<Candidate>& candidates, std::size_t share,
+                                  const std::vector<std::uint8_t>& slabs, std::size_t maxCollapses,
+                                  std::vector<char>& decided) {
+    const int slabCount = 1 + *std::max_element(slabs.begin(), slabs.end());
+    const std::size_t perSlab = maxCollapses / static_cast<std::size_t>(slabCount);
+    if (perSlab == 0) return 0;
+    std::vector<std::vector<std::int32_t>> inSlab(static_cast<std::size_t>(slabCount));
+    for (std::size_t i = 0; i < share; ++i)
+      if (!decided[i] && slabs[candidates[i].a] == slabs[candidates[i].b])
+        inSlab[slabs[candidates[i].a]].push_back(static_cast<std::int32_t>(i));
+    // The link check's two stamps per candidate, from the candidate's index: unique whichever slab runs it.
+    const int firstMark = m_stampCount;
+    m_stampCount += 2 * static_cast<int>(share) + 2;
+    std::vector<std::size_t> removedFaces(static_cast<std::size_t>(slabCount), 0), taken(removedFaces);
+    detail::parallelFor(slabCount, m_threads, [&](int slab) {
+      for (const std::int32_t i : inSlab[static_cast<std::size_t>(slab)]) {
+        if (taken[static_cast<std::size_t>(slab)] == perSlab) break;
+        const Candidate& candidate = candidates[static_cast<std::size_t>(i)];
+        // Both ends are in this slab, so only this thread moves them in this round; a moved end stays moved
+        // for the pass, and the one-thread rest would skip the edge as well.
+        if (m_touched[candidate.a] || m_touched[candidate.b]) {
+          decided[static_cast<std::size_t>(i)] = 1;
+          continue;
+        }
+        bool inside = true;
+        const auto inThisSlab = [&](std::int32_t f) {
+          for (const std::int32_t v : m_triangles[f]) inside = inside && slabs[v] == slab;
+        };
+        forFacesAround(candidate.a, inThisSlab);
+        forFacesAround(candidate.b, inThisSlab);
+        if (!inside) continue;  // left to the next slabs or to the one-thread rest
+        decided[static_cast<std::size_t>(i)] = 1;
+        const Collapse c = planned(candidate.a, candidate.b);
+        if (!allowed(c, firstMark + 2 * i)) continue;
+        removedFaces[static_cast<std::size_t>(slab)] += collapse(c);
+        ++taken[static_cast<std::size_t>(slab)];
+      }
+    });
+    for (int slab = 0; slab < slabCount; ++slab) m_faces -= removedFaces[slab];
+    return std::accumulate(taken.begin(), taken.end(), std::size_t{0});
+  }
+
+  // Two fresh stamps for one link check on one thread.
+  int nextMarks() {
+    m_stampCount += 2;
+    return m_stampCount - 2;
+  }
+
   // Drops removed faces once they are most of the array, so that a pass costs what is left, not what was
   // loaded (a 640,000-face mesh takes some 20 passes to reach 10,000). Faces are known by index within a
   // pass only: the candidates name vertices.
@@ -331,13 +430,15 @@ class Decimator {
     return {a, b, target, q.weight > 0 ? cost / q.weight : INFINITY};
   }
 
-  bool allowed(const Collapse& c) {
+  // Whether the collapse keeps the rules of the header; `firstMark` and the next are stamps no other check
+  // uses.
+  bool allowed(const Collapse& c, int firstMark) {
     // Link condition: a and b share exactly the two vertices opposite their edge.
-    const int mark = ++m_stampCount;
+    const int mark = firstMark + 1;
     forFacesAround(c.a, [&](std::int32_t f) {
       for (std::int32_t v : m_triangles[f]) m_stamp[v] = mark;
     });
-    const int seen = ++m_stampCount;
+    const int seen = firstMark + 2;
     int common = 0;
     forFacesAround(c.b, [&](std::int32_t f) {
       for (std::int32_t v : m_triangles[f])
@@ -374,14 +475,16 @@ class Decimator {
     return ok;
   }
 
-  void collapse(const Collapse& c) {
+  // Collapses the edge; returns the faces it removed (the caller counts them: slabs run side by side).
+  std::size_t collapse(const Collapse& c) {
     m_points[c.a] = c.target;
     m_quadrics[c.a] += m_quadrics[c.b];
+    std::size_t removed = 0;
     forFacesAround(c.b, [&](std::int32_t f) {
       Triangle& t = m_triangles[f];
       if (t[0] == c.a || t[1] == c.a || t[2] == c.a) {
         m_removed[f] = 1;
-        --m_faces;
+        ++removed;
         return;
       }
       for (std::int32_t& v : t)
@@ -391,6 +494,7 @@ class Decimator {
     // Only edges at a changed (a moved and took b's quadric); every other edge keeps its score, and the live
     // face lists keep every later check of this pass exact.
     m_touched[c.a] = m_touched[c.b] = 1;
+    return removed;
   }
 
   std::vector<Vec3> m_points;
@@ -404,6 +508,7 @@ class Decimator {
   std::vector<std::int32_t> m_firstFace, m_faceOfVertex;
   std::size_t m_faces = 0;
   int m_threads = 1;
+  std::vector<std::vector<std::uint8_t>> m_slabs;  // each vertex's slab, in two shifted slabbings (none: one slab)
 };
 
 }  // namespace

@@ -26,7 +26,11 @@ namespace multidir::core::detail {
 //
 // The scoring of the edges, the vertex quadrics and the check run on `threads` threads
 // (0: all); each item writes its own slot and every sum keeps its order, so the result is the same, bit for
-// bit, for any thread count. The collapses themselves run in order on one thread.
+// bit, for any thread count. So do the collapses above targetFaces: a mesh of 65,536 vertices or more is cut
+// into slabs across its longest axis (one per 32,768 vertices, a number the mesh alone sets), and each slab
+// takes, in order on its own thread, the pass's edges whose faces lie inside it (a collapse touches nothing
+// else), then the same in slabs shifted by half a slab; the few edges still across a border go after, in
+// order on one thread, as do the collapses that would bring the faces to targetFaces or below.
 // Below fineBelowFaces faces, only collapses within fineToleranceMm (when smaller than freeToleranceMm).
 std::optional<TriangleMesh> quadricDecimation(const TriangleMesh& mesh, std::size_t targetFaces, double freeToleranceMm,
                                               int threads, std::size_t fineBelowFaces = 0, double fineToleranceMm = 0.0);
