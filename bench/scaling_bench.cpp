@@ -4,7 +4,7 @@
 //
 //   multidir_scaling_bench [--models kitten,bunny,fertility] [--levels 0,1,2,3] [--million] [--full]
 //                          [--noise MM] [--keep DIR] [--repeat R] [--normals N1,N2,...]
-//                          [--machine 5dof|4dof] [--axes N] [--pose auto]
+//                          [--machine 5dof|4dof] [--axes N] [--pose auto] [--finalists on|off]
 //
 // --levels: subdivision levels (0: the model as shared; 3: 64x the faces).
 // --million: also the knight subdivided 5 times (1,024,000 faces), smooth and with --noise (default 0.02 mm)
@@ -18,6 +18,7 @@
 //   counts a summary at the end gives each model's and mode's median J_G after / before over the draws.
 // --machine 4dof --axes N: every run a 4-DOF search over N rotation axes (`--machine 4dof --axis-search N`).
 // --pose auto: every run a pose search (`--pose auto`).
+// --finalists on|off: every run with `--polish-finalists` or `--no-polish-finalists` (default: the CLI's).
 // Columns: faces, the proxy's faces (0: none), wall seconds of the whole command, its CPU seconds (user and
 // system, all threads: what the machine's load changes least), the search's seconds, peak
 // resident MiB (getrusage of the child), regions, J_G after / before, and the wall time over the same model's
@@ -98,6 +99,7 @@ struct SearchMode {
   std::string machine;  // empty: the CLI's default (5-DOF)
   int axes = 0;         // 4-DOF axis search over this many axes
   bool autoPose = false;
+  std::string finalists;  // "on", "off", or empty: the CLI's default
 };
 
 Outcome run(const Case& c, bool full, int normals, const SearchMode& mode, const fs::path& folder) {
@@ -123,6 +125,7 @@ Outcome run(const Case& c, bool full, int normals, const SearchMode& mode, const
     args.emplace_back("--pose");
     args.emplace_back("auto");
   }
+  if (!mode.finalists.empty()) args.emplace_back(mode.finalists == "on" ? "--polish-finalists" : "--no-polish-finalists");
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -210,6 +213,7 @@ int main(int argc, char** argv) {
     else if (i + 1 < argc && flag == "--machine") searchMode.machine = argv[++i];
     else if (i + 1 < argc && flag == "--axes") searchMode.axes = std::atoi(argv[++i]);
     else if (i + 1 < argc && flag == "--pose") searchMode.autoPose = std::string(argv[++i]) == "auto";
+    else if (i + 1 < argc && flag == "--finalists") searchMode.finalists = argv[++i];
     else if (i + 1 < argc && flag == "--repeat") repeat = std::max(1, std::atoi(argv[++i]));
     else if (i + 1 < argc && flag == "--normals") {
       normalCounts.clear();

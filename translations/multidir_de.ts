@@ -4724,6 +4724,16 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Ebenen polieren:</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <source>also the finalists</source>
+        <translation>auch die Finalisten</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <source>Also polish the search&apos;s best plan for every other number of cuts that may beat its own plan, and keep the least J_G: the plan changes less with the settings</source>
+        <translation>Auch den besten Plan der Suche für jede andere Zahl von Schnitten polieren, der ihren eigenen Plan schlagen kann, und den mit dem kleinsten J_G behalten: der Plan ändert sich weniger mit den Einstellungen</translation>
+    </message>
+    <message>
         <location filename="../ui/panels/search_panel.cpp" line="128"/>
         <source>Axes to try:</source>
         <translation>Zu probierende Achsen:</translation>

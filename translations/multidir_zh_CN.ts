@@ -4716,6 +4716,16 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>平面精修:</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <source>also the finalists</source>
+        <translation>也打磨候选方案</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <source>Also polish the search&apos;s best plan for every other number of cuts that may beat its own plan, and keep the least J_G: the plan changes less with the settings</source>
+        <translation>也打磨搜索在其他每个切割数下可能胜过其自身方案的最佳方案，并保留 J_G 最小者：方案随设置的变化更小</translation>
+    </message>
+    <message>
         <location filename="../ui/panels/search_panel.cpp" line="128"/>
         <source>Axes to try:</source>
         <translation>尝试的轴数：</translation>

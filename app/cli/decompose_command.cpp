@@ -77,8 +77,10 @@ const char* const kDecomposeHelp =
     "  --no-polish          keep the search's planes as found\n"
     "  --polish-effort E    how finely polishing goes, 1 to 6: its steps halve E - 1 times; each level costs\n"
     "                       about as much as the one before (default: 1)\n"
-    "  --polish-finalists   also polish the search's best plan for every other number of cuts and keep the\n"
-    "                       least J_G after polishing: steadier plans, up to 2 times the time (default: off)\n"
+    "  --polish-finalists   also polish the search's best plan for every other number of cuts that may beat\n"
+    "                       it and keep the least J_G after polishing: steadier plans, more time (default: off)\n"
+    "  --no-polish-finalists\n"
+    "                       polish the search's own plan only (the default)\n"
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
     "  --no-supports        do not generate supports\n"
     "  --support-spacing MM overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"
@@ -98,7 +100,8 @@ const std::set<std::string> kDecomposeValueOptions = {
     "--threads", "--profile", "-o",        "--summary",         "--support-spacing", "--scale",
     "--pose",    "--poses",   "--pose-searches",                "--proxy-faces",     "--polish-effort"};
 const std::set<std::string> kDecomposeFlags = {"--help",      "--no-supports", "--no-proxy",
-                                               "--polish",    "--no-polish",   "--polish-finalists"};
+                                               "--polish",    "--no-polish",   "--polish-finalists",
+                                               "--no-polish-finalists"};
 
 namespace {
 
@@ -212,15 +215,17 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
   }
   if (parsed.has("--polish") && parsed.has("--no-polish"))
     throw UsageError(kCommand + ": --polish and --no-polish contradict each other");
+  if (parsed.has("--polish-finalists") && parsed.has("--no-polish-finalists"))
+    throw UsageError(kCommand + ": --polish-finalists and --no-polish-finalists contradict each other");
   if (parsed.has("--no-polish")) {
-    if (parsed.has("--polish-effort"))
-      throw UsageError(kCommand + ": --polish-effort and --no-polish contradict each other");
+    for (const char* polishing : {"--polish-effort", "--polish-finalists"})
+      if (parsed.has(polishing))
+        throw UsageError(kCommand + ": " + polishing + " and --no-polish contradict each other");
     options.polish = false;
+    options.polishFinalists = false;  // nothing is polished: plan.json says so
   }
-  if (parsed.has("--polish-finalists")) {
-    if (!options.polish) throw UsageError(kCommand + ": --polish-finalists and --no-polish contradict each other");
-    options.polishFinalists = true;
-  }
+  if (parsed.has("--polish-finalists")) options.polishFinalists = true;
+  if (parsed.has("--no-polish-finalists")) options.polishFinalists = false;
   apply("--polish-effort", [&](const std::string& t) { options.polishEffort = parseInteger(t, "--polish-effort"); });
   return options;
 }

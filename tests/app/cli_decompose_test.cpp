@@ -172,6 +172,30 @@ TEST(CliDecompose, PolishOptionsThatContradictOrAreOutOfRangeAreUsageErrors) {
   expectUsageError(k + "--polish --no-polish", "--polish and --no-polish contradict each other");
   expectUsageError(k + "--no-polish --polish-effort 2", "--polish-effort and --no-polish contradict each other");
   expectUsageError(k + "--polish-effort 7", "--polish-effort: polish effort must be between 1 and 6");
+  expectUsageError(k + "--no-polish --polish-finalists", "--polish-finalists and --no-polish contradict each other");
+  expectUsageError(k + "--polish-finalists --no-polish-finalists",
+                   "--polish-finalists and --no-polish-finalists contradict each other");
+}
+
+// --polish-finalists and --no-polish-finalists each reach the search (its note on the finalists, or none) and
+// plan.json's search.polishFinalists; --no-polish polishes no finalists either, and plan.json says so.
+TEST(CliDecompose, PolishFinalistsFlagsReachTheSearchAndPlanJsonKeepsThem) {
+  const std::string dir = multidir::test::scratchDirectory("CliDecompose.PolishFinalists");
+  struct Case {
+    std::string flag;
+    bool finalists;
+  };
+  for (const Case& c : {Case{"--polish-finalists", true}, Case{"--no-polish-finalists", false},
+                        Case{"--no-polish", false}}) {
+    const std::string out = dir + "/plan" + c.flag;
+    const CliRun run =
+        runCli("decompose " + kitten() + " --up y --beam-width 2 --no-supports " + c.flag + " -o '" + out + "'", dir);
+    ASSERT_EQ(run.exitCode, 0) << c.flag << ": " << run.err;
+    const nlohmann::json plan = nlohmann::json::parse(readAll(out + "/plan.json"));
+    EXPECT_EQ(plan["search"]["polishFinalists"], c.finalists) << c.flag;
+    const std::string notes = plan["result"]["statistics"]["notes"].dump();
+    EXPECT_EQ(notes.find("finalists of the search") != std::string::npos, c.finalists) << c.flag << ": " << notes;
+  }
 }
 
 TEST(CliDecompose, NoPolishKeepsTheSearchsPlanAndPlanJsonSaysSo) {

@@ -90,12 +90,7 @@ TEST(SearchPanelScales, ScalesBoxIsLockedWhileASearchRunsLikeItsNeighbours) {
   SearchPanel panel;
   QSpinBox* box = scalesBox(panel);
   ASSERT_NE(box, nullptr);
-  panel.searchStarted(100.0, 10);
-  EXPECT_FALSE(box->isEnabled());
-  core::Decomposition plan;
-  plan.jgBeforeMm2 = plan.jgAfterMm2 = 100.0;
-  panel.searchFinished(plan);
-  EXPECT_TRUE(box->isEnabled());
+  EXPECT_TRUE(test::lockedWhilePanelSearches(panel, *box));
 }
 
 TEST(StudioProjectScales, ProjectSavedWithOneScaleReopensWithOne) {

@@ -67,6 +67,10 @@ core::SearchOptions longSearchOptions() {
 
 ui::SearchRun runQuickSearch(ui::MainWindow& window) {
   window.searchPanel()->setSearchOptions(quickSearchOptions());
+  return runSearchAsSet(window);
+}
+
+ui::SearchRun runSearchAsSet(ui::MainWindow& window) {
   QSignalSpy finished(&window, &ui::MainWindow::searchFinished);
   const bool started = window.runSearch();
   EXPECT_TRUE(started) << "the search did not start";
@@ -75,6 +79,15 @@ ui::SearchRun runQuickSearch(ui::MainWindow& window) {
   EXPECT_TRUE(finished.wait(kSearchTimeoutMs)) << "the search did not finish";
   if (finished.isEmpty()) return {};
   return finished.front().front().value<ui::SearchRun>();
+}
+
+bool lockedWhilePanelSearches(ui::SearchPanel& panel, const QWidget& field) {
+  panel.searchStarted(100.0, 10);
+  const bool locked = !field.isEnabled();
+  core::Decomposition plan;
+  plan.jgBeforeMm2 = plan.jgAfterMm2 = 100.0;
+  panel.searchFinished(plan);
+  return locked && field.isEnabled();
 }
 
 void openPlanFolder(ui::MainWindow& window, const QString& folder) {

@@ -12,6 +12,7 @@
 
 namespace multidir::ui {
 class MainWindow;
+class SearchPanel;
 class ProjectSession;
 }
 
@@ -50,6 +51,14 @@ core::SearchOptions longSearchOptions();
 // Runs a search with quickSearchOptions() from the window's Search panel and waits for its plan; an empty
 // run (no plan) when it did not start or finish.
 ui::SearchRun runQuickSearch(ui::MainWindow& window);
+
+// Runs a search with the options the window's Search panel shows, as Run search does, and waits for its plan;
+// an empty run when it did not start or finish.
+ui::SearchRun runSearchAsSet(ui::MainWindow& window);
+
+// Whether `field` of `panel` is locked while the panel shows a search running, and editable again once it
+// finished (a plan of 100 mm^2 shown).
+bool lockedWhilePanelSearches(ui::SearchPanel& panel, const QWidget& field);
 
 // Opens the plan folder `folder` in `window` and waits until the plan is shown.
 void openPlanFolder(ui::MainWindow& window, const QString& folder);

@@ -1,5 +1,6 @@
 #include "ui/panels/search_panel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -122,6 +123,11 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   m_polishEffort->setSpecialValueText(tr("off"));
   m_polishEffort->setToolTip(tr("After the search, move every plane continuously (normal and offset) to lower J_G "
                                 "further, every constraint kept; higher values refine more finely and take longer"));
+  m_polishFinalists = new QCheckBox(tr("also the finalists"), this);
+  m_polishFinalists->setObjectName(QStringLiteral("polishFinalists"));
+  m_polishFinalists->setChecked(defaults.polishFinalists);
+  m_polishFinalists->setToolTip(tr("Also polish the search's best plan for every other number of cuts that may beat "
+                                   "its own plan, and keep the least J_G: the plan changes less with the settings"));
   m_axisCount->setObjectName(QStringLiteral("axisCount"));
   m_axisCount->setRange(0, 180);
   m_axisCount->setValue(0);
@@ -140,7 +146,11 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   form->addRow(tr("Max. overhang angle α:"), m_alpha);
   form->addRow(tr("Min. region height:"), m_minRegionHeight);
   form->addRow(tr("Min. gain per plane:"), m_minPlaneGain);
-  form->addRow(tr("Polish the planes:"), m_polishEffort);
+  // One row: the panel must fit a 1280x720 screen (StudioSmallScreen).
+  auto* polishRow = new QHBoxLayout;
+  polishRow->addWidget(m_polishEffort, 1);
+  polishRow->addWidget(m_polishFinalists);
+  form->addRow(tr("Polish the planes:"), polishRow);
   m_axisCountLabel = new QLabel(tr("Axes to try:"), this);
   form->addRow(m_axisCountLabel, m_axisCount);
   m_partCostLabel = new QLabel(tr("Price of a part:"), this);
@@ -163,6 +173,8 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::settingsChanged);
   for (QSpinBox* box : {m_beamWidth, m_volumeScales, m_normals, m_axisCount, m_polishEffort})
     connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
+  connect(m_polishFinalists, &QCheckBox::toggled, this, &SearchPanel::settingsChanged);
+  connect(m_polishEffort, &QSpinBox::valueChanged, this, &SearchPanel::updatePolishFinalists);
   for (QDoubleSpinBox* box :
        {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain, m_partCost, m_cutFaceCost})
     connect(box, &QDoubleSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
@@ -230,6 +242,7 @@ core::SearchOptions SearchPanel::searchOptions() const {
   options.cutFaceCost = m_cutFaceCost->value();
   options.polish = m_polishEffort->value() > 0;
   if (options.polish) options.polishEffort = m_polishEffort->value();
+  options.polishFinalists = options.polish && m_polishFinalists->isChecked();
   return options;
 }
 
@@ -249,6 +262,7 @@ void SearchPanel::setSearchOptions(const core::SearchOptions& options) {
   m_partCost->setValue(options.partCostMm2);
   m_cutFaceCost->setValue(options.cutFaceCost);
   m_polishEffort->setValue(options.polish ? options.polishEffort : 0);
+  m_polishFinalists->setChecked(options.polishFinalists);
   emit settingsChanged();  // also when only options the panel does not show changed
 }
 
@@ -287,6 +301,12 @@ void SearchPanel::setRunning(bool running) {
     w->setEnabled(!running);
   }
   updateBeamOnlyControls();
+  updatePolishFinalists();
+}
+
+void SearchPanel::updatePolishFinalists() {
+  // Its value stays in the box while polishing is off, for when it is turned on again.
+  m_polishFinalists->setEnabled(m_polishEffort->value() > 0 && !m_running);
 }
 
 void SearchPanel::updateBeamOnlyControls() {

@@ -11,6 +11,7 @@
 
 #include "multidir/core/search/decomposition.h"
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -81,6 +82,8 @@ class SearchPanel : public QWidget {
   void setRunning(bool running);
   // Beam width and scales mean something to the beam scheme only: editable when it is chosen and no search runs.
   void updateBeamOnlyControls();
+  // "Also the finalists" means something only while polishing is on: editable then, when no search runs.
+  void updatePolishFinalists();
   void showNotice(const QString& text, bool warning);
   void updateProgressText();
   // The progress bar says `text` ("%p" stands for the percentage), elided to its width when it does not fit,
@@ -106,6 +109,7 @@ class SearchPanel : public QWidget {
   QDoubleSpinBox* m_minRegionHeight = nullptr;
   QDoubleSpinBox* m_minPlaneGain = nullptr;
   QSpinBox* m_polishEffort = nullptr;  // 0: off, else SearchOptions::polishEffort
+  QCheckBox* m_polishFinalists = nullptr;  // SearchOptions::polishFinalists, with polishing on
   QSpinBox* m_axisCount = nullptr;
   QLabel* m_axisCountLabel = nullptr;
   QPushButton* m_run = nullptr;

@@ -132,7 +132,8 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   o.polish = polish ? polish->boolean() : false;
   if (const auto effort = field.optional("polishEffort")) o.polishEffort = smallInteger(*effort);
   // Plans saved before this option polished the search's own plan only.
-  if (const auto finalists = field.optional("polishFinalists")) o.polishFinalists = finalists->boolean();
+  const auto finalists = field.optional("polishFinalists");
+  o.polishFinalists = finalists ? finalists->boolean() : false;
   o.platformToleranceMm = field["platformToleranceMm"].number();
   o.threads = smallInteger(field["threads"]);
   if (Status valid = validate(o); !valid) field.failInside(valid.error().message, ErrorCode::InvalidParameter);
