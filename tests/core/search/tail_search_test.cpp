@@ -23,12 +23,18 @@ SearchOptions withThreads(int threads) {
   return options;
 }
 
-Decomposition searchedWithTails(const TriangleMesh& model, const SearchOptions& options) {
+// The default search's polished plan, and that plan with its tails searched again.
+struct PolishedAndTails {
+  Decomposition polished;
+  Decomposition tails;
+};
+
+PolishedAndTails searchedWithTails(const TriangleMesh& model, const SearchOptions& options = SearchOptions{}) {
   JobContext job;
   auto plan = decompose(model, upY(), options, job);
   EXPECT_TRUE(plan.ok()) << plan.error().describe();
   if (!plan.ok()) return {};
-  return multidir::core::detail::withTailsSearchedAgain(model, upY(), options, *plan, job);
+  return {*plan, multidir::core::detail::withTailsSearchedAgain(model, upY(), options, *plan, job)};
 }
 
 }  // namespace
@@ -38,39 +44,30 @@ Decomposition searchedWithTails(const TriangleMesh& model, const SearchOptions& 
 // polish to 289.68 mm^2 (2.19 %).
 TEST(TailSearch, FindsAPlanForTheFertilityStatueFarBelowItsPolishedPlan) {
   const TriangleMesh fertility = multidir::test::loadSharedModel("fertility.off");
-  const SearchOptions options;
-  JobContext job;
-  auto polished = decompose(fertility, upY(), options, job);
-  ASSERT_TRUE(polished.ok()) << polished.error().describe();
-  const Decomposition tails = multidir::core::detail::withTailsSearchedAgain(fertility, upY(), options, *polished, job);
-  EXPECT_LT(tails.jgAfterMm2, 0.75 * polished->jgAfterMm2);
+  const auto [polished, tails] = searchedWithTails(fertility);
+  EXPECT_LT(tails.jgAfterMm2, 0.75 * polished.jgAfterMm2);
   // A plan the rules allow: its planes cut again with every criterion checked give the same J_G.
-  auto recut = planFromClippingPlanes(fertility, upY(), options, tails.clippingPlanes);
+  auto recut = planFromClippingPlanes(fertility, upY(), SearchOptions{}, tails.clippingPlanes);
   ASSERT_TRUE(recut.ok()) << recut.error().describe();
   EXPECT_NEAR(recut->jgAfterMm2, tails.jgAfterMm2, 1e-6 * tails.jgBeforeMm2);
 }
 
 // The kitten's tails end at 11.89 and 11.80 mm^2 as found, above its polished 11.71: its plan stays.
 TEST(TailSearch, KeepsThePlanWhenNoTailEndsLower) {
-  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
-  const SearchOptions options;
-  JobContext job;
-  auto polished = decompose(kitten, upY(), options, job);
-  ASSERT_TRUE(polished.ok()) << polished.error().describe();
-  const Decomposition tails = multidir::core::detail::withTailsSearchedAgain(kitten, upY(), options, *polished, job);
-  ASSERT_EQ(tails.clippingPlanes.size(), polished->clippingPlanes.size());
+  const auto [polished, tails] = searchedWithTails(multidir::test::loadSharedModel("kitten.off"));
+  ASSERT_EQ(tails.clippingPlanes.size(), polished.clippingPlanes.size());
   for (std::size_t k = 0; k < tails.clippingPlanes.size(); ++k) {
-    EXPECT_EQ(tails.clippingPlanes[k].normal, polished->clippingPlanes[k].normal) << "plane " << k;
-    EXPECT_EQ(tails.clippingPlanes[k].offset, polished->clippingPlanes[k].offset) << "plane " << k;
+    EXPECT_EQ(tails.clippingPlanes[k].normal, polished.clippingPlanes[k].normal) << "plane " << k;
+    EXPECT_EQ(tails.clippingPlanes[k].offset, polished.clippingPlanes[k].offset) << "plane " << k;
   }
-  EXPECT_EQ(tails.jgAfterMm2, polished->jgAfterMm2);
+  EXPECT_EQ(tails.jgAfterMm2, polished.jgAfterMm2);
 }
 
 // The knight's plan changes (74.95 -> 64.45 mm^2), by searches whose threads split the work differently.
 TEST(TailSearch, GivesTheSamePlanForOneAndTwoThreads) {
   const TriangleMesh knight = multidir::test::loadSharedModel("knight.off");
-  const Decomposition one = searchedWithTails(knight, withThreads(1));
-  const Decomposition two = searchedWithTails(knight, withThreads(2));
+  const Decomposition one = searchedWithTails(knight, withThreads(1)).tails;
+  const Decomposition two = searchedWithTails(knight, withThreads(2)).tails;
   ASSERT_EQ(one.clippingPlanes.size(), two.clippingPlanes.size());
   for (std::size_t k = 0; k < one.clippingPlanes.size(); ++k) {
     EXPECT_EQ(one.clippingPlanes[k].normal, two.clippingPlanes[k].normal) << "plane " << k;
