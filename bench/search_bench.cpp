@@ -6,7 +6,7 @@
 //                         [--scheme beam|greedy|cgreedy] [--beam-width B] [--w W] [--scales S] [--refine ROUNDS]
 //                         [--min-region-height MM] [--min-plane-gain PERCENT] [--pose auto] [--poses N]
 //                         [--subdivide K] [--proxy-faces N] [--normals N] [--polish 0|1] [--polish-effort E]
-//                         [--polish-finalists 0|1]
+//                         [--polish-finalists 0|1] [--search-tails 0|1]
 // --subdivide K: each model subdivided K times first (4^K as many faces, the same surface): the scaling runs.
 // --proxy-faces N: search a decimated proxy of models above N faces (0: always the full mesh).
 // --polish 0: the search's plan unpolished (--no-polish); a polished plan gets a line "polish:" below its row with
@@ -33,6 +33,7 @@
 #include "multidir/core/search/pose_search.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
+#include "search/tail_search.h"
 #include "shared_model_path.h"
 
 using namespace multidir::core;
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
   SearchOptions options;
   int axes = 0;
   bool verbose = false;
+  bool searchTails = false;  // the tails searched again after polishing (docs/search.md)
   bool autoPose = false;
   int subdivisions = 0;  // each multiplies the faces by 4 (the same surface): the scaling runs
   PoseOptions poseOptions;
@@ -94,6 +96,7 @@ int main(int argc, char** argv) {
     else if (flag == "--polish") options.polish = value != "0";
     else if (flag == "--polish-effort") options.polishEffort = std::atoi(value.c_str());
     else if (flag == "--polish-finalists") options.polishFinalists = value == "1";
+    else if (flag == "--search-tails") searchTails = value == "1";
     else if (flag == "--pose") autoPose = value == "auto";
     else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
     else if (flag == "--pose-searches") poseOptions.fullSearches = std::atoi(value.c_str());
@@ -130,12 +133,14 @@ int main(int argc, char** argv) {
     }
     JobContext job;
     const double cpuBefore = cpuSeconds();
-    const auto plan = axes > 0 ? decomposeWithAxisSearch(loaded->mesh, machine, options, axes, job)
+    auto plan = axes > 0 ? decomposeWithAxisSearch(loaded->mesh, machine, options, axes, job)
                                : decompose(loaded->mesh, machine, options, job, [&](const SearchProgress& p) {
                                    if (verbose)
                                      std::printf("    level %d: %d beams alive, best J_G %.2f, %lld scored\n", p.level,
                                                  p.beamsAlive, p.bestJgMm2, p.candidatesScored);
                                  });
+    if (searchTails && plan.ok())
+      *plan = multidir::core::detail::withTailsSearchedAgain(loaded->mesh, machine, options, std::move(*plan), job);
     const double planCpu = cpuSeconds() - cpuBefore;  // the search alone, before the plan is saved
     if (!plan.ok()) {
       std::fprintf(stderr, "%s: %s\n", name.c_str(), plan.error().describe().c_str());

@@ -100,10 +100,11 @@ bool refineCandidates(SearchEngine& engine, const std::vector<NodePtr>& beams, c
 }  // namespace
 
 bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, const BeamScale& scale, BestPlan& best,
-                   const SearchProgressSink& sink, int& levels) {
-  std::vector<NodePtr> beams = {engine.root()};
-  best.offer(engine.root());
-  if (engine.isTerminal(*engine.root(), scale.minRegionVolume)) return false;
+                   const SearchProgressSink& sink, int& levels, NodePtr start) {
+  if (!start) start = engine.root();
+  std::vector<NodePtr> beams = {start};
+  best.offer(start);
+  if (engine.isTerminal(*start, scale.minRegionVolume)) return false;
   for (int level = 0; !beams.empty() && level < scale.maxLevels; ++level) {
     levels = std::max(levels, level + 1);
     std::vector<ScoredCandidate> pool;

@@ -23,6 +23,7 @@ using detail::BestPlan;
 using detail::NodePtr;
 using detail::SearchEngine;
 using detail::SearchNode;
+using detail::chainOf;
 using detail::runBeamScheme;
 using detail::runGreedy;
 
@@ -43,14 +44,6 @@ bool takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes
   });
   if (!seen) taken.push_back(std::move(planes));
   return !seen;
-}
-
-// The nodes of a node's chain, the root first.
-std::vector<NodePtr> chainOf(const NodePtr& node) {
-  std::vector<NodePtr> chain;
-  for (NodePtr n = node; n; n = n->parent) chain.push_back(n);
-  std::reverse(chain.begin(), chain.end());
-  return chain;
 }
 
 // The node that the planes make from `start`, or null when some plane is refused.

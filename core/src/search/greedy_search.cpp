@@ -6,8 +6,8 @@
 namespace multidir::core::detail {
 
 bool runGreedy(SearchEngine& engine, bool constrained, double minRegionVolume, BestPlan& best,
-               const SearchProgressSink& sink, int& levels) {
-  NodePtr node = engine.root();
+               const SearchProgressSink& sink, int& levels, NodePtr start) {
+  NodePtr node = start ? std::move(start) : engine.root();
   best.offer(node);
   constexpr double kRiskFree = 1e-6;  // mm^2: what counts as R = 0 after floating-point sums
   while (!engine.isTerminal(*node, minRegionVolume)) {

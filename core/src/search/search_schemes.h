@@ -65,6 +65,9 @@ struct BeamWork {
   std::vector<NodePtr> searchBests;  // each search's best plan, in the order offered
 };
 
+// The nodes of a node's chain, the root first: chain[k] is what plane k cuts.
+std::vector<NodePtr> chainOf(NodePtr node);
+
 // Candidates whose region is below `minRegionVolume` are not the scheme's to take.
 void dropSmallerThan(std::vector<ScoredCandidate>& candidates, double minRegionVolume);
 
@@ -81,13 +84,15 @@ std::vector<std::optional<NodePtr>> extendAll(SearchEngine& engine, const std::v
 void report(const SearchProgressSink& sink, int level, int alive, const BestPlan& best, const SearchEngine& engine);
 
 // Paper Eq. 7 (unconstrained) and Eq. 8 (constrained): one beam, the cut with the largest J_L, among regions
-// of at least `minRegionVolume`. Returns true when cancelled; `levels` is the chain's length.
+// of at least `minRegionVolume`. Returns true when cancelled; `levels` is the chain's length. `start`: the
+// state the chain starts from (null: the uncut model), a node of `engine`.
 bool runGreedy(SearchEngine& engine, bool constrained, double minRegionVolume, BestPlan& best,
-               const SearchProgressSink& sink, int& levels);
+               const SearchProgressSink& sink, int& levels, NodePtr start = nullptr);
 
 // Algorithm 1 of the paper at one scale. Returns true when cancelled; `levels` is the deepest level reached.
+// `start`: as for runGreedy; the scale's levels count from it.
 bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, const BeamScale& scale, BestPlan& best,
-                   const SearchProgressSink& sink, int& levels);
+                   const SearchProgressSink& sink, int& levels, NodePtr start = nullptr);
 
 // The beam scheme: both greedy chains at w, then the beam search at every scale, w, 2w, ..., each on an engine
 // of its own that shares `engine`'s scored root. They run side by side with the threads divided among them

@@ -7,6 +7,13 @@
 
 namespace multidir::core::detail {
 
+std::vector<NodePtr> chainOf(NodePtr node) {
+  std::vector<NodePtr> chain;
+  for (; node; node = node->parent) chain.push_back(node);
+  std::reverse(chain.begin(), chain.end());
+  return chain;
+}
+
 void dropSmallerThan(std::vector<ScoredCandidate>& candidates, double minRegionVolume) {
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                   [&](const ScoredCandidate& c) { return c.volumeAboveMm3 < minRegionVolume; }),
