@@ -33,7 +33,6 @@
 #include "multidir/core/search/pose_search.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
-#include "search/tail_search.h"
 #include "shared_model_path.h"
 
 using namespace multidir::core;
@@ -70,7 +69,6 @@ int main(int argc, char** argv) {
   SearchOptions options;
   int axes = 0;
   bool verbose = false;
-  bool searchTails = false;  // the tails searched again after polishing (docs/search.md)
   bool autoPose = false;
   int subdivisions = 0;  // each multiplies the faces by 4 (the same surface): the scaling runs
   PoseOptions poseOptions;
@@ -96,7 +94,7 @@ int main(int argc, char** argv) {
     else if (flag == "--polish") options.polish = value != "0";
     else if (flag == "--polish-effort") options.polishEffort = std::atoi(value.c_str());
     else if (flag == "--polish-finalists") options.polishFinalists = value == "1";
-    else if (flag == "--search-tails") searchTails = value == "1";
+    else if (flag == "--search-tails") options.searchTails = value == "1";
     else if (flag == "--pose") autoPose = value == "auto";
     else if (flag == "--poses") poseOptions.poses = std::atoi(value.c_str());
     else if (flag == "--pose-searches") poseOptions.fullSearches = std::atoi(value.c_str());
@@ -139,8 +137,6 @@ int main(int argc, char** argv) {
                                      std::printf("    level %d: %d beams alive, best J_G %.2f, %lld scored\n", p.level,
                                                  p.beamsAlive, p.bestJgMm2, p.candidatesScored);
                                  });
-    if (searchTails && plan.ok())
-      *plan = multidir::core::detail::withTailsSearchedAgain(loaded->mesh, machine, options, std::move(*plan), job);
     const double planCpu = cpuSeconds() - cpuBefore;  // the search alone, before the plan is saved
     if (!plan.ok()) {
       std::fprintf(stderr, "%s: %s\n", name.c_str(), plan.error().describe().c_str());

@@ -81,6 +81,10 @@ const char* const kDecomposeHelp =
     "                       it and keep the least J_G after polishing: steadier plans, more time (default: off)\n"
     "  --no-polish-finalists\n"
     "                       polish the search's own plan only (the default)\n"
+    "  --search-tails       after polishing, search the plan's later planes again from each of its polished\n"
+    "                       states and keep a lower plan found there: lower J_G on some models, about twice\n"
+    "                       the time (default: off)\n"
+    "  --no-search-tails    deliver the polished plan (the default)\n"
     "  --summary FILE       also write the key numbers as JSON to FILE\n"
     "  --no-supports        do not generate supports\n"
     "  --support-spacing MM overhang sampling distance R, strut radius R/4 (default: 2; 3 suits a 0.8 mm nozzle)\n"
@@ -101,7 +105,7 @@ const std::set<std::string> kDecomposeValueOptions = {
     "--pose",    "--poses",   "--pose-searches",                "--proxy-faces",     "--polish-effort"};
 const std::set<std::string> kDecomposeFlags = {"--help",      "--no-supports", "--no-proxy",
                                                "--polish",    "--no-polish",   "--polish-finalists",
-                                               "--no-polish-finalists"};
+                                               "--no-polish-finalists", "--search-tails", "--no-search-tails"};
 
 namespace {
 
@@ -224,6 +228,10 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
     options.polish = false;
     options.polishFinalists = false;  // nothing is polished: plan.json says so
   }
+  if (parsed.has("--search-tails") && parsed.has("--no-search-tails"))
+    throw UsageError(kCommand + ": --search-tails and --no-search-tails contradict each other");
+  if (parsed.has("--search-tails")) options.searchTails = true;
+  if (parsed.has("--no-search-tails")) options.searchTails = false;
   if (parsed.has("--polish-finalists")) options.polishFinalists = true;
   if (parsed.has("--no-polish-finalists")) options.polishFinalists = false;
   apply("--polish-effort", [&](const std::string& t) { options.polishEffort = parseInteger(t, "--polish-effort"); });

@@ -175,6 +175,25 @@ TEST(CliDecompose, PolishOptionsThatContradictOrAreOutOfRangeAreUsageErrors) {
   expectUsageError(k + "--no-polish --polish-finalists", "--polish-finalists and --no-polish contradict each other");
   expectUsageError(k + "--polish-finalists --no-polish-finalists",
                    "--polish-finalists and --no-polish-finalists contradict each other");
+  expectUsageError(k + "--search-tails --no-search-tails",
+                   "--search-tails and --no-search-tails contradict each other");
+}
+
+// --search-tails and --no-search-tails each reach the search (its note on the tails, or none) and plan.json's
+// search.searchTails.
+TEST(CliDecompose, SearchTailsFlagsReachTheSearchAndPlanJsonKeepsThem) {
+  const std::string dir = multidir::test::scratchDirectory("CliDecompose.SearchTails");
+  for (const bool tails : {true, false}) {
+    const std::string flag = tails ? "--search-tails" : "--no-search-tails";
+    const std::string out = dir + "/plan" + flag;
+    const CliRun run =
+        runCli("decompose " + kitten() + " --up y --beam-width 2 --no-supports " + flag + " -o '" + out + "'", dir);
+    ASSERT_EQ(run.exitCode, 0) << flag << ": " << run.err;
+    const nlohmann::json plan = nlohmann::json::parse(readAll(out + "/plan.json"));
+    EXPECT_EQ(plan["search"]["searchTails"], tails) << flag;
+    const std::string notes = plan["result"]["statistics"]["notes"].dump();
+    EXPECT_EQ(notes.find("tails searched again") != std::string::npos, tails) << flag << ": " << notes;
+  }
 }
 
 // --polish-finalists and --no-polish-finalists each reach the search (its note on the finalists, or none) and

@@ -55,6 +55,7 @@ ordered_json searchOptionsToJson(const SearchOptions& o) {
           {"polish", o.polish},
           {"polishEffort", o.polishEffort},
           {"polishFinalists", o.polishFinalists},
+          {"searchTails", o.searchTails},
           {"platformToleranceMm", o.platformToleranceMm},
           {"threads", o.threads}};
 }
@@ -134,6 +135,9 @@ SearchOptions searchOptionsFromJson(const JsonField& field) {
   // Plans saved before this option polished the search's own plan only.
   const auto finalists = field.optional("polishFinalists");
   o.polishFinalists = finalists ? finalists->boolean() : false;
+  // Plans saved before this option did not search the tails again.
+  const auto tails = field.optional("searchTails");
+  o.searchTails = tails ? tails->boolean() : false;
   o.platformToleranceMm = field["platformToleranceMm"].number();
   o.threads = smallInteger(field["threads"]);
   if (Status valid = validate(o); !valid) field.failInside(valid.error().message, ErrorCode::InvalidParameter);

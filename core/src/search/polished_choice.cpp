@@ -1,5 +1,6 @@
 // The plan a search delivers after polishing: its own plan polished, or with SearchOptions::polishFinalists the
-// best polished of it and those of its finalists that may beat it (docs/search.md, "Polishing the finalists").
+// best polished of it and those of its finalists that may beat it (docs/search.md, "Polishing the finalists");
+// then, with SearchOptions::searchTails, its tails searched again (tail_search.h).
 //
 // Why more than one: which plan polishes best is not the plan that was best before polishing. On the bunny's
 // 254-normal lattice the search's plan (5 regions, 240.09 mm^2 as found) polishes to 177.58 mm^2, a 15-region
@@ -15,6 +16,7 @@
 #include <numeric>
 
 #include "search/run_decomposition.h"
+#include "search/tail_search.h"
 
 namespace multidir::core::detail {
 namespace {
@@ -39,7 +41,12 @@ Decomposition searchedPolishedChoice(const TriangleMesh& model, const MachineSpe
   Decomposition plan = runDecomposition(model, machine, options, job, progress, platform, nullptr,
                                         finalists ? &others : nullptr);
   Decomposition best = polishedIfAsked(model, machine, options, plan, job, progress, platform);
-  if (!finalists || best.cancelled) return best;
+  // Last, with SearchOptions::searchTails, the regions chosen again after the chosen plan's first planes.
+  const auto withTails = [&](Decomposition chosen) {
+    if (!options.searchTails || chosen.cancelled) return chosen;
+    return withTailsSearchedAgain(model, machine, options, std::move(chosen), job, platform);
+  };
+  if (!finalists || best.cancelled) return withTails(std::move(best));
   // A gain below rounding is not one: the earlier plan stays (the search's own first).
   const double tie = 1e-9 * std::max(1.0, plan.jgBeforeMm2);
   double credited = std::max(kLeastCreditedGain, polishGain(plan.jgAfterMm2, best.jgAfterMm2));
@@ -85,7 +92,7 @@ Decomposition searchedPolishedChoice(const TriangleMesh& model, const MachineSpe
                 polished, others.size(), 100 * credited,
                 chosen ? "a finalist polished best" : "the search's own plan polished best");
   best.statistics.notes.push_back(note);
-  return best;
+  return withTails(std::move(best));
 }
 
 }  // namespace multidir::core::detail

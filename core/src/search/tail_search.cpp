@@ -80,6 +80,7 @@ Decomposition withTailsSearchedAgain(const TriangleMesh& model, const MachineSpe
   // so one above the polished plan rarely polishes below it, and each polish costs about a search's time.
   if (!best || !(best->jg() < plan.jgAfterMm2)) {
     plan.statistics.seconds += seconds;
+    plan.statistics.notes.push_back("the tails searched again: none lower than the polished plan");
     return plan;
   }
   Decomposition candidate = engine.planOf(*best);
@@ -91,13 +92,15 @@ Decomposition withTailsSearchedAgain(const TriangleMesh& model, const MachineSpe
   const double tie = 1e-9 * std::max(1.0, plan.jgBeforeMm2);
   if (job.isCancelled() || !(polished.jgAfterMm2 < plan.jgAfterMm2 - tie)) {
     plan.statistics.seconds += seconds;
+    if (!job.isCancelled())
+      plan.statistics.notes.push_back("the tails searched again: the lowest did not polish below the plan");
     return plan;
   }
   std::vector<std::string> notes = plan.statistics.notes;
   char note[240];
   std::snprintf(note, sizeof note,
-                "the planes after plane %zu searched again from the polished plan: %.2f mm^2 as found, %.2f "
-                "polished, against %.2f (%.2f s)",
+                "the tails searched again: the planes after plane %zu, from the polished plan: %.2f mm^2 as "
+                "found, %.2f polished, against %.2f (%.2f s)",
                 bestStart, best->jg(), polished.jgAfterMm2, plan.jgAfterMm2, seconds);
   notes.push_back(note);
   polished.statistics.notes = std::move(notes);

@@ -1,7 +1,7 @@
 #pragma once
 // After polishing: the plan's later planes searched again from each of its polished states (docs/search.md,
-// "Searching the tails again"). Internal to core; not part of decompose() yet (it costs about twice the
-// default search, above issue 30's 1.5 times: an option for it is the next step).
+// "Searching the tails again"). decompose() runs it with SearchOptions::searchTails (off by default: it costs
+// about twice the default search).
 #include <optional>
 
 #include "multidir/core/common/job_context.h"
