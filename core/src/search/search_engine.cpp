@@ -261,7 +261,7 @@ std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std:
 }
 
 Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_ptr<const SearchNode>& node,
-                                                          const Plane& givenPlane) {
+                                                          const Plane& givenPlane, double riskyBoundMm2) {
   const std::string where = "plane " + std::to_string(node->level + 1);
   Plane plane = keptOffVertices(givenPlane, *node->remaining);
   if (!isRealizable(m_machine, plane.normal, degToRad(0.01)))
@@ -293,8 +293,18 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
     why = unprintableReason(*clipped, plane, keepsFloat);
     if (why.empty()) risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(cutRegionBase()));
   };
+  const bool bounded = riskyBoundMm2 < kNoRiskyBound;
+  auto reachesBound = [&](double regionRisky) { return node->prefixJgMm2 + regionRisky >= riskyBoundMm2; };
+  const auto boundReached = [&] {
+    return Error{ErrorCode::InvalidParameter, "the regions cut so far hold as much risky area as the bound", where};
+  };
   if (m_measureCutsOnTwoThreads) {
     parallelFor(2, std::min(2, threads()), [&](int task) { task == 0 ? measureBelow() : measureAbove(); });
+  } else if (bounded) {
+    // The region first: when it reaches the bound, neither Criterion II nor the child's measures are needed.
+    measureAbove();
+    if (why.empty() && risky->ok() && reachesBound((*risky)->riskyAreaMm2)) return boundReached();
+    stands = sequenceFree() || standsOnPlatform(clipped->below);
   } else {  // the child's measures are taken only once every check passed (makeChild)
     stands = sequenceFree() || standsOnPlatform(clipped->below);
     if (stands) measureAbove();
@@ -307,6 +317,7 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
   if (!why.empty()) return Error{ErrorCode::InvalidParameter, why, where};
   if (!risky->ok()) return Error{risky->error().code, risky->error().message, where};
   const double regionRisky = (*risky)->riskyAreaMm2;
+  if (reachesBound(regionRisky)) return boundReached();
   return std::shared_ptr<const SearchNode>(
       makeChild(node, plane, std::move(*clipped), regionRisky, std::move(belowMeasures)));
 }
