@@ -29,14 +29,19 @@ MachineSpec upY() {
 // A plane through the kitten's head, tilted off up: the region above it has risky area along its normal.
 Plane headPlane() { return Plane{Vec3(0.3, 1.0, 0.2).normalized(), 40.0}; }
 
-}  // namespace
-
-TEST(BoundedCut, IsRefusedOnceTheRegionsCutSoFarHoldTheBound) {
+// An engine on the kitten printed along +Y (it keeps references to the model, machine, options and job).
+class BoundedCut : public ::testing::Test {
+ protected:
   const TriangleMesh model = kitten();
   const MachineSpec machine = upY();
   const SearchOptions options;
   JobContext job;
-  SearchEngine engine(model, machine, options, job);
+  SearchEngine engine{model, machine, options, job};
+};
+
+}  // namespace
+
+TEST_F(BoundedCut, IsRefusedOnceTheRegionsCutSoFarHoldTheBound) {
   const auto unbounded = engine.cut(engine.root(), headPlane());
   ASSERT_TRUE(unbounded.ok()) << unbounded.error().describe();
   const double regionRisky = (*unbounded)->prefixJgMm2;
@@ -45,12 +50,7 @@ TEST(BoundedCut, IsRefusedOnceTheRegionsCutSoFarHoldTheBound) {
   EXPECT_FALSE(engine.cut(engine.root(), headPlane(), 0.5 * regionRisky).ok());
 }
 
-TEST(BoundedCut, BelowTheBoundIsTheSameNodeAsWithoutIt) {
-  const TriangleMesh model = kitten();
-  const MachineSpec machine = upY();
-  const SearchOptions options;
-  JobContext job;
-  SearchEngine engine(model, machine, options, job);
+TEST_F(BoundedCut, BelowTheBoundIsTheSameNodeAsWithoutIt) {
   const auto unbounded = engine.cut(engine.root(), headPlane());
   ASSERT_TRUE(unbounded.ok()) << unbounded.error().describe();
   const double justAbove = std::nextafter((*unbounded)->prefixJgMm2, std::numeric_limits<double>::infinity());
@@ -69,12 +69,7 @@ TEST(BoundedCut, BelowTheBoundIsTheSameNodeAsWithoutIt) {
   EXPECT_EQ(b.removedParentFaces, a.removedParentFaces);
 }
 
-TEST(BoundedCut, RefusesWhatTheUnboundedCutRefusesWithTheSameError) {
-  const TriangleMesh model = kitten();
-  const MachineSpec machine = upY();
-  const SearchOptions options;
-  JobContext job;
-  SearchEngine engine(model, machine, options, job);
+TEST_F(BoundedCut, RefusesWhatTheUnboundedCutRefusesWithTheSameError) {
   // A millimetre below the kitten's top: the region above is too thin to print (checked with the region's
   // measures, which a bounded cut takes first).
   double top = -std::numeric_limits<double>::infinity();
