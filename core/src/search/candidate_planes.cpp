@@ -140,14 +140,8 @@ bool planeClearsPlatform(const Plane& plane, const PlatformRegion& platform, con
 namespace {
 
 // Every offsetStepMm from just above max(the solid's lowest point, `floorMm`) to below its top.
-OffsetGrid offsetsAbove(const TriangleMesh& solid, const Vec3& normal, double floorMm, const CandidateOptions& options) {
-  double low = std::numeric_limits<double>::infinity(), high = -low;
-  // Every vertex of a solid from loadMesh or clipByPlane belongs to a face.
-  for (const Vec3& v : solid.vertices) {
-    const double h = normal.dot(v);
-    low = std::min(low, h);
-    high = std::max(high, h);
-  }
+OffsetGrid offsetsAbove(const LevelRange& range, double floorMm, const CandidateOptions& options) {
+  const double low = range.lowMm, high = range.highMm;
   OffsetGrid grid{0.0, options.offsetStepMm, 0};
   if (!(low < high)) return grid;
   const double start = std::max(low, floorMm);
@@ -162,13 +156,29 @@ OffsetGrid offsetsAbove(const TriangleMesh& solid, const Vec3& normal, double fl
 
 }  // namespace
 
+LevelRange levelRange(const TriangleMesh& solid, const Vec3& normal) {
+  LevelRange range;
+  // Every vertex of a solid from loadMesh or clipByPlane belongs to a face.
+  for (const Vec3& v : solid.vertices) range.include(normal.dot(v));
+  return range;
+}
+
+OffsetGrid candidateOffsets(const LevelRange& range, const Vec3& normal, const PlatformRegion& platform,
+                            const Vec3& up, const CandidateOptions& options) {
+  return offsetsAbove(range, platformTopAlong(normal, platform, up) + options.platformClearanceMm, options);
+}
+
+OffsetGrid candidateOffsets(const LevelRange& range, const CandidateOptions& options) {
+  return offsetsAbove(range, -std::numeric_limits<double>::infinity(), options);
+}
+
 OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const PlatformRegion& platform,
                             const Vec3& up, const CandidateOptions& options) {
-  return offsetsAbove(solid, normal, platformTopAlong(normal, platform, up) + options.platformClearanceMm, options);
+  return candidateOffsets(levelRange(solid, normal), normal, platform, up, options);
 }
 
 OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const CandidateOptions& options) {
-  return offsetsAbove(solid, normal, -std::numeric_limits<double>::infinity(), options);
+  return candidateOffsets(levelRange(solid, normal), options);
 }
 
 Status checkCandidateCount(const TriangleMesh& model, const MachineSpec& machine, const CandidateOptions& options) {

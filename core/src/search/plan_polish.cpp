@@ -157,11 +157,11 @@ class Polisher {
                    const Plane& moved, double bound) {
     NodePtr node = chain[k];
     for (std::size_t j = k; j < planes.size(); ++j) {
-      auto child = m_engine.cut(node, j == k ? moved : planes[j]);
+      // Refused also when its regions reach the bound (before the part below is measured).
+      auto child = m_engine.cut(node, j == k ? moved : planes[j], bound);
       if (!child.ok()) return nullptr;
       if (node->volumeMm3 - (*child)->volumeMm3 < m_minRegionVolume) return nullptr;
       node = *child;
-      if (node->prefixJgMm2 >= bound) return nullptr;
     }
     return node;
   }

@@ -68,14 +68,23 @@ void PlaneSweeper::addFace(Sums& sums, const Vec3& unitNormal, std::size_t f, do
   if (upper > 0) sums.volume.addPiece(jb, jc, hc, {0, 0, 0, -w / (3.0 * span * upper)});
 }
 
-SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid) const {
-  Sums sums(grid);
-  // Each vertex's height and grid index once per normal: a vertex is shared by about six faces.
+std::vector<double> PlaneSweeper::levels(const Vec3& unitNormal) const {
   std::vector<double> height(m_solid.vertices.size());
-  std::vector<int> index(m_solid.vertices.size());
+  for (std::size_t v = 0; v < height.size(); ++v) height[v] = unitNormal.dot(m_solid.vertices[v]);
+  return height;
+}
+
+SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid) const {
+  return sweep(unitNormal, grid, levels(unitNormal));
+}
+
+SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid,
+                                 const std::vector<double>& height) const {
+  Sums sums(grid);
+  // Each vertex's grid index once per normal: a vertex is shared by about six faces.
+  std::vector<int> index(height.size());
   double top = -std::numeric_limits<double>::infinity();
   for (std::size_t v = 0; v < height.size(); ++v) {
-    height[v] = unitNormal.dot(m_solid.vertices[v]);
     index[v] = sums.volume.indexAtOrAbove(height[v]);
     top = std::max(top, height[v]);
   }
@@ -86,16 +95,38 @@ SweepProfile PlaneSweeper::sweep(const Vec3& unitNormal, const OffsetGrid& grid)
   return sums.profile(top);
 }
 
-SweepProfile PlaneSweeper::sweepFaces(const Vec3& unitNormal, const OffsetGrid& grid,
-                                      const std::vector<std::int32_t>& faces) const {
-  Sums sums(grid);
+PlaneSweeper::FaceSet PlaneSweeper::faceSet(const std::vector<std::int32_t>& faces) const {
+  FaceSet set;
+  set.faces = faces;
+  set.corners.reserve(faces.size());
+  std::vector<std::int32_t> position(m_solid.vertices.size(), -1);
   for (const std::int32_t f : faces) {
-    const Triangle& t = m_solid.triangles[f];
-    const double ha = unitNormal.dot(m_solid.vertices[t[0]]);
-    const double hb = unitNormal.dot(m_solid.vertices[t[1]]);
-    const double hc = unitNormal.dot(m_solid.vertices[t[2]]);
-    addFace(sums, unitNormal, static_cast<std::size_t>(f), ha, hb, hc, sums.volume.indexAtOrAbove(ha),
-            sums.volume.indexAtOrAbove(hb), sums.volume.indexAtOrAbove(hc));
+    std::array<std::int32_t, 3> corners{};
+    for (int c = 0; c < 3; ++c) {
+      const std::int32_t v = m_solid.triangles[f][c];
+      if (position[v] < 0) {
+        position[v] = static_cast<std::int32_t>(set.vertices.size());
+        set.vertices.push_back(v);
+      }
+      corners[c] = position[v];
+    }
+    set.corners.push_back(corners);
+  }
+  return set;
+}
+
+SweepProfile PlaneSweeper::sweepFaces(const Vec3& unitNormal, const OffsetGrid& grid, const FaceSet& faces) const {
+  Sums sums(grid);
+  std::vector<double> height(faces.vertices.size());
+  std::vector<int> index(faces.vertices.size());
+  for (std::size_t v = 0; v < height.size(); ++v) {
+    height[v] = unitNormal.dot(m_solid.vertices[faces.vertices[v]]);
+    index[v] = sums.volume.indexAtOrAbove(height[v]);
+  }
+  for (std::size_t k = 0; k < faces.faces.size(); ++k) {
+    const std::array<std::int32_t, 3>& c = faces.corners[k];
+    addFace(sums, unitNormal, static_cast<std::size_t>(faces.faces[k]), height[c[0]], height[c[1]], height[c[2]],
+            index[c[0]], index[c[1]], index[c[2]]);
   }
   return sums.profile(0.0);
 }

@@ -157,26 +157,39 @@ std::vector<ScoredCandidate> SearchEngine::scoreNormals(const SearchNode& node, 
                          static_cast<double>(node.remaining->triangles.size());
   const std::vector<NormalSweep>* parentSweeps =
       node.parent && fewDiffer ? node.parent->latticeSweeps.get() : nullptr;
+  // The parent holds sweeps of lattice normals only: the refinement's normals beyond it are swept whole.
+  if (parentSweeps && std::none_of(normalIndices.begin(), normalIndices.end(),
+                                   [&](int i) { return i < static_cast<int>(parentSweeps->size()); }))
+    parentSweeps = nullptr;
   std::optional<PlaneSweeper> parentSweeper;
-  if (parentSweeps) parentSweeper.emplace(*node.parent->remaining, node.parent->riskyUpShare, m_sinAlpha);
+  PlaneSweeper::FaceSet removed, added;  // the faces the node differs by, for every normal
+  if (parentSweeps) {
+    parentSweeper.emplace(*node.parent->remaining, node.parent->riskyUpShare, m_sinAlpha);
+    removed = parentSweeper->faceSet(node.removedParentFaces);
+    added = sweeper.faceSet(node.addedFaces);
+  }
   if (sweeps) sweeps->assign(count, NormalSweep{});
 
   parallelFor(count, threads(), [&](int k) {
     if (m_job.isCancelled()) return;
     const int i = normalIndices[k];
     const Vec3& n = m_normals[i];
+    // Each vertex's level once, for the grid (the part's extent along n) and the sweep.
+    const std::vector<double> levels = sweeper.levels(n);
+    LevelRange range;
+    for (const double level : levels) range.include(level);
     const OffsetGrid grid = sequenceFree()
-                                ? candidateOffsets(*node.remaining, n, m_options.candidates)
-                                : candidateOffsets(*node.remaining, n, m_platform, m_machine.up, m_options.candidates);
+                                ? candidateOffsets(range, m_options.candidates)
+                                : candidateOffsets(range, n, m_platform, m_machine.up, m_options.candidates);
     if (sweeps) (*sweeps)[k].grid = grid;
     if (grid.count == 0) return;
     offered[k] = grid.count;
     std::optional<int> shift;
     if (parentSweeps && i < static_cast<int>(parentSweeps->size())) shift = shiftInto((*parentSweeps)[i].grid, grid);
     const SweepProfile profile =
-        shift ? updatedProfile((*parentSweeps)[i].profile, *shift, parentSweeper->sweepFaces(n, grid, node.removedParentFaces),
-                               sweeper.sweepFaces(n, grid, node.addedFaces), topAlong(*node.remaining, n))
-              : sweeper.sweep(n, grid);
+        shift ? updatedProfile((*parentSweeps)[i].profile, *shift, parentSweeper->sweepFaces(n, grid, removed),
+                               sweeper.sweepFaces(n, grid, added), range.highMm)
+              : sweeper.sweep(n, grid, levels);
     if (sweeps) (*sweeps)[k].profile = profile;
     for (int j = 0; j < grid.count; ++j) {
       // The part above must be at least minRegionHeightMm tall along its printing direction.
@@ -261,7 +274,7 @@ std::optional<std::shared_ptr<const SearchNode>> SearchEngine::extend(const std:
 }
 
 Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_ptr<const SearchNode>& node,
-                                                          const Plane& givenPlane) {
+                                                          const Plane& givenPlane, double riskyBoundMm2) {
   const std::string where = "plane " + std::to_string(node->level + 1);
   Plane plane = keptOffVertices(givenPlane, *node->remaining);
   if (!isRealizable(m_machine, plane.normal, degToRad(0.01)))
@@ -293,8 +306,18 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
     why = unprintableReason(*clipped, plane, keepsFloat);
     if (why.empty()) risky = analyzeOverhang(clipped->above, plane.normal, overhangOptions(cutRegionBase()));
   };
+  const bool bounded = riskyBoundMm2 < kNoRiskyBound;
+  auto reachesBound = [&](double regionRisky) { return node->prefixJgMm2 + regionRisky >= riskyBoundMm2; };
+  const auto boundReached = [&] {
+    return Error{ErrorCode::InvalidParameter, "the regions cut so far hold as much risky area as the bound", where};
+  };
   if (m_measureCutsOnTwoThreads) {
     parallelFor(2, std::min(2, threads()), [&](int task) { task == 0 ? measureBelow() : measureAbove(); });
+  } else if (bounded) {
+    // The region first: when it reaches the bound, neither Criterion II nor the child's measures are needed.
+    measureAbove();
+    if (why.empty() && risky->ok() && reachesBound((*risky)->riskyAreaMm2)) return boundReached();
+    stands = sequenceFree() || standsOnPlatform(clipped->below);
   } else {  // the child's measures are taken only once every check passed (makeChild)
     stands = sequenceFree() || standsOnPlatform(clipped->below);
     if (stands) measureAbove();
@@ -307,6 +330,7 @@ Result<std::shared_ptr<const SearchNode>> SearchEngine::cut(const std::shared_pt
   if (!why.empty()) return Error{ErrorCode::InvalidParameter, why, where};
   if (!risky->ok()) return Error{risky->error().code, risky->error().message, where};
   const double regionRisky = (*risky)->riskyAreaMm2;
+  if (reachesBound(regionRisky)) return boundReached();
   return std::shared_ptr<const SearchNode>(
       makeChild(node, plane, std::move(*clipped), regionRisky, std::move(belowMeasures)));
 }

@@ -2,6 +2,7 @@
 // What every search scheme shares: the candidate normals, the platform, scoring a beam's candidates with the
 // plane sweep, and extending a beam by one clip (where Criterion II is checked).
 #include <atomic>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,7 +63,13 @@ class SearchEngine {
 
   // Clips the node by a given plane (plan editing): every criterion is checked and a refusal says which.
   // The region's risky area is measured on its mesh. Errors name the plane as "plane K" (K = level + 1).
-  Result<std::shared_ptr<const SearchNode>> cut(const std::shared_ptr<const SearchNode>& node, const Plane& plane);
+  // `riskyBoundMm2` (polishing's trials): when the regions cut off so far, this one included, hold that much
+  // risky area or more, the cut is refused as soon as that is known, before the part below is checked and
+  // measured (a trial whose regions already hold the incumbent's J_G cannot win). A cut below the bound gives
+  // the same node and a refusal the same error as without it.
+  Result<std::shared_ptr<const SearchNode>> cut(const std::shared_ptr<const SearchNode>& node, const Plane& plane,
+                                                double riskyBoundMm2 = kNoRiskyBound);
+  static constexpr double kNoRiskyBound = std::numeric_limits<double>::infinity();
 
   // Criterion II: whether every connected solid of `solid` touches the platform.
   bool standsOnPlatform(const TriangleMesh& solid) const;

@@ -2,6 +2,8 @@
 // Candidate clipping planes (the paper's Section III-B): normals sampled uniformly on the Gaussian sphere and
 // kept where the machine can print along them, and offsets every stepMm across the solid along each normal,
 // minus those that would cut the platform region (Criterion III).
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "multidir/core/common/result.h"
@@ -66,5 +68,22 @@ OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const
 // The same without a platform region (the apart machine: Criterion III does not apply), from just above the
 // solid's lowest point along the normal.
 OffsetGrid candidateOffsets(const TriangleMesh& solid, const Vec3& normal, const CandidateOptions& options);
+
+// A solid's extent along a normal: its vertices' lowest and highest level (normal . v); empty (low above
+// high) for a solid without vertices.
+struct LevelRange {
+  double lowMm = std::numeric_limits<double>::infinity();
+  double highMm = -std::numeric_limits<double>::infinity();
+  void include(double level) {
+    lowMm = std::min(lowMm, level);
+    highMm = std::max(highMm, level);
+  }
+};
+LevelRange levelRange(const TriangleMesh& solid, const Vec3& normal);
+// candidateOffsets() from the solid's extent along the normal, for a caller that has it already (the search
+// reads each vertex's level once per normal for both the grid and the sweep).
+OffsetGrid candidateOffsets(const LevelRange& range, const Vec3& normal, const PlatformRegion& platform,
+                            const Vec3& up, const CandidateOptions& options);
+OffsetGrid candidateOffsets(const LevelRange& range, const CandidateOptions& options);
 
 }  // namespace multidir::core

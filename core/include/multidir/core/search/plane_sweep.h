@@ -6,6 +6,7 @@
 // between its vertex heights, and (by the divergence theorem with the field (n.x - t) n, which vanishes on the
 // cut) the volume above is cubic. Summing those pieces over a uniform grid of offsets with difference arrays
 // costs O(F + offsets) per normal and never clips the mesh.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -46,9 +47,21 @@ class PlaneSweeper {
  public:
   PlaneSweeper(const TriangleMesh& solid, const std::vector<double>& riskyShare, double sinAlphaMax);
   SweepProfile sweep(const Vec3& unitNormal, const OffsetGrid& grid) const;
-  // The sums over some faces only (indices into the solid's triangles); topMm is left at 0. A solid that
-  // differs from another by a few faces has the other's profile minus those faces plus its own.
-  SweepProfile sweepFaces(const Vec3& unitNormal, const OffsetGrid& grid, const std::vector<std::int32_t>& faces) const;
+  // Each vertex's level along the normal (unitNormal . v), and sweep() with them given: a caller that also
+  // needs the solid's extent along the normal (for the grid) reads the vertices once.
+  std::vector<double> levels(const Vec3& unitNormal) const;
+  SweepProfile sweep(const Vec3& unitNormal, const OffsetGrid& grid, const std::vector<double>& levels) const;
+  // Some faces of the solid (indices into its triangles) with their corners listed once, made once for many
+  // normals: a sweep of them reads each corner's level once, not once per face around it.
+  struct FaceSet {
+    std::vector<std::int32_t> faces;
+    std::vector<std::int32_t> vertices;                // the faces' corners, each once
+    std::vector<std::array<std::int32_t, 3>> corners;  // per face, its corners' positions in `vertices`
+  };
+  FaceSet faceSet(const std::vector<std::int32_t>& faces) const;
+  // The sums over some faces only; topMm is left at 0. A solid that differs from another by a few faces has
+  // the other's profile minus those faces plus its own.
+  SweepProfile sweepFaces(const Vec3& unitNormal, const OffsetGrid& grid, const FaceSet& faces) const;
 
  private:
   struct Sums;
