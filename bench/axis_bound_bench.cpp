@@ -23,24 +23,15 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/search/decompose.h"
 #include "search/axis_bound.h"
+#include "bench_support.h"
 #include "shared_model_path.h"
 
 using namespace multidir::core;
 
+using multidir::bench::commaList;
+using multidir::bench::processCpuSeconds;
+
 namespace {
-
-double cpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
-  return parts;
-}
 
 }  // namespace
 
@@ -56,7 +47,7 @@ int main(int argc, char** argv) {
   bool full = false, screen = false, search = true;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
-    if (flag == "--models") models = split(value);
+    if (flag == "--models") models = commaList(value);
     else if (flag == "--axes") axes = std::atoi(value.c_str());
     else if (flag == "--full") full = value != "0";
     else if (flag == "--screen") screen = value != "0";
@@ -88,7 +79,7 @@ int main(int argc, char** argv) {
     const TriangleMesh& mesh = loaded->mesh;
     const PlatformRegion platform = platformRegionFor(mesh, machine, options.platformToleranceMm);
     JobContext job;
-    const double cpuBefore = cpuSeconds();
+    const double cpuBefore = processCpuSeconds();
     Result<Decomposition> searched = Error{ErrorCode::Cancelled, "not run", "bench"};
     if (search) {
       searched = decomposeWithAxisSearch(mesh, machine, options, axes, job);
@@ -97,7 +88,7 @@ int main(int argc, char** argv) {
         return 1;
       }
     }
-    const double searchCpu = cpuSeconds() - cpuBefore;
+    const double searchCpu = processCpuSeconds() - cpuBefore;
     const double before = search ? searched->jgBeforeMm2 : NAN;
     std::printf("%s: J_G before %.2f mm^2, platform region radius %.1f mm\n", name.c_str(), before, platform.radiusMm);
     std::printf("  %5s %12s %8s", "axis", "bound mm^2", "bound %");
@@ -105,7 +96,7 @@ int main(int argc, char** argv) {
     if (screen) std::printf(" %12s %8s", "screen mm^2", "screen %");
     std::printf("\n");
     // The bounds alone, timed (the axis search computes them for every axis before its full searches).
-    const double boundsCpuBefore = cpuSeconds();
+    const double boundsCpuBefore = processCpuSeconds();
     double boundSum = 0.0;
     for (int a = 0; a < axes; ++a) {
       MachineSpec spec = machine;
@@ -114,7 +105,7 @@ int main(int argc, char** argv) {
           (std::cos(angle) * machine.rotationAxis + std::sin(angle) * machine.up.cross(machine.rotationAxis)).normalized();
       boundSum += detail::unavoidableRiskyAreaMm2(mesh, spec, platform, options.alphaMaxDegrees, options.supportedBandMm);
     }
-    std::printf("  the %d axes' bounds: %.3f CPU s (sum %.2f mm^2)\n", axes, cpuSeconds() - boundsCpuBefore, boundSum);
+    std::printf("  the %d axes' bounds: %.3f CPU s (sum %.2f mm^2)\n", axes, processCpuSeconds() - boundsCpuBefore, boundSum);
     double leastBound = INFINITY, bestFull = INFINITY;
     int leastBoundAxis = -1, bestFullAxis = -1;
     for (int a = 0; a < axes; ++a) {
@@ -128,7 +119,7 @@ int main(int argc, char** argv) {
       std::printf("  %5.1f %12.2f %8.2f", 180.0 * a / axes, bound, 100.0 * bound / before);
       if (full) {
         JobContext axisJob;
-        const double cpu = cpuSeconds();
+        const double cpu = processCpuSeconds();
         const auto plan = decompose(mesh, spec, options, axisJob);
         if (!plan.ok()) {
           std::fprintf(stderr, "%s: %s\n", name.c_str(), plan.error().describe().c_str());
@@ -136,7 +127,7 @@ int main(int argc, char** argv) {
         }
         if (plan->jgAfterMm2 < bestFull) bestFull = plan->jgAfterMm2, bestFullAxis = a;
         std::printf(" %12.2f %8.2f %7zu %7.2f%s", plan->jgAfterMm2, 100.0 * plan->jgAfterMm2 / before,
-                    plan->regions.size(), cpuSeconds() - cpu, plan->jgAfterMm2 < bound - 1e-6 ? "  BELOW THE BOUND" : "");
+                    plan->regions.size(), processCpuSeconds() - cpu, plan->jgAfterMm2 < bound - 1e-6 ? "  BELOW THE BOUND" : "");
       }
       if (screen) {
         JobContext screenJob;

@@ -36,18 +36,14 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/search/candidate_planes.h"
 #include "multidir/core/search/decompose.h"
+#include "bench_support.h"
 #include "shared_model_path.h"
 
 using namespace multidir::core;
 
-namespace {
+using multidir::bench::commaList;
 
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
-  return parts;
-}
+namespace {
 
 double degrees(double radians) { return radians * 180.0 / kPi; }
 
@@ -82,7 +78,7 @@ int main(int argc, char** argv) {
   int faceLines = 0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
-    if (flag == "--models") models = split(value);
+    if (flag == "--models") models = commaList(value);
     else if (flag == "--normals") options.candidates.normalSamples = std::atoi(value.c_str());
     else if (flag == "--polish") options.polish = value != "0";
     else if (flag == "--threads") options.threads = std::atoi(value.c_str());

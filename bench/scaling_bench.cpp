@@ -43,20 +43,15 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/mesh/mesh_resolution.h"
 #include "noisy_surface.h"
+#include "bench_support.h"
 #include "shared_model_path.h"
 
 using namespace multidir::core;
 namespace fs = std::filesystem;
 
-namespace {
+using multidir::bench::commaList;
 
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
+namespace {
 
 struct Case {
   std::string name;  // "kitten 16x"
@@ -207,7 +202,7 @@ int main(int argc, char** argv) {
     const std::string flag = argv[i];
     if (flag == "--million") million = true;
     else if (flag == "--full") full = true;
-    else if (i + 1 < argc && flag == "--models") models = split(argv[++i]);
+    else if (i + 1 < argc && flag == "--models") models = commaList(argv[++i]);
     else if (i + 1 < argc && flag == "--noise") noiseMm = std::atof(argv[++i]);
     else if (i + 1 < argc && flag == "--keep") keep = argv[++i];
     else if (i + 1 < argc && flag == "--machine") searchMode.machine = argv[++i];
@@ -217,11 +212,11 @@ int main(int argc, char** argv) {
     else if (i + 1 < argc && flag == "--repeat") repeat = std::max(1, std::atoi(argv[++i]));
     else if (i + 1 < argc && flag == "--normals") {
       normalCounts.clear();
-      for (const std::string& n : split(argv[++i])) normalCounts.push_back(std::atoi(n.c_str()));
+      for (const std::string& n : commaList(argv[++i])) normalCounts.push_back(std::atoi(n.c_str()));
     }
     else if (i + 1 < argc && flag == "--levels") {
       levels.clear();
-      for (const std::string& l : split(argv[++i])) levels.push_back(std::atoi(l.c_str()));
+      for (const std::string& l : commaList(argv[++i])) levels.push_back(std::atoi(l.c_str()));
     } else {
       std::fprintf(stderr, "unknown option %s (see the comment at the top of bench/scaling_bench.cpp)\n", flag.c_str());
       return 2;

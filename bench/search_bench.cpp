@@ -18,6 +18,7 @@
 // The default runs all nine shared models. J_G is the one definition of docs/jg-definition.md.
 // Up is +Y for every shared model. Peak memory is the process's maximum resident set so far.
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -33,9 +34,13 @@
 #include "multidir/core/search/pose_search.h"
 #include "multidir/core/plan/plan_file.h"
 #include "multidir/core/search/decompose.h"
+#include "bench_support.h"
 #include "shared_model_path.h"
 
 using namespace multidir::core;
+
+using multidir::bench::commaList;
+using multidir::bench::processCpuSeconds;
 
 namespace {
 
@@ -46,19 +51,6 @@ double peakMemoryMiB() {
 }
 
 // User and system time of every thread of the process: what a loaded machine does not change, unlike the wall.
-double cpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
-  return parts;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -74,7 +66,7 @@ int main(int argc, char** argv) {
   PoseOptions poseOptions;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
-    if (flag == "--models") models = split(value);
+    if (flag == "--models") models = commaList(value);
     else if (flag == "--machine") machine.kind = parseMachineKind(value).value();
     else if (flag == "--axes") axes = std::atoi(value.c_str());
     else if (flag == "--threads") options.threads = std::atoi(value.c_str());
@@ -130,20 +122,22 @@ int main(int argc, char** argv) {
       loaded->mesh = std::move(*fine);
     }
     JobContext job;
-    const double cpuBefore = cpuSeconds();
+    const double cpuBefore = processCpuSeconds();
     auto plan = axes > 0 ? decomposeWithAxisSearch(loaded->mesh, machine, options, axes, job)
                                : decompose(loaded->mesh, machine, options, job, [&](const SearchProgress& p) {
                                    if (verbose)
                                      std::printf("    level %d: %d beams alive, best J_G %.2f, %lld scored\n", p.level,
                                                  p.beamsAlive, p.bestJgMm2, p.candidatesScored);
                                  });
-    const double planCpu = cpuSeconds() - cpuBefore;  // the search alone, before the plan is saved
+    const double planCpu = processCpuSeconds() - cpuBefore;  // the search alone, before the plan is saved
     if (!plan.ok()) {
       std::fprintf(stderr, "%s: %s\n", name.c_str(), plan.error().describe().c_str());
       return 1;
     }
-    // Every plan must save: written to a scratch folder and removed again.
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("multidir-bench-" + name);
+    // Every plan must save: written to a scratch folder and removed again, one of this process's own (two benches
+    // side by side removed each other's).
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("multidir-bench-" + name + "-" + std::to_string(getpid()));
     PlanMetadata metadata;
     metadata.machine = machine;
     metadata.up = machine.up;
@@ -173,7 +167,7 @@ int main(int argc, char** argv) {
     if (autoPose) {
       const double searchCpu = planCpu;
       JobContext poseJob;
-      const double poseCpuBefore = cpuSeconds();
+      const double poseCpuBefore = processCpuSeconds();
       const auto posed = decomposeWithPoseSearch(loaded->mesh, machine, options, poseOptions, poseJob);
       if (!posed.ok()) {
         std::fprintf(stderr, "%s: pose search: %s\n", name.c_str(), posed.error().describe().c_str());
@@ -186,7 +180,7 @@ int main(int argc, char** argv) {
                   posed->chosen.up.x(), posed->chosen.up.y(), posed->chosen.up.z(), poseSourceName(posed->chosen.source),
                   posed->plan.regions.size(), posed->plan.jgBeforeMm2, posed->plan.jgAfterMm2, autoShare,
                   posed->seconds, posed->seconds / std::max(1e-9, plan->statistics.seconds),
-                  (cpuSeconds() - poseCpuBefore) / std::max(1e-9, searchCpu),
+                  (processCpuSeconds() - poseCpuBefore) / std::max(1e-9, searchCpu),
                   posed->plan.jgAfterMm2 > plan->jgAfterMm2 + 1e-6 ? "  WORSE than up y" : "");
     }
     std::fflush(stdout);
