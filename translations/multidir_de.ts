@@ -4734,6 +4734,21 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Auch den besten Plan der Suche für jede andere Zahl von Schnitten polieren, der ihren eigenen Plan schlagen kann, und den mit dem kleinsten J_G behalten: der Plan ändert sich weniger mit den Einstellungen</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <source>the tails of the polished plan</source>
+        <translation>die hinteren Ebenen des polierten Plans</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <source>After polishing, search the plan&apos;s later planes again from each of its polished states and keep a lower plan found there: lower J_G on some models, about twice the time</source>
+        <translation>Nach dem Polieren die späteren Ebenen des Plans von jedem seiner polierten Zustände aus neu suchen und einen dort gefundenen niedrigeren Plan behalten: bei manchen Modellen kleineres J_G, etwa doppelte Zeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <source>Search again:</source>
+        <translation>Erneut suchen:</translation>
+    </message>
+    <message>
         <location filename="../ui/panels/search_panel.cpp" line="128"/>
         <source>Axes to try:</source>
         <translation>Zu probierende Achsen:</translation>

@@ -4726,6 +4726,21 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>也打磨搜索在其他每个切割数下可能胜过其自身方案的最佳方案，并保留 J_G 最小者：方案随设置的变化更小</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <source>the tails of the polished plan</source>
+        <translation>打磨后方案的后续平面</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <source>After polishing, search the plan&apos;s later planes again from each of its polished states and keep a lower plan found there: lower J_G on some models, about twice the time</source>
+        <translation>打磨后，从方案的每个打磨状态重新搜索其后续平面，并保留在那里找到的更低方案：某些模型的 J_G 更低，耗时约为两倍</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <source>Search again:</source>
+        <translation>重新搜索：</translation>
+    </message>
+    <message>
         <location filename="../ui/panels/search_panel.cpp" line="128"/>
         <source>Axes to try:</source>
         <translation>尝试的轴数：</translation>

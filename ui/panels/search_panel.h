@@ -110,6 +110,7 @@ class SearchPanel : public QWidget {
   QDoubleSpinBox* m_minPlaneGain = nullptr;
   QSpinBox* m_polishEffort = nullptr;  // 0: off, else SearchOptions::polishEffort
   QCheckBox* m_polishFinalists = nullptr;  // SearchOptions::polishFinalists, with polishing on
+  QCheckBox* m_searchTails = nullptr;      // SearchOptions::searchTails
   QSpinBox* m_axisCount = nullptr;
   QLabel* m_axisCountLabel = nullptr;
   QPushButton* m_run = nullptr;
