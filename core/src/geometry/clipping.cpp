@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "geometry/cross_section_cap.h"
 #include "detail/huge_pages.h"
@@ -124,40 +125,58 @@ struct SideFaces {
 class PlaneSplitter {
  public:
   PlaneSplitter(const TriangleMesh& solid, const Plane& plane, double tolerance)
-      : m_solid(solid), m_plane(plane), m_positions(solid.vertices), m_side(solid.vertices.size()) {
+      : m_solid(solid), m_plane(plane), m_side(solid.vertices.size()) {
     // A vertex is snapped only when its distance is at most its reach (the move along the surface is at least
     // as long as the distance), and a reach is at most kSnapRatio of a face's height, so of the solid's
     // diagonal: only the vertices that close to the plane need the faces around them (snapData). Measuring
     // every face for every clip was most of a clip's own time on a million faces.
     Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
     Vec3 high = -low;
-    for (const Vec3& p : m_positions) {
+    for (const Vec3& p : solid.vertices) {
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
     }
     const double largestReach = 2.0 * kSnapRatio * (high - low).norm();  // twice: no rounding can exceed it
+    const std::size_t vertexCount = solid.vertices.size();
     std::vector<std::int32_t> near;  // in vertex order
-    for (std::size_t v = 0; v < m_positions.size(); ++v) {
-      const double d = std::abs(plane.signedDistance(m_positions[v]));
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+      const double d = std::abs(plane.signedDistance(solid.vertices[v]));
       if (d > tolerance && d <= largestReach) near.push_back(static_cast<std::int32_t>(v));
     }
     const SnapData snap = snapData(solid, near);
-    for (std::size_t v = 0, n = 0; v < m_positions.size(); ++v) {
-      const double d = plane.signedDistance(m_positions[v]);
+    // The sides first and the few vertices moved onto the plane aside, so that the positions (the solid's
+    // vertices, then the crossings) can be copied once into a buffer that already has room for the crossings:
+    // copying the vertices and growing the copy for the first crossing filled three times the vertices' size
+    // in fresh pages on every clip (docs/architecture.md, "Million-triangle models").
+    std::vector<std::pair<std::int32_t, Vec3>> moved;  // (vertex, position on the plane), in vertex order
+    for (std::size_t v = 0, n = 0; v < vertexCount; ++v) {
+      const Vec3& p = solid.vertices[v];
+      const double d = plane.signedDistance(p);
       const bool isNear = n < near.size() && near[n] == static_cast<std::int32_t>(v);
       if (std::abs(d) <= tolerance) {
         m_side[v] = 0;
-        m_positions[v] -= d * plane.normal;
+        moved.emplace_back(static_cast<std::int32_t>(v), p - d * plane.normal);
       } else if (const std::optional<Vec3> move =
                      isNear ? volumeKeepingSnap(d, snap.normal[n], snap.reach[n]) : std::nullopt) {
         m_side[v] = 0;
-        m_positions[v] += *move;
-        m_positions[v] -= plane.signedDistance(m_positions[v]) * plane.normal;  // rounding
+        Vec3 q = p + *move;
+        q -= plane.signedDistance(q) * plane.normal;  // rounding
+        moved.emplace_back(static_cast<std::int32_t>(v), q);
       } else {
         m_side[v] = d > 0.0 ? 1 : -1;
       }
       if (isNear) ++n;
     }
+    // A face with corners on both sides makes at most two crossings (edges in the plane make none).
+    std::size_t crossingBound = 0;
+    for (const Triangle& t : solid.triangles) {
+      const int s0 = m_side[t[0]], s1 = m_side[t[1]], s2 = m_side[t[2]];
+      if ((s0 < 0 || s1 < 0 || s2 < 0) && (s0 > 0 || s1 > 0 || s2 > 0)) crossingBound += 2;
+    }
+    detail::reserveInHugePages(m_positions, vertexCount + crossingBound);
+    m_positions.assign(solid.vertices.begin(), solid.vertices.end());
+    for (const auto& [v, p] : moved) m_positions[static_cast<std::size_t>(v)] = p;
+    m_crossings.reserve(crossingBound);
   }
 
 

@@ -1,7 +1,7 @@
 #include "multidir/core/mesh/mesh_measure.h"
 
 #include <algorithm>
-#include <unordered_map>
+#include <vector>
 
 #include "detail/union_find.h"
 #include "mesh/edge_groups.h"
@@ -87,13 +87,15 @@ FaceComponents faceComponents(const TriangleMesh& mesh) {
     vertexSets.unite(t[0], t[2]);
   }
   FaceComponents out;
-  out.componentOfFace.resize(mesh.triangles.size());
-  std::unordered_map<std::int32_t, std::int32_t> idOfRoot;
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const std::int32_t root = vertexSets.find(mesh.triangles[f][0]);
-    auto [it, inserted] = idOfRoot.emplace(root, out.count);
-    if (inserted) ++out.count;
-    out.componentOfFace[f] = it->second;
+  // Ids in order of the components' first faces. Roots are vertices, so an array over them finds a root's id
+  // (a hash map was a lookup per face on every cut's part below: docs/architecture.md, "Million-triangle
+  // models"); the faces' ids are written, not value-initialised first.
+  std::vector<std::int32_t> idOfRoot(mesh.vertices.size(), -1);
+  detail::reserveInHugePages(out.componentOfFace, mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles) {
+    std::int32_t& id = idOfRoot[static_cast<std::size_t>(vertexSets.find(t[0]))];
+    if (id < 0) id = out.count++;
+    out.componentOfFace.push_back(id);
   }
   return out;
 }

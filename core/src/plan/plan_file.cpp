@@ -85,10 +85,17 @@ Result<Decomposition> planOnDisk(const Decomposition& plan) {
   std::vector<std::optional<Result<TriangleMesh>>> images(plan.regions.size());
   detail::parallelFor(static_cast<int>(plan.regions.size()), detail::resolveThreadCount(0),
                       [&](int i) { images[static_cast<std::size_t>(i)] = regionOnDisk(plan, static_cast<std::size_t>(i)); });
-  Decomposition onDisk = plan;
+  // Everything but the regions' meshes is copied: the images take their place (copying a million faces only
+  // to drop them filled that much fresh memory). A field added to Region or Decomposition must be named here
+  // (the compiler's missing-initializer warning says so).
+  Decomposition onDisk{plan.clippingPlanes, {}, plan.jgBeforeMm2, plan.jgAfterMm2, plan.cancelled, plan.rotationAxis,
+                       plan.statistics};
+  onDisk.regions.reserve(plan.regions.size());
   for (std::size_t i = 0; i < plan.regions.size(); ++i) {
     if (!*images[i]) return images[i]->error();
-    onDisk.regions[i].mesh = std::move(**images[i]);
+    const Region& region = plan.regions[i];
+    onDisk.regions.push_back(Region{std::move(**images[i]), region.basePlane, region.clippingIndex,
+                                    region.printingDirection, region.angles, region.volumeMm3, region.riskyAreaMm2});
   }
   return onDisk;
 }

@@ -87,6 +87,11 @@ std::size_t cornersMergedAtFloatPrecisionNearPlane(const TriangleMesh& mesh, con
 StlImage stlImage(const TriangleMesh& mesh) {
   StlImage image;
   const std::vector<std::int32_t> first = firstWithSameFloatCorner(mesh, allVertices(mesh));
+  // The image has at most the mesh's vertices and faces: room for them once, in huge pages, instead of a
+  // doubling series of fresh buffers (docs/architecture.md, "Million-triangle models").
+  reserveInHugePages(image.mesh.vertices, mesh.vertices.size());
+  reserveInHugePages(image.mesh.triangles, mesh.triangles.size());
+  reserveInHugePages(image.mesh.origins, mesh.triangles.size());
   std::vector<std::int32_t> map(mesh.vertices.size());
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const auto representative = static_cast<std::size_t>(first[v]);
@@ -102,12 +107,13 @@ StlImage stlImage(const TriangleMesh& mesh) {
     }
   }
   // The loader drops faces with a repeated corner, then every repeat of a face already kept.
-  std::vector<std::pair<std::array<std::int32_t, 3>, std::uint32_t>> byCorners(mesh.triangles.size());
+  std::vector<std::pair<std::array<std::int32_t, 3>, std::uint32_t>> byCorners;
+  reserveInHugePages(byCorners, mesh.triangles.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     std::array<std::int32_t, 3> sorted{};
     for (int k = 0; k < 3; ++k) sorted[k] = map[static_cast<std::size_t>(mesh.triangles[f][k])];
     std::sort(sorted.begin(), sorted.end());
-    byCorners[f] = {sorted, static_cast<std::uint32_t>(f)};
+    byCorners.emplace_back(sorted, static_cast<std::uint32_t>(f));
   }
   std::sort(byCorners.begin(), byCorners.end());
   std::vector<char> repeats(mesh.triangles.size(), 0);
