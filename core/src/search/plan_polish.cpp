@@ -31,6 +31,7 @@
 #include "search/run_decomposition.h"
 #include "plan/stl_image.h"
 #include "search/search_engine.h"
+#include "search/search_schemes.h"
 
 namespace multidir::core {
 namespace detail {
@@ -53,14 +54,6 @@ constexpr int kMaxMovesPerPlane = 4;
 // cheburashka most planes took all four moves in a row at the first step, the polish far from converged, each
 // move costing the ten trial moves; following a direction that works costs two.
 constexpr int kMaxPatternMoves = 4;
-
-// The nodes of a node's chain, the root first: chain[k] is what plane k cuts.
-std::vector<NodePtr> chainOf(NodePtr node) {
-  std::vector<NodePtr> chain;
-  for (; node; node = node->parent) chain.push_back(node);
-  std::reverse(chain.begin(), chain.end());
-  return chain;
-}
 
 std::vector<Plane> planesOf(const std::vector<NodePtr>& chain) {
   std::vector<Plane> planes;
