@@ -12,7 +12,7 @@ seconds=${FUZZ_SECONDS:-60}
 build="$root/build-fuzz"
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer"
 source "$root/scripts/compiler-cache.sh"
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMULTIDIR_BUILD_FUZZERS=ON \
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMULTIDIR_BUILD_FUZZERS=ON -DMULTIDIR_TCMALLOC=OFF \
   -DMULTIDIR_BUILD_GUI=OFF -DMULTIDIR_BUILD_TESTS=OFF -DMULTIDIR_BUILD_BENCH=OFF \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" "${compiler_cache[@]}" >/dev/null
 

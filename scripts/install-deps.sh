@@ -11,6 +11,7 @@ packages=(
   libvtk9-dev libopenmesh-dev libeigen3-dev libmodbus-dev nlohmann-json3-dev libcpp-httplib-dev
   libcgal-dev libgmp-dev libmpfr-dev lib3mf-dev zlib1g-dev libtbb-dev
   libgtest-dev libgmock-dev
+  libgoogle-perftools-dev
   xvfb xauth libgl1-mesa-dri
   prusa-slicer
 )

@@ -11,7 +11,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build-tsan"
 flags="-fsanitize=thread -fno-omit-frame-pointer"
 source "$root/scripts/compiler-cache.sh"
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMULTIDIR_BUILD_GUI=OFF \
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMULTIDIR_BUILD_GUI=OFF -DMULTIDIR_TCMALLOC=OFF \
   -DMULTIDIR_BUILD_BENCH=OFF -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" "${compiler_cache[@]}" >/dev/null
 cmake --build "$build" -j"${MULTIDIR_JOBS:-$(nproc)}" --target multidir_hardware_tests multidir
