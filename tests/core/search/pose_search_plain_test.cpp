@@ -7,35 +7,18 @@
 
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/pose_search.h"
+#include "support/small_pose_search.h"
 #include "support/test_models.h"
 
 using namespace multidir::core;
 
 namespace {
 
-// Small searches (a few normals and beams, as in pose_search_test.cpp), polished as decompose polishes.
-SearchOptions smallOptions(int proxyFaces) {
-  SearchOptions options;
-  options.beamWidth = 2;
-  options.candidates.normalSamples = 40;
-  options.refinementRounds = 0;
-  options.threads = 2;
-  options.proxyFaces = proxyFaces;
-  return options;
-}
+using multidir::test::fewPoses;
+using multidir::test::upY;
 
-PoseOptions fewPoses() {
-  PoseOptions options;
-  options.poses = 6;
-  options.fullSearches = 2;
-  return options;
-}
-
-MachineSpec upY() {
-  MachineSpec machine;
-  machine.up = Vec3::UnitY();
-  return machine;
-}
+// Small searches, polished as decompose polishes.
+SearchOptions smallOptions(int proxyFaces) { return multidir::test::smallSearchOptions(2, proxyFaces); }
 
 // The plain search at the given up and the pose search from it, with the same options.
 struct PlainAndPosed {
