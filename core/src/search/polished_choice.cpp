@@ -36,10 +36,16 @@ Decomposition searchedPolishedChoice(const TriangleMesh& model, const MachineSpe
                                      const SearchOptions& options, JobContext& job,
                                      const SearchProgressSink& progress,
                                      const std::optional<PlatformRegion>& platform) {
-  const bool finalists = options.polish && options.polishFinalists;
   std::vector<Decomposition> others;
   Decomposition plan = runDecomposition(model, machine, options, job, progress, platform, nullptr,
-                                        finalists ? &others : nullptr);
+                                        options.polish && options.polishFinalists ? &others : nullptr);
+  return polishedChoice(model, machine, options, std::move(plan), std::move(others), job, progress, platform);
+}
+
+Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                             Decomposition plan, std::vector<Decomposition> others, JobContext& job,
+                             const SearchProgressSink& progress, const std::optional<PlatformRegion>& platform) {
+  const bool finalists = options.polish && options.polishFinalists;
   Decomposition best = polishedIfAsked(model, machine, options, plan, job, progress, platform);
   // Last, with SearchOptions::searchTails, the regions chosen again after the chosen plan's first planes.
   const auto withTails = [&](Decomposition chosen) {

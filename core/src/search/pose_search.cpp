@@ -79,6 +79,54 @@ bool better(const PoseTrial& a, const PoseTrial& b) {
   return a.pose.contactAreaMm2 > b.pose.contactAreaMm2 + kTieMm2;
 }
 
+// The poses named for a note: "the given up and 2 other poses", "2 poses (ups (0.014, -0.961, -0.277), ...)".
+std::string posesText(const std::vector<PoseCandidate>& poses, const std::vector<int>& which) {
+  const bool given = poses[which.front()].source == PoseSource::Given;
+  const std::size_t others = which.size() - (given ? 1 : 0);
+  if (given)
+    return others == 0 ? "the given up"
+                       : "the given up and " + std::to_string(others) + (others == 1 ? " other pose" : " other poses");
+  std::string ups;
+  for (int i : which) {
+    const Vec3& up = poses[i].up;
+    ups += std::string(ups.empty() ? "" : ", ") + "(" + detail::fixedText(up.x(), 3) + ", " +
+           detail::fixedText(up.y(), 3) + ", " + detail::fixedText(up.z(), 3) + ")";
+  }
+  return std::to_string(others) + (others == 1 ? " pose (up " : " poses (ups ") + ups + ")";
+}
+
+// The plan's first note on a huge model: the mesh each pose was searched on, the poses grouped by it.
+std::string proxySummary(const TriangleMesh& model, const std::vector<PoseCandidate>& poses,
+                         const std::vector<Result<detail::SearchProxy>>& proxies) {
+  std::vector<const Result<detail::SearchProxy>*> meshes;  // in the order first used; an error: the full mesh
+  std::vector<std::vector<int>> posesOn;
+  const auto meshOf = [](const Result<detail::SearchProxy>& p) { return p.ok() ? p->mesh.get() : nullptr; };
+  for (int i = 0; i < static_cast<int>(proxies.size()); ++i) {
+    std::size_t k = 0;
+    while (k < meshes.size() && meshOf(*meshes[k]) != meshOf(proxies[i])) ++k;
+    if (k == meshes.size()) meshes.push_back(&proxies[i]), posesOn.emplace_back();
+    posesOn[k].push_back(i);
+  }
+  const auto meshText = [](const Result<detail::SearchProxy>& p) {
+    if (!p.ok()) return "the full mesh (no faithful proxy: " + p.error().message + ")";
+    char text[256];
+    std::snprintf(text, sizeof text, "a proxy of %zu faces (volume within %.3f %%, tolerance %.2f mm; made in %.2f s)",
+                  p->mesh->faceCount(), p->volumeChangePercent, p->toleranceMm, p->seconds);
+    return std::string(text);
+  };
+  std::string text = "searched the poses on ";
+  if (meshes.size() == 1) {
+    text += meshText(*meshes.front());
+  } else {
+    text += "proxies: ";
+    for (std::size_t k = 0; k < meshes.size(); ++k)
+      text += (k > 0 ? "; " : "") + posesText(poses, posesOn[k]) + " on " + meshText(*meshes[k]);
+  }
+  return text + "; each fully searched pose as the plain search at its up (polished on the mesh searched, its plan cut "
+                "on the full mesh of " + std::to_string(model.faceCount()) +
+         " faces); the other poses' J_G are their cheap scores on the mesh searched";
+}
+
 }  // namespace
 
 const char* poseSourceName(PoseSource source) {
@@ -200,45 +248,45 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   single.threads = 1;  // parallel across poses instead
   SearchOptions cheap = single;
   cheap.scheme = poseOptions.cheapScheme;
+  // The cheap plan is this pose's search when the search asked for is the cheap scheme: then it is kept, with
+  // the finalists polishing needs, and polished as the plain search polishes its own.
+  const bool reuseCheap = options.scheme == poseOptions.cheapScheme;
+  const bool keepStarts = reuseCheap && options.polish && options.polishFinalists;
 
-  // A huge model is searched on one proxy, made once for every pose (its tolerance checked along each
-  // candidate's up); each fully searched pose's plan is then cut on the full mesh, so the plans compared and the
-  // one returned are the full mesh's (docs/search.md, "The pose search").
-  std::optional<detail::SearchProxy> proxy;
-  std::vector<std::string> notes;
-  if (detail::needsProxy(model, options)) {
+  // A huge model: each pose is searched on the proxy the plain search at its up uses (the tolerant one, or the
+  // strict one where the tolerant moved too much of that up's risky area), each made once; each fully searched
+  // pose's plan is then cut on the full mesh, so the plans compared and the one returned are the full mesh's
+  // (docs/search.md, "The pose search").
+  const bool onProxies = detail::needsProxy(model, options);
+  std::vector<Result<detail::SearchProxy>> proxies;
+  if (onProxies) {
     std::vector<Vec3> ups;
     for (const PoseCandidate& pose : candidates) ups.push_back(pose.up);
     SearchOptions making = options;
     making.threads = threads;
-    auto made = detail::makeSearchProxy(model, ups, making);
-    if (made.ok()) proxy = std::move(*made);
-    else notes.push_back("searched the full mesh: no faithful proxy (" + made.error().message + ")");
+    proxies = detail::makeSearchProxies(model, ups, making);
   }
-  // Per pose: the mesh searched, with its options and platform region (the full model's, on a proxy).
+  const auto proxyOf = [&](int i) { return onProxies && proxies[i].ok() ? proxies[i]->mesh.get() : nullptr; };
+  // Per pose on a proxy: the options and platform region there (the full model's).
   std::vector<std::optional<detail::ProxySearchSetup>> setups(count);
-  if (proxy)
-    for (int i = 0; i < count; ++i)
-      setups[i] = detail::proxySearchSetup(model, proxy->mesh, machineForPose(machine, candidates[i].up), single);
-  auto searchPose = [&](int i, const SearchOptions& o) {
-    const MachineSpec posed = machineForPose(machine, candidates[i].up);
-    if (!setups[i]) return detail::runDecomposition(model, posed, o, job, {});
-    SearchOptions onProxy = setups[i]->options;
-    onProxy.scheme = o.scheme;
-    return detail::runDecomposition(proxy->mesh, posed, onProxy, job, {}, setups[i]->platform);
-  };
+  for (int i = 0; i < count; ++i)
+    if (proxyOf(i))
+      setups[i] = detail::proxySearchSetup(model, *proxyOf(i), machineForPose(machine, candidates[i].up), single);
 
   std::vector<PoseTrial> trials(count);
-  std::vector<std::optional<Decomposition>> cheapPlans(count);  // on a proxy, the proxy's cheap plans
-  std::vector<std::optional<Decomposition>> plans(count);       // of the model
+  std::vector<std::optional<Decomposition>> cheapPlans(count);  // of the mesh searched: the model or its proxy
+  std::vector<std::vector<Decomposition>> polishStarts(count);   // the cheap searches' finalists, when kept
+  std::vector<std::optional<Decomposition>> plans(count);       // of the model, searched in full
   const int searches = std::min(poseOptions.fullSearches, count);
   std::atomic<int> finished{0};
   const double steps = count + 4.0 * searches;  // a full search costs a few cheap ones
   // The plan of pose i on the model: a proxy's plan cut on the full mesh, else the plan itself.
   auto onModel = [&](int i, Decomposition plan) {
     if (!setups[i]) return plan;
-    return detail::cutOnFullMesh(model, machineForPose(machine, candidates[i].up), single, job, setups[i]->platform,
+    plan = detail::cutOnFullMesh(model, machineForPose(machine, candidates[i].up), single, job, setups[i]->platform,
                                  plan);
+    plan.statistics.proxyFaces = static_cast<int>(proxyOf(i)->faceCount());
+    return plan;
   };
   // 1. Cheap score per pose (on a proxy: the proxy's J_G, which only ranks the poses).
   detail::parallelFor(count, threads, [&](int i) {
@@ -246,19 +294,29 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     const auto t0 = std::chrono::steady_clock::now();
     PoseTrial& trial = trials[i];
     trial.pose = candidates[i];
-    Decomposition plan = searchPose(i, cheap);
+    const MachineSpec posed = machineForPose(machine, candidates[i].up);
+    std::vector<Decomposition>* starts = keepStarts ? &polishStarts[i] : nullptr;
+    Decomposition plan;
+    if (setups[i]) {
+      SearchOptions onProxy = setups[i]->options;
+      onProxy.scheme = cheap.scheme;
+      plan = detail::runDecomposition(*proxyOf(i), posed, onProxy, job, {}, setups[i]->platform, nullptr, starts);
+    } else {
+      plan = detail::runDecomposition(model, posed, cheap, job, {}, std::nullopt, nullptr, starts);
+    }
     trial.cheapJgMm2 = trial.jgAfterMm2 = plan.jgAfterMm2;
     trial.regions = static_cast<int>(plan.regions.size());
     trial.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    (proxy ? cheapPlans[i] : plans[i]) = std::move(plan);  // without a proxy, the model's own plan
+    cheapPlans[i] = std::move(plan);
     job.setProgress(++finished / steps, "pose scores");
   });
   for (int i = 0; i < count; ++i) trials[i].pose = candidates[i];
 
-  // 2. The full search on the given up and the best-scored others.
+  // 2. The full search on the given up and the best-scored others: each the plain search at its up
+  // (searchedAndPolished), on the proxy it would use.
   std::vector<int> order;
   for (int i = givenStands ? 1 : 0; i < count; ++i)
-    if (cheapPlans[i] || plans[i]) order.push_back(i);
+    if (cheapPlans[i]) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return trials[a].cheapJgMm2 < trials[b].cheapJgMm2; });
   std::vector<int> chosen;
   if (givenStands) chosen.push_back(0);
@@ -275,6 +333,22 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
           detail::unavoidableRiskyAreaMm2(model, posed, platformRegionFor(model, posed, options.platformToleranceMm),
                                           options.alphaMaxDegrees, options.supportedBandMm);
     });
+  // Pose i's plan as the plain search delivers it, polished on `mesh` (the model, or its proxy with the full
+  // model's platform region); from the cheap plan when that is the search asked for (its cheap plan kept for a
+  // cancel).
+  auto polishedOn = [&](int i, const TriangleMesh& mesh, const SearchOptions& o,
+                        const std::optional<PlatformRegion>& platform) {
+    const MachineSpec posed = machineForPose(machine, candidates[i].up);
+    if (!reuseCheap) return detail::searchedPolishedChoice(mesh, posed, o, job, {}, platform);
+    return detail::polishedChoice(mesh, posed, o, *cheapPlans[i], std::move(polishStarts[i]), job, {}, platform);
+  };
+  auto fullSearch = [&](int i) -> Result<Decomposition> {
+    if (!onProxies) return polishedOn(i, model, single, std::nullopt);
+    return detail::searchedOnProxy(model, machineForPose(machine, candidates[i].up), single, job, proxies[i],
+                                   [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
+                                     return Result<Decomposition>(polishedOn(i, mesh, o, p));
+                                   });
+  };
   std::mutex bestMutex;
   double bestSearchedJg = INFINITY;
   int skipped = 0;
@@ -290,52 +364,38 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
       }
     }
     const auto t0 = std::chrono::steady_clock::now();
-    // The cheap scheme's plan is already this pose's search when the search asked for is that scheme.
-    Decomposition plan = options.scheme != poseOptions.cheapScheme ? searchPose(i, single)
-                                                                   : *(proxy ? cheapPlans[i] : plans[i]);
-    if (plan.cancelled) return;  // keep the finished cheap plan
-    plan = onModel(i, std::move(plan));
+    Result<Decomposition> plan = fullSearch(i);
+    if (!plan.ok() || plan->cancelled) return;  // keep the finished cheap plan
     std::lock_guard<std::mutex> lock(bestMutex);
     trials[i].searched = true;
-    trials[i].jgAfterMm2 = plan.jgAfterMm2;
-    trials[i].regions = static_cast<int>(plan.regions.size());
+    trials[i].jgAfterMm2 = plan->jgAfterMm2;
+    trials[i].regions = static_cast<int>(plan->regions.size());
     trials[i].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    bestSearchedJg = std::min(bestSearchedJg, plan.jgAfterMm2);
-    plans[i] = std::move(plan);
+    bestSearchedJg = std::min(bestSearchedJg, plan->jgAfterMm2);
+    plans[i] = std::move(*plan);
     job.setProgress((finished += 4) / steps, "pose searches");
   });
-  // Cancelled on a proxy before any pose was searched in full: the best cheap plan, cut on the model.
-  if (proxy && std::none_of(plans.begin(), plans.end(), [](const auto& p) { return p.has_value(); })) {
+  // Cancelled before any pose was searched in full: the best cheap plan, on the model.
+  if (std::none_of(plans.begin(), plans.end(), [](const auto& p) { return p.has_value(); })) {
     int cheapest = -1;
     for (int i = 0; i < count; ++i)
-      if (cheapPlans[i] && (cheapest < 0 || trials[i].cheapJgMm2 < trials[cheapest].cheapJgMm2)) cheapest = i;
+      if (cheapPlans[i] && (cheapest < 0 || better(trials[i], trials[cheapest]))) cheapest = i;
     if (cheapest >= 0) {
       plans[cheapest] = onModel(cheapest, *cheapPlans[cheapest]);
       trials[cheapest].jgAfterMm2 = plans[cheapest]->jgAfterMm2;
       trials[cheapest].regions = static_cast<int>(plans[cheapest]->regions.size());
     }
   }
-  if (proxy) {
-    char summary[512];
-    std::snprintf(summary, sizeof summary,
-                  "searched the poses on a proxy of %zu faces (volume within %.3f %%, %s; made in %.2f s), each "
-                  "fully searched pose's plan cut on the full mesh of %zu faces; the other poses' J_G are the "
-                  "proxy's cheap scores",
-                  proxy->mesh.faceCount(), proxy->volumeChangePercent, proxy->toleranceNote.c_str(), proxy->seconds,
-                  model.faceCount());
-    notes.insert(notes.begin(), summary);
-  }
+  std::vector<std::string> notes;
+  if (onProxies) notes.push_back(proxySummary(model, candidates, proxies));
   if (skipped > 0)
     notes.push_back(std::to_string(skipped) +
                     " poses not searched in full: their unavoidable risky area is above the best plan's J_G");
 
   // 3. The best fully searched plan; when cancelled, the best plan that finished.
   int best = -1;
-  for (int i = 0; i < count; ++i) {
-    if (!plans[i] || (!trials[i].searched && std::any_of(trials.begin(), trials.end(), [](const PoseTrial& t) { return t.searched; })))
-      continue;
-    if (best < 0 || better(trials[i], trials[best])) best = i;
-  }
+  for (int i = 0; i < count; ++i)
+    if (plans[i] && (best < 0 || better(trials[i], trials[best]))) best = i;
   if (best < 0) return Error{ErrorCode::Cancelled, "the pose search was cancelled before any pose finished", "pose search"};
   PoseSearchResult result;
   result.plan = std::move(*plans[best]);
@@ -347,7 +407,6 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.plan.statistics.seconds = result.seconds;  // the whole pose search, as the time it took to get the plan
   result.plan.statistics.threads = threads;
-  if (proxy) result.plan.statistics.proxyFaces = static_cast<int>(proxy->mesh.faceCount());
   std::vector<std::string>& planNotes = result.plan.statistics.notes;
   planNotes.insert(planNotes.begin(), notes.begin(), notes.end());
   if (!refusal.empty()) planNotes.push_back(refusal);

@@ -15,6 +15,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "multidir/core/analysis/overhang.h"
@@ -63,6 +65,11 @@ double riskyAlongUp(const TriangleMesh& mesh, const Vec3& up, const SearchOption
   return analysis.ok() ? analysis->riskyAreaMm2 : 0.0;
 }
 
+// How much of the model's risky area along an up a proxy's differs by, in percent.
+double riskyChangePercent(double modelRisky, double proxyRisky) {
+  return 100.0 * std::abs(proxyRisky - modelRisky) / std::max(modelRisky, 1e-9);
+}
+
 std::string tolerance(double toleranceMm, double riskyChangePercent) {
   char text[128];
   std::snprintf(text, sizeof text, "tolerance %.2f mm moved %.1f %% of the risky area along up", toleranceMm,
@@ -80,37 +87,55 @@ std::string millimetres(double value) { return detail::fixedText(value, 2, true)
 
 }  // namespace
 
-Result<SearchProxy> makeSearchProxy(const TriangleMesh& model, const std::vector<Vec3>& ups,
-                                    const SearchOptions& options) {
+std::vector<Result<SearchProxy>> makeSearchProxies(const TriangleMesh& model, const std::vector<Vec3>& ups,
+                                                  const SearchOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  auto proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kProxyToleranceMm,
-                         kProxyMaxVolumeChangePercent, options.threads, kProxyFloorFaces, kStrictProxyToleranceMm);
-  if (!proxy.ok()) return proxy.error();
-  // The largest share of the risky area the collapses moved over the ups the proxy is searched for (one for a
-  // search, every candidate pose for the pose search): the proxy must show each search the overhangs it has.
-  auto largestRiskyChangePercent = [&](const TriangleMesh& mesh, bool& significant) {
-    double largest = 0.0;
-    significant = false;
-    for (const Vec3& up : ups) {
-      const double modelRisky = riskyAlongUp(model, up, options);
-      const double change = 100.0 * std::abs(riskyAlongUp(mesh, up, options) - modelRisky) / std::max(modelRisky, 1e-9);
-      if (modelRisky > options.minPlaneGainMm2 && change > kProxyMaxRiskyChangePercent) significant = true;
-      largest = std::max(largest, change);
+  auto made = decimated(model, static_cast<std::size_t>(options.proxyFaces), kProxyToleranceMm,
+                        kProxyMaxVolumeChangePercent, options.threads, kProxyFloorFaces, kStrictProxyToleranceMm);
+  if (!made.ok()) return std::vector<Result<SearchProxy>>(ups.size(), made.error());
+  const SearchProxy tolerant{std::make_shared<const TriangleMesh>(std::move(made->mesh)), kProxyToleranceMm,
+                             made->volumeChangePercent, "", secondsSince(start)};
+  // The strict proxy, made once, for the first up whose search needs it.
+  std::optional<Result<SearchProxy>> strict;
+  std::vector<Result<SearchProxy>> proxies;
+  for (const Vec3& up : ups) {
+    // The share of the risky area along this up the collapses moved: the proxy must show the search the
+    // overhangs it has.
+    const double modelRisky = riskyAlongUp(model, up, options);
+    const double change = riskyChangePercent(modelRisky, riskyAlongUp(*tolerant.mesh, up, options));
+    std::string note = tolerance(kProxyToleranceMm, change);
+    if (!(modelRisky > options.minPlaneGainMm2 && change > kProxyMaxRiskyChangePercent)) {
+      SearchProxy proxy = tolerant;
+      proxy.toleranceNote = std::move(note);
+      proxies.emplace_back(std::move(proxy));
+      continue;
     }
-    return largest;
-  };
-  bool tooMuch = false;
-  const double changePercent = largestRiskyChangePercent(proxy->mesh, tooMuch);
-  std::string toleranceNote = tolerance(kProxyToleranceMm, changePercent);
-  if (tooMuch) {
-    proxy = decimated(model, static_cast<std::size_t>(options.proxyFaces), kStrictProxyToleranceMm,
-                      kProxyMaxVolumeChangePercent, options.threads);
-    if (!proxy.ok()) return proxy.error();
-    bool ignored = false;
-    toleranceNote += ", more than " + std::to_string(static_cast<int>(kProxyMaxRiskyChangePercent)) +
-                     " %: made again, " + tolerance(kStrictProxyToleranceMm, largestRiskyChangePercent(proxy->mesh, ignored));
+    if (!strict) {
+      const auto strictStart = std::chrono::steady_clock::now();
+      auto remade = decimated(model, static_cast<std::size_t>(options.proxyFaces), kStrictProxyToleranceMm,
+                              kProxyMaxVolumeChangePercent, options.threads);
+      if (remade.ok())
+        strict = SearchProxy{std::make_shared<const TriangleMesh>(std::move(remade->mesh)), kStrictProxyToleranceMm,
+                             remade->volumeChangePercent, "", tolerant.seconds + secondsSince(strictStart)};
+      else
+        strict = remade.error();
+    }
+    if (!strict->ok()) {
+      proxies.emplace_back(strict->error());
+      continue;
+    }
+    SearchProxy proxy = **strict;
+    proxy.toleranceNote = std::move(note) + ", more than " +
+                          std::to_string(static_cast<int>(kProxyMaxRiskyChangePercent)) + " %: made again, " +
+                          tolerance(kStrictProxyToleranceMm,
+                                    riskyChangePercent(modelRisky, riskyAlongUp(*proxy.mesh, up, options)));
+    proxies.emplace_back(std::move(proxy));
   }
-  return SearchProxy{std::move(proxy->mesh), proxy->volumeChangePercent, std::move(toleranceNote), secondsSince(start)};
+  return proxies;
+}
+
+Result<SearchProxy> makeSearchProxy(const TriangleMesh& model, const Vec3& up, const SearchOptions& options) {
+  return std::move(makeSearchProxies(model, {up}, options).front());
 }
 
 ProxySearchSetup proxySearchSetup(const TriangleMesh& model, const TriangleMesh& proxy, const MachineSpec& machine,
@@ -178,10 +203,10 @@ Decomposition cutOnFullMesh(const TriangleMesh& model, const MachineSpec& machin
   return plan;
 }
 
-Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
-                                            const SearchOptions& options, JobContext& job, const ProxySearchRun& search) {
+Result<Decomposition> searchedOnProxy(const TriangleMesh& model, const MachineSpec& machine,
+                                      const SearchOptions& options, JobContext& job, const Result<SearchProxy>& proxy,
+                                      const ProxySearchRun& search) {
   const auto start = std::chrono::steady_clock::now();
-  auto proxy = makeSearchProxy(model, {machine.up}, options);
   if (!proxy.ok()) {
     SearchOptions full = options;
     full.proxyFaces = 0;
@@ -190,24 +215,34 @@ Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const Mac
       plan->statistics.notes.push_back("searched the full mesh: no faithful proxy (" + proxy.error().message + ")");
     return plan;
   }
-  const ProxySearchSetup setup = proxySearchSetup(model, proxy->mesh, machine, options);
-  const Result<Decomposition> searched = search(proxy->mesh, setup.options, setup.platform);
+  const TriangleMesh& mesh = *proxy->mesh;
+  const ProxySearchSetup setup = proxySearchSetup(model, mesh, machine, options);
+  const Result<Decomposition> searched = search(mesh, setup.options, setup.platform);
   if (!searched.ok()) return searched.error();
   const Decomposition& proxyPlan = *searched;
   const auto cutsStart = std::chrono::steady_clock::now();
   Decomposition plan = cutOnFullMesh(model, machine, options, job, setup.platform, proxyPlan);
-  plan.statistics.proxyFaces = static_cast<int>(proxy->mesh.faceCount());
+  plan.statistics.proxyFaces = static_cast<int>(mesh.faceCount());
   std::vector<std::string>& notes = plan.statistics.notes;
   char summary[512];
   std::snprintf(summary, sizeof summary,
                 "searched a proxy of %zu faces (volume within %.3f %%, %s; made in %.2f s, searched in %.2f s), "
                 "then cut the full mesh of %zu faces (%.2f s)",
-                proxy->mesh.faceCount(), proxy->volumeChangePercent, proxy->toleranceNote.c_str(), proxy->seconds,
+                mesh.faceCount(), proxy->volumeChangePercent, proxy->toleranceNote.c_str(), proxy->seconds,
                 proxyPlan.statistics.seconds, model.faceCount(), secondsSince(cutsStart));
   notes.insert(notes.begin(), summary);
   // The proxy search's own notes (its polishing) after the summary, before what the full mesh changed.
   notes.insert(notes.begin() + 1, proxyPlan.statistics.notes.begin(), proxyPlan.statistics.notes.end());
   plan.statistics.seconds = secondsSince(start);
+  return plan;
+}
+
+Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
+                                            const SearchOptions& options, JobContext& job, const ProxySearchRun& search) {
+  const auto start = std::chrono::steady_clock::now();
+  const Result<SearchProxy> proxy = makeSearchProxy(model, machine.up, options);
+  Result<Decomposition> plan = searchedOnProxy(model, machine, options, job, proxy, search);
+  if (plan.ok() && proxy.ok()) plan->statistics.seconds = secondsSince(start);  // the proxy's making too
   return plan;
 }
 

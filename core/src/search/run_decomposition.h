@@ -38,17 +38,29 @@ using ProxySearchRun = std::function<Result<Decomposition>(const TriangleMesh& m
 Result<Decomposition> runProxyDecomposition(const TriangleMesh& model, const MachineSpec& machine,
                                             const SearchOptions& options, JobContext& job, const ProxySearchRun& search);
 
-// The proxy a huge model is searched on (docs/search.md, "Million-triangle models"), made once: decimated within
-// the proxy's tolerance, made again with the strict one when that moved more than a tenth of the risky area
-// along any of `ups` (the ups it will be searched for). An error when no faithful proxy can be made.
+// The proxy a huge model is searched on along `up` (docs/search.md, "Million-triangle models"): decimated
+// within the proxy's tolerance, made again with the strict one when that moved more than a tenth of the risky
+// area along `up`. An error when no faithful proxy can be made.
 struct SearchProxy {
-  TriangleMesh mesh;
+  std::shared_ptr<const TriangleMesh> mesh;  // shared by the searches along several ups (makeSearchProxies)
+  double toleranceMm = 0.0;                  // the collapses' tolerance below the face count
   double volumeChangePercent = 0.0;
-  std::string toleranceNote;  // the tolerance used and the risky area it moved, for the plan's notes
+  std::string toleranceNote;  // the tolerance used and the risky area it moved along up, for the plan's notes
   double seconds = 0.0;       // to make it
 };
-Result<SearchProxy> makeSearchProxy(const TriangleMesh& model, const std::vector<Vec3>& ups,
-                                    const SearchOptions& options);
+Result<SearchProxy> makeSearchProxy(const TriangleMesh& model, const Vec3& up, const SearchOptions& options);
+
+// For each of `ups`, the proxy makeSearchProxy(model, up, options) makes (the pose search's poses), each mesh
+// made at most once: the tolerant proxy, and the strict one only when some up needs it (the ups that share a
+// mesh share its shared_ptr). The decimation of a million faces costs about 0.8 s.
+std::vector<Result<SearchProxy>> makeSearchProxies(const TriangleMesh& model, const std::vector<Vec3>& ups,
+                                                  const SearchOptions& options);
+
+// runProxyDecomposition's search on a proxy already made: `search` on it, its plan cut on the full mesh, and
+// the notes saying so; without a proxy (`proxy` an error), `search` on the model with the reason in the notes.
+Result<Decomposition> searchedOnProxy(const TriangleMesh& model, const MachineSpec& machine,
+                                      const SearchOptions& options, JobContext& job, const Result<SearchProxy>& proxy,
+                                      const ProxySearchRun& search);
 
 // The options and platform region a search of `proxy` for `machine` uses: the full model's platform region,
 // Criterion II's tolerance grown by how far the proxy's lowest point lies above the model's.
@@ -77,17 +89,25 @@ Result<Decomposition> polishDecomposition(const TriangleMesh& model, const Machi
                                           const SearchProgressSink& progress,
                                           const std::optional<PlatformRegion>& platform);
 
-// The plan polished when options.polish is set and the search was not cancelled; else (or when polishing
-// refuses the plan, which a note then says) the plan as it is.
 // The search's plan polished as polishedIfAsked does; with options.polishFinalists (and polishing on), also each
 // finalist of the search without its unpaid planes, one after the other, and the least J_G after polishing
-// delivered (ties: the earlier, the search's own plan first). Only the first polish reports progress: the
-// others start above the J_G already reported. The same plan for any thread count.
+// delivered (ties: the earlier, the search's own plan first); then, with options.searchTails, its tails searched
+// again (tail_search.h). Only the first polish reports progress: the others start above the J_G already
+// reported. The same plan for any thread count.
 Decomposition searchedPolishedChoice(const TriangleMesh& model, const MachineSpec& machine,
                                      const SearchOptions& options, JobContext& job,
                                      const SearchProgressSink& progress,
                                      const std::optional<PlatformRegion>& platform = std::nullopt);
 
+// The same for a search already run: `plan` is runDecomposition's plan for these arguments and `polishStarts`
+// its polishStarts (empty unless options.polishFinalists and polishing are on).
+Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                             Decomposition plan, std::vector<Decomposition> polishStarts, JobContext& job,
+                             const SearchProgressSink& progress,
+                             const std::optional<PlatformRegion>& platform = std::nullopt);
+
+// The plan polished when options.polish is set and the search was not cancelled; else (or when polishing
+// refuses the plan, which a note then says) the plan as it is.
 Decomposition polishedIfAsked(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                              Decomposition plan, JobContext& job, const SearchProgressSink& progress,
                              const std::optional<PlatformRegion>& platform = std::nullopt);

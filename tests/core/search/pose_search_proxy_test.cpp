@@ -1,5 +1,5 @@
-// The pose search of a model above the proxy's face count: the poses are searched on one proxy, and each
-// fully searched pose's plan is cut on the full mesh (docs/search.md, "The pose search").
+// The pose search of a model above the proxy's face count: each pose is searched on the proxy decompose at its
+// up uses, and each fully searched pose's plan is cut on the full mesh (docs/search.md, "The pose search").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,35 +7,16 @@
 
 #include "multidir/core/search/plan_from_planes.h"
 #include "multidir/core/search/pose_search.h"
+#include "support/small_pose_search.h"
 #include "support/test_models.h"
 
 using namespace multidir::core;
 
 namespace {
 
-// Small searches (a few normals and beams), as in pose_search_test.cpp.
-SearchOptions smallOptions(int threads, int proxyFaces) {
-  SearchOptions options;
-  options.beamWidth = 2;
-  options.candidates.normalSamples = 40;
-  options.refinementRounds = 0;
-  options.threads = threads;
-  options.proxyFaces = proxyFaces;
-  return options;
-}
-
-PoseOptions fewPoses() {
-  PoseOptions options;
-  options.poses = 6;
-  options.fullSearches = 2;
-  return options;
-}
-
-MachineSpec upY() {
-  MachineSpec machine;
-  machine.up = Vec3::UnitY();
-  return machine;
-}
+using multidir::test::fewPoses;
+using multidir::test::upY;
+using multidir::test::smallSearchOptions;
 
 PoseSearchResult poseSearch(const TriangleMesh& model, const SearchOptions& options) {
   JobContext job;
@@ -49,9 +30,9 @@ PoseSearchResult poseSearch(const TriangleMesh& model, const SearchOptions& opti
 struct PoseSearchOnAProxy : ::testing::Test {
   static void SetUpTestSuite() {
     kitten = new TriangleMesh(multidir::test::loadSharedModel("kitten.off"));
-    onProxy = new PoseSearchResult(poseSearch(*kitten, smallOptions(1, 4000)));
-    onProxyTwoThreads = new PoseSearchResult(poseSearch(*kitten, smallOptions(2, 4000)));
-    onFullMesh = new PoseSearchResult(poseSearch(*kitten, smallOptions(1, 0)));
+    onProxy = new PoseSearchResult(poseSearch(*kitten, smallSearchOptions(1, 4000)));
+    onProxyTwoThreads = new PoseSearchResult(poseSearch(*kitten, smallSearchOptions(2, 4000)));
+    onFullMesh = new PoseSearchResult(poseSearch(*kitten, smallSearchOptions(1, 0)));
   }
   static void TearDownTestSuite() {
     delete kitten;

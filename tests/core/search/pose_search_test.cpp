@@ -7,28 +7,16 @@
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/pose_search.h"
 #include "support/primitives.h"
+#include "support/small_pose_search.h"
 #include "support/test_models.h"
 
 using namespace multidir::core;
 
 namespace {
 
-// Small searches: a few normals and beams keep each pose's search to a fraction of a second.
-SearchOptions smallOptions(int threads = 1) {
-  SearchOptions options;
-  options.beamWidth = 2;
-  options.candidates.normalSamples = 40;
-  options.refinementRounds = 0;
-  options.threads = threads;
-  return options;
-}
+using multidir::test::fewPoses;
 
-PoseOptions fewPoses(int poses = 6, int searches = 2) {
-  PoseOptions options;
-  options.poses = poses;
-  options.fullSearches = searches;
-  return options;
-}
+SearchOptions smallOptions(int threads = 1) { return multidir::test::smallSearchOptions(threads); }
 
 bool parallel(const Vec3& a, const Vec3& b) { return a.normalized().dot(b.normalized()) > 1 - 1e-9; }
 

@@ -1,10 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "multidir/core/analysis/overhang.h"
 #include "multidir/core/mesh/mesh_measure.h"
 #include "multidir/core/mesh/mesh_resolution.h"
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/plan_from_planes.h"
+#include "multidir/core/search/pose_search.h"
+#include "search/run_decomposition.h"
 #include "support/test_models.h"
 
 using namespace multidir::core;
@@ -161,4 +165,33 @@ TEST(ProxyTolerance, ScanNoiseAPrinterCannotResolveIsSimplifiedAwayAndTheNoteSay
   EXPECT_LE(plan.statistics.proxyFaces, 10000);
   ASSERT_FALSE(plan.statistics.notes.empty());
   EXPECT_NE(plan.statistics.notes.front().find("of the risky area along up"), std::string::npos);
+}
+
+TEST(ProxyTolerance, EachOfSeveralUpsGetsTheProxyItsOwnSearchMakesAndEachProxyIsMadeOnce) {
+  // The fandisk with 16 times its faces and 0.05 mm of noise, along twelve of its poses: along two of them the
+  // proxy's tolerance moved more than a tenth of the risky area (the strict proxy), along the others not.
+  TriangleMesh noisy = subdivided(multidir::test::loadSharedModel("fandisk.off"), 2).value();
+  addNoise(noisy, 0.05);
+  SearchOptions options;
+  options.proxyFaces = static_cast<int>(noisy.faceCount() / 3);
+  PoseOptions twelve;
+  twelve.poses = 12;
+  const auto poses = candidatePoses(noisy, Vec3::UnitY(), twelve, options);
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  std::vector<Vec3> ups;
+  for (const PoseCandidate& pose : *poses) ups.push_back(pose.up);
+  const std::vector<Result<detail::SearchProxy>> proxies = detail::makeSearchProxies(noisy, ups, options);
+  ASSERT_EQ(proxies.size(), ups.size());
+  std::set<const TriangleMesh*> meshes, strict;
+  for (std::size_t u = 0; u < ups.size(); ++u) {
+    const Result<detail::SearchProxy> own = detail::makeSearchProxy(noisy, ups[u], options);
+    ASSERT_TRUE(own.ok() && proxies[u].ok()) << "up " << u;
+    EXPECT_EQ(proxies[u]->mesh->faceCount(), own->mesh->faceCount()) << "up " << u;
+    EXPECT_TRUE(proxies[u]->mesh->vertices == own->mesh->vertices) << "up " << u;
+    EXPECT_EQ(proxies[u]->toleranceNote, own->toleranceNote) << "up " << u;
+    meshes.insert(proxies[u]->mesh.get());
+    if (proxies[u]->toleranceMm < 0.1) strict.insert(proxies[u]->mesh.get());
+  }
+  EXPECT_EQ(meshes.size(), 2u);  // the tolerant proxy and the strict one, each made once
+  EXPECT_EQ(strict.size(), 1u);
 }

@@ -6,8 +6,10 @@
 // holds the centre of mass (no pose balances on a point or an edge, or tips over). Candidates are the user's
 // up (tried only if it stands) and the model's standing poses: the largest contacts, then the ones farthest
 // from those taken, so the directions are covered. Each gets a cheap score (the J_G of a greedy plan); the
-// best few, always with the user's up, get the full search; the plan with the least J_G wins (ties: fewer
-// regions, then the larger contact area), so the result is never worse than a given up the model stands in.
+// best few, always with the user's up, get the full search, each the plain search (decompose) at that pose:
+// polished, and on a huge model on the proxy decompose at that up uses; the plan with the least J_G wins (ties:
+// fewer regions, then the larger contact area), so the result is never worse than decompose at a given up the
+// model stands in.
 #include <vector>
 
 #include "multidir/core/common/job_context.h"
