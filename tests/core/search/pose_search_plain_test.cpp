@@ -25,76 +25,97 @@ struct PlainAndPosed {
   Decomposition plain;
   PoseSearchResult posed;
 
-  static PlainAndPosed of(const TriangleMesh& model, const SearchOptions& options) {
+  static PlainAndPosed of(const TriangleMesh& model, const SearchOptions& options, MachineSpec machine = upY(),
+                          const PoseOptions& poses = fewPoses()) {
     JobContext plainJob, posedJob;
-    auto plain = decompose(model, upY(), options, plainJob);
+    auto plain = decompose(model, machine, options, plainJob);
     if (!plain.ok()) throw std::runtime_error(plain.error().describe());
-    auto posed = decomposeWithPoseSearch(model, upY(), options, fewPoses(), posedJob);
+    auto posed = decomposeWithPoseSearch(model, machine, options, poses, posedJob);
     if (!posed.ok()) throw std::runtime_error(posed.error().describe());
     return PlainAndPosed{std::move(*plain), std::move(*posed)};
   }
 
-  // The trial of the given up, which the kitten stands in along +Y: the first one.
+  // The trial of the given up: the first one.
   const PoseTrial& givenTrial() const {
     const PoseTrial& trial = posed.trials.front();
-    if (trial.pose.source != PoseSource::Given) throw std::runtime_error("the given up does not stand");
+    if (trial.pose.source != PoseSource::Given) throw std::runtime_error("the first trial is not the given up");
     return trial;
   }
 };
 
-// The kitten (10,000 faces) on its full mesh and on proxies of at most 4,000 faces; and on its full mesh with
-// the cheap score's scheme, whose plans the pose search reuses.
-struct PoseSearchOfTheGivenUp : ::testing::Test {
-  static void SetUpTestSuite() {
-    const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
-    onFullMesh = new PlainAndPosed(PlainAndPosed::of(kitten, smallOptions(0)));
-    onProxy = new PlainAndPosed(PlainAndPosed::of(kitten, smallOptions(4000)));
+// Each case made on first use (ctest runs each test in a process of its own): the kitten (10,000 faces), which
+// stands along +Y, on its full mesh and on proxies of at most 4,000 faces; on its full mesh with the cheap
+// score's scheme, whose plans the pose search reuses; and the cheburashka on the apart machine, whose plain search
+// is its own.
+const TriangleMesh& kitten() {
+  static const TriangleMesh mesh = multidir::test::loadSharedModel("kitten.off");
+  return mesh;
+}
+const PlainAndPosed& onFullMesh() {
+  static const PlainAndPosed result = PlainAndPosed::of(kitten(), smallOptions(0));
+  return result;
+}
+const PlainAndPosed& onProxy() {
+  static const PlainAndPosed result = PlainAndPosed::of(kitten(), smallOptions(4000));
+  return result;
+}
+const PlainAndPosed& greedyOnFullMesh() {
+  static const PlainAndPosed result = [] {
     SearchOptions greedy = smallOptions(0);
     greedy.scheme = fewPoses().cheapScheme;  // the pose search's cheap plans are then its searches
-    greedyOnFullMesh = new PlainAndPosed(PlainAndPosed::of(kitten, greedy));
-  }
-  static void TearDownTestSuite() {
-    delete onFullMesh;
-    delete onProxy;
-    delete greedyOnFullMesh;
-  }
-  static PlainAndPosed* onFullMesh;
-  static PlainAndPosed* onProxy;
-  static PlainAndPosed* greedyOnFullMesh;
-};
-PlainAndPosed* PoseSearchOfTheGivenUp::onFullMesh = nullptr;
-PlainAndPosed* PoseSearchOfTheGivenUp::onProxy = nullptr;
-PlainAndPosed* PoseSearchOfTheGivenUp::greedyOnFullMesh = nullptr;
+    return PlainAndPosed::of(kitten(), greedy);
+  }();
+  return result;
+}
+// The cheburashka does not stand along +Y, so every pose is searched in full for the given one to be; there the
+// apart machine's own choice (a plan printed apart with fewer parts) differs from its search's best.
+const PlainAndPosed& apartOnFullMesh() {
+  static const PlainAndPosed result = [] {
+    MachineSpec apart = upY();
+    apart.kind = MachineKind::Apart;
+    return PlainAndPosed::of(multidir::test::loadSharedModel("cheburashka.off"), smallOptions(0), apart,
+                             fewPoses(3, 3));
+  }();
+  return result;
+}
 
 }  // namespace
 
-TEST_F(PoseSearchOfTheGivenUp, IsThePlainSearchsPlan) {
-  const PoseTrial& given = onFullMesh->givenTrial();
+TEST(PoseSearchOfTheGivenUp, IsThePlainSearchsPlan) {
+  const PoseTrial& given = onFullMesh().givenTrial();
   EXPECT_TRUE(given.searched);
-  EXPECT_EQ(given.jgAfterMm2, onFullMesh->plain.jgAfterMm2);
-  EXPECT_EQ(given.regions, static_cast<int>(onFullMesh->plain.regions.size()));
+  EXPECT_EQ(given.jgAfterMm2, onFullMesh().plain.jgAfterMm2);
+  EXPECT_EQ(given.regions, static_cast<int>(onFullMesh().plain.regions.size()));
 }
 
-TEST_F(PoseSearchOfTheGivenUp, DeliversNoMoreJgThanThePlainSearch) {
-  EXPECT_LE(onFullMesh->posed.plan.jgAfterMm2, onFullMesh->plain.jgAfterMm2);
+TEST(PoseSearchOfTheGivenUp, DeliversNoMoreJgThanThePlainSearch) {
+  EXPECT_LE(onFullMesh().posed.plan.jgAfterMm2, onFullMesh().plain.jgAfterMm2);
 }
 
-TEST_F(PoseSearchOfTheGivenUp, IsThePlainSearchsPlanOnTheProxyThePlainSearchUses) {
-  ASSERT_GT(onProxy->plain.statistics.proxyFaces, 0);
-  const PoseTrial& given = onProxy->givenTrial();
+TEST(PoseSearchOfTheGivenUp, IsThePlainSearchsPlanOnTheProxyThePlainSearchUses) {
+  ASSERT_GT(onProxy().plain.statistics.proxyFaces, 0);
+  const PoseTrial& given = onProxy().givenTrial();
   EXPECT_TRUE(given.searched);
-  EXPECT_EQ(given.jgAfterMm2, onProxy->plain.jgAfterMm2);
-  EXPECT_EQ(given.regions, static_cast<int>(onProxy->plain.regions.size()));
+  EXPECT_EQ(given.jgAfterMm2, onProxy().plain.jgAfterMm2);
+  EXPECT_EQ(given.regions, static_cast<int>(onProxy().plain.regions.size()));
 }
 
-TEST_F(PoseSearchOfTheGivenUp, OnAProxyDeliversNoMoreJgThanThePlainSearch) {
-  ASSERT_GT(onProxy->posed.plan.statistics.proxyFaces, 0);
-  EXPECT_LE(onProxy->posed.plan.jgAfterMm2, onProxy->plain.jgAfterMm2);
+TEST(PoseSearchOfTheGivenUp, OnAProxyDeliversNoMoreJgThanThePlainSearch) {
+  ASSERT_GT(onProxy().posed.plan.statistics.proxyFaces, 0);
+  EXPECT_LE(onProxy().posed.plan.jgAfterMm2, onProxy().plain.jgAfterMm2);
 }
 
-TEST_F(PoseSearchOfTheGivenUp, WithTheCheapScoresSchemeIsThePlainSearchsPolishedPlan) {
-  const PoseTrial& given = greedyOnFullMesh->givenTrial();
+TEST(PoseSearchOfTheGivenUp, WithTheCheapScoresSchemeIsThePlainSearchsPolishedPlan) {
+  const PoseTrial& given = greedyOnFullMesh().givenTrial();
   EXPECT_TRUE(given.searched);
-  EXPECT_EQ(given.jgAfterMm2, greedyOnFullMesh->plain.jgAfterMm2);
-  EXPECT_EQ(given.regions, static_cast<int>(greedyOnFullMesh->plain.regions.size()));
+  EXPECT_EQ(given.jgAfterMm2, greedyOnFullMesh().plain.jgAfterMm2);
+  EXPECT_EQ(given.regions, static_cast<int>(greedyOnFullMesh().plain.regions.size()));
+}
+
+TEST(PoseSearchOfTheGivenUp, OnTheApartMachineIsTheApartSearchsPlan) {
+  const PoseTrial& given = apartOnFullMesh().givenTrial();
+  EXPECT_TRUE(given.searched);
+  EXPECT_EQ(given.jgAfterMm2, apartOnFullMesh().plain.jgAfterMm2);
+  EXPECT_EQ(given.regions, static_cast<int>(apartOnFullMesh().plain.regions.size()));
+  EXPECT_LE(apartOnFullMesh().posed.plan.jgAfterMm2, apartOnFullMesh().plain.jgAfterMm2);
 }
