@@ -1,6 +1,7 @@
 #pragma once
 // Small pose searches for the tests: a few normals and beams keep each pose's search to a fraction of a second.
 #include "multidir/core/search/pose_search.h"
+#include "support/up_y_machine.h"
 
 namespace multidir::test {
 
@@ -20,12 +21,6 @@ inline core::PoseOptions fewPoses(int poses = 6, int searches = 2) {
   options.poses = poses;
   options.fullSearches = searches;
   return options;
-}
-
-inline core::MachineSpec upY() {
-  core::MachineSpec machine;
-  machine.up = core::Vec3::UnitY();
-  return machine;
 }
 
 }  // namespace multidir::test

@@ -8,6 +8,7 @@
 
 #include "multidir/core/mesh/mesh_io.h"
 #include "search/search_engine.h"
+#include "support/up_y_machine.h"
 
 using namespace multidir::core;
 using multidir::core::detail::SearchEngine;
@@ -20,11 +21,7 @@ TriangleMesh kitten() {
   return loaded.ok() ? loaded->mesh : TriangleMesh{};
 }
 
-MachineSpec upY() {
-  MachineSpec machine;
-  machine.up = Vec3::UnitY();
-  return machine;
-}
+using multidir::test::upY;
 
 // A plane through the kitten's head, tilted off up: the region above it has risky area along its normal.
 Plane headPlane() { return Plane{Vec3(0.3, 1.0, 0.2).normalized(), 40.0}; }

@@ -10,16 +10,13 @@
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/plan_from_planes.h"
 #include "support/test_models.h"
+#include "support/up_y_machine.h"
 
 using namespace multidir::core;
 
 namespace {
 
-MachineSpec upY() {
-  MachineSpec machine;
-  machine.up = Vec3::UnitY();
-  return machine;
-}
+using multidir::test::upY;
 
 SearchOptions withFinalists(bool finalists, int threads = 0) {
   SearchOptions options;

@@ -10,16 +10,13 @@
 #include "multidir/core/search/pose_search.h"
 #include "search/run_decomposition.h"
 #include "support/test_models.h"
+#include "support/up_y_machine.h"
 
 using namespace multidir::core;
 
 namespace {
 
-MachineSpec upY() {
-  MachineSpec machine;
-  machine.up = Vec3::UnitY();
-  return machine;
-}
+using multidir::test::upY;
 
 Decomposition run(const TriangleMesh& model, const SearchOptions& options) {
   JobContext job;
