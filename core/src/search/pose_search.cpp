@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -343,35 +344,36 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     if (!reuseCheap) return detail::searchedPolishedChoice(mesh, posed, o, job, {}, platform);
     return detail::polishedChoice(mesh, posed, o, *cheapPlans[i], std::move(polishStarts[i]), job, {}, platform);
   };
-  SearchOptions full = options;
-  full.threads = threads;
   auto fullSearch = [&](int i) -> Result<Decomposition> {
     // The apart machine's plain search is its own (decompose: the apart search bounded by the 5-DOF plan,
     // each on the proxy it makes), so a pose of it is searched the same way.
     if (machine.kind == MachineKind::Apart)
-      return detail::decomposeApart(model, machineForPose(machine, candidates[i].up), full, job,
-                                    detail::StagedProgress({}, {1.0, 1.0}, maxSearchLevels(full)));
-    if (!onProxies) return polishedOn(i, model, full, std::nullopt);
-    return detail::searchedOnProxy(model, machineForPose(machine, candidates[i].up), full, job, proxies[i],
+      return detail::decomposeApart(model, machineForPose(machine, candidates[i].up), single, job,
+                                    detail::StagedProgress({}, {1.0, 1.0}, maxSearchLevels(single)));
+    if (!onProxies) return polishedOn(i, model, single, std::nullopt);
+    return detail::searchedOnProxy(model, machineForPose(machine, candidates[i].up), single, job, proxies[i],
                                    [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
                                      return Result<Decomposition>(polishedOn(i, mesh, o, p));
                                    });
   };
+  std::mutex bestMutex;
   double bestSearchedJg = INFINITY;
   int skipped = 0;
-  // One after another, each on every thread as the plain search runs: side by side on one thread each, the
-  // default three searches on two cores took two rounds, the second on one core while the other idled. In rank
-  // order, so the best-scored poses' J_G lets the bound skip more of the others.
-  for (const int i : chosen) {
-    if (job.isCancelled()) break;
-    if (bounds[i] > bestSearchedJg + kTieMm2) {
-      ++skipped;
-      job.setProgress((finished += 4) / steps, "pose searches");
-      continue;
+  detail::parallelFor(static_cast<int>(chosen.size()), threads, [&](int k) {
+    if (job.isCancelled()) return;
+    const int i = chosen[k];
+    {
+      std::lock_guard<std::mutex> lock(bestMutex);
+      if (bounds[i] > bestSearchedJg + kTieMm2) {
+        ++skipped;
+        job.setProgress((finished += 4) / steps, "pose searches");
+        return;
+      }
     }
     const auto t0 = std::chrono::steady_clock::now();
     Result<Decomposition> plan = fullSearch(i);
-    if (!plan.ok() || plan->cancelled) continue;  // keep the finished cheap plan
+    if (!plan.ok() || plan->cancelled) return;  // keep the finished cheap plan
+    std::lock_guard<std::mutex> lock(bestMutex);
     trials[i].searched = true;
     trials[i].jgAfterMm2 = plan->jgAfterMm2;
     trials[i].regions = static_cast<int>(plan->regions.size());
@@ -379,7 +381,7 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     bestSearchedJg = std::min(bestSearchedJg, plan->jgAfterMm2);
     plans[i] = std::move(*plan);
     job.setProgress((finished += 4) / steps, "pose searches");
-  }
+  });
   // Cancelled before any pose was searched in full: the best cheap plan, on the model.
   if (std::none_of(plans.begin(), plans.end(), [](const auto& p) { return p.has_value(); })) {
     int cheapest = -1;
