@@ -46,17 +46,6 @@ bool takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes
   return !seen;
 }
 
-// The node that the planes make from `start`, or null when some plane is refused.
-NodePtr rebuild(SearchEngine& engine, NodePtr start, const std::vector<Plane>& planes) {
-  NodePtr node = std::move(start);
-  for (const Plane& plane : planes) {
-    auto child = engine.cut(node, plane);
-    if (!child.ok()) return nullptr;
-    node = *child;
-  }
-  return node;
-}
-
 }  // namespace
 
 // A plane is kept only if it pays for itself: each region costs a platform move and a seam, and apart a part
@@ -73,7 +62,8 @@ NodePtr detail::withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const Se
     std::vector<NodePtr> without(planes.size());
     detail::parallelFor(static_cast<int>(planes.size()), engine.threads(), [&](int k) {
       const std::vector<Plane> later(planes.begin() + k + 1, planes.end());
-      without[k] = rebuild(engine, chain[k], later);
+      const Result<NodePtr> rebuilt = detail::cutInTurn(engine, chain[k], later);
+      without[k] = rebuilt.ok() ? *rebuilt : nullptr;  // null: some later plane is refused without plane k
     });
     NodePtr bestNode;
     const double price = partsPrice(node);
@@ -212,13 +202,9 @@ Result<Decomposition> planFromClippingPlanes(const TriangleMesh& model, const Ma
   evaluation.candidates.normalSamples = 1;  // the engine's own candidates are not used here
   JobContext job;
   SearchEngine engine(model, machine, evaluation, job);
-  NodePtr node = engine.root();
-  for (const Plane& plane : clippingPlanes) {
-    auto child = engine.cut(node, plane);
-    if (!child.ok()) return child.error();
-    node = *child;
-  }
-  Decomposition plan = engine.planOf(*node);
+  const Result<NodePtr> node = detail::cutInTurn(engine, engine.root(), clippingPlanes);
+  if (!node.ok()) return node.error();
+  Decomposition plan = engine.planOf(**node);
   plan.rotationAxis = machine.rotationAxis;
   plan.statistics.levels = static_cast<int>(clippingPlanes.size());
   plan.statistics.clipsPerformed = engine.clipsPerformed();

@@ -240,12 +240,9 @@ Result<Decomposition> polishDecomposition(const TriangleMesh& model, const Machi
   SearchEngine engine(model, axis, evaluation, job, platform);
   Polisher polisher(engine, engine.minRegionVolume(finestVolumeDivisor(options)));
 
-  NodePtr node = engine.root();
-  for (const Plane& plane : plan.clippingPlanes) {
-    auto child = engine.cut(node, plane);
-    if (!child.ok()) return child.error();
-    node = *child;
-  }
+  const Result<NodePtr> cut = cutInTurn(engine, engine.root(), plan.clippingPlanes);
+  if (!cut.ok()) return cut.error();
+  NodePtr node = *cut;
   const NodePtr found = node;
 
   auto report = [&](double fraction) {

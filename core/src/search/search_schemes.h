@@ -68,6 +68,10 @@ struct BeamWork {
 // The nodes of a node's chain, the root first: chain[k] is what plane k cuts.
 std::vector<NodePtr> chainOf(NodePtr node);
 
+// The node `planes` make, cut one after another from `start` with every criterion checked; or the first
+// refusal (SearchEngine::cut's error, naming the plane).
+Result<NodePtr> cutInTurn(SearchEngine& engine, NodePtr start, const std::vector<Plane>& planes);
+
 // Candidates whose region is below `minRegionVolume` are not the scheme's to take.
 void dropSmallerThan(std::vector<ScoredCandidate>& candidates, double minRegionVolume);
 

@@ -14,6 +14,16 @@ std::vector<NodePtr> chainOf(NodePtr node) {
   return chain;
 }
 
+Result<NodePtr> cutInTurn(SearchEngine& engine, NodePtr start, const std::vector<Plane>& planes) {
+  NodePtr node = std::move(start);
+  for (const Plane& plane : planes) {
+    auto child = engine.cut(node, plane);
+    if (!child.ok()) return child.error();
+    node = *child;
+  }
+  return node;
+}
+
 void dropSmallerThan(std::vector<ScoredCandidate>& candidates, double minRegionVolume) {
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                                   [&](const ScoredCandidate& c) { return c.volumeAboveMm3 < minRegionVolume; }),

@@ -54,16 +54,12 @@ Decomposition withTailsSearchedAgain(const TriangleMesh& model, const MachineSpe
   MachineSpec axis = machine;
   axis.rotationAxis = plan.rotationAxis;  // an axis search's choice
   SearchEngine engine(model, axis, options, job, platform);
-  NodePtr node = engine.root();
-  for (const Plane& plane : plan.clippingPlanes) {
-    auto child = engine.cut(node, plane);
-    if (!child.ok()) {
-      plan.statistics.notes.push_back("tails not searched again: " + child.error().describe());
-      return plan;
-    }
-    node = *child;
+  const Result<NodePtr> node = cutInTurn(engine, engine.root(), plan.clippingPlanes);
+  if (!node.ok()) {
+    plan.statistics.notes.push_back("tails not searched again: " + node.error().describe());
+    return plan;
   }
-  const std::vector<NodePtr> chain = chainOf(node);
+  const std::vector<NodePtr> chain = chainOf(*node);
   // The searches from every state, in order, the first of equal J_G kept: the same for any thread count.
   NodePtr best;
   std::size_t bestStart = 0;
