@@ -212,28 +212,29 @@ core::SearchOptions searchOptionsFrom(const ParsedArgs& parsed) {
   apply("--cut-face-cost", [&](const std::string& t) { options.cutFaceCost = parseNumber(t, "--cut-face-cost"); });
   apply("--threads", [&](const std::string& t) { options.threads = parseInteger(t, "--threads"); });
   apply("--proxy-faces", [&](const std::string& t) { options.proxyFaces = parseInteger(t, "--proxy-faces"); });
-  if (parsed.has("--no-proxy")) {
-    if (parsed.has("--proxy-faces"))
-      throw UsageError(kCommand + ": --proxy-faces and --no-proxy contradict each other");
-    options.proxyFaces = 0;
-  }
-  if (parsed.has("--polish") && parsed.has("--no-polish"))
-    throw UsageError(kCommand + ": --polish and --no-polish contradict each other");
-  if (parsed.has("--polish-finalists") && parsed.has("--no-polish-finalists"))
-    throw UsageError(kCommand + ": --polish-finalists and --no-polish-finalists contradict each other");
+  // Two options that ask for opposite things: a usage error, whatever order they came in.
+  const auto refuseBoth = [&](const std::string& one, const std::string& other) {
+    if (parsed.has(one) && parsed.has(other))
+      throw UsageError(kCommand + ": " + one + " and " + other + " contradict each other");
+  };
+  // An on/off pair (both refused above): the one given, else `value` as it is.
+  const auto onOff = [&](const std::string& on, const std::string& off, bool& value) {
+    if (parsed.has(on)) value = true;
+    if (parsed.has(off)) value = false;
+  };
+  refuseBoth("--proxy-faces", "--no-proxy");
+  if (parsed.has("--no-proxy")) options.proxyFaces = 0;
+  refuseBoth("--polish", "--no-polish");
+  refuseBoth("--polish-finalists", "--no-polish-finalists");
+  refuseBoth("--polish-effort", "--no-polish");
+  refuseBoth("--polish-finalists", "--no-polish");
   if (parsed.has("--no-polish")) {
-    for (const char* polishing : {"--polish-effort", "--polish-finalists"})
-      if (parsed.has(polishing))
-        throw UsageError(kCommand + ": " + polishing + " and --no-polish contradict each other");
     options.polish = false;
     options.polishFinalists = false;  // nothing is polished: plan.json says so
   }
-  if (parsed.has("--search-tails") && parsed.has("--no-search-tails"))
-    throw UsageError(kCommand + ": --search-tails and --no-search-tails contradict each other");
-  if (parsed.has("--search-tails")) options.searchTails = true;
-  if (parsed.has("--no-search-tails")) options.searchTails = false;
-  if (parsed.has("--polish-finalists")) options.polishFinalists = true;
-  if (parsed.has("--no-polish-finalists")) options.polishFinalists = false;
+  refuseBoth("--search-tails", "--no-search-tails");
+  onOff("--search-tails", "--no-search-tails", options.searchTails);
+  onOff("--polish-finalists", "--no-polish-finalists", options.polishFinalists);
   apply("--polish-effort", [&](const std::string& t) { options.polishEffort = parseInteger(t, "--polish-effort"); });
   return options;
 }

@@ -180,8 +180,8 @@ SearchPanel::SearchPanel(QWidget* parent) : QWidget(parent) {
   connect(m_scheme, &QComboBox::currentIndexChanged, this, &SearchPanel::settingsChanged);
   for (QSpinBox* box : {m_beamWidth, m_volumeScales, m_normals, m_axisCount, m_polishEffort})
     connect(box, &QSpinBox::valueChanged, this, &SearchPanel::settingsChanged);
-  connect(m_polishFinalists, &QCheckBox::toggled, this, &SearchPanel::settingsChanged);
-  connect(m_searchTails, &QCheckBox::toggled, this, &SearchPanel::settingsChanged);
+  for (QCheckBox* box : {m_polishFinalists, m_searchTails})
+    connect(box, &QCheckBox::toggled, this, &SearchPanel::settingsChanged);
   connect(m_polishEffort, &QSpinBox::valueChanged, this, &SearchPanel::updatePolishFinalists);
   for (QDoubleSpinBox* box :
        {m_minVolumeDivisor, m_offsetStep, m_alpha, m_minRegionHeight, m_minPlaneGain, m_partCost, m_cutFaceCost})
