@@ -95,24 +95,28 @@ std::string apartChoiceNote(const ApartCandidate& chosen, const ApartCandidate& 
 
 Result<Decomposition> searchedAndPolished(const TriangleMesh& model, const MachineSpec& machine,
                                           const SearchOptions& options, JobContext& job,
-                                          const SearchProgressSink& progress) {
-  if (needsProxy(model, options))
-    return runProxyDecomposition(
-        model, machine, options, job, [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
-          return Result<Decomposition>(searchedPolishedChoice(mesh, machine, o, job, progress, p));
-        });
-  return searchedPolishedChoice(model, machine, options, job, progress);
+                                          const SearchProgressSink& progress, const Result<SearchProxy>* proxy) {
+  if (!needsProxy(model, options)) return searchedPolishedChoice(model, machine, options, job, progress);
+  const ProxySearchRun search = [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
+    return Result<Decomposition>(searchedPolishedChoice(mesh, machine, o, job, progress, p));
+  };
+  return proxy ? searchedOnProxy(model, machine, options, job, *proxy, search)
+               : runProxyDecomposition(model, machine, options, job, search);
 }
 
 Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpec& machine,
-                                     const SearchOptions& options, JobContext& job, const StagedProgress& progress) {
+                                     const SearchOptions& options, JobContext& job, const StagedProgress& progress,
+                                     const Result<SearchProxy>* proxy) {
   const auto start = std::chrono::steady_clock::now();
   const SearchProgressSink apartStage = progress.stage(0), fiveDofStage = progress.stage(1);
   // The apart search's plans: its best (polished) and, on the full mesh, its best for every other number of cuts.
   std::vector<Decomposition> plans;
   std::vector<Decomposition> finalists;
+  // A huge model: one proxy for both searches (the 5-DOF one stands on the same up), made once.
+  std::optional<Result<SearchProxy>> ownProxy;
+  if (needsProxy(model, options) && !proxy) proxy = &ownProxy.emplace(makeSearchProxy(model, machine.up, options));
   if (needsProxy(model, options)) {
-    Result<Decomposition> searched = searchedAndPolished(model, machine, options, job, apartStage);
+    Result<Decomposition> searched = searchedAndPolished(model, machine, options, job, apartStage, proxy);
     if (!searched.ok()) return searched.error();
     plans.push_back(std::move(*searched));
   } else {
@@ -125,7 +129,8 @@ Result<Decomposition> decomposeApart(const TriangleMesh& model, const MachineSpe
 
   // The bound: the default 5-DOF plan, its planes cut again on the apart machine (every region on the bed).
   const auto fiveDofStart = std::chrono::steady_clock::now();
-  Result<Decomposition> fiveDof = searchedAndPolished(model, defaultFiveDof(machine), options, job, fiveDofStage);
+  Result<Decomposition> fiveDof =
+      searchedAndPolished(model, defaultFiveDof(machine), options, job, fiveDofStage, proxy);
   if (!fiveDof.ok()) return fiveDof.error();
   const bool fiveDofCancelled = fiveDof->cancelled;
   Result<Decomposition> fiveDofApart = planFromClippingPlanes(model, machine, options, fiveDof->clippingPlanes);

@@ -345,11 +345,12 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     return detail::polishedChoice(mesh, posed, o, *cheapPlans[i], std::move(polishStarts[i]), job, {}, platform);
   };
   auto fullSearch = [&](int i) -> Result<Decomposition> {
-    // The apart machine's plain search is its own (decompose: the apart search bounded by the 5-DOF plan,
-    // each on the proxy it makes), so a pose of it is searched the same way.
+    // The apart machine's plain search is its own (decompose: the apart search bounded by the 5-DOF plan, both
+    // on the proxy decompose at that up makes: this pose's), so a pose of it is searched the same way.
     if (machine.kind == MachineKind::Apart)
       return detail::decomposeApart(model, machineForPose(machine, candidates[i].up), single, job,
-                                    detail::StagedProgress({}, {1.0, 1.0}, maxSearchLevels(single)));
+                                    detail::StagedProgress({}, {1.0, 1.0}, maxSearchLevels(single)),
+                                    onProxies ? &proxies[i] : nullptr);
     if (!onProxies) return polishedOn(i, model, single, std::nullopt);
     return detail::searchedOnProxy(model, machineForPose(machine, candidates[i].up), single, job, proxies[i],
                                    [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
