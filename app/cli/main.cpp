@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "../common/heap_tuning.h"
 #include "apart_command.h"
 #include "audit_command.h"
 #include "batch_command.h"
@@ -147,7 +146,6 @@ int run(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  multidir::app::tuneHeapForLargeMeshes();
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
     return run(args);

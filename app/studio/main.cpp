@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <exception>
 
-#include "../common/heap_tuning.h"
 #include "ui/main_window.h"
 #include "ui/studio_startup.h"
 
@@ -41,7 +40,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  multidir::app::tuneHeapForLargeMeshes();
   // Nothing escapes main: an unexpected failure becomes a message and exit code 3.
   try {
     return run(argc, argv);
