@@ -51,7 +51,11 @@ std::string cubeText(const std::string& format, const std::string& x, std::size_
 
 void expectRefusedNamingLine(const std::string& format, const std::string& token, ErrorCode code) {
   SCOPED_TRACE(format + " with x = " + token);
-  const std::string dir = scratchDirectory("NumberTokens." + format);
+  // A folder of the test's own: ctest runs the tests of this file side by side, and in a shared folder one
+  // test read the cube another had just written (0x10 refused as 1e39).
+  const std::string dir =
+      scratchDirectory(std::string("NumberTokens.") + ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                       "." + format);
   std::size_t line = 0;
   const std::string text = cubeText(format, token, line);
   const Result<LoadedMesh> loaded = loadMesh(writeFile(dir, "cube." + format, text));
