@@ -1,5 +1,5 @@
 // Where a 4-DOF plan's J_G lies: for each rotation axis of an axis search, the lower bound no plan on that axis
-// can go below (search/axis_bound.h: the faces no realizable direction saves, given that every plane clears the
+// can go below (search/unavoidable_risky_area.h: the faces no realizable direction saves, given that every plane clears the
 // platform region) and, with --full 1, the J_G of the full search on that axis alone (and with --screen 1 of
 // the axis search's screen: a beam of width 1, one scale, no refinement, on the model itself). One row per axis,
 // then per model the least bound, the best full search's J_G, and the axis search's own plan for comparison.
@@ -22,7 +22,7 @@
 #include "multidir/core/common/units.h"
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/search/decompose.h"
-#include "search/axis_bound.h"
+#include "search/unavoidable_risky_area.h"
 #include "bench_support.h"
 #include "shared_model_path.h"
 

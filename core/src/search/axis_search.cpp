@@ -13,7 +13,7 @@
 #include "detail/parallel.h"
 #include "multidir/core/mesh/mesh_resolution.h"
 #include "multidir/core/search/plan_from_planes.h"
-#include "search/axis_bound.h"
+#include "search/unavoidable_risky_area.h"
 #include "search/run_decomposition.h"
 
 namespace multidir::core {
@@ -130,7 +130,7 @@ Result<Decomposition> searchAxes(const TriangleMesh& model, const MachineSpec& m
   const std::optional<ScreeningMesh> screeningMesh =
       twoStages ? screeningMeshFor(model, machine, screening, platform) : std::nullopt;
   screening.threads = 1;
-  // No plan of an axis has a J_G below its bound (search/axis_bound.h): an axis whose bound is above the best
+  // No plan of an axis has a J_G below its bound (search/unavoidable_risky_area.h): an axis whose bound is above the best
   // plan found is not searched in full. Skipping it cannot change the result (it could not have won), so the
   // plan does not depend on the order the threads finish in.
   // The platform region the searches keep every plane above (it depends on up alone, so one serves every axis).

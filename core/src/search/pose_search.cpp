@@ -17,7 +17,7 @@
 #include "multidir/core/mesh/mesh_measure.h"
 #include "multidir/core/search/contact_patch.h"
 #include "search/apart_search.h"
-#include "search/axis_bound.h"
+#include "search/unavoidable_risky_area.h"
 #include "search/run_decomposition.h"
 #include "search/staged_progress.h"
 
@@ -324,17 +324,17 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   if (givenStands) chosen.push_back(0);
   for (int i : order)
     if (static_cast<int>(chosen.size()) < searches) chosen.push_back(i);
-  // On a rotary platform no plan of a pose has a J_G below that pose's unavoidable risky area (search/axis_bound.h,
-  // measured on the full mesh): a pose whose bound is above the best searched plan's J_G is not searched, which
-  // cannot change the choice (it could not win), whatever order the searches finish in.
+  // No plan of a pose has a J_G below that pose's unavoidable risky area (search/unavoidable_risky_area.h: the
+  // faces no direction the machine prints along can save, with every plane clear of the platform region;
+  // measured on the full mesh): a pose whose bound is above the first searched pose's J_G is not searched, which
+  // cannot change the choice (it could not win). The first pose is always searched: its bound is not needed.
   std::vector<double> bounds(count, 0.0);
-  if (machine.kind == MachineKind::RotaryPlatform)
-    detail::parallelFor(static_cast<int>(chosen.size()), threads, [&](int k) {
-      const MachineSpec posed = machineForPose(machine, candidates[chosen[k]].up);
-      bounds[chosen[k]] =
-          detail::unavoidableRiskyAreaMm2(model, posed, platformRegionFor(model, posed, options.platformToleranceMm),
-                                          options.alphaMaxDegrees, options.supportedBandMm);
-    });
+  detail::parallelFor(std::max(0, static_cast<int>(chosen.size()) - 1), threads, [&](int k) {
+    const MachineSpec posed = machineForPose(machine, candidates[chosen[k + 1]].up);
+    bounds[chosen[k + 1]] =
+        detail::unavoidableRiskyAreaMm2(model, posed, platformRegionFor(model, posed, options.platformToleranceMm),
+                                        options.alphaMaxDegrees, options.supportedBandMm);
+  });
   // Pose i's plan as the plain search delivers it, polished on `mesh` (the model, or its proxy with the full
   // model's platform region); from the cheap plan when that is the search asked for (its cheap plan kept for a
   // cancel).
@@ -344,44 +344,53 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     if (!reuseCheap) return detail::searchedPolishedChoice(mesh, posed, o, job, {}, platform);
     return detail::polishedChoice(mesh, posed, o, *cheapPlans[i], std::move(polishStarts[i]), job, {}, platform);
   };
-  auto fullSearch = [&](int i) -> Result<Decomposition> {
+  auto fullSearch = [&](int i, const SearchOptions& o) -> Result<Decomposition> {
     // The apart machine's plain search is its own (decompose: the apart search bounded by the 5-DOF plan, both
     // on the proxy decompose at that up makes: this pose's), so a pose of it is searched the same way.
     if (machine.kind == MachineKind::Apart)
-      return detail::decomposeApart(model, machineForPose(machine, candidates[i].up), single, job,
-                                    detail::StagedProgress({}, {1.0, 1.0}, maxSearchLevels(single)),
+      return detail::decomposeApart(model, machineForPose(machine, candidates[i].up), o, job,
+                                    detail::StagedProgress({}, {1.0, 1.0}, maxSearchLevels(o)),
                                     onProxies ? &proxies[i] : nullptr);
-    if (!onProxies) return polishedOn(i, model, single, std::nullopt);
-    return detail::searchedOnProxy(model, machineForPose(machine, candidates[i].up), single, job, proxies[i],
-                                   [&](const TriangleMesh& mesh, const SearchOptions& o, const PlatformRegion& p) {
-                                     return Result<Decomposition>(polishedOn(i, mesh, o, p));
+    if (!onProxies) return polishedOn(i, model, o, std::nullopt);
+    return detail::searchedOnProxy(model, machineForPose(machine, candidates[i].up), o, job, proxies[i],
+                                   [&](const TriangleMesh& mesh, const SearchOptions& onMesh, const PlatformRegion& p) {
+                                     return Result<Decomposition>(polishedOn(i, mesh, onMesh, p));
                                    });
   };
-  std::mutex bestMutex;
-  double bestSearchedJg = INFINITY;
+  std::mutex resultsMutex;
+  double firstSearchedJg = INFINITY;
   int skipped = 0;
-  detail::parallelFor(static_cast<int>(chosen.size()), threads, [&](int k) {
-    if (job.isCancelled()) return;
-    const int i = chosen[k];
-    {
-      std::lock_guard<std::mutex> lock(bestMutex);
-      if (bounds[i] > bestSearchedJg + kTieMm2) {
-        ++skipped;
-        job.setProgress((finished += 4) / steps, "pose searches");
-        return;
-      }
+  const auto searchPose = [&](int i, const SearchOptions& o) {
+    if (bounds[i] > firstSearchedJg + kTieMm2) {
+      std::lock_guard<std::mutex> lock(resultsMutex);
+      ++skipped;
+      job.setProgress((finished += 4) / steps, "pose searches");
+      return;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    Result<Decomposition> plan = fullSearch(i);
+    Result<Decomposition> plan = fullSearch(i, o);
     if (!plan.ok() || plan->cancelled) return;  // keep the finished cheap plan
-    std::lock_guard<std::mutex> lock(bestMutex);
+    std::lock_guard<std::mutex> lock(resultsMutex);
     trials[i].searched = true;
     trials[i].jgAfterMm2 = plan->jgAfterMm2;
     trials[i].regions = static_cast<int>(plan->regions.size());
     trials[i].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    bestSearchedJg = std::min(bestSearchedJg, plan->jgAfterMm2);
     plans[i] = std::move(*plan);
     job.setProgress((finished += 4) / steps, "pose searches");
+  };
+  // The first pose (the given up when it stands) is searched first, on every thread (its plan does not depend
+  // on them), so that its J_G is known when the others start: a pose whose bound is above it is not searched
+  // (the kitten's other two: bounds of 731 and 1,113 mm^2 against its given up's 11.71). The others then side
+  // by side, one thread each, each compared with the first pose only, so which poses are searched does not
+  // depend on the order the others finish in.
+  if (!chosen.empty() && !job.isCancelled()) {
+    SearchOptions first = single;
+    first.threads = threads;
+    searchPose(chosen.front(), first);
+    if (plans[chosen.front()]) firstSearchedJg = plans[chosen.front()]->jgAfterMm2;
+  }
+  detail::parallelFor(std::max(0, static_cast<int>(chosen.size()) - 1), threads, [&](int k) {
+    if (!job.isCancelled()) searchPose(chosen[k + 1], single);
   });
   // Cancelled before any pose was searched in full: the best cheap plan, on the model.
   if (std::none_of(plans.begin(), plans.end(), [](const auto& p) { return p.has_value(); })) {
@@ -397,8 +406,10 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   std::vector<std::string> notes;
   if (onProxies) notes.push_back(proxySummary(model, candidates, proxies));
   if (skipped > 0)
-    notes.push_back(std::to_string(skipped) +
-                    " poses not searched in full: their unavoidable risky area is above the best plan's J_G");
+    notes.push_back(std::to_string(skipped) + (skipped == 1 ? " pose" : " poses") +
+                    " not searched in full: the risky area no plan of " + (skipped == 1 ? "it" : "theirs") +
+                    " can avoid is above the J_G of the first pose searched (" + formatFixed(firstSearchedJg) +
+                    " mm^2)");
 
   // 3. The best fully searched plan; when cancelled, the best plan that finished.
   int best = -1;

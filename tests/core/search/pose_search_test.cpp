@@ -229,3 +229,24 @@ TEST(PoseSearch, OnARotaryPlatformAPoseWhoseBoundIsAboveTheBestSearchedPlanIsNot
   EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
                           [](const std::string& n) { return n.find("not searched in full") != std::string::npos; }));
 }
+
+TEST(PoseSearch, OnATiltingPlatformAPoseWhoseBoundIsAboveTheGivenUpsPlanIsNotSearched) {
+  // Standing on its base (+y) the kitten's plan keeps 11.71 mm^2 of risky area. On each of its other patches
+  // so much of its overhang lies against the platform region that no tilt saves it (731 mm^2 or more): those
+  // poses could not win and are not searched in full; the result is the given up's plan, as decompose gives it.
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
+  MachineSpec machine;
+  machine.up = Vec3::UnitY();
+  const SearchOptions options;
+  JobContext job, poseJob;
+  const auto given = decompose(kitten, machine, options, job);
+  ASSERT_TRUE(given.ok()) << given.error().describe();
+  const auto best = decomposeWithPoseSearch(kitten, machine, options, PoseOptions{}, poseJob);
+  ASSERT_TRUE(best.ok()) << best.error().describe();
+  EXPECT_EQ(best->chosenTrial, 0);
+  EXPECT_EQ(best->plan.jgAfterMm2, given->jgAfterMm2);
+  for (std::size_t i = 1; i < best->trials.size(); ++i) EXPECT_FALSE(best->trials[i].searched) << "trial " << i;
+  const std::vector<std::string>& notes = best->plan.statistics.notes;
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
+                          [](const std::string& n) { return n.find("2 poses not searched in full") != std::string::npos; }));
+}

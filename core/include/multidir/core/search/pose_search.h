@@ -6,7 +6,8 @@
 // holds the centre of mass (no pose balances on a point or an edge, or tips over). Candidates are the user's
 // up (tried only if it stands) and the model's standing poses: the largest contacts, then the ones farthest
 // from those taken, so the directions are covered. Each gets a cheap score (the J_G of a greedy plan); the
-// best few, always with the user's up, get the full search, each the plain search (decompose) at that pose:
+// best few, always with the user's up, get the full search (unless they could not win: their unavoidable risky
+// area is above the first searched pose's J_G), each the plain search (decompose) at that pose:
 // polished, and on a huge model on the proxy decompose at that up uses; the plan with the least J_G wins (ties:
 // fewer regions, then the larger contact area), so the result is never worse than decompose at a given up the
 // model stands in.
@@ -75,7 +76,9 @@ struct PoseSearchResult {
 };
 
 // Pose search over the candidates that stand (a given up that does not is named in plan.statistics.notes);
-// threads across poses (each search single-threaded), results do not depend on the thread count. Progress: the cheap scores, then the full searches. A cancelled search returns the best finished
+// cheap scores threaded across poses; the first full search (the given up's when it stands) on every thread,
+// then the others across poses, each single-threaded and skipped when the pose's unavoidable risky area is above
+// the first's J_G (it could not win); results, and which poses were searched, do not depend on the thread count. Progress: the cheap scores, then the full searches. A cancelled search returns the best finished
 // plan (at least the given up's cheap plan) with plan.cancelled set.
 Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, const MachineSpec& machine,
                                                  const SearchOptions& options, const PoseOptions& poseOptions,

@@ -1,9 +1,11 @@
-// The 4-DOF axis search's bound: the risky area no direction of one axis's range can save. It must never exceed
-// the J_G of a plan on that axis (or the axis search would skip a winner), and it must see what it claims to.
+// The bound on J_G: the risky area no direction the machine prints along can save (4-DOF: one axis's range;
+// 5-DOF: every tilt within the limit). It must never exceed the J_G of a plan on that machine (or the axis and
+// pose searches would skip a winner), and it must see what it claims to.
 #include <gtest/gtest.h>
 
 #include "multidir/core/search/decompose.h"
-#include "search/axis_bound.h"
+#include "multidir/core/search/pose_search.h"
+#include "search/unavoidable_risky_area.h"
 #include "support/primitives.h"
 #include "support/test_models.h"
 
@@ -25,6 +27,14 @@ MachineSpec rotaryUpZ(const Vec3& axis, double rangeDegrees) {
   machine.rotationAxis = axis;
   machine.minAngleDegrees = -rangeDegrees;
   machine.maxAngleDegrees = rangeDegrees;
+  return machine;
+}
+
+MachineSpec tiltingUpZ(double maxTiltDegrees) {
+  MachineSpec machine;
+  machine.kind = MachineKind::TiltRotate;
+  machine.up = Vec3::UnitZ();
+  machine.maxTiltDegrees = maxTiltDegrees;
   return machine;
 }
 
@@ -105,4 +115,53 @@ TEST(UnavoidableRiskyArea, NeverExceedsTheJgOfTheBunnysPlansOnTheDefaultRange) {
     EXPECT_GT(bound, 0.0) << "axis " << axis.transpose();
     EXPECT_LE(bound, plan->jgAfterMm2) << "axis " << axis.transpose();
   }
+}
+
+TEST(UnavoidableRiskyArea, OnATiltingPlatformIsTheDownFacingAreaWhenTheTiltLimitStopsShortOfAlphaMax) {
+  // Tilted by at most 30 degrees in any direction, a face looking straight down still faces down by 60 > 45.
+  EXPECT_NEAR(unavoidableRiskyAreaMm2(tBar(), tiltingUpZ(30.0), 45.0, 1.0), 300.0, 1e-9);
+}
+
+TEST(UnavoidableRiskyArea, OnATiltingPlatformIsZeroWhenSomeTiltSavesEveryFace) {
+  EXPECT_EQ(unavoidableRiskyAreaMm2(tBar(), tiltingUpZ(90.0), 45.0, 1.0), 0.0);
+  // The low T's bar reaches 20 mm out: tilted towards an end, a plane that clears the platform region passes
+  // below that end (the 4-DOF machine turning about y does the same).
+  EXPECT_EQ(unavoidableRiskyAreaMm2(lowTBar(), tiltingUpZ(90.0), 45.0, 1.0), 0.0);
+}
+
+TEST(UnavoidableRiskyArea, OnATiltingPlatformCountsTheOverhangsNoTiltLiftsAboveThePlatformRegion) {
+  // A stub of a T: bar 14 wide on a 10 x 10 stem 1.5 mm high. Its undersides (2 x 2 x 10 = 40 mm^2) lie 1.5 mm
+  // above the bed and at most 8.6 mm from the stem's axis, inside the platform region (a disc of radius
+  // 12.07 mm on the bed). Along a direction tilted by t towards any side, a point r from the axis at height h
+  // lies at h cos t + r sin t, the region's top at 12.07 sin t: the underside is below it for every t above
+  // 23 degrees, and alpha_max needs t >= 45. No tilt saves it.
+  const TriangleMesh stub = multidir::test::makeTBar(10.0, 1.5, 14.0, 5.0, 10.0);
+  EXPECT_NEAR(unavoidableRiskyAreaMm2(stub, tiltingUpZ(90.0), 45.0, 1.0), 40.0, 1e-9);
+}
+
+TEST(UnavoidableRiskyArea, OnATiltingPlatformNeverExceedsTheJgOfTheKittensPlansInItsStandingPoses) {
+  // Lying on any of its four resting patches the kitten keeps much of its overhang against the platform region;
+  // the bound must see a good part of it and stay below what the plain search (polished) delivers there.
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
+  MachineSpec base;
+  base.kind = MachineKind::TiltRotate;
+  base.up = Vec3::UnitY();
+  SearchOptions options;
+  const auto poses = candidatePoses(kitten, base.up, PoseOptions{}, options);
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  int resting = 0;
+  for (const PoseCandidate& pose : *poses) {
+    if (pose.source != PoseSource::Resting) continue;
+    ++resting;
+    const MachineSpec machine = machineForPose(base, pose.up);
+    JobContext job;
+    const auto plan = decompose(kitten, machine, options, job);
+    ASSERT_TRUE(plan.ok()) << plan.error().describe();
+    const double bound = multidir::core::detail::unavoidableRiskyAreaMm2(
+        kitten, machine, platformRegionFor(kitten, machine, options.platformToleranceMm), options.alphaMaxDegrees,
+        options.supportedBandMm);
+    EXPECT_GT(bound, 0.2 * pose.riskyAreaMm2) << "up " << pose.up.transpose();
+    EXPECT_LE(bound, plan->jgAfterMm2) << "up " << pose.up.transpose();
+  }
+  EXPECT_EQ(resting, 4);
 }
