@@ -38,19 +38,44 @@ struct CandidateKey {
 
 CandidateKey keyOf(const ScoredCandidate& c, const SearchOptions& o) { return {relaxationRound(c.riskyAboveMm2, o), c.jgMm2}; }
 
-// The pool in the order Algorithm 1 takes it: relaxation round, then J_G, then pool position.
-std::vector<std::size_t> beamOrder(const std::vector<ScoredCandidate>& pool, const SearchOptions& o) {
-  std::vector<CandidateKey> keys(pool.size());
-  for (std::size_t i = 0; i < pool.size(); ++i) keys[i] = keyOf(pool[i], o);
-  std::vector<std::size_t> order(pool.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    if (keys[a] < keys[b]) return true;
-    if (keys[b] < keys[a]) return false;
-    return a < b;  // pool order is (beam, normal, offset): fixed
-  });
-  return order;
-}
+// The pool in the order Algorithm 1 takes it: relaxation round, then J_G, then pool position (a total order, so
+// the order is one whatever the sort). A level takes a few dozen candidates of a pool of tens of thousands, so
+// the order is sorted only as far as it is read: each time a position past the sorted part is asked for, the
+// next smallest chunk of the rest is selected (nth_element) and sorted; everything before it is no greater
+// than anything after, so the positions read are those of the full sort.
+class BeamOrder {
+ public:
+  BeamOrder(const std::vector<ScoredCandidate>& pool, const SearchOptions& o) : m_keys(pool.size()), m_order(pool.size()) {
+    for (std::size_t i = 0; i < pool.size(); ++i) {
+      m_keys[i] = keyOf(pool[i], o);
+      m_order[i] = i;
+    }
+  }
+  std::size_t size() const { return m_order.size(); }
+  // The pool index at `position` (< size()).
+  std::size_t operator[](std::size_t position) {
+    while (position >= m_sorted) {
+      const std::size_t end = std::min(m_order.size(), m_sorted + std::max(kFirstChunk, m_sorted));
+      const auto first = m_order.begin() + static_cast<std::ptrdiff_t>(m_sorted);
+      const auto last = m_order.begin() + static_cast<std::ptrdiff_t>(end);
+      const auto before = [&](std::size_t a, std::size_t b) {
+        if (m_keys[a] < m_keys[b]) return true;
+        if (m_keys[b] < m_keys[a]) return false;
+        return a < b;  // pool order is (beam, normal, offset): fixed
+      };
+      std::nth_element(first, last - 1, m_order.end(), before);
+      std::sort(first, last, before);
+      m_sorted = end;
+    }
+    return m_order[position];
+  }
+
+ private:
+  static constexpr std::size_t kFirstChunk = 64;
+  std::vector<CandidateKey> m_keys;
+  std::vector<std::size_t> m_order;
+  std::size_t m_sorted = 0;
+};
 
 // Refines the best candidates between the lattice normals (a pattern search on the sphere per seed: six
 // normals around the best so far, the radius halved each round) and adds what it scores to the pool. The
@@ -64,9 +89,10 @@ bool refineCandidates(SearchEngine& engine, const std::vector<NodePtr>& beams, c
   if (spacing <= 0) return false;
   // Seeds: the first beamWidth distinct (beam, normal) pairs in Algorithm 1's order.
   std::vector<ScoredCandidate> seeds;
-  for (std::size_t index : beamOrder(pool, o)) {
+  BeamOrder order(pool, o);
+  for (std::size_t position = 0; position < order.size(); ++position) {
     if (static_cast<int>(seeds.size()) >= scale.beamWidth) break;
-    const ScoredCandidate& c = pool[index];
+    const ScoredCandidate& c = pool[order[position]];
     const bool seen = std::any_of(seeds.begin(), seeds.end(),
                                   [&](const ScoredCandidate& s) { return s.beam == c.beam && s.normal == c.normal; });
     if (!seen) seeds.push_back(c);
@@ -117,7 +143,7 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, const BeamScale
     }
     if (refineCandidates(engine, beams, o, scale, pool)) return true;
     for (const NodePtr& beam : beams) releaseParentSweeps(engine, *beam);
-    const std::vector<std::size_t> order = beamOrder(pool, o);
+    BeamOrder order(pool, o);
     std::vector<NodePtr> next;
     std::vector<ScoredCandidate> chosen;
     auto closeToChosen = [&](const ScoredCandidate& c) {
