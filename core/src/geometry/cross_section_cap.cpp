@@ -138,18 +138,25 @@ std::uint64_t undirected(std::int32_t a, std::int32_t b) {
 // is made only when it raises the smaller quality of the pair, so the loop ends; each triangle is looked at a
 // bounded number of times. Diagonals in `avoid` (edges the side meshes already have) are never created, nor
 // edges the cap already has (either would make an edge with four faces).
+// Whether the undirected edge a-b is one of `forbidden` (sorted undirected keys).
+bool isForbidden(const std::vector<std::uint64_t>& forbidden, std::int32_t a, std::int32_t b) {
+  return !forbidden.empty() && std::binary_search(forbidden.begin(), forbidden.end(), undirected(a, b));
+}
+
 void flipSlivers(const std::vector<Vec2>& points, std::vector<Triangle>& triangles,
-                 const std::vector<std::array<std::int32_t, 2>>& avoid) {
+                 const std::vector<std::uint64_t>& forbidden) {
   constexpr double kSliverQuality = 1e-2;
-  std::unordered_set<std::uint64_t> forbidden;
-  for (const auto& pair : avoid) forbidden.insert(undirected(pair[0], pair[1]));
+  auto quality = [&](const Triangle& t) { return triangleQuality(points[t[0]], points[t[1]], points[t[2]]); };
+  std::vector<std::size_t> work;
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+    if (quality(triangles[f]) < kSliverQuality) work.push_back(f);
+  if (work.empty()) return;  // most caps: no sliver, nothing to index
   // Directed edge -> (triangle, corner the edge starts at).
   std::unordered_map<std::uint64_t, std::pair<std::size_t, int>> directed;
   std::unordered_set<std::uint64_t> edges;
   auto key = [](std::int32_t a, std::int32_t b) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
   };
-  auto quality = [&](const Triangle& t) { return triangleQuality(points[t[0]], points[t[1]], points[t[2]]); };
   auto index = [&](std::size_t f) {
     for (int k = 0; k < 3; ++k) {
       directed[key(triangles[f][k], triangles[f][(k + 1) % 3])] = {f, k};
@@ -164,9 +171,6 @@ void flipSlivers(const std::vector<Vec2>& points, std::vector<Triangle>& triangl
   };
   for (std::size_t f = 0; f < triangles.size(); ++f) index(f);
 
-  std::vector<std::size_t> work;
-  for (std::size_t f = 0; f < triangles.size(); ++f)
-    if (quality(triangles[f]) < kSliverQuality) work.push_back(f);
   std::size_t budget = 8 * triangles.size() + 16;
   while (!work.empty() && budget-- > 0) {
     const std::size_t f = work.back();
@@ -189,7 +193,7 @@ void flipSlivers(const std::vector<Vec2>& points, std::vector<Triangle>& triangl
     const int corner = across->second.second;
     if (u[corner] != q2 || u[(corner + 1) % 3] != p) continue;  // a repeated edge (loops touching): leave it
     const std::int32_t s = u[(corner + 2) % 3];
-    if (s == r || forbidden.count(undirected(r, s)) || edges.count(undirected(r, s))) continue;
+    if (s == r || isForbidden(forbidden, r, s) || edges.count(undirected(r, s))) continue;
     const Triangle first = {p, s, r}, second = {s, q2, r};
     const double before = std::min(q, quality(u));
     const double after = std::min(quality(first), quality(second));
@@ -224,7 +228,7 @@ bool insideCircumcircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2&
 // makes on them are spread as the loop's own points are. Diagonals in `avoid` or already in the cap are never
 // made; each flip must leave two triangles of positive area; a budget ends the loop whatever rounding does.
 void flipToDelaunay(const std::vector<Vec2>& points, std::vector<Triangle>& triangles,
-                    const std::vector<std::array<std::int32_t, 2>>& avoid) {
+                    const std::vector<std::uint64_t>& forbidden) {
   const std::size_t n = triangles.size();
   if (n < 2) return;
   // Each directed edge 3f + k (from corner k of face f) and the one across it (-1 on the boundary, and where an
@@ -257,8 +261,6 @@ void flipToDelaunay(const std::vector<Vec2>& points, std::vector<Triangle>& tria
       startsBoundary[a] = 1;
     }
   }
-  std::unordered_set<std::uint64_t> forbidden;
-  for (const auto& pair : avoid) forbidden.insert(undirected(pair[0], pair[1]));
   auto area = [&](std::int32_t a, std::int32_t b, std::int32_t c) {
     const Vec2 &pa = points[a], &pb = points[b], &pc = points[c];
     return (pb - pa).x() * (pc - pa).y() - (pb - pa).y() * (pc - pa).x();
@@ -280,7 +282,7 @@ void flipToDelaunay(const std::vector<Vec2>& points, std::vector<Triangle>& tria
     const Triangle t = triangles[f], u = triangles[g];
     const std::int32_t p = t[k], q = t[(k + 1) % 3], r = t[(k + 2) % 3], s = u[(j + 2) % 3];
     if (r == s || touching[r] || touching[s] || !insideCircumcircle(points[p], points[q], points[r], points[s])) continue;
-    if (!forbidden.empty() && forbidden.count(undirected(r, s))) continue;
+    if (isForbidden(forbidden, r, s)) continue;
     if (!(area(p, s, r) > 0.0) || !(area(s, q, r) > 0.0)) continue;  // the quadrilateral is not convex
     --budget;
     const std::int32_t rp = across[3 * f + (k + 2) % 3], qr = across[3 * f + (k + 1) % 3];
@@ -373,14 +375,19 @@ Result<std::vector<Triangle>> triangulateCap(const std::vector<CapEdge>& edges, 
   std::vector<std::array<std::int32_t, 2>> avoid;
   for (const CapEdge& e : meshEdges)
     if (localOf[e[0]] >= 0 && localOf[e[1]] >= 0) avoid.push_back({localOf[e[0]], localOf[e[1]]});
+  // The same pairs as sorted undirected keys, made once for every region's flips.
+  std::vector<std::uint64_t> forbidden;
+  forbidden.reserve(avoid.size());
+  for (const auto& pair : avoid) forbidden.push_back(undirected(pair[0], pair[1]));
+  std::sort(forbidden.begin(), forbidden.end());
 
   for (std::size_t r = 0; r < regions.size(); ++r) {
     if (!isRegion[r]) continue;
     Result<std::vector<Triangle>> part = triangulatePolygon(points, regions[r], avoid);
     if (!part)
       return Error{ErrorCode::Internal, "cap triangulation failed: " + part.error().describe(), "clipping cap"};
-    flipSlivers(points, part.value(), avoid);
-    flipToDelaunay(points, part.value(), avoid);
+    flipSlivers(points, part.value(), forbidden);
+    flipToDelaunay(points, part.value(), forbidden);
     for (const Triangle& t : part.value()) triangles.push_back({globalOf[t[0]], globalOf[t[1]], globalOf[t[2]]});
   }
   return triangles;
