@@ -154,6 +154,8 @@ void flipSlivers(const std::vector<Vec2>& points, std::vector<Triangle>& triangl
   // Directed edge -> (triangle, corner the edge starts at).
   std::unordered_map<std::uint64_t, std::pair<std::size_t, int>> directed;
   std::unordered_set<std::uint64_t> edges;
+  directed.reserve(3 * triangles.size());
+  edges.reserve(3 * triangles.size());
   auto key = [](std::int32_t a, std::int32_t b) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
   };

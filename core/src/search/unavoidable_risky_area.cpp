@@ -117,7 +117,7 @@ struct DirectionCell {
   }
 };
 
-// The cells are split down to about a tenth of a degree (a cube face's 90 degrees over 8 x 2^10).
+// The cells are split down to about a hundredth of a degree (a cube face's 90 degrees over 8 x 2^10).
 constexpr int kRootCellsPerSide = 8;
 constexpr int kDeepestSplit = 10;
 

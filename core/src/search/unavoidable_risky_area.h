@@ -23,7 +23,7 @@
 // its angular radius rho. Within a cell, n.d and a corner's height above P's top along d change by at most rho
 // and rho x (the corner's distance from P's centre + P's radius), so a cell is ruled out when even those
 // slacks cannot save the face; a cell that is not ruled out and whose centre does not save the face is split
-// in four, down to a cell of about 0.1 degree, and a cell still undecided there counts as saving the face. So
+// in four, down to a cell of about 0.01 degree, and a cell still undecided there counts as saving the face. So
 // a face is counted only when every direction is proven not to save it: the bound stays a bound, only less
 // tight than the exact one.
 #include "multidir/core/mesh/triangle_mesh.h"
