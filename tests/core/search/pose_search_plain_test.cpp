@@ -41,6 +41,19 @@ struct PlainAndPosed {
     if (trial.pose.source != PoseSource::Given) throw std::runtime_error("the first trial is not the given up");
     return trial;
   }
+
+  // Whether the given up's trial was searched in full and ended with the plain search's J_G and regions.
+  ::testing::AssertionResult givenTrialIsThePlainSearchs() const {
+    const PoseTrial& given = givenTrial();
+    if (!given.searched) return ::testing::AssertionFailure() << "the given up was not searched in full";
+    if (given.jgAfterMm2 != plain.jgAfterMm2)
+      return ::testing::AssertionFailure() << "J_G " << given.jgAfterMm2 << " against the plain search's "
+                                           << plain.jgAfterMm2;
+    if (given.regions != static_cast<int>(plain.regions.size()))
+      return ::testing::AssertionFailure() << given.regions << " regions against the plain search's "
+                                           << plain.regions.size();
+    return ::testing::AssertionSuccess();
+  }
 };
 
 // Each case made on first use (ctest runs each test in a process of its own): the kitten (10,000 faces), which
@@ -82,10 +95,7 @@ const PlainAndPosed& apartOnFullMesh() {
 }  // namespace
 
 TEST(PoseSearchOfTheGivenUp, IsThePlainSearchsPlan) {
-  const PoseTrial& given = onFullMesh().givenTrial();
-  EXPECT_TRUE(given.searched);
-  EXPECT_EQ(given.jgAfterMm2, onFullMesh().plain.jgAfterMm2);
-  EXPECT_EQ(given.regions, static_cast<int>(onFullMesh().plain.regions.size()));
+  EXPECT_TRUE(onFullMesh().givenTrialIsThePlainSearchs());
 }
 
 TEST(PoseSearchOfTheGivenUp, DeliversNoMoreJgThanThePlainSearch) {
@@ -94,10 +104,7 @@ TEST(PoseSearchOfTheGivenUp, DeliversNoMoreJgThanThePlainSearch) {
 
 TEST(PoseSearchOfTheGivenUp, IsThePlainSearchsPlanOnTheProxyThePlainSearchUses) {
   ASSERT_GT(onProxy().plain.statistics.proxyFaces, 0);
-  const PoseTrial& given = onProxy().givenTrial();
-  EXPECT_TRUE(given.searched);
-  EXPECT_EQ(given.jgAfterMm2, onProxy().plain.jgAfterMm2);
-  EXPECT_EQ(given.regions, static_cast<int>(onProxy().plain.regions.size()));
+  EXPECT_TRUE(onProxy().givenTrialIsThePlainSearchs());
 }
 
 TEST(PoseSearchOfTheGivenUp, OnAProxyDeliversNoMoreJgThanThePlainSearch) {
@@ -106,16 +113,10 @@ TEST(PoseSearchOfTheGivenUp, OnAProxyDeliversNoMoreJgThanThePlainSearch) {
 }
 
 TEST(PoseSearchOfTheGivenUp, WithTheCheapScoresSchemeIsThePlainSearchsPolishedPlan) {
-  const PoseTrial& given = greedyOnFullMesh().givenTrial();
-  EXPECT_TRUE(given.searched);
-  EXPECT_EQ(given.jgAfterMm2, greedyOnFullMesh().plain.jgAfterMm2);
-  EXPECT_EQ(given.regions, static_cast<int>(greedyOnFullMesh().plain.regions.size()));
+  EXPECT_TRUE(greedyOnFullMesh().givenTrialIsThePlainSearchs());
 }
 
 TEST(PoseSearchOfTheGivenUp, OnTheApartMachineIsTheApartSearchsPlan) {
-  const PoseTrial& given = apartOnFullMesh().givenTrial();
-  EXPECT_TRUE(given.searched);
-  EXPECT_EQ(given.jgAfterMm2, apartOnFullMesh().plain.jgAfterMm2);
-  EXPECT_EQ(given.regions, static_cast<int>(apartOnFullMesh().plain.regions.size()));
+  EXPECT_TRUE(apartOnFullMesh().givenTrialIsThePlainSearchs());
   EXPECT_LE(apartOnFullMesh().posed.plan.jgAfterMm2, apartOnFullMesh().plain.jgAfterMm2);
 }

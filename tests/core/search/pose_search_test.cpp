@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "multidir/core/search/contact_patch.h"
 #include "multidir/core/search/decompose.h"
@@ -19,6 +21,12 @@ using multidir::test::fewPoses;
 SearchOptions smallOptions(int threads = 1) { return multidir::test::smallSearchOptions(threads); }
 
 bool parallel(const Vec3& a, const Vec3& b) { return a.normalized().dot(b.normalized()) > 1 - 1e-9; }
+
+// Whether one of the plan's notes contains `text`.
+bool hasNote(const Decomposition& plan, const std::string& text) {
+  const std::vector<std::string>& notes = plan.statistics.notes;
+  return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
 
 }  // namespace
 
@@ -172,9 +180,7 @@ TEST(PoseSearch, TriesTheGivenUpEvenWhereTheModelWouldTipOverAndSaysSoWhileEvery
   EXPECT_FALSE(best->trials.front().pose.stands());
   EXPECT_TRUE(best->trials.front().searched) << "the given up gets the full search";
   for (std::size_t i = 1; i < best->trials.size(); ++i) EXPECT_TRUE(best->trials[i].pose.stands()) << "trial " << i;
-  const std::vector<std::string>& notes = best->plan.statistics.notes;
-  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
-                          [](const std::string& n) { return n.find("the given up does not stand") != std::string::npos; }));
+  EXPECT_TRUE(hasNote(best->plan, "the given up does not stand"));
 }
 
 TEST(PoseSearch, GivesTheSameResultForOneAndTwoThreads) {
@@ -225,9 +231,7 @@ TEST(PoseSearch, OnARotaryPlatformAPoseWhoseBoundIsAboveTheBestSearchedPlanIsNot
       EXPECT_FALSE(trial.searched);
     }
   EXPECT_TRUE(stemPoseTried);
-  const std::vector<std::string>& notes = best->plan.statistics.notes;
-  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
-                          [](const std::string& n) { return n.find("not searched in full") != std::string::npos; }));
+  EXPECT_TRUE(hasNote(best->plan, "not searched in full"));
 }
 
 TEST(PoseSearch, OnATiltingPlatformAPoseWhoseBoundIsAboveTheGivenUpsPlanIsNotSearched) {
@@ -246,7 +250,5 @@ TEST(PoseSearch, OnATiltingPlatformAPoseWhoseBoundIsAboveTheGivenUpsPlanIsNotSea
   EXPECT_EQ(best->chosenTrial, 0);
   EXPECT_EQ(best->plan.jgAfterMm2, given->jgAfterMm2);
   for (std::size_t i = 1; i < best->trials.size(); ++i) EXPECT_FALSE(best->trials[i].searched) << "trial " << i;
-  const std::vector<std::string>& notes = best->plan.statistics.notes;
-  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
-                          [](const std::string& n) { return n.find("2 poses not searched in full") != std::string::npos; }));
+  EXPECT_TRUE(hasNote(best->plan, "2 poses not searched in full"));
 }

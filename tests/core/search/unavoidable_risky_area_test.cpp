@@ -157,9 +157,7 @@ TEST(UnavoidableRiskyArea, OnATiltingPlatformNeverExceedsTheJgOfTheKittensPlansI
     JobContext job;
     const auto plan = decompose(kitten, machine, options, job);
     ASSERT_TRUE(plan.ok()) << plan.error().describe();
-    const double bound = multidir::core::detail::unavoidableRiskyAreaMm2(
-        kitten, machine, platformRegionFor(kitten, machine, options.platformToleranceMm), options.alphaMaxDegrees,
-        options.supportedBandMm);
+    const double bound = unavoidableRiskyAreaMm2(kitten, machine, options.alphaMaxDegrees, options.supportedBandMm);
     EXPECT_GT(bound, 0.2 * pose.riskyAreaMm2) << "up " << pose.up.transpose();
     EXPECT_LE(bound, plan->jgAfterMm2) << "up " << pose.up.transpose();
   }
