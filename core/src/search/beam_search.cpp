@@ -157,14 +157,17 @@ bool runBeamSearch(SearchEngine& engine, const SearchOptions& o, const BeamScale
       const std::size_t wanted =
           static_cast<std::size_t>(std::min(engine.threads(), scale.beamWidth - static_cast<int>(next.size())));
       std::vector<std::size_t> batch;
-      for (; batch.size() < wanted && position < order.size(); ++position)
-        if (!closeToChosen(pool[order[position]])) batch.push_back(order[position]);
+      for (; batch.size() < wanted && position < order.size(); ++position) {
+        const ScoredCandidate& c = pool[order[position]];
+        if (!closeToChosen(c) && beams[c.beam]->prefixJgMm2 + c.riskyAboveMm2 < scale.abandonAtMm2)
+          batch.push_back(order[position]);
+      }
       const std::vector<std::optional<NodePtr>> children = extendAll(engine, beams, pool, batch);
       for (std::size_t i = 0; i < batch.size() && static_cast<int>(next.size()) < scale.beamWidth; ++i) {
         const ScoredCandidate& c = pool[batch[i]];
         if (closeToChosen(c)) continue;  // close to one chosen earlier in this batch
         const std::optional<NodePtr>& child = children[i];
-        if (!child) continue;
+        if (!child || (*child)->prefixJgMm2 >= scale.abandonAtMm2) continue;
         // The same cuts in another order leave the same part: keep one of them.
         bool duplicate = false;
         for (const NodePtr& other : next) duplicate = duplicate || sameState(**child, *other);

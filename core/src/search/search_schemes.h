@@ -56,6 +56,10 @@ struct BeamScale {
   double minRegionVolume = 0.0;
   int beamWidth = 1;
   int maxLevels = 1;
+  // A state whose regions cut off already hold this much risky area cannot lead to a plan below it (J_G only
+  // grows as regions are cut): it is neither clipped (by its score) nor kept (by its measure). The tails
+  // searched again after polishing set it to the J_G they must beat; the search's own scales leave it off.
+  double abandonAtMm2 = INFINITY;
 };
 
 // What the scales' own engines did, for the plan's statistics.

@@ -2,8 +2,13 @@
 // again"): from each state of the polished plan, the later planes searched again and the best polished.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/plan_from_planes.h"
+#include "search/search_engine.h"
+#include "search/search_schemes.h"
 #include "search/tail_search.h"
 #include "support/same_planes.h"
 #include "support/test_models.h"
@@ -50,7 +55,8 @@ TEST(TailSearch, FindsAPlanForTheFertilityStatueFarBelowItsPolishedPlan) {
   EXPECT_NEAR(recut->jgAfterMm2, tails.jgAfterMm2, 1e-6 * tails.jgBeforeMm2);
 }
 
-// The kitten's tails end at 11.89 and 11.80 mm^2 as found, above its polished 11.71: its plan stays.
+// No tail of the kitten ends below its polished 11.71 mm^2 (as found they end at 11.80 mm^2 or above): its
+// plan stays.
 TEST(TailSearch, KeepsThePlanWhenNoTailEndsLower) {
   const auto [polished, tails] = searchedWithTails(multidir::test::loadSharedModel("kitten.off"));
   EXPECT_TRUE(multidir::test::samePlanes(tails, polished));
@@ -64,4 +70,31 @@ TEST(TailSearch, GivesTheSamePlanForOneAndTwoThreads) {
   const Decomposition two = searchedWithTails(knight, withThreads(2)).tails;
   EXPECT_TRUE(multidir::test::samePlanes(one, two));
   EXPECT_EQ(one.jgAfterMm2, two.jgAfterMm2);
+}
+
+// A tail's search abandons the states whose regions already hold the J_G it must beat: the knight's beam of two
+// from the uncut model, told to beat 100 mm^2, offers no plan whose regions cut off hold that much, while the
+// same beam without the bound offers such plans (so the bound is what keeps them out).
+TEST(TailSearch, ABeamToldWhatToBeatKeepsNoStateWhoseRegionsHoldAsMuch) {
+  using namespace multidir::core::detail;
+  const TriangleMesh knight = multidir::test::loadSharedModel("knight.off");
+  const SearchOptions options;
+  JobContext job;
+  SearchEngine engine(knight, upY(), options, job);
+  const auto largestPrefix = [&](double mustBeatMm2) {
+    BestPlan offered(true);  // keeps every level's best: the offered plans' prefixes are read from them
+    BeamScale scale;
+    scale.minRegionVolume = engine.minRegionVolume(options.minVolumeDivisor);
+    scale.beamWidth = 2;
+    scale.maxLevels = 41;
+    scale.abandonAtMm2 = mustBeatMm2;
+    int levels = 0;
+    runBeamSearch(engine, options, scale, offered, {}, levels);
+    double largest = 0.0;
+    for (const NodePtr& node : offered.finalists())
+      if (node) largest = std::max(largest, node->prefixJgMm2);
+    return largest;
+  };
+  EXPECT_GE(largestPrefix(INFINITY), 100.0);
+  EXPECT_LT(largestPrefix(100.0), 100.0);
 }
