@@ -147,12 +147,11 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
     }
   }
   if (polishStarts && !cancelled) {
+    // As found: polishedChoice removes their unpaid planes only from those it may polish (most it screens
+    // out, and the removal re-cuts a plan's later planes once per plane tried).
     std::vector<std::vector<Plane>> taken{planesOf(chosen)};
-    for (const NodePtr& finalist : best.finalists()) {
-      if (!finalist || job.isCancelled()) continue;
-      const NodePtr paid = withoutUnpaidPlanes(engine, finalist, options);
-      if (takeIfNew(taken, planesOf(paid))) polishStarts->push_back(engine.planOf(*paid));
-    }
+    for (const NodePtr& finalist : best.finalists())
+      if (finalist && takeIfNew(taken, planesOf(finalist))) polishStarts->push_back(engine.planOf(*finalist));
   }
   plan.cancelled = cancelled;
   plan.rotationAxis = machine.rotationAxis;

@@ -12,10 +12,13 @@
 // plan has lost to polishing in this search, and more than kLeastCreditedGain, ends the list (every later one
 // starts higher still).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 
 #include "search/run_decomposition.h"
+#include "search/search_engine.h"
+#include "search/search_schemes.h"
 #include "search/tail_search.h"
 
 namespace multidir::core::detail {
@@ -30,23 +33,60 @@ constexpr double kLeastCreditedGain = 0.6;
 // The share of its J_G polishing took off a plan, 0 when it took nothing.
 double polishGain(double before, double after) { return before > 0 ? std::max(0.0, 1.0 - after / before) : 0.0; }
 
+bool samePlanes(const std::vector<Plane>& a, const std::vector<Plane>& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const Plane& p, const Plane& q) {
+           return p.normal == q.normal && p.offset == q.offset;
+         });
+}
+
+// `plan` (a finalist as found) without the planes that do not pay for themselves, as the search removes them
+// from its own plan; the plan as it is when its planes are not cut again (the search cut them: not expected).
+Decomposition paidPlanOf(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
+                          const Decomposition& plan, JobContext& job,
+                          const std::optional<PlatformRegion>& platform) {
+  SearchOptions evaluation = options;
+  evaluation.candidates.normalSamples = 1;  // the engine only cuts given planes here
+  MachineSpec axis = machine;
+  axis.rotationAxis = plan.rotationAxis;
+  SearchEngine engine(model, axis, evaluation, job, platform);
+  const Result<NodePtr> cut = cutInTurn(engine, engine.root(), plan.clippingPlanes);
+  if (!cut.ok()) return plan;
+  Decomposition paid = engine.planOf(*detail::withoutUnpaidPlanes(engine, *cut, options));
+  paid.rotationAxis = plan.rotationAxis;
+  paid.statistics = plan.statistics;
+  return paid;
+}
+
 }  // namespace
 
 Decomposition searchedPolishedChoice(const TriangleMesh& model, const MachineSpec& machine,
                                      const SearchOptions& options, JobContext& job,
                                      const SearchProgressSink& progress,
-                                     const std::optional<PlatformRegion>& platform) {
+                                     const std::optional<PlatformRegion>& platform, double mustBeatMm2) {
   std::vector<Decomposition> others;
   Decomposition plan = runDecomposition(model, machine, options, job, progress, platform, nullptr,
                                         options.polish && options.polishFinalists ? &others : nullptr);
-  return polishedChoice(model, machine, options, std::move(plan), std::move(others), job, progress, platform);
+  return polishedChoice(model, machine, options, std::move(plan), std::move(others), job, progress, platform,
+                        mustBeatMm2);
 }
 
 Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                              Decomposition plan, std::vector<Decomposition> others, JobContext& job,
-                             const SearchProgressSink& progress, const std::optional<PlatformRegion>& platform) {
+                             const SearchProgressSink& progress, const std::optional<PlatformRegion>& platform,
+                             double mustBeatMm2) {
   const bool finalists = options.polish && options.polishFinalists;
-  Decomposition best = polishedIfAsked(model, machine, options, plan, job, progress, platform);
+  // Competing with another plan (another pose's): a polish that cannot get below it is given up part-way.
+  PolishRace ownRace{mustBeatMm2};
+  Decomposition best = polishedIfAsked(model, machine, options, plan, job, progress, platform,
+                                       std::isfinite(mustBeatMm2) ? &ownRace : nullptr);
+  if (ownRace.gaveUp) {
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "polishing given up part-way: its J_G fell too slowly to get below %.2f mm^2 (the plan it competes "
+                  "with)",
+                  mustBeatMm2);
+    best.statistics.notes.push_back(note);
+  }
   // Last, with SearchOptions::searchTails, the regions chosen again after the chosen plan's first planes.
   const auto withTails = [&](Decomposition chosen) {
     if (!options.searchTails || chosen.cancelled) return chosen;
@@ -56,29 +96,43 @@ Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machi
   // A gain below rounding is not one: the earlier plan stays (the search's own first).
   const double tie = 1e-9 * std::max(1.0, plan.jgBeforeMm2);
   double credited = std::max(kLeastCreditedGain, polishGain(plan.jgAfterMm2, best.jgAfterMm2));
-  // The lowest first; equal ones in the search's order, so the order, and the plan, is the same for any threads.
+  // The lowest as found first; equal ones in the search's order, so the order, and the plan, is the same for any
+  // threads.
   std::vector<std::size_t> order(others.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return others[a].jgAfterMm2 < others[b].jgAfterMm2; });
-  int evaluations = best.statistics.polishEvaluations, polished = 0;
+  int evaluations = best.statistics.polishEvaluations, polished = 0, gaveUp = 0;
   double seconds = best.statistics.polishSeconds;
   bool chosen = false;
+  std::vector<std::vector<Plane>> started{plan.clippingPlanes};
   for (const std::size_t i : order) {
     if (job.isCancelled()) break;
-    Decomposition other = std::move(others[i]);
+    // What a finalist must beat: the plan polished so far, and the plan competed with.
+    const double target = std::min(best.jgAfterMm2, mustBeatMm2);
+    // It, and every later one, could win only by losing more than polishing is credited with: without its
+    // unpaid planes its J_G is no lower than as found.
+    if (others[i].jgAfterMm2 * (1 - credited) >= target - tie) break;
+    others[i].statistics = plan.statistics;  // the search's, as for its own plan
+    others[i].rotationAxis = plan.rotationAxis;
+    Decomposition other = paidPlanOf(model, machine, options, others[i], job, platform);
+    if (job.isCancelled()) break;
     const double asFound = other.jgAfterMm2;
-    // It, and every later one, could win only by losing more than polishing is credited with.
-    if (asFound * (1 - credited) >= best.jgAfterMm2 - tie) break;
+    if (asFound * (1 - credited) >= target - tie) continue;
+    // Two finalists may pay with the same planes, or with the search's own.
+    if (std::any_of(started.begin(), started.end(),
+                    [&](const std::vector<Plane>& planes) { return samePlanes(planes, other.clippingPlanes); }))
+      continue;
+    started.push_back(other.clippingPlanes);
     const std::size_t regions = other.regions.size();
-    other.statistics = plan.statistics;  // the search's, as for its own plan
-    other.rotationAxis = plan.rotationAxis;
-    Decomposition result = polishedIfAsked(model, machine, options, std::move(other), job, {}, platform);
+    PolishRace race{target};
+    Decomposition result = polishedIfAsked(model, machine, options, std::move(other), job, {}, platform, &race);
     if (job.isCancelled()) break;  // a polish cut short is not compared: Cancel keeps the best finished one
     ++polished;
+    if (race.gaveUp) ++gaveUp;
     evaluations += result.statistics.polishEvaluations;
     seconds += result.statistics.polishSeconds;
-    credited = std::max(credited, polishGain(asFound, result.jgAfterMm2));
+    if (!race.gaveUp) credited = std::max(credited, polishGain(asFound, result.jgAfterMm2));
     if (result.jgAfterMm2 < best.jgAfterMm2 - tie) {
       best = std::move(result);
       chosen = true;
@@ -91,11 +145,11 @@ Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machi
   best.statistics.polishEvaluations = evaluations;
   best.statistics.seconds += seconds - best.statistics.polishSeconds;
   best.statistics.polishSeconds = seconds;
-  char note[256];
+  char note[320];
   std::snprintf(note, sizeof note,
-                "polished %d of %zu finalists of the search too (the others would have had to lose more than %.0f %% "
-                "of their J_G); %s",
-                polished, others.size(), 100 * credited,
+                "polished %d of %zu finalists of the search too (%d given up part-way, their J_G falling too slowly "
+                "to win; the others would have had to lose more than %.0f %% of their J_G); %s",
+                polished, others.size(), gaveUp, 100 * credited,
                 chosen ? "a finalist polished best" : "the search's own plan polished best");
   best.statistics.notes.push_back(note);
   return withTails(std::move(best));

@@ -338,12 +338,16 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   // Pose i's plan as the plain search delivers it, polished on `mesh` (the model, or its proxy with the full
   // model's platform region); from the cheap plan when that is the search asked for (its cheap plan kept for a
   // cancel).
+  // `mustBeat`: the first searched pose's J_G, for the others (none for the first): a polish that falls too
+  // slowly to get below it is given up part-way (PolishRace), since that pose could not win.
   auto polishedOn = [&](int i, const TriangleMesh& mesh, const SearchOptions& o,
-                        const std::optional<PlatformRegion>& platform) {
+                        const std::optional<PlatformRegion>& platform, double mustBeat) {
     const MachineSpec posed = machineForPose(machine, candidates[i].up);
-    if (!reuseCheap) return detail::searchedPolishedChoice(mesh, posed, o, job, {}, platform);
-    return detail::polishedChoice(mesh, posed, o, *cheapPlans[i], std::move(polishStarts[i]), job, {}, platform);
+    if (!reuseCheap) return detail::searchedPolishedChoice(mesh, posed, o, job, {}, platform, mustBeat);
+    return detail::polishedChoice(mesh, posed, o, *cheapPlans[i], std::move(polishStarts[i]), job, {}, platform,
+                                  mustBeat);
   };
+  double firstSearchedJg = INFINITY;
   auto fullSearch = [&](int i, const SearchOptions& o) -> Result<Decomposition> {
     // The apart machine's plain search is its own (decompose: the apart search bounded by the 5-DOF plan, both
     // on the proxy decompose at that up makes: this pose's), so a pose of it is searched the same way.
@@ -351,14 +355,15 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
       return detail::decomposeApart(model, machineForPose(machine, candidates[i].up), o, job,
                                     detail::StagedProgress({}, {1.0, 1.0}, maxSearchLevels(o)),
                                     onProxies ? &proxies[i] : nullptr);
-    if (!onProxies) return polishedOn(i, model, o, std::nullopt);
+    // On the model the first pose's J_G is raced against; on a proxy the J_G polished is the proxy's, which the
+    // full mesh's plan may differ from, so every pose there is polished in full.
+    if (!onProxies) return polishedOn(i, model, o, std::nullopt, firstSearchedJg);
     return detail::searchedOnProxy(model, machineForPose(machine, candidates[i].up), o, job, proxies[i],
                                    [&](const TriangleMesh& mesh, const SearchOptions& onMesh, const PlatformRegion& p) {
-                                     return Result<Decomposition>(polishedOn(i, mesh, onMesh, p));
+                                     return Result<Decomposition>(polishedOn(i, mesh, onMesh, p, INFINITY));
                                    });
   };
   std::mutex resultsMutex;
-  double firstSearchedJg = INFINITY;
   int skipped = 0;
   const auto searchPose = [&](int i, const SearchOptions& o) {
     if (bounds[i] > firstSearchedJg + kTieMm2) {

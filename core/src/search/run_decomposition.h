@@ -1,6 +1,7 @@
 #pragma once
 // The decomposition search without the public entry's bookkeeping, for searches that run many of them (4-DOF
 // axes, poses) and report their own progress.
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -20,8 +21,9 @@ Status checkSearchInputs(const TriangleMesh& model, const MachineSpec& machine, 
 // `platform`: as for SearchEngine. `finalists`, when given (the apart machine's priced choice), receives the
 // best plan the search found for every number of cuts, each as found and without its unpaid planes,
 // unpolished, in the order of the cuts the search made, none equal to the plan returned or to another.
-// `polishStarts`, when given (options.polishFinalists), receives the same finalists without their unpaid planes
-// only, none equal to the plan returned or to another, while the plan returned is the one returned without it.
+// `polishStarts`, when given (options.polishFinalists), receives the same finalists as found only (polishedChoice
+// removes their unpaid planes from those it polishes), none equal to the plan returned or to another, while the
+// plan returned is the one returned without it.
 Decomposition runDecomposition(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                                JobContext& job, const SearchProgressSink& progress,
                                const std::optional<PlatformRegion>& platform = std::nullopt,
@@ -82,35 +84,51 @@ inline bool needsProxy(const TriangleMesh& model, const SearchOptions& options) 
   return options.proxyFaces > 0 && model.faceCount() > static_cast<std::size_t>(options.proxyFaces);
 }
 
+// A plan polished only to beat another (a finalist against the search's plan polished): its polish is given up
+// part-way once its J_G falls too slowly to get below `mustBeatMm2` (docs/search.md, "Polishing the
+// finalists"). `gaveUp` says whether it was.
+struct PolishRace {
+  double mustBeatMm2 = 0.0;
+  bool gaveUp = false;
+};
+
 // polishPlan for checked inputs, on `platform` when given (a proxy's search polishes on the proxy, with the full
-// model's platform region). An error when a plane of `plan` is refused when cut again.
+// model's platform region). An error when a plane of `plan` is refused when cut again. With `race`, the polish
+// may stop part-way (above): the plan reached is still a valid plan whose planes pay for themselves.
 Result<Decomposition> polishDecomposition(const TriangleMesh& model, const MachineSpec& machine,
                                           const SearchOptions& options, Decomposition plan, JobContext& job,
                                           const SearchProgressSink& progress,
-                                          const std::optional<PlatformRegion>& platform);
+                                          const std::optional<PlatformRegion>& platform,
+                                          PolishRace* race = nullptr);
 
 // The search's plan polished as polishedIfAsked does; with options.polishFinalists (and polishing on), also each
 // finalist of the search without its unpaid planes, one after the other, and the least J_G after polishing
 // delivered (ties: the earlier, the search's own plan first); then, with options.searchTails, its tails searched
 // again (tail_search.h). Only the first polish reports progress: the others start above the J_G already
-// reported. The same plan for any thread count.
+// reported. The same plan for any thread count. `mustBeatMm2`: the J_G of a plan this one competes with (another
+// pose's): a polish that falls too slowly to get below it is given up (PolishRace), and no finalist is polished
+// that could not get below it; the plan is then valid but may be less polished than without it.
 Decomposition searchedPolishedChoice(const TriangleMesh& model, const MachineSpec& machine,
                                      const SearchOptions& options, JobContext& job,
                                      const SearchProgressSink& progress,
-                                     const std::optional<PlatformRegion>& platform = std::nullopt);
+                                     const std::optional<PlatformRegion>& platform = std::nullopt,
+                                     double mustBeatMm2 = INFINITY);
 
 // The same for a search already run: `plan` is runDecomposition's plan for these arguments and `polishStarts`
-// its polishStarts (empty unless options.polishFinalists and polishing are on).
+// its polishStarts, the search's finalists as found (empty unless options.polishFinalists and polishing are
+// on).
 Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                              Decomposition plan, std::vector<Decomposition> polishStarts, JobContext& job,
                              const SearchProgressSink& progress,
-                             const std::optional<PlatformRegion>& platform = std::nullopt);
+                             const std::optional<PlatformRegion>& platform = std::nullopt,
+                             double mustBeatMm2 = INFINITY);
 
 // The plan polished when options.polish is set and the search was not cancelled; else (or when polishing
-// refuses the plan, which a note then says) the plan as it is.
+// refuses the plan, which a note then says) the plan as it is. `race`: as for polishDecomposition.
 Decomposition polishedIfAsked(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
                              Decomposition plan, JobContext& job, const SearchProgressSink& progress,
-                             const std::optional<PlatformRegion>& platform = std::nullopt);
+                             const std::optional<PlatformRegion>& platform = std::nullopt,
+                             PolishRace* race = nullptr);
 
 class SearchEngine;
 struct SearchNode;

@@ -50,8 +50,9 @@ TEST(PolishFinalists, FindsALowerPlanOnTheBunnysOutlyingLatticeThanPolishingTheS
   EXPECT_NEAR(recut->jgAfterMm2, best.jgAfterMm2, 1e-6 * best.jgBeforeMm2);
 }
 
-// The kitten's finalists (155.47 and 1507.21 mm^2 before polishing) would have to lose more than 90 % of their
-// J_G to beat its plan polished (11.71 mm^2): neither is polished, and the plan is the one polished alone.
+// The kitten's four finalists as found: two (1.79 and 5.64 mm^2, with planes that do not pay) pay with the
+// search's own planes, and the other two (147.61 mm^2 and more) would have to lose more than 90 % of their J_G
+// to beat its plan polished (11.71 mm^2): none is polished, and the plan is the one polished alone.
 TEST(PolishFinalists, PolishesNoFinalistThatCouldWinOnlyByLosingMostOfItsJg) {
   const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
   const Decomposition alone = searched(kitten, withFinalists(false));
@@ -60,9 +61,27 @@ TEST(PolishFinalists, PolishesNoFinalistThatCouldWinOnlyByLosingMostOfItsJg) {
   EXPECT_EQ(best.statistics.polishEvaluations, alone.statistics.polishEvaluations);
   const auto& notes = best.statistics.notes;
   EXPECT_NE(std::find(notes.begin(), notes.end(),
-                      "polished 0 of 2 finalists of the search too (the others would have had to lose more than 60 % "
-                      "of their J_G); the search's own plan polished best"),
+                      "polished 0 of 4 finalists of the search too (0 given up part-way, their J_G falling too "
+                      "slowly to win; the others would have had to lose more than 60 % of their J_G); the search's "
+                      "own plan polished best"),
             notes.end());
+}
+
+// The fertility statue's one finalist within reach (8 regions, 854.04 mm^2 without its unpaid planes) must lose
+// 252 mm^2 to beat the search's plan polished (602.43); polished alone it loses 44 in 264 plans, and nothing in
+// its first planes: its polish is given up part-way, the search's plan stays, and it costs a few plans, not a
+// second polish.
+TEST(PolishFinalists, GivesUpAFinalistWhoseJgFallsTooSlowlyToWin) {
+  const TriangleMesh fertility = multidir::test::loadSharedModel("fertility.off");
+  const Decomposition alone = searched(fertility, withFinalists(false));
+  const Decomposition best = searched(fertility, withFinalists(true));
+  EXPECT_TRUE(multidir::test::samePlanes(best, alone));
+  EXPECT_EQ(best.jgAfterMm2, alone.jgAfterMm2);
+  EXPECT_LT(best.statistics.polishEvaluations, alone.statistics.polishEvaluations + 50);
+  const auto& notes = best.statistics.notes;
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& note) {
+    return note.rfind("polished 1 of ", 0) == 0 && note.find("(1 given up part-way") != std::string::npos;
+  })) << "notes: " << ::testing::PrintToString(notes);
 }
 
 TEST(PolishFinalists, GivesTheSamePlanForOneAndTwoThreads) {
@@ -73,18 +92,18 @@ TEST(PolishFinalists, GivesTheSamePlanForOneAndTwoThreads) {
   EXPECT_EQ(one.jgAfterMm2, two.jgAfterMm2);
 }
 
-TEST(PolishFinalists, IsOffByDefaultAndKeptInPlanJson) {
-  EXPECT_FALSE(SearchOptions{}.polishFinalists);
+TEST(PolishFinalists, IsOnByDefaultAndKeptInPlanJson) {
+  EXPECT_TRUE(SearchOptions{}.polishFinalists);
   auto plan = planFromClippingPlanes(multidir::test::loadSharedModel("bumpy.off"), upY(), SearchOptions{}, {});
   ASSERT_TRUE(plan.ok()) << plan.error().describe();
   PlanMetadata metadata;
   metadata.machine = upY();
   metadata.up = Vec3::UnitY();
-  metadata.options.polishFinalists = true;
+  metadata.options.polishFinalists = false;
   const std::string folder = multidir::test::scratchDirectory("PolishFinalistsKeptInPlanJson");
   ASSERT_TRUE(savePlan(*plan, metadata, folder).ok());
   auto loaded = loadPlan(folder);
   ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
-  EXPECT_TRUE(loaded->metadata.options.polishFinalists);
+  EXPECT_FALSE(loaded->metadata.options.polishFinalists);
   std::filesystem::remove_all(folder);
 }

@@ -82,9 +82,9 @@ struct SearchOptions {
   // Also polish the search's best plan for every other number of cuts (each without its unpaid planes) that
   // may beat the search's own plan polished, and deliver the least J_G after polishing (docs/search.md,
   // "Polishing the finalists"): which plan polishes best is not the one that was best before polishing (the
-  // bunny's 254-normal lattice: 2.08 % delivered, 1.08 % from a finalist). Off by default: one finalist's
-  // polish cost the fertility statue 1.57 times the default's CPU.
-  bool polishFinalists = false;
+  // bunny's 254-normal lattice: 2.08 % delivered, 1.08 % from a finalist). A finalist's polish is given up
+  // part-way once its J_G falls too slowly to win, so on by default: it costs the shared models a few plans.
+  bool polishFinalists = true;
   // After polishing, search the plan's later planes again from the state after each of its first k planes
   // (both greedy chains and a beam of two) and deliver a lower plan found there, polished (docs/search.md,
   // "Searching the tails again"). It changes which regions the plan chooses, which polishing cannot: the
