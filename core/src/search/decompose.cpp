@@ -26,6 +26,7 @@ using detail::SearchNode;
 using detail::chainOf;
 using detail::runBeamScheme;
 using detail::runGreedy;
+using detail::takeIfNew;
 
 // The planes of a node's chain, in clipping order.
 std::vector<Plane> planesOf(const NodePtr& node) {
@@ -35,8 +36,9 @@ std::vector<Plane> planesOf(const NodePtr& node) {
   return planes;
 }
 
-// Whether `planes` is one of `taken` (the same planes, bit for bit, in the same order); if not, it is added.
-bool takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes) {
+}  // namespace
+
+bool detail::takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes) {
   const bool seen = std::any_of(taken.begin(), taken.end(), [&](const std::vector<Plane>& other) {
     return other.size() == planes.size() &&
            std::equal(other.begin(), other.end(), planes.begin(),
@@ -45,8 +47,6 @@ bool takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes
   if (!seen) taken.push_back(std::move(planes));
   return !seen;
 }
-
-}  // namespace
 
 // A plane is kept only if it pays for itself: each region costs a platform move and a seam, and apart a part
 // with its cut face (docs/apart.md, "The price of a part").

@@ -33,12 +33,6 @@ constexpr double kLeastCreditedGain = 0.6;
 // The share of its J_G polishing took off a plan, 0 when it took nothing.
 double polishGain(double before, double after) { return before > 0 ? std::max(0.0, 1.0 - after / before) : 0.0; }
 
-bool samePlanes(const std::vector<Plane>& a, const std::vector<Plane>& b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const Plane& p, const Plane& q) {
-           return p.normal == q.normal && p.offset == q.offset;
-         });
-}
-
 // `plan` (a finalist as found) without the planes that do not pay for themselves, as the search removes them
 // from its own plan; the plan as it is when its planes are not cut again (the search cut them: not expected).
 Decomposition paidPlanOf(const TriangleMesh& model, const MachineSpec& machine, const SearchOptions& options,
@@ -120,10 +114,7 @@ Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machi
     const double asFound = other.jgAfterMm2;
     if (asFound * (1 - credited) >= target - tie) continue;
     // Two finalists may pay with the same planes, or with the search's own.
-    if (std::any_of(started.begin(), started.end(),
-                    [&](const std::vector<Plane>& planes) { return samePlanes(planes, other.clippingPlanes); }))
-      continue;
-    started.push_back(other.clippingPlanes);
+    if (!takeIfNew(started, other.clippingPlanes)) continue;
     const std::size_t regions = other.regions.size();
     PolishRace race{target};
     Decomposition result = polishedIfAsked(model, machine, options, std::move(other), job, {}, platform, &race);

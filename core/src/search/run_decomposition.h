@@ -130,6 +130,10 @@ Decomposition polishedIfAsked(const TriangleMesh& model, const MachineSpec& mach
                              const std::optional<PlatformRegion>& platform = std::nullopt,
                              PolishRace* race = nullptr);
 
+// Whether `planes` is one of `taken` (the same planes, bit for bit, in the same order); if not, it is added.
+// Plans that came out with the same planes are one plan (finalists, their starts for polishing).
+bool takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes);
+
 class SearchEngine;
 struct SearchNode;
 // Removes, one at a time, the plane whose removal raises J_G least while that rise stays below the plane-gain
