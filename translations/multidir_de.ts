@@ -125,6 +125,14 @@
     </message>
 </context>
 <context>
+    <name>ReplacePlanCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="59"/>
+        <source>New search</source>
+        <translation>Neue Suche</translation>
+    </message>
+</context>
+<context>
     <name>TiltPlaneCommand</name>
     <message>
         <location filename="../ui/edit/plan_edit_commands.cpp" line="45"/>
@@ -135,97 +143,97 @@
 <context>
     <name>multidir::ui::ApartJobRunner</name>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="27"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="16"/>
         <source>Slicing plate %1 of %2</source>
         <translation>Druckplatte %1 von %2 wird gesliced</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="30"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="19"/>
         <source>Slicing the model in one piece with supports, for comparison</source>
         <translation>Das Modell wird zum Vergleich in einem Stück mit Stützen gesliced</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="31"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="20"/>
         <source>Cutting the parts to fit the printer</source>
         <translation>Die Teile werden passend für den Drucker zerschnitten</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="32"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="21"/>
         <source>Placing the dowels</source>
         <translation>Die Dübel werden platziert</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="33"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="22"/>
         <source>Drilling the dowel holes</source>
         <translation>Die Dübellöcher werden gebohrt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="34"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="23"/>
         <source>Sinking the part numbers</source>
         <translation>Die Teilenummern werden eingesenkt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="35"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="24"/>
         <source>Laying the parts on plates</source>
         <translation>Die Teile werden auf Druckplatten gelegt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="36"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="25"/>
         <source>Writing the parts and the 3MF</source>
         <translation>Die Teile und das 3MF werden geschrieben</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="37"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="26"/>
         <source>Drawing the assembly sheet</source>
         <translation>Das Montageblatt wird gezeichnet</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="44"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="33"/>
         <source>A part does not fit this printer even cut further: choose a printer with a larger bed, or scale the model down and search again.</source>
         <translation>Ein Teil passt auch weiter zerschnitten nicht in diesen Drucker: wählen Sie einen Drucker mit größerem Druckbett oder verkleinern Sie das Modell und suchen Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="47"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="37"/>
         <source>The slicer &apos;prusa-slicer&apos; was not found: install PrusaSlicer (scripts/install-deps.sh), or untick &quot;Slice the plates&quot;.</source>
         <translation>Der Slicer &apos;prusa-slicer&apos; wurde nicht gefunden: installieren Sie PrusaSlicer (scripts/install-deps.sh) oder entfernen Sie das Häkchen bei „Druckplatten slicen“.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="50"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="41"/>
         <source>The slicer failed on a plate: its command and last output lines are below. Try another printer, or untick &quot;Slice the plates&quot; to get the parts without G-code.</source>
         <translation>Der Slicer ist an einer Druckplatte gescheitert: sein Befehl und seine letzten Ausgabezeilen stehen unten. Versuchen Sie einen anderen Drucker oder entfernen Sie das Häkchen bei „Druckplatten slicen“, um die Teile ohne G-Code zu erhalten.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="53"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="45"/>
         <source>The parts could not be laid out or the dowels not placed: the reason is below. Choose a printer with a larger bed or other dowel options.</source>
         <translation>Die Teile konnten nicht angeordnet oder die Dübel nicht platziert werden: der Grund steht unten. Wählen Sie einen Drucker mit größerem Druckbett oder andere Dübeloptionen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="56"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="49"/>
         <source>Drilling the dowel holes or sinking the numbers failed on a part (named below): try a smaller dowel diameter or another plan.</source>
         <translation>Das Bohren der Dübellöcher oder das Einsenken der Nummern ist an einem Teil (unten genannt) gescheitert: versuchen Sie einen kleineren Dübeldurchmesser oder einen anderen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="79"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="75"/>
         <source>The plan is being printed apart already.</source>
         <translation>Der Plan wird bereits getrennt gedruckt.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="83"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="79"/>
         <source>There is no plan to print apart: search the model first.</source>
         <translation>Es gibt keinen Plan zum getrennten Drucken: durchsuchen Sie zuerst das Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="88"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="101"/>
         <source>Could not create a temporary folder for the parts: %1</source>
         <translation>Für die Teile konnte kein temporärer Ordner angelegt werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="112"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="97"/>
         <source>Not enough memory to print this plan apart.</source>
         <translation>Nicht genug Speicher, um diesen Plan getrennt zu drucken.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="115"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="98"/>
         <source>Unexpected error while printing the plan apart.</source>
         <translation>Unerwarteter Fehler beim getrennten Drucken des Plans.</translation>
     </message>
@@ -577,42 +585,42 @@
         <translation>Die Suche nach der Extruderposition wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="174"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="189"/>
         <source>Could not load the cell file %1: %2</source>
         <translation>Die Zellendatei %1 konnte nicht geladen werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="180"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="195"/>
         <source>Cell loaded from %1.</source>
         <translation>Zelle aus %1 geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="186"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="201"/>
         <source>There is no cell to save.</source>
         <translation>Es gibt keine Zelle zum Speichern.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="191"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="206"/>
         <source>Could not save the cell: %1</source>
         <translation>Die Zelle konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="194"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="209"/>
         <source>Cell saved as %1.</source>
         <translation>Zelle als %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="208"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="223"/>
         <source>No cell.</source>
         <translation>Keine Zelle.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="226"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="241"/>
         <source>Cell check: sound (%1, nozzle tip at %2, %3, %4 mm).</source>
         <translation>Zellenprüfung: in Ordnung (%1, Düsenspitze bei %2, %3, %4 mm).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/cell_panel.cpp" line="233"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="248"/>
         <source>Cell check: %n problem(s)</source>
         <translation>
             <numerusform>Zellenprüfung: %n Problem</numerusform>
@@ -620,53 +628,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="280"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="293"/>
         <source>There is no cell: choose the robot cell machine or load a cell file.</source>
         <translation>Es gibt keine Zelle: wählen Sie die Maschine Roboterzelle oder laden Sie eine Zellendatei.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="285"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="298"/>
         <source>There is no plan: the reach map scores the plan&apos;s platform poses. Run a search or open a plan.</source>
         <translation>Es gibt keinen Plan: die Erreichbarkeitskarte bewertet die Plattformposen des Plans. Starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="290"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="303"/>
         <source>The plan&apos;s poses cannot be found: %1</source>
         <translation>Die Posen des Plans können nicht bestimmt werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="311"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="328"/>
         <source>The reach map failed: %1</source>
         <translation>Die Erreichbarkeitskarte ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="316"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="346"/>
         <source>Best nozzle position: %1, %2, %3 mm, %4 % of the plan&apos;s poses reachable with margin (least reach margin %5 mm) over %6 positions.</source>
         <translation>Beste Düsenposition: %1, %2, %3 mm, %4 % der Posen des Plans mit Reserve erreichbar (kleinste Reichweitenreserve %5 mm), über %6 Positionen.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="334"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="364"/>
         <source>Finding the extruder position...</source>
         <translation>Extruderposition wird gesucht...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="348"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="387"/>
         <source>The nozzle tip is now at the reach map&apos;s best position; move the extruder there and measure it again.</source>
         <translation>Die Düsenspitze steht jetzt an der besten Position der Erreichbarkeitskarte; bringen Sie den Extruder dorthin und messen Sie sie erneut.</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="160"/>
         <source>The cell changed since the reach map was made (the map scores the arm, the nozzle axis, the platform, the table and the margins it had): find the extruder position again.</source>
         <translation>Die Zelle hat sich geändert, seit die Erreichbarkeitskarte erstellt wurde (die Karte bewertet den Arm, die Düsenachse, die Plattform, den Tisch und die Abstände, die sie damals hatte): bestimmen Sie die Extruderposition erneut.</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="165"/>
         <source>The plan changed since the reach map was made (the map scores the plan&apos;s poses): find the extruder position again.</source>
         <translation>Der Plan hat sich geändert, seit die Erreichbarkeitskarte erstellt wurde (die Karte bewertet die Posen des Plans): bestimmen Sie die Extruderposition erneut.</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="175"/>
         <source>Supports were grown for the plan since the reach map was made (the map scores their poses too): find the extruder position again.</source>
         <translation>Seit die Erreichbarkeitskarte erstellt wurde, wurden Stützen für den Plan erzeugt (die Karte bewertet auch ihre Posen): bestimmen Sie die Extruderposition erneut.</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="337"/>
         <source>The plan or the cell changed while the reach map was made: find the extruder position again.</source>
         <translation>Der Plan oder die Zelle hat sich geändert, während die Erreichbarkeitskarte erstellt wurde: bestimmen Sie die Extruderposition erneut.</translation>
     </message>
@@ -674,68 +686,68 @@
 <context>
     <name>multidir::ui::CellViewPanel</name>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="30"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="31"/>
         <source>Show on the cell</source>
         <translation>In der Zelle zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="32"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="33"/>
         <source>The sliced job on the robot cell: the arm, the platform and the part at the poses the robot programs command (multidir robot-program)</source>
         <translation>Das Slicing-Ergebnis in der Roboterzelle: der Arm, die Plattform und das Teil in den Posen, die die Roboterprogramme vorgeben (multidir robot-program)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="34"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="35"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="37"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="38"/>
         <source>Back to the plan</source>
         <translation>Zurück zum Plan</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="46"/>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="47"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="96"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="96"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="101"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="114"/>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="110"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="123"/>
         <source>The cell changed: show the job on it again.</source>
         <translation>Die Zelle hat sich geändert: zeigen Sie den Auftrag erneut in ihr.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="121"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="134"/>
         <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
         <translation>Es gibt keine Roboterzelle: wählen Sie die Maschine „Roboterarm unter einem feststehenden Extruder“.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="125"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="138"/>
         <source>The plan is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
         <translation>Für den Plan gibt es kein Slicing-Ergebnis: slicen Sie ihn zuerst mit dem Profil der Zelle (ur5-cell-0.8).</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="149"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="162"/>
         <source>The job cannot be posed on the cell: %1</source>
         <translation>Der Auftrag kann nicht in die Zelle gestellt werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="161"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="174"/>
         <source>Converting the job for the cell...</source>
         <translation>Der Auftrag wird für die Zelle umgewandelt...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/cell_view_panel.cpp" line="183"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="244"/>
         <source>%n step(s) on the %1, %2 moves.</source>
         <translation>
             <numerusform>%n Schritt am %1, %2 Bewegungen.</numerusform>
@@ -743,32 +755,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="207"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="268"/>
         <source>Step %1 of %2: no move converted (the arm at home).</source>
         <translation>Schritt %1 von %2: keine Bewegung umgewandelt (der Arm in Grundstellung).</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="211"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="272"/>
         <source>Step %1 of %2, move %3 of %4 (%5, line %6)</source>
         <translation>Schritt %1 von %2, Bewegung %3 von %4 (%5, Zeile %6)</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="61"/>
         <source>Show the reach map</source>
         <translation>Erreichbarkeitskarte zeigen</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="63"/>
         <source>The nozzle positions &quot;Find extruder position&quot; scored (Machine tab), coloured from red (none of the plan&apos;s poses reachable with margin) to blue (all of them); the best one ringed in white</source>
         <translation>Die Düsenpositionen, die „Extruderposition finden“ bewertet hat (Registerkarte „Maschine“), gefärbt von Rot (keine Pose des Plans mit Abstand erreichbar) bis Blau (alle); die beste weiß umrandet</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="196"/>
         <source>Reach map: %1 nozzle positions every %2 mm; the best, ringed, at %3, %4, %5 mm with %6 % of the plan&apos;s poses reachable with margin.</source>
         <translation>Erreichbarkeitskarte: %1 Düsenpositionen im Abstand von %2 mm; die beste (umrandet) bei %3, %4, %5 mm, mit %6 % der Posen des Plans mit Abstand erreichbar.</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="205"/>
         <source>Reach map not shown: %1</source>
         <translation>Erreichbarkeitskarte nicht gezeigt: %1</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="229"/>
         <source>Plan&apos;s poses reachable with margin (%)</source>
         <translation>Mit Abstand erreichbare Posen des Plans (%)</translation>
     </message>
@@ -791,134 +808,134 @@
         <translation>Roboterzelle (5-DOF, fester Extruder)</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="39"/>
+        <location filename="../ui/device/connection_form.cpp" line="42"/>
         <source>Robot cell (5-DOF, Universal Robots: the arm carries the part under a fixed extruder)</source>
         <translation>Roboterzelle (5-DOF, Universal Robots: der Arm führt das Teil unter einem festen Extruder)</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="42"/>
+        <location filename="../ui/device/connection_form.cpp" line="47"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="43"/>
+        <location filename="../ui/device/connection_form.cpp" line="48"/>
         <source>Modbus RTU (serial)</source>
         <translation>Modbus RTU (seriell)</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="52"/>
+        <location filename="../ui/device/connection_form.cpp" line="57"/>
         <source>Host:</source>
         <translation>Host:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="53"/>
+        <location filename="../ui/device/connection_form.cpp" line="58"/>
         <source>Port:</source>
         <translation>Port:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="54"/>
+        <location filename="../ui/device/connection_form.cpp" line="59"/>
         <source>Unit id:</source>
         <translation>Unit-ID:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="69"/>
+        <location filename="../ui/device/connection_form.cpp" line="74"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="70"/>
+        <location filename="../ui/device/connection_form.cpp" line="75"/>
         <source>Even</source>
         <translation>Gerade</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="71"/>
+        <location filename="../ui/device/connection_form.cpp" line="76"/>
         <source>Odd</source>
         <translation>Ungerade</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="75"/>
+        <location filename="../ui/device/connection_form.cpp" line="80"/>
         <source>Serial port:</source>
         <translation>Serielle Schnittstelle:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="76"/>
+        <location filename="../ui/device/connection_form.cpp" line="81"/>
         <source>Baud:</source>
         <translation>Baudrate:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="77"/>
+        <location filename="../ui/device/connection_form.cpp" line="82"/>
         <source>Parity:</source>
         <translation>Parität:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="78"/>
+        <location filename="../ui/device/connection_form.cpp" line="83"/>
         <source>Data bits:</source>
         <translation>Datenbits:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="79"/>
+        <location filename="../ui/device/connection_form.cpp" line="84"/>
         <source>Stop bits:</source>
         <translation>Stoppbits:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="80"/>
+        <location filename="../ui/device/connection_form.cpp" line="85"/>
         <source>Slave id:</source>
         <translation>Slave-ID:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="87"/>
-        <location filename="../ui/device/connection_form.cpp" line="90"/>
+        <location filename="../ui/device/connection_form.cpp" line="92"/>
+        <location filename="../ui/device/connection_form.cpp" line="95"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="88"/>
+        <location filename="../ui/device/connection_form.cpp" line="93"/>
         <source>How long to wait for the first byte of a reply, and for a TCP connection.</source>
         <translation>Wie lange auf das erste Byte einer Antwort und auf eine TCP-Verbindung gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="91"/>
+        <location filename="../ui/device/connection_form.cpp" line="96"/>
         <source>How long to wait between two bytes of one reply.</source>
         <translation>Wie lange zwischen zwei Bytes einer Antwort gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="100"/>
+        <location filename="../ui/device/connection_form.cpp" line="105"/>
         <source> °/s</source>
         <translation> °/s</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="101"/>
+        <location filename="../ui/device/connection_form.cpp" line="106"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="102"/>
+        <location filename="../ui/device/connection_form.cpp" line="107"/>
         <source>Of the robot program&apos;s maximal rotation speed.</source>
         <translation>Anteil an der größten Drehgeschwindigkeit des Roboterprogramms.</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="103"/>
-        <location filename="../ui/device/connection_form.cpp" line="104"/>
+        <location filename="../ui/device/connection_form.cpp" line="108"/>
+        <location filename="../ui/device/connection_form.cpp" line="109"/>
         <source>Speed:</source>
         <translation>Geschwindigkeit:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="108"/>
+        <location filename="../ui/device/connection_form.cpp" line="114"/>
         <source>Device:</source>
         <translation>Gerät:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="109"/>
+        <location filename="../ui/device/connection_form.cpp" line="115"/>
         <source>Transport:</source>
         <translation>Übertragung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="112"/>
+        <location filename="../ui/device/connection_form.cpp" line="119"/>
         <source>Response timeout:</source>
         <translation>Antwort-Timeout:</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="113"/>
+        <location filename="../ui/device/connection_form.cpp" line="120"/>
         <source>Byte timeout:</source>
         <translation>Byte-Timeout:</translation>
     </message>
@@ -1047,7 +1064,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="578"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="621"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
@@ -1168,516 +1185,518 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="73"/>
         <source>Reconnecting…</source>
         <translation>Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
         <source>Connecting…</source>
         <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
         <source>Connected</source>
         <translation>Verbunden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
         <source>Fault</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>idle</source>
         <translation>im Leerlauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>turning the platform</source>
         <translation>Plattform wird gedreht</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>settling</source>
         <translation>Beruhigungszeit</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="96"/>
         <source>finished</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="96"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
         <source>aborted</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="100"/>
         <source>stopped by a device problem</source>
         <translation>durch ein Geräteproblem angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="105"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="107"/>
         <source>angle %1</source>
         <translation>Winkel %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="106"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="108"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="599"/>
         <source>tilt %1, azimuth %2</source>
         <translation>Neigung %1, Azimut %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="115"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="117"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>„Fehler löschen“, dann „Aktivieren“ und „Referenzfahrt“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="116"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="118"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>„Fehler löschen“; danach nimmt das Roboterprogramm wieder Fahrbefehle an</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="234"/>
         <source>Connection</source>
         <translation>Verbindung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="222"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="224"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="239"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>Schließt die Verbindung, ohne dem Gerät einen Befehl zu senden; sein Heartbeat-Watchdog hält es an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
         <source>Enabled:</source>
         <translation>Aktiviert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
         <source>Position:</source>
         <translation>Position:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="268"/>
         <source>Moving:</source>
         <translation>In Bewegung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
         <source>Homed:</source>
         <translation>Referenziert:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="270"/>
         <source>Fault:</source>
         <translation>Fehler:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
         <source>Heartbeat:</source>
         <translation>Heartbeat:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
         <source>Last problem:</source>
         <translation>Letztes Problem:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
         <source>Controls</source>
         <translation>Steuerung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
         <source>Enable</source>
         <translation>Aktivieren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>Schaltet den Antrieb der Plattform ein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
         <source>Home</source>
         <translation>Referenzfahrt</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="280"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>Drehplattform: sucht den Referenzschalter (0°). Roboterarm: richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
         <source>Clear fault</source>
         <translation>Fehler löschen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="282"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>Setzt das Gerät nach einem Fehler oder NOT-HALT zurück; danach erneut aktivieren und referenzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
         <source>Tilt</source>
         <translation>Neigung</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="287"/>
         <source>Azimuth</source>
         <translation>Azimut</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="288"/>
         <source>Jog −</source>
         <translation>Tippen −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="289"/>
         <source>Jog +</source>
         <translation>Tippen +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="293"/>
         <source>Angle:</source>
         <translation>Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="294"/>
         <source>Tilt:</source>
         <translation>Neigung:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="280"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="295"/>
         <source>Azimuth:</source>
         <translation>Azimut:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="296"/>
         <source>Go to</source>
         <translation>Anfahren</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="326"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="326"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>Bremst ab und hält an; verwirft wartende Befehle.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="312"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="327"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="348"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="376"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
         <translation>Drücken, sobald der angeforderte Bereich gedruckt ist (nur beim Drucken von Hand: bei einem Bereich, den der verbundene Drucker druckt, geht es von selbst weiter).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="459"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="495"/>
         <source>the platform</source>
         <translation>die Plattform</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="496"/>
         <source>the printer</source>
         <translation>den Drucker</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="462"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="499"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
         <translation>NOT-HALT an %1 gesendet. Zum Fortfahren: %2%3.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="463"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="500"/>
         <source> and </source>
         <translation> und </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="464"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="501"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
         <translation>; beim Drucker „Drucker-NOT-HALT aufheben“ und seine Firmware neu starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="516"/>
         <source>Platform: stop confirmed by the device.</source>
         <translation>Plattform: Halt vom Gerät bestätigt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="480"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="517"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
         <translation>Plattform: Halt noch nicht bestätigt; MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="485"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="522"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
         <translation>Drucker: Not-Halt vom Drucker bestätigt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="486"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="523"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
         <translation>Drucker: Not-Halt noch nicht bestätigt (%1); MultiDir sendet ihn weiter erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="639"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>Der Drucklauf wurde angehalten: %1. Bringen Sie das Gerät in Ordnung (%2) und drücken Sie dann „Fortsetzen“, um diesen Schritt zu wiederholen, oder „Abbrechen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="301"/>
         <source>Jog step:</source>
         <translation>Tippschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="343"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
         <source>Print run</source>
         <translation>Drucklauf</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="345"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="851"/>
         <source>Start run</source>
         <translation>Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>Dreht die Plattform in Druckreihenfolge in die Ausrichtung jedes Bereichs und fordert dazu auf, jeden Bereich zu drucken.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="375"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="419"/>
         <source>Region done</source>
         <translation>Bereich fertig</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="389"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="420"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="390"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="421"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="380"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>Setzt einen pausierten Lauf fort oder wiederholt nach einem Geräteproblem den aktuellen Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="391"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="381"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="422"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="699"/>
         <source>Abort</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="376"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="404"/>
         <source>Step:</source>
         <translation>Schritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="377"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="405"/>
         <source>Elapsed:</source>
         <translation>Verstrichen:</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="441"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>Die Verbindung zu %1 ist um %2 abgerissen. Die Werte unten stammen nicht mehr vom Gerät; MultiDir versucht weiter, die Verbindung wiederherzustellen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="445"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>Der Drucklauf ist pausiert: ein Bereich, der gerade gedruckt wird, darf fertig werden, aber kein neuer Bereich beginnt. Drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="415"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 antwortet nicht: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="418"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="451"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>Die Verbindung steht wieder. Der Drucklauf ist seit dem Verbindungsabbruch weiterhin pausiert: prüfen Sie die Plattform und drücken Sie dann „Fortsetzen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>Mit diesen Einstellungen ist keine Verbindung möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="520"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="529"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="572"/>
         <source>Disconnected.</source>
         <translation>Getrennt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="582"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="584"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>Verbindung um %1 abgerissen; Verbindung wird wiederhergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
         <source>no: press Enable</source>
         <translation>nein: drücken Sie „Aktivieren“</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="595"/>
         <source>%1 (target %2)</source>
         <translation>%1 (Ziel %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
         <source>homing</source>
         <translation>Referenzfahrt läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="597"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="597"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="601"/>
         <source>not needed (robot arm)</source>
         <translation>nicht nötig (Roboterarm)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="565"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="603"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="608"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="622"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1: an das Gerät gesendet. Zum Weitermachen: %2.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="581"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="624"/>
         <source>%1: sent to the device.</source>
         <translation>%1: an das Gerät gesendet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="587"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="630"/>
         <source>Connected to %1.</source>
         <translation>Verbunden mit %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="643"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>Der Drucklauf ist abgeschlossen: jeder Bereich wurde gedruckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="602"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="645"/>
         <source>The print run was aborted.</source>
         <translation>Der Drucklauf wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="662"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
         <translation>Bereich %1 wird von %2 gedruckt (%3); der Lauf geht weiter, sobald der Drucker ihn als fertig meldet.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="667"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>Drucken Sie Bereich %1 (Datei %2) und drücken Sie dann „Bereich fertig“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="813"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>„Lauf starten“ abgelehnt: nicht verbunden; verbinden Sie zuerst das Gerät.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="654"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="821"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="828"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="850"/>
         <source>Start run refused: %1</source>
         <translation>„Lauf starten“ abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="686"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="854"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
         <translation>Für den Plan gibt es kein Slicing-Ergebnis: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan, damit der Drucker die Bereiche druckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="688"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="856"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
         <translation>Das Slicing-Ergebnis hat %1 Schritte, der Plan %2 Bereiche: jeder Bereich wird von Hand gedruckt („Bereich fertig“). Slicen Sie den Plan erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="696"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="864"/>
         <source>%1 refused: %2</source>
         <translation>%1 abgelehnt: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="884"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>Grenzen: %1 bis %2 in Schritten von %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="886"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>Grenzen: Neigung bis %1, %n verbotener Kegel</numerusform>
@@ -1685,12 +1704,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="889"/>
         <source> (machine profile)</source>
         <translation> (Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="891"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation> (Standardwerte: das Maschinenprofil gilt für eine %1-Maschine)</translation>
     </message>
@@ -1699,62 +1718,62 @@
         <translation type="vanished"> (Standardwerte: kein Maschinenprofil)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="725"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="893"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>; ein geändertes Profil gilt ab dem nächsten Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="743"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="919"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>Not-Halt: schaltet die Endstufe der Plattform sofort ab. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="745"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="921"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>Not-Halt: hält das Roboterprogramm mit größter Verzögerung an. Danach: %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="926"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>Setzt die Plattform nach einem Fehler oder NOT-HALT zurück; danach erneut „Aktivieren“ und „Referenzfahrt“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="927"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>Setzt das Roboterprogramm nach einem Fehler oder NOT-HALT zurück; danach nimmt es wieder Fahrbefehle an.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="753"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="929"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>Sucht den Referenzschalter (0°); der Antrieb muss aktiviert sein.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="930"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>Richtet die Plattform waagerecht aus (Neigung 0°).</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="802"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="979"/>
         <source>unknown since %1</source>
         <translation>unbekannt seit %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="981"/>
         <source>not seen yet</source>
         <translation>noch nicht empfangen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="984"/>
         <source>%1 s ago</source>
         <translation>vor %1 s</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="816"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="993"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>Kein Plan: starten Sie zuerst eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="994"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>Plan mit %n Bereich.</numerusform>
@@ -1762,12 +1781,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="996"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
         <translation>Slicing-Ergebnis vorhanden: ein verbundener Drucker druckt den G-Code jedes Bereichs.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="827"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1004"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>%n Bereich gedruckt: abgeschlossen</numerusform>
@@ -1775,97 +1794,98 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="829"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1006"/>
         <source>%1 of %2: %3</source>
         <translation>%1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="831"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1008"/>
         <source> (%1, %2)</source>
         <translation> (%1, %2)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="832"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1009"/>
         <source>; pausing after this region</source>
         <translation>; Pause nach diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="372"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="386"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="798"/>
         <source>Restart step</source>
         <translation>Schritt neu starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="373"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="387"/>
         <source>Prints the current step again from the start of its G-code, once you have cleared the platform of what the interrupted print left.</source>
         <translation>Druckt den aktuellen Schritt noch einmal vom Anfang seines G-Codes, nachdem Sie die Plattform von dem befreit haben, was der unterbrochene Druck hinterlassen hat.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="691"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="720"/>
         <source>Start Run</source>
         <translation>Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
         <source>The last run of this plan was aborted at step %1 of %2.</source>
         <translation>Der letzte Lauf dieses Plans wurde bei Schritt %1 von %2 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="727"/>
         <source>Steps 1 to %1 were printed. Before the platform moves, make sure it is clear: take off what step %2 left half printed and anything in the platform&apos;s way.</source>
         <translation>Die Schritte 1 bis %1 wurden gedruckt. Bevor sich die Plattform bewegt, muss sie frei sein: entfernen Sie, was Schritt %2 halb gedruckt hinterlassen hat, und alles, was der Plattform im Weg ist.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
         <source>Before the platform moves, make sure it is clear: take off what step 1 left half printed and anything in the platform&apos;s way.</source>
         <translation>Bevor sich die Plattform bewegt, muss sie frei sein: entfernen Sie, was Schritt 1 halb gedruckt hinterlassen hat, und alles, was der Plattform im Weg ist.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="735"/>
         <source>Platform Clear: &amp;Resume from Step %1</source>
         <translation>Plattform frei: ab Schritt %1 &amp;fortsetzen</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="738"/>
         <source>Platform Clear: &amp;Start from Step 1</source>
         <translation>Plattform frei: ab Schritt 1 &amp;starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="722"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
         <source>Start run refused: the plan changed since the question was asked; press Start run again.</source>
         <translation>„Lauf starten“ abgelehnt: der Plan hat sich seit der Frage geändert; drücken Sie erneut „Lauf starten“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="735"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="764"/>
         <source>%1 has no job of step %2 any more: it may have restarted, so there is nothing to resume. Restart step prints step %2 again from its start, once you have cleared the platform of what the interrupted print left. Or finish the region by hand and press Region done, or Abort.</source>
         <translation>%1 hat keinen Auftrag von Schritt %2 mehr: er wurde vielleicht neu gestartet, daher gibt es nichts fortzusetzen. „Schritt neu starten“ druckt Schritt %2 noch einmal von Anfang an, nachdem Sie die Plattform von dem befreit haben, was der unterbrochene Druck hinterlassen hat. Oder stellen Sie den Bereich von Hand fertig und drücken Sie „Bereich fertig“, oder „Abbrechen“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="770"/>
         <source>Restart Step %1</source>
         <translation>Schritt %1 neu starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="780"/>
         <source>Restart Step</source>
         <translation>Schritt neu starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="781"/>
         <source>Print step %1 again from its start?</source>
         <translation>Schritt %1 noch einmal von Anfang an drucken?</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="783"/>
         <source>The printer lost the job of step %1 part way. Before it prints the step again, take off what the interrupted print left of region %1 (the regions printed before it stay) and make sure the nozzle&apos;s way is clear.</source>
         <translation>Der Drucker hat den Auftrag von Schritt %1 mittendrin verloren. Bevor er den Schritt noch einmal druckt, entfernen Sie, was der unterbrochene Druck von Bereich %1 hinterlassen hat (die davor gedruckten Bereiche bleiben), und sorgen Sie dafür, dass der Weg der Düse frei ist.</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="787"/>
         <source>Platform Clear: &amp;Restart Step %1</source>
         <translation>Plattform frei: Schritt %1 &amp;neu starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="492"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="497"/>
         <source>the robot cell</source>
         <translation>die Roboterzelle</translation>
     </message>
@@ -1982,117 +2002,117 @@
 <context>
     <name>multidir::ui::MachinePanel</name>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="28"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="32"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="48"/>
         <source>3-DOF: fixed printing direction</source>
         <translation>3-DOF: feste Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="49"/>
         <source>4-DOF: rotary platform</source>
         <translation>4-DOF: Drehplattform</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="46"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="50"/>
         <source>5-DOF: tilting robot arm</source>
         <translation>5-DOF: kippender Roboterarm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="49"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>Drehplattform (4-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="52"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="60"/>
         <source>The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform plane (perpendicular to up)</source>
         <translation>Die Achse, um die sich die Plattform dreht, als x,y,z oder x, -y, +z; sie muss in der Plattformebene liegen (senkrecht zu oben)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="54"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
         <source>Pick on platform</source>
         <translation>Auf Plattform wählen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="65"/>
         <source>Click two points on the platform in the 3D view: the axis runs from the first to the second. Esc or this button again cancels.</source>
         <translation>Klicken Sie in der 3D-Ansicht auf zwei Punkte der Plattform: die Achse verläuft vom ersten zum zweiten. Esc oder ein erneuter Klick auf diese Schaltfläche bricht ab.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="70"/>
         <source>The stepper&apos;s resolution: only multiples of this angle can be reached</source>
         <translation>Auflösung des Schrittmotors: nur Vielfache dieses Winkels sind erreichbar</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="64"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
         <source>Rotation axis:</source>
         <translation>Drehachse:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="74"/>
         <source>Minimal angle:</source>
         <translation>Kleinster Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="75"/>
         <source>Maximal angle:</source>
         <translation>Größter Winkel:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="68"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="76"/>
         <source>Angle step:</source>
         <translation>Winkelschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="70"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="78"/>
         <source>Tilting arm (5-DOF)</source>
         <translation>Kipparm (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
         <source>How far the arm can tilt the platform away from up</source>
         <translation>Wie weit der Arm die Plattform aus der Senkrechten kippen kann</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="74"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="82"/>
         <source>Tilt limit:</source>
         <translation>Kippgrenze:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="88"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="81"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="89"/>
         <source>model footprint</source>
         <translation>Modellgrundfläche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="83"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="91"/>
         <source>Radius of the platform disc that no clipping plane may cut; 0 uses the model&apos;s footprint plus a margin</source>
         <translation>Radius der Plattformscheibe, die keine Schnittebene schneiden darf; 0 nimmt die Grundfläche des Modells plus einen Rand</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="101"/>
         <source>Machine:</source>
         <translation>Maschine:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="94"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="102"/>
         <source>Platform radius:</source>
         <translation>Plattformradius:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="162"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="212"/>
         <source>The rotation axis &quot;%1&quot; cannot be read: type three numbers x,y,z or an axis such as x or -y.</source>
         <translation>Die Drehachse „%1“ ist nicht lesbar: Geben Sie drei Zahlen x,y,z oder eine Achse wie x oder -y ein.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="167"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="217"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2102,6 +2122,7 @@
         <translation>5-DOF: Roboterarm unter einem feststehenden Extruder</translation>
     </message>
     <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="54"/>
         <source>Apart (plain printer, parts joined by dowels)</source>
         <translation>Getrennt (einfacher Drucker, Teile mit Dübeln verbunden)</translation>
     </message>
@@ -2109,197 +2130,198 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="93"/>
+        <location filename="../ui/main_window.cpp" line="95"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="124"/>
+        <location filename="../ui/main_window.cpp" line="126"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
+        <location filename="../ui/main_window.cpp" line="127"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="143"/>
+        <location filename="../ui/main_window.cpp" line="145"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>Einen früher gespeicherten Plan anzeigen (ein Ordner mit plan.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="144"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
         <source>&amp;Export plan...</source>
         <translation>Plan &amp;exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="146"/>
+        <location filename="../ui/main_window.cpp" line="148"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>Den angezeigten Plan speichern: plan.json und eine STL-Datei je Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="157"/>
+        <location filename="../ui/main_window.cpp" line="159"/>
         <source>&amp;Load machine profile...</source>
         <translation>Maschinenprofil &amp;laden...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="162"/>
+        <location filename="../ui/main_window.cpp" line="164"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="166"/>
+        <location filename="../ui/main_window.cpp" line="168"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="167"/>
+        <location filename="../ui/main_window.cpp" line="169"/>
         <source>&amp;Fit to View</source>
         <translation>In Ansicht ein&amp;passen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
+        <location filename="../ui/main_window.cpp" line="171"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>&amp;Modell zeigen (Plan ausblenden)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="177"/>
+        <location filename="../ui/main_window.cpp" line="179"/>
+        <location filename="../ui/main_window.cpp" line="747"/>
         <source>&amp;Search</source>
         <translation>&amp;Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="178"/>
+        <location filename="../ui/main_window.cpp" line="180"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="181"/>
+        <location filename="../ui/main_window.cpp" line="184"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
         <source>Overhangs</source>
         <translation>Überhänge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="257"/>
         <source>Machine</source>
         <translation>Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="245"/>
+        <location filename="../ui/main_window.cpp" line="258"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
+        <location filename="../ui/main_window.cpp" line="267"/>
         <source>Plan</source>
         <translation>Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>Hardware</source>
         <translation>Hardware</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="341"/>
+        <location filename="../ui/main_window.cpp" line="360"/>
         <source>Printing direction</source>
         <translation>Druckrichtung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="344"/>
+        <location filename="../ui/main_window.cpp" line="363"/>
         <source>Up:</source>
         <translation>Oben:</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="351"/>
+        <location filename="../ui/main_window.cpp" line="370"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>Die Richtung, in der das Modell gedruckt wird: die Plattform liegt darunter, Überhänge werden daran gemessen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="356"/>
+        <location filename="../ui/main_window.cpp" line="375"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="356"/>
+        <location filename="../ui/main_window.cpp" line="375"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="358"/>
+        <location filename="../ui/main_window.cpp" line="377"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="358"/>
+        <location filename="../ui/main_window.cpp" line="377"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="128"/>
+        <location filename="../ui/main_window.cpp" line="130"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>Eine Netzdatei (STL, OBJ, OFF oder PLY) oder ein MultiDir-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="155"/>
+        <location filename="../ui/main_window.cpp" line="157"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>Die 3D-Ansicht wie angezeigt als PNG- oder JPEG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="159"/>
+        <location filename="../ui/main_window.cpp" line="161"/>
         <source>Save machine pro&amp;file...</source>
         <translation>Maschinenprofil &amp;speichern...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="171"/>
+        <location filename="../ui/main_window.cpp" line="173"/>
         <source>View</source>
         <translation>Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="194"/>
+        <location filename="../ui/main_window.cpp" line="197"/>
         <source>S&amp;lice the plan...</source>
         <translation>Plan s&amp;licen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="197"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>Jeden Schritt des angezeigten Plans mit seinen Stützen in G-Code slicen (PrusaSlicer)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="201"/>
+        <location filename="../ui/main_window.cpp" line="214"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="202"/>
+        <location filename="../ui/main_window.cpp" line="215"/>
         <source>&amp;About MultiDir Studio</source>
         <translation>Ü&amp;ber MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="209"/>
+        <location filename="../ui/main_window.cpp" line="222"/>
         <source>About MultiDir Studio</source>
         <translation>Über MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="210"/>
+        <location filename="../ui/main_window.cpp" line="223"/>
         <source>MultiDir Studio %1</source>
         <translation>MultiDir Studio %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="212"/>
+        <location filename="../ui/main_window.cpp" line="225"/>
         <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
 
 Qt %1</source>
@@ -2308,334 +2330,334 @@ Qt %1</source>
 Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="305"/>
+        <location filename="../ui/main_window.cpp" line="324"/>
         <source>Emergency stop</source>
         <translation>Not-Halt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="421"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>The pose search was stopped; its result is dropped.</source>
         <translation>Die Posensuche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>Die Suche wurde angehalten; ihr Ergebnis wird verworfen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>Open Model or Project</source>
         <translation>Modell oder Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>Netze und Projekte (*.stl *.obj *.off *.ply *.multidir);;Netze (*.stl *.obj *.off *.ply);;MultiDir-Projekte (*.multidir);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>%1, %2, %3</source>
         <translation>%1; %2; %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Pose: %1</source>
         <translation>Pose: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>Benutzerdefiniert (%1, %2, %3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="557"/>
+        <location filename="../ui/main_window.cpp" line="579"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="583"/>
         <source>Repaired on load: %1</source>
         <translation>Beim Laden repariert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="575"/>
+        <location filename="../ui/main_window.cpp" line="597"/>
         <source>Could not open %1: %2</source>
         <translation>%1 konnte nicht geöffnet werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="579"/>
+        <location filename="../ui/main_window.cpp" line="601"/>
         <source>Could not open %1</source>
         <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="583"/>
+        <location filename="../ui/main_window.cpp" line="605"/>
         <source>%1 is still open.</source>
         <translation>%1 ist weiterhin geöffnet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
-        <location filename="../ui/main_window.cpp" line="624"/>
+        <location filename="../ui/main_window.cpp" line="628"/>
+        <location filename="../ui/main_window.cpp" line="645"/>
         <source>No model</source>
         <translation>Kein Modell</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="617"/>
+        <location filename="../ui/main_window.cpp" line="638"/>
         <source>Triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="618"/>
+        <location filename="../ui/main_window.cpp" line="639"/>
         <source>Volume: %1 mm³</source>
         <translation>Volumen: %1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="632"/>
+        <location filename="../ui/main_window.cpp" line="653"/>
         <source>Risky area unavailable</source>
         <translation>Risikofläche nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="640"/>
+        <location filename="../ui/main_window.cpp" line="661"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>Risikofläche (%1 oben): %2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="642"/>
+        <location filename="../ui/main_window.cpp" line="663"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>Fläche der Dreiecke, die bei dieser Aufwärtsrichtung um mehr als %1° überhängen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="659"/>
         <location filename="../ui/main_window.cpp" line="682"/>
-        <location filename="../ui/main_window_pose.cpp" line="57"/>
-        <location filename="../ui/main_window_pose.cpp" line="74"/>
+        <location filename="../ui/main_window.cpp" line="705"/>
+        <location filename="../ui/main_window_pose.cpp" line="38"/>
+        <location filename="../ui/main_window_pose.cpp" line="55"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="661"/>
-        <location filename="../ui/main_window_pose.cpp" line="59"/>
+        <location filename="../ui/main_window.cpp" line="684"/>
+        <location filename="../ui/main_window_pose.cpp" line="40"/>
         <source>Fix the machine first: %1</source>
         <translation>Korrigieren Sie zuerst die Maschine: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="663"/>
-        <location filename="../ui/main_window.cpp" line="681"/>
+        <location filename="../ui/main_window.cpp" line="686"/>
+        <location filename="../ui/main_window.cpp" line="704"/>
         <source>A pose search is running: wait for it or cancel it.</source>
         <translation>Eine Posensuche läuft: warten Sie, bis sie fertig ist, oder brechen Sie sie ab.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="680"/>
+        <location filename="../ui/main_window.cpp" line="703"/>
         <source>A search is already running.</source>
         <translation>Eine Suche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="687"/>
-        <location filename="../ui/main_window_pose.cpp" line="82"/>
+        <location filename="../ui/main_window.cpp" line="710"/>
+        <location filename="../ui/main_window_pose.cpp" line="63"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="691"/>
+        <location filename="../ui/main_window.cpp" line="714"/>
         <source>Cannot search: %1</source>
         <translation>Suche nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="692"/>
+        <location filename="../ui/main_window.cpp" line="715"/>
         <source>Cannot search.</source>
         <translation>Suche nicht möglich.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="706"/>
+        <location filename="../ui/main_window.cpp" line="729"/>
         <source>Searching %1...</source>
         <translation>Durchsuche %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="714"/>
+        <location filename="../ui/main_window.cpp" line="764"/>
         <source>Cancelling the search...</source>
         <translation>Suche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="777"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>Das Suchergebnis wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="730"/>
+        <location filename="../ui/main_window.cpp" line="792"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>Suche abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="731"/>
+        <location filename="../ui/main_window.cpp" line="793"/>
         <source>Search finished.</source>
         <translation>Suche beendet.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="744"/>
+        <location filename="../ui/main_window.cpp" line="813"/>
         <source>Search failed: %1</source>
         <translation>Suche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="780"/>
+        <location filename="../ui/main_window.cpp" line="849"/>
         <source>Growing supports for the plan...</source>
         <translation>Stützen für den Plan werden erzeugt...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="792"/>
+        <location filename="../ui/main_window.cpp" line="861"/>
         <source>Supports grown for the plan.</source>
         <translation>Stützen für den Plan erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="828"/>
+        <location filename="../ui/main_window.cpp" line="931"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>Es gibt keinen Plan zum Exportieren: starten Sie zuerst eine Suche.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="831"/>
+        <location filename="../ui/main_window.cpp" line="934"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>Die Stützen dieses Plans werden noch erzeugt: exportieren Sie ihn erneut, sobald die Statusleiste meldet, dass sie fertig sind.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="835"/>
+        <location filename="../ui/main_window.cpp" line="938"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>Der Ordner %1 konnte nicht angelegt werden: prüfen Sie, ob der übergeordnete Ordner existiert und beschreibbar ist.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="865"/>
+        <location filename="../ui/main_window.cpp" line="968"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>Der Plan konnte nicht nach %1 exportiert werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="871"/>
+        <location filename="../ui/main_window.cpp" line="974"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>Plan ohne Stützen nach %1 exportiert, obwohl %2 mm² Risikofläche verbleiben: %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="873"/>
+        <location filename="../ui/main_window.cpp" line="976"/>
         <source>no supports were grown for it.</source>
         <translation>für ihn wurden keine Stützen erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="878"/>
+        <location filename="../ui/main_window.cpp" line="981"/>
         <source>Plan exported to %1.</source>
         <translation>Plan nach %1 exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="885"/>
+        <location filename="../ui/main_window.cpp" line="988"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>Der Plan %1 konnte nicht geöffnet werden: %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="932"/>
+        <location filename="../ui/main_window.cpp" line="1035"/>
         <source>Machine profile saved to %1.</source>
         <translation>Maschinenprofil unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="944"/>
+        <location filename="../ui/main_window.cpp" line="1047"/>
         <source>Machine profile %1 loaded.</source>
         <translation>Maschinenprofil %1 geladen.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="953"/>
+        <location filename="../ui/main_window.cpp" line="1056"/>
         <source>Export Plan to Folder</source>
         <translation>Plan in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="953"/>
+        <location filename="../ui/main_window.cpp" line="1056"/>
         <source>-plan</source>
         <translation>-Plan</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="954"/>
+        <location filename="../ui/main_window.cpp" line="1057"/>
         <source>Plan folders (*)</source>
         <translation>Planordner (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="960"/>
-        <location filename="../ui/main_window.cpp" line="962"/>
+        <location filename="../ui/main_window.cpp" line="1063"/>
+        <location filename="../ui/main_window.cpp" line="1065"/>
         <source>Export Plan</source>
         <translation>Plan exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="973"/>
+        <location filename="../ui/main_window.cpp" line="1076"/>
         <source>Screenshot saved to %1.</source>
         <translation>Bildschirmfoto unter %1 gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="978"/>
+        <location filename="../ui/main_window.cpp" line="1081"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="979"/>
+        <location filename="../ui/main_window.cpp" line="1082"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG-Bilder (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="982"/>
-        <location filename="../ui/main_window.cpp" line="990"/>
+        <location filename="../ui/main_window.cpp" line="1085"/>
+        <location filename="../ui/main_window.cpp" line="1093"/>
         <source>Export Screenshot</source>
         <translation>Bildschirmfoto exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="995"/>
+        <location filename="../ui/main_window.cpp" line="1098"/>
         <source>Open Plan Folder</source>
         <translation>Planordner öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Open Plan</source>
         <translation>Plan öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="131"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
         <source>Sa&amp;mples</source>
         <translation>Beis&amp;piele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="141"/>
+        <location filename="../ui/main_window.cpp" line="143"/>
         <source>Open pla&amp;n...</source>
         <translation>Pla&amp;n öffnen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="148"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>Export &amp;G-code...</source>
         <translation>&amp;G-Code exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="150"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>Save the sliced plan&apos;s G-code (step-NN.gcode, job.gcode) and its print job</source>
         <translation>Den beim Slicen erzeugten G-Code des Plans (step-NN.gcode, job.gcode) und seinen Druckauftrag speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="153"/>
+        <location filename="../ui/main_window.cpp" line="155"/>
         <source>Export Screens&amp;hot...</source>
         <translation>Bildschirmfoto expo&amp;rtieren...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1001"/>
-        <location filename="../ui/main_window.cpp" line="1007"/>
+        <location filename="../ui/main_window.cpp" line="1104"/>
+        <location filename="../ui/main_window.cpp" line="1110"/>
         <source>Save Machine Profile</source>
         <translation>Maschinenprofil speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1003"/>
+        <location filename="../ui/main_window.cpp" line="1106"/>
         <source>Machine profiles (*.json)</source>
         <translation>Maschinenprofile (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1011"/>
-        <location filename="../ui/main_window.cpp" line="1018"/>
+        <location filename="../ui/main_window.cpp" line="1114"/>
+        <location filename="../ui/main_window.cpp" line="1121"/>
         <source>Load Machine Profile</source>
         <translation>Maschinenprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1013"/>
+        <location filename="../ui/main_window.cpp" line="1116"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>Maschinenprofile (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1031"/>
+        <location filename="../ui/main_window.cpp" line="1134"/>
         <source>Loading %1...</source>
         <translation>Lade %1...</translation>
     </message>
@@ -2660,123 +2682,123 @@ Qt %1</translation>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="61"/>
-        <location filename="../ui/main_window_pose.cpp" line="73"/>
+        <location filename="../ui/main_window_pose.cpp" line="42"/>
+        <location filename="../ui/main_window_pose.cpp" line="54"/>
         <source>A search is running: wait for it or cancel it.</source>
         <translation>Eine Suche läuft: warten Sie, bis sie fertig ist, oder brechen Sie sie ab.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="72"/>
+        <location filename="../ui/main_window_pose.cpp" line="53"/>
         <source>A pose search is already running.</source>
         <translation>Eine Posensuche läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="75"/>
+        <location filename="../ui/main_window_pose.cpp" line="56"/>
         <source>This plan was opened without its model: open the model.</source>
         <translation>Dieser Plan wurde ohne sein Modell geöffnet: öffnen Sie das Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="86"/>
+        <location filename="../ui/main_window_pose.cpp" line="67"/>
         <source>Cannot find the best pose: %1</source>
         <translation>Die beste Pose kann nicht gesucht werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="87"/>
+        <location filename="../ui/main_window_pose.cpp" line="68"/>
         <source>Cannot find the best pose.</source>
         <translation>Die beste Pose kann nicht gesucht werden.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="96"/>
+        <location filename="../ui/main_window_pose.cpp" line="77"/>
         <source>Finding the best pose for %1...</source>
         <translation>Beste Pose für %1 wird gesucht...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="104"/>
+        <location filename="../ui/main_window_pose.cpp" line="85"/>
         <source>Cancelling the pose search...</source>
         <translation>Posensuche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="117"/>
+        <location filename="../ui/main_window_pose.cpp" line="98"/>
         <source>The pose search result was dropped: the model or its up direction changed.</source>
         <translation>Das Ergebnis der Posensuche wurde verworfen: das Modell oder seine Aufwärtsrichtung hat sich geändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="127"/>
+        <location filename="../ui/main_window_pose.cpp" line="108"/>
         <source>Pose search cancelled: the poses that finished are listed; the plan shown is unchanged.</source>
         <translation>Posensuche abgebrochen: die fertigen Posen sind aufgelistet; der angezeigte Plan bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="131"/>
+        <location filename="../ui/main_window_pose.cpp" line="112"/>
         <source>Best pose found.</source>
         <translation>Beste Pose gefunden.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="141"/>
+        <location filename="../ui/main_window_pose.cpp" line="122"/>
         <source>Pose search cancelled before any pose finished: the plan shown is unchanged.</source>
         <translation>Posensuche abgebrochen, bevor eine Pose fertig war: der angezeigte Plan bleibt unverändert.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="143"/>
+        <location filename="../ui/main_window_pose.cpp" line="124"/>
         <source>Pose search failed: %1</source>
         <translation>Posensuche fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="159"/>
+        <location filename="../ui/main_window_pose.cpp" line="140"/>
         <source>Showing pose %1 (up %2, %3, %4): the project is unchanged. &quot;Use this pose&quot; makes it the model&apos;s up; &quot;Show current up&quot; goes back.</source>
         <translation>Pose %1 wird angezeigt (Aufwärtsrichtung %2, %3, %4): das Projekt bleibt unverändert. „Diese Pose verwenden“ macht sie zur Aufwärtsrichtung des Modells; „Aktuelle Aufwärtsrichtung zeigen“ kehrt zurück.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="206"/>
+        <location filename="../ui/main_window_pose.cpp" line="187"/>
         <source>This pose belongs to another model: find the best pose again.</source>
         <translation>Diese Pose gehört zu einem anderen Modell: suchen Sie die beste Pose erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="222"/>
+        <location filename="../ui/main_window_pose.cpp" line="203"/>
         <source>The model now stands on the best pose; its plan is shown.</source>
         <translation>Das Modell steht jetzt in der besten Pose; sein Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="225"/>
+        <location filename="../ui/main_window_pose.cpp" line="206"/>
         <source>The model now stands on pose %1; searching its plan...</source>
         <translation>Das Modell steht jetzt in Pose %1; sein Plan wird gesucht...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="743"/>
         <source>Replace the Edited Plan</source>
         <translation>Bearbeiteten Plan ersetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="728"/>
+        <location filename="../ui/main_window.cpp" line="744"/>
         <source>The plan shown has edits that are not saved.</source>
         <translation>Der angezeigte Plan hat Änderungen, die nicht gespeichert sind.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="730"/>
+        <location filename="../ui/main_window.cpp" line="746"/>
         <source>A new search replaces it; Edit &gt; Undo brings it back. Search now?</source>
         <translation>Eine neue Suche ersetzt ihn; Bearbeiten &gt; Rückgängig holt ihn zurück. Jetzt suchen?</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="768"/>
+        <location filename="../ui/main_window.cpp" line="784"/>
         <source>Search cancelled: its best plan so far (J_G %1 mm²) is worse than the plan shown (J_G %2 mm²), which is kept.</source>
         <translation>Suche abgebrochen: ihr bisher bester Plan (J_G %1 mm²) ist schlechter als der angezeigte Plan (J_G %2 mm²), der bleibt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="888"/>
+        <location filename="../ui/main_window.cpp" line="904"/>
         <source>Print Run Under Way</source>
         <translation>Drucklauf läuft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="889"/>
+        <location filename="../ui/main_window.cpp" line="905"/>
         <source>A print run is under way: step %1.</source>
         <translation>Ein Drucklauf läuft: Schritt %1.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="892"/>
+        <location filename="../ui/main_window.cpp" line="908"/>
         <source>Quitting stops the platform and the printer first: the run is aborted (Start run offers to resume it from the step it stopped at). Stop the devices and quit?</source>
         <translation>Beim Beenden werden zuerst die Plattform und der Drucker angehalten: der Lauf wird abgebrochen („Lauf starten“ bietet an, ihn bei dem Schritt fortzusetzen, bei dem er stehen blieb). Geräte anhalten und beenden?</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="894"/>
+        <location filename="../ui/main_window.cpp" line="910"/>
         <source>S&amp;top the Devices and Quit</source>
         <translation>Geräte an&amp;halten und beenden</translation>
     </message>
@@ -2796,7 +2818,7 @@ Qt %1</translation>
         <translation>Getrennt drucken</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_cell.cpp" line="20"/>
+        <location filename="../ui/main_window_cell.cpp" line="23"/>
         <source>Cell view</source>
         <translation>Zellenansicht</translation>
     </message>
@@ -2804,37 +2826,37 @@ Qt %1</translation>
 <context>
     <name>multidir::ui::MeshViewerWidget</name>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="365"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="421"/>
         <source>Open a model (%1) or File &gt; Samples</source>
         <translation>Modell öffnen (%1) oder Datei &gt; Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="557"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="629"/>
         <source>%1, %2, %3 mm</source>
         <translation>%1; %2; %3 mm</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="561"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="633"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="563"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="635"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="564"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="636"/>
         <source>B: %1</source>
         <translation>B: %1</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="565"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="637"/>
         <source>Distance: %1</source>
         <translation>Abstand: %1</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="568"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="640"/>
         <source>Click a second point on the model (Esc ends measuring)</source>
         <translation>Einen zweiten Punkt auf dem Modell anklicken (Esc beendet das Messen)</translation>
     </message>
@@ -3027,123 +3049,124 @@ Qt %1</translation>
 <context>
     <name>multidir::ui::PlanPanel</name>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="46"/>
-        <location filename="../ui/panels/plan_panel.cpp" line="176"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="66"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="200"/>
         <source>No plan yet: run a search or open a plan.</source>
         <translation>Noch kein Plan: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Region</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Volume (mm³)</source>
         <translation>Volumen (mm³)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Risky (mm²)</source>
         <translation>Risikofläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Direction</source>
         <translation>Richtung</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="73"/>
         <source>Machine angles</source>
         <translation>Maschinenwinkel</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="73"/>
         <source>Supports (mm³)</source>
         <translation>Stützen (mm³)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="61"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="84"/>
         <source>Printing directions</source>
         <translation>Druckrichtungen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="64"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="87"/>
         <source>Clipping planes</source>
         <translation>Schnittebenen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="66"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="89"/>
         <source>Supports</source>
         <translation>Stützen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="69"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="92"/>
         <source>The tree supports grown for the risky area the plan leaves, in one colour</source>
         <translation>Die Baumstützen, die für die vom Plan verbleibende Risikofläche erzeugt wurden, in einer Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="70"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="93"/>
         <source>Turn the view as the machine turns the part</source>
         <translation>Ansicht drehen, wie die Maschine das Teil dreht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="75"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="98"/>
         <source>Moves the regions apart along their printing directions</source>
         <translation>Schiebt die Bereiche entlang ihrer Druckrichtungen auseinander</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="82"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="105"/>
         <source>Previous region</source>
         <translation>Vorheriger Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="85"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="108"/>
         <source>Next region</source>
         <translation>Nächster Bereich</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="94"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="117"/>
         <source>Show:</source>
         <translation>Anzeigen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="97"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="120"/>
         <source>Exploded view:</source>
         <translation>Explosionsansicht:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="98"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="121"/>
         <source>Printed up to:</source>
         <translation>Gedruckt bis:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="136"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="159"/>
         <source>none (fixed)</source>
         <translation>keine (fest)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="138"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="161"/>
         <source>rotary %1°</source>
         <translation>Drehung %1°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="142"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="165"/>
         <source>tilt %1°, azimuth %2°</source>
         <translation>Neigung %1°, Azimut %2°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="173"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="176"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="151"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="174"/>
         <source>No supports were grown for this plan</source>
         <translation>Für diesen Plan wurden keine Stützen erzeugt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/plan_panel.cpp" line="154"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="178"/>
         <source>%n region(s); J_G %1 mm² before, %2 mm² after.</source>
         <translation>
             <numerusform>%n Bereich; J_G vorher %1 mm², nachher %2 mm².</numerusform>
@@ -3151,7 +3174,7 @@ Qt %1</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="209"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="233"/>
         <source>of %1</source>
         <translation>von %1</translation>
     </message>
@@ -3304,12 +3327,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::PoseSearchBox</name>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="29"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="31"/>
         <source>given up</source>
         <translation>vorgegeben</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="30"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="32"/>
         <source>resting</source>
         <translation>Ruhelage</translation>
     </message>
@@ -3318,175 +3341,190 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation type="vanished">abgetastet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="37"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="39"/>
         <source>Best pose</source>
         <translation>Beste Pose</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="44"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="46"/>
         <source>Poses tried: the current up and the poses the model stands in on its own</source>
         <translation>Probierte Posen: die aktuelle Aufwärtsrichtung und die Posen, in denen das Modell von selbst steht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="49"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="51"/>
         <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
         <translation>Posen, die die volle Suche mit den Einstellungen der Registerkarte „Suche“ erhalten (die aktuelle Aufwärtsrichtung und die am besten bewerteten anderen); die übrigen werden mit einem schnellen gierigen Plan bewertet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="54"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
         <source>Find best pose</source>
         <translation>Beste Pose finden</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="137"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="139"/>
         <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
         <translation>Ausprobieren, wie das Modell auf der Plattform stehen könnte, jede Pose mit ihrer eigenen Zerlegung, und die mit der kleinsten verbleibenden Risikofläche behalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="60"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Up</source>
         <translation>Oben</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Contact (mm²)</source>
         <translation>Auflage (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Margin (mm)</source>
         <translation>Reserve (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
         <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
         <translation>Fläche des Stücks der konvexen Hülle des Modells, das in dieser Pose auf der Plattform steht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="78"/>
         <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
         <translation>Wie weit der Schwerpunkt innerhalb dieser Fläche liegt: das Modell steht nur, wenn der Wert positiv ist</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Risky area (mm²)</source>
         <translation>Risikofläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>J_G (mm²)</source>
         <translation>J_G (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="79"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="81"/>
         <source>Risky area of the whole model printed along this up alone (J_G before)</source>
         <translation>Risikofläche des ganzen Modells, allein in dieser Aufwärtsrichtung gedruckt (J_G vorher)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="80"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="82"/>
         <source>J_G of the plan found for this pose</source>
         <translation>J_G des für diese Pose gefundenen Plans</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
         <source>Use this pose</source>
         <translation>Diese Pose verwenden</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
         <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
         <translation>Die ausgewählte Pose zur Aufwärtsrichtung des Modells machen; für die gewählte Pose wird ihr Plan angezeigt, für eine andere Pose wird gesucht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
         <source>Show current up</source>
         <translation>Aktuelle Aufwärtsrichtung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="95"/>
         <source>End the preview of a pose: show the model with its up again</source>
         <translation>Die Vorschau einer Pose beenden: das Modell wieder mit seiner Aufwärtsrichtung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="96"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="98"/>
         <source>Poses to try:</source>
         <translation>Zu probierende Posen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="97"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="99"/>
         <source>Full searches:</source>
         <translation>Volle Suchen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="148"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="156"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="150"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
         <source>Scoring poses with quick plans...</source>
         <translation>Posen werden mit schnellen Plänen bewertet...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="157"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
         <source>Full searches of the best poses...</source>
         <translation>Volle Suchen für die besten Posen...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="160"/>
         <source>Choosing the best pose...</source>
         <translation>Beste Pose wird gewählt...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="163"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="165"/>
         <source>Cancelling the pose search...</source>
         <translation>Posensuche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="184"/>
         <source>full search</source>
         <translation>volle Suche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="185"/>
         <source>quick plan</source>
         <translation>schneller Plan</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="186"/>
+        <source>ruled out</source>
+        <translation>ausgeschlossen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
         <source>not scored</source>
         <translation>nicht bewertet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
         <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
+        <source>Not searched: at least %1 mm² of this pose&apos;s overhang cannot be saved by any direction the machine prints along, more than the J_G of the given up&apos;s plan, so it could not win</source>
+        <translation>Nicht gesucht: mindestens %1 mm² der Überhänge dieser Pose rettet keine Richtung, in der die Maschine druckt, mehr als J_G des Plans der vorgegebenen Oberseite; sie könnte nicht gewinnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="212"/>
         <source>chosen</source>
         <translation>gewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="205"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="217"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>Beste Pose: Aufwärtsrichtung %1 (%2), J_G %3 mm², %n Bereich.</numerusform>
@@ -3494,12 +3532,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="219"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>Abgebrochen: die fertigen Posen sind aufgelistet. %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="234"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="246"/>
         <source>, in use</source>
         <translation>, in Verwendung</translation>
     </message>
@@ -3526,7 +3564,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::PrintRunDriver</name>
     <message>
-        <location filename="../ui/device/print_run_driver.cpp" line="164"/>
+        <location filename="../ui/device/print_run_driver.cpp" line="172"/>
         <source>the link to %1 was lost: the run is paused; press Resume once the link is back</source>
         <translation>die Verbindung zu %1 ist abgerissen: der Lauf ist pausiert; drücken Sie „Fortsetzen“, sobald die Verbindung wieder steht</translation>
     </message>
@@ -3539,13 +3577,13 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Der Drucker antwortet noch nicht; MultiDir versucht es weiter. %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_link_owner.cpp" line="119"/>
-        <location filename="../ui/device/printer_link_owner.cpp" line="156"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="120"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="166"/>
         <source>Printer E-STOP</source>
         <translation>Drucker-NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_link_owner.cpp" line="121"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="122"/>
         <source>%1 refused: no printer is connected.</source>
         <translation>%1 abgelehnt: kein Drucker verbunden.</translation>
     </message>
@@ -3563,280 +3601,278 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::PrinterSection</name>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="44"/>
+        <location filename="../ui/device/printer_section.cpp" line="45"/>
         <source>%1 °C (off)</source>
         <translation>%1 °C (aus)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="45"/>
+        <location filename="../ui/device/printer_section.cpp" line="46"/>
         <source>%1 / %2 °C</source>
         <translation>%1 / %2 °C</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="52"/>
-        <location filename="../ui/device/printer_section.cpp" line="250"/>
+        <location filename="../ui/device/printer_section.cpp" line="53"/>
+        <location filename="../ui/device/printer_section.cpp" line="294"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="54"/>
+        <location filename="../ui/device/printer_section.cpp" line="55"/>
         <source>standby (no job)</source>
         <translation>Bereitschaft (kein Auftrag)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="56"/>
+        <location filename="../ui/device/printer_section.cpp" line="57"/>
         <source>printing</source>
         <translation>Druck läuft</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="58"/>
+        <location filename="../ui/device/printer_section.cpp" line="59"/>
         <source>paused</source>
         <translation>pausiert</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="60"/>
+        <location filename="../ui/device/printer_section.cpp" line="61"/>
         <source>complete</source>
         <translation>abgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="62"/>
+        <location filename="../ui/device/printer_section.cpp" line="63"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="64"/>
+        <location filename="../ui/device/printer_section.cpp" line="65"/>
         <source>error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="74"/>
+        <location filename="../ui/device/printer_section.cpp" line="75"/>
         <source>Printer</source>
         <translation>Drucker</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="78"/>
+        <location filename="../ui/device/printer_section.cpp" line="79"/>
         <source>http://192.168.0.20:7125</source>
         <translation>http://192.168.0.20:7125</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="79"/>
+        <location filename="../ui/device/printer_section.cpp" line="80"/>
         <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
         <translation>Die Adresse des Druckers: Moonraker (Klipper) als http://HOST:PORT oder HOST:PORT (Port 7125).</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="83"/>
-        <location filename="../ui/device/printer_section.cpp" line="254"/>
-        <location filename="../ui/device/printer_section.cpp" line="263"/>
+        <location filename="../ui/device/printer_section.cpp" line="84"/>
+        <location filename="../ui/device/printer_section.cpp" line="298"/>
+        <location filename="../ui/device/printer_section.cpp" line="312"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="84"/>
+        <location filename="../ui/device/printer_section.cpp" line="85"/>
         <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
         <translation>Nur, wenn der Drucker einen verlangt (Moonraker-Abschnitt [authorization]). Wird nicht gespeichert.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="85"/>
+        <location filename="../ui/device/printer_section.cpp" line="86"/>
         <source>Connect printer</source>
         <translation>Drucker verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="86"/>
+        <location filename="../ui/device/printer_section.cpp" line="87"/>
         <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
         <translation>Verbindet mit dem Drucker; ein Drucklauf sendet ihm dann den G-Code jedes Bereichs.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="87"/>
+        <location filename="../ui/device/printer_section.cpp" line="88"/>
         <source>Disconnect printer</source>
         <translation>Drucker trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="88"/>
+        <location filename="../ui/device/printer_section.cpp" line="89"/>
         <source>Closes the link without commanding the printer: a job on it goes on.</source>
         <translation>Schließt die Verbindung, ohne dem Drucker einen Befehl zu senden: ein Auftrag auf ihm läuft weiter.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="89"/>
+        <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Clear printer E-STOP</source>
         <translation>Drucker-NOT-HALT aufheben</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
-        <translation>Lässt wieder Aufträge zu, sobald der Drucker den Not-Halt bestätigt hat. Ein Klipper-Drucker braucht zusätzlich FIRMWARE_RESTART auf seiner Konsole.</translation>
+        <translation type="vanished">Lässt wieder Aufträge zu, sobald der Drucker den Not-Halt bestätigt hat. Ein Klipper-Drucker braucht zusätzlich FIRMWARE_RESTART auf seiner Konsole.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="107"/>
+        <location filename="../ui/device/printer_section.cpp" line="112"/>
         <source>Address:</source>
         <translation>Adresse:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="108"/>
+        <location filename="../ui/device/printer_section.cpp" line="113"/>
         <source>API key:</source>
         <translation>API-Schlüssel:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="113"/>
+        <location filename="../ui/device/printer_section.cpp" line="118"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="114"/>
+        <location filename="../ui/device/printer_section.cpp" line="119"/>
         <source>Job:</source>
         <translation>Auftrag:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="115"/>
+        <location filename="../ui/device/printer_section.cpp" line="120"/>
         <source>Firmware:</source>
         <translation>Firmware:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="116"/>
+        <location filename="../ui/device/printer_section.cpp" line="121"/>
         <source>Printer says:</source>
         <translation>Meldung des Druckers:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="117"/>
+        <location filename="../ui/device/printer_section.cpp" line="122"/>
         <source>Extruder:</source>
         <translation>Extruder:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="118"/>
+        <location filename="../ui/device/printer_section.cpp" line="123"/>
         <source>Bed:</source>
         <translation>Druckbett:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="119"/>
+        <location filename="../ui/device/printer_section.cpp" line="124"/>
         <source>File:</source>
         <translation>Datei:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="120"/>
+        <location filename="../ui/device/printer_section.cpp" line="125"/>
         <source>Progress:</source>
         <translation>Fortschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="121"/>
+        <location filename="../ui/device/printer_section.cpp" line="126"/>
         <source>Job time left:</source>
         <translation>Restzeit des Auftrags:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="122"/>
+        <location filename="../ui/device/printer_section.cpp" line="127"/>
         <source>Last problem:</source>
         <translation>Letztes Problem:</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="137"/>
+        <location filename="../ui/device/printer_section.cpp" line="154"/>
         <source>Connected to %1.</source>
         <translation>Verbunden mit %1.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="155"/>
+        <location filename="../ui/device/printer_section.cpp" line="172"/>
         <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
         <translation>Die Verbindung zu %1 ist um %2 abgerissen: die Werte stammen nicht mehr vom Drucker, und er druckt möglicherweise noch. MultiDir versucht es weiter.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="171"/>
+        <location filename="../ui/device/printer_section.cpp" line="188"/>
         <source>Cannot connect to the printer: %1</source>
         <translation>Keine Verbindung zum Drucker möglich: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="175"/>
+        <location filename="../ui/device/printer_section.cpp" line="192"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung mit %1 wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="180"/>
+        <location filename="../ui/device/printer_section.cpp" line="197"/>
         <source>Printer disconnected.</source>
         <translation>Drucker getrennt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="186"/>
         <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
-        <translation>Drucker-NOT-HALT aufgehoben. Ein Klipper-Drucker braucht vor seinem nächsten Auftrag FIRMWARE_RESTART.</translation>
+        <translation type="vanished">Drucker-NOT-HALT aufgehoben. Ein Klipper-Drucker braucht vor seinem nächsten Auftrag FIRMWARE_RESTART.</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="188"/>
+        <location filename="../ui/device/printer_section.cpp" line="210"/>
         <source>Clear printer E-STOP refused: %1</source>
         <translation>„Drucker-NOT-HALT aufheben“ abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="207"/>
+        <location filename="../ui/device/printer_section.cpp" line="251"/>
         <source>step %1 of %2: %3</source>
         <translation>Schritt %1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="210"/>
+        <location filename="../ui/device/printer_section.cpp" line="254"/>
         <source>not started</source>
         <translation>nicht begonnen</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="213"/>
+        <location filename="../ui/device/printer_section.cpp" line="257"/>
         <source>%1 of %2 (not a step of this run)</source>
         <translation>%1 von %2 (kein Schritt dieses Laufs)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="219"/>
+        <location filename="../ui/device/printer_section.cpp" line="263"/>
         <source>none: every step is printed</source>
         <translation>keine: alle Schritte sind gedruckt</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="222"/>
+        <location filename="../ui/device/printer_section.cpp" line="266"/>
         <source>no estimate: slice the plan before starting the run</source>
         <translation>keine Schätzung: slicen Sie den Plan, bevor Sie den Lauf starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="224"/>
+        <location filename="../ui/device/printer_section.cpp" line="268"/>
         <source>%1 of printing (done about %2; platform moves not counted)</source>
         <translation>%1 Druckzeit (fertig gegen %2; Plattformbewegungen nicht mitgerechnet)</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="235"/>
+        <location filename="../ui/device/printer_section.cpp" line="279"/>
         <source>Disconnected</source>
         <translation>Getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="237"/>
+        <location filename="../ui/device/printer_section.cpp" line="281"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>Nicht erreichbar; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="239"/>
+        <location filename="../ui/device/printer_section.cpp" line="283"/>
         <source>Connecting…</source>
         <translation>Verbindung wird hergestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="241"/>
+        <location filename="../ui/device/printer_section.cpp" line="285"/>
         <source>Link lost at %1; MultiDir keeps trying…</source>
         <translation>Verbindung um %1 abgerissen; MultiDir versucht es weiter…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="243"/>
+        <location filename="../ui/device/printer_section.cpp" line="287"/>
         <source>Connected to %1</source>
         <translation>Verbunden mit %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="251"/>
+        <location filename="../ui/device/printer_section.cpp" line="295"/>
         <source>nothing</source>
         <translation>nichts</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="283"/>
+        <location filename="../ui/device/printer_section.cpp" line="340"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 antwortet nicht: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="285"/>
+        <location filename="../ui/device/printer_section.cpp" line="342"/>
         <source>The printer&apos;s firmware is %1: %2</source>
         <translation>Die Firmware des Druckers ist im Zustand %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="287"/>
+        <location filename="../ui/device/printer_section.cpp" line="344"/>
         <source>it says nothing more</source>
         <translation>weitere Angaben macht sie nicht</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="289"/>
+        <location filename="../ui/device/printer_section.cpp" line="346"/>
         <source>The print run is paused: %1.</source>
         <translation>Der Drucklauf ist pausiert: %1.</translation>
     </message>
@@ -4179,359 +4215,359 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::RobotCellSection</name>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="62"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="63"/>
         <source>Robot cell (Universal Robots)</source>
         <translation>Roboterzelle (Universal Robots)</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="69"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="70"/>
         <source>host or host:port (the dashboard&apos;s port; UR&apos;s own 29999 when left out)</source>
         <translation>Host oder Host:Port (der Port des Dashboards; ohne Angabe UR-eigener Port 29999)</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="72"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="73"/>
         <source>the folder &apos;multidir robot-program&apos; wrote</source>
         <translation>der Ordner, den „multidir robot-program“ geschrieben hat</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="73"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="74"/>
         <source>Open job folder…</source>
         <translation>Auftragsordner öffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="74"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="75"/>
         <source>Convert the sliced job</source>
         <translation>Geslicten Auftrag umwandeln</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="75"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="77"/>
         <source>The plan&apos;s sliced job turned into the cell&apos;s programs (as multidir robot-program does), for the cell on the Machine tab</source>
         <translation>Der geslicte Auftrag des Plans als Programme der Zelle (wie multidir robot-program), für die Zelle im Reiter Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="77"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="79"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="82"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="84"/>
         <source>Connect</source>
         <translation>Verbinden</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="83"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="85"/>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="89"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="91"/>
         <source>Start job</source>
         <translation>Auftrag starten</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="90"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="92"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="91"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="93"/>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="92"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="94"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="93"/>
-        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="95"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="503"/>
         <source>E-STOP</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="113"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="115"/>
         <source>Robot:</source>
         <translation>Roboter:</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="115"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="117"/>
         <source>State:</source>
         <translation>Zustand:</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="116"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="118"/>
         <source>Joints:</source>
         <translation>Gelenke:</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="117"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="119"/>
         <source>Robot job:</source>
         <translation>Roboterauftrag:</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="119"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="121"/>
         <source>Step:</source>
         <translation>Schritt:</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="132"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="134"/>
         <source>Conversion cancelled.</source>
         <translation>Umwandlung abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="146"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="148"/>
         <source>%1 of %2: %3 sent</source>
         <translation>%1 von %2: %3 gesendet</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="150"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="153"/>
         <source>movel %1 of %2</source>
         <translation>movel %1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="151"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="153"/>
         <source>between movels (a joint move)</source>
         <translation>zwischen movel-Befehlen (eine Gelenkbewegung)</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="152"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="154"/>
         <source>%1 of %2: %3, %4 %, about %5 left</source>
         <translation>%1 von %2: %3, %4 %, noch etwa %5</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="160"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="162"/>
         <source>The robot reports: %1</source>
         <translation>Der Roboter meldet: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="163"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="165"/>
         <source>Cannot pause: %1. Stop ends the run.</source>
         <translation>Pause nicht möglich: %1. Stopp beendet den Lauf.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="165"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="167"/>
         <source>paused after movel %1 of %2; the extruder stopped, the platform %3 mm off the nozzle</source>
         <translation>pausiert nach movel %1 von %2; Extruder gestoppt, Plattform %3 mm von der Düse entfernt</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="170"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="172"/>
         <source>%1 of %2: %3</source>
         <translation>%1 von %2: %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="171"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="173"/>
         <source>Paused at a safe point. Resume goes on from there; Stop ends the run.</source>
         <translation>An einem sicheren Punkt pausiert. Fortsetzen macht dort weiter; Stopp beendet den Lauf.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="176"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="178"/>
         <source>Resuming step %1 after movel %2: back down to the nozzle, then the rest of the step.</source>
         <translation>Schritt %1 wird nach movel %2 fortgesetzt: zurück an die Düse, dann der Rest des Schritts.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="183"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="186"/>
         <source>%1 of %2 done in %3 of the robot&apos;s time</source>
         <translation>%1 von %2 fertig in %3 Roboterzeit</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="214"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="217"/>
         <source>The link to the robot at %1 is lost (%2). The robot&apos;s values are unknown; MultiDir keeps trying to reconnect and sends a latched stop first thing once it is back.</source>
         <translation>Die Verbindung zum Roboter unter %1 ist unterbrochen (%2). Die Werte des Roboters sind unbekannt; MultiDir versucht weiter, sich neu zu verbinden, und sendet einen gehaltenen Stopp als Erstes, sobald sie wieder besteht.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="217"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="220"/>
         <source>The robot job run is ending: it stops the program.</source>
         <translation>Der Roboterauftrag endet: er stoppt das Programm.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="223"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="226"/>
         <source>Open a robot job folder (multidir robot-program OUT)</source>
         <translation>Roboterauftragsordner öffnen (multidir robot-program OUT)</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="231"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="233"/>
         <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
         <translation>Es gibt keine Roboterzelle: wählen Sie die Maschine „Roboterarm unter festem Extruder“.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="236"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="238"/>
         <source>The plan shown is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
         <translation>Der angezeigte Plan ist nicht geslict: slicen Sie ihn zuerst mit dem Profil der Zelle (ur5-cell-0.8).</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="241"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="243"/>
         <source>No folder for the converted job: %1</source>
         <translation>Kein Ordner für den umgewandelten Auftrag: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="272"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="275"/>
         <source>The sliced job cannot be converted for the cell: %1</source>
         <translation>Der geslicte Auftrag lässt sich nicht für die Zelle umwandeln: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="277"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="280"/>
         <source>Converted for the cell: %1 steps in %2.</source>
         <translation>Für die Zelle umgewandelt: %1 Schritte in %2.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="285"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="288"/>
         <source>Converting the sliced job for the cell…</source>
         <translation>Geslicter Auftrag wird für die Zelle umgewandelt…</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="296"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="299"/>
         <source>The robot&apos;s address: %1</source>
         <translation>Adresse des Roboters: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="306"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="309"/>
         <source>Connecting to the robot at %1…</source>
         <translation>Verbindung zum Roboter unter %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="323"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="327"/>
         <source>The robot at %1 cannot be reached: %2</source>
         <translation>Der Roboter unter %1 ist nicht erreichbar: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="327"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="331"/>
         <source>Connected to the robot at %1.</source>
         <translation>Mit dem Roboter unter %1 verbunden.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="336"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="340"/>
         <source>A robot job run is under way: Stop it before disconnecting.</source>
         <translation>Ein Roboterauftrag läuft: stoppen Sie ihn vor dem Trennen.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="351"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="354"/>
         <source>Start refused: %1</source>
         <translation>Start abgelehnt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="356"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="358"/>
         <source>no robot is connected: Connect first.</source>
         <translation>kein Roboter verbunden: zuerst verbinden.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="364"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="366"/>
         <source>the document has no robot cell: set the cell on the Machine tab (the job was made for %1).</source>
         <translation>das Dokument hat keine Roboterzelle: legen Sie die Zelle im Reiter Maschine fest (der Auftrag wurde für %1 erstellt).</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="368"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="371"/>
         <source>the job&apos;s cell (%1) cannot be read: %2</source>
         <translation>die Zelle des Auftrags (%1) ist nicht lesbar: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="372"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="374"/>
         <source>the job&apos;s cell (%1) is not the cell on the Machine tab: convert the job again with this cell, or load the job&apos;s cell on the Machine tab.</source>
         <translation>die Zelle des Auftrags (%1) ist nicht die Zelle im Reiter Maschine: wandeln Sie den Auftrag mit dieser Zelle neu um oder laden Sie die Zelle des Auftrags im Reiter Maschine.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="377"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="379"/>
         <source>no plan is shown: open the plan the job was made from.</source>
         <translation>kein Plan angezeigt: öffnen Sie den Plan, aus dem der Auftrag erstellt wurde.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="380"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="382"/>
         <source>the job was converted from another plan than the one shown: convert the sliced job again.</source>
         <translation>der Auftrag wurde aus einem anderen als dem angezeigten Plan umgewandelt: wandeln Sie den geslicten Auftrag neu um.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="382"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="384"/>
         <source>the job has %1 steps but the plan shown has %2 regions: it was made from another plan.</source>
         <translation>der Auftrag hat %1 Schritte, der angezeigte Plan aber %2 Bereiche: er wurde aus einem anderen Plan erstellt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="388"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="391"/>
         <source>the robot has not confirmed its stop yet (%1).</source>
         <translation>der Roboter hat seinen Stopp noch nicht bestätigt (%1).</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="406"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="409"/>
         <source>starting: %1 steps</source>
         <translation>Start: %1 Schritte</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="407"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="410"/>
         <source>Robot job started: %1 steps.</source>
         <translation>Roboterauftrag gestartet: %1 Schritte.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="415"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="418"/>
         <source>Pause asked for: the arm finishes the move under way, the extruder stops and the platform backs off the nozzle.</source>
         <translation>Pause angefordert: der Arm beendet die laufende Bewegung, der Extruder stoppt und die Plattform entfernt sich von der Düse.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="438"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="448"/>
         <source>E-STOP sent to the robot (stop, then power off). To go on: release it on the teach pendant if pressed there; Start powers the arm on again once the robot confirmed the stop.</source>
         <translation>NOT-HALT an den Roboter gesendet (Stopp, dann Ausschalten). Zum Weitermachen: am Handbediengerät lösen, falls dort gedrückt; Start schaltet den Arm wieder ein, sobald der Roboter den Stopp bestätigt hat.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="450"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="460"/>
         <source>done: %1 steps printed</source>
         <translation>fertig: %1 Schritte gedruckt</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="451"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="461"/>
         <source>The robot job is done: %1 steps printed.</source>
         <translation>Der Roboterauftrag ist fertig: %1 Schritte gedruckt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="455"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="465"/>
         <source>The robot did not start the job: %1</source>
         <translation>Der Roboter hat den Auftrag nicht gestartet: %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="459"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="469"/>
         <source>stopped in step %1 of %2</source>
         <translation>gestoppt in Schritt %1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="460"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="470"/>
         <source>The run stopped in step %1: %2</source>
         <translation>Der Lauf wurde in Schritt %1 gestoppt: %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="477"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="487"/>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="478"/>
-        <location filename="../ui/device/robot_cell_section.cpp" line="483"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="488"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="482"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="492"/>
         <source>unknown: the link is lost (%1)</source>
         <translation>unbekannt: die Verbindung ist unterbrochen (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="485"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="495"/>
         <source>robot mode %1, safety mode %2, program %3</source>
         <translation>Robotermodus %1, Sicherheitsmodus %2, Programm %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="490"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="500"/>
         <source>%1 deg</source>
         <translation>%1 Grad</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="503"/>
         <source>stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="494"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="504"/>
         <source>Robot: %1 confirmed by the robot.</source>
         <translation>Roboter: %1 vom Roboter bestätigt.</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="495"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="505"/>
         <source>Robot: %1 not confirmed yet (%2); MultiDir keeps resending it.</source>
         <translation>Roboter: %1 noch nicht bestätigt (%2); MultiDir sendet ihn weiter.</translation>
     </message>
@@ -4564,18 +4600,18 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Unerwarteter Fehler beim Erzeugen der Stützen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="91"/>
+        <location filename="../ui/jobs/search_job.cpp" line="96"/>
         <source>growing supports</source>
         <translation>Stützen werden erzeugt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="102"/>
+        <location filename="../ui/jobs/search_job.cpp" line="107"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>Nicht genug Speicher für diese Suche: verringern Sie die Strahlbreite oder die Zahl der Normalen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="105"/>
-        <location filename="../ui/jobs/search_job.cpp" line="109"/>
+        <location filename="../ui/jobs/search_job.cpp" line="110"/>
+        <location filename="../ui/jobs/search_job.cpp" line="114"/>
         <source>Unexpected error during the search.</source>
         <translation>Unerwarteter Fehler während der Suche.</translation>
     </message>
@@ -4583,153 +4619,153 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SearchPanel</name>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="45"/>
+        <location filename="../ui/panels/search_panel.cpp" line="46"/>
         <source>Beam search (Algorithm 1)</source>
         <translation>Strahlsuche (Algorithmus 1)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="46"/>
+        <location filename="../ui/panels/search_panel.cpp" line="47"/>
         <source>Constrained greedy</source>
         <translation>Eingeschränkt gierig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="47"/>
+        <location filename="../ui/panels/search_panel.cpp" line="48"/>
         <source>Greedy</source>
         <translation>Gierig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="52"/>
+        <location filename="../ui/panels/search_panel.cpp" line="53"/>
         <source>How many partial plans each level keeps (b)</source>
         <translation>Wie viele Teilpläne jede Ebene behält (b)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="58"/>
+        <location filename="../ui/panels/search_panel.cpp" line="59"/>
         <source>w: every region cut off keeps at least the model&apos;s volume divided by w</source>
         <translation>w: jeder abgetrennte Bereich behält mindestens das Modellvolumen geteilt durch w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="63"/>
+        <location filename="../ui/panels/search_panel.cpp" line="64"/>
         <source>Beam search only: runs at this many region scales side by side, the smallest region V/w, V/2w, V/4w, ..., the beam width shared among them, and keeps the best plan. No single w suits every model. 1: one beam search at w</source>
         <translation>Nur Strahlsuche: läuft nebeneinander auf so vielen Regionsskalen (kleinste Region V/w, V/2w, V/4w, ...), teilt die Strahlbreite unter ihnen auf und behält den besten Plan. Kein einzelnes w passt zu jedem Modell. 1: eine Strahlsuche bei w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="70"/>
+        <location filename="../ui/panels/search_panel.cpp" line="71"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>Kandidatennormalen, auf der ganzen Kugel abgetastet (5-DOF)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="75"/>
-        <location filename="../ui/panels/search_panel.cpp" line="89"/>
+        <location filename="../ui/panels/search_panel.cpp" line="76"/>
+        <location filename="../ui/panels/search_panel.cpp" line="90"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="77"/>
+        <location filename="../ui/panels/search_panel.cpp" line="78"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>Abstand der Kandidatenebenen entlang jeder Normalen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="83"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="84"/>
+        <location filename="../ui/panels/search_panel.cpp" line="85"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>Größter selbsttragender Winkel, mit dem die Suche plant</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="91"/>
+        <location filename="../ui/panels/search_panel.cpp" line="92"/>
         <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
         <translation>Kein Bereich, auch nicht der auf der Plattform, ist entlang seiner Druckrichtung dünner als dieser Wert</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="97"/>
+        <location filename="../ui/panels/search_panel.cpp" line="98"/>
         <source> % of J_G</source>
         <translation> % von J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="99"/>
+        <location filename="../ui/panels/search_panel.cpp" line="100"/>
         <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
         <translation>Eine Ebene bleibt nur, wenn ihr Entfernen J_G um mindestens diesen Anteil des vorherigen J_G (und um mindestens 1 mm²) erhöhen würde: jeder Bereich kostet eine Plattformbewegung und eine Naht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <location filename="../ui/panels/search_panel.cpp" line="123"/>
         <source>off</source>
         <translation>aus</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <location filename="../ui/panels/search_panel.cpp" line="124"/>
         <source>After the search, move every plane continuously (normal and offset) to lower J_G further, every constraint kept; higher values refine more finely and take longer</source>
         <translation>Nach der Suche jede Ebene stufenlos verschieben (Normale und Versatz), um J_G weiter zu senken, wobei alle Bedingungen eingehalten werden; höhere Werte verfeinern genauer und dauern länger</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="112"/>
+        <location filename="../ui/panels/search_panel.cpp" line="140"/>
         <source>machine&apos;s axis only</source>
         <translation>nur Achse der Maschine</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="113"/>
+        <location filename="../ui/panels/search_panel.cpp" line="141"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4-DOF: zusätzlich so viele über 180° verteilte Drehachsen probieren und die beste behalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="116"/>
+        <location filename="../ui/panels/search_panel.cpp" line="144"/>
         <source>Scheme:</source>
         <translation>Verfahren:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="117"/>
+        <location filename="../ui/panels/search_panel.cpp" line="145"/>
         <source>Beam width:</source>
         <translation>Strahlbreite:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="119"/>
+        <location filename="../ui/panels/search_panel.cpp" line="147"/>
         <source>Volume divisor w:</source>
         <translation>Volumenteiler w:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="120"/>
+        <location filename="../ui/panels/search_panel.cpp" line="148"/>
         <source>Scales:</source>
         <translation>Skalen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="122"/>
+        <location filename="../ui/panels/search_panel.cpp" line="150"/>
         <source>Normals:</source>
         <translation>Normalen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="123"/>
+        <location filename="../ui/panels/search_panel.cpp" line="151"/>
         <source>Offset step:</source>
         <translation>Versatzschritt:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="124"/>
+        <location filename="../ui/panels/search_panel.cpp" line="152"/>
         <source>Max. overhang angle α:</source>
         <translation>Max. Überhangwinkel α:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="125"/>
+        <location filename="../ui/panels/search_panel.cpp" line="153"/>
         <source>Min. region height:</source>
         <translation>Min. Bereichshöhe:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="126"/>
+        <location filename="../ui/panels/search_panel.cpp" line="154"/>
         <source>Min. gain per plane:</source>
         <translation>Min. Gewinn je Ebene:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <location filename="../ui/panels/search_panel.cpp" line="159"/>
         <source>Polish the planes:</source>
         <translation>Ebenen polieren:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <location filename="../ui/panels/search_panel.cpp" line="126"/>
         <source>also the finalists</source>
         <translation>auch die Finalisten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <location filename="../ui/panels/search_panel.cpp" line="129"/>
         <source>Also polish the search&apos;s best plan for every other number of cuts that may beat its own plan, and keep the least J_G: the plan changes less with the settings</source>
         <translation>Auch den besten Plan der Suche für jede andere Zahl von Schnitten polieren, der ihren eigenen Plan schlagen kann, und den mit dem kleinsten J_G behalten: der Plan ändert sich weniger mit den Einstellungen</translation>
     </message>
@@ -4739,159 +4775,159 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>die hinteren Ebenen des polierten Plans</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <location filename="../ui/panels/search_panel.cpp" line="134"/>
         <source>After polishing, search the plan&apos;s later planes again from each of its polished states and keep a lower plan found there: lower J_G on some models, about twice the time</source>
         <translation>Nach dem Polieren die späteren Ebenen des Plans von jedem seiner polierten Zustände aus neu suchen und einen dort gefundenen niedrigeren Plan behalten: bei manchen Modellen kleineres J_G, etwa doppelte Zeit</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <location filename="../ui/panels/search_panel.cpp" line="160"/>
         <source>Search again:</source>
         <translation>Erneut suchen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="128"/>
+        <location filename="../ui/panels/search_panel.cpp" line="161"/>
         <source>Axes to try:</source>
         <translation>Zu probierende Achsen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <location filename="../ui/panels/search_panel.cpp" line="168"/>
         <source>&amp;Run search</source>
         <translation>Suche &amp;starten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="134"/>
+        <location filename="../ui/panels/search_panel.cpp" line="171"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="161"/>
+        <location filename="../ui/panels/search_panel.cpp" line="202"/>
         <source>Progress</source>
         <translation>Fortschritt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="169"/>
+        <location filename="../ui/panels/search_panel.cpp" line="210"/>
         <source>Level:</source>
         <translation>Stufe:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="170"/>
+        <location filename="../ui/panels/search_panel.cpp" line="211"/>
         <source>Beams alive:</source>
         <translation>Aktive Strahlen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="171"/>
+        <location filename="../ui/panels/search_panel.cpp" line="212"/>
         <source>Best J_G:</source>
         <translation>Bestes J_G:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="172"/>
+        <location filename="../ui/panels/search_panel.cpp" line="213"/>
         <source>Candidates scored:</source>
         <translation>Bewertete Kandidaten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="193"/>
+        <location filename="../ui/panels/search_panel.cpp" line="235"/>
         <source>Open a model first.</source>
         <translation>Öffnen Sie zuerst ein Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="245"/>
+        <location filename="../ui/panels/search_panel.cpp" line="301"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>Nach Schnittebenen suchen, mit denen das Modell mit weniger Stützen druckbar wird</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="304"/>
+        <location filename="../ui/panels/search_panel.cpp" line="367"/>
         <source>%1 (polishing)</source>
         <translation>%1 (Polieren)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="317"/>
+        <location filename="../ui/panels/search_panel.cpp" line="382"/>
         <source>Cancelling: keeping the best plan so far... %1</source>
         <translation>Abbruch: der bisher beste Plan wird behalten... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="319"/>
+        <location filename="../ui/panels/search_panel.cpp" line="384"/>
         <source>%1 %2 - %3</source>
         <translation>%1 %2 - %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="321"/>
+        <location filename="../ui/panels/search_panel.cpp" line="386"/>
         <source>Level 1 of %1: scoring candidates... %2</source>
         <translation>Stufe 1 von %1: Kandidaten werden bewertet... %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="322"/>
+        <location filename="../ui/panels/search_panel.cpp" line="387"/>
         <source>Scoring candidates... %1</source>
         <translation>Kandidaten werden bewertet... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="326"/>
+        <location filename="../ui/panels/search_panel.cpp" line="391"/>
         <source>Polishing the planes: %1 % · best J_G %2 mm² · %3</source>
         <translation>Ebenen polieren: %1 % · bestes J_G %2 mm² · %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="331"/>
+        <location filename="../ui/panels/search_panel.cpp" line="396"/>
         <source>Level %1 of %2</source>
         <translation>Stufe %1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="331"/>
+        <location filename="../ui/panels/search_panel.cpp" line="396"/>
         <source>Level %1</source>
         <translation>Ebene %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="332"/>
+        <location filename="../ui/panels/search_panel.cpp" line="397"/>
         <source>Axis %1 of %2, %3</source>
         <translation>Achse %1 von %2, %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="333"/>
+        <location filename="../ui/panels/search_panel.cpp" line="400"/>
         <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
         <translation>%1 · aktive Strahlen: %2 · bestes J_G %3 mm² · %4 Kandidaten · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="372"/>
+        <location filename="../ui/panels/search_panel.cpp" line="439"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
         <translation>Die Suche lief auf einer vereinfachten Kopie mit %1 Flächen; ihre Ebenen schneiden danach das vollständige Modell, und alle angezeigten Zahlen beziehen sich auf das vollständige Modell.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="393"/>
+        <location filename="../ui/panels/search_panel.cpp" line="462"/>
         <source>Stopped</source>
         <translation>Angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="277"/>
-        <location filename="../ui/panels/search_panel.cpp" line="306"/>
-        <location filename="../ui/panels/search_panel.cpp" line="351"/>
+        <location filename="../ui/panels/search_panel.cpp" line="340"/>
+        <location filename="../ui/panels/search_panel.cpp" line="369"/>
+        <location filename="../ui/panels/search_panel.cpp" line="418"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="302"/>
+        <location filename="../ui/panels/search_panel.cpp" line="365"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1 (Achse %2 von %3)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="417"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="417"/>
         <source>Done</source>
         <translation>Fertig</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="356"/>
+        <location filename="../ui/panels/search_panel.cpp" line="423"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>Abgebrochen: der bisher beste Plan wird angezeigt.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="360"/>
+        <location filename="../ui/panels/search_panel.cpp" line="427"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>Keine Verbesserung: keine Schnittebene verringert die Risikofläche (J_G bleibt %1 mm²). Versuchen Sie mehr Normalen, einen kleineren Versatzschritt, ein größeres w oder eine andere Maschine.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="365"/>
+        <location filename="../ui/panels/search_panel.cpp" line="432"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>Nicht stützenfrei: %1 mm² brauchen noch Stützen (vorher %2 mm²), in %n Bereich.</numerusform>
@@ -4899,7 +4935,7 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="369"/>
+        <location filename="../ui/panels/search_panel.cpp" line="436"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>Stützenfrei in %n Bereich (J_G war %1 mm²).</numerusform>
@@ -4907,46 +4943,54 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="385"/>
+        <location filename="../ui/panels/search_panel.cpp" line="454"/>
         <source>Failed</source>
         <translation>Fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="386"/>
+        <location filename="../ui/panels/search_panel.cpp" line="455"/>
         <source>%1
 %2</source>
         <translation>%1
 %2</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="106"/>
         <source> mm²</source>
         <translation> mm²</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="108"/>
         <source>Apart: the risky area one more part must save, for its dowels and handling (the support whose print time equals its dowels&apos;)</source>
         <translation>Getrennt: die Risikofläche, die ein weiteres Teil einsparen muss, für seine Dübel und die Handhabung (die Stützen, deren Druckzeit der seiner Dübel gleicht)</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="114"/>
         <source> mm² per mm² of cut face</source>
         <translation> mm² je mm² Schnittfläche</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="116"/>
         <source>Apart: the risky area one more part must save for every mm² of its cut face, whose two sides are printed solid</source>
         <translation>Getrennt: die Risikofläche, die ein weiteres Teil je mm² seiner Schnittfläche einsparen muss, deren beide Seiten massiv gedruckt werden</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="163"/>
         <source>Price of a part:</source>
         <translation>Preis eines Teils:</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="165"/>
         <source>... and of its cut face:</source>
         <translation>... und seiner Schnittfläche:</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="399"/>
         <source>Apart search (1 of 2), %1</source>
         <translation>Suche für den getrennten Druck (1 von 2), %1</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="399"/>
         <source>5-DOF search for the bound (2 of 2), %1</source>
         <translation>5-DOF-Suche für die Schranke (2 von 2), %1</translation>
     </message>
@@ -4954,12 +4998,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SliceDialog</name>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
         <source>The firmware turns the platform (axis %1): one program, job.gcode, with every step.</source>
         <translation>Die Firmware dreht die Plattform (Achse %1): ein Programm, job.gcode, mit allen Schritten.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="84"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="85"/>
         <source>MultiDir turns the platform over Modbus (Hardware dock): one program per step.</source>
         <translation>MultiDir dreht die Plattform über Modbus (Fenster „Hardware“): ein Programm je Schritt.</translation>
     </message>
@@ -4998,117 +5042,116 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>UR5-Roboterzelle, feststehender 0,8-mm-Extruder</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="59"/>
         <source>A plan printed apart is sliced part by part on plates: use &apos;multidir apart&apos; (docs/apart.md).</source>
-        <translation>Ein getrennt gedruckter Plan wird Teil für Teil auf Druckplatten gesliced: verwenden Sie „multidir apart“ (docs/apart.md).</translation>
+        <translation type="vanished">Ein getrennt gedruckter Plan wird Teil für Teil auf Druckplatten gesliced: verwenden Sie „multidir apart“ (docs/apart.md).</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="64"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="65"/>
         <source>This printer cannot turn the part: it prints one-step (3-DOF) plans only.</source>
         <translation>Dieser Drucker kann das Teil nicht drehen: er druckt nur einstufige (3-DOF) Pläne.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="68"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="69"/>
         <source>This printer turns the platform about one axis: it cannot print a 5-DOF plan. Choose a printer with two firmware axes or a robot arm.</source>
         <translation>Dieser Drucker dreht die Plattform nur um eine Achse: er kann keinen 5-DOF-Plan drucken. Wählen Sie einen Drucker mit zwei Firmware-Achsen oder einen Roboterarm.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="87"/>
         <source>The firmware tilts (axis %1) and rotates (axis %2) the platform: one program, job.gcode, with every step and the turns between them.</source>
         <translation>Die Firmware kippt (Achse %1) und dreht (Achse %2) die Plattform: ein Programm, job.gcode, mit allen Schritten und den Drehungen dazwischen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="93"/>
         <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
         <translation>Ein gewöhnlicher Drucker: er kann das Teil nicht drehen und druckt daher nur Pläne mit einem Schritt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="100"/>
         <source>Slice the Plan</source>
         <translation>Plan slicen</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="114"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="115"/>
         <source>Load a PrusaSlicer .ini...</source>
         <translation>PrusaSlicer-.ini laden...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="124"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="125"/>
         <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
         <translation>Wie die Firmware die Plattform dreht: MANUAL_STEPPER bei Klipper oder G1 A bei Marlin und RepRapFirmware</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="129"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="130"/>
         <source>layer_height=0.3 fill_density=10%</source>
         <translation>layer_height=0.3 fill_density=10%</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="130"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="131"/>
         <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
         <translation>PrusaSlicer-Einstellungen, die die des Profils überschreiben, als KEY=VALUE durch Leerzeichen getrennt</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="131"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="132"/>
         <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
         <translation>Zusätzlich das ganze Modell in Aufwärtsrichtung mit den Stützen des Slicers slicen (Vergleich)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="135"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="136"/>
         <source>The prusa-slicer program: a name found on PATH, or a full path</source>
         <translation>Das Programm prusa-slicer: ein Name, der im PATH gefunden wird, oder ein vollständiger Pfad</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="143"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="144"/>
         <source>Printer:</source>
         <translation>Drucker:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="145"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="146"/>
         <source>Dialect:</source>
         <translation>Dialekt:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="146"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="147"/>
         <source>Slicer settings:</source>
         <translation>Slicer-Einstellungen:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="148"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="149"/>
         <source>Slicer program:</source>
         <translation>Slicer-Programm:</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="150"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="151"/>
         <source>Slice</source>
         <translation>Slicen</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="182"/>
         <source>Cannot use the printer profile: %1</source>
         <translation>Das Druckerprofil kann nicht verwendet werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="186"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="187"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="222"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="223"/>
         <source>Load a PrusaSlicer Printer Profile</source>
         <translation>PrusaSlicer-Druckerprofil laden</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="224"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="225"/>
         <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
         <translation>PrusaSlicer-Profile (*.ini);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="239"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="240"/>
         <source>Choose a printer profile.</source>
         <translation>Wählen Sie ein Druckerprofil.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="245"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="246"/>
         <source>Slicer settings: %1</source>
         <translation>Slicer-Einstellungen: %1</translation>
     </message>
@@ -5121,42 +5164,42 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SliceJobRunner</name>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="52"/>
         <source>Slicing step %1 of %2</source>
         <translation>Slicen: Schritt %1 von %2</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="54"/>
         <source>Slicing the whole model along up with the slicer&apos;s supports, for comparison</source>
         <translation>Slicen des ganzen Modells in Aufwärtsrichtung mit den Stützen des Slicers, zum Vergleich</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="61"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="56"/>
         <source>Stitching the steps into one program</source>
         <translation>Die Schritte werden zu einem Programm zusammengefügt</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="65"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="60"/>
         <source>Reading the G-code for the preview</source>
         <translation>G-Code wird für die Vorschau gelesen</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="71"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="66"/>
         <source>The slicer &apos;%1&apos; was not found: install PrusaSlicer (scripts/install-deps.sh) or give the slicer program&apos;s full path in the Slice dialog.</source>
         <translation>Der Slicer „%1“ wurde nicht gefunden: installieren Sie PrusaSlicer (scripts/install-deps.sh) oder geben Sie im Dialog „Plan slicen“ den vollständigen Pfad des Slicer-Programms an.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="71"/>
         <source>The slicer failed: its command and last output lines are below.</source>
         <translation>Der Slicer ist fehlgeschlagen: sein Befehl und die letzten Ausgabezeilen stehen unten.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="77"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="73"/>
         <source>The part does not fit this printer, so nothing was sliced: by how much, and what would help, is below.</source>
         <translation>Das Teil passt nicht auf diesen Drucker, daher wurde nichts geslict: um wie viel, und was helfen würde, steht unten.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="80"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="77"/>
         <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
         <translation>Der G-Code hat die Prüfungen von MultiDir nicht bestanden und wurde verworfen: Schritt, Zeile und Grund stehen unten.</translation>
     </message>
@@ -5166,22 +5209,22 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Ein Slicing-Auftrag läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="110"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="142"/>
         <source>Could not create a temporary folder for the G-code: %1</source>
         <translation>Für den G-Code konnte kein temporärer Ordner angelegt werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="151"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="139"/>
         <source>Not enough memory to slice this plan.</source>
         <translation>Nicht genug Speicher, um diesen Plan zu slicen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="170"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="133"/>
         <source>The audit of the G-code failed, so unsupported extrusions are not marked: %1</source>
         <translation>Die Prüfung des G-Codes ist fehlgeschlagen, daher sind ungestützte Extrusionen nicht markiert: %1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="154"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="139"/>
         <source>Unexpected error while slicing.</source>
         <translation>Unerwarteter Fehler beim Slicen.</translation>
     </message>
@@ -5189,79 +5232,79 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::SlicePanel</name>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="43"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="44"/>
         <source>Slice...</source>
         <translation>Slicen...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="45"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="148"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="46"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="153"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>Jeden Schritt des angezeigten Plans mit seinen Stützen zu G-Code slicen (PrusaSlicer)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="46"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="47"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Print time</source>
         <translation>Druckzeit</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Filament (m)</source>
         <translation>Filament (m)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Filament (g)</source>
         <translation>Filament (g)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="79"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="83"/>
         <source>Export G-code...</source>
         <translation>G-Code exportieren...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="85"/>
         <source>Write step-NN.gcode, job.gcode (when the firmware turns the platform) and the print job with its estimates into a folder</source>
         <translation>step-NN.gcode, job.gcode (wenn die Firmware die Plattform dreht) und den Druckauftrag mit seinen Schätzungen in einen Ordner schreiben</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="83"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="87"/>
         <source>Preview G-code</source>
         <translation>G-Code-Vorschau</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="86"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="90"/>
         <source>Show the toolpaths in place of the regions; click again for the plan view</source>
         <translation>Die Werkzeugwege anstelle der Bereiche zeigen; erneut klicken für die Planansicht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="89"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="93"/>
         <source>Show the layers printed up to this one (all steps, in printing order)</source>
         <translation>Die Schichten bis einschließlich dieser zeigen (alle Schritte, in Druckreihenfolge)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="94"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="98"/>
         <source>The layer&apos;s height: the nozzle&apos;s Z above the platform in its step&apos;s pose</source>
         <translation>Die Höhe der Schicht: das Z der Düse über der Plattform in der Lage ihres Schritts</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="96"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="250"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="100"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="266"/>
         <source>Z %1 mm</source>
         <translation>Z %1 mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="97"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="101"/>
         <source>Travel moves</source>
         <translation>Leerfahrten</translation>
     </message>
@@ -5271,57 +5314,57 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Extrusion, die auf nichts zuvor Gedrucktem aufliegt, wie die Prüfung sie findet (multidir audit, Prüfung b): in der G-Code-Vorschau magenta gezeichnet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="213"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="228"/>
         <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
         <translation>Ungestützte Extrusion: %1 mm (%2 %) in Magenta</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="111"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="115"/>
         <source>Layers:</source>
         <translation>Schichten:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="116"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="120"/>
         <source>G-code</source>
         <translation>G-Code</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="147"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>Zeigen Sie zuerst einen Plan an: starten Sie eine Suche oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="160"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="165"/>
         <source>Starting the slicer...</source>
         <translation>Slicer wird gestartet...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="188"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="191"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="196"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
         <source>Total (%1)</source>
         <translation>Gesamt (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="196"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="201"/>
         <source>Fixed direction, slicer supports</source>
         <translation>Feste Richtung, Slicer-Stützen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="203"/>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>Das ganze Modell in Aufwärtsrichtung mit den eigenen Stützen von PrusaSlicer gedruckt: der Vergleich</translation>
     </message>
@@ -5384,27 +5427,27 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Ein Slicing-Auftrag läuft bereits.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="146"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="137"/>
         <source>Slicing without supports although the plan leaves risky area: %1</source>
         <translation>Slicen ohne Stützen, obwohl der Plan Risikofläche übrig lässt: %1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="147"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="138"/>
         <source>no supports were grown for it.</source>
         <translation>für ihn wurden keine Stützen erzeugt.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="152"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="143"/>
         <source>Slicing the plan for %1...</source>
         <translation>Slicen des Plans für %1...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="159"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="150"/>
         <source>Cancelling: stopping the slicer...</source>
         <translation>Abbruch: Slicer wird angehalten...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="165"/>
         <source>Sliced for %1: %n step(s), %2 of printing.</source>
         <translation>
             <numerusform>Slicen für %1 abgeschlossen: %n Schritt, %2 Druckzeit.</numerusform>
@@ -5412,27 +5455,27 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="178"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="169"/>
         <source>Slicing finished.</source>
         <translation>Slicen abgeschlossen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="179"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="170"/>
         <source>Slicing finished; the audit failed.</source>
         <translation>Slicen abgeschlossen; die Prüfung ist fehlgeschlagen.</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="205"/>
         <source>Layer %1 of %2: step %3, its layer %4</source>
         <translation>Schicht %1 von %2: Schritt %3, dessen Schicht %4</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="220"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="211"/>
         <source>There is no G-code to export: slice the plan first.</source>
         <translation>Es gibt keinen G-Code zum Exportieren: slicen Sie zuerst den Plan.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="230"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="221"/>
         <source>G-code exported to %1 (%n file(s)).</source>
         <translation>
             <numerusform>G-Code nach %1 exportiert (%n Datei).</numerusform>
@@ -5440,28 +5483,28 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="231"/>
         <source>Export G-code to Folder</source>
         <translation>G-Code in Ordner exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="231"/>
         <source>-gcode</source>
         <translation>-gcode</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="232"/>
         <source>G-code folders (*)</source>
         <translation>G-Code-Ordner (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="247"/>
-        <location filename="../ui/slicing/slice_session.cpp" line="254"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="238"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="245"/>
         <source>Export G-code</source>
         <translation>G-Code exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="239"/>
         <source>%1 holds files that are not a MultiDir job (%2 is one).
 
 Write the job into this folder anyway? Files with the job&apos;s names are replaced; the others stay.</source>
@@ -5473,22 +5516,22 @@ Den Auftrag trotzdem in diesen Ordner schreiben? Dateien mit den Namen des Auftr
 <context>
     <name>multidir::ui::StudioDocument</name>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="129"/>
+        <location filename="../ui/document/studio_document.cpp" line="143"/>
         <source>This job was sliced from another plan than the one shown: slice the plan shown again.</source>
         <translation>Dieser Auftrag wurde aus einem anderen als dem angezeigten Plan gesliced: slicen Sie den angezeigten Plan erneut.</translation>
     </message>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="158"/>
+        <location filename="../ui/document/studio_document.cpp" line="190"/>
         <source>A print run already holds the device session&apos;s job: stop it before starting another.</source>
         <translation>Ein Drucklauf hält bereits den Auftrag der Gerätesitzung: beenden Sie ihn, bevor Sie einen anderen starten.</translation>
     </message>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="162"/>
+        <location filename="../ui/document/studio_document.cpp" line="194"/>
         <source>There is no plan to run: run a search or open a plan first.</source>
         <translation>Es gibt keinen Plan zum Ausführen: führen Sie zuerst eine Suche aus oder öffnen Sie einen Plan.</translation>
     </message>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="157"/>
+        <location filename="../ui/document/studio_document.cpp" line="163"/>
         <source>These parts were made from another plan than the one shown: print the plan shown apart again.</source>
         <translation>Diese Teile wurden aus einem anderen als dem angezeigten Plan erzeugt: drucken Sie den angezeigten Plan erneut getrennt.</translation>
     </message>
@@ -5599,14 +5642,6 @@ Den Auftrag trotzdem in diesen Ordner schreiben? Dateien mit den Namen des Auftr
         <location filename="../ui/studio_startup.cpp" line="228"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>Es wird kein Modell angezeigt; das Bildschirmfoto %1 zeigt das leere Fenster.</translation>
-    </message>
-</context>
-<context>
-    <name>ReplacePlanCommand</name>
-    <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="59"/>
-        <source>New search</source>
-        <translation>Neue Suche</translation>
     </message>
 </context>
 </TS>

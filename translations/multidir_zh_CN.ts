@@ -125,6 +125,14 @@
     </message>
 </context>
 <context>
+    <name>ReplacePlanCommand</name>
+    <message>
+        <location filename="../ui/edit/plan_edit_commands.cpp" line="59"/>
+        <source>New search</source>
+        <translation>新搜索</translation>
+    </message>
+</context>
+<context>
     <name>TiltPlaneCommand</name>
     <message>
         <location filename="../ui/edit/plan_edit_commands.cpp" line="45"/>
@@ -135,97 +143,97 @@
 <context>
     <name>multidir::ui::ApartJobRunner</name>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="27"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="16"/>
         <source>Slicing plate %1 of %2</source>
         <translation>正在切片打印板 %1（共 %2 个）</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="30"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="19"/>
         <source>Slicing the model in one piece with supports, for comparison</source>
         <translation>正在将模型作为整体连同支撑切片（用于比较）</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="31"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="20"/>
         <source>Cutting the parts to fit the printer</source>
         <translation>正在切割零件以适合打印机</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="32"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="21"/>
         <source>Placing the dowels</source>
         <translation>正在放置定位销</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="33"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="22"/>
         <source>Drilling the dowel holes</source>
         <translation>正在钻定位销孔</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="34"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="23"/>
         <source>Sinking the part numbers</source>
         <translation>正在刻入零件编号</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="35"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="24"/>
         <source>Laying the parts on plates</source>
         <translation>正在将零件排布到打印板上</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="36"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="25"/>
         <source>Writing the parts and the 3MF</source>
         <translation>正在写入零件和 3MF</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="37"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="26"/>
         <source>Drawing the assembly sheet</source>
         <translation>正在绘制装配图</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="44"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="33"/>
         <source>A part does not fit this printer even cut further: choose a printer with a larger bed, or scale the model down and search again.</source>
         <translation>即使进一步切割，仍有零件无法放入此打印机：请选择打印床更大的打印机，或缩小模型后重新搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="47"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="37"/>
         <source>The slicer &apos;prusa-slicer&apos; was not found: install PrusaSlicer (scripts/install-deps.sh), or untick &quot;Slice the plates&quot;.</source>
         <translation>未找到切片软件 &apos;prusa-slicer&apos;：请安装 PrusaSlicer（scripts/install-deps.sh），或取消勾选“对打印板切片”。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="50"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="41"/>
         <source>The slicer failed on a plate: its command and last output lines are below. Try another printer, or untick &quot;Slice the plates&quot; to get the parts without G-code.</source>
         <translation>切片软件在某个打印板上失败：其命令和最后几行输出见下方。请尝试其他打印机，或取消勾选“对打印板切片”以获取不含 G 代码的零件。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="53"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="45"/>
         <source>The parts could not be laid out or the dowels not placed: the reason is below. Choose a printer with a larger bed or other dowel options.</source>
         <translation>无法排布零件或放置定位销：原因见下方。请选择打印床更大的打印机或其他定位销选项。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="56"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="49"/>
         <source>Drilling the dowel holes or sinking the numbers failed on a part (named below): try a smaller dowel diameter or another plan.</source>
         <translation>在某个零件（见下方名称）上钻定位销孔或刻入编号失败：请尝试更小的定位销直径或其他方案。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="79"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="75"/>
         <source>The plan is being printed apart already.</source>
         <translation>该方案已在分开打印中。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="83"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="79"/>
         <source>There is no plan to print apart: search the model first.</source>
         <translation>没有可分开打印的方案：请先对模型进行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="88"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="101"/>
         <source>Could not create a temporary folder for the parts: %1</source>
         <translation>无法为零件创建临时文件夹：%1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="112"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="97"/>
         <source>Not enough memory to print this plan apart.</source>
         <translation>内存不足，无法分开打印此方案。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/apart_job_runner.cpp" line="115"/>
+        <location filename="../ui/jobs/apart_job_runner.cpp" line="98"/>
         <source>Unexpected error while printing the plan apart.</source>
         <translation>分开打印方案时发生意外错误。</translation>
     </message>
@@ -576,95 +584,99 @@
         <translation>已取消查找挤出机位置。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="174"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="189"/>
         <source>Could not load the cell file %1: %2</source>
         <translation>无法加载单元文件 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="180"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="195"/>
         <source>Cell loaded from %1.</source>
         <translation>已从 %1 加载单元。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="186"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="201"/>
         <source>There is no cell to save.</source>
         <translation>没有可保存的单元。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="191"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="206"/>
         <source>Could not save the cell: %1</source>
         <translation>无法保存单元：%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="194"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="209"/>
         <source>Cell saved as %1.</source>
         <translation>单元已保存为 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="208"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="223"/>
         <source>No cell.</source>
         <translation>无单元。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="226"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="241"/>
         <source>Cell check: sound (%1, nozzle tip at %2, %3, %4 mm).</source>
         <translation>单元检查：正常（%1，喷嘴尖端位于 %2, %3, %4 mm）。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/cell_panel.cpp" line="233"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="248"/>
         <source>Cell check: %n problem(s)</source>
         <translation>
             <numerusform>单元检查：%n 个问题</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="280"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="293"/>
         <source>There is no cell: choose the robot cell machine or load a cell file.</source>
         <translation>没有单元：请选择机器人单元机器，或加载单元文件。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="285"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="298"/>
         <source>There is no plan: the reach map scores the plan&apos;s platform poses. Run a search or open a plan.</source>
         <translation>没有方案：可达性图对方案的平台姿态评分。请运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="290"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="303"/>
         <source>The plan&apos;s poses cannot be found: %1</source>
         <translation>无法求得方案的姿态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="311"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="328"/>
         <source>The reach map failed: %1</source>
         <translation>可达性图计算失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="316"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="346"/>
         <source>Best nozzle position: %1, %2, %3 mm, %4 % of the plan&apos;s poses reachable with margin (least reach margin %5 mm) over %6 positions.</source>
         <translation>最佳喷嘴位置：%1, %2, %3 mm，方案中 %4 % 的姿态可留有余量到达（最小可达余量 %5 mm），共评估 %6 个位置。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="334"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="364"/>
         <source>Finding the extruder position...</source>
         <translation>正在查找挤出机位置...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_panel.cpp" line="348"/>
+        <location filename="../ui/panels/cell_panel.cpp" line="387"/>
         <source>The nozzle tip is now at the reach map&apos;s best position; move the extruder there and measure it again.</source>
         <translation>喷嘴尖端现已设在可达性图的最佳位置；请将挤出机移到该处并重新测量。</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="160"/>
         <source>The cell changed since the reach map was made (the map scores the arm, the nozzle axis, the platform, the table and the margins it had): find the extruder position again.</source>
         <translation>自可达性图生成以来，单元已更改（该图按当时的机械臂、喷嘴轴线、平台、工作台和余量评分）：请重新查找挤出机位置。</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="165"/>
         <source>The plan changed since the reach map was made (the map scores the plan&apos;s poses): find the extruder position again.</source>
         <translation>自可达性图生成以来，方案已更改（该图按方案的姿态评分）：请重新查找挤出机位置。</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="175"/>
         <source>Supports were grown for the plan since the reach map was made (the map scores their poses too): find the extruder position again.</source>
         <translation>自可达性图生成以来，已为方案生成支撑（该图也按支撑的姿态评分）：请重新查找挤出机位置。</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_panel.cpp" line="337"/>
         <source>The plan or the cell changed while the reach map was made: find the extruder position again.</source>
         <translation>生成可达性图期间方案或单元已更改：请重新查找挤出机位置。</translation>
     </message>
@@ -672,100 +684,105 @@
 <context>
     <name>multidir::ui::CellViewPanel</name>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="30"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="31"/>
         <source>Show on the cell</source>
         <translation>在单元上显示</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="32"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="33"/>
         <source>The sliced job on the robot cell: the arm, the platform and the part at the poses the robot programs command (multidir robot-program)</source>
         <translation>机器人单元上的切片作业：机械臂、平台和零件处于机器人程序所指令的姿态（multidir robot-program）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="34"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="35"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="37"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="38"/>
         <source>Back to the plan</source>
         <translation>返回方案</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="46"/>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="47"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="96"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="83"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="96"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="101"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="114"/>
         <source>Cancelled.</source>
         <translation>已取消。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="110"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="123"/>
         <source>The cell changed: show the job on it again.</source>
         <translation>单元已更改：请重新在其上显示作业。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="121"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="134"/>
         <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
         <translation>没有机器人单元：请选择机器“固定挤出机下的机械臂”。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="125"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="138"/>
         <source>The plan is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
         <translation>方案尚未切片：请先用单元的配置（ur5-cell-0.8）对其切片。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="149"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="162"/>
         <source>The job cannot be posed on the cell: %1</source>
         <translation>无法在单元上摆放作业：%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="161"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="174"/>
         <source>Converting the job for the cell...</source>
         <translation>正在为单元转换作业...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/cell_view_panel.cpp" line="183"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="244"/>
         <source>%n step(s) on the %1, %2 moves.</source>
         <translation>
             <numerusform>%1 上的 %n 个步骤，%2 次移动。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="207"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="268"/>
         <source>Step %1 of %2: no move converted (the arm at home).</source>
         <translation>第 %1 步（共 %2 步）：未转换任何移动（机械臂处于原位）。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/cell_view_panel.cpp" line="211"/>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="272"/>
         <source>Step %1 of %2, move %3 of %4 (%5, line %6)</source>
         <translation>第 %1 步（共 %2 步），移动 %3/%4（%5，第 %6 行）</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="61"/>
         <source>Show the reach map</source>
         <translation>显示可达性图</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="63"/>
         <source>The nozzle positions &quot;Find extruder position&quot; scored (Machine tab), coloured from red (none of the plan&apos;s poses reachable with margin) to blue (all of them); the best one ringed in white</source>
         <translation>“查找挤出机位置”评分的喷嘴位置（机器选项卡），颜色从红色（方案的姿态均无法留有余量地到达）到蓝色（全部可达）；最佳位置以白圈标出</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="196"/>
         <source>Reach map: %1 nozzle positions every %2 mm; the best, ringed, at %3, %4, %5 mm with %6 % of the plan&apos;s poses reachable with margin.</source>
         <translation>可达性图：%1 个喷嘴位置，间距 %2 mm；最佳位置（圈出）位于 %3, %4, %5 mm，方案姿态中 %6 % 可留有余量地到达。</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="205"/>
         <source>Reach map not shown: %1</source>
         <translation>未显示可达性图：%1</translation>
     </message>
     <message>
+        <location filename="../ui/panels/cell_view_panel.cpp" line="229"/>
         <source>Plan&apos;s poses reachable with margin (%)</source>
         <translation>可留有余量到达的方案姿态 (%)</translation>
     </message>
@@ -788,134 +805,134 @@
         <translation>机器人单元（5 自由度，固定挤出头）</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="39"/>
+        <location filename="../ui/device/connection_form.cpp" line="42"/>
         <source>Robot cell (5-DOF, Universal Robots: the arm carries the part under a fixed extruder)</source>
         <translation>机器人单元（5 自由度，Universal Robots：机械臂携带零件在固定挤出头下移动）</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="42"/>
+        <location filename="../ui/device/connection_form.cpp" line="47"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="43"/>
+        <location filename="../ui/device/connection_form.cpp" line="48"/>
         <source>Modbus RTU (serial)</source>
         <translation>Modbus RTU（串口）</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="52"/>
+        <location filename="../ui/device/connection_form.cpp" line="57"/>
         <source>Host:</source>
         <translation>主机：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="53"/>
+        <location filename="../ui/device/connection_form.cpp" line="58"/>
         <source>Port:</source>
         <translation>端口：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="54"/>
+        <location filename="../ui/device/connection_form.cpp" line="59"/>
         <source>Unit id:</source>
         <translation>单元 ID：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="69"/>
+        <location filename="../ui/device/connection_form.cpp" line="74"/>
         <source>None</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="70"/>
+        <location filename="../ui/device/connection_form.cpp" line="75"/>
         <source>Even</source>
         <translation>偶校验</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="71"/>
+        <location filename="../ui/device/connection_form.cpp" line="76"/>
         <source>Odd</source>
         <translation>奇校验</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="75"/>
+        <location filename="../ui/device/connection_form.cpp" line="80"/>
         <source>Serial port:</source>
         <translation>串口：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="76"/>
+        <location filename="../ui/device/connection_form.cpp" line="81"/>
         <source>Baud:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="77"/>
+        <location filename="../ui/device/connection_form.cpp" line="82"/>
         <source>Parity:</source>
         <translation>校验位：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="78"/>
+        <location filename="../ui/device/connection_form.cpp" line="83"/>
         <source>Data bits:</source>
         <translation>数据位：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="79"/>
+        <location filename="../ui/device/connection_form.cpp" line="84"/>
         <source>Stop bits:</source>
         <translation>停止位：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="80"/>
+        <location filename="../ui/device/connection_form.cpp" line="85"/>
         <source>Slave id:</source>
         <translation>从站 ID：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="87"/>
-        <location filename="../ui/device/connection_form.cpp" line="90"/>
+        <location filename="../ui/device/connection_form.cpp" line="92"/>
+        <location filename="../ui/device/connection_form.cpp" line="95"/>
         <source> ms</source>
         <translation> 毫秒</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="88"/>
+        <location filename="../ui/device/connection_form.cpp" line="93"/>
         <source>How long to wait for the first byte of a reply, and for a TCP connection.</source>
         <translation>等待应答的第一个字节以及等待 TCP 连接的时长。</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="91"/>
+        <location filename="../ui/device/connection_form.cpp" line="96"/>
         <source>How long to wait between two bytes of one reply.</source>
         <translation>同一应答中两个字节之间的最长等待时间。</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="100"/>
+        <location filename="../ui/device/connection_form.cpp" line="105"/>
         <source> °/s</source>
         <translation> °/秒</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="101"/>
+        <location filename="../ui/device/connection_form.cpp" line="106"/>
         <source> %</source>
         <translation> %</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="102"/>
+        <location filename="../ui/device/connection_form.cpp" line="107"/>
         <source>Of the robot program&apos;s maximal rotation speed.</source>
         <translation>占机器人程序最大旋转速度的百分比。</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="103"/>
-        <location filename="../ui/device/connection_form.cpp" line="104"/>
+        <location filename="../ui/device/connection_form.cpp" line="108"/>
+        <location filename="../ui/device/connection_form.cpp" line="109"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="108"/>
+        <location filename="../ui/device/connection_form.cpp" line="114"/>
         <source>Device:</source>
         <translation>设备：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="109"/>
+        <location filename="../ui/device/connection_form.cpp" line="115"/>
         <source>Transport:</source>
         <translation>传输方式：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="112"/>
+        <location filename="../ui/device/connection_form.cpp" line="119"/>
         <source>Response timeout:</source>
         <translation>应答超时：</translation>
     </message>
     <message>
-        <location filename="../ui/device/connection_form.cpp" line="113"/>
+        <location filename="../ui/device/connection_form.cpp" line="120"/>
         <source>Byte timeout:</source>
         <translation>字节超时：</translation>
     </message>
@@ -1044,7 +1061,7 @@
     </message>
     <message>
         <location filename="../ui/device/device_link.cpp" line="290"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="578"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="621"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
@@ -1165,528 +1182,530 @@
 <context>
     <name>multidir::ui::HardwarePanel</name>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="69"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
         <source>Disconnected</source>
         <translation>已断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="71"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="73"/>
         <source>Reconnecting…</source>
         <translation>正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="72"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="74"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
         <source>Connected</source>
         <translation>已连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="76"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="78"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="84"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
         <source>idle</source>
         <translation>空闲</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="86"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
         <source>turning the platform</source>
         <translation>正在转动平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="88"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
         <source>settling</source>
         <translation>正在稳定</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="90"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="92"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="94"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="96"/>
         <source>finished</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="96"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="98"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="100"/>
         <source>stopped by a device problem</source>
         <translation>因设备问题而停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="105"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="107"/>
         <source>angle %1</source>
         <translation>角度 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="106"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="556"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="108"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="599"/>
         <source>tilt %1, azimuth %2</source>
         <translation>倾斜 %1，方位角 %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="115"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="117"/>
         <source>Clear fault, then Enable and Home</source>
         <translation>按“清除故障”，然后按“使能”和“回零”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="116"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="118"/>
         <source>Clear fault; the robot program then takes moves again</source>
         <translation>按“清除故障”；之后机器人程序将重新接受运动指令</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="219"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="234"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="222"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="237"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="223"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="224"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="239"/>
         <source>Closes the link without commanding the device; its heartbeat watchdog stops it.</source>
         <translation>关闭链路而不向设备发送命令；设备的心跳看门狗会使其停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="238"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
         <source>Status</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="249"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="251"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
         <source>Enabled:</source>
         <translation>已使能：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="252"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
         <source>Position:</source>
         <translation>位置：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="253"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="268"/>
         <source>Moving:</source>
         <translation>运动中：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="254"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="269"/>
         <source>Homed:</source>
         <translation>已回零：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="255"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="270"/>
         <source>Fault:</source>
         <translation>故障：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="256"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
         <source>Heartbeat:</source>
         <translation>心跳：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="257"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
         <source>Last problem:</source>
         <translation>最近的问题：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="262"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="277"/>
         <source>Controls</source>
         <translation>控制</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
         <source>Enable</source>
         <translation>使能</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="263"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
         <source>Switches the platform&apos;s drive on.</source>
         <translation>接通平台的驱动。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="264"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
         <source>Home</source>
         <translation>回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="265"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="280"/>
         <source>Rotary platform: finds the home switch (0°). Robot arm: levels the platform (tilt 0°).</source>
         <translation>旋转平台：寻找原点开关（0°）。机械臂：将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="266"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
         <source>Clear fault</source>
         <translation>清除故障</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="267"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="282"/>
         <source>Resets the device after a fault or an E-STOP; then enable and home again.</source>
         <translation>在故障或急停后复位设备；之后请重新使能并回零。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="271"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
         <source>Tilt</source>
         <translation>倾斜</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="272"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="287"/>
         <source>Azimuth</source>
         <translation>方位角</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="273"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="288"/>
         <source>Jog −</source>
         <translation>点动 −</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="274"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="289"/>
         <source>Jog +</source>
         <translation>点动 +</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="278"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="293"/>
         <source>Angle:</source>
         <translation>角度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="279"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="294"/>
         <source>Tilt:</source>
         <translation>倾斜：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="280"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="295"/>
         <source>Azimuth:</source>
         <translation>方位角：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="281"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="296"/>
         <source>Go to</source>
         <translation>前往</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="326"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="311"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="326"/>
         <source>Decelerates and stops; cancels queued commands.</source>
         <translation>减速并停止；取消排队中的命令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="312"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="333"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="327"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="348"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="356"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="376"/>
         <source>Press when the region asked for has been printed (by hand: a region the connected printer prints goes on by itself).</source>
         <translation>所要求的区域打印完成后按此按钮（仅用于手动打印：由已连接的打印机打印的区域会自动继续）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="459"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="495"/>
         <source>the platform</source>
         <translation>平台</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="460"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="496"/>
         <source>the printer</source>
         <translation>打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="462"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="499"/>
         <source>E-STOP sent to %1. To go on: %2%3.</source>
         <translation>已向%1发送急停。如需继续：%2%3。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="463"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="500"/>
         <source> and </source>
         <translation>和</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="464"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="501"/>
         <source>; for the printer, Clear printer E-STOP and restart its firmware</source>
         <translation>；对于打印机，请按“清除打印机急停”并重启其固件</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="479"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="516"/>
         <source>Platform: stop confirmed by the device.</source>
         <translation>平台：设备已确认停止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="480"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="517"/>
         <source>Platform: stop not confirmed yet; MultiDir keeps resending it.</source>
         <translation>平台：尚未确认停止；MultiDir 会持续重发。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="485"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="522"/>
         <source>Printer: emergency stop confirmed by the printer.</source>
         <translation>打印机：打印机已确认急停。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="486"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="523"/>
         <source>Printer: emergency stop not confirmed yet (%1); MultiDir keeps resending it.</source>
         <translation>打印机：尚未确认急停（%1）；MultiDir 会持续重发。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="639"/>
         <source>The print run stopped: %1. Fix the device (%2), then press Resume to retry this step, or Abort.</source>
         <translation>打印运行已停止：%1。请修复设备（%2），然后按“继续”重试此步骤，或按“中止”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="286"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="301"/>
         <source>Jog step:</source>
         <translation>点动步长：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="343"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
         <source>Print run</source>
         <translation>打印运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="345"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="683"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="851"/>
         <source>Start run</source>
         <translation>开始运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="346"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
         <source>Turns the platform to each region&apos;s orientation in printing order and asks for each region to be printed.</source>
         <translation>按打印顺序将平台转到每个区域的方向，并提示打印每个区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="355"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="388"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="375"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="419"/>
         <source>Region done</source>
         <translation>区域完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="358"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="389"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="378"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="420"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="359"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="390"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="379"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="421"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="360"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="380"/>
         <source>Continues a paused run, or retries the current step after a device problem.</source>
         <translation>继续已暂停的运行，或在设备出现问题后重试当前步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="361"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="391"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="381"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="422"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="699"/>
         <source>Abort</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="376"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="404"/>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="377"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="405"/>
         <source>Elapsed:</source>
         <translation>已用时间：</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="408"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="441"/>
         <source>The link to %1 was lost at %2. The values below are not the device&apos;s any more; MultiDir keeps trying to reconnect.</source>
         <translation>与 %1 的链路于 %2 中断。下方数值已不再反映设备的状态；MultiDir 会继续尝试重新连接。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="412"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="445"/>
         <source>The print run is paused: a region being printed may finish, no new region starts. Press Resume once the link is back.</source>
         <translation>打印运行已暂停：正在打印的区域可以完成，但不会开始新的区域。链路恢复后请按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="415"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="448"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 没有应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="418"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="451"/>
         <source>The link is back. The print run is still paused since the link was lost: check the platform, then press Resume.</source>
         <translation>链路已恢复。由于链路曾中断，打印运行仍处于暂停状态：请检查平台，然后按“继续”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="515"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
         <source>Cannot connect with these settings: %1</source>
         <translation>无法用这些设置连接：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="520"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="563"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="529"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="572"/>
         <source>Disconnected.</source>
         <translation>已断开。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="539"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="582"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>无法访问；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="541"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="584"/>
         <source>Link lost at %1; reconnecting…</source>
         <translation>链路于 %1 中断；正在重新连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
         <source>no: press Enable</source>
         <translation>否：请按“使能”</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="552"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="595"/>
         <source>%1 (target %2)</source>
         <translation>%1（目标 %2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
         <source>homing</source>
         <translation>正在回零</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="551"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="594"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="597"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="553"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="554"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="557"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="596"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="597"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="558"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="601"/>
         <source>not needed (robot arm)</source>
         <translation>不需要（机械臂）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="560"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="565"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="603"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="608"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="579"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="622"/>
         <source>%1: sent to the device. To go on: %2.</source>
         <translation>%1：已发送到设备。如需继续：%2。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="581"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="624"/>
         <source>%1: sent to the device.</source>
         <translation>%1：已发送到设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="587"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="630"/>
         <source>Connected to %1.</source>
         <translation>已连接到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="600"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="643"/>
         <source>The print run is finished: every region was printed.</source>
         <translation>打印运行已完成：所有区域均已打印。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="602"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="645"/>
         <source>The print run was aborted.</source>
         <translation>打印运行已中止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="614"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="662"/>
         <source>Region %1 is printed by %2 (%3); the run goes on when the printer reports it complete.</source>
         <translation>区域 %1 正由 %2 打印（%3）；打印机报告完成后运行将继续。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="619"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="667"/>
         <source>Print region %1 (file %2), then press Region done.</source>
         <translation>请打印区域 %1（文件 %2），然后按“区域完成”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="646"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="813"/>
         <source>Start run refused: not connected; connect to the device first.</source>
         <translation>开始运行被拒绝：未连接；请先连接设备。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="654"/>
-        <location filename="../ui/device/hardware_panel.cpp" line="661"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="821"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="828"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="850"/>
         <source>Start run refused: %1</source>
         <translation>开始运行被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="686"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="854"/>
         <source>The plan is not sliced: each region is printed by hand (Region done). Slice the plan to have the printer print them.</source>
         <translation>方案尚未切片：每个区域需手动打印（“区域完成”）。请对方案切片，以便由打印机打印各区域。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="688"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="856"/>
         <source>The sliced job has %1 steps, the plan %2 regions: each region is printed by hand (Region done). Slice the plan again.</source>
         <translation>切片作业有 %1 个步骤，方案有 %2 个区域：每个区域需手动打印（“区域完成”）。请重新对方案切片。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="696"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="864"/>
         <source>%1 refused: %2</source>
         <translation>%1 被拒绝：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="716"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="884"/>
         <source>Limits: %1 to %2 in steps of %3</source>
         <translation>限制：%1 至 %2，步长 %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="718"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="886"/>
         <source>Limits: tilt up to %1, %n forbidden cone(s)</source>
         <translation>
             <numerusform>限制：倾斜最多 %1，%n 个禁止锥</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="889"/>
         <source> (machine profile)</source>
         <translation>（机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="723"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="891"/>
         <source> (defaults: the machine profile is for a %1 machine)</source>
         <translation>（默认值：该机器配置适用于 %1 机器）</translation>
     </message>
@@ -1695,171 +1714,172 @@
         <translation type="vanished">（默认值：无机器配置）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="725"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="893"/>
         <source>; a changed profile applies at the next Connect</source>
         <translation>；更改后的配置在下次连接时生效</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="743"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="919"/>
         <source>Emergency stop: cuts the platform&apos;s power stage at once. Afterwards: %1.</source>
         <translation>急停：立即切断平台的功率级。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="745"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="921"/>
         <source>Emergency stop: halts the robot program at maximal deceleration. Afterwards: %1.</source>
         <translation>急停：以最大减速度停止机器人程序。之后：%1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="750"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="926"/>
         <source>Resets the platform after a fault or an E-STOP; then Enable and Home again.</source>
         <translation>在故障或急停后复位平台；之后请重新“使能”并“回零”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="927"/>
         <source>Resets the robot program after a fault or an E-STOP; it then takes moves again.</source>
         <translation>在故障或急停后复位机器人程序；之后它将重新接受运动指令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="753"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="929"/>
         <source>Finds the home switch (0°); the drive must be enabled.</source>
         <translation>寻找原点开关（0°）；驱动必须已使能。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="930"/>
         <source>Levels the platform (tilt 0°).</source>
         <translation>将平台调平（倾斜 0°）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="802"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="979"/>
         <source>unknown since %1</source>
         <translation>自 %1 起未知</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="804"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="981"/>
         <source>not seen yet</source>
         <translation>尚未收到</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="807"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="984"/>
         <source>%1 s ago</source>
         <translation>%1 秒前</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="816"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="993"/>
         <source>No plan: run a search or open a plan first.</source>
         <translation>无方案：请先运行搜索或打开方案。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="817"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="994"/>
         <source>Plan with %n region(s).</source>
         <translation>
             <numerusform>方案包含 %n 个区域。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="819"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="996"/>
         <source>Sliced: a connected printer prints each region&apos;s G-code.</source>
         <translation>已切片：已连接的打印机将打印每个区域的 G 代码。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/device/hardware_panel.cpp" line="827"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1004"/>
         <source>all %n region(s) printed: finished</source>
         <translation>
             <numerusform>全部 %n 个区域已打印：完成</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="829"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1006"/>
         <source>%1 of %2: %3</source>
         <translation>%1 / %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="831"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1008"/>
         <source> (%1, %2)</source>
         <translation>（%1，%2）</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="832"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="1009"/>
         <source>; pausing after this region</source>
         <translation>；此区域完成后暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="372"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="386"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="798"/>
         <source>Restart step</source>
         <translation>重新开始步骤</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="373"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="387"/>
         <source>Prints the current step again from the start of its G-code, once you have cleared the platform of what the interrupted print left.</source>
         <translation>在您清除平台上中断的打印留下的部分后，从其 G 代码的开头重新打印当前步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="691"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="720"/>
         <source>Start Run</source>
         <translation>开始运行</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="692"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="721"/>
         <source>The last run of this plan was aborted at step %1 of %2.</source>
         <translation>此方案的上次运行在第 %1 步（共 %2 步）时中止。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="698"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="727"/>
         <source>Steps 1 to %1 were printed. Before the platform moves, make sure it is clear: take off what step %2 left half printed and anything in the platform&apos;s way.</source>
         <translation>步骤 1 至 %1 已打印。平台移动之前，请确保其周围畅通：取下步骤 %2 打印了一半的部分以及挡住平台的任何物体。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="702"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="731"/>
         <source>Before the platform moves, make sure it is clear: take off what step 1 left half printed and anything in the platform&apos;s way.</source>
         <translation>平台移动之前，请确保其周围畅通：取下步骤 1 打印了一半的部分以及挡住平台的任何物体。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="706"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="735"/>
         <source>Platform Clear: &amp;Resume from Step %1</source>
         <translation>平台已清空：从步骤 %1 继续(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="709"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="738"/>
         <source>Platform Clear: &amp;Start from Step 1</source>
         <translation>平台已清空：从步骤 1 开始(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="722"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
         <source>Start run refused: the plan changed since the question was asked; press Start run again.</source>
         <translation>“开始运行”被拒绝：提问后方案已更改；请再次按“开始运行”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="735"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="764"/>
         <source>%1 has no job of step %2 any more: it may have restarted, so there is nothing to resume. Restart step prints step %2 again from its start, once you have cleared the platform of what the interrupted print left. Or finish the region by hand and press Region done, or Abort.</source>
         <translation>%1 已没有步骤 %2 的任务：它可能已重启，因此没有可继续的内容。清除平台上中断的打印留下的部分后，“重新开始步骤”会从头重新打印步骤 %2。或者手动完成该区域并按“区域完成”，或按“中止”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="741"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="770"/>
         <source>Restart Step %1</source>
         <translation>重新开始步骤 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="751"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="780"/>
         <source>Restart Step</source>
         <translation>重新开始步骤</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="752"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="781"/>
         <source>Print step %1 again from its start?</source>
         <translation>从头重新打印步骤 %1？</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="754"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="783"/>
         <source>The printer lost the job of step %1 part way. Before it prints the step again, take off what the interrupted print left of region %1 (the regions printed before it stay) and make sure the nozzle&apos;s way is clear.</source>
         <translation>打印机在步骤 %1 中途丢失了任务。在重新打印该步骤之前，请取下中断的打印留下的区域 %1 部分（之前打印的区域保留），并确保喷嘴的路径畅通。</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="758"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="787"/>
         <source>Platform Clear: &amp;Restart Step %1</source>
         <translation>平台已清空：重新开始步骤 %1(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/device/hardware_panel.cpp" line="492"/>
+        <location filename="../ui/device/hardware_panel.cpp" line="497"/>
         <source>the robot cell</source>
         <translation>机器人单元</translation>
     </message>
@@ -1976,117 +1996,117 @@
 <context>
     <name>multidir::ui::MachinePanel</name>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="28"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="32"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="44"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="48"/>
         <source>3-DOF: fixed printing direction</source>
         <translation>3 自由度：固定打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="45"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="49"/>
         <source>4-DOF: rotary platform</source>
         <translation>4 自由度：旋转平台</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="46"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="50"/>
         <source>5-DOF: tilting robot arm</source>
         <translation>5 自由度：倾斜机械臂</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="49"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
         <source>Rotary platform (4-DOF)</source>
         <translation>旋转平台（4 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="52"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="60"/>
         <source>The axis the platform turns about, as x,y,z or x, -y, +z; it must lie in the platform plane (perpendicular to up)</source>
         <translation>平台绕其旋转的轴，格式为 x,y,z 或 x、-y、+z；它必须位于平台平面内（垂直于向上方向）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="54"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
         <source>Pick on platform</source>
         <translation>在平台上选取</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="57"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="65"/>
         <source>Click two points on the platform in the 3D view: the axis runs from the first to the second. Esc or this button again cancels.</source>
         <translation>在 3D 视图中点击平台上的两个点：轴从第一个点指向第二个点。按 Esc 或再次点击此按钮可取消。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="62"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="70"/>
         <source>The stepper&apos;s resolution: only multiples of this angle can be reached</source>
         <translation>步进电机的分辨率：只能到达该角度的整数倍</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="64"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
         <source>Rotation axis:</source>
         <translation>旋转轴：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="66"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="74"/>
         <source>Minimal angle:</source>
         <translation>最小角度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="67"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="75"/>
         <source>Maximal angle:</source>
         <translation>最大角度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="68"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="76"/>
         <source>Angle step:</source>
         <translation>角度步长：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="70"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="78"/>
         <source>Tilting arm (5-DOF)</source>
         <translation>倾斜机械臂（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="72"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
         <source>How far the arm can tilt the platform away from up</source>
         <translation>机械臂能将平台从向上方向倾斜的最大角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="74"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="82"/>
         <source>Tilt limit:</source>
         <translation>倾斜极限：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="80"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="88"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="81"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="89"/>
         <source>model footprint</source>
         <translation>模型底面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="83"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="91"/>
         <source>Radius of the platform disc that no clipping plane may cut; 0 uses the model&apos;s footprint plus a margin</source>
         <translation>任何切割平面都不得穿过的平台圆盘半径；0 表示使用模型底面加上边距</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="93"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="101"/>
         <source>Machine:</source>
         <translation>机器：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="94"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="102"/>
         <source>Platform radius:</source>
         <translation>平台半径：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="162"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="212"/>
         <source>The rotation axis &quot;%1&quot; cannot be read: type three numbers x,y,z or an axis such as x or -y.</source>
         <translation>无法识别旋转轴“%1”：请输入三个数 x,y,z，或 x、-y 这样的坐标轴。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/machine_panel.cpp" line="167"/>
+        <location filename="../ui/panels/machine_panel.cpp" line="217"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
@@ -2096,6 +2116,7 @@
         <translation>5 自由度：固定挤出机下的机械臂</translation>
     </message>
     <message>
+        <location filename="../ui/panels/machine_panel.cpp" line="54"/>
         <source>Apart (plain printer, parts joined by dowels)</source>
         <translation>分开打印（普通打印机，零件用定位销连接）</translation>
     </message>
@@ -2103,197 +2124,198 @@
 <context>
     <name>multidir::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="93"/>
+        <location filename="../ui/main_window.cpp" line="95"/>
         <source>MultiDir Studio</source>
         <translation>MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="124"/>
+        <location filename="../ui/main_window.cpp" line="126"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
+        <location filename="../ui/main_window.cpp" line="127"/>
         <source>&amp;Open...</source>
         <translation>打开(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="143"/>
+        <location filename="../ui/main_window.cpp" line="145"/>
         <source>Show a plan saved earlier (a folder with plan.json)</source>
         <translation>显示之前保存的方案（包含 plan.json 的文件夹）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="144"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
         <source>&amp;Export plan...</source>
         <translation>导出方案(&amp;E)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="146"/>
+        <location filename="../ui/main_window.cpp" line="148"/>
         <source>Save the plan shown: plan.json and one STL per region</source>
         <translation>保存当前方案：plan.json 以及每个区域一个 STL 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="157"/>
+        <location filename="../ui/main_window.cpp" line="159"/>
         <source>&amp;Load machine profile...</source>
         <translation>加载机器配置(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="162"/>
+        <location filename="../ui/main_window.cpp" line="164"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="166"/>
+        <location filename="../ui/main_window.cpp" line="168"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="167"/>
+        <location filename="../ui/main_window.cpp" line="169"/>
         <source>&amp;Fit to View</source>
         <translation>适应视图(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
+        <location filename="../ui/main_window.cpp" line="171"/>
         <source>Show the &amp;model (hide the plan)</source>
         <translation>显示模型(&amp;M)（隐藏方案）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="177"/>
+        <location filename="../ui/main_window.cpp" line="179"/>
+        <location filename="../ui/main_window.cpp" line="747"/>
         <source>&amp;Search</source>
         <translation>搜索(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="178"/>
+        <location filename="../ui/main_window.cpp" line="180"/>
         <source>&amp;Run</source>
         <translation>运行(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="181"/>
+        <location filename="../ui/main_window.cpp" line="184"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
         <source>Overhangs</source>
         <translation>悬垂</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="257"/>
         <source>Machine</source>
         <translation>机器</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="245"/>
+        <location filename="../ui/main_window.cpp" line="258"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
+        <location filename="../ui/main_window.cpp" line="267"/>
         <source>Plan</source>
         <translation>方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>Hardware</source>
         <translation>硬件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="341"/>
+        <location filename="../ui/main_window.cpp" line="360"/>
         <source>Printing direction</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="344"/>
+        <location filename="../ui/main_window.cpp" line="363"/>
         <source>Up:</source>
         <translation>向上：</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="351"/>
+        <location filename="../ui/main_window.cpp" line="370"/>
         <source>The direction the model is printed along: the platform is below, overhangs are measured against it</source>
         <translation>模型的打印方向：平台位于下方，悬垂相对于该方向计算</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="356"/>
+        <location filename="../ui/main_window.cpp" line="375"/>
         <source>+X</source>
         <translation>+X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="356"/>
+        <location filename="../ui/main_window.cpp" line="375"/>
         <source>-X</source>
         <translation>-X</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
         <source>+Y</source>
         <translation>+Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
         <source>-Y</source>
         <translation>-Y</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="358"/>
+        <location filename="../ui/main_window.cpp" line="377"/>
         <source>+Z</source>
         <translation>+Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="358"/>
+        <location filename="../ui/main_window.cpp" line="377"/>
         <source>-Z</source>
         <translation>-Z</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="128"/>
+        <location filename="../ui/main_window.cpp" line="130"/>
         <source>Open a mesh file (STL, OBJ, OFF or PLY) or a MultiDir project</source>
         <translation>打开网格文件（STL、OBJ、OFF 或 PLY）或 MultiDir 项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="155"/>
+        <location filename="../ui/main_window.cpp" line="157"/>
         <source>Save the 3D view as shown to a PNG or JPEG file</source>
         <translation>将当前显示的 3D 视图保存为 PNG 或 JPEG 文件</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="159"/>
+        <location filename="../ui/main_window.cpp" line="161"/>
         <source>Save machine pro&amp;file...</source>
         <translation>保存机器配置(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="171"/>
+        <location filename="../ui/main_window.cpp" line="173"/>
         <source>View</source>
         <translation>视图</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="194"/>
+        <location filename="../ui/main_window.cpp" line="197"/>
         <source>S&amp;lice the plan...</source>
         <translation>切片此方案(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="197"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>将所示方案的每一步连同支撑切片为 G 代码(PrusaSlicer)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="201"/>
+        <location filename="../ui/main_window.cpp" line="214"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="202"/>
+        <location filename="../ui/main_window.cpp" line="215"/>
         <source>&amp;About MultiDir Studio</source>
         <translation>关于 MultiDir Studio(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="209"/>
+        <location filename="../ui/main_window.cpp" line="222"/>
         <source>About MultiDir Studio</source>
         <translation>关于 MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="210"/>
+        <location filename="../ui/main_window.cpp" line="223"/>
         <source>MultiDir Studio %1</source>
         <translation>MultiDir Studio %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="212"/>
+        <location filename="../ui/main_window.cpp" line="225"/>
         <source>Plans multi-directional 3D prints: cuts a model by planes into regions, each printed along its own direction, and drives the machine that prints them.
 
 Qt %1</source>
@@ -2302,334 +2324,334 @@ Qt %1</source>
 Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="305"/>
+        <location filename="../ui/main_window.cpp" line="324"/>
         <source>Emergency stop</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="421"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>The pose search was stopped; its result is dropped.</source>
         <translation>姿态搜索已停止；其结果已丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>The search was stopped; its result is dropped.</source>
         <translation>搜索已停止；其结果已丢弃。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>Open Model or Project</source>
         <translation>打开模型或项目</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Meshes and projects (*.stl *.obj *.off *.ply *.multidir);;Meshes (*.stl *.obj *.off *.ply);;MultiDir projects (*.multidir);;All files (*)</source>
         <translation>网格和项目 (*.stl *.obj *.off *.ply *.multidir);;网格 (*.stl *.obj *.off *.ply);;MultiDir 项目 (*.multidir);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>%1, %2, %3</source>
         <translation>%1, %2, %3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Pose: %1</source>
         <translation>姿态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>Custom (%1, %2, %3)</source>
         <translation>自定义（%1, %2, %3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="557"/>
+        <location filename="../ui/main_window.cpp" line="579"/>
         <source>%1 - MultiDir Studio</source>
         <translation>%1 - MultiDir Studio</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="583"/>
         <source>Repaired on load: %1</source>
         <translation>加载时已修复：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="575"/>
+        <location filename="../ui/main_window.cpp" line="597"/>
         <source>Could not open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="579"/>
+        <location filename="../ui/main_window.cpp" line="601"/>
         <source>Could not open %1</source>
         <translation>无法打开 %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="583"/>
+        <location filename="../ui/main_window.cpp" line="605"/>
         <source>%1 is still open.</source>
         <translation>%1 仍处于打开状态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
-        <location filename="../ui/main_window.cpp" line="624"/>
+        <location filename="../ui/main_window.cpp" line="628"/>
+        <location filename="../ui/main_window.cpp" line="645"/>
         <source>No model</source>
         <translation>无模型</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="617"/>
+        <location filename="../ui/main_window.cpp" line="638"/>
         <source>Triangles: %1</source>
         <translation>三角形：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="618"/>
+        <location filename="../ui/main_window.cpp" line="639"/>
         <source>Volume: %1 mm³</source>
         <translation>体积：%1 mm³</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="632"/>
+        <location filename="../ui/main_window.cpp" line="653"/>
         <source>Risky area unavailable</source>
         <translation>风险面积不可用</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="640"/>
+        <location filename="../ui/main_window.cpp" line="661"/>
         <source>Risky area (%1 up): %2 mm²</source>
         <translation>风险面积（%1 向上）：%2 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="642"/>
+        <location filename="../ui/main_window.cpp" line="663"/>
         <source>Area of the faces that overhang by more than %1° for this up direction</source>
         <translation>在此向上方向下悬垂超过 %1° 的面的面积</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="659"/>
         <location filename="../ui/main_window.cpp" line="682"/>
-        <location filename="../ui/main_window_pose.cpp" line="57"/>
-        <location filename="../ui/main_window_pose.cpp" line="74"/>
+        <location filename="../ui/main_window.cpp" line="705"/>
+        <location filename="../ui/main_window_pose.cpp" line="38"/>
+        <location filename="../ui/main_window_pose.cpp" line="55"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="661"/>
-        <location filename="../ui/main_window_pose.cpp" line="59"/>
+        <location filename="../ui/main_window.cpp" line="684"/>
+        <location filename="../ui/main_window_pose.cpp" line="40"/>
         <source>Fix the machine first: %1</source>
         <translation>请先修正机器设置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="663"/>
-        <location filename="../ui/main_window.cpp" line="681"/>
+        <location filename="../ui/main_window.cpp" line="686"/>
+        <location filename="../ui/main_window.cpp" line="704"/>
         <source>A pose search is running: wait for it or cancel it.</source>
         <translation>姿态搜索正在运行：请等待其完成或将其取消。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="680"/>
+        <location filename="../ui/main_window.cpp" line="703"/>
         <source>A search is already running.</source>
         <translation>已有搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="687"/>
-        <location filename="../ui/main_window_pose.cpp" line="82"/>
+        <location filename="../ui/main_window.cpp" line="710"/>
+        <location filename="../ui/main_window_pose.cpp" line="63"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="691"/>
+        <location filename="../ui/main_window.cpp" line="714"/>
         <source>Cannot search: %1</source>
         <translation>无法搜索：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="692"/>
+        <location filename="../ui/main_window.cpp" line="715"/>
         <source>Cannot search.</source>
         <translation>无法搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="706"/>
+        <location filename="../ui/main_window.cpp" line="729"/>
         <source>Searching %1...</source>
         <translation>正在搜索 %1...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="714"/>
+        <location filename="../ui/main_window.cpp" line="764"/>
         <source>Cancelling the search...</source>
         <translation>正在取消搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="777"/>
         <source>The search result was dropped: the model or its up direction changed.</source>
         <translation>搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="730"/>
+        <location filename="../ui/main_window.cpp" line="792"/>
         <source>Search cancelled: showing the best plan found so far.</source>
         <translation>搜索已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="731"/>
+        <location filename="../ui/main_window.cpp" line="793"/>
         <source>Search finished.</source>
         <translation>搜索完成。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="744"/>
+        <location filename="../ui/main_window.cpp" line="813"/>
         <source>Search failed: %1</source>
         <translation>搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="780"/>
+        <location filename="../ui/main_window.cpp" line="849"/>
         <source>Growing supports for the plan...</source>
         <translation>正在为方案生成支撑...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="792"/>
+        <location filename="../ui/main_window.cpp" line="861"/>
         <source>Supports grown for the plan.</source>
         <translation>已为方案生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="828"/>
+        <location filename="../ui/main_window.cpp" line="931"/>
         <source>There is no plan to export: run a search first.</source>
         <translation>没有可导出的方案：请先运行搜索。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="831"/>
+        <location filename="../ui/main_window.cpp" line="934"/>
         <source>The supports of this plan are still being grown: export it again when the status bar says they are ready.</source>
         <translation>此方案的支撑仍在生成中：请在状态栏提示支撑已就绪后重新导出。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="835"/>
+        <location filename="../ui/main_window.cpp" line="938"/>
         <source>Could not create the folder %1: check that its parent exists and can be written.</source>
         <translation>无法创建文件夹 %1：请检查其上级文件夹是否存在且可写入。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="865"/>
+        <location filename="../ui/main_window.cpp" line="968"/>
         <source>Could not export the plan to %1: %2 (%3)</source>
         <translation>无法将方案导出到 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="871"/>
+        <location filename="../ui/main_window.cpp" line="974"/>
         <source>Plan exported to %1 without supports although %2 mm² of risky area remains: %3</source>
         <translation>方案已导出到 %1，但未包含支撑，尽管仍剩余 %2 mm² 风险面积：%3</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="873"/>
+        <location filename="../ui/main_window.cpp" line="976"/>
         <source>no supports were grown for it.</source>
         <translation>未为其生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="878"/>
+        <location filename="../ui/main_window.cpp" line="981"/>
         <source>Plan exported to %1.</source>
         <translation>方案已导出到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="885"/>
+        <location filename="../ui/main_window.cpp" line="988"/>
         <source>Could not open the plan %1: %2 (%3)</source>
         <translation>无法打开方案 %1：%2（%3）</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="932"/>
+        <location filename="../ui/main_window.cpp" line="1035"/>
         <source>Machine profile saved to %1.</source>
         <translation>机器配置已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="944"/>
+        <location filename="../ui/main_window.cpp" line="1047"/>
         <source>Machine profile %1 loaded.</source>
         <translation>已加载机器配置 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="953"/>
+        <location filename="../ui/main_window.cpp" line="1056"/>
         <source>Export Plan to Folder</source>
         <translation>将方案导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="953"/>
+        <location filename="../ui/main_window.cpp" line="1056"/>
         <source>-plan</source>
         <translation>-方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="954"/>
+        <location filename="../ui/main_window.cpp" line="1057"/>
         <source>Plan folders (*)</source>
         <translation>方案文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="960"/>
-        <location filename="../ui/main_window.cpp" line="962"/>
+        <location filename="../ui/main_window.cpp" line="1063"/>
+        <location filename="../ui/main_window.cpp" line="1065"/>
         <source>Export Plan</source>
         <translation>导出方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="973"/>
+        <location filename="../ui/main_window.cpp" line="1076"/>
         <source>Screenshot saved to %1.</source>
         <translation>截图已保存到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="978"/>
+        <location filename="../ui/main_window.cpp" line="1081"/>
         <source>PNG images (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="979"/>
+        <location filename="../ui/main_window.cpp" line="1082"/>
         <source>JPEG images (*.jpg *.jpeg)</source>
         <translation>JPEG 图像 (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="982"/>
-        <location filename="../ui/main_window.cpp" line="990"/>
+        <location filename="../ui/main_window.cpp" line="1085"/>
+        <location filename="../ui/main_window.cpp" line="1093"/>
         <source>Export Screenshot</source>
         <translation>导出截图</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="995"/>
+        <location filename="../ui/main_window.cpp" line="1098"/>
         <source>Open Plan Folder</source>
         <translation>打开方案文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Open Plan</source>
         <translation>打开方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="131"/>
+        <location filename="../ui/main_window.cpp" line="133"/>
         <source>Sa&amp;mples</source>
         <translation>示例(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="141"/>
+        <location filename="../ui/main_window.cpp" line="143"/>
         <source>Open pla&amp;n...</source>
         <translation>打开方案(&amp;N)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="148"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>Export &amp;G-code...</source>
         <translation>导出 G 代码(&amp;G)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="150"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>Save the sliced plan&apos;s G-code (step-NN.gcode, job.gcode) and its print job</source>
         <translation>保存已切片方案的 G 代码（step-NN.gcode、job.gcode）及其打印作业</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="153"/>
+        <location filename="../ui/main_window.cpp" line="155"/>
         <source>Export Screens&amp;hot...</source>
         <translation>导出截图(&amp;H)...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1001"/>
-        <location filename="../ui/main_window.cpp" line="1007"/>
+        <location filename="../ui/main_window.cpp" line="1104"/>
+        <location filename="../ui/main_window.cpp" line="1110"/>
         <source>Save Machine Profile</source>
         <translation>保存机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1003"/>
+        <location filename="../ui/main_window.cpp" line="1106"/>
         <source>Machine profiles (*.json)</source>
         <translation>机器配置 (*.json)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1011"/>
-        <location filename="../ui/main_window.cpp" line="1018"/>
+        <location filename="../ui/main_window.cpp" line="1114"/>
+        <location filename="../ui/main_window.cpp" line="1121"/>
         <source>Load Machine Profile</source>
         <translation>加载机器配置</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1013"/>
+        <location filename="../ui/main_window.cpp" line="1116"/>
         <source>Machine profiles (*.json);;All files (*)</source>
         <translation>机器配置 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="1031"/>
+        <location filename="../ui/main_window.cpp" line="1134"/>
         <source>Loading %1...</source>
         <translation>正在加载 %1...</translation>
     </message>
@@ -2654,123 +2676,123 @@ Qt %1</translation>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="61"/>
-        <location filename="../ui/main_window_pose.cpp" line="73"/>
+        <location filename="../ui/main_window_pose.cpp" line="42"/>
+        <location filename="../ui/main_window_pose.cpp" line="54"/>
         <source>A search is running: wait for it or cancel it.</source>
         <translation>搜索正在运行：请等待其完成或将其取消。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="72"/>
+        <location filename="../ui/main_window_pose.cpp" line="53"/>
         <source>A pose search is already running.</source>
         <translation>已有姿态搜索正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="75"/>
+        <location filename="../ui/main_window_pose.cpp" line="56"/>
         <source>This plan was opened without its model: open the model.</source>
         <translation>此方案是在没有其模型的情况下打开的：请打开模型。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="86"/>
+        <location filename="../ui/main_window_pose.cpp" line="67"/>
         <source>Cannot find the best pose: %1</source>
         <translation>无法查找最佳姿态：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="87"/>
+        <location filename="../ui/main_window_pose.cpp" line="68"/>
         <source>Cannot find the best pose.</source>
         <translation>无法查找最佳姿态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="96"/>
+        <location filename="../ui/main_window_pose.cpp" line="77"/>
         <source>Finding the best pose for %1...</source>
         <translation>正在为 %1 查找最佳姿态...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="104"/>
+        <location filename="../ui/main_window_pose.cpp" line="85"/>
         <source>Cancelling the pose search...</source>
         <translation>正在取消姿态搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="117"/>
+        <location filename="../ui/main_window_pose.cpp" line="98"/>
         <source>The pose search result was dropped: the model or its up direction changed.</source>
         <translation>姿态搜索结果已丢弃：模型或其向上方向已改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="127"/>
+        <location filename="../ui/main_window_pose.cpp" line="108"/>
         <source>Pose search cancelled: the poses that finished are listed; the plan shown is unchanged.</source>
         <translation>姿态搜索已取消：已完成的姿态已列出；当前显示的方案未改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="131"/>
+        <location filename="../ui/main_window_pose.cpp" line="112"/>
         <source>Best pose found.</source>
         <translation>已找到最佳姿态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="141"/>
+        <location filename="../ui/main_window_pose.cpp" line="122"/>
         <source>Pose search cancelled before any pose finished: the plan shown is unchanged.</source>
         <translation>姿态搜索在任何姿态完成之前被取消：当前显示的方案未改变。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="143"/>
+        <location filename="../ui/main_window_pose.cpp" line="124"/>
         <source>Pose search failed: %1</source>
         <translation>姿态搜索失败：%1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="159"/>
+        <location filename="../ui/main_window_pose.cpp" line="140"/>
         <source>Showing pose %1 (up %2, %3, %4): the project is unchanged. &quot;Use this pose&quot; makes it the model&apos;s up; &quot;Show current up&quot; goes back.</source>
         <translation>正在显示姿态 %1（向上方向 %2, %3, %4）：项目未改变。“使用此姿态”将其设为模型的向上方向；“显示当前向上方向”可返回。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="206"/>
+        <location filename="../ui/main_window_pose.cpp" line="187"/>
         <source>This pose belongs to another model: find the best pose again.</source>
         <translation>此姿态属于另一个模型：请重新查找最佳姿态。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="222"/>
+        <location filename="../ui/main_window_pose.cpp" line="203"/>
         <source>The model now stands on the best pose; its plan is shown.</source>
         <translation>模型现已按最佳姿态摆放；显示其方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_pose.cpp" line="225"/>
+        <location filename="../ui/main_window_pose.cpp" line="206"/>
         <source>The model now stands on pose %1; searching its plan...</source>
         <translation>模型现已按姿态 %1 摆放；正在搜索其方案...</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="743"/>
         <source>Replace the Edited Plan</source>
         <translation>替换已编辑的方案</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="728"/>
+        <location filename="../ui/main_window.cpp" line="744"/>
         <source>The plan shown has edits that are not saved.</source>
         <translation>显示的方案有未保存的编辑。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="730"/>
+        <location filename="../ui/main_window.cpp" line="746"/>
         <source>A new search replaces it; Edit &gt; Undo brings it back. Search now?</source>
         <translation>新的搜索将替换它；“编辑 &gt; 撤销”可将其恢复。现在搜索吗？</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="768"/>
+        <location filename="../ui/main_window.cpp" line="784"/>
         <source>Search cancelled: its best plan so far (J_G %1 mm²) is worse than the plan shown (J_G %2 mm²), which is kept.</source>
         <translation>搜索已取消：其目前最佳方案（J_G %1 mm²）比显示的方案（J_G %2 mm²）差，保留显示的方案。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="888"/>
+        <location filename="../ui/main_window.cpp" line="904"/>
         <source>Print Run Under Way</source>
         <translation>打印运行进行中</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="889"/>
+        <location filename="../ui/main_window.cpp" line="905"/>
         <source>A print run is under way: step %1.</source>
         <translation>打印运行正在进行：步骤 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="892"/>
+        <location filename="../ui/main_window.cpp" line="908"/>
         <source>Quitting stops the platform and the printer first: the run is aborted (Start run offers to resume it from the step it stopped at). Stop the devices and quit?</source>
         <translation>退出会先停止平台和打印机：运行将被中止（“开始运行”可以从其停止的步骤继续）。停止设备并退出吗？</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="894"/>
+        <location filename="../ui/main_window.cpp" line="910"/>
         <source>S&amp;top the Devices and Quit</source>
         <translation>停止设备并退出(&amp;T)</translation>
     </message>
@@ -2790,7 +2812,7 @@ Qt %1</translation>
         <translation>分开打印</translation>
     </message>
     <message>
-        <location filename="../ui/main_window_cell.cpp" line="20"/>
+        <location filename="../ui/main_window_cell.cpp" line="23"/>
         <source>Cell view</source>
         <translation>单元视图</translation>
     </message>
@@ -2798,37 +2820,37 @@ Qt %1</translation>
 <context>
     <name>multidir::ui::MeshViewerWidget</name>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="365"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="421"/>
         <source>Open a model (%1) or File &gt; Samples</source>
         <translation>打开模型(%1)或 文件 &gt; 示例</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="557"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="629"/>
         <source>%1, %2, %3 mm</source>
         <translation>%1, %2, %3 mm</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="561"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="633"/>
         <source>A: %1</source>
         <translation>A:%1</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="563"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="635"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="564"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="636"/>
         <source>B: %1</source>
         <translation>B:%1</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="565"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="637"/>
         <source>Distance: %1</source>
         <translation>距离:%1</translation>
     </message>
     <message>
-        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="568"/>
+        <location filename="../ui/viewer/mesh_viewer_widget.cpp" line="640"/>
         <source>Click a second point on the model (Esc ends measuring)</source>
         <translation>在模型上点击第二个点(Esc 结束测量)</translation>
     </message>
@@ -3021,130 +3043,131 @@ Qt %1</translation>
 <context>
     <name>multidir::ui::PlanPanel</name>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="46"/>
-        <location filename="../ui/panels/plan_panel.cpp" line="176"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="66"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="200"/>
         <source>No plan yet: run a search or open a plan.</source>
         <translation>尚无方案：请运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Region</source>
         <translation>区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Volume (mm³)</source>
         <translation>体积 (mm³)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Risky (mm²)</source>
         <translation>风险 (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="52"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="72"/>
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="73"/>
         <source>Machine angles</source>
         <translation>机器角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="53"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="73"/>
         <source>Supports (mm³)</source>
         <translation>支撑 (mm³)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="61"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="84"/>
         <source>Printing directions</source>
         <translation>打印方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="64"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="87"/>
         <source>Clipping planes</source>
         <translation>切割平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="66"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="89"/>
         <source>Supports</source>
         <translation>支撑</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="69"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="92"/>
         <source>The tree supports grown for the risky area the plan leaves, in one colour</source>
         <translation>为方案剩余的风险面积生成的树状支撑，以单一颜色显示</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="70"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="93"/>
         <source>Turn the view as the machine turns the part</source>
         <translation>随机器转动零件而旋转视图</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="75"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="98"/>
         <source>Moves the regions apart along their printing directions</source>
         <translation>沿各自打印方向将区域分开</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="82"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="105"/>
         <source>Previous region</source>
         <translation>上一个区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="85"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="108"/>
         <source>Next region</source>
         <translation>下一个区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="94"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="117"/>
         <source>Show:</source>
         <translation>显示：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="97"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="120"/>
         <source>Exploded view:</source>
         <translation>爆炸视图：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="98"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="121"/>
         <source>Printed up to:</source>
         <translation>打印到：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="136"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="159"/>
         <source>none (fixed)</source>
         <translation>无（固定）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="138"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="161"/>
         <source>rotary %1°</source>
         <translation>旋转 %1°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="142"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="165"/>
         <source>tilt %1°, azimuth %2°</source>
         <translation>倾斜 %1°，方位角 %2°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="150"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="173"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="176"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="151"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="174"/>
         <source>No supports were grown for this plan</source>
         <translation>未为此方案生成支撑</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/plan_panel.cpp" line="154"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="178"/>
         <source>%n region(s); J_G %1 mm² before, %2 mm² after.</source>
         <translation>
             <numerusform>%n 个区域；J_G 之前 %1 mm²，之后 %2 mm²。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/plan_panel.cpp" line="209"/>
+        <location filename="../ui/panels/plan_panel.cpp" line="233"/>
         <source>of %1</source>
         <translation>共 %1</translation>
     </message>
@@ -3297,12 +3320,12 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::PoseSearchBox</name>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="29"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="31"/>
         <source>given up</source>
         <translation>给定方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="30"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="32"/>
         <source>resting</source>
         <translation>稳定放置</translation>
     </message>
@@ -3311,187 +3334,202 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation type="vanished">采样</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="37"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="39"/>
         <source>Best pose</source>
         <translation>最佳姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="44"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="46"/>
         <source>Poses tried: the current up and the poses the model stands in on its own</source>
         <translation>尝试的姿态：当前向上方向以及模型能自行站立的姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="49"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="51"/>
         <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
         <translation>以“搜索”选项卡的设置进行完整搜索的姿态（当前向上方向及评分最佳的其他姿态）；其余姿态用快速贪心方案评分</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="54"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
         <source>Find best pose</source>
         <translation>查找最佳姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="137"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="139"/>
         <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
         <translation>尝试模型在平台上的各种摆放方式，每个姿态各自分解，并保留剩余风险面积最小的姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="60"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Up</source>
         <translation>向上方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Contact (mm²)</source>
         <translation>接触面积 (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="71"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
         <source>Margin (mm)</source>
         <translation>余量 (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
         <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
         <translation>在此姿态下模型凸包与平台接触部分的面积</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="78"/>
         <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
         <translation>重心投影位于该接触面内的距离：仅当其为正时模型才能站稳</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Risky area (mm²)</source>
         <translation>风险面积 (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>J_G (mm²)</source>
         <translation>J_G (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Regions</source>
         <translation>区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="72"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="79"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="81"/>
         <source>Risky area of the whole model printed along this up alone (J_G before)</source>
         <translation>整个模型仅沿此向上方向打印时的风险面积（J_G 之前）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="80"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="82"/>
         <source>J_G of the plan found for this pose</source>
         <translation>为此姿态找到的方案的 J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="87"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
         <source>Use this pose</source>
         <translation>使用此姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
         <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
         <translation>将所选姿态设为模型的向上方向；选定的姿态直接显示其方案，其他姿态将重新搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
         <source>Show current up</source>
         <translation>显示当前向上方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="95"/>
         <source>End the preview of a pose: show the model with its up again</source>
         <translation>结束姿态预览：重新按模型的向上方向显示模型</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="96"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="98"/>
         <source>Poses to try:</source>
         <translation>尝试的姿态数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="97"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="99"/>
         <source>Full searches:</source>
         <translation>完整搜索数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="148"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="156"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="150"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
         <source>Scoring poses with quick plans...</source>
         <translation>正在用快速方案评估姿态...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="157"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
         <source>Full searches of the best poses...</source>
         <translation>正在对最佳姿态进行完整搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="160"/>
         <source>Choosing the best pose...</source>
         <translation>正在选择最佳姿态...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="163"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="165"/>
         <source>Cancelling the pose search...</source>
         <translation>正在取消姿态搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="184"/>
         <source>full search</source>
         <translation>完整搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="185"/>
         <source>quick plan</source>
         <translation>快速方案</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="181"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="186"/>
+        <source>ruled out</source>
+        <translation>已排除</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
         <source>not scored</source>
         <translation>未评估</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
         <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
+        <source>Not searched: at least %1 mm² of this pose&apos;s overhang cannot be saved by any direction the machine prints along, more than the J_G of the given up&apos;s plan, so it could not win</source>
+        <translation>未搜索：此姿态至少有 %1 mm² 的悬垂在机器可打印的任何方向上都无法避免，超过给定方向方案的 J_G，因此它不可能胜出</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="212"/>
         <source>chosen</source>
         <translation>选定</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="205"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="217"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>最佳姿态：向上方向 %1（%2），J_G %3 mm²，%n 个区域。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="219"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>已取消：已完成的姿态已列出。%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="234"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="246"/>
         <source>, in use</source>
         <translation>，使用中</translation>
     </message>
@@ -3518,7 +3556,7 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::PrintRunDriver</name>
     <message>
-        <location filename="../ui/device/print_run_driver.cpp" line="164"/>
+        <location filename="../ui/device/print_run_driver.cpp" line="172"/>
         <source>the link to %1 was lost: the run is paused; press Resume once the link is back</source>
         <translation>与 %1 的链路已中断：运行已暂停；链路恢复后请按“继续”</translation>
     </message>
@@ -3531,13 +3569,13 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>打印机尚未应答；MultiDir 会继续尝试。%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_link_owner.cpp" line="119"/>
-        <location filename="../ui/device/printer_link_owner.cpp" line="156"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="120"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="166"/>
         <source>Printer E-STOP</source>
         <translation>打印机急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_link_owner.cpp" line="121"/>
+        <location filename="../ui/device/printer_link_owner.cpp" line="122"/>
         <source>%1 refused: no printer is connected.</source>
         <translation>%1 被拒绝：未连接打印机。</translation>
     </message>
@@ -3555,280 +3593,278 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::PrinterSection</name>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="44"/>
+        <location filename="../ui/device/printer_section.cpp" line="45"/>
         <source>%1 °C (off)</source>
         <translation>%1 °C（关闭）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="45"/>
+        <location filename="../ui/device/printer_section.cpp" line="46"/>
         <source>%1 / %2 °C</source>
         <translation>%1 / %2 °C</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="52"/>
-        <location filename="../ui/device/printer_section.cpp" line="250"/>
+        <location filename="../ui/device/printer_section.cpp" line="53"/>
+        <location filename="../ui/device/printer_section.cpp" line="294"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="54"/>
+        <location filename="../ui/device/printer_section.cpp" line="55"/>
         <source>standby (no job)</source>
         <translation>待机（无作业）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="56"/>
+        <location filename="../ui/device/printer_section.cpp" line="57"/>
         <source>printing</source>
         <translation>正在打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="58"/>
+        <location filename="../ui/device/printer_section.cpp" line="59"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="60"/>
+        <location filename="../ui/device/printer_section.cpp" line="61"/>
         <source>complete</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="62"/>
+        <location filename="../ui/device/printer_section.cpp" line="63"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="64"/>
+        <location filename="../ui/device/printer_section.cpp" line="65"/>
         <source>error</source>
         <translation>错误</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="74"/>
+        <location filename="../ui/device/printer_section.cpp" line="75"/>
         <source>Printer</source>
         <translation>打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="78"/>
+        <location filename="../ui/device/printer_section.cpp" line="79"/>
         <source>http://192.168.0.20:7125</source>
         <translation>http://192.168.0.20:7125</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="79"/>
+        <location filename="../ui/device/printer_section.cpp" line="80"/>
         <source>The printer&apos;s address: Moonraker (Klipper) as http://HOST:PORT or HOST:PORT (port 7125).</source>
         <translation>打印机地址：Moonraker（Klipper），格式为 http://HOST:PORT 或 HOST:PORT（端口 7125）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="83"/>
-        <location filename="../ui/device/printer_section.cpp" line="254"/>
-        <location filename="../ui/device/printer_section.cpp" line="263"/>
+        <location filename="../ui/device/printer_section.cpp" line="84"/>
+        <location filename="../ui/device/printer_section.cpp" line="298"/>
+        <location filename="../ui/device/printer_section.cpp" line="312"/>
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="84"/>
+        <location filename="../ui/device/printer_section.cpp" line="85"/>
         <source>Only when the printer asks for one (Moonraker&apos;s [authorization]). Not remembered.</source>
         <translation>仅在打印机要求时填写（Moonraker 的 [authorization]）。不会被保存。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="85"/>
+        <location filename="../ui/device/printer_section.cpp" line="86"/>
         <source>Connect printer</source>
         <translation>连接打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="86"/>
+        <location filename="../ui/device/printer_section.cpp" line="87"/>
         <source>Connects to the printer; a print run then sends each region&apos;s G-code to it.</source>
         <translation>连接打印机；之后打印运行会将每个区域的 G 代码发送给它。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="87"/>
+        <location filename="../ui/device/printer_section.cpp" line="88"/>
         <source>Disconnect printer</source>
         <translation>断开打印机</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="88"/>
+        <location filename="../ui/device/printer_section.cpp" line="89"/>
         <source>Closes the link without commanding the printer: a job on it goes on.</source>
         <translation>关闭链路而不向打印机发送命令：打印机上的作业会继续进行。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="89"/>
+        <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Clear printer E-STOP</source>
         <translation>清除打印机急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="90"/>
         <source>Allows jobs again once the printer confirmed the emergency stop. A Klipper printer also needs FIRMWARE_RESTART on its console.</source>
-        <translation>打印机确认急停后，重新允许作业。Klipper 打印机还需在其控制台上执行 FIRMWARE_RESTART。</translation>
+        <translation type="vanished">打印机确认急停后，重新允许作业。Klipper 打印机还需在其控制台上执行 FIRMWARE_RESTART。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="107"/>
+        <location filename="../ui/device/printer_section.cpp" line="112"/>
         <source>Address:</source>
         <translation>地址：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="108"/>
+        <location filename="../ui/device/printer_section.cpp" line="113"/>
         <source>API key:</source>
         <translation>API 密钥：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="113"/>
+        <location filename="../ui/device/printer_section.cpp" line="118"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="114"/>
+        <location filename="../ui/device/printer_section.cpp" line="119"/>
         <source>Job:</source>
         <translation>作业：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="115"/>
+        <location filename="../ui/device/printer_section.cpp" line="120"/>
         <source>Firmware:</source>
         <translation>固件：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="116"/>
+        <location filename="../ui/device/printer_section.cpp" line="121"/>
         <source>Printer says:</source>
         <translation>打印机消息：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="117"/>
+        <location filename="../ui/device/printer_section.cpp" line="122"/>
         <source>Extruder:</source>
         <translation>挤出机：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="118"/>
+        <location filename="../ui/device/printer_section.cpp" line="123"/>
         <source>Bed:</source>
         <translation>热床：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="119"/>
+        <location filename="../ui/device/printer_section.cpp" line="124"/>
         <source>File:</source>
         <translation>文件：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="120"/>
+        <location filename="../ui/device/printer_section.cpp" line="125"/>
         <source>Progress:</source>
         <translation>进度：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="121"/>
+        <location filename="../ui/device/printer_section.cpp" line="126"/>
         <source>Job time left:</source>
         <translation>作业剩余时间：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="122"/>
+        <location filename="../ui/device/printer_section.cpp" line="127"/>
         <source>Last problem:</source>
         <translation>最近的问题：</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="137"/>
+        <location filename="../ui/device/printer_section.cpp" line="154"/>
         <source>Connected to %1.</source>
         <translation>已连接到 %1。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="155"/>
+        <location filename="../ui/device/printer_section.cpp" line="172"/>
         <source>The link to %1 was lost at %2: its values are not the printer&apos;s any more, and it may still be printing. MultiDir keeps trying.</source>
         <translation>与 %1 的链路于 %2 中断：这些数值已不再反映打印机的状态，且它可能仍在打印。MultiDir 会继续尝试。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="171"/>
+        <location filename="../ui/device/printer_section.cpp" line="188"/>
         <source>Cannot connect to the printer: %1</source>
         <translation>无法连接打印机：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="175"/>
+        <location filename="../ui/device/printer_section.cpp" line="192"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="180"/>
+        <location filename="../ui/device/printer_section.cpp" line="197"/>
         <source>Printer disconnected.</source>
         <translation>打印机已断开。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="186"/>
         <source>Printer E-STOP cleared. A Klipper printer needs FIRMWARE_RESTART before its next job.</source>
-        <translation>打印机急停已清除。Klipper 打印机在下一个作业前需要执行 FIRMWARE_RESTART。</translation>
+        <translation type="vanished">打印机急停已清除。Klipper 打印机在下一个作业前需要执行 FIRMWARE_RESTART。</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="188"/>
+        <location filename="../ui/device/printer_section.cpp" line="210"/>
         <source>Clear printer E-STOP refused: %1</source>
         <translation>清除打印机急停被拒绝：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="207"/>
+        <location filename="../ui/device/printer_section.cpp" line="251"/>
         <source>step %1 of %2: %3</source>
         <translation>步骤 %1 / %2：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="210"/>
+        <location filename="../ui/device/printer_section.cpp" line="254"/>
         <source>not started</source>
         <translation>未开始</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="213"/>
+        <location filename="../ui/device/printer_section.cpp" line="257"/>
         <source>%1 of %2 (not a step of this run)</source>
         <translation>%2 已完成 %1（不属于本次运行的步骤）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="219"/>
+        <location filename="../ui/device/printer_section.cpp" line="263"/>
         <source>none: every step is printed</source>
         <translation>无：所有步骤均已打印</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="222"/>
+        <location filename="../ui/device/printer_section.cpp" line="266"/>
         <source>no estimate: slice the plan before starting the run</source>
         <translation>无估算：请在开始运行前对方案切片</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="224"/>
+        <location filename="../ui/device/printer_section.cpp" line="268"/>
         <source>%1 of printing (done about %2; platform moves not counted)</source>
         <translation>打印用时 %1（约 %2 完成；不含平台移动）</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="235"/>
+        <location filename="../ui/device/printer_section.cpp" line="279"/>
         <source>Disconnected</source>
         <translation>已断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="237"/>
+        <location filename="../ui/device/printer_section.cpp" line="281"/>
         <source>Not reachable; MultiDir keeps trying…</source>
         <translation>无法访问；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="239"/>
+        <location filename="../ui/device/printer_section.cpp" line="283"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="241"/>
+        <location filename="../ui/device/printer_section.cpp" line="285"/>
         <source>Link lost at %1; MultiDir keeps trying…</source>
         <translation>链路于 %1 中断；MultiDir 会继续尝试…</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="243"/>
+        <location filename="../ui/device/printer_section.cpp" line="287"/>
         <source>Connected to %1</source>
         <translation>已连接到 %1</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="251"/>
+        <location filename="../ui/device/printer_section.cpp" line="295"/>
         <source>nothing</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="283"/>
+        <location filename="../ui/device/printer_section.cpp" line="340"/>
         <source>%1 does not answer: %2</source>
         <translation>%1 没有应答：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="285"/>
+        <location filename="../ui/device/printer_section.cpp" line="342"/>
         <source>The printer&apos;s firmware is %1: %2</source>
         <translation>打印机固件处于 %1 状态：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="287"/>
+        <location filename="../ui/device/printer_section.cpp" line="344"/>
         <source>it says nothing more</source>
         <translation>无更多信息</translation>
     </message>
     <message>
-        <location filename="../ui/device/printer_section.cpp" line="289"/>
+        <location filename="../ui/device/printer_section.cpp" line="346"/>
         <source>The print run is paused: %1.</source>
         <translation>打印运行已暂停：%1。</translation>
     </message>
@@ -4171,359 +4207,359 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::RobotCellSection</name>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="62"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="63"/>
         <source>Robot cell (Universal Robots)</source>
         <translation>机器人单元（Universal Robots）</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="69"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="70"/>
         <source>host or host:port (the dashboard&apos;s port; UR&apos;s own 29999 when left out)</source>
         <translation>主机或 主机:端口（仪表板端口；省略时为 UR 默认的 29999）</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="72"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="73"/>
         <source>the folder &apos;multidir robot-program&apos; wrote</source>
         <translation>“multidir robot-program”写出的文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="73"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="74"/>
         <source>Open job folder…</source>
         <translation>打开作业文件夹…</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="74"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="75"/>
         <source>Convert the sliced job</source>
         <translation>转换已切片的作业</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="75"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="77"/>
         <source>The plan&apos;s sliced job turned into the cell&apos;s programs (as multidir robot-program does), for the cell on the Machine tab</source>
         <translation>将计划的切片作业转换为单元的程序（与 multidir robot-program 相同），用于“机器”选项卡中的单元</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="77"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="79"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="82"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="84"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="83"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="85"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="89"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="91"/>
         <source>Start job</source>
         <translation>开始作业</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="90"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="92"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="91"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="93"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="92"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="94"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="93"/>
-        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="95"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="503"/>
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="113"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="115"/>
         <source>Robot:</source>
         <translation>机器人：</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="115"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="117"/>
         <source>State:</source>
         <translation>状态：</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="116"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="118"/>
         <source>Joints:</source>
         <translation>关节：</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="117"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="119"/>
         <source>Robot job:</source>
         <translation>机器人作业：</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="119"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="121"/>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="132"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="134"/>
         <source>Conversion cancelled.</source>
         <translation>转换已取消。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="146"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="148"/>
         <source>%1 of %2: %3 sent</source>
         <translation>第 %1 步，共 %2 步：已发送 %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="150"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="153"/>
         <source>movel %1 of %2</source>
         <translation>movel %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="151"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="153"/>
         <source>between movels (a joint move)</source>
         <translation>在 movel 之间（关节运动）</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="152"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="154"/>
         <source>%1 of %2: %3, %4 %, about %5 left</source>
         <translation>第 %1 步，共 %2 步：%3，%4 %，剩余约 %5</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="160"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="162"/>
         <source>The robot reports: %1</source>
         <translation>机器人报告：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="163"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="165"/>
         <source>Cannot pause: %1. Stop ends the run.</source>
         <translation>无法暂停：%1。停止将结束运行。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="165"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="167"/>
         <source>paused after movel %1 of %2; the extruder stopped, the platform %3 mm off the nozzle</source>
         <translation>在 movel %1 / %2 之后暂停；挤出机已停止，平台离开喷嘴 %3 mm</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="170"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="172"/>
         <source>%1 of %2: %3</source>
         <translation>第 %1 步，共 %2 步：%3</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="171"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="173"/>
         <source>Paused at a safe point. Resume goes on from there; Stop ends the run.</source>
         <translation>已在安全点暂停。继续将从该处接着运行；停止将结束运行。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="176"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="178"/>
         <source>Resuming step %1 after movel %2: back down to the nozzle, then the rest of the step.</source>
         <translation>在 movel %2 之后继续第 %1 步：先回到喷嘴处，然后运行该步骤的其余部分。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="183"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="186"/>
         <source>%1 of %2 done in %3 of the robot&apos;s time</source>
         <translation>第 %1 步（共 %2 步）已完成，用时 %3（机器人时间）</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="214"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="217"/>
         <source>The link to the robot at %1 is lost (%2). The robot&apos;s values are unknown; MultiDir keeps trying to reconnect and sends a latched stop first thing once it is back.</source>
         <translation>与 %1 处机器人的连接已断开（%2）。机器人的数值未知；MultiDir 会持续尝试重新连接，连接恢复后首先发送保持中的停止命令。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="217"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="220"/>
         <source>The robot job run is ending: it stops the program.</source>
         <translation>机器人作业运行正在结束：它会停止程序。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="223"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="226"/>
         <source>Open a robot job folder (multidir robot-program OUT)</source>
         <translation>打开机器人作业文件夹（multidir robot-program OUT）</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="231"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="233"/>
         <source>There is no robot cell: choose the machine &quot;robot arm under a fixed extruder&quot;.</source>
         <translation>没有机器人单元：请选择机器“固定挤出机下的机械臂”。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="236"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="238"/>
         <source>The plan shown is not sliced: slice it with the cell&apos;s profile (ur5-cell-0.8) first.</source>
         <translation>显示的计划尚未切片：请先用单元的配置（ur5-cell-0.8）切片。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="241"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="243"/>
         <source>No folder for the converted job: %1</source>
         <translation>没有用于转换后作业的文件夹：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="272"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="275"/>
         <source>The sliced job cannot be converted for the cell: %1</source>
         <translation>无法为该单元转换切片作业：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="277"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="280"/>
         <source>Converted for the cell: %1 steps in %2.</source>
         <translation>已为该单元转换：%1 个步骤，位于 %2。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="285"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="288"/>
         <source>Converting the sliced job for the cell…</source>
         <translation>正在为该单元转换切片作业…</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="296"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="299"/>
         <source>The robot&apos;s address: %1</source>
         <translation>机器人地址：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="306"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="309"/>
         <source>Connecting to the robot at %1…</source>
         <translation>正在连接 %1 处的机器人…</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="323"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="327"/>
         <source>The robot at %1 cannot be reached: %2</source>
         <translation>无法连接 %1 处的机器人：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="327"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="331"/>
         <source>Connected to the robot at %1.</source>
         <translation>已连接到 %1 处的机器人。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="336"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="340"/>
         <source>A robot job run is under way: Stop it before disconnecting.</source>
         <translation>机器人作业正在运行：断开前请先停止它。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="351"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="354"/>
         <source>Start refused: %1</source>
         <translation>拒绝开始：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="356"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="358"/>
         <source>no robot is connected: Connect first.</source>
         <translation>未连接机器人：请先连接。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="364"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="366"/>
         <source>the document has no robot cell: set the cell on the Machine tab (the job was made for %1).</source>
         <translation>文档中没有机器人单元：请在“机器”选项卡中设置单元（该作业是为 %1 生成的）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="368"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="371"/>
         <source>the job&apos;s cell (%1) cannot be read: %2</source>
         <translation>无法读取作业的单元（%1）：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="372"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="374"/>
         <source>the job&apos;s cell (%1) is not the cell on the Machine tab: convert the job again with this cell, or load the job&apos;s cell on the Machine tab.</source>
         <translation>作业的单元（%1）不是“机器”选项卡中的单元：请用此单元重新转换作业，或在“机器”选项卡中加载作业的单元。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="377"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="379"/>
         <source>no plan is shown: open the plan the job was made from.</source>
         <translation>未显示计划：请打开生成该作业的计划。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="380"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="382"/>
         <source>the job was converted from another plan than the one shown: convert the sliced job again.</source>
         <translation>该作业是从另一个计划转换的，而非当前显示的计划：请重新转换切片作业。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="382"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="384"/>
         <source>the job has %1 steps but the plan shown has %2 regions: it was made from another plan.</source>
         <translation>作业有 %1 个步骤，而显示的计划有 %2 个区域：它是由另一个计划生成的。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="388"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="391"/>
         <source>the robot has not confirmed its stop yet (%1).</source>
         <translation>机器人尚未确认其停止（%1）。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="406"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="409"/>
         <source>starting: %1 steps</source>
         <translation>正在开始：%1 个步骤</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="407"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="410"/>
         <source>Robot job started: %1 steps.</source>
         <translation>机器人作业已开始：%1 个步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="415"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="418"/>
         <source>Pause asked for: the arm finishes the move under way, the extruder stops and the platform backs off the nozzle.</source>
         <translation>已请求暂停：机械臂完成当前运动，挤出机停止，平台离开喷嘴。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="438"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="448"/>
         <source>E-STOP sent to the robot (stop, then power off). To go on: release it on the teach pendant if pressed there; Start powers the arm on again once the robot confirmed the stop.</source>
         <translation>已向机器人发送急停（停止，然后断电）。继续：如在示教器上按下了急停，请将其释放；机器人确认停止后，“开始”会重新为机械臂上电。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="450"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="460"/>
         <source>done: %1 steps printed</source>
         <translation>完成：已打印 %1 个步骤</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="451"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="461"/>
         <source>The robot job is done: %1 steps printed.</source>
         <translation>机器人作业已完成：已打印 %1 个步骤。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="455"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="465"/>
         <source>The robot did not start the job: %1</source>
         <translation>机器人未开始该作业：%1</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="459"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="469"/>
         <source>stopped in step %1 of %2</source>
         <translation>在第 %1 步（共 %2 步）停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="460"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="470"/>
         <source>The run stopped in step %1: %2</source>
         <translation>运行在第 %1 步停止：%2</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="477"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="487"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="478"/>
-        <location filename="../ui/device/robot_cell_section.cpp" line="483"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="488"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
         <source>unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="482"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="492"/>
         <source>unknown: the link is lost (%1)</source>
         <translation>未知：连接已断开（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="485"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="495"/>
         <source>robot mode %1, safety mode %2, program %3</source>
         <translation>机器人模式 %1，安全模式 %2，程序 %3</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="490"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="500"/>
         <source>%1 deg</source>
         <translation>%1 度</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="493"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="503"/>
         <source>stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="494"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="504"/>
         <source>Robot: %1 confirmed by the robot.</source>
         <translation>机器人：%1 已由机器人确认。</translation>
     </message>
     <message>
-        <location filename="../ui/device/robot_cell_section.cpp" line="495"/>
+        <location filename="../ui/device/robot_cell_section.cpp" line="505"/>
         <source>Robot: %1 not confirmed yet (%2); MultiDir keeps resending it.</source>
         <translation>机器人：%1 尚未确认（%2）；MultiDir 会继续重发。</translation>
     </message>
@@ -4556,18 +4592,18 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>生成支撑时发生意外错误。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="91"/>
+        <location filename="../ui/jobs/search_job.cpp" line="96"/>
         <source>growing supports</source>
         <translation>正在生成支撑</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="102"/>
+        <location filename="../ui/jobs/search_job.cpp" line="107"/>
         <source>Not enough memory for this search: lower the beam width or the number of normals.</source>
         <translation>内存不足，无法进行此搜索：请减小束宽或法向数量。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/search_job.cpp" line="105"/>
-        <location filename="../ui/jobs/search_job.cpp" line="109"/>
+        <location filename="../ui/jobs/search_job.cpp" line="110"/>
+        <location filename="../ui/jobs/search_job.cpp" line="114"/>
         <source>Unexpected error during the search.</source>
         <translation>搜索过程中发生意外错误。</translation>
     </message>
@@ -4575,153 +4611,153 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SearchPanel</name>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="45"/>
+        <location filename="../ui/panels/search_panel.cpp" line="46"/>
         <source>Beam search (Algorithm 1)</source>
         <translation>束搜索（算法 1）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="46"/>
+        <location filename="../ui/panels/search_panel.cpp" line="47"/>
         <source>Constrained greedy</source>
         <translation>受约束贪心</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="47"/>
+        <location filename="../ui/panels/search_panel.cpp" line="48"/>
         <source>Greedy</source>
         <translation>贪心</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="52"/>
+        <location filename="../ui/panels/search_panel.cpp" line="53"/>
         <source>How many partial plans each level keeps (b)</source>
         <translation>每一层保留的部分方案数量 (b)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="58"/>
+        <location filename="../ui/panels/search_panel.cpp" line="59"/>
         <source>w: every region cut off keeps at least the model&apos;s volume divided by w</source>
         <translation>w：每个切下的区域至少保留模型体积除以 w</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="63"/>
+        <location filename="../ui/panels/search_panel.cpp" line="64"/>
         <source>Beam search only: runs at this many region scales side by side, the smallest region V/w, V/2w, V/4w, ..., the beam width shared among them, and keeps the best plan. No single w suits every model. 1: one beam search at w</source>
         <translation>仅限束搜索：在这么多个区域尺度上并行运行（最小区域为 V/w、V/2w、V/4w……），束宽在它们之间分配，保留最佳方案。没有一个 w 适合所有模型。1：在 w 上进行一次束搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="70"/>
+        <location filename="../ui/panels/search_panel.cpp" line="71"/>
         <source>Candidate normals sampled on the whole sphere (5-DOF)</source>
         <translation>在整个球面上采样的候选法向（5 自由度）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="75"/>
-        <location filename="../ui/panels/search_panel.cpp" line="89"/>
+        <location filename="../ui/panels/search_panel.cpp" line="76"/>
+        <location filename="../ui/panels/search_panel.cpp" line="90"/>
         <source> mm</source>
         <translation> 毫米</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="77"/>
+        <location filename="../ui/panels/search_panel.cpp" line="78"/>
         <source>Distance between candidate planes along each normal</source>
         <translation>沿每个法向的候选平面间距</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="82"/>
+        <location filename="../ui/panels/search_panel.cpp" line="83"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="84"/>
+        <location filename="../ui/panels/search_panel.cpp" line="85"/>
         <source>Maximal self-supporting angle the search plans for</source>
         <translation>搜索所依据的最大自支撑角度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="91"/>
+        <location filename="../ui/panels/search_panel.cpp" line="92"/>
         <source>No region, the one on the platform included, is thinner than this along its printing direction</source>
         <translation>任何区域（包括平台上的区域）沿其打印方向的厚度都不小于此值</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="97"/>
+        <location filename="../ui/panels/search_panel.cpp" line="98"/>
         <source> % of J_G</source>
         <translation> % 的 J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="99"/>
+        <location filename="../ui/panels/search_panel.cpp" line="100"/>
         <source>A plane stays only if removing it would raise J_G by at least this share of J_G before (and by at least 1 mm²): each region costs a platform move and a seam</source>
         <translation>仅当移除某个平面会使 J_G 至少增加移除前 J_G 的这一比例（且至少 1 mm²）时，才保留该平面：每个区域都需要一次平台移动并产生一条接缝</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="106"/>
+        <location filename="../ui/panels/search_panel.cpp" line="123"/>
         <source>off</source>
         <translation>关</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="107"/>
+        <location filename="../ui/panels/search_panel.cpp" line="124"/>
         <source>After the search, move every plane continuously (normal and offset) to lower J_G further, every constraint kept; higher values refine more finely and take longer</source>
         <translation>搜索之后,在满足所有约束的前提下连续移动每个平面(法向与偏移)以进一步降低 J_G;数值越高细化越精、耗时越长</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="112"/>
+        <location filename="../ui/panels/search_panel.cpp" line="140"/>
         <source>machine&apos;s axis only</source>
         <translation>仅机器自身的轴</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="113"/>
+        <location filename="../ui/panels/search_panel.cpp" line="141"/>
         <source>4-DOF: also try this many rotation axes spread over 180° and keep the best</source>
         <translation>4 自由度：另外尝试这么多分布在 180° 内的旋转轴，并保留最佳的</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="116"/>
+        <location filename="../ui/panels/search_panel.cpp" line="144"/>
         <source>Scheme:</source>
         <translation>方案类型：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="117"/>
+        <location filename="../ui/panels/search_panel.cpp" line="145"/>
         <source>Beam width:</source>
         <translation>束宽：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="119"/>
+        <location filename="../ui/panels/search_panel.cpp" line="147"/>
         <source>Volume divisor w:</source>
         <translation>体积除数 w：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="120"/>
+        <location filename="../ui/panels/search_panel.cpp" line="148"/>
         <source>Scales:</source>
         <translation>尺度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="122"/>
+        <location filename="../ui/panels/search_panel.cpp" line="150"/>
         <source>Normals:</source>
         <translation>法向数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="123"/>
+        <location filename="../ui/panels/search_panel.cpp" line="151"/>
         <source>Offset step:</source>
         <translation>偏移步长：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="124"/>
+        <location filename="../ui/panels/search_panel.cpp" line="152"/>
         <source>Max. overhang angle α:</source>
         <translation>最大悬垂角 α：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="125"/>
+        <location filename="../ui/panels/search_panel.cpp" line="153"/>
         <source>Min. region height:</source>
         <translation>最小区域高度：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="126"/>
+        <location filename="../ui/panels/search_panel.cpp" line="154"/>
         <source>Min. gain per plane:</source>
         <translation>每个平面的最小增益：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <location filename="../ui/panels/search_panel.cpp" line="159"/>
         <source>Polish the planes:</source>
         <translation>平面精修:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <location filename="../ui/panels/search_panel.cpp" line="126"/>
         <source>also the finalists</source>
         <translation>也打磨候选方案</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="127"/>
+        <location filename="../ui/panels/search_panel.cpp" line="129"/>
         <source>Also polish the search&apos;s best plan for every other number of cuts that may beat its own plan, and keep the least J_G: the plan changes less with the settings</source>
         <translation>也打磨搜索在其他每个切割数下可能胜过其自身方案的最佳方案，并保留 J_G 最小者：方案随设置的变化更小</translation>
     </message>
@@ -4731,212 +4767,220 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>打磨后方案的后续平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <location filename="../ui/panels/search_panel.cpp" line="134"/>
         <source>After polishing, search the plan&apos;s later planes again from each of its polished states and keep a lower plan found there: lower J_G on some models, about twice the time</source>
         <translation>打磨后，从方案的每个打磨状态重新搜索其后续平面，并保留在那里找到的更低方案：某些模型的 J_G 更低，耗时约为两倍</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <location filename="../ui/panels/search_panel.cpp" line="160"/>
         <source>Search again:</source>
         <translation>重新搜索：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="128"/>
+        <location filename="../ui/panels/search_panel.cpp" line="161"/>
         <source>Axes to try:</source>
         <translation>尝试的轴数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="131"/>
+        <location filename="../ui/panels/search_panel.cpp" line="168"/>
         <source>&amp;Run search</source>
         <translation>运行搜索(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="134"/>
+        <location filename="../ui/panels/search_panel.cpp" line="171"/>
         <source>&amp;Cancel</source>
         <translation>取消(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="161"/>
+        <location filename="../ui/panels/search_panel.cpp" line="202"/>
         <source>Progress</source>
         <translation>进度</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="169"/>
+        <location filename="../ui/panels/search_panel.cpp" line="210"/>
         <source>Level:</source>
         <translation>层级：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="170"/>
+        <location filename="../ui/panels/search_panel.cpp" line="211"/>
         <source>Beams alive:</source>
         <translation>存活束：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="171"/>
+        <location filename="../ui/panels/search_panel.cpp" line="212"/>
         <source>Best J_G:</source>
         <translation>最佳 J_G：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="172"/>
+        <location filename="../ui/panels/search_panel.cpp" line="213"/>
         <source>Candidates scored:</source>
         <translation>已评估候选：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="193"/>
+        <location filename="../ui/panels/search_panel.cpp" line="235"/>
         <source>Open a model first.</source>
         <translation>请先打开一个模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="245"/>
+        <location filename="../ui/panels/search_panel.cpp" line="301"/>
         <source>Search for clipping planes that make the model printable with less support</source>
         <translation>搜索能让模型以更少支撑打印的切割平面</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="304"/>
+        <location filename="../ui/panels/search_panel.cpp" line="367"/>
         <source>%1 (polishing)</source>
         <translation>%1(精修中)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="317"/>
+        <location filename="../ui/panels/search_panel.cpp" line="382"/>
         <source>Cancelling: keeping the best plan so far... %1</source>
         <translation>正在取消：保留目前的最佳方案... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="319"/>
+        <location filename="../ui/panels/search_panel.cpp" line="384"/>
         <source>%1 %2 - %3</source>
         <translation>%1 %2 - %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="321"/>
+        <location filename="../ui/panels/search_panel.cpp" line="386"/>
         <source>Level 1 of %1: scoring candidates... %2</source>
         <translation>层级 1 / %1：正在评估候选... %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="322"/>
+        <location filename="../ui/panels/search_panel.cpp" line="387"/>
         <source>Scoring candidates... %1</source>
         <translation>正在评估候选... %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="326"/>
+        <location filename="../ui/panels/search_panel.cpp" line="391"/>
         <source>Polishing the planes: %1 % · best J_G %2 mm² · %3</source>
         <translation>平面精修:%1 % · 最佳 J_G %2 mm² · %3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="331"/>
+        <location filename="../ui/panels/search_panel.cpp" line="396"/>
         <source>Level %1 of %2</source>
         <translation>层级 %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="331"/>
+        <location filename="../ui/panels/search_panel.cpp" line="396"/>
         <source>Level %1</source>
         <translation>层级 %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="332"/>
+        <location filename="../ui/panels/search_panel.cpp" line="397"/>
         <source>Axis %1 of %2, %3</source>
         <translation>第 %1 / %2 个轴，%3</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="333"/>
+        <location filename="../ui/panels/search_panel.cpp" line="400"/>
         <source>%1 · beams alive: %2 · best J_G %3 mm² · %4 candidates · %5</source>
         <translation>%1 · 存活束：%2 · 最佳 J_G %3 mm² · %4 个候选 · %5</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="372"/>
+        <location filename="../ui/panels/search_panel.cpp" line="439"/>
         <source>The search ran on a simplified copy of %1 faces; its planes then cut the full model, and every number shown is the full model&apos;s.</source>
         <translation>搜索在有 %1 个面的简化副本上进行；随后用其平面切割完整模型，显示的所有数值均针对完整模型。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="393"/>
+        <location filename="../ui/panels/search_panel.cpp" line="462"/>
         <source>Stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="277"/>
-        <location filename="../ui/panels/search_panel.cpp" line="306"/>
-        <location filename="../ui/panels/search_panel.cpp" line="351"/>
+        <location filename="../ui/panels/search_panel.cpp" line="340"/>
+        <location filename="../ui/panels/search_panel.cpp" line="369"/>
+        <location filename="../ui/panels/search_panel.cpp" line="418"/>
         <source>%1 mm²</source>
         <translation>%1 mm²</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="302"/>
+        <location filename="../ui/panels/search_panel.cpp" line="365"/>
         <source>%1 (axis %2 of %3)</source>
         <translation>%1（第 %2 / %3 个轴）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="417"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="350"/>
+        <location filename="../ui/panels/search_panel.cpp" line="417"/>
         <source>Done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="356"/>
+        <location filename="../ui/panels/search_panel.cpp" line="423"/>
         <source>Cancelled: showing the best plan found so far.</source>
         <translation>已取消：显示目前找到的最佳方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="360"/>
+        <location filename="../ui/panels/search_panel.cpp" line="427"/>
         <source>Nothing improved: no clipping plane lowers the risky area (J_G stays %1 mm²). Try more normals, a smaller offset step, a larger w or another machine.</source>
         <translation>没有改进：没有切割平面能减少风险面积（J_G 仍为 %1 mm²）。请尝试更多法向、更小的偏移步长、更大的 w 或其他机器。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="365"/>
+        <location filename="../ui/panels/search_panel.cpp" line="432"/>
         <source>Not support-free: %1 mm² still needs support (was %2 mm²), in %n region(s).</source>
         <translation>
             <numerusform>并非无支撑：仍有 %1 mm² 需要支撑（原为 %2 mm²），共 %n 个区域。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/search_panel.cpp" line="369"/>
+        <location filename="../ui/panels/search_panel.cpp" line="436"/>
         <source>Support-free in %n region(s) (J_G was %1 mm²).</source>
         <translation>
             <numerusform>分为 %n 个区域后无需支撑（J_G 原为 %1 mm²）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="385"/>
+        <location filename="../ui/panels/search_panel.cpp" line="454"/>
         <source>Failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location filename="../ui/panels/search_panel.cpp" line="386"/>
+        <location filename="../ui/panels/search_panel.cpp" line="455"/>
         <source>%1
 %2</source>
         <translation>%1
 %2</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="106"/>
         <source> mm²</source>
         <translation> mm²</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="108"/>
         <source>Apart: the risky area one more part must save, for its dowels and handling (the support whose print time equals its dowels&apos;)</source>
         <translation>分开打印：每多一个零件必须节省的风险面积，用于其定位销和操作（打印时间与其定位销相同的支撑）</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="114"/>
         <source> mm² per mm² of cut face</source>
         <translation> mm²/每 mm² 切割面</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="116"/>
         <source>Apart: the risky area one more part must save for every mm² of its cut face, whose two sides are printed solid</source>
         <translation>分开打印：每多一个零件，其切割面每 mm² 必须节省的风险面积（切割面两侧均为实心打印）</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="163"/>
         <source>Price of a part:</source>
         <translation>零件的代价：</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="165"/>
         <source>... and of its cut face:</source>
         <translation>……及其切割面的代价：</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="399"/>
         <source>Apart search (1 of 2), %1</source>
         <translation>分开打印搜索（1 / 2），%1</translation>
     </message>
     <message>
+        <location filename="../ui/panels/search_panel.cpp" line="399"/>
         <source>5-DOF search for the bound (2 of 2), %1</source>
         <translation>用于上界的 5-DOF 搜索（2 / 2），%1</translation>
     </message>
@@ -4944,12 +4988,12 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SliceDialog</name>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="81"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="82"/>
         <source>The firmware turns the platform (axis %1): one program, job.gcode, with every step.</source>
         <translation>由固件转动平台（轴 %1）：一个包含所有步骤的程序 job.gcode。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="84"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="85"/>
         <source>MultiDir turns the platform over Modbus (Hardware dock): one program per step.</source>
         <translation>由 MultiDir 通过 Modbus 转动平台（“硬件”停靠窗口）：每个步骤一个程序。</translation>
     </message>
@@ -4988,117 +5032,116 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>UR5 机器人单元,固定 0.8 mm 挤出机</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="59"/>
         <source>A plan printed apart is sliced part by part on plates: use &apos;multidir apart&apos; (docs/apart.md).</source>
-        <translation>分开打印的方案需逐个零件在打印板上切片:请使用 “multidir apart”(docs/apart.md)。</translation>
+        <translation type="vanished">分开打印的方案需逐个零件在打印板上切片:请使用 “multidir apart”(docs/apart.md)。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="64"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="65"/>
         <source>This printer cannot turn the part: it prints one-step (3-DOF) plans only.</source>
         <translation>此打印机无法转动零件:只能打印单步(3-DOF)方案。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="68"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="69"/>
         <source>This printer turns the platform about one axis: it cannot print a 5-DOF plan. Choose a printer with two firmware axes or a robot arm.</source>
         <translation>此打印机只能绕一个轴转动平台:无法打印 5-DOF 方案。请选择具有两个固件轴的打印机或机械臂。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="86"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="87"/>
         <source>The firmware tilts (axis %1) and rotates (axis %2) the platform: one program, job.gcode, with every step and the turns between them.</source>
         <translation>固件倾斜(轴 %1)并旋转(轴 %2)平台:一个程序 job.gcode,包含所有步骤及其间的转动。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="92"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="93"/>
         <source>An ordinary printer: it cannot turn the part, so it prints one-step plans only.</source>
         <translation>普通打印机：无法转动零件，因此只能打印单步骤方案。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="99"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="100"/>
         <source>Slice the Plan</source>
         <translation>对方案切片</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="114"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="115"/>
         <source>Load a PrusaSlicer .ini...</source>
         <translation>加载 PrusaSlicer .ini...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="124"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="125"/>
         <source>How the firmware turns the platform: Klipper&apos;s MANUAL_STEPPER, or G1 A on Marlin and RepRapFirmware</source>
         <translation>固件转动平台的方式：Klipper 的 MANUAL_STEPPER，或 Marlin 和 RepRapFirmware 的 G1 A</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="129"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="130"/>
         <source>layer_height=0.3 fill_density=10%</source>
         <translation>layer_height=0.3 fill_density=10%</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="130"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="131"/>
         <source>PrusaSlicer settings over the profile&apos;s, KEY=VALUE separated by spaces</source>
         <translation>覆盖打印机配置的 PrusaSlicer 设置，格式为 KEY=VALUE，以空格分隔</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="131"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="132"/>
         <source>Also slice the whole model along up with the slicer&apos;s supports (comparison)</source>
         <translation>同时沿向上方向用切片软件的支撑对整个模型切片（用于比较）</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="135"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="136"/>
         <source>The prusa-slicer program: a name found on PATH, or a full path</source>
         <translation>prusa-slicer 程序：可在 PATH 中找到的名称，或完整路径</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="143"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="144"/>
         <source>Printer:</source>
         <translation>打印机：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="145"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="146"/>
         <source>Dialect:</source>
         <translation>固件方言：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="146"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="147"/>
         <source>Slicer settings:</source>
         <translation>切片设置：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="148"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="149"/>
         <source>Slicer program:</source>
         <translation>切片程序：</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="150"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="151"/>
         <source>Slice</source>
         <translation>切片</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="181"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="182"/>
         <source>Cannot use the printer profile: %1</source>
         <translation>无法使用打印机配置：%1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="186"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="187"/>
         <source>%1: %2</source>
         <translation>%1:%2</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="222"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="223"/>
         <source>Load a PrusaSlicer Printer Profile</source>
         <translation>加载 PrusaSlicer 打印机配置</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="224"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="225"/>
         <source>PrusaSlicer profiles (*.ini);;All files (*)</source>
         <translation>PrusaSlicer 配置 (*.ini);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="239"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="240"/>
         <source>Choose a printer profile.</source>
         <translation>请选择打印机配置。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_dialog.cpp" line="245"/>
+        <location filename="../ui/slicing/slice_dialog.cpp" line="246"/>
         <source>Slicer settings: %1</source>
         <translation>切片设置：%1</translation>
     </message>
@@ -5111,42 +5154,42 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SliceJobRunner</name>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="57"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="52"/>
         <source>Slicing step %1 of %2</source>
         <translation>正在切片步骤 %1 / %2</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="59"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="54"/>
         <source>Slicing the whole model along up with the slicer&apos;s supports, for comparison</source>
         <translation>正在沿向上方向用切片软件的支撑对整个模型切片，用于比较</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="61"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="56"/>
         <source>Stitching the steps into one program</source>
         <translation>正在将各步骤拼接为一个程序</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="65"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="60"/>
         <source>Reading the G-code for the preview</source>
         <translation>正在读取 G 代码以供预览</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="71"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="66"/>
         <source>The slicer &apos;%1&apos; was not found: install PrusaSlicer (scripts/install-deps.sh) or give the slicer program&apos;s full path in the Slice dialog.</source>
         <translation>未找到切片软件“%1”：请安装 PrusaSlicer（scripts/install-deps.sh），或在“对方案切片”对话框中填写切片程序的完整路径。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="75"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="71"/>
         <source>The slicer failed: its command and last output lines are below.</source>
         <translation>切片软件运行失败：其命令和最后几行输出见下方。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="77"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="73"/>
         <source>The part does not fit this printer, so nothing was sliced: by how much, and what would help, is below.</source>
         <translation>零件放不进这台打印机，因此没有切片：超出多少、如何解决见下方。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="80"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="77"/>
         <source>The G-code failed MultiDir&apos;s checks and was not kept: the step, line and reason are below.</source>
         <translation>G 代码未通过 MultiDir 的检查，未予保留：步骤、行号和原因见下方。</translation>
     </message>
@@ -5156,22 +5199,22 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>已有切片作业正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="110"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="142"/>
         <source>Could not create a temporary folder for the G-code: %1</source>
         <translation>无法为 G 代码创建临时文件夹：%1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="151"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="139"/>
         <source>Not enough memory to slice this plan.</source>
         <translation>内存不足，无法对此方案切片。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="170"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="133"/>
         <source>The audit of the G-code failed, so unsupported extrusions are not marked: %1</source>
         <translation>G 代码审核失败，因此未标记无支撑挤出：%1</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/slice_job_runner.cpp" line="154"/>
+        <location filename="../ui/jobs/slice_job_runner.cpp" line="139"/>
         <source>Unexpected error while slicing.</source>
         <translation>切片时发生意外错误。</translation>
     </message>
@@ -5179,79 +5222,79 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::SlicePanel</name>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="43"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="44"/>
         <source>Slice...</source>
         <translation>切片...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="45"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="148"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="46"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="153"/>
         <source>Slice every step of the plan shown, with its supports, into G-code (PrusaSlicer)</source>
         <translation>将当前方案的每个步骤连同其支撑切片为 G 代码（PrusaSlicer）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="46"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="47"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Step</source>
         <translation>步骤</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Print time</source>
         <translation>打印时间</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Filament (m)</source>
         <translation>耗材 (m)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="63"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="64"/>
         <source>Filament (g)</source>
         <translation>耗材 (g)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="79"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="83"/>
         <source>Export G-code...</source>
         <translation>导出 G 代码...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="81"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="85"/>
         <source>Write step-NN.gcode, job.gcode (when the firmware turns the platform) and the print job with its estimates into a folder</source>
         <translation>将 step-NN.gcode、job.gcode（由固件转动平台时）以及带估算值的打印作业写入文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="83"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="87"/>
         <source>Preview G-code</source>
         <translation>预览 G 代码</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="86"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="90"/>
         <source>Show the toolpaths in place of the regions; click again for the plan view</source>
         <translation>显示打印路径而非区域；再次点击返回方案视图</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="89"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="93"/>
         <source>Show the layers printed up to this one (all steps, in printing order)</source>
         <translation>显示截至此层已打印的各层（所有步骤，按打印顺序）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="94"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="98"/>
         <source>The layer&apos;s height: the nozzle&apos;s Z above the platform in its step&apos;s pose</source>
         <translation>该层的高度:在其步骤的姿态下喷嘴高于平台的 Z 值</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="96"/>
-        <location filename="../ui/panels/slice_panel.cpp" line="250"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="100"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="266"/>
         <source>Z %1 mm</source>
         <translation>Z %1 mm</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="97"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="101"/>
         <source>Travel moves</source>
         <translation>空驶移动</translation>
     </message>
@@ -5261,57 +5304,57 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>未落在任何先前打印内容上的挤出（multidir audit 检查 b 的结果）：在 G 代码预览中以品红色绘制</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="213"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="228"/>
         <source>Unsupported extrusion: %1 mm (%2 %) in magenta</source>
         <translation>无支撑挤出：%1 mm（%2 %），以品红色显示</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="111"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="115"/>
         <source>Layers:</source>
         <translation>层：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="116"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="120"/>
         <source>G-code</source>
         <translation>G 代码</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="142"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="147"/>
         <source>Show a plan first: run a search or open a plan.</source>
         <translation>请先显示方案：运行搜索或打开方案。</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="160"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="165"/>
         <source>Starting the slicer...</source>
         <translation>正在启动切片软件...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="183"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="188"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="191"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="196"/>
         <source>%1 (%2)</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
         <source>Total</source>
         <translation>合计</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="193"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
         <source>Total (%1)</source>
         <translation>合计（%1）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="196"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="201"/>
         <source>Fixed direction, slicer supports</source>
         <translation>固定方向，切片软件支撑</translation>
     </message>
     <message>
-        <location filename="../ui/panels/slice_panel.cpp" line="198"/>
+        <location filename="../ui/panels/slice_panel.cpp" line="203"/>
         <source>The whole model printed along up with PrusaSlicer&apos;s own supports: the comparison</source>
         <translation>整个模型沿向上方向打印并使用 PrusaSlicer 自身的支撑：用于比较</translation>
     </message>
@@ -5373,82 +5416,82 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>已有切片作业正在运行。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="146"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="137"/>
         <source>Slicing without supports although the plan leaves risky area: %1</source>
         <translation>方案仍剩余风险面积，但将不带支撑切片：%1</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="147"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="138"/>
         <source>no supports were grown for it.</source>
         <translation>未为其生成支撑。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="152"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="143"/>
         <source>Slicing the plan for %1...</source>
         <translation>正在为 %1 对方案切片...</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="159"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="150"/>
         <source>Cancelling: stopping the slicer...</source>
         <translation>正在取消：正在停止切片软件...</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="174"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="165"/>
         <source>Sliced for %1: %n step(s), %2 of printing.</source>
         <translation>
             <numerusform>已为 %1 完成切片：%n 个步骤，打印用时 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="178"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="169"/>
         <source>Slicing finished.</source>
         <translation>切片完成。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="179"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="170"/>
         <source>Slicing finished; the audit failed.</source>
         <translation>切片完成；审核失败。</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="214"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="205"/>
         <source>Layer %1 of %2: step %3, its layer %4</source>
         <translation>第 %1 / %2 层：步骤 %3 的第 %4 层</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="220"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="211"/>
         <source>There is no G-code to export: slice the plan first.</source>
         <translation>没有可导出的 G 代码：请先对方案切片。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/slicing/slice_session.cpp" line="230"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="221"/>
         <source>G-code exported to %1 (%n file(s)).</source>
         <translation>
             <numerusform>G 代码已导出到 %1（%n 个文件）。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="231"/>
         <source>Export G-code to Folder</source>
         <translation>将 G 代码导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="240"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="231"/>
         <source>-gcode</source>
         <translation>-gcode</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="241"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="232"/>
         <source>G-code folders (*)</source>
         <translation>G 代码文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="247"/>
-        <location filename="../ui/slicing/slice_session.cpp" line="254"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="238"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="245"/>
         <source>Export G-code</source>
         <translation>导出 G 代码</translation>
     </message>
     <message>
-        <location filename="../ui/slicing/slice_session.cpp" line="248"/>
+        <location filename="../ui/slicing/slice_session.cpp" line="239"/>
         <source>%1 holds files that are not a MultiDir job (%2 is one).
 
 Write the job into this folder anyway? Files with the job&apos;s names are replaced; the others stay.</source>
@@ -5460,22 +5503,22 @@ Write the job into this folder anyway? Files with the job&apos;s names are repla
 <context>
     <name>multidir::ui::StudioDocument</name>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="129"/>
+        <location filename="../ui/document/studio_document.cpp" line="143"/>
         <source>This job was sliced from another plan than the one shown: slice the plan shown again.</source>
         <translation>此作业是由另一个方案切片得到的,而非当前所示方案:请重新切片当前方案。</translation>
     </message>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="158"/>
+        <location filename="../ui/document/studio_document.cpp" line="190"/>
         <source>A print run already holds the device session&apos;s job: stop it before starting another.</source>
         <translation>已有打印运行占用设备会话的作业:请先停止它再开始另一个。</translation>
     </message>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="162"/>
+        <location filename="../ui/document/studio_document.cpp" line="194"/>
         <source>There is no plan to run: run a search or open a plan first.</source>
         <translation>没有可运行的方案:请先运行搜索或打开一个方案。</translation>
     </message>
     <message>
-        <location filename="../ui/document/studio_document.cpp" line="157"/>
+        <location filename="../ui/document/studio_document.cpp" line="163"/>
         <source>These parts were made from another plan than the one shown: print the plan shown apart again.</source>
         <translation>这些零件是由另一个方案而非所示方案生成的：请重新分开打印所示方案。</translation>
     </message>
@@ -5586,14 +5629,6 @@ Write the job into this folder anyway? Files with the job&apos;s names are repla
         <location filename="../ui/studio_startup.cpp" line="228"/>
         <source>No model is shown; the screenshot %1 shows the empty window.</source>
         <translation>未显示任何模型；截图 %1 显示的是空窗口。</translation>
-    </message>
-</context>
-<context>
-    <name>ReplacePlanCommand</name>
-    <message>
-        <location filename="../ui/edit/plan_edit_commands.cpp" line="59"/>
-        <source>New search</source>
-        <translation>新搜索</translation>
     </message>
 </context>
 </TS>

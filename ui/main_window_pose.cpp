@@ -1,9 +1,9 @@
 // MainWindow's best pose: the Machine panel's "Best pose" group (PoseSearchBox) run by PoseSearchJob, the
 // preview of a pose in the view and "Use this pose".
 #include <QStatusBar>
-#include <algorithm>
 
 #include "multidir/core/analysis/overhang.h"
+#include "multidir/core/plan/pose_runners_up.h"
 #include "ui/common/error_text.h"
 #include "ui/main_window.h"
 #include "ui/panels/machine_panel.h"
@@ -14,25 +14,6 @@
 #include "ui/viewer/mesh_viewer_widget.h"
 
 namespace multidir::ui {
-namespace {
-
-// The other poses tried, as plan.json lists them: fully searched first, then by J_G (as the CLI writes them).
-std::vector<core::PlanPoseTrial> runnersUpOf(const core::PoseSearchResult& result, int used) {
-  std::vector<core::PlanPoseTrial> others;
-  for (std::size_t i = 0; i < result.trials.size(); ++i) {
-    const core::PoseTrial& t = result.trials[i];
-    if (static_cast<int>(i) == used || t.regions == 0) continue;  // the pose used, and poses never scored
-    others.push_back({t.pose.up, core::poseSourceName(t.pose.source), t.jgAfterMm2, t.regions, t.searched,
-                      t.pose.contactAreaMm2, t.pose.stabilityMarginMm});
-  }
-  std::stable_sort(others.begin(), others.end(), [](const auto& a, const auto& b) {
-    if (a.searched != b.searched) return a.searched;
-    return a.jgAfterMm2 < b.jgAfterMm2;
-  });
-  return others;
-}
-
-}  // namespace
 
 void MainWindow::buildPoseSearch() {
   PoseSearchBox* box = m_machinePanel->poseBox();
@@ -213,7 +194,7 @@ void MainWindow::applyPose(int trial) {
   pose.pose.source = core::poseSourceName(chosen.pose.source);
   pose.pose.contactAreaMm2 = chosen.pose.contactAreaMm2;
   pose.pose.platformUp = run.machine.up.normalized();
-  pose.runnersUp = runnersUpOf(result, trial);
+  pose.runnersUp = core::poseRunnersUp(result, trial);
   // The machine turns with the pose (a 4-DOF axis and forbidden cones stay where they were on the platform).
   m_document->setMachine(core::machineForPose(run.machine, pose.up));
   setUpPose(pose);

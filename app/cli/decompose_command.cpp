@@ -15,6 +15,7 @@
 #include "multidir/core/mesh/mesh_io.h"
 #include "multidir/core/plan/checksum.h"
 #include "multidir/core/plan/plan_file.h"
+#include "multidir/core/plan/pose_runners_up.h"
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/pose_search.h"
 #include "multidir/core/supports/projected_supports.h"
@@ -295,7 +296,7 @@ Settings settingsFrom(const std::vector<std::string>& args, bool& helpOnly) {
   return s;
 }
 
-// The pose as plan.json records it: the chosen one and the others tried, best J_G first.
+// The pose as plan.json records it: the chosen one and the others tried that have a plan, best J_G first.
 core::PlanPose planPoseOf(const core::PoseSearchResult& r) {
   core::PlanPose pose;
   pose.up = r.chosen.up;
@@ -303,16 +304,7 @@ core::PlanPose planPoseOf(const core::PoseSearchResult& r) {
   pose.source = core::poseSourceName(r.chosen.source);
   pose.contactAreaMm2 = r.chosen.contactAreaMm2;
   pose.stabilityMarginMm = r.chosen.stabilityMarginMm;
-  for (std::size_t i = 0; i < r.trials.size(); ++i) {
-    if (static_cast<int>(i) == r.chosenTrial) continue;
-    const core::PoseTrial& t = r.trials[i];
-    pose.runnersUp.push_back({t.pose.up, core::poseSourceName(t.pose.source), t.jgAfterMm2, t.regions, t.searched,
-                              t.pose.contactAreaMm2, t.pose.stabilityMarginMm});
-  }
-  std::stable_sort(pose.runnersUp.begin(), pose.runnersUp.end(), [](const auto& a, const auto& b) {
-    if (a.searched != b.searched) return a.searched;
-    return a.jgAfterMm2 < b.jgAfterMm2;
-  });
+  pose.runnersUp = core::poseRunnersUp(r, r.chosenTrial);
   return pose;
 }
 

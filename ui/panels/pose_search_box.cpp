@@ -180,13 +180,18 @@ void PoseSearchBox::showResult(const core::PoseSearchResult& result, bool cancel
     // A finished plan has at least one region: a trial with none was never scored (the search was cancelled).
     const bool scored = trial.regions > 0;
     m_scored[row] = scored;
-    const QString search = trial.searched ? tr("full search") : scored ? tr("quick plan") : tr("not scored");
+    // A pose ruled out has no plan, only a bound every plan of it is above: its J_G cell says so.
+    const QString search = trial.searched    ? tr("full search")
+                           : scored          ? tr("quick plan")
+                           : trial.ruledOut  ? tr("ruled out")
+                                             : tr("not scored");
+    const QString jg = scored ? area(trial.jgAfterMm2) : trial.ruledOut ? tr("≥ %1").arg(area(trial.unavoidableMm2)) : tr("-");
     const QString cells[ColumnCount] = {sourceText(trial.pose.source),
                                         upText(trial.pose.up),
                                         area(trial.pose.contactAreaMm2),
                                         QLocale().toString(trial.pose.stabilityMarginMm, 'f', 2),
                                         area(trial.pose.riskyAreaMm2),
-                                        scored ? area(trial.jgAfterMm2) : tr("-"),
+                                        jg,
                                         scored ? QString::number(trial.regions) : tr("-"),
                                         search};
     for (int column = 0; column < ColumnCount; ++column) {
@@ -198,6 +203,10 @@ void PoseSearchBox::showResult(const core::PoseSearchResult& result, bool cancel
         font.setBold(true);
         item->setFont(font);
       }
+      if (trial.ruledOut && (column == JgColumn || column == SearchColumn))
+        item->setToolTip(tr("Not searched: at least %1 mm² of this pose's overhang cannot be saved by any direction "
+                            "the machine prints along, more than the J_G of the given up's plan, so it could not "
+                            "win").arg(area(trial.unavoidableMm2)));
       m_table->setItem(row, column, item);
     }
     rowNames << (row == m_chosen ? tr("chosen") : QString::number(row + 1));

@@ -242,7 +242,6 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
                 " mm outside it; it was tried as given (it holds only by its first layer and supports), every other "
                 "pose tried stands";
   }
-  const bool givenStands = !standing.empty() && standing.front().source == PoseSource::Given;
   const std::vector<PoseCandidate>& candidates = standing;
   const int count = static_cast<int>(candidates.size());
   const int threads = detail::resolveThreadCount(options.threads);
@@ -276,12 +275,13 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
       setups[i] = detail::proxySearchSetup(model, *proxyOf(i), machineForPose(machine, candidates[i].up), single);
 
   std::vector<PoseTrial> trials(count);
+  for (int i = 0; i < count; ++i) trials[i].pose = candidates[i];
   std::vector<std::optional<Decomposition>> cheapPlans(count);  // of the mesh searched: the model or its proxy
   std::vector<std::vector<Decomposition>> polishStarts(count);   // the cheap searches' finalists, when kept
   std::vector<std::optional<Decomposition>> plans(count);       // of the model, searched in full
   const int searches = std::min(poseOptions.fullSearches, count);
   std::atomic<int> finished{0};
-  const double steps = count + 4.0 * searches;  // a full search costs a few cheap ones
+  const double steps = count - 1 + 4.0 * searches;  // a full search costs a few cheap ones
   // The plan of pose i on the model: a proxy's plan cut on the full mesh, else the plan itself.
   auto onModel = [&](int i, Decomposition plan) {
     if (!setups[i]) return plan;
@@ -290,12 +290,10 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     plan.statistics.proxyFaces = static_cast<int>(proxyOf(i)->faceCount());
     return plan;
   };
-  // 1. Cheap score per pose (on a proxy: the proxy's J_G, which only ranks the poses).
-  detail::parallelFor(count, threads, [&](int i) {
-    if (job.isCancelled()) return;
+  // The cheap score of pose i (on a proxy: the proxy's J_G, which only ranks the poses).
+  const auto scoreCheaply = [&](int i) {
     const auto t0 = std::chrono::steady_clock::now();
     PoseTrial& trial = trials[i];
-    trial.pose = candidates[i];
     const MachineSpec posed = machineForPose(machine, candidates[i].up);
     std::vector<Decomposition>* starts = keepStarts ? &polishStarts[i] : nullptr;
     Decomposition plan;
@@ -308,38 +306,13 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     }
     trial.cheapJgMm2 = trial.jgAfterMm2 = plan.jgAfterMm2;
     trial.regions = static_cast<int>(plan.regions.size());
-    trial.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    trial.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     cheapPlans[i] = std::move(plan);
-    job.setProgress(++finished / steps, "pose scores");
-  });
-  for (int i = 0; i < count; ++i) trials[i].pose = candidates[i];
-
-  // 2. The full search on the given up and the best-scored others: each the plain search at its up
-  // (searchedAndPolished), on the proxy it would use.
-  std::vector<int> order;
-  for (int i = givenStands ? 1 : 0; i < count; ++i)
-    if (cheapPlans[i]) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return trials[a].cheapJgMm2 < trials[b].cheapJgMm2; });
-  std::vector<int> chosen;
-  if (givenStands) chosen.push_back(0);
-  for (int i : order)
-    if (static_cast<int>(chosen.size()) < searches) chosen.push_back(i);
-  // No plan of a pose has a J_G below that pose's unavoidable risky area (search/unavoidable_risky_area.h: the
-  // faces no direction the machine prints along can save, with every plane clear of the platform region;
-  // measured on the full mesh): a pose whose bound is above the first searched pose's J_G is not searched, which
-  // cannot change the choice (it could not win). The first pose is always searched: its bound is not needed.
-  std::vector<double> bounds(count, 0.0);
-  detail::parallelFor(std::max(0, static_cast<int>(chosen.size()) - 1), threads, [&](int k) {
-    const MachineSpec posed = machineForPose(machine, candidates[chosen[k + 1]].up);
-    bounds[chosen[k + 1]] =
-        detail::unavoidableRiskyAreaMm2(model, posed, platformRegionFor(model, posed, options.platformToleranceMm),
-                                        options.alphaMaxDegrees, options.supportedBandMm);
-  });
+  };
   // Pose i's plan as the plain search delivers it, polished on `mesh` (the model, or its proxy with the full
-  // model's platform region); from the cheap plan when that is the search asked for (its cheap plan kept for a
-  // cancel).
-  // `mustBeat`: the first searched pose's J_G, for the others (none for the first): a polish that falls too
-  // slowly to get below it is given up part-way (PolishRace), since that pose could not win.
+  // model's platform region); from the cheap plan when that is the search asked for.
+  // `mustBeat`: the first pose's J_G, for the others (none for the first): a polish that falls too slowly to get
+  // below it is given up part-way (PolishRace), since that pose could not win.
   auto polishedOn = [&](int i, const TriangleMesh& mesh, const SearchOptions& o,
                         const std::optional<PlatformRegion>& platform, double mustBeat) {
     const MachineSpec posed = machineForPose(machine, candidates[i].up);
@@ -364,39 +337,67 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
                                    });
   };
   std::mutex resultsMutex;
-  int skipped = 0;
   const auto searchPose = [&](int i, const SearchOptions& o) {
-    if (bounds[i] > firstSearchedJg + kTieMm2) {
-      std::lock_guard<std::mutex> lock(resultsMutex);
-      ++skipped;
-      job.setProgress((finished += 4) / steps, "pose searches");
-      return;
-    }
     const auto t0 = std::chrono::steady_clock::now();
     Result<Decomposition> plan = fullSearch(i, o);
-    if (!plan.ok() || plan->cancelled) return;  // keep the finished cheap plan
+    if (!plan.ok()) return;
     std::lock_guard<std::mutex> lock(resultsMutex);
-    trials[i].searched = true;
+    // A search cancelled part-way still returns its best plan so far: kept, but not as a finished search.
+    trials[i].searched = !plan->cancelled;
     trials[i].jgAfterMm2 = plan->jgAfterMm2;
     trials[i].regions = static_cast<int>(plan->regions.size());
     trials[i].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     plans[i] = std::move(*plan);
     job.setProgress((finished += 4) / steps, "pose searches");
   };
-  // The first pose (the given up when it stands) is searched first, on every thread (its plan does not depend
-  // on them), so that its J_G is known when the others start: a pose whose bound is above it is not searched
-  // (the kitten's other two: bounds of 731 and 1,113 mm^2 against its given up's 11.71). The others then side
-  // by side, one thread each, each compared with the first pose only, so which poses are searched does not
-  // depend on the order the others finish in.
-  if (!chosen.empty() && !job.isCancelled()) {
+
+  // 1. The first pose, the given up, is searched in full first, on every thread (its plan does not depend on
+  // them), so that its J_G is known before any other pose is looked at.
+  if (job.isCancelled())
+    return Error{ErrorCode::Cancelled, "the pose search was cancelled before any pose finished", "pose search"};
+  {
     SearchOptions first = single;
     first.threads = threads;
-    searchPose(chosen.front(), first);
-    if (plans[chosen.front()]) firstSearchedJg = plans[chosen.front()]->jgAfterMm2;
+    if (reuseCheap) scoreCheaply(0);
+    searchPose(0, first);
+    if (trials[0].searched) firstSearchedJg = plans[0]->jgAfterMm2;
   }
-  detail::parallelFor(std::max(0, static_cast<int>(chosen.size()) - 1), threads, [&](int k) {
-    if (!job.isCancelled()) searchPose(chosen[k + 1], single);
+
+  // 2. Which other poses could win, and their cheap scores. No plan of a pose has a J_G below that pose's
+  // unavoidable risky area (search/unavoidable_risky_area.h: the faces no direction the machine prints along can
+  // save, with every plane clear of the platform region; measured on the full mesh): a pose whose bound is above
+  // the first pose's J_G could not win, so it is neither scored nor searched (the kitten's other four: bounds of
+  // 731 mm^2 and more against its given up's 11.71). Asking only whether the bound is above that J_G stops its sum
+  // there. One thread per pose; each pose is compared with the first only, so which poses are scored does not
+  // depend on the thread count or the order they finish in.
+  detail::parallelFor(count - 1, threads, [&](int k) {
+    const int i = k + 1;
+    if (job.isCancelled()) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (std::isfinite(firstSearchedJg)) {
+      const MachineSpec posed = machineForPose(machine, candidates[i].up);
+      const double bound = detail::unavoidableRiskyAreaMm2(
+          model, posed, platformRegionFor(model, posed, options.platformToleranceMm), options.alphaMaxDegrees,
+          options.supportedBandMm, firstSearchedJg + kTieMm2);
+      trials[i].ruledOut = bound > firstSearchedJg + kTieMm2;
+      if (trials[i].ruledOut) trials[i].unavoidableMm2 = bound;
+    }
+    trials[i].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!trials[i].ruledOut) scoreCheaply(i);
+    job.setProgress(++finished / steps, "pose scores");
   });
+
+  // 3. The full search on the best-scored of the poses that could win, side by side, one thread each: each the
+  // plain search at its up, on the proxy it would use, racing the first pose's plan.
+  std::vector<int> order;
+  for (int i = 1; i < count; ++i)
+    if (cheapPlans[i]) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return trials[a].cheapJgMm2 < trials[b].cheapJgMm2; });
+  if (static_cast<int>(order.size()) > searches - 1) order.resize(std::max(0, searches - 1));
+  detail::parallelFor(static_cast<int>(order.size()), threads, [&](int k) {
+    if (!job.isCancelled()) searchPose(order[k], single);
+  });
+  const int ruledOut = static_cast<int>(std::count_if(trials.begin(), trials.end(), [](const PoseTrial& t) { return t.ruledOut; }));
   // Cancelled before any pose was searched in full: the best cheap plan, on the model.
   if (std::none_of(plans.begin(), plans.end(), [](const auto& p) { return p.has_value(); })) {
     int cheapest = -1;
@@ -410,13 +411,12 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   }
   std::vector<std::string> notes;
   if (onProxies) notes.push_back(proxySummary(model, candidates, proxies));
-  if (skipped > 0)
-    notes.push_back(std::to_string(skipped) + (skipped == 1 ? " pose" : " poses") +
-                    " not searched in full: the risky area no plan of " + (skipped == 1 ? "it" : "theirs") +
-                    " can avoid is above the J_G of the first pose searched (" + formatFixed(firstSearchedJg) +
-                    " mm^2)");
+  if (ruledOut > 0)
+    notes.push_back(std::to_string(ruledOut) + (ruledOut == 1 ? " pose" : " poses") +
+                    " neither scored nor searched: the risky area no plan of " + (ruledOut == 1 ? "it" : "theirs") +
+                    " can avoid is above the J_G of the given up's plan (" + formatFixed(firstSearchedJg) + " mm^2)");
 
-  // 3. The best fully searched plan; when cancelled, the best plan that finished.
+  // 4. The best fully searched plan; when cancelled, the best plan that finished.
   int best = -1;
   for (int i = 0; i < count; ++i)
     if (plans[i] && (best < 0 || better(trials[i], trials[best]))) best = i;

@@ -69,8 +69,19 @@ bool savesAlong(const BoundFace& face, const Vec3& d, double top, double sinAlph
   return std::max({d.dot(face.corners[0]), d.dot(face.corners[1]), d.dot(face.corners[2])}) > top - heightMarginMm;
 }
 
+// The faces in the order the bound visits them: as the mesh lists them for the whole sum (so that it is the same
+// sum, bit for bit, whoever asks); largest first when the sum may stop above `stopAboveMm2`, so that it gets
+// there after as few of the costly faces no direction saves as it can.
+std::vector<BoundFace> facesToVisit(const TriangleMesh& model, const Vec3& up, double sinAlpha, double supportedBandMm,
+                                    double stopAboveMm2) {
+  std::vector<BoundFace> faces = facesRiskyAlongUp(model, up, sinAlpha, supportedBandMm);
+  if (std::isfinite(stopAboveMm2))
+    std::stable_sort(faces.begin(), faces.end(), [](const BoundFace& a, const BoundFace& b) { return a.area > b.area; });
+  return faces;
+}
+
 double rotaryBound(const TriangleMesh& model, const MachineSpec& machine, const PlatformRegion& platform,
-                   double sinAlpha, double supportedBandMm) {
+                   double sinAlpha, double supportedBandMm, double stopAboveMm2) {
   const Vec3 up = machine.up.normalized();
   std::vector<Vec3> directions = realizableDirections(machine);
   directions.erase(directions.begin());  // up: facesRiskyAlongUp left out what it saves
@@ -78,11 +89,12 @@ double rotaryBound(const TriangleMesh& model, const MachineSpec& machine, const 
   for (std::size_t k = 0; k < directions.size(); ++k) tops[k] = platformTopAlong(directions[k], platform, up);
   const double heightMarginMm = clipMarginMm(model);
   double area = 0.0;
-  for (const BoundFace& face : facesRiskyAlongUp(model, up, sinAlpha, supportedBandMm)) {
+  for (const BoundFace& face : facesToVisit(model, up, sinAlpha, supportedBandMm, stopAboveMm2)) {
     bool saved = false;
     for (std::size_t k = 0; k < directions.size() && !saved; ++k)
       saved = savesAlong(face, directions[k], tops[k], sinAlpha, heightMarginMm);
     if (!saved) area += face.area;
+    if (area > stopAboveMm2) break;
   }
   return area;
 }
@@ -187,24 +199,26 @@ class TiltBound {
 };
 
 double tiltBound(const TriangleMesh& model, const MachineSpec& machine, const PlatformRegion& platform,
-                 double sinAlpha, double supportedBandMm) {
+                 double sinAlpha, double supportedBandMm, double stopAboveMm2) {
   const TiltBound bound(machine, platform, sinAlpha, clipMarginMm(model));
   double area = 0.0;
-  for (const BoundFace& face : facesRiskyAlongUp(model, machine.up.normalized(), sinAlpha, supportedBandMm))
+  for (const BoundFace& face : facesToVisit(model, machine.up.normalized(), sinAlpha, supportedBandMm, stopAboveMm2)) {
     if (!bound.maySave(face)) area += face.area;
+    if (area > stopAboveMm2) break;
+  }
   return area;
 }
 
 }  // namespace
 
 double unavoidableRiskyAreaMm2(const TriangleMesh& model, const MachineSpec& machine, const PlatformRegion& platform,
-                               double alphaMaxDegrees, double supportedBandMm) {
+                               double alphaMaxDegrees, double supportedBandMm, double stopAboveMm2) {
   const double sinAlpha = std::sin(degToRad(alphaMaxDegrees));
   switch (machine.kind) {
     case MachineKind::RotaryPlatform:
-      return rotaryBound(model, machine, platform, sinAlpha, supportedBandMm);
+      return rotaryBound(model, machine, platform, sinAlpha, supportedBandMm, stopAboveMm2);
     case MachineKind::TiltRotate:
-      return tiltBound(model, machine, platform, sinAlpha, supportedBandMm);
+      return tiltBound(model, machine, platform, sinAlpha, supportedBandMm, stopAboveMm2);
     case MachineKind::ThreeAxis:
     case MachineKind::Apart:
       return 0.0;

@@ -26,6 +26,8 @@
 // in four, down to a cell of about 0.01 degree, and a cell still undecided there counts as saving the face. So
 // a face is counted only when every direction is proven not to save it: the bound stays a bound, only less
 // tight than the exact one.
+#include <cmath>
+
 #include "multidir/core/mesh/triangle_mesh.h"
 #include "multidir/core/search/machine.h"
 
@@ -34,7 +36,10 @@ namespace multidir::core::detail {
 // The bound for `machine` (mm^2): 4-DOF its rotation axis, angle range and stepper angle; 5-DOF its tilt limit
 // and forbidden cones; 0 for the other machines (3-axis, apart: no claim). `platform` is the platform region
 // the search keeps every plane above. `alphaMaxDegrees` and `supportedBandMm` as in SearchOptions.
+// `stopAboveMm2`: when the only question is whether the bound is above it (the pose search: could this pose
+// beat a plan already found?), the faces are visited largest first and the sum stops as soon as it is above it;
+// the value returned is then above it and at most the whole bound. Below it, the whole bound.
 double unavoidableRiskyAreaMm2(const TriangleMesh& model, const MachineSpec& machine, const PlatformRegion& platform,
-                               double alphaMaxDegrees, double supportedBandMm);
+                               double alphaMaxDegrees, double supportedBandMm, double stopAboveMm2 = INFINITY);
 
 }  // namespace multidir::core::detail

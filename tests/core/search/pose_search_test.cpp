@@ -197,6 +197,7 @@ TEST(PoseSearch, GivesTheSameResultForOneAndTwoThreads) {
     EXPECT_EQ(one->trials[i].cheapJgMm2, two->trials[i].cheapJgMm2);
     EXPECT_EQ(one->trials[i].jgAfterMm2, two->trials[i].jgAfterMm2);
     EXPECT_EQ(one->trials[i].searched, two->trials[i].searched);
+    EXPECT_EQ(one->trials[i].ruledOut, two->trials[i].ruledOut);
   }
 }
 
@@ -209,10 +210,10 @@ TEST(PoseSearch, CancelledBeforeStartingSaysSo) {
   EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
 }
 
-TEST(PoseSearch, OnARotaryPlatformAPoseWhoseBoundIsAboveTheBestSearchedPlanIsNotSearched) {
+TEST(PoseSearch, OnARotaryPlatformAPoseWhoseBoundIsAboveTheGivenUpsPlanIsRuledOut) {
   // Lying on its side (the given up, +y) the T has no overhang. Standing on its stem, the bar's underside faces
   // straight down, risky for every direction a platform turning by at most 5 degrees prints along: that pose's
-  // bound is above the given up's J_G of 0, so it is not searched in full.
+  // bound is above the given up's J_G of 0, so it is neither scored nor searched.
   const TriangleMesh tbar = multidir::test::makeTBar(4, 20, 30, 4, 10);
   MachineSpec machine;
   machine.kind = MachineKind::RotaryPlatform;
@@ -229,15 +230,17 @@ TEST(PoseSearch, OnARotaryPlatformAPoseWhoseBoundIsAboveTheBestSearchedPlanIsNot
     if (parallel(trial.pose.up, Vec3::UnitZ())) {
       stemPoseTried = true;
       EXPECT_FALSE(trial.searched);
+      EXPECT_TRUE(trial.ruledOut);
     }
   EXPECT_TRUE(stemPoseTried);
-  EXPECT_TRUE(hasNote(best->plan, "not searched in full"));
+  EXPECT_TRUE(hasNote(best->plan, "neither scored nor searched"));
 }
 
-TEST(PoseSearch, OnATiltingPlatformAPoseWhoseBoundIsAboveTheGivenUpsPlanIsNotSearched) {
+TEST(PoseSearch, OnATiltingPlatformAPoseWhoseBoundIsAboveTheGivenUpsPlanIsRuledOutUnscored) {
   // Standing on its base (+y) the kitten's plan keeps 11.71 mm^2 of risky area. On each of its other patches
   // so much of its overhang lies against the platform region that no tilt saves it (731 mm^2 or more): those
-  // poses could not win and are not searched in full; the result is the given up's plan, as decompose gives it.
+  // poses could not win and are neither scored nor searched; the result is the given up's plan, as decompose
+  // gives it.
   const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
   MachineSpec machine;
   machine.up = Vec3::UnitY();
@@ -249,6 +252,53 @@ TEST(PoseSearch, OnATiltingPlatformAPoseWhoseBoundIsAboveTheGivenUpsPlanIsNotSea
   ASSERT_TRUE(best.ok()) << best.error().describe();
   EXPECT_EQ(best->chosenTrial, 0);
   EXPECT_EQ(best->plan.jgAfterMm2, given->jgAfterMm2);
-  for (std::size_t i = 1; i < best->trials.size(); ++i) EXPECT_FALSE(best->trials[i].searched) << "trial " << i;
-  EXPECT_TRUE(hasNote(best->plan, "2 poses not searched in full"));
+  ASSERT_EQ(best->trials.size(), 5u);
+  for (std::size_t i = 1; i < best->trials.size(); ++i) {
+    const PoseTrial& trial = best->trials[i];
+    EXPECT_TRUE(trial.ruledOut) << "trial " << i;
+    EXPECT_GT(trial.unavoidableMm2, given->jgAfterMm2) << "trial " << i;
+    EXPECT_FALSE(trial.searched) << "trial " << i;
+    EXPECT_EQ(trial.regions, 0) << "trial " << i << ": no plan, not even a cheap one";
+  }
+  EXPECT_TRUE(hasNote(best->plan, "4 poses neither scored nor searched"));
+}
+
+TEST(PoseSearch, GivesItsFullSearchesToTheBestScoredOfThePosesThatCouldWin) {
+  // Along +y the screwdriver's plan keeps 8.88 mm^2; most of its resting poses keep far more than that against
+  // the platform region whatever the tilt. A pose ruled out so takes no full search from one that could win:
+  // the full searches go to the given up and the best cheap scores among the poses not ruled out.
+  const TriangleMesh screwdriver = multidir::test::loadSharedModel("screwdriver.off");
+  MachineSpec machine;
+  machine.up = Vec3::UnitY();
+  PoseOptions poseOptions;
+  poseOptions.fullSearches = 3;
+  JobContext job;
+  const auto best = decomposeWithPoseSearch(screwdriver, machine, SearchOptions{}, poseOptions, job);
+  ASSERT_TRUE(best.ok()) << best.error().describe();
+  const std::vector<PoseTrial>& trials = best->trials;
+  EXPECT_TRUE(trials.front().searched);
+  std::vector<const PoseTrial*> couldWin;
+  int ruledOut = 0;
+  for (std::size_t i = 1; i < trials.size(); ++i) {
+    if (trials[i].ruledOut) {
+      ++ruledOut;
+      EXPECT_GT(trials[i].unavoidableMm2, trials.front().jgAfterMm2) << "trial " << i;
+    } else {
+      EXPECT_GT(trials[i].regions, 0) << "trial " << i << " could win and was scored";
+      couldWin.push_back(&trials[i]);
+    }
+  }
+  ASSERT_GT(ruledOut, 0);
+  ASSERT_GE(couldWin.size(), 3u) << "more poses could win than there are full searches left for them";
+  int searched = 0;
+  double worstSearchedScore = 0.0, bestUnsearchedScore = INFINITY;
+  for (const PoseTrial* trial : couldWin) {
+    if (trial->searched)
+      ++searched, worstSearchedScore = std::max(worstSearchedScore, trial->cheapJgMm2);
+    else
+      bestUnsearchedScore = std::min(bestUnsearchedScore, trial->cheapJgMm2);
+  }
+  EXPECT_EQ(searched, poseOptions.fullSearches - 1);
+  EXPECT_LE(worstSearchedScore, bestUnsearchedScore);
+  EXPECT_TRUE(hasNote(best->plan, std::to_string(ruledOut) + " poses neither scored nor searched"));
 }

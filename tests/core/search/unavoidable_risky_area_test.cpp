@@ -3,6 +3,8 @@
 // pose searches would skip a winner), and it must see what it claims to.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "multidir/core/search/decompose.h"
 #include "multidir/core/search/pose_search.h"
 #include "search/unavoidable_risky_area.h"
@@ -162,4 +164,30 @@ TEST(UnavoidableRiskyArea, OnATiltingPlatformNeverExceedsTheJgOfTheKittensPlansI
     EXPECT_LE(bound, plan->jgAfterMm2) << "up " << pose.up.transpose();
   }
   EXPECT_EQ(resting, 4);
+}
+
+TEST(UnavoidableRiskyArea, AskedWhetherItIsAboveAnAreaStopsOnceItIsAndIsWholeBelowIt) {
+  // The pose search asks only whether a pose's bound is above the given up's J_G: the sum stops there (largest
+  // faces first), above the area asked about and within the whole bound; asked about more than the whole, it is
+  // the whole (summed in another order, so to rounding).
+  const TriangleMesh kitten = multidir::test::loadSharedModel("kitten.off");
+  MachineSpec base;
+  base.kind = MachineKind::TiltRotate;
+  base.up = Vec3::UnitY();
+  const SearchOptions options;
+  const auto poses = candidatePoses(kitten, base.up, PoseOptions{}, options);
+  ASSERT_TRUE(poses.ok()) << poses.error().describe();
+  ASSERT_GE(poses->size(), 2u);
+  const MachineSpec machine = machineForPose(base, (*poses)[1].up);
+  const PlatformRegion platform = platformRegionFor(kitten, machine);
+  const auto bound = [&](double stopAbove) {
+    return detail::unavoidableRiskyAreaMm2(kitten, machine, platform, options.alphaMaxDegrees,
+                                           options.supportedBandMm, stopAbove);
+  };
+  const double whole = bound(INFINITY);
+  ASSERT_GT(whole, 100.0);
+  const double partial = bound(11.71);
+  EXPECT_GT(partial, 11.71);
+  EXPECT_LT(partial, 0.5 * whole) << "it went on summing past the area asked about";
+  EXPECT_NEAR(bound(whole + 1.0), whole, 1e-9 * whole);
 }

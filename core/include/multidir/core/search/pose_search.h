@@ -4,10 +4,10 @@
 // A pose is an up direction of the model (MachineSpec::up); plans stay in the model's coordinates. The model
 // stands on a patch of its convex hull (contact_patch.h): a pose is tried only when that patch has an area and
 // holds the centre of mass (no pose balances on a point or an edge, or tips over). Candidates are the user's
-// up (tried only if it stands) and the model's standing poses: the largest contacts, then the ones farthest
-// from those taken, so the directions are covered. Each gets a cheap score (the J_G of a greedy plan); the
-// best few, always with the user's up, get the full search (unless they could not win: their unavoidable risky
-// area is above the first searched pose's J_G), each the plain search (decompose) at that pose:
+// up (always tried: where the model would not stand in it, the plan says so) and the model's standing poses: the largest contacts, then the ones farthest
+// from those taken, so the directions are covered. The user's up gets the full search first; every other pose
+// that could beat its plan (its unavoidable risky area is below that plan's J_G) gets a cheap score (the J_G of a
+// greedy plan), and the best few of those the full search, each the plain search (decompose) at that pose:
 // polished, and on a huge model on the proxy decompose at that up uses; the plan with the least J_G wins (ties:
 // fewer regions, then the larger contact area), so the result is never worse than decompose at a given up the
 // model stands in.
@@ -59,11 +59,16 @@ MachineSpec machineForPose(const MachineSpec& machine, const Vec3& up);
 
 struct PoseTrial {
   PoseCandidate pose;
-  double cheapJgMm2 = 0.0;  // J_G of the cheap (greedy) plan
+  double cheapJgMm2 = 0.0;  // J_G of the cheap (greedy) plan; 0 when not scored
   bool searched = false;    // given the full search
-  double jgAfterMm2 = 0.0;  // full search (else the cheap plan's)
-  int regions = 0;
+  double jgAfterMm2 = 0.0;  // full search (else the cheap plan's); 0 with no plan (regions 0)
+  int regions = 0;          // of its plan; 0: it has none (ruled out, or cancelled before it was scored)
   double seconds = 0.0;
+  // Ruled out: the risky area no plan of this pose can avoid is above the given up's plan's J_G, so it could not
+  // win and was neither scored nor searched. `unavoidableMm2` is that area as far as it was summed: above the
+  // given up's J_G, at most the whole of it; a lower bound on the J_G of every plan of this pose.
+  bool ruledOut = false;
+  double unavoidableMm2 = 0.0;
 };
 
 struct PoseSearchResult {
@@ -75,11 +80,13 @@ struct PoseSearchResult {
   double seconds = 0.0;
 };
 
-// Pose search over the candidates that stand (a given up that does not is named in plan.statistics.notes);
-// cheap scores threaded across poses; the first full search (the given up's when it stands) on every thread,
-// then the others across poses, each single-threaded and skipped when the pose's unavoidable risky area is above
-// the first's J_G (it could not win); results, and which poses were searched, do not depend on the thread count. Progress: the cheap scores, then the full searches. A cancelled search returns the best finished
-// plan (at least the given up's cheap plan) with plan.cancelled set.
+// Pose search over the given up and the candidates that stand (a given up that does not is named in
+// plan.statistics.notes): the given up's full search first, on every thread; then, threaded across poses, each
+// other pose is ruled out when its unavoidable risky area is above the given up's J_G (it could not win), else
+// given its cheap score; then the best-scored poses not ruled out get the full search, one thread each. Results,
+// and which poses were scored and searched, do not depend on the thread count. Progress: the given up's search,
+// the scores, then the other full searches. A cancelled search returns the best plan it has (the given up's best
+// so far at least) with plan.cancelled set.
 Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, const MachineSpec& machine,
                                                  const SearchOptions& options, const PoseOptions& poseOptions,
                                                  JobContext& job);
