@@ -36,14 +36,18 @@ std::vector<Plane> planesOf(const NodePtr& node) {
   return planes;
 }
 
+// The same planes, bit for bit, in the same order.
+bool samePlanes(const std::vector<Plane>& a, const std::vector<Plane>& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const Plane& p, const Plane& q) {
+           return p.normal == q.normal && p.offset == q.offset;
+         });
+}
+
 }  // namespace
 
 bool detail::takeIfNew(std::vector<std::vector<Plane>>& taken, std::vector<Plane> planes) {
-  const bool seen = std::any_of(taken.begin(), taken.end(), [&](const std::vector<Plane>& other) {
-    return other.size() == planes.size() &&
-           std::equal(other.begin(), other.end(), planes.begin(),
-                      [](const Plane& a, const Plane& b) { return a.normal == b.normal && a.offset == b.offset; });
-  });
+  const bool seen = std::any_of(taken.begin(), taken.end(),
+                                [&](const std::vector<Plane>& other) { return samePlanes(other, planes); });
   if (!seen) taken.push_back(std::move(planes));
   return !seen;
 }
@@ -85,13 +89,18 @@ NodePtr detail::withoutUnpaidPlanes(SearchEngine& engine, NodePtr node, const Se
 // plan pays with 223.46 mm^2, the overall best as found with 233.39 mm^2. A plan whose J_G as found is already
 // above the choice's cannot win (removing planes never lowers J_G) and is not cut again.
 NodePtr detail::paidChoice(SearchEngine& engine, const NodePtr& best, const std::vector<NodePtr>& searchBests,
-                           const SearchOptions& o, bool compareSearches) {
-  NodePtr chosen = withoutUnpaidPlanes(engine, best, o);
+                           const SearchOptions& o, bool compareSearches, std::vector<PaidPlan>* paidPlans) {
+  const auto paidOf = [&](const NodePtr& found) {
+    NodePtr paid = withoutUnpaidPlanes(engine, found, o);
+    if (paidPlans) paidPlans->push_back({found, paid});
+    return paid;
+  };
+  NodePtr chosen = paidOf(best);
   if (!compareSearches) return chosen;
   const double tie = 1e-9 * std::max(1.0, engine.root()->riskyUpAreaMm2);
   for (const NodePtr& other : searchBests) {
     if (!other || other == best || !(other->jg() < chosen->jg() - tie)) continue;
-    const NodePtr paid = withoutUnpaidPlanes(engine, other, o);
+    const NodePtr paid = paidOf(other);
     const bool tied = std::abs(paid->jg() - chosen->jg()) <= tie;
     if (paid->jg() < chosen->jg() - tie || (tied && paid->level < chosen->level)) chosen = paid;
   }
@@ -133,8 +142,15 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
   // that ran to its end (docs/search.md, "Progress and Cancel"). The apart machine's own search (`finalists`)
   // keeps its best as found: its priced choice among the finalists follows (docs/apart.md).
   const bool compareSearches = finalists == nullptr;
-  const NodePtr chosen =
-      cancelled ? best.node() : paidChoice(engine, best.node(), scaleWork.searchBests, options, compareSearches);
+  std::vector<PaidPlan> paidPlans;  // the plans paidChoice removed unpaid planes from: not done again below
+  const NodePtr chosen = cancelled ? best.node()
+                                   : paidChoice(engine, best.node(), scaleWork.searchBests, options, compareSearches,
+                                                &paidPlans);
+  const auto knownPaid = [&](const NodePtr& found) -> NodePtr {
+    for (const PaidPlan& p : paidPlans)
+      if (p.found == found) return p.paid;
+    return nullptr;
+  };
   Decomposition plan = engine.planOf(*chosen);
   if (finalists && !cancelled) {
     std::vector<std::vector<Plane>> taken{planesOf(chosen)};
@@ -142,16 +158,23 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
     // above the bound the choice keeps.
     for (const NodePtr& finalist : best.finalists()) {
       if (!finalist || job.isCancelled()) continue;
-      for (const NodePtr& node : {finalist, withoutUnpaidPlanes(engine, finalist, options)})
+      const NodePtr known = knownPaid(finalist);
+      for (const NodePtr& node : {finalist, known ? known : withoutUnpaidPlanes(engine, finalist, options)})
         if (takeIfNew(taken, planesOf(node))) finalists->push_back(engine.planOf(*node));
     }
   }
   if (polishStarts && !cancelled) {
     // As found: polishedChoice removes their unpaid planes only from those it may polish (most it screens
-    // out, and the removal re-cuts a plan's later planes once per plane tried).
+    // out, and the removal re-cuts a plan's later planes once per plane tried). A finalist that pays with the
+    // plan returned (the best as found is one: paidChoice made the plan from it) would only be found to be it
+    // again there, after that removal: it is left out.
     std::vector<std::vector<Plane>> taken{planesOf(chosen)};
-    for (const NodePtr& finalist : best.finalists())
-      if (finalist && takeIfNew(taken, planesOf(finalist))) polishStarts->push_back(engine.planOf(*finalist));
+    for (const NodePtr& finalist : best.finalists()) {
+      if (!finalist) continue;
+      const NodePtr known = knownPaid(finalist);
+      if (known && samePlanes(planesOf(known), planesOf(chosen))) continue;
+      if (takeIfNew(taken, planesOf(finalist))) polishStarts->push_back(engine.planOf(*finalist));
+    }
   }
   plan.cancelled = cancelled;
   plan.rotationAxis = machine.rotationAxis;

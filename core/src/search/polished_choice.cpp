@@ -12,6 +12,7 @@
 // plan has lost to polishing in this search, and more than kLeastCreditedGain, ends the list (every later one
 // starts higher still).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
@@ -109,7 +110,9 @@ Decomposition polishedChoice(const TriangleMesh& model, const MachineSpec& machi
     if (others[i].jgAfterMm2 * (1 - credited) >= target - tie) break;
     others[i].statistics = plan.statistics;  // the search's, as for its own plan
     others[i].rotationAxis = plan.rotationAxis;
+    const auto paying = std::chrono::steady_clock::now();
     Decomposition other = paidPlanOf(model, machine, options, others[i], job, platform);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - paying).count();
     if (job.isCancelled()) break;
     const double asFound = other.jgAfterMm2;
     if (asFound * (1 - credited) >= target - tie) continue;
