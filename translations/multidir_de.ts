@@ -3351,180 +3351,185 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>Probierte Posen: die aktuelle Aufwärtsrichtung und die Posen, in denen das Modell von selbst steht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="51"/>
-        <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
-        <translation>Posen, die die volle Suche mit den Einstellungen der Registerkarte „Suche“ erhalten (die aktuelle Aufwärtsrichtung und die am besten bewerteten anderen); die übrigen werden mit einem schnellen gierigen Plan bewertet</translation>
-    </message>
-    <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="57"/>
         <source>Find best pose</source>
         <translation>Beste Pose finden</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="139"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="59"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="140"/>
         <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
         <translation>Ausprobieren, wie das Modell auf der Plattform stehen könnte, jede Pose mit ihrer eigenen Zerlegung, und die mit der kleinsten verbleibenden Risikofläche behalten</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="60"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="61"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Up</source>
         <translation>Oben</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Contact (mm²)</source>
         <translation>Auflage (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Margin (mm)</source>
         <translation>Reserve (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="77"/>
         <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
         <translation>Fläche des Stücks der konvexen Hülle des Modells, das in dieser Pose auf der Plattform steht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="78"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="79"/>
         <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
         <translation>Wie weit der Schwerpunkt innerhalb dieser Fläche liegt: das Modell steht nur, wenn der Wert positiv ist</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>Risky area (mm²)</source>
         <translation>Risikofläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="51"/>
+        <source>Poses given the full search with the Search tab&apos;s settings: the current up first, then the best-scored others. The others are scored with a quick greedy plan, except those ruled out: poses no plan of which could beat the current up&apos;s</source>
+        <translation>Posen, die die volle Suche mit den Einstellungen der Registerkarte „Suche“ erhalten: zuerst die aktuelle Aufwärtsrichtung, dann die am besten bewerteten anderen. Die übrigen werden mit einem schnellen gierigen Plan bewertet, außer den ausgeschlossenen: Posen, von denen kein Plan den der aktuellen Aufwärtsrichtung schlagen könnte</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>J_G (mm²)</source>
         <translation>J_G (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>Search</source>
         <translation>Suche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="81"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="82"/>
         <source>Risky area of the whole model printed along this up alone (J_G before)</source>
         <translation>Risikofläche des ganzen Modells, allein in dieser Aufwärtsrichtung gedruckt (J_G vorher)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="82"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="83"/>
         <source>J_G of the plan found for this pose</source>
         <translation>J_G des für diese Pose gefundenen Plans</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="90"/>
         <source>Use this pose</source>
         <translation>Diese Pose verwenden</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="92"/>
         <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
         <translation>Die ausgewählte Pose zur Aufwärtsrichtung des Modells machen; für die gewählte Pose wird ihr Plan angezeigt, für eine andere Pose wird gesucht</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="94"/>
         <source>Show current up</source>
         <translation>Aktuelle Aufwärtsrichtung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="95"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="96"/>
         <source>End the preview of a pose: show the model with its up again</source>
         <translation>Die Vorschau einer Pose beenden: das Modell wieder mit seiner Aufwärtsrichtung zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="98"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="99"/>
         <source>Poses to try:</source>
         <translation>Zu probierende Posen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="99"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="100"/>
         <source>Full searches:</source>
         <translation>Volle Suchen:</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="150"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
-        <source>Scoring poses with quick plans...</source>
-        <translation>Posen werden mit schnellen Plänen bewertet...</translation>
+        <location filename="../ui/panels/pose_search_box.cpp" line="151"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <source>Full search of the given up...</source>
+        <translation>Volle Suche der vorgegebenen Aufwärtsrichtung...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="161"/>
+        <source>Scoring the poses that could beat it with quick plans...</source>
+        <translation>Posen, die sie schlagen könnten, werden mit schnellen Plänen bewertet...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="163"/>
         <source>Full searches of the best poses...</source>
         <translation>Volle Suchen für die besten Posen...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="160"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="164"/>
         <source>Choosing the best pose...</source>
         <translation>Beste Pose wird gewählt...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="165"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="169"/>
         <source>Cancelling the pose search...</source>
         <translation>Posensuche wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="184"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
         <source>full search</source>
         <translation>volle Suche</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="185"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="189"/>
         <source>quick plan</source>
         <translation>schneller Plan</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="186"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="190"/>
         <source>ruled out</source>
         <translation>ausgeschlossen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="191"/>
         <source>not scored</source>
         <translation>nicht bewertet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
         <source>≥ %1</source>
         <translation>≥ %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="211"/>
         <source>Not searched: at least %1 mm² of this pose&apos;s overhang cannot be saved by any direction the machine prints along, more than the J_G of the given up&apos;s plan, so it could not win</source>
-        <translation>Nicht gesucht: mindestens %1 mm² der Überhänge dieser Pose rettet keine Richtung, in der die Maschine druckt, mehr als J_G des Plans der vorgegebenen Oberseite; sie könnte nicht gewinnen</translation>
+        <translation>Nicht gesucht: mindestens %1 mm² der Überhänge dieser Pose rettet keine Richtung, in der die Maschine druckt, mehr als J_G des Plans der vorgegebenen Aufwärtsrichtung; sie könnte nicht gewinnen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="212"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="216"/>
         <source>chosen</source>
         <translation>gewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="217"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="221"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>Beste Pose: Aufwärtsrichtung %1 (%2), J_G %3 mm², %n Bereich.</numerusform>
@@ -3532,12 +3537,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="219"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="223"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>Abgebrochen: die fertigen Posen sind aufgelistet. %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="246"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="250"/>
         <source>, in use</source>
         <translation>, in Verwendung</translation>
     </message>
@@ -3545,18 +3550,18 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
 <context>
     <name>multidir::ui::PoseSearchJob</name>
     <message>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="82"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="83"/>
         <source>Not enough memory for the pose search: lower the beam width, the number of normals or the number of poses.</source>
         <translation>Nicht genug Speicher für die Posensuche: verringern Sie die Strahlbreite, die Zahl der Normalen oder die Zahl der Posen.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="86"/>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="90"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="87"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="91"/>
         <source>Unexpected error during the pose search.</source>
         <translation>Unerwarteter Fehler während der Posensuche.</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="114"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="115"/>
         <source>The pose search was cancelled before any pose finished.</source>
         <translation>Die Posensuche wurde abgebrochen, bevor eine Pose fertig war.</translation>
     </message>

@@ -3344,192 +3344,197 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>尝试的姿态：当前向上方向以及模型能自行站立的姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="51"/>
-        <source>Poses given the full search with the Search tab&apos;s settings (the current up and the best-scored others); the rest are scored with a quick greedy plan</source>
-        <translation>以“搜索”选项卡的设置进行完整搜索的姿态（当前向上方向及评分最佳的其他姿态）；其余姿态用快速贪心方案评分</translation>
-    </message>
-    <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="56"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="57"/>
         <source>Find best pose</source>
         <translation>查找最佳姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="58"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="139"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="59"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="140"/>
         <source>Try how the model could stand on the platform, each pose with its own decomposition, and keep the one with the least risky area left</source>
         <translation>尝试模型在平台上的各种摆放方式，每个姿态各自分解，并保留剩余风险面积最小的姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="60"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="61"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Up</source>
         <translation>向上方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Contact (mm²)</source>
         <translation>接触面积 (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="73"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
         <source>Margin (mm)</source>
         <translation>余量 (mm)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="76"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="77"/>
         <source>Area of the patch of the model&apos;s convex hull that stands on the platform in this pose</source>
         <translation>在此姿态下模型凸包与平台接触部分的面积</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="78"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="79"/>
         <source>How far inside that patch the centre of mass falls: the model stands only when it is positive</source>
         <translation>重心投影位于该接触面内的距离：仅当其为正时模型才能站稳</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>Risky area (mm²)</source>
         <translation>风险面积 (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="51"/>
+        <source>Poses given the full search with the Search tab&apos;s settings: the current up first, then the best-scored others. The others are scored with a quick greedy plan, except those ruled out: poses no plan of which could beat the current up&apos;s</source>
+        <translation>使用“搜索”选项卡设置进行完整搜索的姿态：先是当前向上方向，然后是评分最好的其他姿态。其余姿态用快速贪心方案评估，已排除的除外：其任何方案都不可能胜过当前向上方向方案的姿态</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>J_G (mm²)</source>
         <translation>J_G (mm²)</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>Regions</source>
         <translation>区域</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="74"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="75"/>
         <source>Search</source>
         <translation>搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="81"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="82"/>
         <source>Risky area of the whole model printed along this up alone (J_G before)</source>
         <translation>整个模型仅沿此向上方向打印时的风险面积（J_G 之前）</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="82"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="83"/>
         <source>J_G of the plan found for this pose</source>
         <translation>为此姿态找到的方案的 J_G</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="89"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="90"/>
         <source>Use this pose</source>
         <translation>使用此姿态</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="91"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="92"/>
         <source>Make the selected pose the model&apos;s up; the chosen pose&apos;s plan is shown, another pose is searched</source>
         <translation>将所选姿态设为模型的向上方向；选定的姿态直接显示其方案，其他姿态将重新搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="93"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="94"/>
         <source>Show current up</source>
         <translation>显示当前向上方向</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="95"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="96"/>
         <source>End the preview of a pose: show the model with its up again</source>
         <translation>结束姿态预览：重新按模型的向上方向显示模型</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="98"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="99"/>
         <source>Poses to try:</source>
         <translation>尝试的姿态数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="99"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="100"/>
         <source>Full searches:</source>
         <translation>完整搜索数：</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="150"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="158"/>
-        <source>Scoring poses with quick plans...</source>
-        <translation>正在用快速方案评估姿态...</translation>
+        <location filename="../ui/panels/pose_search_box.cpp" line="151"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <source>Full search of the given up...</source>
+        <translation>正在完整搜索给定方向...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="159"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="161"/>
+        <source>Scoring the poses that could beat it with quick plans...</source>
+        <translation>正在用快速方案评估可能胜过它的姿态...</translation>
+    </message>
+    <message>
+        <location filename="../ui/panels/pose_search_box.cpp" line="163"/>
         <source>Full searches of the best poses...</source>
         <translation>正在对最佳姿态进行完整搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="160"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="164"/>
         <source>Choosing the best pose...</source>
         <translation>正在选择最佳姿态...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="165"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="169"/>
         <source>Cancelling the pose search...</source>
         <translation>正在取消姿态搜索...</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="184"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
         <source>full search</source>
         <translation>完整搜索</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="185"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="189"/>
         <source>quick plan</source>
         <translation>快速方案</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="186"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="190"/>
         <source>ruled out</source>
         <translation>已排除</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="187"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="191"/>
         <source>not scored</source>
         <translation>未评估</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="195"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="188"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
         <source>≥ %1</source>
         <translation>≥ %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="207"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="211"/>
         <source>Not searched: at least %1 mm² of this pose&apos;s overhang cannot be saved by any direction the machine prints along, more than the J_G of the given up&apos;s plan, so it could not win</source>
         <translation>未搜索：此姿态至少有 %1 mm² 的悬垂在机器可打印的任何方向上都无法避免，超过给定方向方案的 J_G，因此它不可能胜出</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="212"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="216"/>
         <source>chosen</source>
         <translation>选定</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="217"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="221"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>最佳姿态：向上方向 %1（%2），J_G %3 mm²，%n 个区域。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="219"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="223"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>已取消：已完成的姿态已列出。%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="246"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="250"/>
         <source>, in use</source>
         <translation>，使用中</translation>
     </message>
@@ -3537,18 +3542,18 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
 <context>
     <name>multidir::ui::PoseSearchJob</name>
     <message>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="82"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="83"/>
         <source>Not enough memory for the pose search: lower the beam width, the number of normals or the number of poses.</source>
         <translation>内存不足，无法进行姿态搜索：请减小束宽、法向数量或姿态数量。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="86"/>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="90"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="87"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="91"/>
         <source>Unexpected error during the pose search.</source>
         <translation>姿态搜索过程中发生意外错误。</translation>
     </message>
     <message>
-        <location filename="../ui/jobs/pose_search_job.cpp" line="114"/>
+        <location filename="../ui/jobs/pose_search_job.cpp" line="115"/>
         <source>The pose search was cancelled before any pose finished.</source>
         <translation>姿态搜索在任何姿态完成之前被取消。</translation>
     </message>

@@ -12,6 +12,7 @@ namespace multidir::ui {
 namespace {
 
 PoseSearchJob::Phase phaseOf(const std::string& name) {
+  if (name == "given up search") return PoseSearchJob::Phase::GivenUpSearch;
   if (name == "pose searches") return PoseSearchJob::Phase::FullSearches;
   if (name == "pose search done") return PoseSearchJob::Phase::Done;
   return PoseSearchJob::Phase::CheapScores;
@@ -23,7 +24,7 @@ PoseSearchJob::Phase phaseOf(const std::string& name) {
 struct PoseSearchJob::Shared {
   std::mutex mutex;
   double fraction = 0.0;
-  Phase phase = Phase::CheapScores;
+  Phase phase = Phase::GivenUpSearch;
   bool changed = false;
   bool deliveryPending = false;
 

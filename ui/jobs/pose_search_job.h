@@ -39,8 +39,9 @@ class PoseSearchJob : public QObject {
   Q_OBJECT
 
  public:
-  // The two phases of a pose search, as fractionChanged() names them.
-  enum class Phase { CheapScores, FullSearches, Done };
+  // The phases of a pose search, as fractionChanged() names them: the given up searched in full first, then
+  // the other poses ruled out or scored, then the best of them searched in full.
+  enum class Phase { GivenUpSearch, CheapScores, FullSearches, Done };
   Q_ENUM(Phase)
 
   explicit PoseSearchJob(QObject* parent = nullptr);

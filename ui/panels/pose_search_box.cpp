@@ -48,8 +48,9 @@ PoseSearchBox::PoseSearchBox(QWidget* parent) : QGroupBox(tr("Best pose"), paren
   m_fullSearches->setObjectName(QStringLiteral("poseFullSearches"));
   m_fullSearches->setRange(1, defaults.poses);
   m_fullSearches->setValue(defaults.fullSearches);
-  m_fullSearches->setToolTip(tr("Poses given the full search with the Search tab's settings (the current up and "
-                                "the best-scored others); the rest are scored with a quick greedy plan"));
+  m_fullSearches->setToolTip(tr("Poses given the full search with the Search tab's settings: the current up first, "
+                                "then the best-scored others. The others are scored with a quick greedy plan, "
+                                "except those ruled out: poses no plan of which could beat the current up's"));
   connect(m_poses, QOverload<int>::of(&QSpinBox::valueChanged), this,
           [this](int poses) { m_fullSearches->setMaximum(poses); });
 
@@ -147,7 +148,7 @@ void PoseSearchBox::searchStarted() {
   m_running = true;
   m_progress->setValue(0);
   m_progress->show();
-  m_status->setText(tr("Scoring poses with quick plans..."));
+  m_status->setText(tr("Full search of the given up..."));
   updateButtons();
 }
 
@@ -155,7 +156,10 @@ void PoseSearchBox::showProgress(double fraction, PoseSearchJob::Phase phase) {
   m_progress->setValue(static_cast<int>(std::lround(1000.0 * std::clamp(fraction, 0.0, 1.0))));
   if (!m_running || !m_cancel->isEnabled()) return;  // "Cancelling..." stays
   switch (phase) {
-    case PoseSearchJob::Phase::CheapScores: m_status->setText(tr("Scoring poses with quick plans...")); break;
+    case PoseSearchJob::Phase::GivenUpSearch: m_status->setText(tr("Full search of the given up...")); break;
+    case PoseSearchJob::Phase::CheapScores:
+      m_status->setText(tr("Scoring the poses that could beat it with quick plans..."));
+      break;
     case PoseSearchJob::Phase::FullSearches: m_status->setText(tr("Full searches of the best poses...")); break;
     case PoseSearchJob::Phase::Done: m_status->setText(tr("Choosing the best pose...")); break;
   }

@@ -356,6 +356,7 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   if (job.isCancelled())
     return Error{ErrorCode::Cancelled, "the pose search was cancelled before any pose finished", "pose search"};
   {
+    job.setProgress(0.0, "given up search");
     SearchOptions first = single;
     first.threads = threads;
     if (reuseCheap) scoreCheaply(0);

@@ -1,5 +1,5 @@
-// The pose table's row for a pose the pose search ruled out: it has no plan, only the area every plan of it
-// keeps, and says so.
+// The Best pose box: its status names the stage the pose search is in, and the table's row for a pose the
+// search ruled out shows that it has no plan, only the area every plan of it keeps.
 #include <gtest/gtest.h>
 
 #include <QTableWidget>
@@ -44,6 +44,21 @@ TEST(PoseTable, ARuledOutPoseShowsTheAreaEveryPlanOfItKeepsAndNoRegions) {
   EXPECT_TRUE(table->item(1, PoseSearchBox::JgColumn)->toolTip().contains(PoseSearchBox::tr("could not win")));
   EXPECT_EQ(table->item(0, PoseSearchBox::SearchColumn)->text(), PoseSearchBox::tr("full search"));
   EXPECT_EQ(table->item(0, PoseSearchBox::JgColumn)->text(), QLocale().toString(11.71, 'f', 1));
+}
+
+TEST(PoseSearchBox, StatusNamesEachStageOfTheSearchInTheOrderItRuns) {
+  // The given up is searched in full first (its J_G rules the other poses out), then the others are scored,
+  // then the best of them searched in full.
+  PoseSearchBox box;
+  box.setRunnable(true, QString());
+  box.searchStarted();
+  EXPECT_EQ(box.statusText(), PoseSearchBox::tr("Full search of the given up..."));
+  box.showProgress(0.2, PoseSearchJob::Phase::GivenUpSearch);
+  EXPECT_EQ(box.statusText(), PoseSearchBox::tr("Full search of the given up..."));
+  box.showProgress(0.4, PoseSearchJob::Phase::CheapScores);
+  EXPECT_EQ(box.statusText(), PoseSearchBox::tr("Scoring the poses that could beat it with quick plans..."));
+  box.showProgress(0.6, PoseSearchJob::Phase::FullSearches);
+  EXPECT_EQ(box.statusText(), PoseSearchBox::tr("Full searches of the best poses..."));
 }
 
 }  // namespace multidir::ui
