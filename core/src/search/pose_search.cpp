@@ -348,7 +348,7 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
     trials[i].regions = static_cast<int>(plan->regions.size());
     trials[i].seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     plans[i] = std::move(*plan);
-    job.setProgress((finished += 4) / steps, "pose searches");
+    job.setProgress((finished += 4) / steps, i == 0 ? "given up search" : "pose searches");
   };
 
   // 1. The first pose, the given up, is searched in full first, on every thread (its plan does not depend on
