@@ -152,7 +152,8 @@ int main(int argc, char** argv) {
     const double share = 100.0 * plan->jgAfterMm2 / plan->jgBeforeMm2;
     shares.push_back(share);
     std::printf("%-12s %9zu %11d %9.2f %7.2f %9.1f %7zu %12.2f %12.2f %8.2f %6s\n", name.c_str(),
-                loaded->mesh.faceCount(), plan->statistics.candidatesPerLevel, planWall, planCpu, peakMemoryMiB(), plan->regions.size(),
+                loaded->mesh.faceCount(), plan->statistics.candidatesPerLevel, planWall, planCpu, peakMemoryMiB(),
+                plan->regions.size(),
                 plan->jgBeforeMm2, plan->jgAfterMm2, share, saved.ok() ? "yes" : "NO");
     if (!saved.ok()) std::printf("    not saved: %s\n", saved.error().describe().c_str());
     if (const SearchStatistics& st = plan->statistics; st.jgBeforePolishMm2 >= 0)

@@ -3508,28 +3508,28 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         <translation>nicht bewertet</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="194"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="193"/>
         <source>≥ %1</source>
         <translation>≥ %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="211"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="213"/>
         <source>Not searched: at least %1 mm² of this pose&apos;s overhang cannot be saved by any direction the machine prints along, more than the J_G of the given up&apos;s plan, so it could not win</source>
         <translation>Nicht gesucht: mindestens %1 mm² der Überhänge dieser Pose rettet keine Richtung, in der die Maschine druckt, mehr als J_G des Plans der vorgegebenen Aufwärtsrichtung; sie könnte nicht gewinnen</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="216"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="218"/>
         <source>chosen</source>
         <translation>gewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="221"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="223"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>Beste Pose: Aufwärtsrichtung %1 (%2), J_G %3 mm², %n Bereich.</numerusform>
@@ -3537,12 +3537,12 @@ J_G nachher: %2 mm² (%3 mm² vor der Bearbeitung)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="223"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="225"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>Abgebrochen: die fertigen Posen sind aufgelistet. %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="250"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="252"/>
         <source>, in use</source>
         <translation>, in Verwendung</translation>
     </message>

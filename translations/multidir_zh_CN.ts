@@ -3501,40 +3501,40 @@ J_G 之后：%2 mm²（编辑前为 %3 mm²）</translation>
         <translation>未评估</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
-        <location filename="../ui/panels/pose_search_box.cpp" line="199"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="194"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="201"/>
         <source>-</source>
         <translation>-</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="192"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="193"/>
         <source>≥ %1</source>
         <translation>≥ %1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="211"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="213"/>
         <source>Not searched: at least %1 mm² of this pose&apos;s overhang cannot be saved by any direction the machine prints along, more than the J_G of the given up&apos;s plan, so it could not win</source>
         <translation>未搜索：此姿态至少有 %1 mm² 的悬垂在机器可打印的任何方向上都无法避免，超过给定方向方案的 J_G，因此它不可能胜出</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="216"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="218"/>
         <source>chosen</source>
         <translation>选定</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/panels/pose_search_box.cpp" line="221"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="223"/>
         <source>Best pose: up %1 (%2), J_G %3 mm², %n region(s).</source>
         <translation>
             <numerusform>最佳姿态：向上方向 %1（%2），J_G %3 mm²，%n 个区域。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="223"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="225"/>
         <source>Cancelled: the poses that finished are listed. %1</source>
         <translation>已取消：已完成的姿态已列出。%1</translation>
     </message>
     <message>
-        <location filename="../ui/panels/pose_search_box.cpp" line="250"/>
+        <location filename="../ui/panels/pose_search_box.cpp" line="252"/>
         <source>, in use</source>
         <translation>，使用中</translation>
     </message>

@@ -39,7 +39,8 @@ TEST(PoseTable, ARuledOutPoseShowsTheAreaEveryPlanOfItKeepsAndNoRegions) {
   QTableWidget* table = box.table();
   ASSERT_EQ(table->rowCount(), 2);
   EXPECT_EQ(table->item(1, PoseSearchBox::SearchColumn)->text(), PoseSearchBox::tr("ruled out"));
-  EXPECT_EQ(table->item(1, PoseSearchBox::JgColumn)->text(), QStringLiteral("≥ ") + QLocale().toString(731.5, 'f', 1));
+  EXPECT_EQ(table->item(1, PoseSearchBox::JgColumn)->text(),
+            QStringLiteral("≥ ") + QLocale().toString(731.5, 'f', 1));
   EXPECT_EQ(table->item(1, PoseSearchBox::RegionsColumn)->text(), QStringLiteral("-"));
   EXPECT_TRUE(table->item(1, PoseSearchBox::JgColumn)->toolTip().contains(PoseSearchBox::tr("could not win")));
   EXPECT_EQ(table->item(0, PoseSearchBox::SearchColumn)->text(), PoseSearchBox::tr("full search"));

@@ -189,7 +189,9 @@ void PoseSearchBox::showResult(const core::PoseSearchResult& result, bool cancel
                            : scored          ? tr("quick plan")
                            : trial.ruledOut  ? tr("ruled out")
                                              : tr("not scored");
-    const QString jg = scored ? area(trial.jgAfterMm2) : trial.ruledOut ? tr("≥ %1").arg(area(trial.unavoidableMm2)) : tr("-");
+    const QString jg = scored           ? area(trial.jgAfterMm2)
+                       : trial.ruledOut ? tr("≥ %1").arg(area(trial.unavoidableMm2))
+                                        : tr("-");
     const QString cells[ColumnCount] = {sourceText(trial.pose.source),
                                         upText(trial.pose.up),
                                         area(trial.pose.contactAreaMm2),

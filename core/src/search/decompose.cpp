@@ -152,8 +152,9 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
     return nullptr;
   };
   Decomposition plan = engine.planOf(*chosen);
+  const std::vector<Plane> chosenPlanes = planesOf(chosen);
   if (finalists && !cancelled) {
-    std::vector<std::vector<Plane>> taken{planesOf(chosen)};
+    std::vector<std::vector<Plane>> taken{chosenPlanes};
     // Each as found and without its unpaid planes: removing them lowers the price, but may raise J_G apart
     // above the bound the choice keeps.
     for (const NodePtr& finalist : best.finalists()) {
@@ -168,11 +169,11 @@ Decomposition detail::runDecomposition(const TriangleMesh& model, const MachineS
     // out, and the removal re-cuts a plan's later planes once per plane tried). A finalist that pays with the
     // plan returned (the best as found is one: paidChoice made the plan from it) would only be found to be it
     // again there, after that removal: it is left out.
-    std::vector<std::vector<Plane>> taken{planesOf(chosen)};
+    std::vector<std::vector<Plane>> taken{chosenPlanes};
     for (const NodePtr& finalist : best.finalists()) {
       if (!finalist) continue;
       const NodePtr known = knownPaid(finalist);
-      if (known && samePlanes(planesOf(known), planesOf(chosen))) continue;
+      if (known && samePlanes(planesOf(known), chosenPlanes)) continue;
       if (takeIfNew(taken, planesOf(finalist))) polishStarts->push_back(engine.planOf(*finalist));
     }
   }

@@ -393,12 +393,14 @@ Result<PoseSearchResult> decomposeWithPoseSearch(const TriangleMesh& model, cons
   std::vector<int> order;
   for (int i = 1; i < count; ++i)
     if (cheapPlans[i]) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return trials[a].cheapJgMm2 < trials[b].cheapJgMm2; });
-  if (static_cast<int>(order.size()) > searches - 1) order.resize(std::max(0, searches - 1));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return trials[a].cheapJgMm2 < trials[b].cheapJgMm2; });
+  if (static_cast<int>(order.size()) > searches - 1) order.resize(searches - 1);
   detail::parallelFor(static_cast<int>(order.size()), threads, [&](int k) {
     if (!job.isCancelled()) searchPose(order[k], single);
   });
-  const int ruledOut = static_cast<int>(std::count_if(trials.begin(), trials.end(), [](const PoseTrial& t) { return t.ruledOut; }));
+  const int ruledOut = static_cast<int>(
+      std::count_if(trials.begin(), trials.end(), [](const PoseTrial& t) { return t.ruledOut; }));
   // Cancelled before any pose was searched in full: the best cheap plan, on the model.
   if (std::none_of(plans.begin(), plans.end(), [](const auto& p) { return p.has_value(); })) {
     int cheapest = -1;

@@ -76,7 +76,8 @@ std::vector<BoundFace> facesToVisit(const TriangleMesh& model, const Vec3& up, d
                                     double stopAboveMm2) {
   std::vector<BoundFace> faces = facesRiskyAlongUp(model, up, sinAlpha, supportedBandMm);
   if (std::isfinite(stopAboveMm2))
-    std::stable_sort(faces.begin(), faces.end(), [](const BoundFace& a, const BoundFace& b) { return a.area > b.area; });
+    std::stable_sort(faces.begin(), faces.end(),
+                     [](const BoundFace& a, const BoundFace& b) { return a.area > b.area; });
   return faces;
 }
 

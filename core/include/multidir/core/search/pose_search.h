@@ -4,8 +4,8 @@
 // A pose is an up direction of the model (MachineSpec::up); plans stay in the model's coordinates. The model
 // stands on a patch of its convex hull (contact_patch.h): a pose is tried only when that patch has an area and
 // holds the centre of mass (no pose balances on a point or an edge, or tips over). Candidates are the user's
-// up (always tried: where the model would not stand in it, the plan says so) and the model's standing poses: the largest contacts, then the ones farthest
-// from those taken, so the directions are covered. The user's up gets the full search first; every other pose
+// up (always tried: where the model would not stand in it, the plan says so) and the model's standing poses:
+// the largest contacts, then the ones farthest from those taken, so the directions are covered. The user's up gets the full search first; every other pose
 // that could beat its plan (its unavoidable risky area is below that plan's J_G) gets a cheap score (the J_G of a
 // greedy plan), and the best few of those the full search, each the plain search (decompose) at that pose:
 // polished, and on a huge model on the proxy decompose at that up uses; the plan with the least J_G wins (ties:
